@@ -1,0 +1,80 @@
+#pragma once
+// The data a trial passes through on its way to the model:
+//   file --(reader)--> RawTrial --(mapping)--> JointTrial --(normalise)--> WalkingTrial
+// RawTrial keeps the file's own points (markers or skeleton joints) in the file's axes,
+// already converted to millimetres. JointTrial has the 15 joints of SPEC §1.
+
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/skeleton.h"
+
+namespace ew {
+
+enum class Side { Left, Right };
+
+enum class GaitEventType { FootStrike, FootOff, Other };
+
+struct GaitEvent {
+  Side side = Side::Left;
+  GaitEventType type = GaitEventType::Other;
+  double timeS = 0.0;  // seconds from the trial's first frame (frame index 0 = 0 s)
+  std::string label;   // as written in the file ("Foot Strike", "Foot Strike1", …)
+};
+
+// A vertical axis stated by the file format itself (BVH/ASF: +Y; C3D: from
+// POINT:X_SCREEN/Y_SCREEN when present). axis 0,1,2 = file x,y,z; sign +1 or -1.
+struct SignedAxis {
+  int axis = 2;
+  int sign = 1;
+  bool operator==(const SignedAxis&) const = default;
+};
+
+enum class PointKind {
+  Markers,         // skin markers (C3D, TRC): mapped by a marker set
+  SkeletonJoints,  // joint centres of a kinematic skeleton (BVH, ASF/AMC)
+  CanonicalJoints, // already our 15 joints (our CSV format)
+};
+
+struct RawTrial {
+  std::string file;    // path as given by the caller
+  std::string format;  // "C3D", "BVH", "ASF/AMC", "TRC", "CSV"
+  PointKind kind = PointKind::Markers;
+  double rateHz = 0.0;
+  long firstFrame = 1;          // the file's number for row 0 (C3D first_frame, TRC Frame#)
+  std::string units;            // the unit the file states (or assumed), e.g. "mm", "m"
+  std::vector<std::string> labels;  // one per point, trimmed
+  Eigen::MatrixXd positionsMm;      // frames x 3*labels, file axes, millimetres, NaN = missing
+  std::optional<SignedAxis> upAxis; // vertical axis if the format or file states it
+  std::vector<GaitEvent> events;
+  std::vector<std::string> warnings;
+
+  int frameCount() const { return static_cast<int>(positionsMm.rows()); }
+  int pointCount() const { return static_cast<int>(labels.size()); }
+};
+
+struct JointTrial {
+  std::string file;
+  std::string format;
+  std::string source;             // marker set or skeleton the joints came from, e.g. "ISB (Schreiber-Moissenet)"
+  double rateHz = 0.0;
+  std::string units;              // units the file stated (data here is always mm)
+  std::vector<std::string> sourceLabels;  // the markers / skeleton joints the file had
+  Eigen::MatrixXd positionsMm;    // frames x 45, joint-major x,y,z; file axes until normalised
+  std::array<bool, kJointCount> estimated{};  // joint estimated, not measured (SPEC §1)
+  std::optional<SignedAxis> upAxis;
+  std::vector<GaitEvent> events;
+  std::vector<std::string> warnings;
+
+  int frameCount() const { return static_cast<int>(positionsMm.rows()); }
+};
+
+// Convenience accessors on joint-major trajectory matrices.
+inline Eigen::Vector3d jointAt(const Eigen::MatrixXd& framesX45, int frame, Joint j) {
+  return framesX45.block<1, 3>(frame, 3 * index(j)).transpose();
+}
+
+}  // namespace ew

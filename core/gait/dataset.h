@@ -1,0 +1,43 @@
+#pragma once
+// Datasets (SPEC §4): a folder (recursive), a list of files, or a manifest CSV
+// (`file,subject,source,condition[,extra…]`, paths relative to the manifest). Extra
+// manifest columns are kept as walker attributes.
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/gait/walking_trial.h"
+#include "core/io/load_trial.h"
+
+namespace ew {
+
+struct TrialInfo {
+  std::string file;       // resolved path
+  std::string subject;    // manifest subject, else derived from the file name
+  std::string source;     // manifest source, else the format
+  std::string condition;  // manifest condition, else "unspecified"
+  std::map<std::string, std::string> attributes;  // extra manifest columns
+};
+
+struct DatasetTrial {
+  TrialInfo info;
+  WalkingTrial trial;
+};
+
+struct Dataset {
+  std::vector<DatasetTrial> trials;
+  std::vector<std::string> warnings;  // files skipped and why, odd manifest rows, …
+  std::vector<std::string> subjects() const;  // distinct, in first-seen order
+};
+
+using ProgressFn = std::function<void(int done, int total, const std::string& current)>;
+
+// Loads every trial. A manifest's unreadable file is an error (the manifest promised it);
+// in a folder, files of unknown type are ignored and unreadable trials become warnings.
+Dataset loadDataset(const std::vector<std::filesystem::path>& paths,
+                    const LoadOptions& options = {}, const ProgressFn& progress = {});
+
+}  // namespace ew

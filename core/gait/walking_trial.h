@@ -1,0 +1,31 @@
+#pragma once
+// A trial ready for the method: 15 joints in the canonical frame of SPEC §2 (mm, x right,
+// y forward, z up, progression and heading removed), cropped to its steady straight-walking
+// window, with its gait cycles.
+
+#include <string>
+#include <vector>
+
+#include "core/common/trial.h"
+
+namespace ew {
+
+struct GaitCycles {
+  // Foot strikes in seconds from the start of the window (row 0 of joints.positionsMm).
+  std::vector<double> rightStrikesS;
+  std::vector<double> leftStrikesS;
+  double strideHz = 0.0;   // strides (full gait cycles) per second
+  double cycleCount = 0.0; // full cycles covered by the window (may be fractional, >= 1)
+  std::string method;      // "file events" or "foot contacts"
+};
+
+struct WalkingTrial {
+  JointTrial joints;             // canonical frame, cropped to the window
+  int windowBegin = 0;           // first row of the window in the loaded trial
+  int windowEnd = 0;             // one past the last row
+  int loadedFrames = 0;          // rows the loaded trial had before cropping
+  GaitCycles cycles;
+  double speedMps = 0.0;         // mean horizontal pelvis speed over the window (0 on a treadmill)
+};
+
+}  // namespace ew

@@ -1,0 +1,35 @@
+#pragma once
+// One entry point for every motion-capture format. Chooses the reader by extension and
+// checks the content agrees (a .c3d that is really text is a clear error, not garbage).
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "core/common/trial.h"
+
+namespace ew {
+
+struct LoadOptions {
+  // Frame rate to use instead of the file's (AMC stores none: 120 Hz CMU default).
+  std::optional<double> rateHzOverride;
+  // Length unit to use instead of the file's ("mm", "cm", "m", "in"): a wrong unit is the
+  // commonest mocap mistake, so the user can always override it.
+  std::optional<std::string> unitsOverride;
+};
+
+enum class FileFormat { C3d, Bvh, AsfAmc, Trc, Csv };
+
+// Format from the extension (.c3d .bvh .amc .asf .trc .csv, case-insensitive).
+// Throws Error(Unsupported) naming the file for anything else.
+FileFormat formatFromExtension(const std::filesystem::path& file);
+std::string formatName(FileFormat format);
+
+// Reads the file into points in the file's axes, in millimetres.
+RawTrial readRawTrial(const std::filesystem::path& file, const LoadOptions& options = {});
+
+// Factor that converts a length in `unit` to millimetres; throws Error(BadArgument)
+// for an unknown unit. Accepts mm, cm, m, in/inch/inches (case-insensitive).
+double unitToMm(const std::string& unit, const std::string& file);
+
+}  // namespace ew

@@ -1,0 +1,37 @@
+#pragma once
+// Locating ../shared/data from tests. When the data is absent a test skips with a clear
+// message; with EIGENWALKER_REQUIRE_DATA=1 (set by .ci/run) it fails instead.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace ew::test {
+
+// The shared data folder: $EIGENWALKER_DATA if set, else ../shared/data beside the
+// source tree. Empty path if it does not exist.
+std::filesystem::path sharedDataDir();
+
+// The project's source tree (for committed fixtures in tests/fixtures).
+std::filesystem::path sourceDir();
+
+// A fresh, empty temporary directory unique to the calling test.
+std::filesystem::path makeTempDir(const std::string& stem);
+
+bool dataRequired();
+
+}  // namespace ew::test
+
+// Use at the top of a test that reads ../shared/data: skips (or fails in CI) when missing.
+#define EW_REQUIRE_SHARED_DATA()                                                        \
+  do {                                                                                  \
+    if (::ew::test::sharedDataDir().empty()) {                                          \
+      if (::ew::test::dataRequired()) {                                                 \
+        FAIL() << "../shared/data not found and EIGENWALKER_REQUIRE_DATA=1";            \
+      } else {                                                                          \
+        GTEST_SKIP() << "../shared/data not found beside the checkout (set "            \
+                        "EIGENWALKER_DATA to its path to run this test)";               \
+      }                                                                                 \
+    }                                                                                   \
+  } while (0)
