@@ -1,11 +1,24 @@
-#include <CLI/CLI.hpp>
-
+// eigenwalker-cli: the command-line face of core. Parsing only; the work is in core.
 #include <iostream>
+
+#include "app/cli/commands.h"
+#include "core/common/errors.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"eigenwalker-cli: load walking motion capture, build eigenwalker models, "
                "reconstruct 3D walkers from 2D views"};
   app.require_subcommand(1);
-  CLI11_PARSE(app, argc, argv);
-  return 0;
+  int exitCode = 0;
+  ew::cli::addInfoCommand(app, exitCode);
+  ew::cli::addJointsCommand(app, exitCode);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : ew::cli::kExitUsage;
+  } catch (const ew::Error& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return e.kind() == ew::ErrorKind::BadArgument ? ew::cli::kExitUsage : ew::cli::kExitDataError;
+  }
+  return exitCode;
 }

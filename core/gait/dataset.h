@@ -33,6 +33,22 @@ struct Dataset {
   std::vector<std::string> subjects() const;  // distinct, in first-seen order
 };
 
+// The trial files the paths name (folders recursively, manifests row by row), in order,
+// without loading them. `required` is false for files found by walking a folder.
+struct TrialFile {
+  std::filesystem::path path;
+  TrialInfo info;
+  bool required = true;
+};
+std::vector<TrialFile> collectTrialFiles(const std::vector<std::filesystem::path>& paths,
+                                         std::vector<std::string>& warnings);
+
+// One file through the whole path: read, map to 15 joints, prepare (SPEC §1-2).
+WalkingTrial loadWalkingTrial(const std::filesystem::path& file, const LoadOptions& options = {});
+
+// True when a .csv file's first line is a manifest header (starts with "file,").
+bool isManifest(const std::filesystem::path& file);
+
 using ProgressFn = std::function<void(int done, int total, const std::string& current)>;
 
 // Loads every trial. A manifest's unreadable file is an error (the manifest promised it);

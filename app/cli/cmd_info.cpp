@@ -1,0 +1,106 @@
+// `eigenwalker-cli info [--json] PATH…`: one row (or JSON object) per trial.
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/cli/commands.h"
+#include "core/gait/dataset.h"
+#include "core/gait/trial_summary.h"
+
+namespace ew::cli {
+namespace {
+
+struct InfoArgs {
+  std::vector<std::string> paths;
+  bool json = false;
+  double rateHz = 0.0;
+  std::string units;
+};
+
+std::string joined(const std::vector<std::string>& items, const char* sep) {
+  std::string out;
+  for (const auto& s : items) out += (out.empty() ? "" : sep) + s;
+  return out;
+}
+
+std::string fixed(double v, int digits) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+
+nlohmann::json toJson(const TrialSummary& s) {
+  return {{"file", s.file}, {"format", s.format}, {"frames", s.frames}, {"rate_hz", s.rateHz},
+          {"duration_s", s.durationS}, {"units", s.units}, {"points_found", s.pointsFound},
+          {"source", s.source}, {"joints_estimated", s.estimatedJoints},
+          {"window_frames", s.windowFrames}, {"cycles", s.cycles}, {"stride_hz", s.strideHz},
+          {"cycle_method", s.cycleMethod}, {"speed_mps", s.speedMps}, {"warnings", s.warnings},
+          {"ok", s.ok()}, {"error", s.error}, {"error_stage", s.errorStage}};
+}
+
+std::vector<std::string> tableRow(const TrialSummary& s) {
+  return {s.file, s.format, std::to_string(s.frames), fixed(s.rateHz, 2), fixed(s.durationS, 2),
+          s.units, std::to_string(s.pointsFound) + (s.source.empty() ? "" : " (" + s.source + ")"),
+          s.estimatedJoints.empty() ? "-" : joined(s.estimatedJoints, ","),
+          s.ok() ? fixed(s.cycles, 2) : "-", s.ok() ? fixed(s.strideHz, 3) : "-",
+          s.ok() ? fixed(s.speedMps, 2) : "-",
+          s.ok() ? joined(s.warnings, "; ") : "ERROR (" + s.errorStage + "): " + s.error +
+                                                 (s.warnings.empty() ? "" : " | " + joined(s.warnings, "; "))};
+}
+
+void printTable(const std::vector<TrialSummary>& summaries) {
+  std::vector<std::vector<std::string>> rows = {
+      {"file", "format", "frames", "rate_hz", "duration_s", "units", "markers_or_joints",
+       "joints_estimated", "cycles", "stride_hz", "speed_mps", "warnings"}};
+  for (const auto& s : summaries) rows.push_back(tableRow(s));
+  std::vector<size_t> width(rows.front().size(), 0);
+  for (const auto& r : rows) {
+    for (size_t c = 0; c + 1 < r.size(); ++c) width[c] = std::max(width[c], r[c].size());
+  }
+  for (const auto& r : rows) {
+    for (size_t c = 0; c < r.size(); ++c) {
+      std::cout << r[c];
+      if (c + 1 < r.size()) std::cout << std::string(width[c] - r[c].size() + 2, ' ');
+    }
+    std::cout << "\n";
+  }
+}
+
+int runInfo(const InfoArgs& args) {
+  LoadOptions options;
+  if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
+  if (!args.units.empty()) options.unitsOverride = args.units;
+  std::vector<std::filesystem::path> paths(args.paths.begin(), args.paths.end());
+  std::vector<std::string> warnings;
+  std::vector<TrialSummary> summaries;
+  for (const auto& f : collectTrialFiles(paths, warnings)) summaries.push_back(summarizeTrial(f.path, options));
+  for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
+  if (args.json) {
+    nlohmann::json all = nlohmann::json::array();
+    for (const auto& s : summaries) all.push_back(toJson(s));
+    std::cout << all.dump(2) << "\n";
+  } else {
+    printTable(summaries);
+  }
+  bool anyFailed = summaries.empty();
+  for (const auto& s : summaries) anyFailed = anyFailed || !s.ok();
+  if (summaries.empty()) std::cerr << "error: no trial files found in the given paths\n";
+  return anyFailed ? kExitDataError : 0;
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App& app, int& exitCode) {
+  auto args = std::make_shared<InfoArgs>();
+  auto* cmd = app.add_subcommand("info", "One row per trial: format, frames, rate, units, "
+                                         "markers/joints, estimated joints, cycles, stride "
+                                         "frequency, speed, warnings. Exit 1 if any trial is unusable.");
+  cmd->add_option("paths", args->paths, "Files, folders (recursive) or manifest CSVs")->required();
+  cmd->add_flag("--json", args->json, "One JSON object per trial instead of a table");
+  cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's (AMC has none)");
+  cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
+  cmd->callback([args, &exitCode] { exitCode = runInfo(*args); });
+}
+
+}  // namespace ew::cli

@@ -1,0 +1,15 @@
+#pragma once
+// Each sub-command registers itself on the CLI11 app; main() only dispatches.
+// Exit codes: 0 success, 1 a data or I/O problem (message on stderr), 2 bad arguments.
+
+#include <CLI/CLI.hpp>
+
+namespace ew::cli {
+
+inline constexpr int kExitDataError = 1;
+inline constexpr int kExitUsage = 2;
+
+void addInfoCommand(CLI::App& app, int& exitCode);
+void addJointsCommand(CLI::App& app, int& exitCode);
+
+}  // namespace ew::cli

@@ -1,0 +1,155 @@
+#include "core/gait/dataset.h"
+
+#include <algorithm>
+#include <set>
+
+#include "core/common/errors.h"
+#include "core/gait/prepare.h"
+#include "core/io/file_bytes.h"
+#include "core/io/text_table.h"
+#include "core/mapping/joint_mapping.h"
+
+namespace ew {
+namespace {
+
+namespace fs = std::filesystem;
+
+using PendingTrial = TrialFile;
+
+// "2014001_C4_05" -> "2014001", "07_02" -> "07": the stem before the first underscore.
+std::string subjectFromFileName(const fs::path& file) {
+  const std::string stem = file.stem().string();
+  const auto cut = stem.find('_');
+  return cut == 0 || cut == std::string::npos ? stem : stem.substr(0, cut);
+}
+
+TrialInfo infoFromFileName(const fs::path& file) {
+  TrialInfo info;
+  info.file = file.string();
+  info.subject = subjectFromFileName(file);
+  info.source = "";
+  info.condition = "unspecified";
+  return info;
+}
+
+bool isTrialFile(const fs::path& p) {
+  static const std::set<std::string> kExtensions = {".c3d", ".bvh", ".amc", ".trc", ".csv"};
+  return kExtensions.count(toLower(p.extension().string())) > 0;
+}
+
+std::vector<PendingTrial> manifestTrials(const fs::path& manifest, std::vector<std::string>& warnings) {
+  const std::string text = readFileText(manifest);
+  const auto lines = splitLines(text);
+  auto header = splitFields(lines.front().text, ',');
+  std::vector<std::string> columns;
+  for (auto h : header) columns.push_back(toLower(h));
+  for (const char* needed : {"file", "subject"}) {
+    if (std::find(columns.begin(), columns.end(), needed) == columns.end()) {
+      throwMalformed(manifest.string(), linePosition(1), std::string("manifest has no '") + needed + "' column");
+    }
+  }
+  std::vector<PendingTrial> trials;
+  for (size_t i = 1; i < lines.size(); ++i) {
+    if (trim(lines[i].text).empty() || trim(lines[i].text).front() == '#') continue;
+    auto fields = splitFields(lines[i].text, ',');
+    if (fields.size() != columns.size()) {
+      throwMalformed(manifest.string(), linePosition(lines[i].number),
+                     std::to_string(fields.size()) + " fields, header has " + std::to_string(columns.size()));
+    }
+    PendingTrial t;
+    for (size_t c = 0; c < columns.size(); ++c) {
+      const std::string value(fields[c]);
+      if (columns[c] == "file") t.path = manifest.parent_path() / value;
+      else if (columns[c] == "subject") t.info.subject = value;
+      else if (columns[c] == "source") t.info.source = value;
+      else if (columns[c] == "condition") t.info.condition = value;
+      else t.info.attributes[std::string(header[c])] = value;
+    }
+    if (t.path.empty() || t.info.subject.empty()) {
+      throwMalformed(manifest.string(), linePosition(lines[i].number), "empty file or subject");
+    }
+    if (t.info.condition.empty()) t.info.condition = "unspecified";
+    t.info.file = t.path.string();
+    trials.push_back(std::move(t));
+  }
+  if (trials.empty()) warnings.push_back(manifest.string() + ": manifest lists no trials");
+  return trials;
+}
+
+std::vector<PendingTrial> folderTrials(const fs::path& folder, std::vector<std::string>& warnings) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  for (fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec), end;
+       it != end; it.increment(ec)) {
+    if (ec) break;
+    if (it->is_regular_file(ec) && isTrialFile(it->path())) files.push_back(it->path());
+  }
+  if (ec) warnings.push_back(folder.string() + ": " + ec.message());
+  std::sort(files.begin(), files.end());
+  std::vector<PendingTrial> trials;
+  for (const auto& f : files) {
+    if (toLower(f.extension().string()) == ".csv" && isManifest(f)) {
+      warnings.push_back(f.string() + ": a manifest inside a folder is not followed; open it directly");
+      continue;
+    }
+    trials.push_back({f, infoFromFileName(f), false});
+  }
+  return trials;
+}
+
+}  // namespace
+
+std::vector<TrialFile> collectTrialFiles(const std::vector<fs::path>& paths,
+                                         std::vector<std::string>& warnings) {
+  std::vector<PendingTrial> all;
+  for (const auto& p : paths) {
+    std::error_code ec;
+    std::vector<PendingTrial> more;
+    if (fs::is_directory(p, ec)) more = folderTrials(p, warnings);
+    else if (toLower(p.extension().string()) == ".csv" && fs::exists(p, ec) && isManifest(p)) more = manifestTrials(p, warnings);
+    else more = {{p, infoFromFileName(p), true}};
+    all.insert(all.end(), more.begin(), more.end());
+  }
+  return all;
+}
+
+std::vector<std::string> Dataset::subjects() const {
+  std::vector<std::string> out;
+  for (const auto& t : trials) {
+    if (std::find(out.begin(), out.end(), t.info.subject) == out.end()) out.push_back(t.info.subject);
+  }
+  return out;
+}
+
+bool isManifest(const fs::path& file) {
+  const std::string text = readFileText(file);
+  const auto lines = splitLines(std::string_view(text).substr(0, 4096));
+  return !lines.empty() && toLower(trim(lines.front().text)).rfind("file,", 0) == 0;
+}
+
+WalkingTrial loadWalkingTrial(const fs::path& file, const LoadOptions& options) {
+  return prepareWalkingTrial(toJointTrial(readRawTrial(file, options)));
+}
+
+Dataset loadDataset(const std::vector<fs::path>& paths, const LoadOptions& options,
+                    const ProgressFn& progress) {
+  Dataset dataset;
+  const auto pending = collectTrialFiles(paths, dataset.warnings);
+  const int total = static_cast<int>(pending.size());
+  for (int i = 0; i < total; ++i) {
+    const auto& p = pending[static_cast<size_t>(i)];
+    if (progress) progress(i, total, p.path.string());
+    try {
+      DatasetTrial trial{p.info, loadWalkingTrial(p.path, options)};
+      if (trial.info.source.empty()) trial.info.source = trial.trial.joints.format;
+      dataset.trials.push_back(std::move(trial));
+    } catch (const Error& e) {
+      if (p.required) throw;
+      dataset.warnings.push_back(std::string("skipped: ") + e.what());
+    }
+  }
+  if (progress) progress(total, total, "");
+  return dataset;
+}
+
+}  // namespace ew

@@ -1,0 +1,129 @@
+#include "core/gait/gait_cycles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+#include "core/common/errors.h"
+
+namespace ew {
+namespace {
+
+Joint ankleOf(Side side) { return side == Side::Left ? Joint::LAnkle : Joint::RAnkle; }
+
+// Forward distance of the ankle from the pelvis, smoothed over ~50 ms.
+Eigen::VectorXd ankleLead(const Eigen::MatrixXd& m, double rateHz, Side side) {
+  const Eigen::VectorXd raw =
+      m.col(3 * index(ankleOf(side)) + 1) - m.col(3 * index(Joint::Pelvis) + 1);
+  const int half = std::max(0, static_cast<int>(std::lround(0.025 * rateHz)));
+  const auto n = raw.size();
+  Eigen::VectorXd smooth(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Index a = std::max<Eigen::Index>(0, i - half);
+    const Eigen::Index b = std::min<Eigen::Index>(n - 1, i + half);
+    smooth[i] = raw.segment(a, b - a + 1).mean();
+  }
+  return smooth;
+}
+
+std::vector<double> strikesFromEvents(const std::vector<GaitEvent>& events, Side side,
+                                      double durationS) {
+  std::vector<double> t;
+  for (const auto& e : events) {
+    if (e.side == side && e.type == GaitEventType::FootStrike && e.timeS >= 0 && e.timeS <= durationS) {
+      t.push_back(e.timeS);
+    }
+  }
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+// Strides per second from same-side strike intervals; from alternating strikes when no
+// side has two (a trial of about one cycle).
+double strideHzFromStrikes(const std::vector<double>& right, const std::vector<double>& left) {
+  double total = 0.0;
+  int count = 0;
+  for (const auto* side : {&right, &left}) {
+    if (side->size() >= 2) {
+      total += side->back() - side->front();
+      count += static_cast<int>(side->size()) - 1;
+    }
+  }
+  if (count > 0) return count / total;
+  if (!right.empty() && !left.empty()) {
+    const double step = std::abs(right.front() - left.front());
+    return step > 0 ? 1.0 / (2.0 * step) : 0.0;
+  }
+  return 0.0;
+}
+
+void checkWalking(const Eigen::MatrixXd& m, double rateHz, const std::string& file) {
+  for (Side side : {Side::Right, Side::Left}) {
+    const Eigen::VectorXd lead = ankleLead(m, rateHz, side);
+    const double range = lead.maxCoeff() - lead.minCoeff();
+    if (range < kMinAnkleExcursionMm) {
+      std::ostringstream msg;
+      msg << "not a walking trial: the " << (side == Side::Right ? "right" : "left")
+          << " ankle moves only " << std::lround(range)
+          << " mm fore-aft relative to the pelvis (walking needs > "
+          << kMinAnkleExcursionMm << " mm)";
+      throwBadData(file, "", msg.str());
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<double> footStrikesFromKinematics(const Eigen::MatrixXd& m, double rateHz, Side side) {
+  const Eigen::VectorXd lead = ankleLead(m, rateHz, side);
+  const auto n = lead.size();
+  const double mean = lead.mean();
+  const double threshold = mean + 0.3 * (lead.maxCoeff() - mean);
+  // Strikes of one foot are at least 1/kMaxStrideHz apart: a peak must dominate ±0.2 s.
+  const auto reach = static_cast<Eigen::Index>(std::lround(0.5 / kMaxStrideHz * rateHz));
+  std::vector<double> strikes;
+  for (Eigen::Index i = 1; i + 1 < n; ++i) {
+    if (lead[i] < threshold || lead[i] < lead[i - 1] || lead[i] <= lead[i + 1]) continue;
+    const Eigen::Index a = std::max<Eigen::Index>(0, i - reach);
+    const Eigen::Index b = std::min<Eigen::Index>(n - 1, i + reach);
+    if (lead.segment(a, b - a + 1).maxCoeff() > lead[i]) continue;
+    strikes.push_back(static_cast<double>(i) / rateHz);
+  }
+  return strikes;
+}
+
+GaitCycles detectGaitCycles(const Eigen::MatrixXd& m, double rateHz,
+                            const std::vector<GaitEvent>& events, const std::string& file) {
+  checkWalking(m, rateHz, file);
+  const double durationS = static_cast<double>(m.rows() - 1) / rateHz;
+  GaitCycles cycles;
+  cycles.rightStrikesS = strikesFromEvents(events, Side::Right, durationS);
+  cycles.leftStrikesS = strikesFromEvents(events, Side::Left, durationS);
+  cycles.strideHz = strideHzFromStrikes(cycles.rightStrikesS, cycles.leftStrikesS);
+  cycles.method = "file events";
+  if (!(cycles.strideHz > 0)) {
+    cycles.rightStrikesS = footStrikesFromKinematics(m, rateHz, Side::Right);
+    cycles.leftStrikesS = footStrikesFromKinematics(m, rateHz, Side::Left);
+    cycles.strideHz = strideHzFromStrikes(cycles.rightStrikesS, cycles.leftStrikesS);
+    cycles.method = "foot contacts";
+  }
+  if (cycles.strideHz < kMinStrideHz || cycles.strideHz > kMaxStrideHz) {
+    std::ostringstream msg;
+    msg << "not a walking trial: no regular foot strikes (found " << cycles.rightStrikesS.size()
+        << " right, " << cycles.leftStrikesS.size() << " left";
+    if (cycles.strideHz > 0) msg << ", stride frequency " << cycles.strideHz << " Hz";
+    msg << "; walking is " << kMinStrideHz << "-" << kMaxStrideHz << " Hz)";
+    throwBadData(file, "", msg.str());
+  }
+  cycles.cycleCount = (static_cast<double>(m.rows()) / rateHz) * cycles.strideHz;
+  if (cycles.cycleCount < 1.0) {
+    std::ostringstream msg;
+    msg << "shorter than one gait cycle (" << cycles.cycleCount << " cycles of "
+        << 1.0 / cycles.strideHz << " s): at least one full cycle is needed";
+    throwBadData(file, "", msg.str());
+  }
+  return cycles;
+}
+
+}  // namespace ew

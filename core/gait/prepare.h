@@ -1,0 +1,21 @@
+#pragma once
+// The whole path from 15 joints in file axes to a WalkingTrial (SPEC §2): bridge short
+// gaps, take the longest complete run, make z up, find the steady straight-walking
+// window, face +y, remove progression, put the feet on the floor, find the gait cycles.
+
+#include "core/common/trial.h"
+#include "core/gait/steady_window.h"
+#include "core/gait/walking_trial.h"
+
+namespace ew {
+
+struct PrepareOptions {
+  double maxGapS = 0.1;          // longer gaps are not interpolated
+  bool cropToSteadyWindow = true;
+  SteadyWindowOptions window;
+};
+
+// Throws Error(BadData) naming the file when the trial cannot give one walking cycle.
+WalkingTrial prepareWalkingTrial(const JointTrial& joints, const PrepareOptions& options = {});
+
+}  // namespace ew

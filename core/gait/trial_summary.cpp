@@ -1,0 +1,60 @@
+#include "core/gait/trial_summary.h"
+
+#include "core/common/errors.h"
+#include "core/gait/prepare.h"
+#include "core/mapping/joint_mapping.h"
+
+namespace ew {
+namespace {
+
+void fillFromRaw(const RawTrial& raw, TrialSummary& s) {
+  s.format = raw.format;
+  s.frames = raw.frameCount();
+  s.rateHz = raw.rateHz;
+  s.durationS = raw.rateHz > 0 ? raw.frameCount() / raw.rateHz : 0.0;
+  s.units = raw.units;
+  s.pointsFound = raw.pointCount();
+  s.warnings = raw.warnings;
+}
+
+void fillFromJoints(const JointTrial& joints, TrialSummary& s) {
+  s.source = joints.source;
+  for (int j = 0; j < kJointCount; ++j) {
+    if (joints.estimated[static_cast<size_t>(j)]) s.estimatedJoints.emplace_back(kJointNames[static_cast<size_t>(j)]);
+  }
+  s.warnings = joints.warnings;
+}
+
+void fillFromWalking(const WalkingTrial& w, TrialSummary& s) {
+  s.windowFrames = w.joints.frameCount();
+  s.cycles = w.cycles.cycleCount;
+  s.strideHz = w.cycles.strideHz;
+  s.cycleMethod = w.cycles.method;
+  s.speedMps = w.speedMps;
+  s.warnings = w.joints.warnings;
+}
+
+}  // namespace
+
+TrialSummary summarizeTrial(const std::filesystem::path& file, const LoadOptions& options) {
+  TrialSummary s;
+  s.file = file.string();
+  s.errorStage = "read";
+  try {
+    const RawTrial raw = readRawTrial(file, options);
+    fillFromRaw(raw, s);
+    s.errorStage = "joints";
+    const JointTrial joints = toJointTrial(raw);
+    fillFromJoints(joints, s);
+    s.errorStage = "walking";
+    fillFromWalking(prepareWalkingTrial(joints), s);
+    s.errorStage.clear();
+  } catch (const Error& e) {
+    s.error = e.what();
+  } catch (const std::exception& e) {
+    s.error = std::string("internal error: ") + e.what();
+  }
+  return s;
+}
+
+}  // namespace ew
