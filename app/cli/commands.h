@@ -11,5 +11,6 @@ inline constexpr int kExitUsage = 2;
 
 void addInfoCommand(CLI::App& app, int& exitCode);
 void addJointsCommand(CLI::App& app, int& exitCode);
+void addSynthCommand(CLI::App& app, int& exitCode);
 
 }  // namespace ew::cli

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   int exitCode = 0;
   ew::cli::addInfoCommand(app, exitCode);
   ew::cli::addJointsCommand(app, exitCode);
+  ew::cli::addSynthCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -2,6 +2,18 @@
 // Acclaim ASF (skeleton) + AMC (motion) reader: units block, root order/axis, per-bone
 // direction, length, axis, dof and limits; AMC in degrees or radians. AMC stores no frame
 // rate: the caller's rateHzOverride, else 120 Hz (CMU) with a warning.
+//
+// Forward kinematics (Acclaim convention, column vectors): for a bone b with parent p,
+//   C_b = axis rotation, M_b = M_p · C_b · R_b · C_b⁻¹,  end_b = end_p + M_b · direction_b · length_b
+// where R_b composes the bone's rotation dofs in the order the `dof` line lists them,
+// each applied after the previous one (dof rx ry rz -> R = Rz·Ry·Rx; `axis … XYZ` the
+// same way). The root: M_root = C_root · R_root · C_root⁻¹ from `orientation` and the
+// rotation entries of `order`; its point is `position` + the TX TY TZ values.
+// Points: "root" and one per bone, the bone's end, named by the bone. Lengths are in
+// 1/length inch (`:units length 0.45` -> 56.444 mm per unit) unless unitsOverride says
+// otherwise. AMC angles follow :DEGREES / :RADIANS, else the ASF's angle unit.
+// Frames must be numbered consecutively; bones a frame omits keep all dofs at 0.
+// Axes: +Y up (RawTrial::upAxis = {1, +1}).
 
 #include <filesystem>
 #include <string>
@@ -16,6 +28,10 @@ namespace ew {
 // prefixes the AMC's, e.g. 35.asf for 35_01.amc, else the only .asf there).
 RawTrial readAsfAmc(const std::filesystem::path& amcFile, const LoadOptions& options = {});
 RawTrial parseAsfAmc(std::string_view asfText, std::string_view amcText, const std::string& name,
+                     const LoadOptions& options = {});
+// The same, with separate names so errors in the skeleton name the .asf.
+RawTrial parseAsfAmc(std::string_view asfText, std::string_view amcText,
+                     const std::string& asfName, const std::string& amcName,
                      const LoadOptions& options = {});
 
 }  // namespace ew

@@ -1,0 +1,130 @@
+#include "core/engine/metrics.h"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/common/errors.h"
+#include "core/common/skeleton.h"
+#include "core/engine/fourier.h"
+#include "core/engine/projection.h"
+
+namespace ew {
+namespace {
+
+void requireWalker(const Eigen::Ref<const Eigen::VectorXd>& w, const char* what) {
+  if (w.size() != kFourierDims3)
+    throw Error(ErrorKind::BadArgument, "", "", std::string(what) + " must have 225 values");
+}
+
+// Depth coefficients (75, block-major then joint) → per joint temporal variance over one
+// cycle: ½(p1² + q1² + p2² + q2²).
+Eigen::VectorXd cycleVariance(const Eigen::VectorXd& d) {
+  Eigen::VectorXd v = Eigen::VectorXd::Zero(kJointCount);
+  for (int b = 1; b < kFourierBlocks; ++b)
+    v += 0.5 * d.segment(b * kJointCount, kJointCount).array().square().matrix();
+  return v;
+}
+
+// Per joint mean square over one cycle: p0² + variance.
+Eigen::VectorXd cycleMeanSquare(const Eigen::VectorXd& d) {
+  return d.head(kJointCount).array().square().matrix() + cycleVariance(d);
+}
+
+DepthErrors finish(Eigen::VectorXd absPerJoint, double sigmaM2) {
+  DepthErrors e;
+  e.absPerJoint = std::move(absPerJoint);
+  e.absMean = e.absPerJoint.mean();
+  e.sigmaM2Mm2 = sigmaM2;
+  e.relPerJoint = sigmaM2 > 0.0 ? Eigen::VectorXd(e.absPerJoint / sigmaM2)
+                                : Eigen::VectorXd::Constant(kJointCount, std::nan(""));
+  e.relMean = e.relPerJoint.mean();
+  return e;
+}
+
+// Complete rows of frames (T × 45) and their times.
+struct CompleteFrames {
+  Eigen::MatrixXd frames;
+  Eigen::VectorXd times;
+};
+
+CompleteFrames completeFrames(const Eigen::Ref<const Eigen::MatrixXd>& frames, double rateHz) {
+  if (frames.cols() != kDims3)
+    throw Error(ErrorKind::BadArgument, "", "", "frames must be T × 45");
+  std::vector<Eigen::Index> rows;
+  for (Eigen::Index i = 0; i < frames.rows(); ++i) {
+    if (frames.row(i).allFinite()) rows.push_back(i);
+  }
+  if (rows.empty()) throw Error(ErrorKind::BadData, "", "", "no complete frame to compare with");
+  CompleteFrames out;
+  out.frames.resize(static_cast<Eigen::Index>(rows.size()), kDims3);
+  out.times.resize(out.frames.rows());
+  for (Eigen::Index i = 0; i < out.frames.rows(); ++i) {
+    out.frames.row(i) = frames.row(rows[static_cast<size_t>(i)]);
+    out.times(i) = static_cast<double>(rows[static_cast<size_t>(i)]) / rateHz;
+  }
+  return out;
+}
+
+double meanJointDistance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  double sum = 0.0;
+  for (Eigen::Index t = 0; t < a.rows(); ++t) {
+    for (int j = 0; j < kJointCount; ++j) sum += (a.row(t).segment<3>(3 * j) - b.row(t).segment<3>(3 * j)).norm();
+  }
+  return sum / static_cast<double>(a.rows() * kJointCount);
+}
+
+}  // namespace
+
+double depthVarianceMm2(const Eigen::Ref<const Eigen::VectorXd>& wTrue, double alphaDeg) {
+  requireWalker(wTrue, "true walker");
+  return cycleVariance(depthAtView(wTrue, alphaDeg)).mean();
+}
+
+DepthErrors depthErrors(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
+                        const Eigen::Ref<const Eigen::VectorXd>& wRec, double alphaDeg) {
+  requireWalker(wTrue, "true walker");
+  requireWalker(wRec, "reconstruction");
+  const Eigen::VectorXd dTrue = depthAtView(wTrue, alphaDeg);
+  const Eigen::VectorXd delta = dTrue - depthAtView(wRec, alphaDeg);
+  return finish(cycleMeanSquare(delta), cycleVariance(dTrue).mean());
+}
+
+DepthErrors depthErrorsFrames(const Eigen::Ref<const Eigen::MatrixXd>& framesTrue, double rateHz,
+                              const Eigen::Ref<const Eigen::VectorXd>& wRec, double omegaRadS,
+                              double phaseRad, double alphaDeg) {
+  requireWalker(wRec, "reconstruction");
+  const CompleteFrames cf = completeFrames(framesTrue, rateHz);
+  const Eigen::MatrixXd dTrue = depthFramesAtView(cf.frames, alphaDeg);
+  const Eigen::MatrixXd dRec =
+      depthFramesAtView(synthesizeFrames(wRec, omegaRadS, phaseRad, cf.times), alphaDeg);
+  const Eigen::VectorXd absPerJoint = (dTrue - dRec).array().square().colwise().mean().transpose();
+  const Eigen::RowVectorXd mean = dTrue.colwise().mean();
+  const double sigmaM2 = (dTrue.rowwise() - mean).array().square().colwise().mean().mean();
+  return finish(absPerJoint, sigmaM2);
+}
+
+double mpjpe(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
+             const Eigen::Ref<const Eigen::VectorXd>& wRec, int samples) {
+  requireWalker(wTrue, "true walker");
+  requireWalker(wRec, "reconstruction");
+  if (samples < 1) throw Error(ErrorKind::BadArgument, "", "", "MPJPE needs at least one sample");
+  // One cycle of ω = 1 rad/s at phase 0: both walkers share ω and φ, so any would do.
+  const Eigen::VectorXd t =
+      Eigen::VectorXd::LinSpaced(samples, 0.0, 2.0 * std::numbers::pi * (samples - 1) / samples);
+  return meanJointDistance(synthesizeFrames(wTrue, 1.0, 0.0, t), synthesizeFrames(wRec, 1.0, 0.0, t));
+}
+
+double mpjpeFrames(const Eigen::Ref<const Eigen::MatrixXd>& framesTrue, double rateHz,
+                   const Eigen::Ref<const Eigen::VectorXd>& wRec, double omegaRadS,
+                   double phaseRad) {
+  requireWalker(wRec, "reconstruction");
+  const CompleteFrames cf = completeFrames(framesTrue, rateHz);
+  return meanJointDistance(cf.frames, synthesizeFrames(wRec, omegaRadS, phaseRad, cf.times));
+}
+
+double viewAngleErrorDeg(double estimatedDeg, double trueDeg) {
+  return std::abs(wrapDeg(estimatedDeg - trueDeg));
+}
+
+}  // namespace ew

@@ -1,0 +1,73 @@
+#pragma once
+// The eigenwalker model (SPEC §4; Zhang & Troje 2007, §3.1, eq. 3.3):
+//   W = [w_1 … w_R] (225 × R), w̄ = mean column, X = W − w̄1ᵀ = U S Vᵀ (thin SVD),
+//   e_n = U[:, n], λ_n = S_n² / (R − 1) (mm²), k_{n,r} = e_nᵀ (w_r − w̄),
+//   w ≈ w̄ + Σ_n k_n e_n.
+// Raw millimetres, no per-dimension standardisation.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ew {
+
+struct ModelOptions {
+  // Smallest N whose cumulative share of the variance reaches this (SPEC default 95 %).
+  double varianceThreshold = 0.95;
+  // Fixed N instead; an upper bound: clamped to R − 1 (the centred data's rank).
+  std::optional<int> components;
+};
+
+struct EigenwalkerModel {
+  Eigen::VectorXd mean;          // w̄, 225, mm
+  Eigen::MatrixXd eigenwalkers;  // E, 225 × N, orthonormal columns
+  Eigen::VectorXd eigenvalues;   // λ, N, mm², decreasing
+  Eigen::VectorXd spectrum;      // all R − 1 eigenvalues (cumulative-variance plots), mm²
+  Eigen::MatrixXd coefficients;  // k, N × R: column r holds walker r's coefficients
+  std::vector<std::string> walkerIds;  // R
+  std::vector<std::string> subjects;   // R, subject of each walker
+  Eigen::VectorXd omegasRadS;          // R, ω of each walker (kept beside w)
+  std::vector<std::string> provenance; // free text: sources, files, options, …
+
+  int componentCount() const { return static_cast<int>(eigenwalkers.cols()); }
+  int walkerCount() const { return static_cast<int>(walkerIds.size()); }
+  // Σ_{n ≤ N} λ_n / Σ λ over the whole spectrum.
+  double explainedVariance() const;
+};
+
+// Builds the model from W (225 × R, R ≥ 2). ids, subjects and omegas have R entries.
+// Eigenvector signs are fixed (largest-magnitude entry positive) so a rebuild is
+// reproducible. Throws Error(BadArgument) on inconsistent sizes or non-finite values.
+EigenwalkerModel buildModel(const Eigen::Ref<const Eigen::MatrixXd>& w,
+                            std::vector<std::string> walkerIds, std::vector<std::string> subjects,
+                            const Eigen::Ref<const Eigen::VectorXd>& omegasRadS,
+                            const ModelOptions& options = {});
+
+// The model without every walker of `heldOutSubject` (SPEC §4 leave-one-subject-out):
+// a refit of the remaining columns of W, so N follows the options on the R' remaining
+// walkers (at most R' − 1). Refit rather than an SVD downdate: a thin SVD of 225 × R' costs
+// O(225·R'²), well under a millisecond for R' in the tens, and is exact (docs/ENGINE.md).
+// Throws Error(BadArgument) if the subject is unknown or fewer than 2 walkers remain.
+EigenwalkerModel buildModelWithoutSubject(const Eigen::Ref<const Eigen::MatrixXd>& w,
+                                          const std::vector<std::string>& walkerIds,
+                                          const std::vector<std::string>& subjects,
+                                          const Eigen::Ref<const Eigen::VectorXd>& omegasRadS,
+                                          const std::string& heldOutSubject,
+                                          const ModelOptions& options = {});
+
+// Model synthesis w̄ + E k (225).
+Eigen::VectorXd synthesizeWalker(const EigenwalkerModel& model,
+                                 const Eigen::Ref<const Eigen::VectorXd>& k);
+
+// Coefficients of a 3D walker: Eᵀ (w − w̄) (N).
+Eigen::VectorXd projectOntoModel(const EigenwalkerModel& model,
+                                 const Eigen::Ref<const Eigen::VectorXd>& w);
+
+// p(t) of the model walker with coefficients k, at ω and φ (T × 45).
+Eigen::MatrixXd synthesizeWalkerFrames(const EigenwalkerModel& model,
+                                       const Eigen::Ref<const Eigen::VectorXd>& k, double omegaRadS,
+                                       double phaseRad,
+                                       const Eigen::Ref<const Eigen::VectorXd>& timesS);
+
+}  // namespace ew

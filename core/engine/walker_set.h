@@ -1,0 +1,43 @@
+#pragma once
+// Walkers from a dataset (SPEC §4): a walker is one trial, or the mean Fourier vector of
+// several trials of one subject in one condition. Builds the eigenwalker model from them.
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "core/engine/fourier.h"
+#include "core/engine/model.h"
+#include "core/gait/dataset.h"
+
+namespace ew {
+
+struct Walker {
+  std::string id;         // subject + "/" + condition
+  std::string subject;
+  std::string source;
+  std::string condition;
+  std::map<std::string, std::string> attributes;  // the first trial's manifest extras
+  std::vector<std::string> files;                 // trials averaged into this walker
+  FourierFit fit;  // 3D fit; for several trials: w, ω and the shares averaged, cycles and
+                   // frames summed, φ = 0 (w is already phase-aligned; no one time base)
+};
+
+// Groups trials by (subject, condition) in first-seen order and fits each trial with the
+// stride frequency of its gait cycles as the ω hint (SPEC §3). A trial whose fit fails is
+// left out with a warning "file: reason" (as is a walker left with no trial); fit warnings
+// are kept on the walker, prefixed with the file.
+std::vector<Walker> makeWalkers(const Dataset& dataset, std::vector<std::string>* warnings = nullptr);
+
+// W = [w_1 … w_R] (225 × R).
+Eigen::MatrixXd walkerMatrix(const std::vector<Walker>& walkers);
+
+// The model of these walkers, with one provenance line per walker (id, source, files).
+EigenwalkerModel buildModel(const std::vector<Walker>& walkers, const ModelOptions& options = {});
+
+// Leave-one-subject-out model (SPEC §4, §8): every walker of `subject` left out.
+EigenwalkerModel buildModelWithoutSubject(const std::vector<Walker>& walkers,
+                                          const std::string& subject,
+                                          const ModelOptions& options = {});
+
+}  // namespace ew

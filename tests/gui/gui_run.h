@@ -1,0 +1,103 @@
+#pragma once
+// Runs the real viewer (EW_GUI_PATH) under xvfb-run with a script and reads back what it
+// wrote; helpers to measure screenshots with OpenCV. Shared by tests/gui/test_gui_*.cpp.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+#include <string>
+
+namespace ew::test::gui {
+
+struct RunResult {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+inline std::string readAll(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline std::string quote(const std::string& s) { return "'" + s + "'"; }
+
+// Runs `eigenwalker ARGS` in a fresh X server. `dir` receives out.txt / err.txt.
+inline RunResult runViewer(const std::filesystem::path& dir, const std::string& args) {
+  const std::string env = std::string("LSAN_OPTIONS=suppressions=") + EW_GUI_LSAN_SUPPRESSIONS +
+                          ":print_suppressions=0 ";
+  const auto out = dir / "out.txt", err = dir / "err.txt";
+  const std::string cmd = "xvfb-run -a -s '-screen 0 1920x1080x24' env " + env + quote(EW_GUI_PATH) + " " + args +
+                          " > " + quote(out.string()) + " 2> " + quote(err.string());
+  RunResult r;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const int status = std::system(cmd.c_str());
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = readAll(out);
+    r.err = readAll(err);
+    // xvfb-run -a can race with another test for a display number: try again.
+    if (r.err.find("Xvfb failed to start") == std::string::npos &&
+        r.err.find("Cannot establish any listening sockets") == std::string::npos)
+      break;
+  }
+  return r;
+}
+
+inline std::filesystem::path writeScript(const std::filesystem::path& dir, const std::string& json) {
+  const auto file = dir / "script.json";
+  std::ofstream(file) << json;
+  return file;
+}
+
+// A region of the image as fractions of its size.
+struct Region {
+  double x0, y0, x1, y1;
+};
+
+// The 2D input view and the 3D view of the default layout (docs/VIEWER.md), inset so
+// that small layout changes do not move them out.
+inline constexpr Region kInputView{0.23, 0.22, 0.47, 0.64};
+inline constexpr Region kReconView{0.54, 0.22, 0.78, 0.64};
+
+inline cv::Mat crop(const cv::Mat& image, Region r) {
+  const int x0 = static_cast<int>(r.x0 * image.cols), x1 = static_cast<int>(r.x1 * image.cols);
+  const int y0 = static_cast<int>(r.y0 * image.rows), y1 = static_cast<int>(r.y1 * image.rows);
+  return image(cv::Rect(x0, y0, x1 - x0, y1 - y0));
+}
+
+// Pixels (BGR image) for which `pred(r, g, b)` holds.
+inline int countPixels(const cv::Mat& bgr, const std::function<bool(int, int, int)>& pred) {
+  int n = 0;
+  for (int y = 0; y < bgr.rows; ++y) {
+    const auto* row = bgr.ptr<cv::Vec3b>(y);
+    for (int x = 0; x < bgr.cols; ++x)
+      if (pred(row[x][2], row[x][1], row[x][0])) ++n;
+  }
+  return n;
+}
+
+// The 2D input's point-lights saturate to white (UI text never does).
+inline bool isPointLight(int r, int g, int b) { return r >= 250 && g >= 250 && b >= 250; }
+// The reconstruction's amber bones.
+inline bool isAmber(int r, int g, int b) { return r > 190 && g > 80 && g < 200 && b < 110 && r - b > 120; }
+// The ground-truth ghost: blue dominant.
+inline bool isGhostBlue(int r, int g, int b) { return b > 110 && b - r > 45 && b >= g; }
+// Error lines: magenta.
+inline bool isMagenta(int r, int g, int b) { return r > 170 && b > 90 && g < 110 && r - g > 100; }
+
+inline double meanAbsDiff(const cv::Mat& a, const cv::Mat& b) {
+  cv::Mat d;
+  cv::absdiff(a, b, d);
+  const cv::Scalar m = cv::mean(d);
+  return (m[0] + m[1] + m[2]) / 3.0;
+}
+
+}  // namespace ew::test::gui

@@ -1,0 +1,116 @@
+// The viewer, end to end, on the synthetic default population: the real app under
+// xvfb-run with scripts, its screenshots measured with OpenCV.
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/common/test_support.h"
+#include "tests/gui/gui_run.h"
+
+namespace ew::test::gui {
+namespace {
+
+class GuiDefault : public ::testing::Test {
+ protected:
+  void SetUp() override { dir = makeTempDir("gui"); }
+  void TearDown() override {
+    if (!HasFailure()) std::filesystem::remove_all(dir);
+  }
+  cv::Mat load(const std::string& name) {
+    cv::Mat image = cv::imread((dir / name).string(), cv::IMREAD_COLOR);
+    EXPECT_FALSE(image.empty()) << "screenshot " << name << " missing";
+    return image;
+  }
+  std::filesystem::path dir;
+};
+
+TEST_F(GuiDefault, ScriptScreenshotsShowBothViewsAndFollowTheInputs) {
+  const auto d = dir.string();
+  const auto script = writeScript(dir, R"([
+    {"select_subject": "SYN05"},
+    {"set_method": "map"},
+    {"set_angle": 30},
+    {"play": false},
+    {"set_phase": 0.25},
+    {"screenshot": ")" + d + R"(/base.png"},
+    {"set_angle": 90},
+    {"screenshot": ")" + d + R"(/alpha90.png"},
+    {"set_angle": 30},
+    {"overlay": ["ghost", false]},
+    {"overlay": ["error_lines", false]},
+    {"overlay": ["depth_error", false]},
+    {"screenshot": ")" + d + R"(/overlays_off.png"},
+    {"set_mode": "explore"},
+    {"set_coefficient": [1, 2.5]},
+    {"screenshot": ")" + d + R"(/explore.png"}
+  ])");
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+
+  const cv::Mat base = load("base.png"), alpha90 = load("alpha90.png");
+  const cv::Mat off = load("overlays_off.png"), explore = load("explore.png");
+  ASSERT_FALSE(base.empty() || alpha90.empty() || off.empty() || explore.empty());
+  EXPECT_EQ(base.cols, 1280);
+  EXPECT_EQ(base.rows, 720);
+
+  // Both views are drawn, with their figures: point-lights on the left, the amber
+  // reconstruction and the blue ghost on the right.
+  const int lights = countPixels(crop(base, kInputView), isPointLight);
+  const int amber = countPixels(crop(base, kReconView), isAmber);
+  const int ghost = countPixels(crop(base, kReconView), isGhostBlue);
+  const int magenta = countPixels(crop(base, kReconView), isMagenta);
+  EXPECT_GT(lights, 150) << "no point-lights in the 2D view";
+  EXPECT_GT(amber, 400) << "no reconstruction in the 3D view";
+  EXPECT_GT(ghost, 200) << "no ground-truth ghost in the 3D view";
+  EXPECT_LT(countPixels(crop(base, kReconView), isPointLight), lights) << "views swapped?";
+
+  // Changing α changes the 2D view (a profile instead of an oblique view).
+  EXPECT_GT(meanAbsDiff(crop(base, kInputView), crop(alpha90, kInputView)), 0.5);
+
+  // Overlays switch off: the ghost and the error lines disappear, the figure stays.
+  EXPECT_LT(countPixels(crop(off, kReconView), isGhostBlue), ghost / 5 + 20);
+  EXPECT_LE(countPixels(crop(off, kReconView), isMagenta), magenta);
+  EXPECT_GT(countPixels(crop(off, kReconView), isAmber), 400);
+
+  // Explore mode draws a synthesised walker in both views.
+  EXPECT_GT(countPixels(crop(explore, kReconView), isAmber), 400);
+  EXPECT_GT(countPixels(crop(explore, kInputView), isPointLight), 150);
+}
+
+TEST_F(GuiDefault, UnknownActionIsAnError) {
+  const auto script = writeScript(dir, R"([{"set_angle": 10}, {"fly_away": true}])");
+  const RunResult r = runViewer(dir, "--size 800x600 --script " + quote(script.string()));
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("unknown action \"fly_away\""), std::string::npos) << r.err;
+}
+
+TEST_F(GuiDefault, FailedActionIsAnError) {
+  const auto script = writeScript(dir, R"([{"select_subject": "NOBODY"}])");
+  const RunResult r = runViewer(dir, "--size 800x600 --script " + quote(script.string()));
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("NOBODY"), std::string::npos) << r.err;
+}
+
+TEST_F(GuiDefault, OpeningAMissingFileIsAnErrorNotACrash) {
+  const auto script = writeScript(dir, R"([{"open": "/nonexistent/walkers.csv"}, {"wait_frames": 1}])");
+  const RunResult r = runViewer(dir, "--size 800x600 --script " + quote(script.string()));
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("nonexistent"), std::string::npos) << r.err;
+}
+
+TEST_F(GuiDefault, BenchFramesPrintsFrameTimesAsJson) {
+  const auto script = writeScript(dir, R"([{"unknown_angle": true}])");
+  const RunResult r =
+      runViewer(dir, "--size 1280x720 --bench-frames 20 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto last = r.out.substr(r.out.rfind('{'));
+  const auto json = nlohmann::json::parse(last);
+  EXPECT_EQ(json.at("frames").get<int>(), 20);
+  EXPECT_GT(json.at("median_ms").get<double>(), 0.0);
+  EXPECT_GE(json.at("p95_ms").get<double>(), json.at("median_ms").get<double>());
+  EXPECT_GE(json.at("max_ms").get<double>(), json.at("p95_ms").get<double>());
+}
+
+}  // namespace
+}  // namespace ew::test::gui

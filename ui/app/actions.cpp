@@ -1,0 +1,279 @@
+#include "ui/app/actions.h"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "core/engine/model.h"
+#include "core/engine/projection.h"
+
+namespace ew::ui::actions {
+
+// [SECTION] Loading
+
+namespace {
+
+void startLoad(AppState& s, std::vector<std::filesystem::path> paths) {
+  s.jobs.loadingPaths = paths;
+  const std::string title = paths.empty() ? "Synthesising the default population"
+                                          : "Loading " + paths.front().filename().string() +
+                                                (paths.size() > 1 ? " …" : "");
+  s.log.info(title);
+  s.jobs.load.start(title, [paths](JobProgress& progress) -> std::shared_ptr<const Population> {
+    auto report = [&progress](int done, int total, const std::string& what) {
+      progress.set(done, total, what);
+    };
+    if (paths.empty()) return std::make_shared<const Population>(defaultPopulation(report));
+    return std::make_shared<const Population>(loadPopulation(paths, report));
+  });
+}
+
+void startModels(AppState& s) {
+  auto population = s.doc.population;
+  s.jobs.models.start("Building leave-one-out models",
+                      [population](JobProgress& progress) -> std::shared_ptr<const ModelSet> {
+                        return std::make_shared<const ModelSet>(buildModelSet(
+                            *population, [&progress](int done, int total, const std::string& what) {
+                              progress.set(done, total, what);
+                            }));
+                      });
+}
+
+}  // namespace
+
+void open(AppState& s, std::vector<std::filesystem::path> paths) {
+  if (s.jobs.load.running() || s.jobs.models.running()) {
+    s.jobs.pendingOpen = std::move(paths);
+    return;
+  }
+  startLoad(s, std::move(paths));
+}
+
+void pollJobs(AppState& s) {
+  if (auto outcome = s.jobs.load.poll()) {
+    if (outcome->value) {
+      const auto& pop = *outcome->value;
+      s.doc.population = pop;
+      s.doc.models.reset();
+      s.doc.sourcePaths = s.jobs.loadingPaths;
+      ++s.doc.generation;
+      s.doc.walker = 0;
+      s.doc.editedSd.clear();
+      s.doc.exploreSd.clear();
+      s.jobs.lastError.clear();
+      s.log.info("Loaded " + pop->label + ": " + std::to_string(pop->walkerCount()) + " walkers");
+      for (const auto& w : pop->warnings) s.log.warning(w);
+      startModels(s);
+    } else {
+      ++s.jobs.failures;
+      s.jobs.lastError = "Could not open " +
+                         (s.jobs.loadingPaths.empty() ? std::string("the default population")
+                                                      : s.jobs.loadingPaths.front().string()) +
+                         ": " + outcome->error;
+      s.log.error(s.jobs.lastError);
+    }
+  }
+  if (auto outcome = s.jobs.models.poll()) {
+    if (outcome->value) {
+      s.doc.models = *outcome->value;
+      s.log.info("Built " + std::to_string(s.doc.models->withoutSubject.size()) +
+                 " leave-one-out models and the full model (" +
+                 std::to_string(s.doc.models->all.walkerCount()) + " walkers)");
+    } else {
+      ++s.jobs.failures;
+      s.jobs.lastError = "Could not build the models: " + outcome->error;
+      s.log.error(s.jobs.lastError);
+    }
+  }
+  if (s.jobs.pendingOpen && !s.jobs.load.running() && !s.jobs.models.running()) {
+    auto paths = std::move(*s.jobs.pendingOpen);
+    s.jobs.pendingOpen.reset();
+    startLoad(s, std::move(paths));
+  }
+}
+
+// [SECTION] Document edits
+
+namespace {
+
+void requireLoaded(const AppState& s) {
+  if (!s.doc.population || s.doc.population->walkerCount() == 0)
+    throw std::invalid_argument("no data loaded");
+}
+
+}  // namespace
+
+void selectWalker(AppState& s, int index) {
+  requireLoaded(s);
+  if (index < 0 || index >= s.doc.population->walkerCount())
+    throw std::invalid_argument("walker index " + std::to_string(index) + " out of range");
+  if (s.doc.walker != index) s.doc.editedSd.clear();
+  s.doc.walker = index;
+}
+
+void selectSubject(AppState& s, const std::string& subjectOrId) {
+  requireLoaded(s);
+  const int i = s.doc.population->findWalker(subjectOrId);
+  if (i < 0) throw std::invalid_argument("no subject or walker \"" + subjectOrId + "\"");
+  selectWalker(s, i);
+  s.panels.subjects.scrollToSelection = true;  // bring it into the list's view
+}
+
+void setMode(AppState& s, Mode mode) { s.doc.mode = mode; }
+
+void setAngle(AppState& s, double alphaDeg) {
+  if (!std::isfinite(alphaDeg) || alphaDeg < -180.0 || alphaDeg > 180.0)
+    throw std::invalid_argument("view angle must lie in [-180, 180] degrees");
+  if (s.doc.recon.alphaDeg != alphaDeg) s.doc.editedSd.clear();
+  s.doc.recon.alphaDeg = alphaDeg;
+}
+
+void setEstimator(AppState& s, Estimator estimator) {
+  if (s.doc.recon.estimator != estimator) s.doc.editedSd.clear();
+  s.doc.recon.estimator = estimator;
+}
+
+void setSigma2(AppState& s, double sigma2Mm2) {
+  if (!std::isfinite(sigma2Mm2) || sigma2Mm2 <= 0.0)
+    throw std::invalid_argument("sigma2 must be a positive number of mm^2");
+  if (s.doc.recon.sigma2Mm2 != sigma2Mm2) s.doc.editedSd.clear();
+  s.doc.recon.sigma2Mm2 = sigma2Mm2;
+}
+
+void setComponents(AppState& s, int components) {
+  if (components < 0) throw std::invalid_argument("components must be >= 0 (0 = auto)");
+  if (s.doc.models) {
+    const int maxN = s.doc.models->all.componentCount();
+    if (components > maxN)
+      throw std::invalid_argument("components must be at most " + std::to_string(maxN));
+  }
+  if (s.doc.recon.components != components) s.doc.editedSd.clear();
+  s.doc.recon.components = components;
+}
+
+void setUnknownAngle(AppState& s, bool unknown) {
+  if (s.doc.recon.unknownAngle != unknown) s.doc.editedSd.clear();
+  s.doc.recon.unknownAngle = unknown;
+}
+
+int coefficientCount(const AppState& s) {
+  if (s.doc.mode == Mode::Explore) {
+    const auto* e = s.derived.explore();
+    return e ? e->components : 0;
+  }
+  const auto* r = s.derived.recon();
+  return r ? r->components : 0;
+}
+
+void setCoefficient(AppState& s, int index, double sd) {
+  requireLoaded(s);
+  const int n = coefficientCount(s);
+  if (index < 0 || index >= n)
+    throw std::invalid_argument("coefficient " + std::to_string(index + 1) + " out of range 1…" +
+                                std::to_string(n));
+  if (!std::isfinite(sd)) throw std::invalid_argument("coefficient value must be a number");
+  sd = std::clamp(sd, -3.0, 3.0);
+  if (s.doc.mode == Mode::Explore) {
+    s.doc.exploreSd.resize(static_cast<std::size_t>(n), 0.0);
+    s.doc.exploreSd[static_cast<std::size_t>(index)] = sd;
+  } else {
+    const auto* d = s.derived.display();
+    if (!d) throw std::invalid_argument("no reconstruction yet");
+    if (static_cast<int>(s.doc.editedSd.size()) != n)
+      s.doc.editedSd.assign(d->kSd.data(), d->kSd.data() + d->kSd.size());
+    s.doc.editedSd[static_cast<std::size_t>(index)] = sd;
+  }
+}
+
+void resetCoefficients(AppState& s) {
+  if (s.doc.mode == Mode::Explore) {
+    s.doc.exploreSd.assign(s.doc.exploreSd.size(), 0.0);
+  } else {
+    s.doc.editedSd.clear();
+  }
+}
+
+void randomiseCoefficients(AppState& s, unsigned seed) {
+  const int n = coefficientCount(s);
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  s.doc.exploreSd.resize(static_cast<std::size_t>(n));
+  for (auto& v : s.doc.exploreSd) v = std::clamp(normal(rng), -3.0, 3.0);
+}
+
+void coefficientsFromWalker(AppState& s) {
+  requireLoaded(s);
+  if (!s.doc.models) throw std::invalid_argument("models not built yet");
+  const auto* e = s.derived.explore();
+  const int n = e ? e->components : 0;
+  const EigenwalkerModel m = truncateModel(s.doc.models->all, n);
+  const Eigen::VectorXd k =
+      projectOntoModel(m, s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)].fit.w);
+  s.doc.exploreSd.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i)
+    s.doc.exploreSd[static_cast<std::size_t>(i)] =
+        std::clamp(k(i) / std::max(std::sqrt(m.eigenvalues(i)), 1e-12), -3.0, 3.0);
+}
+
+// [SECTION] View state
+
+void setPhase(AppState& s, double phase01) {
+  if (!std::isfinite(phase01) || phase01 < 0.0 || phase01 > 1.0)
+    throw std::invalid_argument("phase must lie in [0, 1]");
+  s.view.playback.setPhase(phase01);
+}
+
+void setPlaying(AppState& s, bool playing) { s.view.playback.playing = playing; }
+
+std::vector<std::string> overlayNames() {
+  return {"depth_error", "error_lines", "error_bars", "metrics", "ghost",
+          "camera",      "grid",        "reprojection", "stick_figure", "trails"};
+}
+
+void setOverlay(AppState& s, const std::string& name, bool on) {
+  auto& o = s.view.overlays;
+  bool* target = name == "depth_error"    ? &o.depthErrorColour
+                 : name == "error_lines"  ? &o.errorLines
+                 : name == "error_bars"   ? &o.errorBars
+                 : name == "metrics"      ? &o.metrics
+                 : name == "ghost"        ? &o.ghost
+                 : name == "camera"       ? &o.cameraGlyph
+                 : name == "grid"         ? &o.grid
+                 : name == "reprojection" ? &o.reprojection
+                 : name == "stick_figure" ? &o.stickFigure
+                 : name == "trails"       ? &o.trails
+                                          : nullptr;
+  if (!target) {
+    std::string known;
+    for (const auto& n : overlayNames()) known += (known.empty() ? "" : ", ") + n;
+    throw std::invalid_argument("unknown overlay \"" + name + "\" (known: " + known + ")");
+  }
+  *target = on;
+}
+
+void setCamera(AppState& s, const std::string& preset) {
+  if (preset == "three_quarter") {
+    s.view.camera = OrbitCamera::preset(CameraPreset::ThreeQuarter);
+  } else if (preset == "front") {
+    s.view.camera = OrbitCamera::preset(CameraPreset::Front);
+  } else if (preset == "side") {
+    s.view.camera = OrbitCamera::preset(CameraPreset::Side);
+  } else if (preset == "top") {
+    s.view.camera = OrbitCamera::preset(CameraPreset::Top);
+  } else {
+    throw std::invalid_argument("unknown camera \"" + preset +
+                                "\" (known: three_quarter, front, side, top)");
+  }
+}
+
+double playbackStrideHz(const AppState& s) {
+  if (!s.doc.population || s.doc.population->walkerCount() == 0) return 0.9;
+  if (s.doc.mode == Mode::Explore) {
+    const auto* e = s.derived.explore();
+    return e ? e->strideHz : 0.9;
+  }
+  return s.doc.population->facts[static_cast<std::size_t>(s.doc.walker)].strideHz;
+}
+
+}  // namespace ew::ui::actions

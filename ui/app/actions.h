@@ -1,0 +1,46 @@
+#pragma once
+// The operations on the document, shared by the panels and the script runner so that a
+// script does exactly what a click does. Each validates its argument and throws
+// std::invalid_argument with a readable message when it cannot apply.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ui/app/app_state.h"
+
+namespace ew::ui::actions {
+
+// Starts loading `paths` (empty = the synthetic default population) in the background.
+void open(AppState& s, std::vector<std::filesystem::path> paths);
+// Picks up finished background jobs; starts the model build after a load. Call once a frame.
+void pollJobs(AppState& s);
+
+void selectWalker(AppState& s, int index);
+void selectSubject(AppState& s, const std::string& subjectOrId);
+void setMode(AppState& s, Mode mode);
+void setAngle(AppState& s, double alphaDeg);
+void setEstimator(AppState& s, Estimator estimator);
+void setSigma2(AppState& s, double sigma2Mm2);
+void setComponents(AppState& s, int components);  // 0 = auto (95 %)
+void setUnknownAngle(AppState& s, bool unknown);
+// index from 0; value in SD units, clamped to ±3. Explore mode: the explorer's
+// coefficients; reconstruct mode: an edit of the estimate.
+void setCoefficient(AppState& s, int index, double sd);
+void resetCoefficients(AppState& s);
+void randomiseCoefficients(AppState& s, unsigned seed);
+void coefficientsFromWalker(AppState& s);  // explorer starts from the selected walker
+void setPhase(AppState& s, double phase01);
+void setPlaying(AppState& s, bool playing);
+// Overlay names: depth_error, error_lines, error_bars, metrics, ghost, camera, grid,
+// reprojection, stick_figure, trails.
+void setOverlay(AppState& s, const std::string& name, bool on);
+std::vector<std::string> overlayNames();
+void setCamera(AppState& s, const std::string& preset);  // three_quarter, front, side, top
+
+// Number of coefficient sliders in the current mode (0 when nothing is loaded).
+int coefficientCount(const AppState& s);
+// The stride frequency driving playback (selected walker, or the population mean).
+double playbackStrideHz(const AppState& s);
+
+}  // namespace ew::ui::actions

@@ -1,0 +1,252 @@
+#include "ui/app/app.h"
+
+// [SECTION] Includes
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+#include <imgui_internal.h>
+
+#include "ui/gl/gl.h"  // epoxy before GLFW
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <vector>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+#include "ui/app/layout.h"
+#include "ui/app/screenshot.h"
+#include "ui/app/script.h"
+#include "ui/app/theme.h"
+#include "ui/render/renderer.h"
+
+namespace ew::ui {
+
+namespace {
+
+// [SECTION] Platform: GLFW and Dear ImGui lifetimes
+
+void glfwErrorCallback(int code, const char* description) {
+  std::fprintf(stderr, "eigenwalker: GLFW error %d: %s\n", code, description);
+}
+
+struct GlfwSession {
+  GlfwSession() {
+    glfwSetErrorCallback(glfwErrorCallback);
+    if (!glfwInit()) throw std::runtime_error("cannot initialise GLFW (no display?)");
+  }
+  ~GlfwSession() { glfwTerminate(); }
+  GlfwSession(const GlfwSession&) = delete;
+  GlfwSession& operator=(const GlfwSession&) = delete;
+};
+
+struct WindowDeleter {
+  void operator()(GLFWwindow* w) const { glfwDestroyWindow(w); }
+};
+using WindowPtr = std::unique_ptr<GLFWwindow, WindowDeleter>;
+
+WindowPtr createWindow(int width, int height) {
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
+  WindowPtr window(glfwCreateWindow(width, height, "Eigenwalker", nullptr, nullptr));
+  if (!window) throw std::runtime_error("cannot create an OpenGL 3.3 core window");
+  glfwMakeContextCurrent(window.get());
+  return window;
+}
+
+struct ImGuiSession {
+  explicit ImGuiSession(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; nothing to save
+    if (!ImGui_ImplGlfw_InitForOpenGL(window, true)) throw std::runtime_error("ImGui GLFW backend failed");
+    if (!ImGui_ImplOpenGL3_Init("#version 330")) throw std::runtime_error("ImGui OpenGL3 backend failed");
+  }
+  ~ImGuiSession() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  ImGuiSession(const ImGuiSession&) = delete;
+  ImGuiSession& operator=(const ImGuiSession&) = delete;
+};
+
+// [SECTION] Frame timing for --bench-frames
+
+struct FrameStats {
+  std::vector<double> ms;
+  std::string json() const {
+    std::vector<double> v = ms;
+    std::sort(v.begin(), v.end());
+    auto pick = [&](double q) {
+      if (v.empty()) return 0.0;
+      const auto i = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
+      return v[std::min(i, v.size() - 1)];
+    };
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "{\"frames\": %zu, \"median_ms\": %.3f, \"p95_ms\": %.3f, \"max_ms\": %.3f}",
+                  v.size(), pick(0.5), pick(0.95), v.empty() ? 0.0 : v.back());
+    return buf;
+  }
+};
+
+// [SECTION] The application
+
+class App {
+ public:
+  explicit App(const AppOptions& options)
+      : options_(options),
+        window_(createWindow(options.width, options.height)),
+        imgui_(window_.get()),
+        renderer_() {
+    state_.log.setEcho(options.script.has_value() || options.screenshot.has_value() || options.benchFrames > 0);
+    state_.log.info(gl::describeContext());
+    state_.view.uiScale = options.uiScale;
+    scripted_ = options.script.has_value() || options.screenshot.has_value() || options.benchFrames > 0;
+    glfwSwapInterval(scripted_ ? 0 : 1);
+    if (options.script) runner_ = ScriptRunner(readScript(*options.script), options.script->string());
+    actions::open(state_, options.data);
+  }
+
+  int run() {
+    auto last = std::chrono::steady_clock::now();
+    while (!glfwWindowShouldClose(window_.get()) && !state_.quitRequested) {
+      const auto start = std::chrono::steady_clock::now();
+      const double dt = std::min(0.1, std::chrono::duration<double>(start - last).count());
+      last = start;
+      glfwPollEvents();
+      updateScale();
+
+      actions::pollJobs(state_);
+      runner_.step(state_);
+      if (runner_.failed()) {
+        std::fprintf(stderr, "eigenwalker: %s\n", runner_.error().c_str());
+        return 1;
+      }
+      state_.derived.update(state_.doc);
+      state_.view.playback.advance(dt, actions::playbackStrideHz(state_));
+
+      drawFrame(dt);
+      if (auto file = runner_.takeCapture()) {
+        int w = 0, h = 0;
+        glfwGetFramebufferSize(window_.get(), &w, &h);
+        try {
+          writeScreenshot(*file, w, h);
+          state_.log.info("screenshot " + file->string());
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "eigenwalker: %s\n", e.what());
+          return 1;
+        }
+      }
+      glfwSwapBuffers(window_.get());
+      ++state_.frame;
+
+      if (benchRemaining_ > 0) {
+        stats_.ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        if (--benchRemaining_ == 0) {
+          std::printf("%s\n", stats_.json().c_str());
+          std::fflush(stdout);
+          return 0;
+        }
+      } else if (scripted_ && runner_.finished() && !state_.jobs.busy()) {
+        if (!finalScreenshotRequested_ && options_.screenshot) {
+          finalScreenshotRequested_ = true;
+          runner_.requestCapture(*options_.screenshot);
+        } else if (options_.benchFrames > 0 && !benchStarted_) {
+          benchStarted_ = true;
+          benchRemaining_ = options_.benchFrames;
+          state_.view.playback.playing = true;
+        } else if (options_.benchFrames == 0 || benchStarted_) {
+          if (!state_.jobs.lastError.empty() && !options_.script) {
+            std::fprintf(stderr, "eigenwalker: %s\n", state_.jobs.lastError.c_str());
+            return 1;
+          }
+          return 0;
+        }
+      }
+    }
+    return 0;
+  }
+
+ private:
+  void updateScale() {
+    float xs = 1.0f, ys = 1.0f;
+    glfwGetWindowContentScale(window_.get(), &xs, &ys);
+    state_.view.contentScale = std::max(xs, 0.5f);
+    const float scale = state_.view.contentScale * state_.view.uiScale;
+    if (scale != themeScale_) {
+      themeScale_ = scale;
+      applyTheme(state_.fonts, scale);
+      ImGui_ImplOpenGL3_DestroyFontsTexture();
+      ImGui_ImplOpenGL3_CreateFontsTexture();
+    }
+  }
+
+  void drawFrame(double dt) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    const ImGuiIO& io = ImGui::GetIO();
+    const Layout l = computeLayout(io.DisplaySize.x, io.DisplaySize.y, themeScale_);
+    FrameContext ctx{renderer_, themeScale_, dt};
+    auto& p = state_.panels;
+    try {
+      p.header.draw(state_, ctx, l.header);
+      p.subjects.draw(state_, ctx, l.subjects);
+      p.controls.draw(state_, ctx, l.controls);
+      p.metrics.draw(state_, ctx, l.metrics);
+      p.input.draw(state_, ctx, l.input);
+      p.reconstruction.draw(state_, ctx, l.reconstruction);
+      p.playback.draw(state_, ctx, l.playback);
+      p.coefficients.draw(state_, ctx, l.coefficients);
+      p.jointErrors.draw(state_, ctx, l.jointErrors);
+      p.profile.draw(state_, ctx, l.profile);
+      p.log.draw(state_, ctx, l.log);
+    } catch (const std::exception& e) {
+      // An action refused its input, or GL failed: say so, keep running.
+      ImGui::ErrorCheckEndFrameRecover(nullptr);
+      state_.log.error(e.what());
+    }
+    ImGui::Render();
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_.get(), &w, &h);
+    gl::bindDefaultFramebuffer(w, h);
+    gl::clear({0.05f, 0.055f, 0.065f, 1.0f});
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  }
+
+  AppOptions options_;
+  GlfwSession glfw_;  // members initialise in this order: GLFW, window, ImGui, GL objects
+  WindowPtr window_;
+  ImGuiSession imgui_;
+  Renderer renderer_;
+  AppState state_;
+  ScriptRunner runner_;
+  float themeScale_ = 0.0f;
+  bool scripted_ = false;
+  bool finalScreenshotRequested_ = false;
+  bool benchStarted_ = false;
+  int benchRemaining_ = 0;
+  FrameStats stats_;
+};
+
+}  // namespace
+
+int runApp(const AppOptions& options) {
+  try {
+    App app(options);
+    return app.run();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "eigenwalker: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace ew::ui

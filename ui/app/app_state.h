@@ -1,0 +1,85 @@
+#pragma once
+// Everything the viewer knows, in one place: the document, the view state, the derived
+// caches, the background jobs, the log, and one struct per panel (each panel's own
+// state lives in its struct, never in function-local statics).
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ui/app/background_job.h"
+#include "ui/app/derived.h"
+#include "ui/app/document.h"
+#include "ui/app/log.h"
+#include "ui/panels/coefficients_panel.h"
+#include "ui/panels/controls_panel.h"
+#include "ui/panels/header_panel.h"
+#include "ui/panels/input_view_panel.h"
+#include "ui/panels/joint_errors_panel.h"
+#include "ui/panels/log_panel.h"
+#include "ui/panels/metrics_panel.h"
+#include "ui/panels/playback_panel.h"
+#include "ui/panels/profile_panel.h"
+#include "ui/panels/reconstruction_view_panel.h"
+#include "ui/panels/subjects_panel.h"
+
+struct ImFont;
+
+namespace ew::ui {
+
+class Renderer;
+
+struct Jobs {
+  BackgroundJob<std::shared_ptr<const Population>> load;
+  BackgroundJob<std::shared_ptr<const ModelSet>> models;
+  // An open requested while a load was running: started when it finishes.
+  std::optional<std::vector<std::filesystem::path>> pendingOpen;
+  std::vector<std::filesystem::path> loadingPaths;
+  std::string lastError;   // shown in the header until dismissed
+  int failures = 0;        // loads or model builds that failed (scripts check it)
+
+  bool busy() const { return load.running() || models.running() || pendingOpen.has_value(); }
+};
+
+struct Fonts {
+  ImFont* body = nullptr;
+  ImFont* large = nullptr;   // metric values
+  ImFont* small = nullptr;   // view annotations
+};
+
+struct Panels {
+  HeaderPanel header;
+  SubjectsPanel subjects;
+  ControlsPanel controls;
+  PlaybackPanel playback;
+  InputViewPanel input;
+  ReconstructionViewPanel reconstruction;
+  CoefficientsPanel coefficients;
+  MetricsPanel metrics;
+  JointErrorsPanel jointErrors;
+  ProfilePanel profile;
+  LogPanel log;
+};
+
+struct AppState {
+  Document doc;
+  ViewState view;
+  Derived derived;
+  Jobs jobs;
+  Log log;
+  Fonts fonts;
+  Panels panels;
+  bool quitRequested = false;
+  std::uint64_t frame = 0;
+};
+
+// What a panel needs besides the state to draw one frame.
+struct FrameContext {
+  Renderer& renderer;
+  float scale = 1.0f;   // UI scale × content scale (sizes in the panels multiply by it)
+  double dtS = 0.0;
+};
+
+}  // namespace ew::ui

@@ -1,0 +1,144 @@
+#include "ui/app/derived.h"
+
+#include <cmath>
+#include <numbers>
+#include <utility>
+
+#include "core/engine/fourier.h"
+#include "core/engine/model.h"
+#include "core/engine/projection.h"
+
+namespace ew::ui {
+
+Eigen::VectorXd frameAtPhase(const Eigen::VectorXd& w, double phase01) {
+  Eigen::VectorXd t(1);
+  t(0) = 2.0 * std::numbers::pi * phase01;
+  return synthesizeFrames(w, 1.0, 0.0, t).row(0).transpose();
+}
+
+Eigen::MatrixXd trailOverCycle(const Eigen::VectorXd& w, int samples) {
+  const Eigen::VectorXd t =
+      Eigen::VectorXd::LinSpaced(samples, 0.0, 2.0 * std::numbers::pi * (samples - 1) / samples);
+  return synthesizeFrames(w, 1.0, 0.0, t);
+}
+
+namespace {
+
+std::unique_ptr<ReconBase> computeRecon(const Document& doc, const ReconKey& key) {
+  const Population& pop = *doc.population;
+  const Walker& walker = pop.walkers.at(static_cast<std::size_t>(key.walker));
+  auto it = doc.models->withoutSubject.find(walker.subject);
+  if (it == doc.models->withoutSubject.end())
+    throw std::runtime_error("no leave-one-out model for " + walker.subject);
+  const EigenwalkerModel& loo = it->second;
+  auto r = std::make_unique<ReconBase>();
+  r->heldOutSubject = walker.subject;
+  r->modelWalkers = loo.walkerCount();
+  r->autoComponents = key.settings.components <= 0;
+  r->components = r->autoComponents ? autoComponentCount(loo)
+                                    : std::min(key.settings.components, loo.componentCount());
+  r->explained = explainedShare(loo, r->components);
+  r->model = truncateModel(loo, r->components);
+  r->gram = precomputeModelGram(r->model);
+  r->sd = r->model.eigenvalues.cwiseMax(0.0).cwiseSqrt();
+  r->wTrue = walker.fit.w;
+  r->alphaTrueDeg = key.settings.alphaDeg;
+  r->observed = projectToView(r->wTrue, key.settings.alphaDeg);
+  r->observedTrail = trailOverCycle(r->observed, kTrailSamples);
+  r->strideHz = walker.fit.omegaRadS / (2.0 * std::numbers::pi);
+  EstimatorOptions est;
+  est.estimator = key.settings.estimator;
+  est.sigma2Mm2 = key.settings.sigma2Mm2;
+  if (key.settings.unknownAngle) {
+    r->search = searchViewAngle(r->gram, r->observed, est);
+    r->estimate = r->search->best;
+  } else {
+    r->estimate = reconstructKnownView(r->gram, r->observed, key.settings.alphaDeg, est);
+  }
+  r->alphaUsedDeg = r->estimate.alphaDeg;
+  return r;
+}
+
+std::unique_ptr<ReconDisplay> computeDisplay(const ReconBase& base,
+                                             const std::vector<double>& editedSd) {
+  auto d = std::make_unique<ReconDisplay>();
+  const auto n = base.sd.size();
+  Eigen::VectorXd k = base.estimate.k;
+  if (static_cast<Eigen::Index>(editedSd.size()) == n) {
+    for (Eigen::Index i = 0; i < n; ++i) k(i) = editedSd[static_cast<std::size_t>(i)] * base.sd(i);
+    d->edited = true;
+  }
+  d->kSd = k.cwiseQuotient(base.sd.cwiseMax(1e-12));
+  d->w = d->edited ? synthesizeWalker(base.model, k) : base.estimate.w;
+  d->reprojected = projectToView(d->w, base.alphaUsedDeg);
+  d->errors = depthErrors(base.wTrue, d->w, base.alphaTrueDeg);
+  d->depthRmsMm = d->errors.absPerJoint.cwiseMax(0.0).cwiseSqrt();
+  d->mpjpeMm = mpjpe(base.wTrue, d->w);
+  d->residualRmsMm =
+      std::sqrt((base.observed - d->reprojected).squaredNorm() / static_cast<double>(base.observed.size()));
+  d->angleErrorDeg = viewAngleErrorDeg(base.alphaUsedDeg, base.alphaTrueDeg);
+  return d;
+}
+
+std::unique_ptr<ExploreResult> computeExplore(const Document& doc, const ExploreKey& key) {
+  const EigenwalkerModel& all = doc.models->all;
+  auto e = std::make_unique<ExploreResult>();
+  e->autoComponents = key.components <= 0;
+  e->components = e->autoComponents ? autoComponentCount(all)
+                                    : std::min(key.components, all.componentCount());
+  e->explained = explainedShare(all, e->components);
+  const EigenwalkerModel m = truncateModel(all, e->components);
+  e->sd = m.eigenvalues.cwiseMax(0.0).cwiseSqrt();
+  e->shares = m.eigenvalues / std::max(all.spectrum.sum(), 1e-12);
+  Eigen::VectorXd k = Eigen::VectorXd::Zero(e->components);
+  for (Eigen::Index i = 0; i < k.size() && i < static_cast<Eigen::Index>(key.sd.size()); ++i)
+    k(i) = key.sd[static_cast<std::size_t>(i)] * e->sd(i);
+  e->w = synthesizeWalker(m, k);
+  e->projected = projectToView(e->w, key.alphaDeg);
+  e->projectedTrail = trailOverCycle(e->projected, kTrailSamples);
+  e->strideHz = all.omegasRadS.size() > 0 ? all.omegasRadS.mean() / (2.0 * std::numbers::pi) : 0.9;
+  e->modelWalkers = all.walkerCount();
+  return e;
+}
+
+}  // namespace
+
+void Derived::update(const Document& doc) {
+  if (!doc.ready()) {
+    reconKey_.reset();
+    displayKey_.reset();
+    exploreKey_.reset();
+    recon_.reset();
+    display_.reset();
+    explore_.reset();
+    return;
+  }
+  try {
+    const ReconKey rk{doc.generation, doc.walker, doc.recon};
+    if (!reconKey_ || !(*reconKey_ == rk)) {
+      recon_.reset();
+      display_.reset();
+      displayKey_.reset();
+      reconKey_ = rk;
+      ++reconComputations_;
+      error_.clear();
+      recon_ = computeRecon(doc, rk);
+    }
+    if (recon_) {
+      const DisplayKey dk{rk, doc.editedSd};
+      if (!displayKey_ || !(*displayKey_ == dk)) {
+        displayKey_ = dk;
+        display_ = computeDisplay(*recon_, doc.editedSd);
+      }
+    }
+    const ExploreKey ek{doc.generation, doc.recon.components, doc.exploreSd, doc.recon.alphaDeg};
+    if (!exploreKey_ || !(*exploreKey_ == ek)) {
+      exploreKey_ = ek;
+      explore_ = computeExplore(doc, ek);
+    }
+  } catch (const std::exception& e) {
+    error_ = e.what();
+  }
+}
+
+}  // namespace ew::ui

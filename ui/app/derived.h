@@ -1,0 +1,120 @@
+#pragma once
+// Derived results: functions of the Document, cached and recomputed only when their
+// input struct changes (compared with operator== = default). Playback, camera and
+// overlays are not inputs: animating or orbiting never recomputes anything here.
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/engine/metrics.h"
+#include "core/engine/reconstruction.h"
+#include "ui/app/document.h"
+
+namespace ew::ui {
+
+// [SECTION] Reconstruction of the selected walker (leave-one-subject-out model)
+
+struct ReconKey {
+  std::uint64_t generation = 0;
+  int walker = -1;
+  ReconstructionSettings settings;
+  bool operator==(const ReconKey&) const = default;
+};
+
+struct ReconBase {
+  std::string heldOutSubject;
+  int modelWalkers = 0;          // walkers in the leave-one-out model
+  int components = 0;            // N used
+  bool autoComponents = true;    // N from the 95 % rule
+  double explained = 0.0;        // variance share of the N components
+  EigenwalkerModel model;        // leave-one-out, truncated to N
+  ModelGram gram;
+  Eigen::VectorXd sd;            // √λ_n, mm
+  Eigen::VectorXd wTrue;         // the held-out walker's own Fourier vector (225)
+  Eigen::VectorXd observed;      // ŵ = C(α) w (150): what the reconstruction sees
+  Eigen::MatrixXd observedTrail; // ŵ over one cycle: kTrailSamples × 30
+  Reconstruction estimate;       // at α, or at α̂ in unknown-angle mode
+  std::optional<ViewSearch> search;  // unknown-angle mode only
+  double alphaTrueDeg = 0.0;
+  double alphaUsedDeg = 0.0;     // α, or α̂
+  double strideHz = 0.0;
+};
+
+struct DisplayKey {
+  ReconKey base;
+  std::vector<double> editedSd;
+  bool operator==(const DisplayKey&) const = default;
+};
+
+// What the views show: the estimate, or the estimate with the user's coefficient edits.
+struct ReconDisplay {
+  bool edited = false;
+  Eigen::VectorXd kSd;           // coefficients in SD units (N)
+  Eigen::VectorXd w;             // 225, model synthesis w̄ + E k
+  Eigen::VectorXd reprojected;   // C(α_used) w (150)
+  DepthErrors errors;            // at the true α (SPEC §7)
+  Eigen::VectorXd depthRmsMm;    // √E_abs(j) per joint, mm
+  double mpjpeMm = 0.0;
+  double residualRmsMm = 0.0;    // RMS of ŵ − C(α_used) w over the 150 values
+  double angleErrorDeg = 0.0;    // |α̂ − α| (0 with a known angle)
+};
+
+// [SECTION] Explorer: a walker synthesised from coefficients of the full model
+
+struct ExploreKey {
+  std::uint64_t generation = 0;
+  int components = 0;
+  std::vector<double> sd;
+  double alphaDeg = 0.0;
+  bool operator==(const ExploreKey&) const = default;
+};
+
+struct ExploreResult {
+  int components = 0;
+  bool autoComponents = true;
+  double explained = 0.0;
+  Eigen::VectorXd sd;            // √λ_n of the full model
+  Eigen::VectorXd shares;        // λ_n / Σλ
+  Eigen::VectorXd w;             // 225
+  Eigen::VectorXd projected;     // C(α) w (150)
+  Eigen::MatrixXd projectedTrail;
+  double strideHz = 0.0;         // mean of the population
+  int modelWalkers = 0;
+};
+
+inline constexpr int kTrailSamples = 64;
+
+class Derived {
+ public:
+  // Brings every cache up to date with the document (cheap when nothing changed).
+  void update(const Document& doc);
+
+  const ReconBase* recon() const { return recon_.get(); }
+  const ReconDisplay* display() const { return display_.get(); }
+  const ExploreResult* explore() const { return explore_.get(); }
+  // The last computation's error (empty when it succeeded).
+  const std::string& error() const { return error_; }
+  // How many times each cache was recomputed (for tests and the log).
+  int reconComputations() const { return reconComputations_; }
+
+ private:
+  std::optional<ReconKey> reconKey_;
+  std::optional<DisplayKey> displayKey_;
+  std::optional<ExploreKey> exploreKey_;
+  std::unique_ptr<ReconBase> recon_;
+  std::unique_ptr<ReconDisplay> display_;
+  std::unique_ptr<ExploreResult> explore_;
+  std::string error_;
+  int reconComputations_ = 0;
+};
+
+// Pose helpers: w (225 or 150) evaluated at a gait phase (0 … 1); all walkers share the
+// phase origin of SPEC §3, so phase p is the same moment of the cycle for everyone.
+Eigen::VectorXd frameAtPhase(const Eigen::VectorXd& w, double phase01);
+Eigen::MatrixXd trailOverCycle(const Eigen::VectorXd& w, int samples);
+
+}  // namespace ew::ui

@@ -1,0 +1,80 @@
+#pragma once
+// The three kinds of state (docs/VIEWER.md):
+//   Document  — what is loaded and what the user chose to compute (walker, view angle,
+//               estimator, coefficients); everything derived is a function of it.
+//   ViewState — how it is looked at (camera, overlays, playback, UI scale).
+//   Derived   — the reconstruction and friends, cached (ui/app/derived.h).
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/engine/reconstruction.h"
+#include "ui/app/model_set.h"
+#include "ui/app/population.h"
+#include "ui/render/camera.h"
+
+namespace ew::ui {
+
+enum class Mode { Reconstruct, Explore };
+
+struct ReconstructionSettings {
+  double alphaDeg = 30.0;        // true view angle of the 2D input (SPEC §5)
+  Estimator estimator = Estimator::Map;
+  double sigma2Mm2 = 70.0;       // MAP σ²
+  int components = 0;            // N; 0 = the smallest N reaching 95 % of the variance
+  bool unknownAngle = false;     // estimate α instead of using it (SPEC §6)
+  bool operator==(const ReconstructionSettings&) const = default;
+};
+
+struct Document {
+  // The loaded population and its models; a new load bumps the generation.
+  std::shared_ptr<const Population> population;
+  std::shared_ptr<const ModelSet> models;
+  std::uint64_t generation = 0;
+  std::vector<std::filesystem::path> sourcePaths;  // empty: the synthetic default
+
+  Mode mode = Mode::Reconstruct;
+  int walker = 0;                                  // index into population->walkers
+  ReconstructionSettings recon;
+  std::vector<double> exploreSd;   // explorer coefficients, units of each component's SD
+  std::vector<double> editedSd;    // reconstruct mode: coefficients the user dragged
+                                   // (empty = the estimate)
+
+  bool ready() const { return population && models && population->walkerCount() > 0; }
+};
+
+struct Overlays {
+  bool depthErrorColour = true;  // joints coloured by their depth error, with a colour bar
+  bool errorLines = true;        // ground truth → reconstruction, per joint
+  bool errorBars = true;         // per-joint error bar chart
+  bool metrics = true;           // the metrics strip
+  bool ghost = true;             // ground truth drawn as a ghost in 3D
+  bool cameraGlyph = true;       // where the 2D view is taken from
+  bool grid = true;              // the floor grid
+  bool reprojection = true;      // 2D: the reconstruction projected back at α
+  bool stickFigure = true;       // 2D: bones between the point-lights
+  bool trails = true;            // 2D: each point-light's path over the cycle
+};
+
+struct Playback {
+  bool playing = true;
+  float speed = 1.0f;     // × real time
+  double cycles = 0.0;    // continuous gait-cycle count; the phase is its fraction
+  double phase() const;   // 0 … 1
+  void setPhase(double phase01);
+  void advance(double seconds, double strideHz);
+  void step(int frames, double strideHz);  // ± one 1/60 s frame
+};
+
+struct ViewState {
+  OrbitCamera camera;
+  Overlays overlays;
+  Playback playback;
+  float uiScale = 1.0f;       // user setting, times the monitor's content scale
+  float contentScale = 1.0f;  // from the monitor
+};
+
+}  // namespace ew::ui

@@ -1,0 +1,47 @@
+#pragma once
+// The document's data: the walkers the viewer shows and builds its models from, with
+// the facts the subject list displays. Loaded from files (a manifest, a folder, files)
+// or the synthetic default population.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/engine/walker_set.h"
+#include "core/gait/dataset.h"
+
+namespace ew::ui {
+
+struct WalkerFacts {
+  std::string format;                    // "C3D", "BVH", … or "synthetic"
+  double strideHz = 0.0;                 // ω / 2π
+  std::optional<double> speedMps;        // mean over the trials (absent: unknown / treadmill)
+  std::vector<std::string> estimatedJoints;  // joints estimated rather than measured
+  int trials = 0;
+  double h1Share = 0.0, h2Share = 0.0;   // variance shares of the two harmonics
+};
+
+struct Population {
+  std::string label;                     // what was opened, for the header
+  std::vector<Walker> walkers;
+  std::vector<WalkerFacts> facts;        // one per walker
+  std::vector<std::string> warnings;     // files skipped, fits that failed, …
+
+  int walkerCount() const { return static_cast<int>(walkers.size()); }
+  // Index of the walker whose subject or id is `name`; -1 if none.
+  int findWalker(const std::string& name) const;
+};
+
+// Reports (done, total, what) from the loading thread.
+using LoadProgress = ProgressFn;
+
+// Loads and fits every trial the paths name. Throws ew::Error (or std::exception) when
+// nothing usable remains; fewer than 3 walkers cannot give a leave-one-out model.
+Population loadPopulation(const std::vector<std::filesystem::path>& paths,
+                          const LoadProgress& progress = {});
+
+// The synthetic default population (no recorded data needed).
+Population defaultPopulation(const LoadProgress& progress = {});
+
+}  // namespace ew::ui

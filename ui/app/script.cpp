@@ -1,0 +1,209 @@
+#include "ui/app/script.h"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <stdexcept>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+
+namespace ew::ui {
+
+namespace {
+
+const std::set<std::string>& knownActions() {
+  static const std::set<std::string> names{
+      "open",         "select_subject", "set_mode",      "set_angle",   "set_method",
+      "set_sigma2",   "set_components", "unknown_angle", "set_coefficient", "set_phase",
+      "play",         "overlay",        "wait_frames",   "screenshot",  "set_camera",
+      "reset_coefficients", "randomise_coefficients", "coefficients_from_subject"};
+  return names;
+}
+
+// Frames rendered after the work is done before a screenshot, so the UI has settled.
+constexpr int kSettleFrames = 2;
+
+double number(const ScriptAction& a) {
+  if (!a.argument.is_number()) throw std::invalid_argument("expects a number");
+  return a.argument.get<double>();
+}
+
+bool boolean(const ScriptAction& a) {
+  if (!a.argument.is_boolean()) throw std::invalid_argument("expects true or false");
+  return a.argument.get<bool>();
+}
+
+std::string text(const ScriptAction& a) {
+  if (!a.argument.is_string()) throw std::invalid_argument("expects a string");
+  return a.argument.get<std::string>();
+}
+
+}  // namespace
+
+std::vector<ScriptAction> parseScript(const nlohmann::json& script, const std::string& name) {
+  if (!script.is_array()) throw std::runtime_error(name + ": a script is a JSON array of actions");
+  std::vector<ScriptAction> actions;
+  int position = 0;
+  for (const auto& item : script) {
+    ++position;
+    if (!item.is_object() || item.size() != 1)
+      throw std::runtime_error(name + ": action " + std::to_string(position) +
+                               ": each action is an object with exactly one key, got " + item.dump());
+    const auto entry = item.begin();
+    const std::string key = entry.key();
+    if (!knownActions().contains(key))
+      throw std::runtime_error(name + ": action " + std::to_string(position) + ": unknown action \"" + key + "\"");
+    actions.push_back({key, entry.value(), position});
+  }
+  return actions;
+}
+
+std::vector<ScriptAction> readScript(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(file.string() + ": cannot read the script");
+  nlohmann::json script;
+  try {
+    in >> script;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(file.string() + ": not valid JSON: " + e.what());
+  }
+  return parseScript(script, file.string());
+}
+
+ScriptRunner::ScriptRunner(std::vector<ScriptAction> actions, std::string name)
+    : actions_(std::move(actions)), name_(std::move(name)) {}
+
+void ScriptRunner::requestCapture(std::filesystem::path file) {
+  capture_ = std::move(file);
+  captureSettle_ = kSettleFrames;
+  captureDue_ = false;
+}
+
+std::optional<std::filesystem::path> ScriptRunner::takeCapture() {
+  if (!captureDue_) return std::nullopt;
+  captureDue_ = false;
+  auto file = std::move(capture_);
+  capture_.reset();
+  return file;
+}
+
+void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
+  const auto& n = a.name;
+  if (n == "open") {
+    std::vector<std::filesystem::path> paths;
+    if (a.argument.is_string()) {
+      paths.emplace_back(a.argument.get<std::string>());
+    } else if (a.argument.is_array()) {
+      for (const auto& p : a.argument) {
+        if (!p.is_string()) throw std::invalid_argument("expects a path or a list of paths");
+        paths.emplace_back(p.get<std::string>());
+      }
+    } else if (!a.argument.is_null()) {
+      throw std::invalid_argument("expects a path, a list of paths, or null (the default population)");
+    }
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = true;
+    actions::open(s, std::move(paths));
+  } else if (n == "select_subject") {
+    actions::selectSubject(s, text(a));
+  } else if (n == "set_mode") {
+    const std::string m = text(a);
+    if (m == "reconstruct") {
+      actions::setMode(s, Mode::Reconstruct);
+    } else if (m == "explore") {
+      actions::setMode(s, Mode::Explore);
+    } else {
+      throw std::invalid_argument("mode must be \"reconstruct\" or \"explore\"");
+    }
+  } else if (n == "set_angle") {
+    actions::setAngle(s, number(a));
+  } else if (n == "set_method") {
+    const std::string m = text(a);
+    if (m == "lsq") {
+      actions::setEstimator(s, Estimator::Lsq);
+    } else if (m == "map") {
+      actions::setEstimator(s, Estimator::Map);
+    } else {
+      throw std::invalid_argument("method must be \"lsq\" or \"map\"");
+    }
+  } else if (n == "set_sigma2") {
+    actions::setSigma2(s, number(a));
+  } else if (n == "set_components") {
+    const double v = number(a);
+    if (v != std::floor(v)) throw std::invalid_argument("expects a whole number");
+    actions::setComponents(s, static_cast<int>(v));
+  } else if (n == "unknown_angle") {
+    actions::setUnknownAngle(s, boolean(a));
+  } else if (n == "set_coefficient") {
+    if (!a.argument.is_array() || a.argument.size() != 2 || !a.argument[0].is_number_integer() ||
+        !a.argument[1].is_number())
+      throw std::invalid_argument("expects [INDEX (from 1), SD]");
+    s.derived.update(s.doc);  // the count of components follows the latest settings
+    actions::setCoefficient(s, a.argument[0].get<int>() - 1, a.argument[1].get<double>());
+  } else if (n == "set_phase") {
+    actions::setPhase(s, number(a));
+  } else if (n == "play") {
+    actions::setPlaying(s, boolean(a));
+  } else if (n == "overlay") {
+    if (!a.argument.is_array() || a.argument.size() != 2 || !a.argument[0].is_string() ||
+        !a.argument[1].is_boolean())
+      throw std::invalid_argument("expects [NAME, true|false]");
+    actions::setOverlay(s, a.argument[0].get<std::string>(), a.argument[1].get<bool>());
+  } else if (n == "wait_frames") {
+    const double v = number(a);
+    if (v < 0 || v != std::floor(v)) throw std::invalid_argument("expects a whole number >= 0");
+    waitFrames_ = static_cast<int>(v);
+  } else if (n == "screenshot") {
+    requestCapture(text(a));
+  } else if (n == "set_camera") {
+    actions::setCamera(s, text(a));
+  } else if (n == "reset_coefficients") {
+    actions::resetCoefficients(s);
+  } else if (n == "randomise_coefficients") {
+    s.derived.update(s.doc);
+    actions::randomiseCoefficients(s, static_cast<unsigned>(number(a)));
+  } else if (n == "coefficients_from_subject") {
+    s.derived.update(s.doc);
+    actions::coefficientsFromWalker(s);
+  }
+}
+
+void ScriptRunner::step(AppState& s) {
+  if (failed()) return;
+  // Everything waits for the background work (and reports a failed load).
+  if (s.jobs.busy()) return;
+  if (checkLoad_) {
+    checkLoad_ = false;
+    if (s.jobs.failures != failuresBefore_) {
+      error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) + " (open): " + s.jobs.lastError;
+      return;
+    }
+  }
+  if (waitFrames_ > 0) {
+    --waitFrames_;
+    return;
+  }
+  if (capture_) {
+    if (captureSettle_ > 0) {
+      --captureSettle_;
+    } else {
+      captureDue_ = true;
+    }
+    return;
+  }
+  while (next_ < actions_.size()) {
+    const ScriptAction& a = actions_[next_++];
+    try {
+      apply(s, a);
+    } catch (const std::exception& e) {
+      error_ = name_ + ": action " + std::to_string(a.position) + " (" + a.name + " " + a.argument.dump() +
+               "): " + e.what();
+      return;
+    }
+    s.log.info("script: " + a.name + " " + a.argument.dump());
+    if (a.name == "open" || a.name == "wait_frames" || a.name == "screenshot") return;
+  }
+}
+
+}  // namespace ew::ui

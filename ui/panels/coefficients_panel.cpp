@@ -1,0 +1,64 @@
+#include "ui/panels/coefficients_panel.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+
+namespace ew::ui {
+
+void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  if (beginPanel("Eigenwalker coefficients", rect)) {
+    const bool explore = s.doc.mode == Mode::Explore;
+    const ReconBase* r = s.derived.recon();
+    const ReconDisplay* d = s.derived.display();
+    const ExploreResult* e = s.derived.explore();
+    const int n = actions::coefficientCount(s);
+    if (explore) {
+      if (ImGui::Button("Reset")) actions::resetCoefficients(s);
+      ImGui::SameLine();
+      if (ImGui::Button("Randomise")) actions::randomiseCoefficients(s, randomSeed++);
+      ImGui::SameLine();
+      if (ImGui::Button("From subject") && s.doc.population) actions::coefficientsFromWalker(s);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected walker's coefficients in the full model");
+      ImGui::TextDisabled("units: SD of each component (√λ)");
+    } else {
+      ImGui::BeginDisabled(s.doc.editedSd.empty());
+      if (ImGui::Button("Back to the estimate")) actions::resetCoefficients(s);
+      ImGui::EndDisabled();
+      if (d && d->edited) {
+        ImGui::TextColored(ImVec4(1.0f, 0.72f, 0.38f, 1.0f), "edited: the 2D and 3D views follow");
+      } else {
+        ImGui::TextDisabled("estimated k, in SD units (drag to edit)");
+      }
+    }
+    ImGui::Separator();
+    const float labelW = 88.0f * ctx.scale;
+    for (int i = 0; i < n; ++i) {
+      float value = 0.0f;
+      double share = 0.0;
+      if (explore && e) {
+        value = i < static_cast<int>(s.doc.exploreSd.size()) ? static_cast<float>(s.doc.exploreSd[static_cast<std::size_t>(i)]) : 0.0f;
+        share = e->shares(i);
+      } else if (r && d) {
+        value = static_cast<float>(d->kSd(i));
+        share = r->model.eigenvalues(i) / std::max(r->model.spectrum.sum(), 1e-12);
+      }
+      ImGui::PushID(i);
+      ImGui::AlignTextToFramePadding();
+      ImGui::Text("e%-2d", i + 1);
+      ImGui::SameLine();
+      ImGui::TextDisabled("%4.1f%%", 100.0 * share);
+      ImGui::SameLine(labelW);
+      ImGui::SetNextItemWidth(-1.0f);
+      // Out-of-range estimates are shown (clamped slider), edited values are clamped to ±3.
+      if (ImGui::SliderFloat("##k", &value, -3.0f, 3.0f, "%+.2f SD")) actions::setCoefficient(s, i, value);
+      ImGui::PopID();
+    }
+    if (n == 0) ImGui::TextDisabled(s.jobs.busy() ? "building models…" : "no model");
+  }
+  ImGui::End();
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,111 @@
+#include "ui/panels/controls_panel.h"
+
+#include <cmath>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+
+namespace ew::ui {
+
+namespace {
+
+void sectionTitle(const char* text) {
+  ImGui::Spacing();
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.62f, 0.72f, 1.0f));
+  ImGui::TextUnformatted(text);
+  ImGui::PopStyleColor();
+  ImGui::Separator();
+}
+
+}  // namespace
+
+void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  if (beginPanel("Controls", rect)) {
+    auto& doc = s.doc;
+    int mode = doc.mode == Mode::Reconstruct ? 0 : 1;
+    if (ImGui::RadioButton("Reconstruct", &mode, 0)) actions::setMode(s, Mode::Reconstruct);
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Explore gait space", &mode, 1)) actions::setMode(s, Mode::Explore);
+
+    sectionTitle("View angle");
+    float alpha = static_cast<float>(doc.recon.alphaDeg);
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::SliderFloat("##alpha", &alpha, -180.0f, 180.0f, "α = %.1f°", ImGuiSliderFlags_AlwaysClamp))
+      actions::setAngle(s, alpha);
+    ImGui::SetNextItemWidth(100.0f * ctx.scale);
+    if (ImGui::DragFloat("fine (drag / type)", &alpha, 0.05f, -180.0f, 180.0f, "%.2f°",
+                         ImGuiSliderFlags_AlwaysClamp))
+      actions::setAngle(s, alpha);
+    ImGui::TextDisabled("0° frontal · ±90° profiles");
+    bool unknown = doc.recon.unknownAngle;
+    if (ImGui::Checkbox("Unknown view angle (estimate α)", &unknown)) actions::setUnknownAngle(s, unknown);
+
+    sectionTitle("Estimator");
+    int est = doc.recon.estimator == Estimator::Lsq ? 0 : 1;
+    if (ImGui::RadioButton("LSQ", &est, 0)) actions::setEstimator(s, Estimator::Lsq);
+    ImGui::SameLine();
+    if (ImGui::RadioButton("MAP (Bayesian prior)", &est, 1)) actions::setEstimator(s, Estimator::Map);
+    ImGui::BeginDisabled(doc.recon.estimator != Estimator::Map);
+    float sigma2 = static_cast<float>(doc.recon.sigma2Mm2);
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::SliderFloat("##sigma2", &sigma2, 1.0f, 5000.0f, "σ² = %.0f mm²",
+                           ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
+      actions::setSigma2(s, sigma2);
+    ImGui::EndDisabled();
+
+    sectionTitle("Eigenwalkers");
+    const int maxN = doc.models ? doc.models->all.componentCount() : 1;
+    int n = doc.recon.components;
+    const int shown = doc.mode == Mode::Explore
+                          ? (s.derived.explore() ? s.derived.explore()->components : 0)
+                          : (s.derived.recon() ? s.derived.recon()->components : 0);
+    char fmt[64];
+    std::snprintf(fmt, sizeof fmt, n == 0 ? "N = auto (%d, 95 %%%%)" : "N = %%d", shown);
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::SliderInt("##components", &n, 0, maxN, fmt, ImGuiSliderFlags_AlwaysClamp))
+      actions::setComponents(s, n);
+
+    sectionTitle("3D camera");
+    const float bw = (ImGui::GetContentRegionAvail().x - 3.0f * ImGui::GetStyle().ItemSpacing.x) / 4.0f;
+    if (ImGui::Button("3/4", ImVec2(bw, 0))) actions::setCamera(s, "three_quarter");
+    ImGui::SameLine();
+    if (ImGui::Button("Front", ImVec2(bw, 0))) actions::setCamera(s, "front");
+    ImGui::SameLine();
+    if (ImGui::Button("Side", ImVec2(bw, 0))) actions::setCamera(s, "side");
+    ImGui::SameLine();
+    if (ImGui::Button("Top", ImVec2(bw, 0))) actions::setCamera(s, "top");
+    ImGui::TextDisabled("drag: orbit · right-drag: pan · wheel: zoom\ndouble-click: reset");
+
+    sectionTitle("Overlays");
+    auto& o = s.view.overlays;
+    if (ImGui::BeginTable("overlays", 2)) {
+      auto box = [](const char* label, bool* v) {
+        ImGui::TableNextColumn();
+        ImGui::Checkbox(label, v);
+      };
+      box("depth error colour", &o.depthErrorColour);
+      box("error lines", &o.errorLines);
+      box("error bars", &o.errorBars);
+      box("metrics", &o.metrics);
+      box("ground truth ghost", &o.ghost);
+      box("camera glyph", &o.cameraGlyph);
+      box("floor grid", &o.grid);
+      box("2D reprojection", &o.reprojection);
+      box("2D stick figure", &o.stickFigure);
+      box("2D trails", &o.trails);
+      ImGui::EndTable();
+    }
+
+    sectionTitle("Display");
+    float scale = pendingUiScale > 0.0f ? pendingUiScale : s.view.uiScale;
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::SliderFloat("##uiscale", &scale, 0.75f, 2.5f, "UI scale %.2f×")) pendingUiScale = scale;
+    if (pendingUiScale > 0.0f && ImGui::IsItemDeactivated()) {
+      s.view.uiScale = pendingUiScale;
+      pendingUiScale = 0.0f;
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace ew::ui

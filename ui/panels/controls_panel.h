@@ -1,0 +1,18 @@
+#pragma once
+// Mode, view angle, estimator, σ², N, unknown-angle mode, camera presets, overlays and
+// the UI scale.
+
+#include "ui/panels/panel_window.h"
+
+namespace ew::ui {
+
+struct AppState;
+struct FrameContext;
+
+struct ControlsPanel {
+  float pendingUiScale = 0.0f;  // while the scale slider is dragged (applied on release)
+
+  void draw(AppState& s, const FrameContext& ctx, const PanelRect& rect);
+};
+
+}  // namespace ew::ui

@@ -1,0 +1,68 @@
+#include "ui/panels/joint_errors_panel.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "ui/app/app_state.h"
+#include "ui/convert.h"
+#include "ui/render/palette.h"
+
+namespace ew::ui {
+
+void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  if (beginPanel("Depth error per joint (RMS over one cycle, mm)", rect, ImGuiWindowFlags_NoScrollbar)) {
+    const ReconDisplay* d = s.derived.display();
+    if (s.doc.mode == Mode::Explore) {
+      ImGui::TextDisabled("reconstruct mode only");
+    } else if (!s.view.overlays.errorBars) {
+      ImGui::TextDisabled("hidden (overlay \"error bars\")");
+    } else if (d) {
+      ImDrawList* dl = ImGui::GetWindowDrawList();
+      const ImVec2 p0 = ImGui::GetCursorScreenPos();
+      const ImVec2 size = ImGui::GetContentRegionAvail();
+      const float labelW = ImGui::CalcTextSize("r_shoulder ").x;
+      const float valueW = ImGui::CalcTextSize("000.0").x + 6.0f * ctx.scale;
+      const float textH = ImGui::GetTextLineHeight();
+      // One column when 15 rows fit, else two side by side.
+      const int columns = size.y / static_cast<float>(kJointCount) >= textH + 2.0f ? 1 : 2;
+      const int rows = (kJointCount + columns - 1) / columns;
+      const float colW = size.x / static_cast<float>(columns);
+      const float rowH = size.y / static_cast<float>(rows);
+      const float barMax = std::max(10.0f, colW - labelW - valueW - 8.0f * ctx.scale);
+      const float scaleMm = palette::errorScaleMm(static_cast<float>(d->depthRmsMm.maxCoeff()));
+      for (int j = 0; j < kJointCount; ++j) {
+        const float x = p0.x + colW * static_cast<float>(j / rows);
+        const float y = p0.y + rowH * static_cast<float>(j % rows);
+        const float v = static_cast<float>(d->depthRmsMm(j));
+        const float w = barMax * std::min(v / scaleMm, 1.0f);
+        const auto name = kJointNames[static_cast<std::size_t>(j)];
+        dl->AddText(ImVec2(x, y + 0.5f * (rowH - textH)), IM_COL32(170, 178, 190, 255), name.data(),
+                    name.data() + name.size());
+        const float bh = std::max(3.0f, std::min(rowH * 0.62f, textH * 0.8f));
+        const float by = y + 0.5f * (rowH - bh);
+        dl->AddRectFilled(ImVec2(x + labelW, by), ImVec2(x + labelW + barMax, by + bh),
+                          IM_COL32(255, 255, 255, 12), 2.0f);
+        dl->AddRectFilled(ImVec2(x + labelW, by), ImVec2(x + labelW + w, by + bh),
+                          toImU32(palette::errorColour(v / scaleMm)), 2.0f);
+        char buf[32];
+        std::snprintf(buf, sizeof buf, "%.1f", static_cast<double>(v));
+        dl->AddText(ImVec2(x + labelW + w + 4.0f * ctx.scale, y + 0.5f * (rowH - textH)),
+                    IM_COL32(220, 224, 232, 255), buf);
+      }
+      ImGui::Dummy(size);
+      if (ImGui::IsItemHovered()) {
+        const int col = std::clamp(static_cast<int>((ImGui::GetMousePos().x - p0.x) / colW), 0, columns - 1);
+        const int row = std::clamp(static_cast<int>((ImGui::GetMousePos().y - p0.y) / rowH), 0, rows - 1);
+        const int j = std::min(col * rows + row, kJointCount - 1);
+        ImGui::SetTooltip("%s: RMS depth error %.1f mm (E_abs %.0f mm², E_rel %.3f)",
+                          kJointNames[static_cast<std::size_t>(j)].data(), d->depthRmsMm(j),
+                          d->errors.absPerJoint(j), d->errors.relPerJoint(j));
+      }
+    } else {
+      ImGui::TextDisabled("no reconstruction");
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace ew::ui

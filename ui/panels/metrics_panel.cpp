@@ -1,0 +1,72 @@
+#include "ui/panels/metrics_panel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "ui/app/app_state.h"
+
+namespace ew::ui {
+
+namespace {
+
+void metric(const AppState& s, const char* label, const char* value, const char* note, float width,
+            const ImVec4& colour = ImVec4(0.93f, 0.94f, 0.96f, 1.0f)) {
+  ImGui::BeginGroup();
+  ImGui::TextDisabled("%s", label);
+  if (s.fonts.large) ImGui::PushFont(s.fonts.large);
+  ImGui::TextColored(colour, "%s", value);
+  if (s.fonts.large) ImGui::PopFont();
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", note);
+  ImGui::EndGroup();
+  ImGui::SameLine(0.0f, 0.0f);
+  const float used = ImGui::GetItemRectSize().x;
+  if (used < width) ImGui::Dummy(ImVec2(width - used, 1.0f));
+  ImGui::SameLine();
+}
+
+}  // namespace
+
+void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  if (beginPanel("##metrics", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
+    const ReconBase* r = s.derived.recon();
+    const ReconDisplay* d = s.derived.display();
+    if (s.doc.mode == Mode::Explore) {
+      ImGui::TextDisabled("Gait-space explorer");
+      ImGui::TextWrapped("Drag the eigenwalker sliders: the walker is the mean walker plus Σ k_n e_n, animated in 3D and "
+                         "projected at α on the left. Errors are shown in reconstruct mode.");
+    } else if (!s.view.overlays.metrics) {
+      ImGui::TextDisabled("metrics hidden (overlay \"metrics\")");
+    } else if (r && d) {
+      const float w = std::max(150.0f * ctx.scale, (ImGui::GetContentRegionAvail().x - 8.0f) / 5.0f);
+      char v[64], n[64];
+      std::snprintf(v, sizeof v, "%.0f mm²", d->errors.absMean);
+      std::snprintf(n, sizeof n, "(√ %.1f mm)", std::sqrt(std::max(d->errors.absMean, 0.0)));
+      metric(s, "E_a  depth error", v, n, w);
+      std::snprintf(v, sizeof v, "%.3f", d->errors.relMean);
+      std::snprintf(n, sizeof n, "σ_m² %.0f mm²", d->errors.sigmaM2Mm2);
+      metric(s, "E_r  relative", v, n, w);
+      std::snprintf(v, sizeof v, "%.1f mm", d->mpjpeMm);
+      metric(s, "MPJPE  3D", v, "", w);
+      std::snprintf(v, sizeof v, "%.1f mm", d->residualRmsMm);
+      metric(s, "2D residual  RMS", v, d->edited ? "(edited k)" : "", w,
+             d->edited ? ImVec4(1.0f, 0.72f, 0.38f, 1.0f) : ImVec4(0.93f, 0.94f, 0.96f, 1.0f));
+      if (s.doc.recon.unknownAngle) {
+        std::snprintf(v, sizeof v, "%.1f°", r->alphaUsedDeg);
+        std::snprintf(n, sizeof n, "error %.1f°", d->angleErrorDeg);
+        metric(s, "est. α  (true α hidden)", v, n, w,
+               d->angleErrorDeg > 10.0 ? ImVec4(1.0f, 0.45f, 0.55f, 1.0f) : ImVec4(0.5f, 0.9f, 0.8f, 1.0f));
+      } else {
+        std::snprintf(v, sizeof v, "%.1f°", r->alphaTrueDeg);
+        metric(s, "α  known", v, "", w);
+      }
+      ImGui::NewLine();
+    } else {
+      ImGui::TextDisabled(s.jobs.busy() ? "working…" : "no reconstruction");
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace ew::ui

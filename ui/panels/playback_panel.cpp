@@ -1,0 +1,36 @@
+#include "ui/panels/playback_panel.h"
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+
+namespace ew::ui {
+
+void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  auto& p = s.view.playback;
+  const double strideHz = actions::playbackStrideHz(s);
+  if (!ImGui::GetIO().WantTextInput && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) p.playing = !p.playing;
+  if (beginPanel("##playback", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
+    const float bw = 36.0f * ctx.scale;
+    if (ImGui::Button("|<", ImVec2(bw, 0))) p.step(-1, strideHz);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("step back one frame (1/60 s)");
+    ImGui::SameLine();
+    if (ImGui::Button(p.playing ? "||" : ">", ImVec2(bw * 1.4f, 0))) p.playing = !p.playing;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("play / pause (space)");
+    ImGui::SameLine();
+    if (ImGui::Button(">|", ImVec2(bw, 0))) p.step(1, strideHz);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("step forward one frame (1/60 s)");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(150.0f * ctx.scale);
+    ImGui::SliderFloat("##speed", &p.speed, 0.1f, 2.0f, "speed %.2f×", ImGuiSliderFlags_AlwaysClamp);
+    ImGui::SameLine();
+    float phase = static_cast<float>(p.phase());
+    ImGui::SetNextItemWidth(-1.0f);
+    if (ImGui::SliderFloat("##phase", &phase, 0.0f, 1.0f, "gait phase %.3f", ImGuiSliderFlags_AlwaysClamp)) {
+      p.setPhase(phase);
+      p.playing = false;
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace ew::ui

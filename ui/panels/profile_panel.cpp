@@ -1,0 +1,96 @@
+#include "ui/panels/profile_panel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+#include "ui/convert.h"
+#include "ui/render/palette.h"
+
+namespace ew::ui {
+
+void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  if (beginPanel("View-angle profile J(α)", rect, ImGuiWindowFlags_NoScrollbar)) {
+    const ReconBase* r = s.derived.recon();
+    if (s.doc.mode == Mode::Explore) {
+      ImGui::TextDisabled("reconstruct mode only");
+    } else if (!s.doc.recon.unknownAngle) {
+      ImGui::TextDisabled("The view angle is known.");
+      if (ImGui::Button("Estimate it (unknown view angle)")) actions::setUnknownAngle(s, true);
+    } else if (r && r->search) {
+      const ViewSearch& vs = *r->search;
+      ImDrawList* dl = ImGui::GetWindowDrawList();
+      const ImVec2 p0 = ImGui::GetCursorScreenPos();
+      const ImVec2 avail = ImGui::GetContentRegionAvail();
+      const float textH = ImGui::GetTextLineHeight();
+      const float left = ImGui::CalcTextSize("1e+00").x + 8.0f * ctx.scale;
+      const ImVec2 a{p0.x + left, p0.y + 4.0f * ctx.scale};
+      const ImVec2 b{p0.x + avail.x - 6.0f * ctx.scale, p0.y + avail.y - textH - 6.0f * ctx.scale};
+      const Eigen::Index n = vs.scanObjective.size();
+      double lo = vs.scanObjective.minCoeff(), hi = vs.scanObjective.maxCoeff();
+      lo = std::log10(std::max(lo, 1e-3));
+      hi = std::log10(std::max(hi, 1e-2));
+      if (hi - lo < 0.5) hi = lo + 0.5;
+      lo = std::floor(lo);
+      hi = std::ceil(hi);
+      auto X = [&](double deg) { return a.x + static_cast<float>((deg + 180.0) / 360.0) * (b.x - a.x); };
+      auto Y = [&](double j) {
+        const double t = (std::log10(std::max(j, 1e-3)) - lo) / (hi - lo);
+        return b.y - static_cast<float>(t) * (b.y - a.y);
+      };
+      dl->AddRectFilled(a, b, IM_COL32(255, 255, 255, 8));
+      const ImU32 gridC = IM_COL32(255, 255, 255, 28);
+      const ImU32 labelC = IM_COL32(150, 160, 175, 255);
+      for (int deg = -180; deg <= 180; deg += 90) {
+        dl->AddLine(ImVec2(X(deg), a.y), ImVec2(X(deg), b.y), gridC);
+        char buf[16];
+        std::snprintf(buf, sizeof buf, "%d°", deg);
+        const float tw = ImGui::CalcTextSize(buf).x;
+        dl->AddText(ImVec2(std::clamp(X(deg) - tw * 0.5f, p0.x, b.x - tw), b.y + 2.0f * ctx.scale), labelC, buf);
+      }
+      for (int e = static_cast<int>(lo); e <= static_cast<int>(hi); ++e) {
+        const float y = Y(std::pow(10.0, e));
+        dl->AddLine(ImVec2(a.x, y), ImVec2(b.x, y), gridC);
+        char buf[16];
+        std::snprintf(buf, sizeof buf, "1e%d", e);
+        dl->AddText(ImVec2(p0.x, y - textH * 0.5f), labelC, buf);
+      }
+      // True α.
+      const ImU32 trueC = toImU32(palette::kCamera);
+      dl->AddLine(ImVec2(X(r->alphaTrueDeg), a.y), ImVec2(X(r->alphaTrueDeg), b.y), trueC, 1.5f * ctx.scale);
+      // The curve.
+      std::vector<ImVec2> pts(static_cast<std::size_t>(n));
+      for (Eigen::Index i = 0; i < n; ++i)
+        pts[static_cast<std::size_t>(i)] = ImVec2(X(vs.scanAlphaDeg(i)), Y(vs.scanObjective(i)));
+      dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), IM_COL32(230, 234, 240, 230), 0,
+                      1.8f * ctx.scale);
+      // Minima.
+      for (std::size_t m = 0; m < vs.minima.size(); ++m) {
+        const auto& mn = vs.minima[m];
+        const ImVec2 c{X(mn.alphaDeg), Y(mn.objective)};
+        const ImU32 col = m == 0 ? toImU32(palette::kCameraEstimate) : IM_COL32(250, 200, 90, 255);
+        dl->AddCircleFilled(c, (m == 0 ? 5.5f : 4.0f) * ctx.scale, col);
+        char buf[48];
+        std::snprintf(buf, sizeof buf, "%.1f°%s%s", mn.alphaDeg, mn.mirrorOfBest && m ? " mirror" : "",
+                      mn.facingOfBest && m ? " facing" : "");
+        const float tw = ImGui::CalcTextSize(buf).x;
+        dl->AddText(ImVec2(std::clamp(c.x - tw * 0.5f, a.x, b.x - tw), c.y - textH - 5.0f * ctx.scale), col, buf);
+      }
+      ImGui::Dummy(avail);
+      if (ImGui::IsItemHovered()) {
+        const double deg = std::clamp((ImGui::GetMousePos().x - a.x) / (b.x - a.x) * 360.0 - 180.0, -180.0, 180.0);
+        const auto i = std::clamp<Eigen::Index>(static_cast<Eigen::Index>(std::lround(deg + 179.0)), 0, n - 1);
+        ImGui::SetTooltip("α = %.0f°: J = %.3g mm²\n%zu local minima; best est. α = %.2f°", vs.scanAlphaDeg(i),
+                          vs.scanObjective(i), vs.minima.size(), vs.minima.front().alphaDeg);
+      }
+    } else {
+      ImGui::TextDisabled("no search yet");
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace ew::ui

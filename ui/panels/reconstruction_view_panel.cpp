@@ -1,0 +1,156 @@
+#include "ui/panels/reconstruction_view_panel.h"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <cstdio>
+#include <vector>
+
+#include "core/engine/reconstruction.h"
+#include "ui/app/app_state.h"
+#include "ui/convert.h"
+#include "ui/panels/view_overlay.h"
+#include "ui/render/camera.h"
+#include "ui/render/figures.h"
+#include "ui/render/palette.h"
+#include "ui/render/renderer.h"
+
+namespace ew::ui {
+
+namespace {
+
+void handleMouse(OrbitCamera& camera, const ImVec2& size) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemActive()) {
+    if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+      camera.orbit(-io.MouseDelta.x, io.MouseDelta.y);
+    } else if (ImGui::IsMouseDown(ImGuiMouseButton_Right) || ImGui::IsMouseDown(ImGuiMouseButton_Middle)) {
+      camera.pan(io.MouseDelta.x, io.MouseDelta.y, size.y);
+    }
+  }
+  if (ImGui::IsItemHovered()) {
+    if (io.MouseWheel != 0.0f) camera.zoom(io.MouseWheel);
+    if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) camera = OrbitCamera::preset(CameraPreset::ThreeQuarter);
+  }
+}
+
+float strideLengthMm(const AppState& s) {
+  if (s.doc.mode == Mode::Reconstruct && s.doc.population) {
+    const auto& f = s.doc.population->facts[static_cast<std::size_t>(s.doc.walker)];
+    if (f.speedMps && f.strideHz > 0.0) return static_cast<float>(*f.speedMps * 1000.0 / f.strideHz);
+  }
+  return 1400.0f;
+}
+
+}  // namespace
+
+void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  if (beginPanel("3D reconstruction", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar)) {
+    const ImVec2 p0 = ImGui::GetCursorScreenPos();
+    const ImVec2 size = ImGui::GetContentRegionAvail();
+    const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
+    if (size.x > 4.0f && size.y > 4.0f) {
+      ImGui::InvisibleButton("##orbit", size,
+                             ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                                 ImGuiButtonFlags_MouseButtonMiddle);
+      handleMouse(s.view.camera, size);
+
+      target.ensure(static_cast<int>(size.x * fbScale.x), static_cast<int>(size.y * fbScale.y),
+                    ctx.renderer.samples());
+      scene.clearItems();
+      const auto& o = s.view.overlays;
+      const double phase = s.view.playback.phase();
+      const bool reconstruct = s.doc.mode == Mode::Reconstruct;
+      const ReconBase* r = s.derived.recon();
+      const ReconDisplay* d = s.derived.display();
+      const ExploreResult* e = s.derived.explore();
+      scene.floor.visible = o.grid;
+      scene.floor.scrollMm = static_cast<float>(std::fmod(s.view.playback.cycles * strideLengthMm(s), 1000.0));
+      float errorScale = 0.0f;
+      bool drawn = false;
+      if (reconstruct && r && d) {
+        const Pose3 truth = toPose3(frameAtPhase(r->wTrue, phase));
+        const Pose3 rec = toPose3(frameAtPhase(d->w, phase));
+        scene.floor.shadowCentre = {rec[static_cast<std::size_t>(index(Joint::Pelvis))].x,
+                                    rec[static_cast<std::size_t>(index(Joint::Pelvis))].y};
+        std::array<glm::vec4, kJointCount> colours{};
+        errorScale = palette::errorScaleMm(static_cast<float>(d->depthRmsMm.maxCoeff()));
+        for (int j = 0; j < kJointCount; ++j)
+          colours[static_cast<std::size_t>(j)] =
+              palette::errorColour(static_cast<float>(d->depthRmsMm(j)) / errorScale);
+        if (o.depthErrorColour) {
+          addFigure(scene, rec, reconstructionStyle(), std::span<const glm::vec4, kJointCount>(colours));
+        } else {
+          addFigure(scene, rec, reconstructionStyle());
+        }
+        if (o.ghost) addFigure(scene, truth, ghostStyle());
+        if (o.errorLines) addErrorLines(scene, truth, rec, palette::kError, 2.5f * ctx.scale);
+        if (o.cameraGlyph) {
+          addCameraGlyph(scene, r->alphaTrueDeg, 1250.0f, palette::kCamera, false);
+          if (s.doc.recon.unknownAngle)
+            addCameraGlyph(scene, r->alphaUsedDeg, 1100.0f, palette::kCameraEstimate, true);
+        }
+        drawn = true;
+      } else if (!reconstruct && e) {
+        const Pose3 pose = toPose3(frameAtPhase(e->w, phase));
+        scene.floor.shadowCentre = {pose[static_cast<std::size_t>(index(Joint::Pelvis))].x,
+                                    pose[static_cast<std::size_t>(index(Joint::Pelvis))].y};
+        addFigure(scene, pose, reconstructionStyle());
+        if (o.cameraGlyph) addCameraGlyph(scene, s.doc.recon.alphaDeg, 1250.0f, palette::kCamera, false);
+        drawn = true;
+      }
+      const float aspect = size.x / size.y;
+      ctx.renderer.render(target, scene, s.view.camera.matrices(aspect));
+
+      ImDrawList* dl = ImGui::GetWindowDrawList();
+      const ImVec2 p1{p0.x + size.x, p0.y + size.y};
+      dl->AddImage(target.texture().imguiId(), p0, p1, ImVec2(0, 1), ImVec2(1, 0));
+      const float pad = 10.0f * ctx.scale;
+      char sub[200];
+      if (reconstruct && r) {
+        const char* est = s.doc.recon.estimator == Estimator::Lsq ? "LSQ" : "MAP";
+        if (s.doc.recon.unknownAngle) {
+          std::snprintf(sub, sizeof sub, "%s, view angle unknown: est. α = %.1f° (true %.1f°)", est, r->alphaUsedDeg,
+                        r->alphaTrueDeg);
+        } else {
+          std::snprintf(sub, sizeof sub, "%s at the known view angle α = %.1f°", est, r->alphaTrueDeg);
+        }
+        if (s.doc.recon.estimator == Estimator::Map) {
+          const std::size_t len = std::strlen(sub);
+          std::snprintf(sub + len, sizeof sub - len, ", σ² = %.0f mm²", s.doc.recon.sigma2Mm2);
+        }
+      } else {
+        std::snprintf(sub, sizeof sub, "walker synthesised from the eigenwalker coefficients");
+      }
+      drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), reconstruct ? "3D reconstruction" : "Gait space",
+                  sub, s.fonts.large, ctx.scale);
+      std::vector<LegendItem> legend;
+      if (reconstruct) {
+        legend.push_back({palette::kReconRight, "reconstruction (right side darker)", false});
+        if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
+        if (o.errorLines) legend.push_back({palette::kError, "3D error per joint", true});
+      } else {
+        legend.push_back({palette::kReconRight, "synthesised walker", false});
+      }
+      if (o.cameraGlyph) {
+        legend.push_back({palette::kCamera, "camera of the 2D view", true});
+        if (reconstruct && s.doc.recon.unknownAngle)
+          legend.push_back({palette::kCameraEstimate, "estimated camera (est. α)", true});
+      }
+      drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale);
+      if (reconstruct && d && o.depthErrorColour)
+        drawErrorColourBar(dl, ImVec2(p1.x - pad, p0.y + 78.0f * ctx.scale), std::min(200.0f * ctx.scale, size.y * 0.35f),
+                           errorScale, "depth error (RMS)", ctx.scale);
+      if (!drawn) {
+        const char* msg = s.jobs.busy() ? "building models…" : "nothing to show";
+        const ImVec2 ts = ImGui::CalcTextSize(msg);
+        dl->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y), IM_COL32(160, 168, 180, 255), msg);
+      }
+    }
+  }
+  ImGui::End();
+  ImGui::PopStyleVar();
+}
+
+}  // namespace ew::ui

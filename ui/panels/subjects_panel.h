@@ -1,0 +1,22 @@
+#pragma once
+// The subject list: search, one row per walker (subject, source, stride), the selected
+// walker's facts, and opening other data (a manifest, a folder or files).
+
+#include <array>
+
+#include "ui/panels/panel_window.h"
+
+namespace ew::ui {
+
+struct AppState;
+struct FrameContext;
+
+struct SubjectsPanel {
+  std::array<char, 128> filter{};
+  std::array<char, 1024> openPath{};
+  bool scrollToSelection = true;
+
+  void draw(AppState& s, const FrameContext& ctx, const PanelRect& rect);
+};
+
+}  // namespace ew::ui

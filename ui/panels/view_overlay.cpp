@@ -1,0 +1,96 @@
+#include "ui/panels/view_overlay.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "ui/convert.h"
+#include "ui/render/palette.h"
+
+namespace ew::ui {
+
+void drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
+                 ImFont* titleFont, float scale) {
+  ImFont* font = titleFont ? titleFont : ImGui::GetFont();
+  const float titleSize = font->FontSize;
+  const ImVec2 t = font->CalcTextSizeA(titleSize, 1e9f, 0.0f, title.c_str());
+  const ImVec2 s = ImGui::CalcTextSize(subtitle.c_str());
+  const float pad = 8.0f * scale;
+  const ImVec2 plate{std::max(t.x, s.x) + 2 * pad, t.y + s.y + 2 * pad + 2.0f * scale};
+  dl->AddRectFilled(at, ImVec2(at.x + plate.x, at.y + plate.y), IM_COL32(10, 12, 16, 150), 6.0f * scale);
+  dl->AddText(font, titleSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(235, 238, 245, 255), title.c_str());
+  dl->AddText(ImVec2(at.x + pad, at.y + pad + t.y + 2.0f * scale), IM_COL32(150, 160, 175, 255),
+              subtitle.c_str());
+}
+
+void drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale) {
+  const float row = ImGui::GetTextLineHeight() + 4.0f * scale;
+  const float pad = 8.0f * scale;
+  float width = 0.0f;
+  for (const auto& it : items) width = std::max(width, ImGui::CalcTextSize(it.label.c_str()).x);
+  const float h = row * static_cast<float>(items.size()) + 2 * pad;
+  const ImVec2 tl{bottomLeft.x, bottomLeft.y - h};
+  dl->AddRectFilled(tl, ImVec2(tl.x + width + 2 * pad + 26.0f * scale, bottomLeft.y),
+                    IM_COL32(10, 12, 16, 150), 6.0f * scale);
+  float y = tl.y + pad;
+  for (const auto& it : items) {
+    const ImU32 c = toImU32(glm::vec4(glm::vec3(it.colour), std::max(it.colour.a, 0.85f)));
+    const ImVec2 mid{tl.x + pad + 8.0f * scale, y + row * 0.5f - 1.0f};
+    if (it.line) {
+      dl->AddLine(ImVec2(mid.x - 8.0f * scale, mid.y), ImVec2(mid.x + 8.0f * scale, mid.y), c, 2.5f * scale);
+    } else {
+      dl->AddCircleFilled(mid, 6.0f * scale, c);
+    }
+    dl->AddText(ImVec2(tl.x + pad + 24.0f * scale, y + 1.0f), IM_COL32(215, 220, 230, 255), it.label.c_str());
+    y += row;
+  }
+}
+
+void drawErrorColourBar(ImDrawList* dl, ImVec2 topRight, float heightPx, float maxMm,
+                        const char* title, float scale) {
+  const float w = 14.0f * scale;
+  const float pad = 8.0f * scale;
+  const float labelW = ImGui::CalcTextSize("000 mm").x;
+  const ImVec2 titleSize = ImGui::CalcTextSize(title);
+  const float plateW = std::max(w + labelW + 3 * pad, titleSize.x + 2 * pad);
+  const ImVec2 plateTl{topRight.x - plateW, topRight.y};
+  dl->AddRectFilled(plateTl, ImVec2(topRight.x, topRight.y + heightPx + titleSize.y + 3 * pad),
+                    IM_COL32(10, 12, 16, 150), 6.0f * scale);
+  dl->AddText(ImVec2(plateTl.x + pad, plateTl.y + pad), IM_COL32(200, 206, 215, 255), title);
+  const float x0 = plateTl.x + pad;
+  const float y0 = plateTl.y + titleSize.y + 2 * pad;
+  constexpr int kSteps = 24;
+  for (int i = 0; i < kSteps; ++i) {
+    // Top = max error.
+    const float t0 = 1.0f - static_cast<float>(i) / kSteps;
+    const float t1 = 1.0f - static_cast<float>(i + 1) / kSteps;
+    const float ya = y0 + heightPx * static_cast<float>(i) / kSteps;
+    const float yb = y0 + heightPx * static_cast<float>(i + 1) / kSteps;
+    const ImU32 ca = toImU32(palette::errorColour(t0));
+    const ImU32 cb = toImU32(palette::errorColour(t1));
+    dl->AddRectFilledMultiColor(ImVec2(x0, ya), ImVec2(x0 + w, yb), ca, ca, cb, cb);
+  }
+  for (int i = 0; i <= 4; ++i) {
+    const float t = static_cast<float>(i) / 4.0f;
+    const float y = y0 + heightPx * (1.0f - t);
+    dl->AddLine(ImVec2(x0 + w, y), ImVec2(x0 + w + 4.0f * scale, y), IM_COL32(200, 206, 215, 255));
+    char buf[32];
+    std::snprintf(buf, sizeof buf, i == 4 ? "%.0f mm" : "%.0f", static_cast<double>(t * maxMm));
+    dl->AddText(ImVec2(x0 + w + 7.0f * scale, y - ImGui::GetTextLineHeight() * 0.5f),
+                IM_COL32(200, 206, 215, 255), buf);
+  }
+}
+
+void drawScaleBar(ImDrawList* dl, ImVec2 left, float pxPerMm, float lengthMm, float scale) {
+  const float len = pxPerMm * lengthMm;
+  const ImU32 c = IM_COL32(170, 178, 190, 220);
+  dl->AddLine(left, ImVec2(left.x + len, left.y), c, 2.0f * scale);
+  dl->AddLine(ImVec2(left.x, left.y - 5 * scale), ImVec2(left.x, left.y + 5 * scale), c, 2.0f * scale);
+  dl->AddLine(ImVec2(left.x + len, left.y - 5 * scale), ImVec2(left.x + len, left.y + 5 * scale), c,
+              2.0f * scale);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f cm", static_cast<double>(lengthMm / 10.0f));
+  const ImVec2 ts = ImGui::CalcTextSize(buf);
+  dl->AddText(ImVec2(left.x + 0.5f * (len - ts.x), left.y - ts.y - 6.0f * scale), c, buf);
+}
+
+}  // namespace ew::ui

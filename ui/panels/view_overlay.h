@@ -1,0 +1,32 @@
+#pragma once
+// Annotations the two views draw over their images with ImGui's draw list: a caption,
+// a legend, a colour bar, a scale bar. Helpers shared by both view panels.
+
+#include <imgui.h>
+
+#include <span>
+#include <string>
+#include <utility>
+
+#include <glm/glm.hpp>
+
+namespace ew::ui {
+
+struct LegendItem {
+  glm::vec4 colour;
+  std::string label;
+  bool line = false;  // a line swatch instead of a disc
+};
+
+// Caption at the top-left corner, on a translucent plate.
+void drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
+                 ImFont* titleFont, float scale);
+// Legend rows, bottom-left corner upwards.
+void drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale);
+// Vertical colour bar of the error map, 0 … maxMm, at the right edge.
+void drawErrorColourBar(ImDrawList* dl, ImVec2 topRight, float heightPx, float maxMm,
+                        const char* title, float scale);
+// Horizontal scale bar of `lengthMm` drawn `pxPerMm` long.
+void drawScaleBar(ImDrawList* dl, ImVec2 left, float pxPerMm, float lengthMm, float scale);
+
+}  // namespace ew::ui

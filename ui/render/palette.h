@@ -1,0 +1,49 @@
+#pragma once
+// The viewer's colours, chosen to separate on a dark background and on a projector:
+// reconstruction warm (amber), ground truth cool (blue ghost), 2D input neutral white,
+// errors magenta, the view camera teal. Depth error uses a sequential colour map.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <glm/glm.hpp>
+
+namespace ew::ui::palette {
+
+inline constexpr glm::vec4 kReconRight{1.00f, 0.60f, 0.22f, 1.0f};
+inline constexpr glm::vec4 kReconLeft{1.00f, 0.84f, 0.55f, 1.0f};
+inline constexpr glm::vec4 kReconMid{1.00f, 0.72f, 0.38f, 1.0f};
+inline constexpr glm::vec4 kGhostRight{0.36f, 0.62f, 1.00f, 0.38f};
+inline constexpr glm::vec4 kGhostLeft{0.62f, 0.80f, 1.00f, 0.38f};
+inline constexpr glm::vec4 kGhostMid{0.50f, 0.72f, 1.00f, 0.38f};
+inline constexpr glm::vec4 kInputPoint{0.96f, 0.97f, 1.00f, 1.0f};
+inline constexpr glm::vec4 kInputBoneRight{0.62f, 0.68f, 0.78f, 0.85f};
+inline constexpr glm::vec4 kInputBoneLeft{0.42f, 0.47f, 0.56f, 0.85f};
+inline constexpr glm::vec4 kError{1.00f, 0.28f, 0.62f, 0.95f};
+inline constexpr glm::vec4 kCamera{0.32f, 0.88f, 0.76f, 1.0f};
+inline constexpr glm::vec4 kCameraEstimate{1.00f, 0.36f, 0.55f, 1.0f};
+inline constexpr glm::vec4 kTrail{0.55f, 0.75f, 1.00f, 0.30f};
+inline constexpr glm::vec4 kAxis{0.40f, 0.44f, 0.50f, 0.8f};
+
+// Sequential map for errors, t in [0, 1]: teal → green-yellow → amber → red → magenta.
+inline glm::vec4 errorColour(float t) {
+  constexpr std::array<glm::vec3, 5> stops{{{0.16f, 0.80f, 0.72f},
+                                             {0.62f, 0.88f, 0.30f},
+                                             {0.99f, 0.80f, 0.20f},
+                                             {0.98f, 0.42f, 0.20f},
+                                             {0.90f, 0.16f, 0.42f}}};
+  const float x = std::clamp(t, 0.0f, 1.0f) * static_cast<float>(stops.size() - 1);
+  const auto i = std::min(static_cast<std::size_t>(x), stops.size() - 2);
+  const float f = x - static_cast<float>(i);
+  return {glm::mix(stops[i], stops[i + 1], f), 1.0f};
+}
+
+// The colour bar's top value: a round number of mm at or above `maxMm` (at least 20).
+inline float errorScaleMm(float maxMm) {
+  const std::array<float, 9> steps{20.f, 30.f, 50.f, 75.f, 100.f, 150.f, 200.f, 300.f, 500.f};
+  for (float s : steps)
+    if (maxMm <= s) return s;
+  return std::ceil(maxMm / 500.0f) * 500.0f;
+}
+
+}  // namespace ew::ui::palette
