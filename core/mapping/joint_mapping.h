@@ -18,9 +18,14 @@ JointTrial mapSkeletonJoints(const RawTrial& raw);
 
 // SPEC §1 head rule, shared by every mapping that lacks head points: the head centre is
 // placed on the pelvis->sternum axis, above the sternum, at kHeadFractionOfTrunk of the
-// pelvis-sternum distance. 0.45: jugular notch to head centre (~210-230 mm) over pelvis
-// centre to jugular notch (~470-510 mm) in adult anthropometry (Winter 2009, Table 4.1).
-inline constexpr double kHeadFractionOfTrunk = 0.45;
+// pelvis-sternum distance. 0.30: in stature fractions (Drillis & Contini 1966; Winter 2009,
+// fig. 4.1) the neck base (mid C7 / jugular notch) is at ~0.83 H, the head centre (ear
+// level) at ~0.925 H and the hip-joint level at ~0.52 H, so head-above-sternum over trunk
+// is ~0.095/0.31 = 0.3 (about 165 mm for H = 1.75 m). The CMU skeletons, which do measure
+// the head, give 126-147 mm over a 530-560 mm trunk (0.24-0.27): the rule keeps estimated
+// heads of marker-based sources where the measured ones are, so a mixed-source model does
+// not learn "source" as a head-height component.
+inline constexpr double kHeadFractionOfTrunk = 0.30;
 Eigen::Vector3d estimateHead(const Eigen::Vector3d& pelvis, const Eigen::Vector3d& sternum);
 
 // Fills JointTrial fields common to all mappings (file, format, rate, units, events,

@@ -25,8 +25,10 @@ constexpr SegmentRange kSegments[] = {
     {Joint::LKnee, Joint::LAnkle, 300, 520, "left shank"},
     {Joint::RShoulder, Joint::RElbow, 200, 400, "right upper arm"},
     {Joint::LShoulder, Joint::LElbow, 200, 400, "left upper arm"},
-    {Joint::RElbow, Joint::RWrist, 180, 330, "right forearm"},
-    {Joint::LElbow, Joint::LWrist, 180, 330, "left forearm"},
+    // CMU's skeletons end the forearm at the end of the radius bone, short of the wrist
+    // markers: 139 mm for CMU subject 05's calibration, 180-203 mm for the others.
+    {Joint::RElbow, Joint::RWrist, 120, 330, "right forearm"},
+    {Joint::LElbow, Joint::LWrist, 120, 330, "left forearm"},
     {Joint::RHip, Joint::LHip, 120, 300, "hip width"},
     {Joint::RShoulder, Joint::LShoulder, 220, 460, "shoulder width"},
     {Joint::Pelvis, Joint::Sternum, 250, 650, "trunk"},
