@@ -39,7 +39,8 @@ void checkTarget(const fs::path& out, bool force) {
   if (!fs::exists(out, ec)) return;
   if (!fs::is_directory(out, ec)) badArgument(out.string(), "exists and is not a folder");
   if (!fs::is_empty(out, ec) && !force) {
-    badArgument(out.string(), "exists and is not empty: choose another --out or add --force to replace it");
+    badArgument(out.string(),
+                "exists and is not empty: choose another --out or add --force to replace it");
   }
 }
 
@@ -56,10 +57,11 @@ void writeWalkerFile(const fs::path& file, const SynthWalker& w, const SynthArgs
     writeBvh(file, t.positionsMm, t.rateHz, options);
     return;
   }
-  writeJointCsv(file, t.positionsMm, t.rateHz,
-                {walkerComment(w, a),
-                 "mm, x right, y forward, z up; " +
-                     std::string(a.treadmill ? "walking in place (treadmill)" : "overground, progression along +y")});
+  writeJointCsv(
+      file, t.positionsMm, t.rateHz,
+      {walkerComment(w, a), "mm, x right, y forward, z up; " +
+                                std::string(a.treadmill ? "walking in place (treadmill)"
+                                                        : "overground, progression along +y")});
 }
 
 void writeManifest(const fs::path& file, const std::vector<SynthWalker>& walkers,
@@ -124,8 +126,8 @@ int runSynth(const SynthArgs& a) {
   } catch (const fs::filesystem_error& e) {
     throw Error(ErrorKind::Io, out.string(), "", e.code().message());
   }
-  std::cerr << "wrote " << walkers.size() << " synthetic walker trial(s) (" << a.format
-            << ", seed " << a.seed << ") and walkers.csv to " << out.string() << "\n";
+  std::cerr << "wrote " << walkers.size() << " synthetic walker trial(s) (" << a.format << ", seed "
+            << a.seed << ") and walkers.csv to " << out.string() << "\n";
   return 0;
 }
 
@@ -134,21 +136,29 @@ int runSynth(const SynthArgs& a) {
 void addSynthCommand(CLI::App& app, int& exitCode) {
   auto args = std::make_shared<SynthArgs>();
   auto* cmd = app.add_subcommand(
-      "synth", "Generate the synthetic walker population (docs/SYNTHETIC.md) as 15-joint CSV or "
-               "BVH files plus a manifest walkers.csv");
-  cmd->add_option("--out", args->out, "Output folder (written to a temporary sibling, then renamed)")
+      "synth",
+      "Generate the synthetic walker population (docs/SYNTHETIC.md) as 15-joint CSV or "
+      "BVH files plus a manifest walkers.csv");
+  cmd->add_option("--out", args->out,
+                  "Output folder (written to a temporary sibling, then renamed)")
       ->required();
   cmd->add_option("--count", args->count, "Number of walkers (subjects)")
-      ->check(CLI::Range(1, 10000))->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Random seed (same seed, same files)")->capture_default_str();
+      ->check(CLI::Range(1, 10000))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Random seed (same seed, same files)")
+      ->capture_default_str();
   cmd->add_option("--format", args->format, "csv (15-joint CSV) or bvh")
-      ->check(CLI::IsMember({"csv", "bvh"}))->capture_default_str();
+      ->check(CLI::IsMember({"csv", "bvh"}))
+      ->capture_default_str();
   cmd->add_option("--cycles", args->cycles, "Gait cycles per trial")
-      ->check(CLI::Range(1.0, 100.0))->capture_default_str();
+      ->check(CLI::Range(1.0, 100.0))
+      ->capture_default_str();
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz")
-      ->check(CLI::Range(1.0, 10000.0))->capture_default_str();
+      ->check(CLI::Range(1.0, 10000.0))
+      ->capture_default_str();
   cmd->add_option("--trials", args->trials, "Trials per walker (small trial-to-trial variation)")
-      ->check(CLI::Range(1, 100))->capture_default_str();
+      ->check(CLI::Range(1, 100))
+      ->capture_default_str();
   cmd->add_flag("--treadmill", args->treadmill, "Walk in place instead of overground along +y");
   cmd->add_flag("--force", args->force, "Replace a non-empty output folder");
   cmd->callback([args, &exitCode] { exitCode = runSynth(*args); });

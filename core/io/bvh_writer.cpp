@@ -41,30 +41,30 @@ const Eigen::Vector3d kToeRest = Eigen::Vector3d(0, -0.3, -1).normalized();  // 
 // follow this order).
 const std::vector<Node>& skeleton() {
   static const std::vector<Node> nodes = {
-      {"Hips", -1, Place::Joint, Joint::Pelvis, kZero},                          // 0
-      {"LeftUpLeg", 0, Place::Joint, Joint::LHip, kLeft},                         // 1
-      {"LeftLeg", 1, Place::Joint, Joint::LKnee, kDown},                          // 2
-      {"LeftFoot", 2, Place::Joint, Joint::LAnkle, kDown},                        // 3
-      {nullptr, 3, Place::Toe, Joint::LAnkle, kToeRest, 1},                       // 4
-      {"RightUpLeg", 0, Place::Joint, Joint::RHip, kRight},                       // 5
-      {"RightLeg", 5, Place::Joint, Joint::RKnee, kDown},                         // 6
-      {"RightFoot", 6, Place::Joint, Joint::RAnkle, kDown},                       // 7
-      {nullptr, 7, Place::Toe, Joint::RAnkle, kToeRest, 0},                       // 8
-      {"Spine", 0, Place::Joint, Joint::Pelvis, kZero},                           // 9
-      {"Spine1", 9, Place::Joint, Joint::Sternum, kUp},                           // 10
-      {"Neck", 10, Place::Joint, Joint::Sternum, kZero},                          // 11
-      {"Head", 11, Place::HeadBase, Joint::Head, kUp},                            // 12
-      {nullptr, 12, Place::Free, Joint::Head, kUp},                               // 13
-      {"LeftShoulder", 10, Place::Joint, Joint::Sternum, kZero},                  // 14
+      {"Hips", -1, Place::Joint, Joint::Pelvis, kZero},           // 0
+      {"LeftUpLeg", 0, Place::Joint, Joint::LHip, kLeft},         // 1
+      {"LeftLeg", 1, Place::Joint, Joint::LKnee, kDown},          // 2
+      {"LeftFoot", 2, Place::Joint, Joint::LAnkle, kDown},        // 3
+      {nullptr, 3, Place::Toe, Joint::LAnkle, kToeRest, 1},       // 4
+      {"RightUpLeg", 0, Place::Joint, Joint::RHip, kRight},       // 5
+      {"RightLeg", 5, Place::Joint, Joint::RKnee, kDown},         // 6
+      {"RightFoot", 6, Place::Joint, Joint::RAnkle, kDown},       // 7
+      {nullptr, 7, Place::Toe, Joint::RAnkle, kToeRest, 0},       // 8
+      {"Spine", 0, Place::Joint, Joint::Pelvis, kZero},           // 9
+      {"Spine1", 9, Place::Joint, Joint::Sternum, kUp},           // 10
+      {"Neck", 10, Place::Joint, Joint::Sternum, kZero},          // 11
+      {"Head", 11, Place::HeadBase, Joint::Head, kUp},            // 12
+      {nullptr, 12, Place::Free, Joint::Head, kUp},               // 13
+      {"LeftShoulder", 10, Place::Joint, Joint::Sternum, kZero},  // 14
       {"LeftArm", 14, Place::Joint, Joint::LShoulder, Eigen::Vector3d(-1, -0.1, 0).normalized()},
-      {"LeftForeArm", 15, Place::Joint, Joint::LElbow, kDown},                    // 16
-      {"LeftHand", 16, Place::Joint, Joint::LWrist, kDown},                       // 17
-      {nullptr, 17, Place::Free, Joint::LWrist, kDown},                           // 18
-      {"RightShoulder", 10, Place::Joint, Joint::Sternum, kZero},                 // 19
+      {"LeftForeArm", 15, Place::Joint, Joint::LElbow, kDown},     // 16
+      {"LeftHand", 16, Place::Joint, Joint::LWrist, kDown},        // 17
+      {nullptr, 17, Place::Free, Joint::LWrist, kDown},            // 18
+      {"RightShoulder", 10, Place::Joint, Joint::Sternum, kZero},  // 19
       {"RightArm", 19, Place::Joint, Joint::RShoulder, Eigen::Vector3d(1, -0.1, 0).normalized()},
-      {"RightForeArm", 20, Place::Joint, Joint::RElbow, kDown},                   // 21
-      {"RightHand", 21, Place::Joint, Joint::RWrist, kDown},                      // 22
-      {nullptr, 22, Place::Free, Joint::RWrist, kDown},                           // 23
+      {"RightForeArm", 20, Place::Joint, Joint::RElbow, kDown},  // 21
+      {"RightHand", 21, Place::Joint, Joint::RWrist, kDown},     // 22
+      {nullptr, 22, Place::Free, Joint::RWrist, kDown},          // 23
   };
   return nodes;
 }
@@ -95,7 +95,8 @@ std::vector<Eigen::Vector3d> placeNodes(const Eigen::MatrixXd& frames, int f,
 }
 
 bool measured(const Node& n, const BvhWriteOptions& o) {
-  return n.place == Place::Joint || n.place == Place::HeadBase || (n.place == Place::Toe && o.toesMm);
+  return n.place == Place::Joint || n.place == Place::HeadBase ||
+         (n.place == Place::Toe && o.toesMm);
 }
 
 // [SECTION] Rest pose
@@ -110,7 +111,8 @@ std::vector<Eigen::Vector3d> restOffsets(const Eigen::MatrixXd& frames, const Bv
   for (int f = 0; f < frames.rows(); ++f) {
     const auto p = placeNodes(frames, f, o);
     for (size_t k = 1; k < nodes.size(); ++k) {
-      if (measured(nodes[k], o)) length[k] += (p[k] - p[static_cast<size_t>(nodes[k].parent)]).norm();
+      if (measured(nodes[k], o))
+        length[k] += (p[k] - p[static_cast<size_t>(nodes[k].parent)]).norm();
     }
   }
   for (double& l : length) l /= static_cast<double>(frames.rows());
@@ -133,7 +135,8 @@ std::vector<Eigen::Vector3d> restOffsets(const Eigen::MatrixXd& frames, const Bv
 Eigen::Matrix3d hipsRotation(const Eigen::MatrixXd& frames, int f) {
   const Eigen::Vector3d x =
       (jointInBvh(frames, f, Joint::RHip) - jointInBvh(frames, f, Joint::LHip)).normalized();
-  const Eigen::Vector3d up = jointInBvh(frames, f, Joint::Sternum) - jointInBvh(frames, f, Joint::Pelvis);
+  const Eigen::Vector3d up =
+      jointInBvh(frames, f, Joint::Sternum) - jointInBvh(frames, f, Joint::Pelvis);
   const Eigen::Vector3d y = (up - up.dot(x) * x).normalized();
   Eigen::Matrix3d r;
   r << x, y, x.cross(y);
@@ -155,7 +158,8 @@ std::vector<Eigen::Matrix3d> globalRotations(const Eigen::MatrixXd& frames, int 
     g[k] = parent;
     if (nodes[k].name == nullptr) continue;
     for (size_t c = k + 1; c < nodes.size(); ++c) {
-      if (nodes[c].parent != static_cast<int>(k) || !measured(nodes[c], o) || offsets[c].isZero()) continue;
+      if (nodes[c].parent != static_cast<int>(k) || !measured(nodes[c], o) || offsets[c].isZero())
+        continue;
       const Eigen::Vector3d from = parent * offsets[c];
       const Eigen::Vector3d to = p[c] - p[k];
       g[k] = Eigen::Quaterniond::FromTwoVectors(from, to).toRotationMatrix() * parent;
@@ -192,9 +196,12 @@ void writeHierarchy(std::string& out, size_t k, const std::vector<Eigen::Vector3
   const auto& nodes = skeleton();
   const std::string indent(static_cast<size_t>(2 * depth), ' ');
   const Node& n = nodes[k];
-  if (n.parent < 0) out += "ROOT " + std::string(n.name) + "\n";
-  else if (n.name != nullptr) out += indent + "JOINT " + n.name + "\n";
-  else out += indent + "End Site\n";
+  if (n.parent < 0)
+    out += "ROOT " + std::string(n.name) + "\n";
+  else if (n.name != nullptr)
+    out += indent + "JOINT " + n.name + "\n";
+  else
+    out += indent + "End Site\n";
   out += indent + "{\n";
   appendf(out, (indent + "  OFFSET %.*f %.*f %.*f\n").c_str(), offsets[k].x(), offsets[k].y(),
           offsets[k].z(), 6);
@@ -211,11 +218,13 @@ void writeHierarchy(std::string& out, size_t k, const std::vector<Eigen::Vector3
 
 void checkInput(const Eigen::MatrixXd& frames, double rateHz, const BvhWriteOptions& o) {
   auto bad = [](const std::string& what) { throw Error(ErrorKind::BadArgument, "", "", what); };
-  if (frames.cols() != kDims3) bad("BVH writer: expected 45 joint columns, got " + std::to_string(frames.cols()));
+  if (frames.cols() != kDims3)
+    bad("BVH writer: expected 45 joint columns, got " + std::to_string(frames.cols()));
   if (frames.rows() < 1) bad("BVH writer: no frames");
   if (!(rateHz > 0) || !std::isfinite(rateHz)) bad("BVH writer: frame rate must be > 0");
   if (!frames.allFinite()) bad("BVH writer: joint positions must be finite (no gaps)");
-  if (o.toesMm && (o.toesMm->rows() != frames.rows() || o.toesMm->cols() != 6 || !o.toesMm->allFinite())) {
+  if (o.toesMm &&
+      (o.toesMm->rows() != frames.rows() || o.toesMm->cols() != 6 || !o.toesMm->allFinite())) {
     bad("BVH writer: toes must be finite, frames x 6");
   }
 }
@@ -240,7 +249,9 @@ std::string formatBvh(const Eigen::MatrixXd& frames, double rateHz, const BvhWri
     for (size_t k = 0; k < nodes.size(); ++k) {
       if (nodes[k].name == nullptr) continue;
       const Eigen::Matrix3d local =
-          nodes[k].parent < 0 ? g[k] : Eigen::Matrix3d(g[static_cast<size_t>(nodes[k].parent)].transpose() * g[k]);
+          nodes[k].parent < 0
+              ? g[k]
+              : Eigen::Matrix3d(g[static_cast<size_t>(nodes[k].parent)].transpose() * g[k]);
       Eigen::Vector3d angles = eulerZxyDeg(local);
       if (f > 0) unwrapLike(angles, previous[k]);
       previous[k] = angles;

@@ -14,8 +14,8 @@ const std::vector<double> kHipTable = {30, 29, 27, 23, 19, 14, 10, 6,  2,  -2,
                                        -6, -8, -5, 2,  11, 19, 25, 29, 31, 31};
 const std::vector<double> kKneeTable = {4,  11, 17, 19, 17, 13, 9,  6,  5,  6,
                                         10, 19, 32, 47, 58, 61, 55, 41, 23, 9};
-const std::vector<double> kAnkleTable = {0, -4, -3, 0,  3,   5,  7,  8,  9,  10,
-                                         8, 2,  -9, -16, -12, -5, -1, 1,  1,  0};
+const std::vector<double> kAnkleTable = {0, -4, -3, 0,   3,   5,  7,  8, 9, 10,
+                                         8, 2,  -9, -16, -12, -5, -1, 1, 1, 0};
 
 }  // namespace
 

@@ -17,9 +17,7 @@ std::string walkerId(int i) {
 }
 
 void checkOptions(const PopulationOptions& o) {
-  auto bad = [](const std::string& what) {
-    throw Error(ErrorKind::BadArgument, "", "", what);
-  };
+  auto bad = [](const std::string& what) { throw Error(ErrorKind::BadArgument, "", "", what); };
   if (o.count < 1) bad("population size must be at least 1, got " + std::to_string(o.count));
   if (o.trialsPerWalker < 1) bad("trials per walker must be at least 1");
   const double rate = o.simulation.rateHz, cycles = o.simulation.cycles;
@@ -55,10 +53,22 @@ std::map<std::string, double> attributesOf(const SynthParams& p, const SynthTraj
 }  // namespace
 
 std::vector<std::string> synthAttributeNames() {
-  return {"height_m",        "female",           "leg_length_m",       "cadence_spm",
-          "stride_length_m", "speed_mps",        "hip_rom_deg",        "knee_flexion_deg",
-          "knee_loading_deg", "arm_swing_deg",   "elbow_flexion_deg",  "pelvis_rotation_deg",
-          "pelvis_obliquity_deg", "lateral_sway_mm", "step_width_mm",  "trunk_lean_deg",
+  return {"height_m",
+          "female",
+          "leg_length_m",
+          "cadence_spm",
+          "stride_length_m",
+          "speed_mps",
+          "hip_rom_deg",
+          "knee_flexion_deg",
+          "knee_loading_deg",
+          "arm_swing_deg",
+          "elbow_flexion_deg",
+          "pelvis_rotation_deg",
+          "pelvis_obliquity_deg",
+          "lateral_sway_mm",
+          "step_width_mm",
+          "trunk_lean_deg",
           "asymmetry_arm"};
 }
 
@@ -105,8 +115,8 @@ std::vector<SynthWalker> generatePopulation(const PopulationOptions& options) {
       Rng trialRng(trialSeed);
       // The first trial is the subject's own parameters; later ones vary about them.
       const SynthParams params = r == 0 ? subject : jitterTrialParams(subject, trialRng);
-      walkers.push_back(synthesizeWalker(walkerId(i), r, params, options.simulation,
-                                         childSeed(trialSeed, 1)));
+      walkers.push_back(
+          synthesizeWalker(walkerId(i), r, params, options.simulation, childSeed(trialSeed, 1)));
     }
   }
   return walkers;

@@ -21,21 +21,21 @@ inline constexpr const char* kSynthSource = "synthetic";
 inline constexpr const char* kSynthCondition = "self-selected";
 
 struct PopulationOptions {
-  int count = 50;             // walkers (subjects)
+  int count = 50;  // walkers (subjects)
   std::uint64_t seed = kDefaultSynthSeed;
-  int trialsPerWalker = 1;    // each a new draw of the trial-level variation
+  int trialsPerWalker = 1;       // each a new draw of the trial-level variation
   SimulationOptions simulation;  // 120 Hz, 4 cycles, overground by default
 };
 
 struct SynthWalker {
-  std::string id;        // subject id, "SYN001" …; the trial's file stem adds "_T1" …
-  std::string trialId;   // "SYN001_T1"
+  std::string id;       // subject id, "SYN001" …; the trial's file stem adds "_T1" …
+  std::string trialId;  // "SYN001_T1"
   int trialIndex = 0;
-  SynthParams params;    // the trial's parameters (hip gain solved)
+  SynthParams params;  // the trial's parameters (hip gain solved)
   // height_m, female, leg_length_m, cadence_spm, stride_length_m, speed_mps, hip_rom_deg,
   // knee_flexion_deg, arm_swing_deg, lateral_sway_mm, trunk_lean_deg, step_width_mm, …
   std::map<std::string, double> attributes;
-  JointTrial trial;      // 15 joints, canonical axes (x right, y forward, z up), mm
+  JointTrial trial;        // 15 joints, canonical axes (x right, y forward, z up), mm
   Eigen::MatrixXd toesMm;  // frames × 6 (right, left toe tips): for the BVH feet
 };
 

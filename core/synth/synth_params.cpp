@@ -50,10 +50,14 @@ void drawGait(SynthParams& p, Rng& rng) {
   const double walkRatio = kWalkRatioPerSpm[sex] * truncatedNormal(rng, 1.0, 0.08, 0.76, 1.24);
   p.strideLengthMm = 2.0 * walkRatio * h * p.cadenceSpm;
   const double speedRatio = p.speedMps() / kReferenceSpeedMps;
-  p.hipOffsetDeg = truncatedNormal(rng, 0.0, 2.5, -7.5, 7.5);
+  // The thigh's mean angle to the vertical varies little between people: the feet land
+  // about as far ahead of the pelvis as they leave behind it (differences in hip flexion
+  // are mostly pelvic tilt, which moves the trunk, not the feet). A larger offset here
+  // shifts the ankle's fore-aft timing against its lift, unlike real walkers.
+  p.hipOffsetDeg = truncatedNormal(rng, 0.0, 0.75, -2.25, 2.25);
   // Knee flexion grows with speed (Lelas et al. 2003): ~+25 % of the curve per +100 % speed.
   p.kneeGain = truncatedNormal(rng, 1.0, 0.08, 0.76, 1.24) * (1.0 + 0.25 * (speedRatio - 1.0));
-  p.kneeOffsetDeg = truncatedNormal(rng, 0.0, 2.5, -5.0, 7.5);
+  p.kneeOffsetDeg = truncatedNormal(rng, 0.0, 1.5, -4.5, 4.5);
   p.ankleGain = truncatedNormal(rng, 1.0, 0.15, 0.6, 1.5);
   p.hipStyle = drawStyle(rng, 1.0);
   p.kneeStyle = drawStyle(rng, 1.5);
@@ -91,6 +95,21 @@ void drawAsymmetry(SynthParams& p, Rng& rng) {
   p.strideTimeCv = truncatedNormal(rng, 0.02, 0.006, 0.008, 0.04);
 }
 
+JointPlacement drawPlacement(bool female, Rng& rng) {
+  JointPlacement j;
+  for (auto& shoulder : j.shoulderMm) {
+    for (double& v : shoulder) v = truncatedNormal(rng, 0.0, 10.0, -30.0, 30.0);
+  }
+  for (double& v : j.headMm) v = truncatedNormal(rng, 0.0, 12.0, -36.0, 36.0);
+  for (double& v : j.kneeValgusDeg) v = truncatedNormal(rng, 0.0, 2.5, -7.5, 7.5);
+  // Carrying angle: about 10° in men, 13° in women (Paraskevas et al. 2004), SD 3°.
+  for (double& v : j.carryingAngleDeg)
+    v = truncatedNormal(rng, female ? 13.0 : 10.0, 3.0, 2.0, 22.0);
+  // Leg-length difference: a few mm in most adults (Knutson 2005: mean 5 mm).
+  j.leftLegRatio = truncatedNormal(rng, 1.0, 0.005, 0.985, 1.015);
+  return j;
+}
+
 }  // namespace
 
 BodyDimensions drawBody(double heightMm, bool female, Rng& rng) {
@@ -98,13 +117,13 @@ BodyDimensions drawBody(double heightMm, bool female, Rng& rng) {
   b.heightMm = heightMm;
   b.thighMm = segment(rng, heightMm, 0.245);
   b.shankMm = segment(rng, heightMm, 0.246);
-  b.hipWidthMm = segment(rng, heightMm, female ? 0.108 : 0.097);
-  b.trunkMm = segment(rng, heightMm, 0.285);
-  b.neckHeadMm = segment(rng, heightMm, 0.125);
+  b.hipWidthMm = segment(rng, heightMm, female ? 0.110 : 0.100);
+  b.trunkMm = segment(rng, heightMm, 0.310);
+  b.neckHeadMm = segment(rng, heightMm, 0.110);
   b.shoulderWidthMm = segment(rng, heightMm, female ? 0.205 : 0.215);
-  b.shoulderDropMm = segment(rng, heightMm, 0.025);
-  b.shoulderBackMm = segment(rng, heightMm, 0.025);
-  b.upperArmMm = segment(rng, heightMm, 0.186);
+  b.shoulderDropMm = segment(rng, heightMm, 0.045);
+  b.shoulderBackMm = segment(rng, heightMm, 0.010);
+  b.upperArmMm = segment(rng, heightMm, 0.162);
   b.forearmMm = segment(rng, heightMm, 0.146);
   b.handMm = segment(rng, heightMm, 0.108);
   b.footMm = segment(rng, heightMm, 0.152);
@@ -120,6 +139,7 @@ SynthParams drawSubjectParams(Rng& rng) {
                                    kHeightMeanMm[sex] - 3 * kHeightSdMm[sex],
                                    kHeightMeanMm[sex] + 3 * kHeightSdMm[sex]);
   p.body = drawBody(h, p.female, rng);
+  p.placement = drawPlacement(p.female, rng);
   drawGait(p, rng);
   drawPelvisTrunk(p, rng);
   drawArms(p, rng);

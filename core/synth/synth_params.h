@@ -43,16 +43,29 @@ struct CurveStyle {
   std::array<double, 3> sinDeg{};
 };
 
+// Individual joint-centre geometry beyond the proportions: where a person's joints sit
+// relative to their segments (and where a lab's joint-centre estimate puts them, which
+// differs by 10-20 mm between methods: docs/SYNTHETIC.md). Constant per walker, in the
+// segment's own frame, so bone lengths stay constant. Index [right, left].
+struct JointPlacement {
+  std::array<std::array<double, 3>, 2> shoulderMm{};  // thorax frame: x right, y forward, z up
+  std::array<double, 3> headMm{};                     // head frame
+  std::array<double, 2> kneeValgusDeg{};              // shank tilted out (+) from the thigh plane
+  std::array<double, 2> carryingAngleDeg{};           // forearm abducted beyond the upper arm
+  double leftLegRatio = 1.0;                          // left thigh and shank over right
+};
+
 struct SynthParams {
   bool female = false;
   BodyDimensions body;
+  JointPlacement placement;
 
   // Spatio-temporal targets at self-selected speed.
   double cadenceSpm = 113.0;       // steps per minute
   double strideLengthMm = 1410.0;  // the hip excursion is solved to reach it
 
   // Sagittal angles: normative curve × gain (about its mean) + offset + style.
-  double hipGain = 1.0;            // solved from strideLengthMm (walkerKinematics)
+  double hipGain = 1.0;  // solved from strideLengthMm (walkerKinematics)
   double hipOffsetDeg = 0.0;
   double kneeGain = 1.0;
   double kneeOffsetDeg = 0.0;
@@ -71,18 +84,18 @@ struct SynthParams {
   double trunkBendDeg = 2.5;        // lateral bend towards the stance side
 
   // Arms.
-  double armSwingDeg = 16.0;        // shoulder flexion amplitude (half the range)
-  double shoulderMeanDeg = -4.0;    // mean shoulder flexion (− = arm behind the trunk line)
+  double armSwingDeg = 16.0;      // shoulder flexion amplitude (half the range)
+  double shoulderMeanDeg = -4.0;  // mean shoulder flexion (− = arm behind the trunk line)
   double armAbductionDeg = 6.0;
   double elbowMeanDeg = 25.0;
-  double elbowSwingDeg = 10.0;      // elbow flexion amplitude (half the range)
-  double armLagCycles = 0.03;       // arm swing lags the opposite leg
+  double elbowSwingDeg = 10.0;  // elbow flexion amplitude (half the range)
+  double armLagCycles = 0.03;   // arm swing lags the opposite leg
 
-  double toeOutDeg = 7.0;           // foot progression angle (BVH toes only)
+  double toeOutDeg = 7.0;  // foot progression angle (BVH toes only)
   Asymmetry asymmetry;
 
   // Trial-level variability.
-  double strideTimeCv = 0.02;       // cycle-to-cycle stride time variation (SD / mean)
+  double strideTimeCv = 0.02;  // cycle-to-cycle stride time variation (SD / mean)
 
   double strideHz() const { return cadenceSpm / 120.0; }
   double speedMps() const { return strideLengthMm * strideHz() / 1000.0; }

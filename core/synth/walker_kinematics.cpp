@@ -25,15 +25,21 @@ constexpr double kContactSoftnessMm = 3.0;
 constexpr int kGridPerCycle = 128;
 // The swing ankle passes this much closer to the midline than in stance (mm).
 constexpr double kSwingMedialMm = 10.0;
-constexpr double kToeOffPhase = 0.62;  // swing starts here (Perry & Burnfield: 60-62 %)
-constexpr double kDoubleSupport = 0.12; // initial double support (Perry & Burnfield: 0-12 %)
+constexpr double kToeOffPhase = 0.62;    // swing starts here (Perry & Burnfield: 60-62 %)
+constexpr double kDoubleSupport = 0.12;  // initial double support (Perry & Burnfield: 0-12 %)
 
 double side(int leg) { return leg == kRight ? 1.0 : -1.0; }
 double fractional(double x) { return x - std::floor(x); }
 
-Eigen::Matrix3d rotX(double deg) { return Eigen::AngleAxisd(deg * kDegToRad, Eigen::Vector3d::UnitX()).toRotationMatrix(); }
-Eigen::Matrix3d rotY(double deg) { return Eigen::AngleAxisd(deg * kDegToRad, Eigen::Vector3d::UnitY()).toRotationMatrix(); }
-Eigen::Matrix3d rotZ(double deg) { return Eigen::AngleAxisd(deg * kDegToRad, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
+Eigen::Matrix3d rotX(double deg) {
+  return Eigen::AngleAxisd(deg * kDegToRad, Eigen::Vector3d::UnitX()).toRotationMatrix();
+}
+Eigen::Matrix3d rotY(double deg) {
+  return Eigen::AngleAxisd(deg * kDegToRad, Eigen::Vector3d::UnitY()).toRotationMatrix();
+}
+Eigen::Matrix3d rotZ(double deg) {
+  return Eigen::AngleAxisd(deg * kDegToRad, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
 
 // Soft minimum of heights (mm) and, optionally, each one's weight in it.
 template <size_t N>
@@ -54,7 +60,7 @@ double softMinimum(const std::array<double, N>& z, std::array<double, N>* weight
 struct WalkerShape {
   const SynthParams* params = nullptr;
   std::array<PeriodicCurve, 2> hip, knee, ankle, shoulder, elbow;  // [right, left]
-  std::array<double, 2> legShift{};  // leg phase = τ − legShift
+  std::array<double, 2> legShift{};                                // leg phase = τ − legShift
   PeriodicCurve pelvisYaw, pelvisObliquity, sway, trunkLean, trunkYaw, trunkBend;
   // Stance correction (see legAt): off while the hip gain and the surge are solved.
   bool stanceIk = false;
@@ -63,7 +69,7 @@ struct WalkerShape {
   // foot's position by under 0.1 mm.
   std::array<std::vector<double>, 2> thighCorrectionDeg;
   double strideMm = 0.0;
-  PeriodicCurve surge;                  // pelvis fore-aft deviation from constant speed
+  PeriodicCurve surge;  // pelvis fore-aft deviation from constant speed
   // Heel and ball y relative to the pelvis at mid-stance, [leg][heel, ball].
   std::array<std::array<double, 2>, 2> midStanceY{};
 };
@@ -111,8 +117,8 @@ void makeArmCurves(const SynthParams& p, WalkerShape& w) {
     PeriodicCurve swing = cosineCurve(p.shoulderMeanDeg, amplitude, 1, peak);
     PeriodicCurve shaped = shapedCurve(swing, 1.0, 0.0, p.shoulderStyle, 0.0);
     w.shoulder[i] = shaped;
-    w.elbow[i] = cosineCurve(p.elbowMeanDeg, p.elbowSwingDeg * amplitude / p.armSwingDeg, 1,
-                             peak + 0.03);
+    w.elbow[i] =
+        cosineCurve(p.elbowMeanDeg, p.elbowSwingDeg * amplitude / p.armSwingDeg, 1, peak + 0.03);
   }
 }
 
@@ -163,17 +169,25 @@ Eigen::Vector3d limbDirection(double sagittalDeg, double lateral, double cosFron
 LegPoints legGeometry(const SynthParams& p, double s, const Eigen::Vector3d& hip, double sinG,
                       double thighDeg, double kneeDeg, double ankleDeg) {
   const BodyDimensions& d = p.body;
+  const size_t i = s > 0 ? 0 : 1;
+  const double ratio = s > 0 ? 1.0 : p.placement.leftLegRatio;
   const double cosG = std::sqrt(1.0 - sinG * sinG);
+  // Valgus tilts the shank out of the thigh's plane (sin(γ − v) ≈ sin γ − v cos γ).
+  const double valgus = p.placement.kneeValgusDeg[i] * kDegToRad;
+  const double sinS = sinG * std::cos(valgus) - cosG * std::sin(valgus);
+  const double cosS = std::sqrt(1.0 - sinS * sinS);
   const double shankDeg = thighDeg - kneeDeg;
   LegPoints out;
   out.hip = hip;
-  out.knee = hip + d.thighMm * limbDirection(thighDeg, -s * sinG, cosG);
-  out.ankle = out.knee + d.shankMm * limbDirection(shankDeg, -s * sinG, cosG);
+  out.knee = hip + ratio * d.thighMm * limbDirection(thighDeg, -s * sinG, cosG);
+  out.ankle = out.knee + ratio * d.shankMm * limbDirection(shankDeg, -s * sinS, cosS);
   // Foot: pitch φ = shank angle + dorsiflexion (toe up +), turned out by the toe-out angle.
   const double phi = (shankDeg + ankleDeg) * kDegToRad;
   const double rho = p.toeOutDeg * kDegToRad;
-  const Eigen::Vector3d f(s * std::sin(rho) * std::cos(phi), std::cos(rho) * std::cos(phi), std::sin(phi));
-  const Eigen::Vector3d u(-s * std::sin(rho) * std::sin(phi), -std::cos(rho) * std::sin(phi), std::cos(phi));
+  const Eigen::Vector3d f(s * std::sin(rho) * std::cos(phi), std::cos(rho) * std::cos(phi),
+                          std::sin(phi));
+  const Eigen::Vector3d u(-s * std::sin(rho) * std::sin(phi), -std::cos(rho) * std::sin(phi),
+                          std::cos(phi));
   // Heel 25 % of the foot behind the ankle, ball (metatarsal heads) 50 % ahead, toe
   // tip 25 % beyond the ball; sole at the ankle height below the ankle centre.
   out.heel = out.ankle - 0.25 * d.footMm * f - d.ankleHeightMm * u;
@@ -208,7 +222,8 @@ double stanceIkWeight(double legPhase) {
 // `targetY` (secant iteration from the table's angle; the point moves forward
 // monotonically with thigh flexion over the stance range).
 double thighForContact(const SynthParams& p, double s, const Eigen::Vector3d& hip, double sinG,
-                       double thighDeg, double kneeDeg, double ankleDeg, bool ball, double targetY) {
+                       double thighDeg, double kneeDeg, double ankleDeg, bool ball,
+                       double targetY) {
   auto residual = [&](double t) {
     return heldPointY(legGeometry(p, s, hip, sinG, t, kneeDeg, ankleDeg), ball) - targetY;
   };
@@ -248,10 +263,12 @@ LegPoints legAt(const WalkerShape& w, int leg, const HarmonicBasis& basis, doubl
     thighDeg += (1.0 - t) * w.thighCorrectionDeg[i][k] + t * w.thighCorrectionDeg[i][k + 1];
   } else if (ik > 0.0) {
     const double tauMid = tau - (legPhase - kMidStance);
-    const double pelvisAdvance = w.strideMm * (legPhase - kMidStance) + w.surge(tau) - w.surge(tauMid);
+    const double pelvisAdvance =
+        w.strideMm * (legPhase - kMidStance) + w.surge(tau) - w.surge(tauMid);
     const bool ball = legPhase >= kMidStance;
     const double target = w.midStanceY[i][ball ? 1 : 0] - pelvisAdvance;
-    const double solved = thighForContact(p, s, hip, sinG, thighDeg, kneeDeg, ankleDeg, ball, target);
+    const double solved =
+        thighForContact(p, s, hip, sinG, thighDeg, kneeDeg, ankleDeg, ball, target);
     thighDeg += ik * (solved - thighDeg);
   }
   return legGeometry(p, s, hip, sinG, thighDeg, kneeDeg, ankleDeg);
@@ -273,7 +290,9 @@ void placeUpperBody(const WalkerShape& w, const HarmonicBasis& basis, Pose& pose
   pose.joints[index(Joint::Sternum)] = sternum;
   // The head is stabilised in space: it follows half the thorax's rotation and lean.
   // Its centre sits slightly behind the jugular notch (over the cervical spine).
-  const Eigen::Vector3d headOffset(0.0, -0.15 * d.neckHeadMm, std::sqrt(1.0 - 0.15 * 0.15) * d.neckHeadMm);
+  const auto& h = p.placement.headMm;
+  const Eigen::Vector3d headOffset = Eigen::Vector3d(
+      h[0], h[1] - 0.15 * d.neckHeadMm, h[2] + std::sqrt(1.0 - 0.15 * 0.15) * d.neckHeadMm);
   pose.joints[index(Joint::Head)] = sternum + rotZ(0.5 * yaw) * rotX(-0.5 * lean) * headOffset;
   const Joint shoulders[2] = {Joint::RShoulder, Joint::LShoulder};
   const Joint elbows[2] = {Joint::RElbow, Joint::LElbow};
@@ -281,14 +300,20 @@ void placeUpperBody(const WalkerShape& w, const HarmonicBasis& basis, Pose& pose
   for (int arm : {kRight, kLeft}) {
     const auto i = static_cast<size_t>(arm);
     const double s = side(arm);
+    const auto& o = p.placement.shoulderMm[i];
     const Eigen::Vector3d shoulder =
-        sternum + trunkR * Eigen::Vector3d(s * 0.5 * d.shoulderWidthMm, -d.shoulderBackMm, -d.shoulderDropMm);
+        sternum + trunkR * Eigen::Vector3d(s * (0.5 * d.shoulderWidthMm + o[0]),
+                                           o[1] - d.shoulderBackMm, o[2] - d.shoulderDropMm);
     const double abduction = std::sin(p.armAbductionDeg * kDegToRad);
     const double cosA = std::cos(p.armAbductionDeg * kDegToRad);
     const double upperDeg = w.shoulder[i](basis);
-    const Eigen::Vector3d elbow = shoulder + d.upperArmMm * (trunkR * limbDirection(upperDeg, s * abduction, cosA));
+    const Eigen::Vector3d elbow =
+        shoulder + d.upperArmMm * (trunkR * limbDirection(upperDeg, s * abduction, cosA));
     const double foreDeg = upperDeg + w.elbow[i](basis);
-    const Eigen::Vector3d wrist = elbow + d.forearmMm * (trunkR * limbDirection(foreDeg, s * abduction, cosA));
+    const double carrying = (p.armAbductionDeg + p.placement.carryingAngleDeg[i]) * kDegToRad;
+    const Eigen::Vector3d wrist =
+        elbow +
+        d.forearmMm * (trunkR * limbDirection(foreDeg, s * std::sin(carrying), std::cos(carrying)));
     pose.joints[index(shoulders[i])] = shoulder;
     pose.joints[index(elbows[i])] = elbow;
     pose.joints[index(wrists[i])] = wrist;
@@ -385,7 +410,8 @@ CycleProgression progressionOverCycle(const WalkerShape& w) {
     const auto& next = contactY[static_cast<size_t>((k + 1) % n)];
     const auto& prev = contactY[static_cast<size_t>((k + n - 1) % n)];
     double v = 0.0;
-    for (size_t c = 0; c < 4; ++c) v -= weights[static_cast<size_t>(k)][c] * (next[c] - prev[c]) * 0.5 * n;
+    for (size_t c = 0; c < 4; ++c)
+      v -= weights[static_cast<size_t>(k)][c] * (next[c] - prev[c]) * 0.5 * n;
     velocity[static_cast<size_t>(k)] = v;
   }
   std::vector<double> y(n + 1, 0.0);
@@ -489,10 +515,13 @@ SynthTrajectories simulateWalker(const SynthParams& params, const SimulationOpti
   out.strideLengthMm = stride;
   out.startPhase = rng.uniform();
   const double meanCycleS = 1.0 / params.strideHz();
-  const int frames = std::max(2, static_cast<int>(std::lround(options.cycles * meanCycleS * options.rateHz)));
-  const std::vector<double> starts = cycleStarts(params, static_cast<int>(std::ceil(options.cycles)) + 2, rng);
+  const int frames =
+      std::max(2, static_cast<int>(std::lround(options.cycles * meanCycleS * options.rateHz)));
+  const std::vector<double> starts =
+      cycleStarts(params, static_cast<int>(std::ceil(options.cycles)) + 2, rng);
   // Mean over the cycles the trial overlaps (it starts inside cycle 0).
-  const size_t covered = std::min(starts.size() - 1, static_cast<size_t>(std::ceil(options.cycles)) + 1);
+  const size_t covered =
+      std::min(starts.size() - 1, static_cast<size_t>(std::ceil(options.cycles)) + 1);
   out.strideHz = static_cast<double>(covered) / starts[covered];
   out.jointsMm.resize(frames, kDims3);
   out.toesMm.resize(frames, 6);
@@ -508,9 +537,12 @@ SynthTrajectories simulateWalker(const SynthParams& params, const SimulationOpti
     if (options.treadmill) y -= stride * out.strideHz * (f / options.rateHz);  // the belt
     const Eigen::Vector3d shift(0.0, y, pelvisHeight(w, pose, frac));
     for (int j = 0; j < kJointCount; ++j) {
-      out.jointsMm.block<1, 3>(f, 3 * j) = (pose.joints[static_cast<size_t>(j)] + shift).transpose();
+      out.jointsMm.block<1, 3>(f, 3 * j) =
+          (pose.joints[static_cast<size_t>(j)] + shift).transpose();
     }
-    for (size_t i = 0; i < 2; ++i) out.toesMm.block<1, 3>(f, 3 * static_cast<Eigen::Index>(i)) = (pose.toes[i] + shift).transpose();
+    for (size_t i = 0; i < 2; ++i)
+      out.toesMm.block<1, 3>(f, 3 * static_cast<Eigen::Index>(i)) =
+          (pose.toes[i] + shift).transpose();
   }
   if (options.treadmill) {
     // On a belt the walker stays about its mean position.

@@ -27,8 +27,8 @@ namespace ew {
 
 struct SimulationOptions {
   double rateHz = 120.0;
-  double cycles = 4.0;      // gait cycles to sample (the frame count is rounded)
-  bool treadmill = false;   // walk in place (belt speed = mean speed) instead of along +y
+  double cycles = 4.0;     // gait cycles to sample (the frame count is rounded)
+  bool treadmill = false;  // walk in place (belt speed = mean speed) instead of along +y
 };
 
 struct SynthTrajectories {

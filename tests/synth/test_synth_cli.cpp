@@ -22,8 +22,8 @@ struct CliResult {
 
 CliResult runCli(const std::string& arguments, const fs::path& dir) {
   const fs::path log = dir / "cli_output.txt";
-  const std::string command = std::string("\"") + EW_CLI_PATH + "\" " + arguments + " > \"" +
-                              log.string() + "\" 2>&1";
+  const std::string command =
+      std::string("\"") + EW_CLI_PATH + "\" " + arguments + " > \"" + log.string() + "\" 2>&1";
   const int status = std::system(command.c_str());
   CliResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -51,7 +51,8 @@ class SynthCli : public ::testing::Test {
 
 TEST_F(SynthCli, WritesCsvWalkersAndAManifestTheLoaderReads) {
   const fs::path out = dir_ / "population";
-  const CliResult r = runCli("synth --count 4 --seed 3 --cycles 2 --out \"" + out.string() + "\"", dir_);
+  const CliResult r =
+      runCli("synth --count 4 --seed 3 --cycles 2 --out \"" + out.string() + "\"", dir_);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const auto manifest = lines(out / "walkers.csv");
   ASSERT_EQ(manifest.size(), 5u);
@@ -81,7 +82,8 @@ TEST_F(SynthCli, SameSeedSameBytes) {
 
 TEST_F(SynthCli, WritesBvhTheLoaderMapsBack) {
   const fs::path out = dir_ / "bvh";
-  const CliResult r = runCli("synth --count 2 --format bvh --trials 2 --treadmill --out \"" + out.string() + "\"", dir_);
+  const CliResult r = runCli(
+      "synth --count 2 --format bvh --trials 2 --treadmill --out \"" + out.string() + "\"", dir_);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_TRUE(fs::exists(out / "SYN002_T2.bvh"));
   const Dataset d = loadDataset({out / "walkers.csv"});
@@ -112,12 +114,10 @@ TEST_F(SynthCli, BadArgumentsFailWithAMessage) {
   struct Case {
     std::string args, expected;
   };
-  for (const Case& c : {Case{"synth --count 0" + out, "--count"},
-                        Case{"synth --count many" + out, "--count"},
-                        Case{"synth --format xyz" + out, "--format"},
-                        Case{"synth --cycles 0.5" + out, "--cycles"},
-                        Case{"synth --rate -5" + out, "--rate"},
-                        Case{"synth --count 2", "--out"}}) {
+  for (const Case& c :
+       {Case{"synth --count 0" + out, "--count"}, Case{"synth --count many" + out, "--count"},
+        Case{"synth --format xyz" + out, "--format"}, Case{"synth --cycles 0.5" + out, "--cycles"},
+        Case{"synth --rate -5" + out, "--rate"}, Case{"synth --count 2", "--out"}}) {
     const CliResult r = runCli(c.args, dir_);
     EXPECT_EQ(r.exitCode, 2) << c.args << "\n" << r.output;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << "\n" << r.output;

@@ -29,7 +29,8 @@ TEST(SynthDataset, EveryTrialPreparesWithItsOwnStrideFrequencyAndSpeed) {
     EXPECT_EQ(t.info.subject, walkers[i].id);
     EXPECT_EQ(t.info.attributes.at("height_m"), formatAttribute(a.at("height_m")));
     // Stride frequency found from the foot contacts, speed from the pelvis.
-    EXPECT_NEAR(t.trial.cycles.strideHz, a.at("cadence_spm") / 120.0, 0.03 * a.at("cadence_spm") / 120.0)
+    EXPECT_NEAR(t.trial.cycles.strideHz, a.at("cadence_spm") / 120.0,
+                0.03 * a.at("cadence_spm") / 120.0)
         << t.info.file << " (" << t.trial.cycles.method << ")";
     EXPECT_NEAR(t.trial.speedMps, a.at("speed_mps"), 0.05 * a.at("speed_mps")) << t.info.file;
     EXPECT_GE(t.trial.cycles.strideHz, 0.65);

@@ -59,7 +59,8 @@ TEST(SynthRoundTrip, BvhReadsBackToTheSameJoints) {
     const JointTrial back = toJointTrial(raw);
     EXPECT_EQ(back.source, "Mixamo-style BVH");
     for (bool e : back.estimated) EXPECT_FALSE(e);
-    ASSERT_EQ(back.positionsMm.rows(), w.trial.positionsMm.rows()) << "no frame dropped as a T-pose";
+    ASSERT_EQ(back.positionsMm.rows(), w.trial.positionsMm.rows())
+        << "no frame dropped as a T-pose";
     EXPECT_NEAR(back.rateHz, w.trial.rateHz, 1e-6);
     // Exact up to the 6 decimals written (1e-6° over ~1 m chains: ~1e-5 mm per joint).
     const Eigen::MatrixXd error = fromBvhAxes(back.positionsMm) - w.trial.positionsMm;
@@ -82,9 +83,9 @@ TEST(SynthRoundTrip, BvhWithoutToesStillCarriesTheFifteenJoints) {
 TEST(SynthRoundTrip, BvhHierarchyUsesMixamoNamesAndZxyChannels) {
   const SynthWalker w = walkers(1).front();
   const std::string text = formatBvh(w.trial.positionsMm.topRows(3), w.trial.rateHz);
-  for (const char* name : {"ROOT Hips", "JOINT LeftUpLeg", "JOINT LeftLeg", "JOINT LeftFoot",
-                           "JOINT Neck", "JOINT Head", "JOINT RightArm", "JOINT RightForeArm",
-                           "JOINT RightHand"}) {
+  for (const char* name :
+       {"ROOT Hips", "JOINT LeftUpLeg", "JOINT LeftLeg", "JOINT LeftFoot", "JOINT Neck",
+        "JOINT Head", "JOINT RightArm", "JOINT RightForeArm", "JOINT RightHand"}) {
     EXPECT_NE(text.find(name), std::string::npos) << name;
   }
   EXPECT_NE(text.find("CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation"),

@@ -41,10 +41,14 @@ struct Segment {
   Joint a, b;
 };
 constexpr Segment kSegments[] = {
-    {"thigh", Joint::RHip, Joint::RKnee},          {"shank", Joint::RKnee, Joint::RAnkle},
-    {"upper arm", Joint::RShoulder, Joint::RElbow}, {"forearm", Joint::RElbow, Joint::RWrist},
-    {"hip width", Joint::RHip, Joint::LHip},        {"shoulder width", Joint::RShoulder, Joint::LShoulder},
-    {"pelvis-sternum", Joint::Pelvis, Joint::Sternum}, {"sternum-head", Joint::Sternum, Joint::Head},
+    {"thigh", Joint::RHip, Joint::RKnee},
+    {"shank", Joint::RKnee, Joint::RAnkle},
+    {"upper arm", Joint::RShoulder, Joint::RElbow},
+    {"forearm", Joint::RElbow, Joint::RWrist},
+    {"hip width", Joint::RHip, Joint::LHip},
+    {"shoulder width", Joint::RShoulder, Joint::LShoulder},
+    {"pelvis-sternum", Joint::Pelvis, Joint::Sternum},
+    {"sternum-head", Joint::Sternum, Joint::Head},
 };
 constexpr double kAngles[] = {0.0, 45.0, 90.0};
 constexpr double kSigma2Mm2 = 70.0;  // SPEC §6 default (the paper's optimum)
@@ -54,9 +58,9 @@ struct PopulationStats {
   MeanSd h1, h2, residual, strideHz, speed;
   std::vector<MeanSd> segments;
   int components95 = 0;
-  double firstThree = 0.0;  // variance share of the first 3 eigenwalkers
-  double totalVarianceMm2 = 0.0;  // Σλ: spread of the walkers in gait space
-  double meanPostureShare = 0.0;  // … of it in the p0 block (the mean posture)
+  double firstThree = 0.0;                        // variance share of the first 3 eigenwalkers
+  double totalVarianceMm2 = 0.0;                  // Σλ: spread of the walkers in gait space
+  double meanPostureShare = 0.0;                  // … of it in the p0 block (the mean posture)
   std::vector<MeanSd> looLsq, looMap, looMapRel;  // E_a (mm²) per angle; E_r for MAP
 };
 
@@ -93,7 +97,8 @@ void describeModel(const std::vector<Walker>& walkers, PopulationStats& s) {
   const EigenwalkerModel model = buildModel(walkers);
   s.components95 = model.componentCount();
   const double total = model.spectrum.sum();
-  s.firstThree = model.spectrum.head(std::min<Eigen::Index>(3, model.spectrum.size())).sum() / total;
+  s.firstThree =
+      model.spectrum.head(std::min<Eigen::Index>(3, model.spectrum.size())).sum() / total;
   s.totalVarianceMm2 = total;
   const Eigen::MatrixXd w = walkerMatrix(walkers);
   const Eigen::MatrixXd centred = w.colwise() - w.rowwise().mean();
@@ -152,7 +157,8 @@ void printRow(const std::string& name, const std::vector<std::string>& cells) {
 
 void printTable(const std::vector<std::pair<std::string, PopulationStats>>& pops) {
   std::string header = "| quantity";
-  for (const auto& [name, s] : pops) header += " | " + name + " (R = " + std::to_string(s.walkers) + ")";
+  for (const auto& [name, s] : pops)
+    header += " | " + name + " (R = " + std::to_string(s.walkers) + ")";
   std::printf("\n%s |\n|---", header.c_str());
   for (size_t k = 0; k < pops.size(); ++k) std::printf("|---");
   std::printf("|\n");
@@ -164,13 +170,15 @@ void printTable(const std::vector<std::pair<std::string, PopulationStats>>& pops
   row("1st harmonic share", [](const PopulationStats& s) { return cell(s.h1, "%.3f ± %.3f"); });
   row("2nd harmonic share", [](const PopulationStats& s) { return cell(s.h2, "%.3f ± %.3f"); });
   row("residual share", [](const PopulationStats& s) { return cell(s.residual, "%.4f ± %.4f"); });
-  row("stride frequency (Hz)", [](const PopulationStats& s) { return cell(s.strideHz, "%.3f ± %.3f"); });
+  row("stride frequency (Hz)",
+      [](const PopulationStats& s) { return cell(s.strideHz, "%.3f ± %.3f"); });
   row("speed (m/s)", [](const PopulationStats& s) { return cell(s.speed, "%.2f ± %.2f"); });
   for (size_t k = 0; k < std::size(kSegments); ++k) {
     row(std::string(kSegments[k].name) + " (mm)",
         [k](const PopulationStats& s) { return cell(s.segments[k], "%.0f ± %.0f"); });
   }
-  row("components for 95 %", [](const PopulationStats& s) { return std::to_string(s.components95); });
+  row("components for 95 %",
+      [](const PopulationStats& s) { return std::to_string(s.components95); });
   row("variance in first 3", [](const PopulationStats& s) {
     char b[32];
     std::snprintf(b, sizeof b, "%.3f", s.firstThree);
@@ -188,9 +196,12 @@ void printTable(const std::vector<std::pair<std::string, PopulationStats>>& pops
   });
   for (size_t a = 0; a < std::size(kAngles); ++a) {
     const std::string angle = std::to_string(static_cast<int>(kAngles[a])) + "°";
-    row("LOO E_a LSQ " + angle + " (mm²)", [a](const PopulationStats& s) { return cell(s.looLsq[a], "%.0f ± %.0f"); });
-    row("LOO E_a MAP " + angle + " (mm²)", [a](const PopulationStats& s) { return cell(s.looMap[a], "%.0f ± %.0f"); });
-    row("LOO E_r MAP " + angle, [a](const PopulationStats& s) { return cell(s.looMapRel[a], "%.3f ± %.3f"); });
+    row("LOO E_a LSQ " + angle + " (mm²)",
+        [a](const PopulationStats& s) { return cell(s.looLsq[a], "%.0f ± %.0f"); });
+    row("LOO E_a MAP " + angle + " (mm²)",
+        [a](const PopulationStats& s) { return cell(s.looMap[a], "%.0f ± %.0f"); });
+    row("LOO E_r MAP " + angle,
+        [a](const PopulationStats& s) { return cell(s.looMapRel[a], "%.3f ± %.3f"); });
   }
   std::printf("\n");
 }
