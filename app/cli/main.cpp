@@ -12,6 +12,9 @@ int main(int argc, char** argv) {
   ew::cli::addInfoCommand(app, exitCode);
   ew::cli::addJointsCommand(app, exitCode);
   ew::cli::addSynthCommand(app, exitCode);
+  ew::cli::addBuildCommand(app, exitCode);
+  ew::cli::addEvaluateCommand(app, exitCode);
+  ew::cli::addReconstructCommand(app, exitCode);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

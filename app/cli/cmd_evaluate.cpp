@@ -1,0 +1,192 @@
+// `eigenwalker-cli evaluate --data PATH… --out DIR [--experiment …] …`: the Zhang & Troje
+// (2007) evaluation, leave-one-subject-out (SPEC §7–8), as CSVs, PNG plots and summary.json.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "app/cli/commands.h"
+#include "core/common/errors.h"
+#include "core/engine/walker_set.h"
+#include "core/experiments/experiments.h"
+#include "core/experiments/results_folder.h"
+#include "core/gait/dataset.h"
+
+namespace ew::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct EvaluateArgs {
+  std::vector<std::string> data;
+  std::string out;
+  std::vector<std::string> experiments{"all"};
+  std::string angles = "-90:90:1";
+  std::string method = "both";
+  double sigma2Mm2 = 0.0;  // 0 = the sweep's optimum
+  int components = 0;      // 0 = 95 % of the variance
+  int threads = 0;         // 0 = hardware concurrency
+  bool noPlots = false;
+};
+
+// Progress on stderr: a bar with ETA on a terminal, a few plain lines otherwise.
+class ProgressPrinter {
+ public:
+  ProgressPrinter() : tty_(::isatty(STDERR_FILENO) == 1) {}
+  void operator()(int done, int total, const std::string& what) {
+    using Clock = std::chrono::steady_clock;
+    if (done == 0) start_ = Clock::now();
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (tty_) {
+      const int width = 30, filled = total > 0 ? width * done / total : width;
+      std::cerr << "\r" << std::left << std::setw(15) << what << " [" << std::string(static_cast<size_t>(filled), '#')
+                << std::string(static_cast<size_t>(width - filled), '.') << "] " << done << "/" << total;
+      if (done > 0 && done < total) std::cerr << "  ETA " << std::fixed << std::setprecision(1) << elapsed * (total - done) / done << " s   ";
+      else std::cerr << "  " << std::fixed << std::setprecision(2) << elapsed << " s        ";
+      if (done == total) std::cerr << "\n";
+      std::cerr.flush();
+      return;
+    }
+    // Plain: start, each quarter, end.
+    if (done == 0 || done == total || (total >= 4 && done % (total / 4) == 0)) {
+      std::cerr << what << ": " << done << "/" << total << (done == total ? " done" : "") << " ("
+                << std::fixed << std::setprecision(2) << elapsed << " s)\n";
+    }
+  }
+
+ private:
+  bool tty_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+std::string commandLine() {
+  std::ifstream in("/proc/self/cmdline", std::ios::binary);
+  std::string all, arg;
+  while (std::getline(in, arg, '\0')) {
+    const bool quote = arg.find_first_of(" \t'\"") != std::string::npos || arg.empty();
+    all += (all.empty() ? "" : " ") + (quote ? "'" + arg + "'" : arg);
+  }
+  return all.empty() ? "eigenwalker-cli evaluate" : all;
+}
+
+std::set<Experiment> chosenExperiments(const std::vector<std::string>& names) {
+  std::set<Experiment> out;
+  for (const auto& n : names) {
+    if (n == "all") {
+      for (Experiment e : allExperiments()) out.insert(e);
+    } else if (auto e = experimentFromName(n)) {
+      out.insert(*e);
+    } else {
+      throw Error(ErrorKind::BadArgument, "--experiment", "", "unknown experiment '" + n + "'");
+    }
+  }
+  return out;
+}
+
+EvaluationOptions evaluationOptions(const EvaluateArgs& a, ProgressPrinter& printer) {
+  EvaluationOptions o;
+  o.anglesDeg = parseAngleSpec(a.angles);
+  o.lsq = a.method != "map";
+  o.map = a.method != "lsq";
+  if (a.sigma2Mm2 > 0) o.sigma2Mm2 = a.sigma2Mm2;
+  if (a.components > 0) o.model.components = a.components;
+  o.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  o.progress = [&printer](int done, int total, const std::string& what) { printer(done, total, what); };
+  return o;
+}
+
+void printHeadline(const EvaluationResults& r, const fs::path& out) {
+  std::cerr << std::fixed << std::setprecision(1) << r.walkers << " walkers, " << r.subjects << " subjects, N = "
+            << r.components << " components (95 %: " << r.components95 << ")";
+  if (r.sigma2OptMm2) std::cerr << ", sigma2 optimum " << *r.sigma2OptMm2 << " mm2";
+  std::cerr << "\n";
+  for (const auto& [name, s] : r.timingsS) std::cerr << "  " << name << ": " << std::setprecision(2) << s << " s\n";
+  for (const auto& w : r.warnings) std::cerr << "warning: " << w << "\n";
+  std::cerr << "wrote " << out.string() << "\n";
+}
+
+int runEvaluate(const EvaluateArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const fs::path out = fs::path(a.out).lexically_normal();
+  if (out.filename().empty() || out.filename() == "." || out.filename() == "..") {
+    throw Error(ErrorKind::BadArgument, "--out", "", "must name a folder, got '" + a.out + "'");
+  }
+  std::error_code ec;
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
+    throw Error(ErrorKind::BadArgument, out.string(), "", "exists and is not a folder");
+  }
+  const std::set<Experiment> experiments = chosenExperiments(a.experiments);
+  ProgressPrinter printer;
+  const EvaluationOptions options = evaluationOptions(a, printer);
+
+  const std::vector<fs::path> paths(a.data.begin(), a.data.end());
+  const Dataset dataset = loadDataset(paths, {}, [&printer](int done, int total, const std::string&) {
+    printer(done, total, "load");
+  });
+  std::vector<std::string> warnings = dataset.warnings;
+  const std::vector<Walker> walkers = makeWalkers(dataset, &warnings);
+  for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
+  if (walkers.empty()) throwBadData(a.data.front(), "", "no usable walker in the data");
+  const double loadS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  EvaluationResults results = runEvaluation(experimentWalkers(walkers, dataset), experiments, options);
+  results.timingsS.insert(results.timingsS.begin(), {"load", loadS});
+  EvaluationProvenance provenance{commandLine(), {}};
+  for (const auto& t : dataset.trials) provenance.dataFiles.push_back(t.info.file);
+  ResultsFolderOptions folder;
+  folder.plots = !a.noPlots;
+  writeResultsFolder(out, results, provenance, folder);
+  printHeadline(results, out);
+  std::cerr << "total " << std::setprecision(2)
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+  return 0;
+}
+
+}  // namespace
+
+void addEvaluateCommand(CLI::App& app, int& exitCode) {
+  auto args = std::make_shared<EvaluateArgs>();
+  auto* cmd = app.add_subcommand(
+      "evaluate",
+      "Leave-one-subject-out evaluation (Zhang & Troje 2007; SPEC §7-8). Writes into DIR:\n"
+      "  harmonics.csv      walker,subject,source,stride_hz,h1_share,h2_share,residual_share\n"
+      "  variance.csv       component,eigenvalue_mm2,variance_share,cumulative_share\n"
+      "  sigma_sweep.csv    sigma2_mm2,method,mean_abs_error_mm2,mean_rel_error,mpjpe_mm\n"
+      "  known_view.csv     subject,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm\n"
+      "  unknown_view.csv   subject,true_angle_deg,method,est_angle_deg,angle_error_deg,abs_error_mm2,mpjpe_mm\n"
+      "  noise.csv          subject,noise_mm,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm\n"
+      "  missing_joints.csv subject,missing,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm\n"
+      "  summary.json, fig*.png. DIR is written to a temporary sibling and renamed into place.");
+  cmd->add_option("--data", args->data, "Trial files, folders (recursive) or manifest CSVs")->required();
+  cmd->add_option("--out", args->out, "Output folder (replaced only after success)")->required();
+  cmd->add_option("--experiment", args->experiments,
+                  "variance, sigma-sweep, known-view, unknown-view, noise, missing-joints or all "
+                  "(repeat or comma-separate)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "all"}))
+      ->capture_default_str();
+  cmd->add_option("--angles", args->angles, "View angles in degrees: FROM:TO:STEP or a list a,b,c")->capture_default_str();
+  cmd->add_option("--method", args->method, "lsq, map or both")
+      ->check(CLI::IsMember({"lsq", "map", "both"}))->capture_default_str();
+  cmd->add_option("--sigma2", args->sigma2Mm2, "MAP noise variance in mm^2 (default: the sigma-sweep optimum)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--components", args->components, "Eigenwalkers per model (default: 95 % of the variance)")
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  cmd->add_flag("--no-plots", args->noPlots, "Skip the PNG figures");
+  cmd->callback([args, &exitCode] {
+    try {
+      exitCode = runEvaluate(*args);
+    } catch (const std::filesystem::filesystem_error& e) {
+      throw Error(ErrorKind::Io, e.path1().string(), "", e.code().message());
+    }
+  });
+}
+
+}  // namespace ew::cli

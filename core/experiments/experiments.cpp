@@ -1,0 +1,512 @@
+#include "core/experiments/experiments.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <mutex>
+#include <numbers>
+#include <random>
+
+#include "core/common/errors.h"
+#include "core/common/skeleton.h"
+#include "core/engine/metrics.h"
+#include "core/engine/projection.h"
+
+namespace ew {
+namespace {
+
+// [SECTION] Helpers
+
+struct Method {
+  std::string name;
+  EstimatorOptions estimator;
+};
+
+std::vector<Method> methods(const EvaluationOptions& o, double sigma2Mm2) {
+  std::vector<Method> out;
+  if (o.lsq) out.push_back({"lsq", {Estimator::Lsq, sigma2Mm2}});
+  if (o.map) out.push_back({"map", {Estimator::Map, sigma2Mm2}});
+  return out;
+}
+
+std::vector<double> anglesOf(const EvaluationOptions& o) {
+  if (!o.anglesDeg.empty()) return o.anglesDeg;
+  std::vector<double> a;
+  for (int d = -90; d <= 90; ++d) a.push_back(d);
+  return a;
+}
+
+// Calls the user's progress function after each fold, one caller at a time.
+class FoldProgress {
+ public:
+  FoldProgress(const EvaluationOptions& o, int total, std::string what)
+      : fn_(o.progress), total_(total), what_(std::move(what)) {
+    if (fn_) fn_(0, total_, what_);
+  }
+  void foldDone() {
+    if (!fn_) return;
+    std::lock_guard lock(mutex_);
+    fn_(++done_, total_, what_);
+  }
+
+ private:
+  const ExperimentProgressFn& fn_;
+  std::mutex mutex_;
+  int done_ = 0, total_;
+  std::string what_;
+};
+
+template <class Row>
+std::vector<Row> concat(std::vector<std::vector<Row>>&& parts) {
+  std::vector<Row> out;
+  for (auto& p : parts) out.insert(out.end(), std::make_move_iterator(p.begin()), std::make_move_iterator(p.end()));
+  return out;
+}
+
+ViewErrorRow scoreView(const std::string& subject, const std::string& condition, double alphaDeg,
+                       const std::string& method, const Eigen::VectorXd& wTrue,
+                       const Eigen::VectorXd& wRec) {
+  const DepthErrors e = depthErrors(wTrue, wRec, alphaDeg);
+  return {subject, condition, alphaDeg, method, e.absMean, e.relMean, e.sigmaM2Mm2, mpjpe(wTrue, wRec)};
+}
+
+std::string formatLevel(double mm) {
+  std::string s = std::to_string(mm);
+  s.erase(s.find_last_not_of('0') + 1);
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
+
+// Independent, schedule-free noise streams: one seed per (walker, angle, level) cell.
+std::uint64_t cellSeed(std::uint64_t seed, size_t walker, size_t angle, size_t level) {
+  std::uint64_t z = seed ^ (walker * 0x9E3779B97F4A7C15ull) ^ (angle * 0xBF58476D1CE4E5B9ull) ^
+                    (level * 0x94D049BB133111EBull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
+// Rows of ŵ (150: block, joint, u/v) that belong to hidden joints become NaN, so a test
+// would notice if the reconstruction read them.
+void hideJoints(Eigen::VectorXd& observed, const std::vector<int>& joints) {
+  for (int b = 0; b < kFourierBlocks; ++b) {
+    for (int j : joints) observed.segment(b * kDims2 + 2 * j, 2).setConstant(std::numeric_limits<double>::quiet_NaN());
+  }
+}
+
+// The extensions (noise, missing joints) multiply the conditions: on a fine angle grid they
+// use its multiples of 10° (−90…90 → 19 angles), which shows the same angle dependence.
+std::vector<double> extensionAngles(const EvaluationOptions& o) {
+  const auto all = anglesOf(o);
+  if (all.size() <= 19) return all;
+  std::vector<double> coarse;
+  for (double a : all) {
+    if (std::abs(std::remainder(a, 10.0)) < 1e-9) coarse.push_back(a);
+  }
+  return coarse.empty() ? all : coarse;
+}
+
+}  // namespace
+
+// [SECTION] Names and defaults
+
+std::string experimentName(Experiment e) {
+  switch (e) {
+    case Experiment::Variance: return "variance";
+    case Experiment::SigmaSweep: return "sigma-sweep";
+    case Experiment::KnownView: return "known-view";
+    case Experiment::UnknownView: return "unknown-view";
+    case Experiment::Noise: return "noise";
+    case Experiment::MissingJoints: return "missing-joints";
+  }
+  return "";
+}
+
+const std::vector<Experiment>& allExperiments() {
+  static const std::vector<Experiment> kAll = {
+      Experiment::Variance,    Experiment::SigmaSweep, Experiment::KnownView,
+      Experiment::UnknownView, Experiment::Noise,      Experiment::MissingJoints};
+  return kAll;
+}
+
+std::optional<Experiment> experimentFromName(const std::string& name) {
+  for (Experiment e : allExperiments()) {
+    if (experimentName(e) == name) return e;
+  }
+  return std::nullopt;
+}
+
+std::vector<double> defaultSigma2GridMm2() {
+  return {1, 2, 5, 10, 20, 50, 70, 100, 200, 350, 500, 700, 1000, 1500, 2000, 3000, 5000};
+}
+
+std::vector<JointSet> defaultMissingJointSets() {
+  std::vector<JointSet> sets;
+  for (int j = 0; j < kJointCount; ++j) sets.push_back({std::string(kJointNames[static_cast<size_t>(j)]), {j}});
+  const auto i = [](Joint j) { return index(j); };
+  sets.push_back({"both_wrists", {i(Joint::RWrist), i(Joint::LWrist)}});
+  sets.push_back({"both_arms", {i(Joint::RElbow), i(Joint::RWrist), i(Joint::LElbow), i(Joint::LWrist)}});
+  sets.push_back({"both_ankles", {i(Joint::RAnkle), i(Joint::LAnkle)}});
+  sets.push_back({"both_lower_legs", {i(Joint::RKnee), i(Joint::RAnkle), i(Joint::LKnee), i(Joint::LAnkle)}});
+  return sets;
+}
+
+// [SECTION] Experiment 1: harmonics and eigenwalker variance
+
+std::vector<HarmonicsRow> harmonicsTable(const std::vector<ExperimentWalker>& walkers) {
+  std::vector<HarmonicsRow> rows;
+  for (const auto& w : walkers) {
+    rows.push_back({w.id, w.subject, w.source, w.fit.omegaRadS / (2.0 * std::numbers::pi),
+                    w.fit.h1Share, w.fit.h2Share, w.fit.residualShare});
+  }
+  return rows;
+}
+
+std::vector<VarianceRow> varianceTable(const EigenwalkerModel& model) {
+  std::vector<VarianceRow> rows;
+  const double total = model.spectrum.sum();
+  double cumulative = 0.0;
+  for (Eigen::Index n = 0; n < model.spectrum.size(); ++n) {
+    const double share = total > 0 ? model.spectrum(n) / total : 0.0;
+    cumulative += share;
+    rows.push_back({static_cast<int>(n) + 1, model.spectrum(n), share, cumulative});
+  }
+  return rows;
+}
+
+int componentsForShare(const std::vector<VarianceRow>& variance, double share) {
+  for (const auto& r : variance) {
+    if (r.cumulativeShare >= share - 1e-12) return r.component;
+  }
+  return variance.empty() ? 0 : variance.back().component;
+}
+
+// [SECTION] Experiment 2: σ² sweep (paper fig. 3)
+
+// The sweep samples MPJPE at 24 phases per cycle (it scores 17 σ² per cell; the other
+// experiments use 120): the ranking of σ² rests on E_a, MPJPE is only reported.
+constexpr int kSweepMpjpeSamples = 24;
+
+std::vector<SigmaSweepRow> sigmaSweep(const std::vector<ExperimentWalker>& walkers,
+                                      const std::vector<Fold>& folds,
+                                      const EvaluationOptions& options) {
+  const auto angles = anglesOf(options);
+  const auto& grid = options.sigma2GridMm2;
+  const size_t cols = grid.size() + 1;  // last column: LSQ
+  // Per fold: sums of E_a, E_r, MPJPE per σ² (and LSQ), and the number of cells.
+  std::vector<Eigen::MatrixXd> sums(folds.size(), Eigen::MatrixXd::Zero(3, static_cast<Eigen::Index>(cols)));
+  std::vector<int> cells(folds.size(), 0);
+  FoldProgress progress(options, static_cast<int>(folds.size()), "sigma-sweep");
+  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
+    const Fold& fold = folds[static_cast<size_t>(f)];
+    Eigen::MatrixXd& s = sums[static_cast<size_t>(f)];
+    for (int r : fold.testWalkers) {
+      const Eigen::VectorXd& wTrue = walkers[static_cast<size_t>(r)].fit.w;
+      for (double a : angles) {
+        const Eigen::VectorXd obs = projectToView(wTrue, a);
+        for (size_t g = 0; g < cols; ++g) {
+          const Eigen::VectorXd wRec = g < grid.size() ? reconstructMap(fold.gram, obs, a, grid[g]).w
+                                                       : reconstructLsq(fold.gram, obs, a).w;
+          const DepthErrors e = depthErrors(wTrue, wRec, a);
+          const auto c = static_cast<Eigen::Index>(g);
+          s(0, c) += e.absMean;
+          s(1, c) += e.relMean;
+          s(2, c) += mpjpe(wTrue, wRec, kSweepMpjpeSamples);
+        }
+        ++cells[static_cast<size_t>(f)];
+      }
+    }
+    progress.foldDone();
+  });
+  Eigen::MatrixXd total = Eigen::MatrixXd::Zero(3, static_cast<Eigen::Index>(cols));
+  int count = 0;
+  for (size_t f = 0; f < folds.size(); ++f) {
+    total += sums[f];
+    count += cells[f];
+  }
+  total /= std::max(count, 1);
+  std::vector<SigmaSweepRow> rows;
+  for (size_t g = 0; g < grid.size(); ++g) {
+    const auto c = static_cast<Eigen::Index>(g);
+    const auto lsq = static_cast<Eigen::Index>(grid.size());
+    rows.push_back({grid[g], "map", total(0, c), total(1, c), total(2, c)});
+    if (options.lsq) rows.push_back({grid[g], "lsq", total(0, lsq), total(1, lsq), total(2, lsq)});
+  }
+  return rows;
+}
+
+// [SECTION] Experiment 3: known view (paper fig. 5)
+
+std::vector<ViewErrorRow> knownViewErrors(const std::vector<ExperimentWalker>& walkers,
+                                          const std::vector<Fold>& folds,
+                                          const EvaluationOptions& options, double sigma2Mm2) {
+  const auto angles = anglesOf(options);
+  const auto ms = methods(options, sigma2Mm2);
+  std::vector<std::vector<ViewErrorRow>> parts(folds.size());
+  FoldProgress progress(options, static_cast<int>(folds.size()), "known-view");
+  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
+    const Fold& fold = folds[static_cast<size_t>(f)];
+    for (int r : fold.testWalkers) {
+      const Eigen::VectorXd& wTrue = walkers[static_cast<size_t>(r)].fit.w;
+      for (double a : angles) {
+        const Eigen::VectorXd obs = projectToView(wTrue, a);
+        for (const Method& m : ms) {
+          const Reconstruction rec = reconstructKnownView(fold.gram, obs, a, m.estimator);
+          parts[static_cast<size_t>(f)].push_back(scoreView(fold.subject, "", a, m.name, wTrue, rec.w));
+        }
+      }
+    }
+    progress.foldDone();
+  });
+  return concat(std::move(parts));
+}
+
+// [SECTION] Experiment 4: unknown view (paper fig. 6)
+
+std::vector<UnknownViewRow> unknownViewErrors(const std::vector<ExperimentWalker>& walkers,
+                                              const std::vector<Fold>& folds,
+                                              const EvaluationOptions& options, double sigma2Mm2) {
+  const auto angles = anglesOf(options);
+  const auto ms = methods(options, sigma2Mm2);
+  std::vector<std::vector<UnknownViewRow>> parts(folds.size());
+  FoldProgress progress(options, static_cast<int>(folds.size()), "unknown-view");
+  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
+    const Fold& fold = folds[static_cast<size_t>(f)];
+    for (int r : fold.testWalkers) {
+      const Eigen::VectorXd& wTrue = walkers[static_cast<size_t>(r)].fit.w;
+      for (double a : angles) {
+        const Eigen::VectorXd obs = projectToView(wTrue, a);
+        for (const Method& m : ms) {
+          const ViewSearch s = searchViewAngle(fold.gram, obs, m.estimator);
+          const double est = s.best.alphaDeg;
+          // Depth at the true view: the reconstruction is a walker in its own frame.
+          parts[static_cast<size_t>(f)].push_back(
+              {fold.subject, a, m.name, est, viewAngleErrorDeg(est, a),
+               depthErrors(wTrue, s.best.w, a).absMean, mpjpe(wTrue, s.best.w)});
+        }
+      }
+    }
+    progress.foldDone();
+  });
+  return concat(std::move(parts));
+}
+
+// [SECTION] Beyond the paper: 2D noise before the Fourier fit, missing joints
+
+std::vector<ViewErrorRow> noiseErrors(const std::vector<ExperimentWalker>& walkers,
+                                      const std::vector<Fold>& folds,
+                                      const EvaluationOptions& options, double sigma2Mm2,
+                                      std::vector<std::string>& warnings) {
+  const auto angles = extensionAngles(options);
+  const auto ms = methods(options, sigma2Mm2);
+  std::vector<std::vector<ViewErrorRow>> parts(folds.size());
+  std::vector<std::vector<std::string>> notes(folds.size());
+  FoldProgress progress(options, static_cast<int>(folds.size()), "noise");
+  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
+    const Fold& fold = folds[static_cast<size_t>(f)];
+    for (int r : fold.testWalkers) {
+      const ExperimentWalker& w = walkers[static_cast<size_t>(r)];
+      if (w.framesMm.rows() == 0) {
+        notes[static_cast<size_t>(f)].push_back("noise: walker " + w.id + " has no frames; skipped");
+        continue;
+      }
+      FourierFitOptions fitOptions;
+      fitOptions.omegaFixedRadS = w.fit.omegaRadS;
+      fitOptions.file = w.id;
+      // The reference: the same frames' 3D fit at the same ω (φ from the same ankle signal).
+      const FourierFit truth = fitFourier(w.framesMm, w.rateHz, fitOptions);
+      for (size_t ai = 0; ai < angles.size(); ++ai) {
+        const double a = angles[ai];
+        const Eigen::MatrixXd clean = projectFramesToView(w.framesMm, a);
+        for (size_t li = 0; li < options.noiseLevelsMm.size(); ++li) {
+          const double level = options.noiseLevelsMm[li];
+          std::mt19937_64 rng(cellSeed(options.noiseSeed, static_cast<size_t>(r), ai, li));
+          std::normal_distribution<double> noise(0.0, level);
+          Eigen::MatrixXd noisy = clean;
+          if (level > 0) {
+            for (Eigen::Index i = 0; i < noisy.size(); ++i) noisy.data()[i] += noise(rng);
+          }
+          FourierFit fit2d;
+          try {
+            fit2d = fitFourier(noisy, w.rateHz, fitOptions);
+          } catch (const Error& e) {
+            notes[static_cast<size_t>(f)].push_back("noise: " + w.id + " at " + formatLevel(a) +
+                                                    "°, " + formatLevel(level) + " mm: " + e.what());
+            continue;
+          }
+          for (const Method& m : ms) {
+            const Reconstruction rec = reconstructKnownView(fold.gram, fit2d.w, a, m.estimator);
+            const Eigen::VectorXd wRec = rephase(rec.w, fit2d.phaseRad, truth.phaseRad);
+            parts[static_cast<size_t>(f)].push_back(
+                scoreView(fold.subject, formatLevel(level), a, m.name, truth.w, wRec));
+          }
+        }
+      }
+    }
+    progress.foldDone();
+  });
+  for (auto& n : notes) warnings.insert(warnings.end(), n.begin(), n.end());
+  return concat(std::move(parts));
+}
+
+std::vector<ViewErrorRow> missingJointErrors(const std::vector<ExperimentWalker>& walkers,
+                                             const std::vector<Fold>& folds,
+                                             const EvaluationOptions& options, double sigma2Mm2) {
+  const auto angles = extensionAngles(options);
+  const auto ms = methods(options, sigma2Mm2);
+  std::vector<std::vector<ViewErrorRow>> parts(folds.size());
+  FoldProgress progress(options, static_cast<int>(folds.size()), "missing-joints");
+  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
+    const Fold& fold = folds[static_cast<size_t>(f)];
+    for (const JointSet& set : options.missingJointSets) {
+      const ModelGram gram = precomputeModelGram(fold.model, set.joints);
+      for (int r : fold.testWalkers) {
+        const Eigen::VectorXd& wTrue = walkers[static_cast<size_t>(r)].fit.w;
+        for (double a : angles) {
+          Eigen::VectorXd obs = projectToView(wTrue, a);
+          hideJoints(obs, set.joints);
+          for (const Method& m : ms) {
+            const Reconstruction rec = reconstructKnownView(gram, obs, a, m.estimator);
+            parts[static_cast<size_t>(f)].push_back(scoreView(fold.subject, set.name, a, m.name, wTrue, rec.w));
+          }
+        }
+      }
+    }
+    progress.foldDone();
+  });
+  return concat(std::move(parts));
+}
+
+// [SECTION] The whole evaluation
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+bool needsFolds(const std::set<Experiment>& e) {
+  return e.size() > (e.count(Experiment::Variance) ? 1u : 0u);
+}
+
+// σ² for MAP: the user's, else the sweep's optimum (the sweep then runs and is reported).
+void chooseSigma2(const std::vector<ExperimentWalker>& walkers, const std::vector<Fold>& folds,
+                  const std::set<Experiment>& experiments, const EvaluationOptions& options,
+                  EvaluationResults& res) {
+  const bool mapUsed = options.map && needsFolds(experiments);
+  const bool sweep = experiments.count(Experiment::SigmaSweep) || (mapUsed && !options.sigma2Mm2);
+  res.sigma2UsedMm2 = options.sigma2Mm2.value_or(70.0);
+  if (!sweep) return;
+  const auto start = std::chrono::steady_clock::now();
+  EvaluationOptions o = options;
+  o.map = true;
+  res.sigmaSweep = sigmaSweep(walkers, folds, o);
+  res.timingsS.emplace_back("sigma-sweep", secondsSince(start));
+  res.ran.insert(Experiment::SigmaSweep);
+  const SigmaSweepRow* best = nullptr;
+  for (const auto& r : res.sigmaSweep) {
+    if (r.method == "map" && (!best || r.meanAbsErrorMm2 < best->meanAbsErrorMm2)) best = &r;
+  }
+  if (!best) return;
+  res.sigma2OptMm2 = best->sigma2Mm2;
+  const auto& grid = options.sigma2GridMm2;
+  res.sigma2OptAtGridEdge = grid.size() > 1 && (best->sigma2Mm2 == grid.front() || best->sigma2Mm2 == grid.back());
+  if (res.sigma2OptAtGridEdge) {
+    res.warnings.push_back("the sigma2 optimum " + formatLevel(best->sigma2Mm2) +
+                           " mm2 sits at the edge of the grid: the true optimum may lie outside it");
+  }
+  if (!options.sigma2Mm2) res.sigma2UsedMm2 = best->sigma2Mm2;
+}
+
+}  // namespace
+
+EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
+                                const std::set<Experiment>& experiments,
+                                const EvaluationOptions& options) {
+  if (!options.lsq && !options.map) throw Error(ErrorKind::BadArgument, "--method", "", "no method chosen");
+  EvaluationResults res;
+  res.walkers = static_cast<int>(walkers.size());
+  res.subjects = static_cast<int>(walkerSubjects(walkers).size());
+  auto start = std::chrono::steady_clock::now();
+  const EigenwalkerModel full = buildFullModel(walkers, options.model);
+  res.components = full.componentCount();
+  res.variance = varianceTable(full);
+  res.components95 = componentsForShare(res.variance, 0.95);
+  res.harmonics = harmonicsTable(walkers);
+  if (experiments.count(Experiment::Variance)) {
+    res.ran.insert(Experiment::Variance);
+    res.timingsS.emplace_back("variance", secondsSince(start));
+  }
+  if (!needsFolds(experiments)) return res;
+
+  start = std::chrono::steady_clock::now();
+  const std::vector<Fold> folds = buildFolds(walkers, options.model, options.threads);
+  res.timingsS.emplace_back("folds", secondsSince(start));
+  chooseSigma2(walkers, folds, experiments, options, res);
+
+  const auto timed = [&](Experiment e, const auto& run) {
+    if (!experiments.count(e)) return;
+    const auto t0 = std::chrono::steady_clock::now();
+    run();
+    res.timingsS.emplace_back(experimentName(e), secondsSince(t0));
+    res.ran.insert(e);
+  };
+  const double s2 = res.sigma2UsedMm2;
+  timed(Experiment::KnownView, [&] { res.knownView = knownViewErrors(walkers, folds, options, s2); });
+  timed(Experiment::UnknownView, [&] { res.unknownView = unknownViewErrors(walkers, folds, options, s2); });
+  timed(Experiment::Noise, [&] { res.noise = noiseErrors(walkers, folds, options, s2, res.warnings); });
+  timed(Experiment::MissingJoints, [&] { res.missingJoints = missingJointErrors(walkers, folds, options, s2); });
+  return res;
+}
+
+// [SECTION] Angle lists
+
+namespace {
+
+double parseNumber(const std::string& text, const std::string& spec) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v)) {
+    throw Error(ErrorKind::BadArgument, "--angles", "", "'" + spec + "': '" + text + "' is not a number");
+  }
+  return v;
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> parts;
+  size_t begin = 0;
+  for (size_t i = 0; i <= s.size(); ++i) {
+    if (i == s.size() || s[i] == sep) {
+      parts.push_back(s.substr(begin, i - begin));
+      begin = i + 1;
+    }
+  }
+  return parts;
+}
+
+}  // namespace
+
+std::vector<double> parseAngleSpec(const std::string& spec) {
+  const auto bad = [&](const std::string& why) {
+    throw Error(ErrorKind::BadArgument, "--angles", "", "'" + spec + "': " + why);
+  };
+  std::vector<double> angles;
+  if (spec.find(':') != std::string::npos) {
+    const auto p = split(spec, ':');
+    if (p.size() != 3) bad("expected FROM:TO:STEP, e.g. -90:90:1");
+    const double from = parseNumber(p[0], spec), to = parseNumber(p[1], spec), step = parseNumber(p[2], spec);
+    if (step <= 0) bad("the step must be positive");
+    if (to < from) bad("TO must not be below FROM");
+    const double n = std::floor((to - from) / step + 1e-9) + 1;
+    if (n > 10000) bad("more than 10000 angles");
+    for (int i = 0; i < static_cast<int>(n); ++i) angles.push_back(from + i * step);
+  } else {
+    for (const auto& t : split(spec, ',')) angles.push_back(parseNumber(t, spec));
+    if (angles.size() > 10000) bad("more than 10000 angles");
+  }
+  return angles;
+}
+
+}  // namespace ew

@@ -1,0 +1,146 @@
+#pragma once
+// The Zhang & Troje (2007) evaluation and the project's extensions (SPEC §7–8), as free
+// functions over plain rows: the CLI writes them as CSV, the viewer can plot them.
+//
+// Protocol: leave-one-subject-out (leave_one_out.h); the held-out walker's own 3D Fourier
+// vector w is projected at α (SPEC §5), reconstructed (SPEC §6) and scored against w
+// (SPEC §7: E_a in closed form over one cycle, E_r, σ_m², MPJPE over one cycle).
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/experiments/leave_one_out.h"
+
+namespace ew {
+
+enum class Experiment { Variance, SigmaSweep, KnownView, UnknownView, Noise, MissingJoints };
+
+std::string experimentName(Experiment e);  // "variance", "sigma-sweep", …
+std::optional<Experiment> experimentFromName(const std::string& name);
+// Every experiment, in the order they run (a reference to one constant list).
+const std::vector<Experiment>& allExperiments();
+
+// SPEC §8.2: the σ² grid (mm²).
+std::vector<double> defaultSigma2GridMm2();
+
+// A set of 2D joints hidden from the reconstruction (their rows of Ê dropped).
+struct JointSet {
+  std::string name;         // "r_wrist", "both_wrists", …
+  std::vector<int> joints;  // SPEC §1 indices
+};
+// Every single joint, then groups: both wrists, both arms (elbows + wrists), both ankles,
+// both lower legs (knees + ankles).
+std::vector<JointSet> defaultMissingJointSets();
+
+// (done, total, what): called after each fold of each experiment, serialised.
+using ExperimentProgressFn = std::function<void(int, int, const std::string&)>;
+
+struct EvaluationOptions {
+  std::vector<double> anglesDeg;        // view angles; empty = −90…90 step 1 (SPEC §8)
+  bool lsq = true;
+  bool map = true;
+  std::optional<double> sigma2Mm2;      // MAP σ²; unset = the sweep's optimum
+  std::vector<double> sigma2GridMm2 = defaultSigma2GridMm2();
+  std::vector<double> noiseLevelsMm = {0.0, 5.0, 10.0, 20.0, 40.0};
+  std::uint64_t noiseSeed = 20070501;
+  std::vector<JointSet> missingJointSets = defaultMissingJointSets();
+  ModelOptions model;                   // N per fold (default 95 %, ≤ R − 2 in LOO)
+  int threads = 1;
+  ExperimentProgressFn progress;
+};
+
+// [SECTION] Rows (one CSV line each)
+
+struct HarmonicsRow {
+  std::string walker, subject, source;
+  double strideHz = 0, h1Share = 0, h2Share = 0, residualShare = 0;
+};
+
+struct VarianceRow {
+  int component = 0;  // 1-based
+  double eigenvalueMm2 = 0, varianceShare = 0, cumulativeShare = 0;
+};
+
+struct SigmaSweepRow {
+  double sigma2Mm2 = 0;
+  std::string method;  // "map"; "lsq" rows repeat the σ²-independent LSQ error as reference
+  double meanAbsErrorMm2 = 0, meanRelError = 0, mpjpeMm = 0;
+};
+
+// Known view, 2D noise and missing joints: one row per subject × condition × angle × method.
+struct ViewErrorRow {
+  std::string subject;
+  std::string condition;  // noise: the noise level (mm); missing joints: the set's name
+  double angleDeg = 0;
+  std::string method;     // "lsq" or "map"
+  double absErrorMm2 = 0, relError = 0, varMissingMm2 = 0, mpjpeMm = 0;
+};
+
+struct UnknownViewRow {
+  std::string subject;
+  double trueAngleDeg = 0;
+  std::string method;
+  double estAngleDeg = 0, angleErrorDeg = 0, absErrorMm2 = 0, mpjpeMm = 0;
+};
+
+struct EvaluationResults {
+  int walkers = 0, subjects = 0;
+  int components = 0;             // N of the model of all walkers
+  int components95 = 0;           // smallest N with ≥ 95 % cumulative variance (all walkers)
+  std::set<Experiment> ran;
+  std::vector<HarmonicsRow> harmonics;
+  std::vector<VarianceRow> variance;
+  std::vector<SigmaSweepRow> sigmaSweep;
+  std::optional<double> sigma2OptMm2;   // the sweep's optimum (mean E_a over subjects, angles)
+  bool sigma2OptAtGridEdge = false;
+  double sigma2UsedMm2 = 0;             // σ² of every other MAP result
+  std::vector<ViewErrorRow> knownView, noise, missingJoints;
+  std::vector<UnknownViewRow> unknownView;
+  std::vector<std::pair<std::string, double>> timingsS;  // per experiment, wall seconds
+  std::vector<std::string> warnings;
+};
+
+// [SECTION] Experiments (each over the same folds)
+
+std::vector<HarmonicsRow> harmonicsTable(const std::vector<ExperimentWalker>& walkers);
+// One row per eigenvalue of the whole spectrum (R − 1 rows).
+std::vector<VarianceRow> varianceTable(const EigenwalkerModel& model);
+int componentsForShare(const std::vector<VarianceRow>& variance, double share);
+
+std::vector<SigmaSweepRow> sigmaSweep(const std::vector<ExperimentWalker>& walkers,
+                                      const std::vector<Fold>& folds,
+                                      const EvaluationOptions& options);
+std::vector<ViewErrorRow> knownViewErrors(const std::vector<ExperimentWalker>& walkers,
+                                          const std::vector<Fold>& folds,
+                                          const EvaluationOptions& options, double sigma2Mm2);
+std::vector<UnknownViewRow> unknownViewErrors(const std::vector<ExperimentWalker>& walkers,
+                                              const std::vector<Fold>& folds,
+                                              const EvaluationOptions& options, double sigma2Mm2);
+// Noise and missing joints use the multiples of 10° of a grid of more than 19 angles.
+// Frames of the held-out walker projected at α, Gaussian noise (SD noise_mm per image
+// coordinate and frame) added, the 2D Fourier fit at the walker's ω, reconstructed and
+// scored against the 3D fit of the same frames at the same ω. Walkers without frames are
+// skipped (a warning). `warnings` receives per-cell fit failures.
+std::vector<ViewErrorRow> noiseErrors(const std::vector<ExperimentWalker>& walkers,
+                                      const std::vector<Fold>& folds,
+                                      const EvaluationOptions& options, double sigma2Mm2,
+                                      std::vector<std::string>& warnings);
+std::vector<ViewErrorRow> missingJointErrors(const std::vector<ExperimentWalker>& walkers,
+                                             const std::vector<Fold>& folds,
+                                             const EvaluationOptions& options, double sigma2Mm2);
+
+// Runs the chosen experiments (folds built once) and times each.
+EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
+                                const std::set<Experiment>& experiments,
+                                const EvaluationOptions& options);
+
+// Angles "a:b:step" (degrees, inclusive) or a comma list "0,30,90". Throws
+// Error(BadArgument) on a malformed spec, a non-positive step or more than 10 000 angles.
+std::vector<double> parseAngleSpec(const std::string& spec);
+
+}  // namespace ew

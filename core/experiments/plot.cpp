@@ -1,0 +1,504 @@
+#include "core/experiments/plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "core/common/errors.h"
+#include "core/engine/projection.h"
+
+#ifdef EW_HAVE_OPENCV
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#endif
+
+namespace ew {
+
+// [SECTION] Evaluation figures (data → series); independent of the raster back end
+
+namespace {
+
+constexpr Rgb kLsqColor{31, 119, 180};   // blue
+constexpr Rgb kMapColor{214, 39, 40};    // red
+constexpr Rgb kGrey{90, 90, 90};
+
+Rgb methodColor(const std::string& m) { return m == "map" ? kMapColor : kLsqColor; }
+std::string methodLabel(const std::string& m) { return m == "map" ? "MAP (approach II)" : "LSQ (approach I)"; }
+
+struct MeanSd {
+  double sum = 0, sumSq = 0;
+  int n = 0;
+  void add(double v) { sum += v; sumSq += v * v; ++n; }
+  double mean() const { return n ? sum / n : 0.0; }
+  double sd() const { return n > 1 ? std::sqrt(std::max(0.0, (sumSq - sum * sum / n) / (n - 1))) : 0.0; }
+};
+
+// Mean over subjects per (method, angle) of one column of the view-error rows.
+template <class Row, class Value>
+std::map<std::string, std::map<double, MeanSd>> byMethodAngle(const std::vector<Row>& rows, Value value,
+                                                              double Row::*angle) {
+  std::map<std::string, std::map<double, MeanSd>> out;
+  for (const Row& r : rows) out[r.method][r.*angle].add(value(r));
+  return out;
+}
+
+PlotSeries seriesOf(const std::string& method, const std::map<double, MeanSd>& cells, bool withSd) {
+  PlotSeries s{methodLabel(method), {}, {}, {}, methodColor(method), false, false};
+  for (const auto& [x, c] : cells) {
+    s.x.push_back(x);
+    s.y.push_back(c.mean());
+    if (withSd) s.spread.push_back(c.sd());
+  }
+  return s;
+}
+
+std::string fmt(double v, int decimals = 0) {
+  std::ostringstream s;
+  s.setf(std::ios::fixed);
+  s.precision(decimals);
+  s << v;
+  return s.str();
+}
+
+LinePlot varianceFigure(const EvaluationResults& r) {
+  LinePlot p{"Fig. 2: cumulative variance of the eigenwalkers (" + std::to_string(r.walkers) + " walkers)",
+             "number of eigenwalkers", "cumulative share of variance (%)", {}, false, 0.0, {}, 0.0, 100.0, {}, {}};
+  PlotSeries s{"cumulative variance", {}, {}, {}, kLsqColor, false, true};
+  s.x.push_back(0);
+  s.y.push_back(0);
+  for (const auto& v : r.variance) {
+    s.x.push_back(v.component);
+    s.y.push_back(100.0 * v.cumulativeShare);
+  }
+  p.xMax = s.x.back();
+  p.series.push_back(s);
+  p.series.push_back({"95 %", {0, s.x.back()}, {95, 95}, {}, kGrey, true, false});
+  p.notes.push_back("95 % reached with " + std::to_string(r.components95) + " eigenwalkers");
+  return p;
+}
+
+LinePlot sigmaFigure(const EvaluationResults& r) {
+  LinePlot p{"Fig. 3: reconstruction error vs sigma^2 (leave-one-subject-out, all angles)",
+             "sigma^2 (mm^2, log scale)", "mean E_a of the depth (mm^2)", {}, true, {}, {}, 0.0, {}, {}, {}};
+  std::map<std::string, PlotSeries> by;
+  for (const auto& row : r.sigmaSweep) {
+    auto& s = by.try_emplace(row.method, PlotSeries{methodLabel(row.method), {}, {}, {}, methodColor(row.method),
+                                                    row.method == "lsq", row.method == "map"})
+                  .first->second;
+    s.x.push_back(row.sigma2Mm2);
+    s.y.push_back(row.meanAbsErrorMm2);
+  }
+  for (auto& [m, s] : by) p.series.push_back(s);
+  if (r.sigma2OptMm2) {
+    p.notes.push_back("optimum sigma^2 = " + fmt(*r.sigma2OptMm2) + " mm^2" +
+                      (r.sigma2OptAtGridEdge ? " (at the grid's edge!)" : ""));
+  }
+  return p;
+}
+
+LinePlot knownViewFigure(const EvaluationResults& r, int panel) {
+  static const char* titles[] = {"Fig. 5a: absolute depth error E_a vs view angle",
+                                 "Fig. 5b: relative depth error E_r vs view angle",
+                                 "Fig. 5c: variance of the missing (depth) dimension"};
+  static const char* yLabels[] = {"E_a (mm^2)", "E_r (E_a / variance of depth)", "variance of depth (mm^2)"};
+  LinePlot p{titles[panel], "view angle (deg; 0 = frontal, +-90 = profile)", yLabels[panel], {}, false,
+             {}, {}, 0.0, {}, 30.0, {}};
+  const auto cells = byMethodAngle(
+      r.knownView,
+      [panel](const ViewErrorRow& row) {
+        return panel == 0 ? row.absErrorMm2 : panel == 1 ? row.relError : row.varMissingMm2;
+      },
+      &ViewErrorRow::angleDeg);
+  for (const auto& [m, c] : cells) {
+    if (panel == 2 && m != cells.begin()->first) continue;  // the same for every method
+    PlotSeries s = seriesOf(m, c, false);
+    if (panel == 2) {
+      s.label = "mean over subjects";
+      s.color = kGrey;
+    }
+    p.series.push_back(s);
+  }
+  p.notes.push_back("MAP sigma^2 = " + fmt(r.sigma2UsedMm2) + " mm^2; mean over " + std::to_string(r.subjects) +
+                    " held-out subjects");
+  return p;
+}
+
+LinePlot unknownViewFigure(const EvaluationResults& r) {
+  LinePlot p{"Fig. 6: estimated vs true view angle (mean +- SD over subjects)", "true view angle (deg)",
+             "estimated view angle (deg)", {}, false, {}, {}, {}, {}, 30.0, {}};
+  // α̂ unwrapped next to α, so a mean over subjects is meaningful.
+  std::map<std::string, std::map<double, MeanSd>> cells;
+  double lo = 1e300, hi = -1e300;
+  for (const auto& row : r.unknownView) {
+    cells[row.method][row.trueAngleDeg].add(row.trueAngleDeg + wrapDeg(row.estAngleDeg - row.trueAngleDeg));
+    lo = std::min(lo, row.trueAngleDeg);
+    hi = std::max(hi, row.trueAngleDeg);
+  }
+  p.series.push_back({"ideal", {lo, hi}, {lo, hi}, {}, kGrey, true, false});
+  for (const auto& [m, c] : cells) {
+    p.series.push_back(seriesOf(m, c, true));
+    MeanSd err;
+    for (const auto& row : r.unknownView) {
+      if (row.method == m) err.add(row.angleErrorDeg);
+    }
+    p.notes.push_back(m + ": mean |error| " + fmt(err.mean(), 2) + " deg");
+  }
+  p.yMin = lo - 30;
+  p.yMax = hi + 30;
+  return p;
+}
+
+LinePlot noiseFigure(const EvaluationResults& r) {
+  LinePlot p{"2D noise before the Fourier fit: depth error vs noise", "noise SD per image coordinate (mm)",
+             "mean E_a (mm^2)", {}, false, {}, {}, 0.0, {}, {}, {}};
+  std::map<std::string, std::map<double, MeanSd>> cells;
+  for (const auto& row : r.noise) cells[row.method][std::stod(row.condition)].add(row.absErrorMm2);
+  for (const auto& [m, c] : cells) {
+    PlotSeries s = seriesOf(m, c, false);
+    s.markers = true;
+    p.series.push_back(s);
+  }
+  p.notes.push_back("known view, all angles, MAP sigma^2 = " + fmt(r.sigma2UsedMm2) + " mm^2");
+  return p;
+}
+
+BarPlot missingFigure(const EvaluationResults& r) {
+  BarPlot p{"Missing 2D joints (known view, all angles): mean E_a", "mean E_a of the depth (mm^2)", {}, {}, {}, {}, {}};
+  std::map<std::string, std::map<std::string, MeanSd>> cells;
+  std::vector<std::string> order;
+  for (const auto& row : r.missingJoints) {
+    if (std::find(order.begin(), order.end(), row.condition) == order.end()) order.push_back(row.condition);
+    cells[row.method][row.condition].add(row.absErrorMm2);
+  }
+  for (const auto& [m, c] : cells) {
+    p.seriesLabels.push_back(methodLabel(m));
+    p.seriesColors.push_back(methodColor(m));
+  }
+  for (const auto& cond : order) {
+    BarGroup g{cond, {}};
+    for (auto& [m, c] : cells) g.values.push_back(c[cond].mean());
+    p.groups.push_back(g);
+  }
+  MeanSd none;
+  for (const auto& row : r.knownView) {
+    if (row.method == "map") none.add(row.absErrorMm2);
+  }
+  if (none.n) {
+    p.referenceValue = none.mean();
+    p.referenceLabel = "MAP, no joint missing";
+  }
+  return p;
+}
+
+}  // namespace
+
+std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir, const EvaluationResults& r) {
+  std::vector<std::string> names;
+  if (!plotsAvailable()) return names;
+  const auto line = [&](const std::string& name, const LinePlot& p) {
+    saveLinePlot(dir / name, p);
+    names.push_back(name);
+  };
+  if (r.ran.count(Experiment::Variance) && !r.variance.empty()) line("fig2_cumulative_variance.png", varianceFigure(r));
+  if (r.ran.count(Experiment::SigmaSweep) && !r.sigmaSweep.empty()) line("fig3_sigma_sweep.png", sigmaFigure(r));
+  if (r.ran.count(Experiment::KnownView) && !r.knownView.empty()) {
+    line("fig5a_abs_error.png", knownViewFigure(r, 0));
+    line("fig5b_rel_error.png", knownViewFigure(r, 1));
+    line("fig5c_var_missing.png", knownViewFigure(r, 2));
+  }
+  if (r.ran.count(Experiment::UnknownView) && !r.unknownView.empty()) line("fig6_view_angle.png", unknownViewFigure(r));
+  if (r.ran.count(Experiment::Noise) && !r.noise.empty()) line("noise.png", noiseFigure(r));
+  if (r.ran.count(Experiment::MissingJoints) && !r.missingJoints.empty()) {
+    saveBarPlot(dir / "missing_joints.png", missingFigure(r));
+    names.push_back("missing_joints.png");
+  }
+  return names;
+}
+
+// [SECTION] Raster back end (OpenCV)
+
+#ifdef EW_HAVE_OPENCV
+namespace {
+
+const cv::Scalar kBlack(0, 0, 0), kAxisGrey(200, 200, 200), kWhite(255, 255, 255);
+constexpr int kFont = cv::FONT_HERSHEY_SIMPLEX;
+
+cv::Scalar bgr(const Rgb& c) { return cv::Scalar(c[2], c[1], c[0]); }
+
+// Text anchored at (x, y) with horizontal alignment -1 left, 0 centre, 1 right.
+void text(cv::Mat& img, const std::string& s, int x, int y, int align = -1, double scale = 0.5,
+          int thickness = 1, cv::Scalar color = kBlack) {
+  int base = 0;
+  const cv::Size size = cv::getTextSize(s, kFont, scale, thickness, &base);
+  const int x0 = align < 0 ? x : align == 0 ? x - size.width / 2 : x - size.width;
+  cv::putText(img, s, {x0, y}, kFont, scale, color, thickness, cv::LINE_AA);
+}
+
+// Vertical text: drawn on a strip, rotated 90° counter-clockwise.
+void verticalText(cv::Mat& img, const std::string& s, int xCenter, int yCenter, double scale = 0.55) {
+  int base = 0;
+  const cv::Size size = cv::getTextSize(s, kFont, scale, 1, &base);
+  cv::Mat strip(size.height + base + 6, size.width + 6, CV_8UC3, kWhite);
+  cv::putText(strip, s, {3, size.height + 2}, kFont, scale, kBlack, 1, cv::LINE_AA);
+  cv::Mat rotated;
+  cv::rotate(strip, rotated, cv::ROTATE_90_COUNTERCLOCKWISE);
+  const int x0 = std::clamp(xCenter - rotated.cols / 2, 0, img.cols - rotated.cols);
+  const int y0 = std::clamp(yCenter - rotated.rows / 2, 0, img.rows - rotated.rows);
+  rotated.copyTo(img(cv::Rect(x0, y0, rotated.cols, rotated.rows)));
+}
+
+double niceStep(double range, int targetTicks) {
+  const double raw = range / std::max(targetTicks, 1);
+  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0}) {
+    if (m * mag >= raw) return m * mag;
+  }
+  return 10 * mag;
+}
+
+std::string tickLabel(double v, double step) {
+  std::ostringstream s;
+  if (std::abs(v) < step * 1e-6) v = 0;
+  if (step >= 1 || std::abs(v) >= 1e4) {
+    s.setf(std::ios::fixed);
+    s.precision(0);
+  } else {
+    s.setf(std::ios::fixed);
+    s.precision(static_cast<int>(std::ceil(-std::log10(step))) + (step * std::pow(10.0, std::ceil(-std::log10(step))) == 2.5 ? 1 : 0));
+  }
+  s << v;
+  return s.str();
+}
+
+void dashedLine(cv::Mat& img, cv::Point a, cv::Point b, const cv::Scalar& color, int thickness) {
+  const double len = std::hypot(b.x - a.x, b.y - a.y);
+  const int dashes = std::max(1, static_cast<int>(len / 10));
+  for (int i = 0; i < dashes; i += 2) {
+    const double t0 = static_cast<double>(i) / dashes, t1 = std::min(1.0, static_cast<double>(i + 1) / dashes);
+    cv::line(img, {static_cast<int>(a.x + t0 * (b.x - a.x)), static_cast<int>(a.y + t0 * (b.y - a.y))},
+             {static_cast<int>(a.x + t1 * (b.x - a.x)), static_cast<int>(a.y + t1 * (b.y - a.y))}, color, thickness,
+             cv::LINE_AA);
+  }
+}
+
+void writePng(const std::filesystem::path& file, const cv::Mat& img) {
+  bool ok = false;
+  try {
+    ok = cv::imwrite(file.string(), img);
+  } catch (const cv::Exception& e) {
+    throw Error(ErrorKind::Io, file.string(), "", e.what());
+  }
+  if (!ok) throw Error(ErrorKind::Io, file.string(), "", "cannot write PNG");
+}
+
+struct Axes {
+  cv::Rect area;
+  double x0, x1, y0, y1;
+  bool logX;
+  double tx(double x) const {
+    const double u = logX ? (std::log10(x) - std::log10(x0)) / (std::log10(x1) - std::log10(x0)) : (x - x0) / (x1 - x0);
+    return area.x + u * area.width;
+  }
+  double ty(double y) const { return area.y + area.height - (y - y0) / (y1 - y0) * area.height; }
+  cv::Point at(double x, double y) const { return {static_cast<int>(std::lround(tx(x))), static_cast<int>(std::lround(ty(y)))}; }
+};
+
+Axes axesFor(const LinePlot& p, cv::Rect area) {
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (const auto& s : p.series) {
+    for (size_t i = 0; i < s.x.size(); ++i) {
+      const double d = i < s.spread.size() ? s.spread[i] : 0.0;
+      x0 = std::min(x0, s.x[i]);
+      x1 = std::max(x1, s.x[i]);
+      y0 = std::min(y0, s.y[i] - d);
+      y1 = std::max(y1, s.y[i] + d);
+    }
+  }
+  if (x0 > x1) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  x0 = p.xMin.value_or(x0);
+  x1 = p.xMax.value_or(x1);
+  y0 = p.yMin.value_or(y0);
+  y1 = p.yMax.value_or(y1 + 0.08 * (y1 - y0));  // headroom for the legend
+  if (x1 <= x0) x1 = x0 + 1;
+  if (y1 <= y0) y1 = y0 + 1;
+  return {area, x0, x1, y0, y1, p.logX};
+}
+
+void drawTicks(cv::Mat& img, const Axes& ax, const LinePlot& p) {
+  const cv::Rect& a = ax.area;
+  std::vector<double> xt;
+  if (ax.logX) {
+    for (double d = std::pow(10.0, std::floor(std::log10(ax.x0))); d <= ax.x1 * 1.0001; d *= 10) {
+      for (double m : {1.0, 2.0, 5.0}) {
+        if (m * d >= ax.x0 * 0.9999 && m * d <= ax.x1 * 1.0001) xt.push_back(m * d);
+      }
+    }
+  } else {
+    const double step = p.xTickStep.value_or(niceStep(ax.x1 - ax.x0, 8));
+    for (double v = std::ceil(ax.x0 / step - 1e-9) * step; v <= ax.x1 + 1e-9 * step; v += step) xt.push_back(v);
+  }
+  for (double v : xt) {
+    const int x = static_cast<int>(std::lround(ax.tx(v)));
+    cv::line(img, {x, a.y}, {x, a.y + a.height}, kAxisGrey, 1);
+    cv::line(img, {x, a.y + a.height}, {x, a.y + a.height + 5}, kBlack, 1);
+    text(img, tickLabel(v, ax.logX ? 1.0 : p.xTickStep.value_or(niceStep(ax.x1 - ax.x0, 8))), x, a.y + a.height + 22, 0);
+  }
+  const double ystep = niceStep(ax.y1 - ax.y0, 6);
+  for (double v = std::ceil(ax.y0 / ystep - 1e-9) * ystep; v <= ax.y1 + 1e-9 * ystep; v += ystep) {
+    const int y = static_cast<int>(std::lround(ax.ty(v)));
+    cv::line(img, {a.x, y}, {a.x + a.width, y}, kAxisGrey, 1);
+    cv::line(img, {a.x - 5, y}, {a.x, y}, kBlack, 1);
+    text(img, tickLabel(v, ystep), a.x - 8, y + 5, 1);
+  }
+}
+
+void drawSeries(cv::Mat& img, const Axes& ax, const PlotSeries& s) {
+  const cv::Rect& a = ax.area;
+  if (!s.spread.empty()) {  // translucent ± band
+    std::vector<cv::Point> poly;
+    for (size_t i = 0; i < s.x.size(); ++i) poly.push_back(ax.at(s.x[i], s.y[i] + s.spread[i]));
+    for (size_t i = s.x.size(); i-- > 0;) poly.push_back(ax.at(s.x[i], s.y[i] - s.spread[i]));
+    cv::Mat layer = img.clone();
+    cv::fillPoly(layer, std::vector<std::vector<cv::Point>>{poly}, bgr(s.color), cv::LINE_AA);
+    cv::Mat roi = img(a);
+    cv::addWeighted(layer(a), 0.18, roi, 0.82, 0, roi);
+  }
+  cv::Mat plotArea = img(a);
+  const cv::Point offset(a.x, a.y);
+  for (size_t i = 1; i < s.x.size(); ++i) {
+    const cv::Point p0 = ax.at(s.x[i - 1], s.y[i - 1]) - offset, p1 = ax.at(s.x[i], s.y[i]) - offset;
+    if (s.dashed) dashedLine(plotArea, p0, p1, bgr(s.color), 2);
+    else cv::line(plotArea, p0, p1, bgr(s.color), 2, cv::LINE_AA);
+  }
+  if (s.markers) {
+    for (size_t i = 0; i < s.x.size(); ++i) cv::circle(plotArea, ax.at(s.x[i], s.y[i]) - offset, 4, bgr(s.color), cv::FILLED, cv::LINE_AA);
+  }
+}
+
+// The corner of the plot area where the legend hides the fewest drawn points.
+cv::Rect legendBox(const cv::Rect& a, cv::Size size, const std::vector<cv::Point>& drawn) {
+  std::vector<cv::Rect> corners = {{a.x + a.width - size.width - 10, a.y + 10, size.width, size.height},
+                                   {a.x + 10, a.y + 10, size.width, size.height},
+                                   {a.x + a.width - size.width - 10, a.y + a.height - size.height - 10, size.width, size.height},
+                                   {a.x + 10, a.y + a.height - size.height - 10, size.width, size.height}};
+  cv::Rect best = corners.front();
+  long fewest = -1;
+  for (const auto& box : corners) {
+    const cv::Rect padded(box.x - 6, box.y - 6, box.width + 12, box.height + 12);
+    const long hidden = std::count_if(drawn.begin(), drawn.end(), [&](const cv::Point& p) { return padded.contains(p); });
+    if (fewest < 0 || hidden < fewest) {
+      fewest = hidden;
+      best = box;
+    }
+  }
+  return best;
+}
+
+void drawLegend(cv::Mat& img, const cv::Rect& a, const std::vector<PlotSeries>& series,
+                const std::vector<std::string>& notes, const std::vector<cv::Point>& drawn = {}) {
+  int width = 0;
+  for (const auto& s : series) width = std::max(width, cv::getTextSize(s.label, kFont, 0.5, 1, nullptr).width + 50);
+  for (const auto& n : notes) width = std::max(width, cv::getTextSize(n, kFont, 0.45, 1, nullptr).width + 16);
+  const int height = 22 * static_cast<int>(series.size() + notes.size()) + 10;
+  const cv::Rect box = legendBox(a, {width, height}, drawn);
+  cv::rectangle(img, box, kWhite, cv::FILLED);
+  cv::rectangle(img, box, kBlack, 1);
+  int y = box.y + 20;
+  for (const auto& s : series) {
+    const cv::Point l0(box.x + 8, y - 5), l1(box.x + 38, y - 5);
+    if (s.dashed) dashedLine(img, l0, l1, bgr(s.color), 2);
+    else cv::line(img, l0, l1, bgr(s.color), 2, cv::LINE_AA);
+    if (s.markers) cv::circle(img, (l0 + l1) / 2, 4, bgr(s.color), cv::FILLED, cv::LINE_AA);
+    text(img, s.label, box.x + 46, y);
+    y += 22;
+  }
+  for (const auto& n : notes) {
+    text(img, n, box.x + 8, y, -1, 0.45);
+    y += 22;
+  }
+}
+
+}  // namespace
+
+bool plotsAvailable() { return true; }
+
+void saveLinePlot(const std::filesystem::path& file, const LinePlot& p, int width, int height) {
+  cv::Mat img(height, width, CV_8UC3, kWhite);
+  const cv::Rect area(95, 55, width - 125, height - 125);
+  const Axes ax = axesFor(p, area);
+  drawTicks(img, ax, p);
+  std::vector<cv::Point> drawn;
+  for (const auto& s : p.series) {
+    drawSeries(img, ax, s);
+    for (size_t i = 0; i < s.x.size(); ++i) {  // points along each segment, for the legend
+      const cv::Point b = ax.at(s.x[i], s.y[i]);
+      const cv::Point e = i + 1 < s.x.size() ? ax.at(s.x[i + 1], s.y[i + 1]) : b;
+      for (int t = 0; t < 8; ++t) drawn.push_back(b + (e - b) * t / 8);
+    }
+  }
+  cv::rectangle(img, area, kBlack, 1);
+  text(img, p.title, width / 2, 32, 0, 0.62, 1);
+  text(img, p.xLabel, area.x + area.width / 2, height - 22, 0, 0.55);
+  verticalText(img, p.yLabel, 22, area.y + area.height / 2);
+  drawLegend(img, area, p.series, p.notes, drawn);
+  writePng(file, img);
+}
+
+void saveBarPlot(const std::filesystem::path& file, const BarPlot& p, int width, int height) {
+  cv::Mat img(height, width, CV_8UC3, kWhite);
+  const cv::Rect area(170, 55, width - 200, height - 120);
+  double vmax = p.referenceValue.value_or(0.0);
+  for (const auto& g : p.groups) {
+    for (double v : g.values) vmax = std::max(vmax, v);
+  }
+  vmax = vmax > 0 ? vmax * 1.08 : 1.0;
+  const Axes ax{area, 0.0, vmax, 0.0, 1.0, false};
+  const double step = niceStep(vmax, 6);
+  for (double v = 0; v <= vmax; v += step) {
+    const int x = static_cast<int>(std::lround(ax.tx(v)));
+    cv::line(img, {x, area.y}, {x, area.y + area.height}, kAxisGrey, 1);
+    text(img, tickLabel(v, step), x, area.y + area.height + 20, 0);
+  }
+  const double rowH = static_cast<double>(area.height) / static_cast<double>(std::max<size_t>(p.groups.size(), 1));
+  const size_t k = std::max<size_t>(p.seriesLabels.size(), 1);
+  for (size_t g = 0; g < p.groups.size(); ++g) {
+    const double top = area.y + static_cast<double>(g) * rowH;
+    text(img, p.groups[g].label, area.x - 8, static_cast<int>(top + rowH / 2 + 5), 1, 0.45);
+    for (size_t s = 0; s < p.groups[g].values.size(); ++s) {
+      const double barH = rowH * 0.8 / static_cast<double>(k);
+      const int y0 = static_cast<int>(top + rowH * 0.1 + static_cast<double>(s) * barH);
+      const int x1 = static_cast<int>(std::lround(ax.tx(p.groups[g].values[s])));
+      cv::rectangle(img, cv::Rect(area.x, y0, std::max(1, x1 - area.x), std::max(1, static_cast<int>(barH) - 1)),
+                    bgr(p.seriesColors[s]), cv::FILLED);
+    }
+  }
+  std::vector<PlotSeries> legend;
+  for (size_t s = 0; s < p.seriesLabels.size(); ++s) legend.push_back({p.seriesLabels[s], {}, {}, {}, p.seriesColors[s], false, false});
+  if (p.referenceValue) {
+    const int x = static_cast<int>(std::lround(ax.tx(*p.referenceValue)));
+    dashedLine(img, {x, area.y}, {x, area.y + area.height}, kBlack, 2);
+    legend.push_back({p.referenceLabel, {}, {}, {}, {0, 0, 0}, true, false});
+  }
+  cv::rectangle(img, area, kBlack, 1);
+  text(img, p.title, width / 2, 32, 0, 0.62, 1);
+  text(img, p.valueLabel, area.x + area.width / 2, height - 22, 0, 0.55);
+  drawLegend(img, area, legend, {});
+  writePng(file, img);
+}
+
+#else
+
+bool plotsAvailable() { return false; }
+
+void saveLinePlot(const std::filesystem::path& file, const LinePlot&, int, int) {
+  throw Error(ErrorKind::Unsupported, file.string(), "", "built without OpenCV: no plots");
+}
+
+void saveBarPlot(const std::filesystem::path& file, const BarPlot&, int, int) {
+  throw Error(ErrorKind::Unsupported, file.string(), "", "built without OpenCV: no plots");
+}
+
+#endif
+
+}  // namespace ew

@@ -1,0 +1,248 @@
+#include "core/experiments/results_folder.h"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <system_error>
+#include <unistd.h>
+
+#include "core/common/errors.h"
+#include "core/experiments/plot.h"
+
+namespace ew {
+namespace {
+
+namespace fs = std::filesystem;
+
+// [SECTION] CSV text
+
+// Enough digits to round-trip a meaningful error (mm², degrees), no trailing noise.
+std::string num(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+
+template <class Row, class Fn>
+std::string csv(const char* header, const std::vector<Row>& rows, Fn line) {
+  std::ostringstream out;
+  out << header << '\n';
+  for (const Row& r : rows) out << line(r) << '\n';
+  return out.str();
+}
+
+std::string join(std::initializer_list<std::string> cells) {
+  std::string s;
+  for (const auto& c : cells) s += (s.empty() ? "" : ",") + c;
+  return s;
+}
+
+std::string viewErrorLine(const ViewErrorRow& r, bool withCondition) {
+  std::string s = r.subject + ",";
+  if (withCondition) s += r.condition + ",";
+  return s + join({num(r.angleDeg), r.method, num(r.absErrorMm2), num(r.relError),
+                   num(r.varMissingMm2), num(r.mpjpeMm)});
+}
+
+}  // namespace
+
+std::string harmonicsCsv(const std::vector<HarmonicsRow>& rows) {
+  return csv(kHarmonicsHeader, rows, [](const HarmonicsRow& r) {
+    return join({r.walker, r.subject, r.source, num(r.strideHz), num(r.h1Share), num(r.h2Share),
+                 num(r.residualShare)});
+  });
+}
+
+std::string varianceCsv(const std::vector<VarianceRow>& rows) {
+  return csv(kVarianceHeader, rows, [](const VarianceRow& r) {
+    return join({std::to_string(r.component), num(r.eigenvalueMm2), num(r.varianceShare),
+                 num(r.cumulativeShare)});
+  });
+}
+
+std::string sigmaSweepCsv(const std::vector<SigmaSweepRow>& rows) {
+  return csv(kSigmaSweepHeader, rows, [](const SigmaSweepRow& r) {
+    return join({num(r.sigma2Mm2), r.method, num(r.meanAbsErrorMm2), num(r.meanRelError), num(r.mpjpeMm)});
+  });
+}
+
+std::string knownViewCsv(const std::vector<ViewErrorRow>& rows) {
+  return csv(kKnownViewHeader, rows, [](const ViewErrorRow& r) { return viewErrorLine(r, false); });
+}
+
+std::string unknownViewCsv(const std::vector<UnknownViewRow>& rows) {
+  return csv(kUnknownViewHeader, rows, [](const UnknownViewRow& r) {
+    return join({r.subject, num(r.trueAngleDeg), r.method, num(r.estAngleDeg), num(r.angleErrorDeg),
+                 num(r.absErrorMm2), num(r.mpjpeMm)});
+  });
+}
+
+std::string noiseCsv(const std::vector<ViewErrorRow>& rows) {
+  return csv(kNoiseHeader, rows, [](const ViewErrorRow& r) { return viewErrorLine(r, true); });
+}
+
+std::string missingJointsCsv(const std::vector<ViewErrorRow>& rows) {
+  return csv(kMissingJointsHeader, rows, [](const ViewErrorRow& r) { return viewErrorLine(r, true); });
+}
+
+// [SECTION] summary.json
+
+namespace {
+
+using nlohmann::json;
+
+json knownViewSummary(const std::vector<ViewErrorRow>& rows) {
+  std::map<std::string, std::array<double, 4>> sums;  // abs, rel, mpjpe, count
+  for (const auto& r : rows) {
+    auto& s = sums[r.method];
+    s[0] += r.absErrorMm2;
+    s[1] += r.relError;
+    s[2] += r.mpjpeMm;
+    s[3] += 1;
+  }
+  json out = json::object();
+  for (const auto& [method, s] : sums) {
+    out[method] = {{"mean_abs_error_mm2", s[0] / s[3]}, {"mean_rel_error", s[1] / s[3]},
+                   {"mpjpe_mm", s[2] / s[3]}};
+  }
+  if (sums.count("lsq") && sums.count("map")) {
+    out["map_vs_lsq_reduction"] = 1.0 - (sums["map"][0] / sums["map"][3]) / (sums["lsq"][0] / sums["lsq"][3]);
+  }
+  return out;
+}
+
+json unknownViewSummary(const std::vector<UnknownViewRow>& rows) {
+  std::map<std::string, std::array<double, 5>> sums;  // err, count, err(|α|≤60), count, within 10°
+  for (const auto& r : rows) {
+    auto& s = sums[r.method];
+    s[0] += r.angleErrorDeg;
+    s[1] += 1;
+    if (std::abs(r.trueAngleDeg) <= 60.0) {
+      s[2] += r.angleErrorDeg;
+      s[3] += 1;
+    }
+    if (r.angleErrorDeg <= 10.0) s[4] += 1;
+  }
+  json out = json::object();
+  for (const auto& [method, s] : sums) {
+    out[method] = {{"mae_deg", s[0] / s[1]},
+                   {"mae_deg_abs_le_60", s[3] > 0 ? json(s[2] / s[3]) : json(nullptr)},
+                   {"share_within_10_deg", s[4] / s[1]}};
+  }
+  return out;
+}
+
+// Mean E_a per method and condition (noise level, joint set).
+json byCondition(const std::vector<ViewErrorRow>& rows) {
+  std::map<std::string, std::map<std::string, std::pair<double, int>>> sums;
+  for (const auto& r : rows) {
+    auto& s = sums[r.method][r.condition];
+    s.first += r.absErrorMm2;
+    s.second += 1;
+  }
+  json out = json::object();
+  for (const auto& [method, conditions] : sums) {
+    for (const auto& [condition, s] : conditions) out[method][condition] = s.first / s.second;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string summaryJson(const EvaluationResults& r, const EvaluationProvenance& provenance) {
+  double h1 = 0, h2 = 0;
+  for (const auto& h : r.harmonics) {
+    h1 += h.h1Share;
+    h2 += h.h2Share;
+  }
+  const double n = std::max<double>(1.0, static_cast<double>(r.harmonics.size()));
+  json s = {{"walkers", r.walkers}, {"subjects", r.subjects}, {"components", r.components},
+            {"components_95", r.components95}, {"h1_share_mean", h1 / n}, {"h2_share_mean", h2 / n}};
+  json experiments = json::array();
+  for (Experiment e : r.ran) experiments.push_back(experimentName(e));
+  s["experiments"] = experiments;
+  s["sigma2_opt_mm2"] = r.sigma2OptMm2 ? json(*r.sigma2OptMm2) : json(nullptr);
+  s["sigma2_opt_at_grid_edge"] = r.sigma2OptAtGridEdge;
+  s["sigma2_used_mm2"] = r.sigma2UsedMm2;
+  if (r.ran.count(Experiment::KnownView)) s["known_view"] = knownViewSummary(r.knownView);
+  if (r.ran.count(Experiment::UnknownView)) s["unknown_view"] = unknownViewSummary(r.unknownView);
+  if (r.ran.count(Experiment::Noise)) s["noise_mean_abs_error_mm2"] = byCondition(r.noise);
+  if (r.ran.count(Experiment::MissingJoints)) s["missing_joints_mean_abs_error_mm2"] = byCondition(r.missingJoints);
+  json timings = json::object();
+  for (const auto& [name, seconds] : r.timingsS) timings[name] = seconds;
+  s["timings_s"] = timings;
+  s["warnings"] = r.warnings;
+  s["command_line"] = provenance.commandLine;
+  s["data_files"] = provenance.dataFiles;
+  return s.dump(2) + "\n";
+}
+
+// [SECTION] The folder, atomically
+
+namespace {
+
+void writeText(const fs::path& file, const std::string& text) {
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.flush();
+  if (!out) throw Error(ErrorKind::Io, file.string(), "", "cannot write");
+}
+
+}  // namespace
+
+std::vector<std::string> writeResultsFolder(const fs::path& dir, const EvaluationResults& r,
+                                            const EvaluationProvenance& provenance,
+                                            const ResultsFolderOptions& options) {
+  const fs::path target = dir.lexically_normal();
+  const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  const std::string stem = "." + target.filename().string() + "." + std::to_string(::getpid());
+  const fs::path partial = parent / (stem + ".partial");
+  const fs::path old = parent / (stem + ".old");
+  std::vector<std::string> written;
+  const auto add = [&](const std::string& name, const std::string& text) {
+    writeText(partial / name, text);
+    written.push_back(name);
+    if (options.afterFile) options.afterFile(partial / name);
+  };
+  try {
+    fs::create_directories(parent);
+    fs::remove_all(partial);
+    fs::create_directory(partial);
+    if (r.ran.count(Experiment::Variance)) {
+      add("harmonics.csv", harmonicsCsv(r.harmonics));
+      add("variance.csv", varianceCsv(r.variance));
+    }
+    if (r.ran.count(Experiment::SigmaSweep)) add("sigma_sweep.csv", sigmaSweepCsv(r.sigmaSweep));
+    if (r.ran.count(Experiment::KnownView)) add("known_view.csv", knownViewCsv(r.knownView));
+    if (r.ran.count(Experiment::UnknownView)) add("unknown_view.csv", unknownViewCsv(r.unknownView));
+    if (r.ran.count(Experiment::Noise)) add("noise.csv", noiseCsv(r.noise));
+    if (r.ran.count(Experiment::MissingJoints)) add("missing_joints.csv", missingJointsCsv(r.missingJoints));
+    if (options.plots) {
+      for (const auto& name : writeEvaluationPlots(partial, r)) {
+        written.push_back(name);
+        if (options.afterFile) options.afterFile(partial / name);
+      }
+    }
+    add("summary.json", summaryJson(r, provenance));
+    // Swap: the old folder moves aside, the new one takes its name, the old one goes.
+    fs::remove_all(old);
+    if (fs::exists(target)) fs::rename(target, old);
+    fs::rename(partial, target);
+    fs::remove_all(old);
+  } catch (...) {
+    std::error_code ec;
+    fs::remove_all(partial, ec);
+    if (!fs::exists(target, ec) && fs::exists(old, ec)) fs::rename(old, target, ec);
+    try {
+      throw;
+    } catch (const fs::filesystem_error& e) {
+      throw Error(ErrorKind::Io, target.string(), "", e.code().message());
+    }
+  }
+  return written;
+}
+
+}  // namespace ew

@@ -1,0 +1,57 @@
+#pragma once
+// The evaluation's output folder: CSVs with exact header lines, summary.json and the
+// plots, written into a temporary sibling folder and renamed into place only when
+// everything succeeded, so DIR is never seen half-written (an old DIR is replaced last).
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/experiments/experiments.h"
+
+namespace ew {
+
+// Header lines, exactly as written (tests and readers rely on them).
+inline constexpr const char* kHarmonicsHeader = "walker,subject,source,stride_hz,h1_share,h2_share,residual_share";
+inline constexpr const char* kVarianceHeader = "component,eigenvalue_mm2,variance_share,cumulative_share";
+inline constexpr const char* kSigmaSweepHeader = "sigma2_mm2,method,mean_abs_error_mm2,mean_rel_error,mpjpe_mm";
+inline constexpr const char* kKnownViewHeader = "subject,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm";
+inline constexpr const char* kUnknownViewHeader = "subject,true_angle_deg,method,est_angle_deg,angle_error_deg,abs_error_mm2,mpjpe_mm";
+inline constexpr const char* kNoiseHeader = "subject,noise_mm,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm";
+inline constexpr const char* kMissingJointsHeader = "subject,missing,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm";
+
+std::string harmonicsCsv(const std::vector<HarmonicsRow>& rows);
+std::string varianceCsv(const std::vector<VarianceRow>& rows);
+std::string sigmaSweepCsv(const std::vector<SigmaSweepRow>& rows);
+std::string knownViewCsv(const std::vector<ViewErrorRow>& rows);
+std::string unknownViewCsv(const std::vector<UnknownViewRow>& rows);
+std::string noiseCsv(const std::vector<ViewErrorRow>& rows);
+std::string missingJointsCsv(const std::vector<ViewErrorRow>& rows);
+
+// What produced the results (recorded in summary.json).
+struct EvaluationProvenance {
+  std::string commandLine;
+  std::vector<std::string> dataFiles;
+};
+
+// summary.json's text (pretty-printed JSON; keys documented in docs/RESULTS.md).
+std::string summaryJson(const EvaluationResults& results, const EvaluationProvenance& provenance);
+
+struct ResultsFolderOptions {
+  bool plots = true;  // PNG figures (when built with OpenCV)
+  // Called after each file is written into the temporary folder (progress; tests use it
+  // to fail a run midway).
+  std::function<void(const std::filesystem::path&)> afterFile;
+};
+
+// Writes the files of the experiments that ran into `dir` (created or replaced
+// atomically; its parent is created if missing) and returns their names. On failure the
+// temporary folder is removed, `dir` is left as it was, and the error is rethrown
+// (filesystem errors as Error(Io) naming `dir`).
+std::vector<std::string> writeResultsFolder(const std::filesystem::path& dir,
+                                            const EvaluationResults& results,
+                                            const EvaluationProvenance& provenance,
+                                            const ResultsFolderOptions& options = {});
+
+}  // namespace ew
