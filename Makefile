@@ -19,8 +19,15 @@ configure: deps
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
+# The viewer on the synthetic default population (RUN_ARGS: data paths, --size, …).
+RUN_ARGS ?=
 run: build
-	./$(BUILD_DIR)/bin/eigenwalker-cli --help
+	@if [ -x ./$(BUILD_DIR)/bin/eigenwalker ]; then \
+	  ./$(BUILD_DIR)/bin/eigenwalker $(RUN_ARGS); \
+	else \
+	  echo "eigenwalker: the viewer was not built (GUI packages missing); the CLI:"; \
+	  ./$(BUILD_DIR)/bin/eigenwalker-cli --help; \
+	fi
 
 test: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS) $(CTEST_ARGS)

@@ -89,7 +89,7 @@ inline bool isPointLight(int r, int g, int b) { return r >= 250 && g >= 250 && b
 // The reconstruction's amber bones.
 inline bool isAmber(int r, int g, int b) { return r > 190 && g > 80 && g < 200 && b < 110 && r - b > 120; }
 // The ground-truth ghost: blue dominant.
-inline bool isGhostBlue(int r, int g, int b) { return b > 110 && b - r > 45 && b >= g; }
+inline bool isGhostBlue(int r, int g, int b) { return b > 60 && b - r > 35 && b > g + 15; }
 // Error lines: magenta.
 inline bool isMagenta(int r, int g, int b) { return r > 170 && b > 90 && g < 110 && r - g > 100; }
 

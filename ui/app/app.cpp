@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -133,7 +135,12 @@ class App {
       state_.derived.update(state_.doc);
       state_.view.playback.advance(dt, actions::playbackStrideHz(state_));
 
+      const auto t0 = std::chrono::steady_clock::now();
       drawFrame(dt);
+      if (profile_) {
+        gl::finish();
+        profile_->draw += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+      }
       if (auto file = runner_.takeCapture()) {
         int w = 0, h = 0;
         glfwGetFramebufferSize(window_.get(), &w, &h);
@@ -145,7 +152,17 @@ class App {
           return 1;
         }
       }
+      const auto t1 = std::chrono::steady_clock::now();
       glfwSwapBuffers(window_.get());
+      if (profile_) {
+        gl::finish();
+        profile_->swap += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
+        if (++profile_->frames % 60 == 0) {
+          std::fprintf(stderr, "eigenwalker: profile: frame %.2f ms (of which the two views %.2f ms), swap %.2f ms (means of 60)\n",
+                       profile_->draw / 60.0, profile_->views / 60.0, profile_->swap / 60.0);
+          profile_->draw = profile_->swap = profile_->views = 0.0;
+        }
+      }
       ++state_.frame;
 
       if (benchRemaining_ > 0) {
@@ -202,8 +219,13 @@ class App {
       p.subjects.draw(state_, ctx, l.subjects);
       p.controls.draw(state_, ctx, l.controls);
       p.metrics.draw(state_, ctx, l.metrics);
+      const auto v0 = std::chrono::steady_clock::now();
       p.input.draw(state_, ctx, l.input);
       p.reconstruction.draw(state_, ctx, l.reconstruction);
+      if (profile_) {
+        gl::finish();
+        profile_->views += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - v0).count();
+      }
       p.playback.draw(state_, ctx, l.playback);
       p.coefficients.draw(state_, ctx, l.coefficients);
       p.jointErrors.draw(state_, ctx, l.jointErrors);
@@ -235,6 +257,12 @@ class App {
   bool benchStarted_ = false;
   int benchRemaining_ = 0;
   FrameStats stats_;
+  struct Profile {
+    double draw = 0.0, swap = 0.0, views = 0.0;
+    int frames = 0;
+  };
+  // EW_PROFILE=1: per-phase frame times on stderr (adds glFinish, so slower overall).
+  std::optional<Profile> profile_ = std::getenv("EW_PROFILE") ? std::optional<Profile>(Profile{}) : std::nullopt;
 };
 
 }  // namespace

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "core/common/errors.h"
-#include "core/engine/synthetic_walkers.h"
+#include "core/synth/population.h"
 
 namespace ew::ui {
 
@@ -33,14 +33,12 @@ void requireEnough(const Population& p, const std::string& what) {
 
 }  // namespace
 
-Population loadPopulation(const std::vector<std::filesystem::path>& paths,
-                          const LoadProgress& progress) {
+namespace {
+
+// Walkers and their facts from a loaded dataset (SPEC §3-4: fit, average per subject).
+Population populationFromDataset(const Dataset& dataset, std::string label, const LoadProgress& progress) {
   Population p;
-  for (const auto& path : paths) {
-    if (!p.label.empty()) p.label += ", ";
-    p.label += path.filename().empty() ? path.string() : path.filename().string();
-  }
-  Dataset dataset = loadDataset(paths, {}, progress);
+  p.label = std::move(label);
   p.warnings = dataset.warnings;
   if (progress) progress(0, 1, "fitting walkers");
   p.walkers = makeWalkers(dataset, &p.warnings);
@@ -61,50 +59,37 @@ Population loadPopulation(const std::vector<std::filesystem::path>& paths,
         speedSum += t.trial.speedMps;
         ++speedCount;
       }
-      for (int j = 0; j < kJointCount; ++j)
-        estimated[static_cast<std::size_t>(j)] =
-            estimated[static_cast<std::size_t>(j)] || t.trial.joints.estimated[static_cast<std::size_t>(j)];
+      for (std::size_t j = 0; j < estimated.size(); ++j)
+        estimated[j] = estimated[j] || t.trial.joints.estimated[j];
     }
     if (speedCount > 0) f.speedMps = speedSum / speedCount;
-    for (int j = 0; j < kJointCount; ++j)
-      if (estimated[static_cast<std::size_t>(j)])
-        f.estimatedJoints.emplace_back(kJointNames[static_cast<std::size_t>(j)]);
+    for (std::size_t j = 0; j < estimated.size(); ++j)
+      if (estimated[j]) f.estimatedJoints.emplace_back(kJointNames[j]);
     p.facts.push_back(std::move(f));
   }
+  if (progress) progress(1, 1, "fitted");
   requireEnough(p, p.label);
   return p;
 }
 
-Population defaultPopulation(const LoadProgress& progress) {
-  // The synthetic population of core/engine/synthetic_walkers.h: 24 walkers, each
-  // phase-aligned, with stride frequencies spread around 0.9 Hz.
-  constexpr int kCount = 24;
-  if (progress) progress(0, 1, "synthesising the default population");
-  const Eigen::MatrixXd w = syntheticWalkerSet(kCount, 20070501u);
-  Population p;
-  p.label = "synthetic default population";
-  for (int r = 0; r < kCount; ++r) {
-    Walker walker;
-    char name[16];
-    std::snprintf(name, sizeof name, "SYN%02d", r + 1);
-    walker.subject = name;
-    walker.condition = "synthetic";
-    walker.id = walker.subject + "/" + walker.condition;
-    walker.source = "synthetic";
-    walker.fit.w = w.col(r);
-    const double strideHz = 0.82 + 0.16 * std::fmod(0.618034 * (r + 1), 1.0);
-    walker.fit.omegaRadS = 2.0 * std::numbers::pi * strideHz;
-    walker.fit.phaseRad = 0.0;
-    walker.fit.omegaSource = "synthetic";
-    WalkerFacts f;
-    f.format = "synthetic";
-    f.strideHz = strideHz;
-    f.trials = 1;
-    p.facts.push_back(f);
-    p.walkers.push_back(std::move(walker));
+}  // namespace
+
+Population loadPopulation(const std::vector<std::filesystem::path>& paths,
+                          const LoadProgress& progress) {
+  std::string label;
+  for (const auto& path : paths) {
+    if (!label.empty()) label += ", ";
+    label += path.filename().empty() ? path.string() : path.filename().string();
   }
-  if (progress) progress(1, 1, "synthesised");
-  return p;
+  return populationFromDataset(loadDataset(paths, {}, progress), label, progress);
+}
+
+Population defaultPopulation(const LoadProgress& progress) {
+  // core/synth's embedded default population (docs/SYNTHETIC.md): simulated trials that go
+  // through the same preparation and Fourier fit as recorded data.
+  if (progress) progress(0, 1, "simulating the synthetic population");
+  const Dataset dataset = syntheticDataset();
+  return populationFromDataset(dataset, "synthetic default population", progress);
 }
 
 }  // namespace ew::ui

@@ -199,20 +199,26 @@ void RenderTarget::ensure(int width, int height, int samples) {
   colour_ = makeRbo();
   depth_ = makeRbo();
 
-  glBindRenderbuffer(GL_RENDERBUFFER, colour_.id());
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
+  resolved_.allocate(width, height);
   glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, 0);
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT24,
+                                   width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, msaaFbo_.id());
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.id());
+  if (samples > 1) {
+    glBindRenderbuffer(GL_RENDERBUFFER, colour_.id());
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_.id());
+  } else {
+    // Single-sampled: draw straight into the texture, no resolve copy.
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, resolved_.id(), 0);
+  }
+  glBindRenderbuffer(GL_RENDERBUFFER, 0);
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     width_ = height_ = 0;
     throw GlError("offscreen framebuffer (" + std::to_string(samples) + " samples) incomplete");
   }
-  resolved_.allocate(width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, resolveFbo_.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, resolved_.id(), 0);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
@@ -229,6 +235,10 @@ void RenderTarget::begin() const {
 }
 
 void RenderTarget::end() const {
+  if (samples_ <= 1) {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    return;
+  }
   glBindFramebuffer(GL_READ_FRAMEBUFFER, msaaFbo_.id());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolveFbo_.id());
   glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -289,6 +299,8 @@ void drawQuad(const VertexArray& vao) {
   glDrawArrays(GL_TRIANGLE_STRIP, 0, 4);
   glBindVertexArray(0);
 }
+
+void finish() { glFinish(); }
 
 void bindDefaultFramebuffer(int width, int height) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

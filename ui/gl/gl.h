@@ -185,6 +185,9 @@ void drawQuads(const VertexArray& vao, int instances);
 // A single quad (or full-screen triangle strip) with no attributes.
 void drawQuad(const VertexArray& vao);
 
+// Waits until the GL has finished (profiling only).
+void finish();
+
 // The default framebuffer.
 void bindDefaultFramebuffer(int width, int height);
 // RGB rows of the currently bound read framebuffer, bottom row first.

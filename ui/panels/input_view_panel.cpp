@@ -15,14 +15,15 @@ namespace ew::ui {
 
 namespace {
 
-constexpr float kViewHeightMm = 2150.0f;
-constexpr float kViewCentreVMm = 870.0f;
+constexpr float kViewHeightMm = 2350.0f;
+constexpr float kViewCentreVMm = 975.0f;
 
 }  // namespace
 
 void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-  if (beginPanel("2D input", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar)) {
+  if (beginPanel("2D input", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
+                                        ImGuiWindowFlags_NoBackground)) {
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     const ImVec2 size = ImGui::GetContentRegionAvail();
     const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;

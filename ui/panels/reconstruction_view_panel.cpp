@@ -46,7 +46,8 @@ float strideLengthMm(const AppState& s) {
 
 void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-  if (beginPanel("3D reconstruction", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar)) {
+  if (beginPanel("3D reconstruction", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
+                                        ImGuiWindowFlags_NoBackground)) {
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     const ImVec2 size = ImGui::GetContentRegionAvail();
     const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
@@ -87,9 +88,9 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
         if (o.ghost) addFigure(scene, truth, ghostStyle());
         if (o.errorLines) addErrorLines(scene, truth, rec, palette::kError, 2.5f * ctx.scale);
         if (o.cameraGlyph) {
-          addCameraGlyph(scene, r->alphaTrueDeg, 1250.0f, palette::kCamera, false);
+          addCameraGlyph(scene, r->alphaTrueDeg, 1500.0f, palette::kCamera, false);
           if (s.doc.recon.unknownAngle)
-            addCameraGlyph(scene, r->alphaUsedDeg, 1100.0f, palette::kCameraEstimate, true);
+            addCameraGlyph(scene, r->alphaUsedDeg, 1300.0f, palette::kCameraEstimate, true);
         }
         drawn = true;
       } else if (!reconstruct && e) {
@@ -97,7 +98,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
         scene.floor.shadowCentre = {pose[static_cast<std::size_t>(index(Joint::Pelvis))].x,
                                     pose[static_cast<std::size_t>(index(Joint::Pelvis))].y};
         addFigure(scene, pose, reconstructionStyle());
-        if (o.cameraGlyph) addCameraGlyph(scene, s.doc.recon.alphaDeg, 1250.0f, palette::kCamera, false);
+        if (o.cameraGlyph) addCameraGlyph(scene, s.doc.recon.alphaDeg, 1500.0f, palette::kCamera, false);
         drawn = true;
       }
       const float aspect = size.x / size.y;

@@ -16,8 +16,8 @@ struct OrbitCamera {
   // walker's right (+x).
   float yawDeg = 52.0f;
   float pitchDeg = 14.0f;
-  float distanceMm = 4700.0f;
-  float fovDeg = 30.0f;
+  float distanceMm = 5300.0f;
+  float fovDeg = 32.0f;
   glm::vec3 target{0.0f, 0.0f, 820.0f};
 
   bool operator==(const OrbitCamera&) const = default;

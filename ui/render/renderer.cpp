@@ -1,6 +1,7 @@
 #include "ui/render/renderer.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <array>
 #include <cstddef>
 
@@ -43,7 +44,11 @@ Renderer::Renderer()
       {2, 4, offsetof(LineInstance, colour)},
   }};
   lineVao_.setInstanceLayout(lineBuffer_, sizeof(LineInstance), lineLayout);
-  samples_ = std::min(4, gl::maxSamples());
+  // EW_SAMPLES overrides the multisampling of the views (1 = off; the impostors and lines
+  // anti-alias their own edges, so 1 still looks smooth, and software GL is much faster).
+  samples_ = 1;
+  if (const char* env = std::getenv("EW_SAMPLES"); env && *env) samples_ = std::clamp(std::atoi(env), 1, 16);
+  samples_ = std::min(samples_, gl::maxSamples());
 }
 
 void Renderer::drawSpheres(const std::vector<SphereInstance>& items, const CameraMatrices& camera,
@@ -83,14 +88,17 @@ void Renderer::render(gl::RenderTarget& target, const Scene& scene, const Camera
   if (!target.valid()) return;
   target.begin();
   const glm::vec2 viewport{static_cast<float>(target.width()), static_cast<float>(target.height())};
-  gl::clear(scene.backgroundBottom);
+  gl::clear(glm::mix(scene.backgroundBottom, scene.backgroundTop, 0.55f));
 
-  // Background gradient (no depth).
-  gl::apply({.depthTest = false, .depthWrite = false});
-  background_.use();
-  background_.set("uTop", scene.backgroundTop);
-  background_.set("uBottom", scene.backgroundBottom);
-  gl::drawQuad(emptyVao_);
+  // Background gradient (no depth): only in the multisampled quality mode; software GL
+  // pays a full-screen pass for it.
+  if (samples_ > 1) {
+    gl::apply({.depthTest = false, .depthWrite = false});
+    background_.use();
+    background_.set("uTop", scene.backgroundTop);
+    background_.set("uBottom", scene.backgroundBottom);
+    gl::drawQuad(emptyVao_);
+  }
 
   // Floor: blended over the background, writes depth so what is below it is hidden.
   if (scene.floor.visible) {
@@ -110,7 +118,10 @@ void Renderer::render(gl::RenderTarget& target, const Scene& scene, const Camera
   drawLines(scene.lines, camera, viewport);
 
   // Opaque figures; alpha-to-coverage smooths the impostors' silhouettes.
-  gl::apply({.depthTest = true, .depthWrite = true, .alphaToCoverage = samples_ > 1});
+  gl::apply({.depthTest = true,
+             .depthWrite = true,
+             .blend = samples_ > 1 ? gl::Blend::None : gl::Blend::Alpha,
+             .alphaToCoverage = samples_ > 1});
   drawTubes(scene.tubes, camera);
   drawSpheres(scene.spheres, camera, 0);
 
