@@ -6,6 +6,9 @@
 #include <stdexcept>
 
 #include "core/engine/model.h"
+#include "core/engine/model_file.h"
+#include "core/io/bvh_writer.h"
+#include "core/io/joint_csv.h"
 #include "core/engine/projection.h"
 
 namespace ew::ui::actions {
@@ -264,6 +267,81 @@ void setCamera(AppState& s, const std::string& preset) {
   } else {
     throw std::invalid_argument("unknown camera \"" + preset +
                                 "\" (known: three_quarter, front, side, top)");
+  }
+}
+
+// [SECTION] Export
+
+void requestPng(AppState& s, std::filesystem::path path, CaptureView view) {
+  if (path.empty()) throw std::invalid_argument("no file name for the PNG");
+  s.exports.png = PngRequest{std::move(path), view, 2};
+}
+
+CaptureView captureViewFromName(const std::string& name) {
+  if (name == "window") return CaptureView::Window;
+  if (name == "input") return CaptureView::Input;
+  if (name == "reconstruction") return CaptureView::Reconstruction;
+  throw std::invalid_argument("unknown view \"" + name + "\" (known: window, input, reconstruction)");
+}
+
+void startVideoExport(AppState& s, const VideoSettings& settings) {
+  requireLoaded(s);
+  if (s.exports.video) throw std::invalid_argument("a video export is already running");
+  if (s.doc.mode == Mode::Reconstruct ? !s.derived.display() : !s.derived.explore())
+    throw std::invalid_argument("nothing to export yet");
+  s.exports.video = std::make_unique<VideoExport>(settings, playbackStrideHz(s));
+  s.log.info("Exporting " + std::to_string(s.exports.video->frameCount()) + " frames to " + settings.path.string());
+}
+
+void cancelVideoExport(AppState& s) {
+  if (!s.exports.video) return;
+  s.log.warning("Video export cancelled: " + s.exports.video->settings().path.string());
+  s.exports.video.reset();
+}
+
+void reportExportError(AppState& s, const std::string& message) {
+  ++s.exports.failures;
+  s.exports.lastError = message;
+  s.log.error(message);
+}
+
+void exportCsv(AppState& s, const std::filesystem::path& path, std::optional<double> cycles) {
+  requireLoaded(s);
+  const WalkerMotion m = displayedWalkerMotion(s, cycles);
+  writeJointCsv(path, m.framesX45, m.rateHz,
+                {"eigenwalker viewer: " + m.description, "cycles=" + std::to_string(m.cycles)});
+  s.log.info("Wrote " + path.string() + " (" + std::to_string(m.framesX45.rows()) + " frames, " + m.description + ")");
+}
+
+void exportBvh(AppState& s, const std::filesystem::path& path, std::optional<double> cycles) {
+  requireLoaded(s);
+  const WalkerMotion m = displayedWalkerMotion(s, cycles);
+  writeBvh(path, m.framesX45, m.rateHz);
+  s.log.info("Wrote " + path.string() + " (" + std::to_string(m.framesX45.rows()) + " frames, " + m.description + ")");
+}
+
+void exportModel(AppState& s, const std::filesystem::path& path) {
+  requireLoaded(s);
+  if (!s.doc.models) throw std::invalid_argument("models not built yet");
+  const EigenwalkerModel* model = &s.doc.models->all;
+  std::string what = "the model of every walker";
+  if (s.doc.mode == Mode::Reconstruct) {
+    const std::string& subject = s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)].subject;
+    const auto it = s.doc.models->withoutSubject.find(subject);
+    if (it == s.doc.models->withoutSubject.end())
+      throw std::invalid_argument("no leave-one-out model for subject " + subject);
+    model = &it->second;
+    what = "the model without " + subject;
+  }
+  saveModel(*model, path);
+  s.log.info("Wrote " + path.string() + " (" + what + ", " + std::to_string(model->walkerCount()) + " walkers)");
+}
+
+void showPanel(AppState& s, const std::string& name, bool shown) {
+  if (name == "export") {
+    s.panels.exports.open = shown;
+  } else {
+    throw std::invalid_argument("unknown panel \"" + name + "\" (known: export)");
   }
 }
 

@@ -4,6 +4,7 @@
 // std::invalid_argument with a readable message when it cannot apply.
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,26 @@ void setPlaying(AppState& s, bool playing);
 void setOverlay(AppState& s, const std::string& name, bool on);
 std::vector<std::string> overlayNames();
 void setCamera(AppState& s, const std::string& preset);  // three_quarter, front, side, top
+
+// [SECTION] Export (ui/app/export.h). Paths are written atomically.
+// A PNG of the window or of one view, written after the next frames are drawn.
+void requestPng(AppState& s, std::filesystem::path path, CaptureView view);
+CaptureView captureViewFromName(const std::string& name);  // window, input, reconstruction
+// Starts rendering a video in the background of the frame loop (a progress bar shows
+// it); throws std::invalid_argument / std::runtime_error when it cannot start.
+void startVideoExport(AppState& s, const VideoSettings& settings);
+void cancelVideoExport(AppState& s);
+// The displayed walker (displayedWalkerMotion) as 15-joint CSV / BVH; the model the
+// reconstruction uses (the leave-one-out model of the held-out subject, every component;
+// explore mode: the model of every walker). Throw with a readable message on failure.
+void exportCsv(AppState& s, const std::filesystem::path& path, std::optional<double> cycles = std::nullopt);
+void exportBvh(AppState& s, const std::filesystem::path& path, std::optional<double> cycles = std::nullopt);
+void exportModel(AppState& s, const std::filesystem::path& path);
+// Records a failed PNG / video export: log, header, failure count.
+void reportExportError(AppState& s, const std::string& message);
+
+// Floating panels: "export" (and later ones); throws for an unknown name.
+void showPanel(AppState& s, const std::string& name, bool shown);
 
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).
 int coefficientCount(const AppState& s);

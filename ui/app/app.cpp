@@ -13,6 +13,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <string>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -134,6 +136,7 @@ class App {
       }
       state_.derived.update(state_.doc);
       state_.view.playback.advance(dt, actions::playbackStrideHz(state_));
+      stepVideoExport();
 
       const auto t0 = std::chrono::steady_clock::now();
       drawFrame(dt);
@@ -141,6 +144,7 @@ class App {
         gl::finish();
         profile_->draw += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       }
+      capturePng();
       if (auto file = runner_.takeCapture()) {
         int w = 0, h = 0;
         glfwGetFramebufferSize(window_.get(), &w, &h);
@@ -172,7 +176,7 @@ class App {
           std::fflush(stdout);
           return 0;
         }
-      } else if (scripted_ && runner_.finished() && !state_.jobs.busy()) {
+      } else if (scripted_ && runner_.finished() && !state_.busy()) {
         if (!finalScreenshotRequested_ && options_.screenshot) {
           finalScreenshotRequested_ = true;
           runner_.requestCapture(*options_.screenshot);
@@ -193,6 +197,72 @@ class App {
   }
 
  private:
+  // [SECTION] Exports that need the GL context: video frames and PNG read-back
+
+  void stepVideoExport() {
+    auto& e = state_.exports;
+    if (!e.video) return;
+    try {
+      // Scripted runs spend most of the time encoding; interactive runs keep the UI responsive.
+      if (e.video->step(state_, renderer_, scripted_ ? 400.0 : 40.0)) {
+        state_.log.info("Wrote " + e.video->settings().path.string() + " (" +
+                        std::to_string(e.video->frameCount()) + " frames in " +
+                        std::to_string(e.video->seconds()) + " s)");
+        e.video.reset();
+      }
+    } catch (const std::exception& ex) {
+      actions::reportExportError(state_, ex.what());
+      e.video.reset();
+    }
+  }
+
+  void capturePng() {
+    auto& e = state_.exports;
+    if (!e.png) return;
+    if (e.png->settleFrames > 0) {
+      --e.png->settleFrames;
+      return;
+    }
+    const PngRequest request = std::move(*e.png);
+    e.png.reset();
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_.get(), &w, &h);
+    std::optional<PixelRect> crop;
+    if (request.view != CaptureView::Window) {
+      const PanelRect r = request.view == CaptureView::Input ? state_.panels.input.lastImage
+                                                             : state_.panels.reconstruction.lastImage;
+      const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
+      crop = PixelRect{static_cast<int>(r.pos.x * fb.x), static_cast<int>(r.pos.y * fb.y),
+                       static_cast<int>(r.size.x * fb.x), static_cast<int>(r.size.y * fb.y)};
+      if (crop->width <= 0 || crop->height <= 0) {
+        actions::reportExportError(state_, request.path.string() + ": the view is not on screen");
+        return;
+      }
+    }
+    try {
+      writeScreenshot(request.path, w, h, crop);
+      state_.log.info("Wrote " + request.path.string());
+    } catch (const std::exception& ex) {
+      actions::reportExportError(state_, ex.what());
+    }
+  }
+
+  // [SECTION] Keyboard shortcuts (only when no text field has the keyboard)
+
+  void handleShortcuts() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput) return;
+    if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) {
+      const auto& p = state_.panels.exports;
+      const std::string stamp = std::to_string(std::chrono::duration_cast<std::chrono::seconds>(
+                                                    std::chrono::system_clock::now().time_since_epoch())
+                                                    .count());
+      actions::requestPng(state_, std::filesystem::path(p.folder.data()) /
+                                      (std::string(p.baseName.data()) + "-" + stamp + ".png"),
+                          CaptureView::Window);
+    }
+  }
+
   void updateScale() {
     float xs = 1.0f, ys = 1.0f;
     glfwGetWindowContentScale(window_.get(), &xs, &ys);
@@ -231,6 +301,8 @@ class App {
       p.jointErrors.draw(state_, ctx, l.jointErrors);
       p.profile.draw(state_, ctx, l.profile);
       p.log.draw(state_, ctx, l.log);
+      p.exports.draw(state_, ctx);
+      handleShortcuts();
     } catch (const std::exception& e) {
       // An action refused its input, or GL failed: say so, keep running.
       ImGui::ErrorCheckEndFrameRecover(nullptr);

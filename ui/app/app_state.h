@@ -12,9 +12,11 @@
 #include "ui/app/background_job.h"
 #include "ui/app/derived.h"
 #include "ui/app/document.h"
+#include "ui/app/export.h"
 #include "ui/app/log.h"
 #include "ui/panels/coefficients_panel.h"
 #include "ui/panels/controls_panel.h"
+#include "ui/panels/export_panel.h"
 #include "ui/panels/header_panel.h"
 #include "ui/panels/input_view_panel.h"
 #include "ui/panels/joint_errors_panel.h"
@@ -61,13 +63,18 @@ struct Panels {
   JointErrorsPanel jointErrors;
   ProfilePanel profile;
   LogPanel log;
+  ExportPanel exports;
 };
 
 struct AppState {
+  // Loading, model building or an export under way (scripts wait for it).
+  bool busy() const { return jobs.busy() || exports.busy(); }
+
   Document doc;
   ViewState view;
   Derived derived;
   Jobs jobs;
+  Exports exports;
   Log log;
   Fonts fonts;
   Panels panels;

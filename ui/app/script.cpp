@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <set>
+#include <utility>
 #include <stdexcept>
 
 #include "ui/app/actions.h"
@@ -17,7 +19,9 @@ const std::set<std::string>& knownActions() {
       "open",         "select_subject", "set_mode",      "set_angle",   "set_method",
       "set_sigma2",   "set_components", "unknown_angle", "set_coefficient", "set_phase",
       "play",         "overlay",        "wait_frames",   "screenshot",  "set_camera",
-      "reset_coefficients", "randomise_coefficients", "coefficients_from_subject"};
+      "reset_coefficients", "randomise_coefficients", "coefficients_from_subject",
+      "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
+      "show_panel"};
   return names;
 }
 
@@ -37,6 +41,26 @@ bool boolean(const ScriptAction& a) {
 std::string text(const ScriptAction& a) {
   if (!a.argument.is_string()) throw std::invalid_argument("expects a string");
   return a.argument.get<std::string>();
+}
+
+// A path string, or {"path": P, "cycles": N}.
+std::pair<std::filesystem::path, std::optional<double>> pathAndCycles(const ScriptAction& a) {
+  if (a.argument.is_string()) return {a.argument.get<std::string>(), std::nullopt};
+  if (a.argument.is_object() && a.argument.contains("path") && a.argument["path"].is_string()) {
+    std::optional<double> cycles;
+    if (a.argument.contains("cycles")) {
+      if (!a.argument["cycles"].is_number()) throw std::invalid_argument("cycles must be a number");
+      cycles = a.argument["cycles"].get<double>();
+    }
+    return {a.argument["path"].get<std::string>(), cycles};
+  }
+  throw std::invalid_argument("expects a path or {\"path\": P, \"cycles\": N}");
+}
+
+double numberField(const nlohmann::json& o, const char* key, double fallback) {
+  if (!o.contains(key)) return fallback;
+  if (!o[key].is_number()) throw std::invalid_argument(std::string(key) + " must be a number");
+  return o[key].get<double>();
 }
 
 }  // namespace
@@ -163,6 +187,48 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   } else if (n == "randomise_coefficients") {
     s.derived.update(s.doc);
     actions::randomiseCoefficients(s, static_cast<unsigned>(number(a)));
+  } else if (n == "show_panel") {
+    if (!a.argument.is_array() || a.argument.size() != 2 || !a.argument[0].is_string() ||
+        !a.argument[1].is_boolean())
+      throw std::invalid_argument("expects [NAME, true|false]");
+    actions::showPanel(s, a.argument[0].get<std::string>(), a.argument[1].get<bool>());
+  } else if (n == "export_png") {
+    if (a.argument.is_string()) {
+      actions::requestPng(s, a.argument.get<std::string>(), CaptureView::Window);
+    } else if (a.argument.is_object() && a.argument.contains("path") && a.argument["path"].is_string()) {
+      const std::string view = a.argument.contains("view") && a.argument["view"].is_string()
+                                   ? a.argument["view"].get<std::string>()
+                                   : std::string("window");
+      actions::requestPng(s, a.argument["path"].get<std::string>(), actions::captureViewFromName(view));
+    } else {
+      throw std::invalid_argument(R"(expects a path or {"path": P, "view": "window"|"input"|"reconstruction"})");
+    }
+    exportFailuresBefore_ = s.exports.failures;
+    checkExport_ = true;
+  } else if (n == "export_video") {
+    if (!a.argument.is_object() || !a.argument.contains("path") || !a.argument["path"].is_string())
+      throw std::invalid_argument(R"(expects {"path": P, "cycles": N, "fps": F, "width": W, "height": H})");
+    VideoSettings v;
+    v.path = a.argument["path"].get<std::string>();
+    v.cycles = numberField(a.argument, "cycles", v.cycles);
+    v.fps = numberField(a.argument, "fps", v.fps);
+    v.width = static_cast<int>(numberField(a.argument, "width", v.width));
+    v.height = static_cast<int>(numberField(a.argument, "height", v.height));
+    s.derived.update(s.doc);
+    actions::startVideoExport(s, v);
+    exportFailuresBefore_ = s.exports.failures;
+    checkExport_ = true;
+  } else if (n == "export_csv") {
+    s.derived.update(s.doc);
+    const auto [path, cycles] = pathAndCycles(a);
+    actions::exportCsv(s, path, cycles);
+  } else if (n == "export_bvh") {
+    s.derived.update(s.doc);
+    const auto [path, cycles] = pathAndCycles(a);
+    actions::exportBvh(s, path, cycles);
+  } else if (n == "export_model") {
+    s.derived.update(s.doc);
+    actions::exportModel(s, text(a));
   } else if (n == "coefficients_from_subject") {
     s.derived.update(s.doc);
     actions::coefficientsFromWalker(s);
@@ -172,11 +238,19 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
 void ScriptRunner::step(AppState& s) {
   if (failed()) return;
   // Everything waits for the background work (and reports a failed load).
-  if (s.jobs.busy()) return;
+  if (s.busy()) return;
   if (checkLoad_) {
     checkLoad_ = false;
     if (s.jobs.failures != failuresBefore_) {
       error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) + " (open): " + s.jobs.lastError;
+      return;
+    }
+  }
+  if (checkExport_) {
+    checkExport_ = false;
+    if (s.exports.failures != exportFailuresBefore_) {
+      const ScriptAction& last = actions_[next_ - 1];
+      error_ = name_ + ": action " + std::to_string(last.position) + " (" + last.name + "): " + s.exports.lastError;
       return;
     }
   }
@@ -202,7 +276,9 @@ void ScriptRunner::step(AppState& s) {
       return;
     }
     s.log.info("script: " + a.name + " " + a.argument.dump());
-    if (a.name == "open" || a.name == "wait_frames" || a.name == "screenshot") return;
+    if (a.name == "open" || a.name == "wait_frames" || a.name == "screenshot" || a.name == "export_png" ||
+        a.name == "export_video")
+      return;
   }
 }
 

@@ -37,7 +37,7 @@ class ScriptRunner {
   std::optional<std::filesystem::path> takeCapture();
 
   bool active() const { return !actions_.empty() || waitFrames_ > 0 || capture_; }
-  bool finished() const { return next_ >= actions_.size() && waitFrames_ == 0 && !capture_; }
+  bool finished() const { return next_ >= actions_.size() && waitFrames_ == 0 && !capture_ && !checkExport_; }
   bool failed() const { return !error_.empty(); }
   const std::string& error() const { return error_; }
 
@@ -53,6 +53,8 @@ class ScriptRunner {
   int waitFrames_ = 0;
   int failuresBefore_ = 0;
   bool checkLoad_ = false;                     // the last action opened data
+  int exportFailuresBefore_ = 0;
+  bool checkExport_ = false;                   // the last action started a PNG / video export
   std::optional<std::filesystem::path> capture_;
   int captureSettle_ = 0;
   bool captureDue_ = false;
