@@ -89,6 +89,20 @@ void pollJobs(AppState& s) {
       s.log.error(s.jobs.lastError);
     }
   }
+  if (auto outcome = s.jobs.analysis.poll()) {
+    if (outcome->value) {
+      const auto& result = *outcome->value;
+      s.analysis.add(result);
+      s.jobs.analysisError.clear();
+      s.log.info("Analysis: " + std::to_string(result->subjects.size()) + " held-out subjects × " +
+                 std::to_string(result->anglesDeg.size()) + " view angles in " +
+                 std::to_string(static_cast<int>(result->seconds * 1000.0)) + " ms");
+    } else {
+      s.jobs.analysisFailed = s.jobs.analysisRunning;
+      s.jobs.analysisError = "Analysis failed: " + outcome->error;
+      s.log.error(s.jobs.analysisError);
+    }
+  }
   if (s.jobs.pendingOpen && !s.jobs.load.running() && !s.jobs.models.running()) {
     auto paths = std::move(*s.jobs.pendingOpen);
     s.jobs.pendingOpen.reset();
@@ -337,11 +351,63 @@ void exportModel(AppState& s, const std::filesystem::path& path) {
   s.log.info("Wrote " + path.string() + " (" + what + ", " + std::to_string(model->walkerCount()) + " walkers)");
 }
 
+// [SECTION] Analysis
+
+AnalysisKey analysisKey(const AppState& s) {
+  return {s.doc.generation, s.doc.recon.components, s.doc.recon.sigma2Mm2};
+}
+
+void requestAnalysis(AppState& s) {
+  if (!s.doc.population || s.jobs.load.running() || s.jobs.analysis.running()) return;
+  const AnalysisKey key = analysisKey(s);
+  if (s.analysis.find(key) || s.jobs.analysisFailed == key) return;
+  auto population = s.doc.population;
+  s.jobs.analysisRunning = key;
+  s.jobs.analysis.start("Analysis (leave-one-subject-out, −90…90°)",
+                        [population, key](JobProgress& progress) -> std::shared_ptr<const AnalysisResult> {
+                          return std::make_shared<const AnalysisResult>(computeAnalysis(
+                              *population, key, [&progress](int done, int total, const std::string& what) {
+                                progress.set(done, total, what);
+                              }));
+                        });
+}
+
+std::shared_ptr<const AnalysisResult> analysisNow(AppState& s) {
+  requireLoaded(s);
+  const AnalysisKey key = analysisKey(s);
+  if (auto cached = s.analysis.find(key)) return cached;
+  auto result = std::make_shared<const AnalysisResult>(computeAnalysis(*s.doc.population, key, {}));
+  s.analysis.add(result);
+  return result;
+}
+
+void exportAnalysisCsv(AppState& s, const std::filesystem::path& path) {
+  const auto result = analysisNow(s);
+  const std::string subject =
+      s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)].subject;
+  writeAnalysisCsv(*result, subject, path);
+  s.log.info("Wrote " + path.string() + " (analysis curves, " + subject + " and the mean)");
+}
+
+void setAnalysisMetric(AppState& s, const std::string& name) {
+  if (name == "E_a") {
+    s.panels.analysis.metric = ErrorMetric::AbsMm2;
+  } else if (name == "E_r") {
+    s.panels.analysis.metric = ErrorMetric::Relative;
+  } else if (name == "MPJPE") {
+    s.panels.analysis.metric = ErrorMetric::MpjpeMm;
+  } else {
+    throw std::invalid_argument("metric must be \"E_a\", \"E_r\" or \"MPJPE\"");
+  }
+}
+
 void showPanel(AppState& s, const std::string& name, bool shown) {
   if (name == "export") {
     s.panels.exports.open = shown;
+  } else if (name == "analysis") {
+    s.panels.analysis.open = shown;
   } else {
-    throw std::invalid_argument("unknown panel \"" + name + "\" (known: export)");
+    throw std::invalid_argument("unknown panel \"" + name + "\" (known: export, analysis)");
   }
 }
 

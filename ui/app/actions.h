@@ -4,6 +4,7 @@
 // std::invalid_argument with a readable message when it cannot apply.
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,7 +57,18 @@ void exportModel(AppState& s, const std::filesystem::path& path);
 // Records a failed PNG / video export: log, header, failure count.
 void reportExportError(AppState& s, const std::string& message);
 
-// Floating panels: "export" (and later ones); throws for an unknown name.
+// [SECTION] Analysis (ui/app/analysis.h)
+AnalysisKey analysisKey(const AppState& s);
+// Starts the analysis for the current inputs in the background unless cached or running.
+void requestAnalysis(AppState& s);
+// The analysis for the current inputs: cached, or computed now (blocking; scripts).
+std::shared_ptr<const AnalysisResult> analysisNow(AppState& s);
+// The current curves (selected subject and mean, LSQ and MAP, every metric) as CSV.
+void exportAnalysisCsv(AppState& s, const std::filesystem::path& path);
+// The plotted metric: "E_a", "E_r" or "MPJPE".
+void setAnalysisMetric(AppState& s, const std::string& name);
+
+// Floating panels: "export", "analysis"; throws for an unknown name.
 void showPanel(AppState& s, const std::string& name, bool shown);
 
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).

@@ -302,6 +302,7 @@ class App {
       p.profile.draw(state_, ctx, l.profile);
       p.log.draw(state_, ctx, l.log);
       p.exports.draw(state_, ctx);
+      p.analysis.draw(state_, ctx);
       handleShortcuts();
     } catch (const std::exception& e) {
       // An action refused its input, or GL failed: say so, keep running.

@@ -9,11 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "ui/app/analysis.h"
 #include "ui/app/background_job.h"
 #include "ui/app/derived.h"
 #include "ui/app/document.h"
 #include "ui/app/export.h"
 #include "ui/app/log.h"
+#include "ui/panels/analysis_panel.h"
 #include "ui/panels/coefficients_panel.h"
 #include "ui/panels/controls_panel.h"
 #include "ui/panels/export_panel.h"
@@ -36,13 +38,19 @@ class Renderer;
 struct Jobs {
   BackgroundJob<std::shared_ptr<const Population>> load;
   BackgroundJob<std::shared_ptr<const ModelSet>> models;
+  BackgroundJob<std::shared_ptr<const AnalysisResult>> analysis;  // the analysis panel's curves
+  AnalysisKey analysisRunning;            // the key of the running analysis job
+  std::optional<AnalysisKey> analysisFailed;  // not retried until the inputs change
+  std::string analysisError;
   // An open requested while a load was running: started when it finishes.
   std::optional<std::vector<std::filesystem::path>> pendingOpen;
   std::vector<std::filesystem::path> loadingPaths;
   std::string lastError;   // shown in the header until dismissed
   int failures = 0;        // loads or model builds that failed (scripts check it)
 
-  bool busy() const { return load.running() || models.running() || pendingOpen.has_value(); }
+  bool busy() const {
+    return load.running() || models.running() || analysis.running() || pendingOpen.has_value();
+  }
 };
 
 struct Fonts {
@@ -64,6 +72,7 @@ struct Panels {
   ProfilePanel profile;
   LogPanel log;
   ExportPanel exports;
+  AnalysisPanel analysis;
 };
 
 struct AppState {
@@ -75,6 +84,7 @@ struct AppState {
   Derived derived;
   Jobs jobs;
   Exports exports;
+  AnalysisCache analysis;
   Log log;
   Fonts fonts;
   Panels panels;

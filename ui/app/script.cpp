@@ -21,7 +21,7 @@ const std::set<std::string>& knownActions() {
       "play",         "overlay",        "wait_frames",   "screenshot",  "set_camera",
       "reset_coefficients", "randomise_coefficients", "coefficients_from_subject",
       "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
-      "show_panel"};
+      "show_panel",   "export_analysis_csv", "set_analysis_metric"};
   return names;
 }
 
@@ -192,6 +192,10 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
         !a.argument[1].is_boolean())
       throw std::invalid_argument("expects [NAME, true|false]");
     actions::showPanel(s, a.argument[0].get<std::string>(), a.argument[1].get<bool>());
+  } else if (n == "export_analysis_csv") {
+    actions::exportAnalysisCsv(s, text(a));
+  } else if (n == "set_analysis_metric") {
+    actions::setAnalysisMetric(s, text(a));
   } else if (n == "export_png") {
     if (a.argument.is_string()) {
       actions::requestPng(s, a.argument.get<std::string>(), CaptureView::Window);

@@ -14,6 +14,8 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
     if (s.fonts.large) ImGui::PopFont();
     ImGui::SameLine(0.0f, 18.0f * ctx.scale);
     if (ImGui::Button("Export…")) s.panels.exports.open = !s.panels.exports.open;
+    ImGui::SameLine();
+    if (ImGui::Button("Analysis")) s.panels.analysis.open = !s.panels.analysis.open;
     ImGui::SameLine(0.0f, 18.0f * ctx.scale);
     ImGui::AlignTextToFramePadding();
     if (s.doc.population) {
@@ -53,9 +55,13 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
       if (ImGui::SmallButton("Cancel")) actions::cancelVideoExport(s);
     } else if (s.jobs.busy()) {
       const bool loading = s.jobs.load.running();
-      const float fraction = loading ? s.jobs.load.fraction() : s.jobs.models.fraction();
-      const std::string what = loading ? s.jobs.load.title() + ": " + s.jobs.load.what()
-                                       : s.jobs.models.title() + ": " + s.jobs.models.what();
+      const bool analysing = !loading && !s.jobs.models.running() && s.jobs.analysis.running();
+      const float fraction = loading     ? s.jobs.load.fraction()
+                             : analysing ? s.jobs.analysis.fraction()
+                                         : s.jobs.models.fraction();
+      const std::string what = loading     ? s.jobs.load.title() + ": " + s.jobs.load.what()
+                               : analysing ? s.jobs.analysis.title()
+                                           : s.jobs.models.title() + ": " + s.jobs.models.what();
       const float w = 420.0f * ctx.scale;
       ImGui::SameLine(right - w);
       ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
