@@ -9,6 +9,9 @@
 #include "core/engine/model_file.h"
 #include "core/io/bvh_writer.h"
 #include "core/io/joint_csv.h"
+#include "ui/app/script.h"
+#include "ui/app/theme.h"
+#include "ui/app/tour.h"
 #include "core/engine/projection.h"
 
 namespace ew::ui::actions {
@@ -245,7 +248,7 @@ void setPlaying(AppState& s, bool playing) { s.view.playback.playing = playing; 
 
 std::vector<std::string> overlayNames() {
   return {"depth_error", "error_lines", "error_bars", "metrics", "ghost",
-          "camera",      "grid",        "reprojection", "stick_figure", "trails"};
+          "camera",      "grid",        "reprojection", "stick_figure", "trails", "point_lights"};
 }
 
 void setOverlay(AppState& s, const std::string& name, bool on) {
@@ -260,6 +263,7 @@ void setOverlay(AppState& s, const std::string& name, bool on) {
                  : name == "reprojection" ? &o.reprojection
                  : name == "stick_figure" ? &o.stickFigure
                  : name == "trails"       ? &o.trails
+                 : name == "point_lights" ? &o.pointLights
                                           : nullptr;
   if (!target) {
     std::string known;
@@ -401,13 +405,64 @@ void setAnalysisMetric(AppState& s, const std::string& name) {
   }
 }
 
+// [SECTION] Teaching
+
+void setTheme(AppState& s, const std::string& name) { s.view.theme = themeFromName(name); }
+
+namespace {
+
+void applyTourStep(AppState& s) {
+  const auto& steps = tourSteps();
+  const auto& step = steps[static_cast<std::size_t>(s.panels.tour.step)];
+  const auto script = parseScript(nlohmann::json::parse(step.actionsJson), std::string("tour step ") + step.title);
+  for (const auto& a : script) applyAction(s, a);
+  s.log.info(std::string("Tour ") + std::to_string(s.panels.tour.step + 1) + "/" + std::to_string(steps.size()) +
+             ": " + step.title);
+}
+
+}  // namespace
+
+void tourStart(AppState& s) {
+  requireLoaded(s);
+  s.panels.tour.active = true;
+  s.panels.tour.step = 0;
+  applyTourStep(s);
+}
+
+void tourNext(AppState& s) {
+  if (!s.panels.tour.active) throw std::invalid_argument("the tour has not started");
+  if (s.panels.tour.step + 1 >= static_cast<int>(tourSteps().size())) {
+    tourEnd(s);
+    return;
+  }
+  ++s.panels.tour.step;
+  applyTourStep(s);
+}
+
+void tourBack(AppState& s) {
+  if (!s.panels.tour.active) throw std::invalid_argument("the tour has not started");
+  if (s.panels.tour.step == 0) return;
+  --s.panels.tour.step;
+  applyTourStep(s);
+}
+
+void tourEnd(AppState& s) {
+  if (s.panels.tour.active) s.log.info("Tour ended");
+  s.panels.tour.active = false;
+  s.panels.tour.step = 0;
+  s.view.overlays.pointLights = false;
+  s.panels.analysis.open = false;
+}
+
 void showPanel(AppState& s, const std::string& name, bool shown) {
   if (name == "export") {
     s.panels.exports.open = shown;
   } else if (name == "analysis") {
     s.panels.analysis.open = shown;
+  } else if (name == "help") {
+    s.panels.help.open = shown;
   } else {
-    throw std::invalid_argument("unknown panel \"" + name + "\" (known: export, analysis)");
+    throw std::invalid_argument("unknown panel \"" + name + "\" (known: export, analysis, help)");
   }
 }
 

@@ -35,7 +35,7 @@ void coefficientsFromWalker(AppState& s);  // explorer starts from the selected 
 void setPhase(AppState& s, double phase01);
 void setPlaying(AppState& s, bool playing);
 // Overlay names: depth_error, error_lines, error_bars, metrics, ghost, camera, grid,
-// reprojection, stick_figure, trails.
+// reprojection, stick_figure, trails, point_lights.
 void setOverlay(AppState& s, const std::string& name, bool on);
 std::vector<std::string> overlayNames();
 void setCamera(AppState& s, const std::string& preset);  // three_quarter, front, side, top
@@ -68,7 +68,16 @@ void exportAnalysisCsv(AppState& s, const std::filesystem::path& path);
 // The plotted metric: "E_a", "E_r" or "MPJPE".
 void setAnalysisMetric(AppState& s, const std::string& name);
 
-// Floating panels: "export", "analysis"; throws for an unknown name.
+// [SECTION] Teaching
+void setTheme(AppState& s, const std::string& name);  // dark, light, projector
+// The guided tour (ui/app/tour.h): each step applies its actions through applyAction,
+// exactly as a script would. Next on the last step ends the tour.
+void tourStart(AppState& s);
+void tourNext(AppState& s);
+void tourBack(AppState& s);
+void tourEnd(AppState& s);
+
+// Floating panels: "export", "analysis", "help"; throws for an unknown name.
 void showPanel(AppState& s, const std::string& name, bool shown);
 
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).

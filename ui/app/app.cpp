@@ -252,13 +252,25 @@ class App {
   void handleShortcuts() {
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantTextInput) return;
+    auto& p = state_.panels;
+    if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) p.help.open = !p.help.open;
+    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
+      if (p.help.open) {
+        p.help.open = false;
+      } else if (p.tour.active) {
+        actions::tourEnd(state_);
+      }
+    }
+    if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) state_.view.overlays.pointLights = !state_.view.overlays.pointLights;
+    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT, true)) state_.view.playback.step(-1, actions::playbackStrideHz(state_));
+    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT, true)) state_.view.playback.step(1, actions::playbackStrideHz(state_));
     if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) {
-      const auto& p = state_.panels.exports;
+      const auto& e = p.exports;
       const std::string stamp = std::to_string(std::chrono::duration_cast<std::chrono::seconds>(
                                                     std::chrono::system_clock::now().time_since_epoch())
                                                     .count());
-      actions::requestPng(state_, std::filesystem::path(p.folder.data()) /
-                                      (std::string(p.baseName.data()) + "-" + stamp + ".png"),
+      actions::requestPng(state_, std::filesystem::path(e.folder.data()) /
+                                      (std::string(e.baseName.data()) + "-" + stamp + ".png"),
                           CaptureView::Window);
     }
   }
@@ -267,10 +279,12 @@ class App {
     float xs = 1.0f, ys = 1.0f;
     glfwGetWindowContentScale(window_.get(), &xs, &ys);
     state_.view.contentScale = std::max(xs, 0.5f);
-    const float scale = state_.view.contentScale * state_.view.uiScale;
-    if (scale != themeScale_) {
+    const float scale = state_.view.contentScale * state_.view.uiScale *
+                        (state_.view.theme == Theme::Projector ? kProjectorScale : 1.0f);
+    if (scale != themeScale_ || state_.view.theme != appliedTheme_) {
       themeScale_ = scale;
-      applyTheme(state_.fonts, scale);
+      appliedTheme_ = state_.view.theme;
+      applyTheme(state_.fonts, scale, state_.view.theme);
       ImGui_ImplOpenGL3_DestroyFontsTexture();
       ImGui_ImplOpenGL3_CreateFontsTexture();
     }
@@ -303,6 +317,8 @@ class App {
       p.log.draw(state_, ctx, l.log);
       p.exports.draw(state_, ctx);
       p.analysis.draw(state_, ctx);
+      p.tour.draw(state_, ctx);
+      p.help.draw(state_, ctx);
       handleShortcuts();
     } catch (const std::exception& e) {
       // An action refused its input, or GL failed: say so, keep running.
@@ -313,7 +329,8 @@ class App {
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_.get(), &w, &h);
     gl::bindDefaultFramebuffer(w, h);
-    gl::clear({0.05f, 0.055f, 0.065f, 1.0f});
+    gl::clear(state_.view.theme == Theme::Light ? glm::vec4{0.93f, 0.935f, 0.945f, 1.0f}
+                                                : glm::vec4{0.05f, 0.055f, 0.065f, 1.0f});
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   }
 
@@ -325,6 +342,7 @@ class App {
   AppState state_;
   ScriptRunner runner_;
   float themeScale_ = 0.0f;
+  Theme appliedTheme_ = Theme::Dark;
   bool scripted_ = false;
   bool finalScreenshotRequested_ = false;
   bool benchStarted_ = false;

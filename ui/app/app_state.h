@@ -20,6 +20,7 @@
 #include "ui/panels/controls_panel.h"
 #include "ui/panels/export_panel.h"
 #include "ui/panels/header_panel.h"
+#include "ui/panels/help_panel.h"
 #include "ui/panels/input_view_panel.h"
 #include "ui/panels/joint_errors_panel.h"
 #include "ui/panels/log_panel.h"
@@ -28,6 +29,7 @@
 #include "ui/panels/profile_panel.h"
 #include "ui/panels/reconstruction_view_panel.h"
 #include "ui/panels/subjects_panel.h"
+#include "ui/panels/tour_panel.h"
 
 struct ImFont;
 
@@ -73,6 +75,8 @@ struct Panels {
   LogPanel log;
   ExportPanel exports;
   AnalysisPanel analysis;
+  TourPanel tour;
+  HelpPanel help;
 };
 
 struct AppState {

@@ -21,7 +21,7 @@ const std::set<std::string>& knownActions() {
       "play",         "overlay",        "wait_frames",   "screenshot",  "set_camera",
       "reset_coefficients", "randomise_coefficients", "coefficients_from_subject",
       "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
-      "show_panel",   "export_analysis_csv", "set_analysis_metric"};
+      "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour"};
   return names;
 }
 
@@ -112,24 +112,9 @@ std::optional<std::filesystem::path> ScriptRunner::takeCapture() {
   return file;
 }
 
-void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
+void applyAction(AppState& s, const ScriptAction& a) {
   const auto& n = a.name;
-  if (n == "open") {
-    std::vector<std::filesystem::path> paths;
-    if (a.argument.is_string()) {
-      paths.emplace_back(a.argument.get<std::string>());
-    } else if (a.argument.is_array()) {
-      for (const auto& p : a.argument) {
-        if (!p.is_string()) throw std::invalid_argument("expects a path or a list of paths");
-        paths.emplace_back(p.get<std::string>());
-      }
-    } else if (!a.argument.is_null()) {
-      throw std::invalid_argument("expects a path, a list of paths, or null (the default population)");
-    }
-    failuresBefore_ = s.jobs.failures;
-    checkLoad_ = true;
-    actions::open(s, std::move(paths));
-  } else if (n == "select_subject") {
+  if (n == "select_subject") {
     actions::selectSubject(s, text(a));
   } else if (n == "set_mode") {
     const std::string m = text(a);
@@ -174,12 +159,6 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
         !a.argument[1].is_boolean())
       throw std::invalid_argument("expects [NAME, true|false]");
     actions::setOverlay(s, a.argument[0].get<std::string>(), a.argument[1].get<bool>());
-  } else if (n == "wait_frames") {
-    const double v = number(a);
-    if (v < 0 || v != std::floor(v)) throw std::invalid_argument("expects a whole number >= 0");
-    waitFrames_ = static_cast<int>(v);
-  } else if (n == "screenshot") {
-    requestCapture(text(a));
   } else if (n == "set_camera") {
     actions::setCamera(s, text(a));
   } else if (n == "reset_coefficients") {
@@ -196,6 +175,63 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
     actions::exportAnalysisCsv(s, text(a));
   } else if (n == "set_analysis_metric") {
     actions::setAnalysisMetric(s, text(a));
+  } else if (n == "set_theme") {
+    actions::setTheme(s, text(a));
+  } else if (n == "tour") {
+    const std::string t = text(a);
+    if (t == "start") {
+      actions::tourStart(s);
+    } else if (t == "next") {
+      actions::tourNext(s);
+    } else if (t == "back") {
+      actions::tourBack(s);
+    } else if (t == "end") {
+      actions::tourEnd(s);
+    } else {
+      throw std::invalid_argument("tour expects \"start\", \"next\", \"back\" or \"end\"");
+    }
+  } else if (n == "export_csv") {
+    s.derived.update(s.doc);
+    const auto [path, cycles] = pathAndCycles(a);
+    actions::exportCsv(s, path, cycles);
+  } else if (n == "export_bvh") {
+    s.derived.update(s.doc);
+    const auto [path, cycles] = pathAndCycles(a);
+    actions::exportBvh(s, path, cycles);
+  } else if (n == "export_model") {
+    s.derived.update(s.doc);
+    actions::exportModel(s, text(a));
+  } else if (n == "coefficients_from_subject") {
+    s.derived.update(s.doc);
+    actions::coefficientsFromWalker(s);
+  } else {
+    throw std::invalid_argument("cannot be used here");
+  }
+}
+
+void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
+  const auto& n = a.name;
+  if (n == "open") {
+    std::vector<std::filesystem::path> paths;
+    if (a.argument.is_string()) {
+      paths.emplace_back(a.argument.get<std::string>());
+    } else if (a.argument.is_array()) {
+      for (const auto& p : a.argument) {
+        if (!p.is_string()) throw std::invalid_argument("expects a path or a list of paths");
+        paths.emplace_back(p.get<std::string>());
+      }
+    } else if (!a.argument.is_null()) {
+      throw std::invalid_argument("expects a path, a list of paths, or null (the default population)");
+    }
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = true;
+    actions::open(s, std::move(paths));
+  } else if (n == "wait_frames") {
+    const double v = number(a);
+    if (v < 0 || v != std::floor(v)) throw std::invalid_argument("expects a whole number >= 0");
+    waitFrames_ = static_cast<int>(v);
+  } else if (n == "screenshot") {
+    requestCapture(text(a));
   } else if (n == "export_png") {
     if (a.argument.is_string()) {
       actions::requestPng(s, a.argument.get<std::string>(), CaptureView::Window);
@@ -222,20 +258,8 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
     actions::startVideoExport(s, v);
     exportFailuresBefore_ = s.exports.failures;
     checkExport_ = true;
-  } else if (n == "export_csv") {
-    s.derived.update(s.doc);
-    const auto [path, cycles] = pathAndCycles(a);
-    actions::exportCsv(s, path, cycles);
-  } else if (n == "export_bvh") {
-    s.derived.update(s.doc);
-    const auto [path, cycles] = pathAndCycles(a);
-    actions::exportBvh(s, path, cycles);
-  } else if (n == "export_model") {
-    s.derived.update(s.doc);
-    actions::exportModel(s, text(a));
-  } else if (n == "coefficients_from_subject") {
-    s.derived.update(s.doc);
-    actions::coefficientsFromWalker(s);
+  } else {
+    applyAction(s, a);
   }
 }
 

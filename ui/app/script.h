@@ -26,6 +26,11 @@ struct ScriptAction {
 std::vector<ScriptAction> readScript(const std::filesystem::path& file);
 std::vector<ScriptAction> parseScript(const nlohmann::json& script, const std::string& name);
 
+// Applies one action that needs no waiting (everything except open, wait_frames,
+// screenshot, export_png and export_video, which only a ScriptRunner can wait for): the
+// guided tour's steps go through it too. Throws std::invalid_argument on a bad argument.
+void applyAction(AppState& s, const ScriptAction& a);
+
 class ScriptRunner {
  public:
   ScriptRunner() = default;

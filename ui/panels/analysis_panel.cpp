@@ -40,8 +40,15 @@ std::string axisLabel(ErrorMetric m) {
 void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   if (!open) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowSize(ImVec2(display.x * 0.62f, display.y * 0.78f), ImGuiCond_Appearing);
-  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.53f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (s.panels.tour.active && s.panels.tour.lastHeight > 0.0f) {
+    // During the tour: between the header and the tour's window.
+    const float top = 52.0f * ctx.scale, bottom = display.y - s.panels.tour.lastHeight - 28.0f * ctx.scale;
+    ImGui::SetNextWindowSize(ImVec2(display.x * 0.62f, std::max(200.0f, bottom - top)), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, top), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  } else {
+    ImGui::SetNextWindowSize(ImVec2(display.x * 0.62f, display.y * 0.78f), ImGuiCond_Appearing);
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.53f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  }
   if (!ImGui::Begin("Analysis: error against view angle (leave-one-subject-out)", &open,
                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
                         ImGuiWindowFlags_NoScrollbar)) {

@@ -16,6 +16,17 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
     if (ImGui::Button("Export…")) s.panels.exports.open = !s.panels.exports.open;
     ImGui::SameLine();
     if (ImGui::Button("Analysis")) s.panels.analysis.open = !s.panels.analysis.open;
+    ImGui::SameLine();
+    if (ImGui::Button("Tour")) {
+      if (s.panels.tour.active) {
+        actions::tourEnd(s);
+      } else if (s.doc.ready()) {
+        actions::tourStart(s);
+      }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("?")) s.panels.help.open = !s.panels.help.open;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keyboard and mouse (F1)");
     ImGui::SameLine(0.0f, 18.0f * ctx.scale);
     ImGui::AlignTextToFramePadding();
     if (s.doc.population) {

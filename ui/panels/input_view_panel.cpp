@@ -45,7 +45,7 @@ bool buildInputScene(const AppState& s, Scene& scene, float lineScale, double ph
   scene.lines.push_back({{0.0f, -60.0f, -2.0f}, 1.0f, {0.0f, 2000.0f, -2.0f}, 8.0f,
                          glm::vec4(glm::vec3(palette::kAxis), 0.35f)});
   if (input) {
-    if (o.trails && trail) {
+    if (o.trails && !o.pointLights && trail) {
       std::vector<glm::vec2> points(static_cast<std::size_t>(trail->rows()));
       for (int j = 0; j < kJointCount; ++j) {
         for (Eigen::Index i = 0; i < trail->rows(); ++i)
@@ -55,8 +55,8 @@ bool buildInputScene(const AppState& s, Scene& scene, float lineScale, double ph
       }
     }
     const Pose2 pose = toPose2(frameAtPhase(*input, phase));
-    addPointLights(scene, pose, 34.0f, o.stickFigure, 2.5f * lineScale);
-    if (reconstruct && d && o.reprojection) {
+    addPointLights(scene, pose, 34.0f, o.stickFigure && !o.pointLights, 2.5f * lineScale);
+    if (reconstruct && d && o.reprojection && !o.pointLights) {
       const Pose2 rec = toPose2(frameAtPhase(d->reprojected, phase));
       for (const auto& [ja, jb] : kBones) {
         scene.overlayLines.push_back({glm::vec3(rec[static_cast<std::size_t>(index(ja))], 1.0f),
@@ -109,7 +109,7 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
       drawScaleBar(dl, ImVec2(p1.x - pad - 500.0f * pxPerMm - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale),
                    pxPerMm, 500.0f, ctx.scale);
       std::vector<LegendItem> legend{{palette::kInputPoint, "input joints (u, v)", false}};
-      if (reconstruct && o.reprojection) {
+      if (reconstruct && o.reprojection && !o.pointLights) {
         legend.push_back({palette::kReconRight,
                           s.doc.recon.unknownAngle ? "reconstruction seen at est. α" : "reconstruction seen at α", true});
         legend.push_back({palette::kError, "2D residual", true});

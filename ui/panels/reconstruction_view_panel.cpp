@@ -65,13 +65,15 @@ bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, 
     for (int j = 0; j < kJointCount; ++j)
       colours[static_cast<std::size_t>(j)] =
           palette::errorColour(static_cast<float>(d->depthRmsMm(j)) / *errorScale);
-    if (o.depthErrorColour) {
+    if (o.pointLights) {
+      for (const auto& p : rec) scene.glows.push_back({p, 34.0f, palette::kInputPoint});
+    } else if (o.depthErrorColour) {
       addFigure(scene, rec, reconstructionStyle(), std::span<const glm::vec4, kJointCount>(colours));
     } else {
       addFigure(scene, rec, reconstructionStyle());
     }
-    if (o.ghost) addFigure(scene, truth, ghostStyle());
-    if (o.errorLines) addErrorLines(scene, truth, rec, palette::kError, 2.5f * lineScale);
+    if (o.ghost && !o.pointLights) addFigure(scene, truth, ghostStyle());
+    if (o.errorLines && !o.pointLights) addErrorLines(scene, truth, rec, palette::kError, 2.5f * lineScale);
     if (o.cameraGlyph) {
       addCameraGlyph(scene, r->alphaTrueDeg, 1500.0f, palette::kCamera, false);
       if (s.doc.recon.unknownAngle)
@@ -82,7 +84,11 @@ bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, 
     const Pose3 pose = toPose3(frameAtPhase(e->w, phase));
     scene.floor.shadowCentre = {pose[static_cast<std::size_t>(index(Joint::Pelvis))].x,
                                 pose[static_cast<std::size_t>(index(Joint::Pelvis))].y};
-    addFigure(scene, pose, reconstructionStyle());
+    if (o.pointLights) {
+      for (const auto& p : pose) scene.glows.push_back({p, 34.0f, palette::kInputPoint});
+    } else {
+      addFigure(scene, pose, reconstructionStyle());
+    }
     if (o.cameraGlyph) addCameraGlyph(scene, s.doc.recon.alphaDeg, 1500.0f, palette::kCamera, false);
     drawn = true;
   }
@@ -137,7 +143,9 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), reconstruct ? "3D reconstruction" : "Gait space",
                   sub, s.fonts.large, ctx.scale);
       std::vector<LegendItem> legend;
-      if (reconstruct) {
+      if (o.pointLights) {
+        legend.push_back({palette::kInputPoint, reconstruct ? "reconstructed joints (point-lights)" : "joints (point-lights)", false});
+      } else if (reconstruct) {
         legend.push_back({palette::kReconRight, "reconstruction (right side darker)", false});
         if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
         if (o.errorLines) legend.push_back({palette::kError, "3D error per joint", true});
@@ -150,7 +158,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
           legend.push_back({palette::kCameraEstimate, "estimated camera (est. α)", true});
       }
       drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale);
-      if (reconstruct && d && o.depthErrorColour)
+      if (reconstruct && d && o.depthErrorColour && !o.pointLights)
         drawErrorColourBar(dl, ImVec2(p1.x - pad, p0.y + 78.0f * ctx.scale), std::min(200.0f * ctx.scale, size.y * 0.35f),
                            errorScale, "depth error (RMS)", ctx.scale);
       if (!drawn) {
