@@ -30,10 +30,15 @@ inline std::string readAll(const std::filesystem::path& file) {
 
 inline std::string quote(const std::string& s) { return "'" + s + "'"; }
 
-// Runs `eigenwalker ARGS` in a fresh X server. `dir` receives out.txt / err.txt.
-inline RunResult runViewer(const std::filesystem::path& dir, const std::string& args) {
+// Settings off: every run starts from the defaults and leaves no file behind (hermetic).
+inline constexpr const char* kNoSettings = "EIGENWALKER_NO_SETTINGS=1";
+
+// Runs `eigenwalker ARGS` in a fresh X server. `dir` receives out.txt / err.txt. `extraEnv`
+// ("NAME=value …") replaces the default kNoSettings.
+inline RunResult runViewer(const std::filesystem::path& dir, const std::string& args,
+                           const std::string& extraEnv = kNoSettings) {
   const std::string env = std::string("LSAN_OPTIONS=suppressions=") + EW_GUI_LSAN_SUPPRESSIONS +
-                          ":print_suppressions=0 ";
+                          ":print_suppressions=0 " + extraEnv + " ";
   const auto out = dir / "out.txt", err = dir / "err.txt";
   const std::string cmd = "xvfb-run -a -s '-screen 0 1920x1080x24' env " + env + quote(EW_GUI_PATH) + " " + args +
                           " > " + quote(out.string()) + " 2> " + quote(err.string());

@@ -63,6 +63,11 @@ void pollJobs(AppState& s) {
       s.doc.population = pop;
       s.doc.models.reset();
       s.doc.sourcePaths = s.jobs.loadingPaths;
+      for (auto it = s.doc.sourcePaths.rbegin(); it != s.doc.sourcePaths.rend(); ++it) {
+        std::erase(s.recentPaths, *it);
+        s.recentPaths.insert(s.recentPaths.begin(), *it);
+      }
+      if (s.recentPaths.size() > 10) s.recentPaths.resize(10);
       ++s.doc.generation;
       s.doc.walker = 0;
       s.doc.editedSd.clear();
@@ -251,25 +256,43 @@ std::vector<std::string> overlayNames() {
           "camera",      "grid",        "reprojection", "stick_figure", "trails", "point_lights"};
 }
 
+namespace {
+
+// The flag of overlay `name`, or nullptr.
+template <class O>
+auto overlayFlag(O& o, const std::string& name) -> decltype(&o.trails) {
+  return name == "depth_error"    ? &o.depthErrorColour
+         : name == "error_lines"  ? &o.errorLines
+         : name == "error_bars"   ? &o.errorBars
+         : name == "metrics"      ? &o.metrics
+         : name == "ghost"        ? &o.ghost
+         : name == "camera"       ? &o.cameraGlyph
+         : name == "grid"         ? &o.grid
+         : name == "reprojection" ? &o.reprojection
+         : name == "stick_figure" ? &o.stickFigure
+         : name == "trails"       ? &o.trails
+         : name == "point_lights" ? &o.pointLights
+                                  : nullptr;
+}
+
+[[noreturn]] void unknownOverlay(const std::string& name) {
+  std::string known;
+  for (const auto& n : overlayNames()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown overlay \"" + name + "\" (known: " + known + ")");
+}
+
+}  // namespace
+
+bool overlay(const AppState& s, const std::string& name) {
+  const bool* flag = overlayFlag(s.view.overlays, name);
+  if (!flag) unknownOverlay(name);
+  return *flag;
+}
+
 void setOverlay(AppState& s, const std::string& name, bool on) {
   auto& o = s.view.overlays;
-  bool* target = name == "depth_error"    ? &o.depthErrorColour
-                 : name == "error_lines"  ? &o.errorLines
-                 : name == "error_bars"   ? &o.errorBars
-                 : name == "metrics"      ? &o.metrics
-                 : name == "ghost"        ? &o.ghost
-                 : name == "camera"       ? &o.cameraGlyph
-                 : name == "grid"         ? &o.grid
-                 : name == "reprojection" ? &o.reprojection
-                 : name == "stick_figure" ? &o.stickFigure
-                 : name == "trails"       ? &o.trails
-                 : name == "point_lights" ? &o.pointLights
-                                          : nullptr;
-  if (!target) {
-    std::string known;
-    for (const auto& n : overlayNames()) known += (known.empty() ? "" : ", ") + n;
-    throw std::invalid_argument("unknown overlay \"" + name + "\" (known: " + known + ")");
-  }
+  bool* target = overlayFlag(o, name);
+  if (!target) unknownOverlay(name);
   *target = on;
 }
 

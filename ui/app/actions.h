@@ -38,6 +38,7 @@ void setPlaying(AppState& s, bool playing);
 // reprojection, stick_figure, trails, point_lights.
 void setOverlay(AppState& s, const std::string& name, bool on);
 std::vector<std::string> overlayNames();
+bool overlay(const AppState& s, const std::string& name);  // throws for an unknown name
 void setCamera(AppState& s, const std::string& preset);  // three_quarter, front, side, top
 
 // [SECTION] Export (ui/app/export.h). Paths are written atomically.

@@ -24,6 +24,7 @@
 #include "ui/app/app_state.h"
 #include "ui/app/layout.h"
 #include "ui/app/screenshot.h"
+#include "ui/app/settings.h"
 #include "ui/app/script.h"
 #include "ui/app/theme.h"
 #include "ui/render/renderer.h"
@@ -103,11 +104,33 @@ struct FrameStats {
 
 // [SECTION] The application
 
+// The saved settings when they are on (nothing otherwise); a problem reading them goes
+// to `warning` (logged once the log exists) and the defaults are used.
+std::optional<Settings> loadSettings(const AppOptions& options, std::string& warning) {
+  if (!options.useSettings || settingsDisabledByEnvironment()) return std::nullopt;
+  const auto file = settingsFile();
+  if (!file) return std::nullopt;
+  try {
+    return readSettings(*file);
+  } catch (const std::exception& e) {
+    warning = e.what();
+    return Settings{};
+  }
+}
+
+int windowDimension(const AppOptions& o, const std::optional<Settings>& st, bool width) {
+  const int given = width ? o.width : o.height;
+  if (o.sizeGiven || !st || !st->windowWidth || !st->windowHeight) return given;
+  const int saved = width ? *st->windowWidth : *st->windowHeight;
+  return saved >= 320 && saved <= 16384 ? saved : given;
+}
+
 class App {
  public:
   explicit App(const AppOptions& options)
       : options_(options),
-        window_(createWindow(options.width, options.height)),
+        settings_(loadSettings(options, settingsWarning_)),
+        window_(createWindow(windowDimension(options, settings_, true), windowDimension(options, settings_, false))),
         imgui_(window_.get()),
         renderer_() {
     state_.log.setEcho(options.script.has_value() || options.screenshot.has_value() || options.benchFrames > 0);
@@ -116,10 +139,46 @@ class App {
     scripted_ = options.script.has_value() || options.screenshot.has_value() || options.benchFrames > 0;
     glfwSwapInterval(scripted_ ? 0 : 1);
     if (options.script) runner_ = ScriptRunner(readScript(*options.script), options.script->string());
-    actions::open(state_, options.data);
+    std::vector<std::filesystem::path> data = options.data;
+    if (settings_) {
+      applySettings(state_, *settings_);
+      if (options.uiScaleGiven) state_.view.uiScale = options.uiScale;
+      if (const auto file = settingsFile()) state_.log.info("settings: " + file->string());
+      if (data.empty() && !settings_->data.empty()) {
+        std::vector<std::filesystem::path> last(settings_->data.begin(), settings_->data.end());
+        std::error_code ec;
+        const bool allThere = std::all_of(last.begin(), last.end(),
+                                          [&ec](const auto& p) { return std::filesystem::exists(p, ec); });
+        if (allThere) {
+          data = std::move(last);
+        } else {
+          state_.log.warning("settings: the data last opened is gone; opening the synthetic default");
+        }
+      }
+    }
+    if (!settingsWarning_.empty()) state_.log.warning(settingsWarning_);
+    actions::open(state_, data);
   }
 
+  // Runs the frame loop; saves the settings (when on) however it ends.
   int run() {
+    const int code = loop();
+    if (settings_) {
+      if (const auto file = settingsFile()) {
+        int w = 0, h = 0;
+        glfwGetWindowSize(window_.get(), &w, &h);
+        try {
+          writeSettings(*file, captureSettings(state_, w, h));
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "eigenwalker: %s\n", e.what());
+        }
+      }
+    }
+    return code;
+  }
+
+ private:
+  int loop() {
     auto last = std::chrono::steady_clock::now();
     while (!glfwWindowShouldClose(window_.get()) && !state_.quitRequested) {
       const auto start = std::chrono::steady_clock::now();
@@ -335,6 +394,8 @@ class App {
   }
 
   AppOptions options_;
+  std::string settingsWarning_;
+  std::optional<Settings> settings_;  // loaded at start; nothing when settings are off
   GlfwSession glfw_;  // members initialise in this order: GLFW, window, ImGui, GL objects
   WindowPtr window_;
   ImGuiSession imgui_;

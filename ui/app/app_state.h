@@ -92,6 +92,7 @@ struct AppState {
   Log log;
   Fonts fonts;
   Panels panels;
+  std::vector<std::filesystem::path> recentPaths;  // opened successfully, newest first (≤ 10)
   bool quitRequested = false;
   std::uint64_t frame = 0;
 };
