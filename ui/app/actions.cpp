@@ -9,6 +9,7 @@
 #include "core/engine/model_file.h"
 #include "core/io/bvh_writer.h"
 #include "core/io/joint_csv.h"
+#include "core/io/load_trial.h"
 #include "ui/app/script.h"
 #include "ui/app/theme.h"
 #include "ui/app/tour.h"
@@ -26,12 +27,13 @@ void startLoad(AppState& s, std::vector<std::filesystem::path> paths) {
                                           : "Loading " + paths.front().filename().string() +
                                                 (paths.size() > 1 ? " …" : "");
   s.log.info(title);
-  s.jobs.load.start(title, [paths](JobProgress& progress) -> std::shared_ptr<const Population> {
+  s.jobs.load.start(title, [paths, overrides = s.doc.fileOverrides](
+                               JobProgress& progress) -> std::shared_ptr<const Population> {
     auto report = [&progress](int done, int total, const std::string& what) {
       progress.set(done, total, what);
     };
     if (paths.empty()) return std::make_shared<const Population>(defaultPopulation(report));
-    return std::make_shared<const Population>(loadPopulation(paths, report));
+    return std::make_shared<const Population>(loadPopulation(paths, report, overrides));
   });
 }
 
@@ -95,6 +97,13 @@ void pollJobs(AppState& s) {
       ++s.jobs.failures;
       s.jobs.lastError = "Could not build the models: " + outcome->error;
       s.log.error(s.jobs.lastError);
+    }
+  }
+  if (auto outcome = s.jobs.summary.poll()) {
+    if (outcome->value) {
+      s.dataSummary = *outcome->value;
+    } else {
+      s.log.error("Data summary failed: " + outcome->error);
     }
   }
   if (auto outcome = s.jobs.analysis.poll()) {
@@ -428,6 +437,73 @@ void setAnalysisMetric(AppState& s, const std::string& name) {
   }
 }
 
+// [SECTION] Opening data
+
+void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
+  if (paths.empty()) throw std::invalid_argument("nothing dropped");
+  for (const auto& p : paths) {
+    std::error_code ec;
+    if (!std::filesystem::exists(p, ec)) throw std::invalid_argument(p.string() + ": no such file or folder");
+    if (!std::filesystem::is_directory(p, ec) && !isSupportedDataFile(p))
+      throw std::invalid_argument(p.string() + ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv) or folder");
+  }
+  s.log.info("Dropped " + std::to_string(paths.size()) + (paths.size() == 1 ? " item" : " items"));
+  open(s, paths);
+}
+
+void setFileOverride(AppState& s, const std::filesystem::path& file, const std::string& units, double rateHz) {
+  if (!std::isfinite(rateHz) || rateHz < 0.0 || rateHz > 10000.0)
+    throw std::invalid_argument("rate must lie in [0, 10000] Hz (0 = the file's)");
+  LoadOptions o;
+  if (!units.empty()) {
+    if (units != "cmu") (void)unitToMm(units, file.string());  // throws for an unknown unit
+    o.unitsOverride = units;
+  }
+  if (rateHz > 0.0) o.rateHzOverride = rateHz;
+  const std::string key = fileKey(file);
+  if (!o.unitsOverride && !o.rateHzOverride) {
+    s.doc.fileOverrides.erase(key);
+  } else {
+    s.doc.fileOverrides[key] = o;
+  }
+}
+
+void reloadWithOverrides(AppState& s) {
+  if (s.doc.sourcePaths.empty()) throw std::invalid_argument("the synthetic default has no files to override");
+  open(s, s.doc.sourcePaths);
+}
+
+void requestDataSummary(AppState& s) {
+  if (!s.doc.population || s.jobs.load.running() || s.jobs.summary.running()) return;
+  if (s.dataSummary && s.dataSummary->generation == s.doc.generation) return;
+  auto paths = s.doc.sourcePaths;
+  auto overrides = s.doc.fileOverrides;
+  const auto generation = s.doc.generation;
+  s.jobs.summary.start("Summarising the data",
+                       [paths, overrides, generation](JobProgress& progress) -> std::shared_ptr<const DataSummary> {
+                         auto d = summarizeData(paths, overrides, [&progress](int done, int total, const std::string& w) {
+                           progress.set(done, total, w);
+                         });
+                         d.generation = generation;
+                         return std::make_shared<const DataSummary>(std::move(d));
+                       });
+}
+
+std::shared_ptr<const DataSummary> dataSummaryNow(AppState& s) {
+  requireLoaded(s);
+  if (s.dataSummary && s.dataSummary->generation == s.doc.generation) return s.dataSummary;
+  auto d = summarizeData(s.doc.sourcePaths, s.doc.fileOverrides);
+  d.generation = s.doc.generation;
+  s.dataSummary = std::make_shared<const DataSummary>(std::move(d));
+  return s.dataSummary;
+}
+
+void exportDataSummary(AppState& s, const std::filesystem::path& path) {
+  const auto d = dataSummaryNow(s);
+  writeDataSummaryJson(*d, path);
+  s.log.info("Wrote " + path.string() + " (" + std::to_string(d->rows.size()) + " trials)");
+}
+
 // [SECTION] Teaching
 
 void setTheme(AppState& s, const std::string& name) { s.view.theme = themeFromName(name); }
@@ -484,8 +560,10 @@ void showPanel(AppState& s, const std::string& name, bool shown) {
     s.panels.analysis.open = shown;
   } else if (name == "help") {
     s.panels.help.open = shown;
+  } else if (name == "data") {
+    s.panels.data.open = shown;
   } else {
-    throw std::invalid_argument("unknown panel \"" + name + "\" (known: export, analysis, help)");
+    throw std::invalid_argument("unknown panel \"" + name + "\" (known: export, analysis, help, data)");
   }
 }
 

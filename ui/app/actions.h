@@ -69,6 +69,19 @@ void exportAnalysisCsv(AppState& s, const std::filesystem::path& path);
 // The plotted metric: "E_a", "E_r" or "MPJPE".
 void setAnalysisMetric(AppState& s, const std::string& name);
 
+// [SECTION] Opening data
+// Files or folders dropped on the window (or the script action "drop"): each must exist
+// and be a folder or a supported file (.c3d .bvh .asf .amc .trc .csv); then opened.
+void drop(AppState& s, const std::vector<std::filesystem::path>& paths);
+// Unit ("" = the file's; mm, cm, m, in, cmu) and frame rate (0 = the file's) for one file;
+// takes effect at the next open (reloadWithOverrides reopens the current data).
+void setFileOverride(AppState& s, const std::filesystem::path& file, const std::string& units, double rateHz);
+void reloadWithOverrides(AppState& s);
+// The data table for the current data: started in the background / computed now (scripts).
+void requestDataSummary(AppState& s);
+std::shared_ptr<const DataSummary> dataSummaryNow(AppState& s);
+void exportDataSummary(AppState& s, const std::filesystem::path& path);
+
 // [SECTION] Teaching
 void setTheme(AppState& s, const std::string& name);  // dark, light, projector
 // The guided tour (ui/app/tour.h): each step applies its actions through applyAction,
@@ -78,7 +91,7 @@ void tourNext(AppState& s);
 void tourBack(AppState& s);
 void tourEnd(AppState& s);
 
-// Floating panels: "export", "analysis", "help"; throws for an unknown name.
+// Floating panels: "export", "analysis", "help", "data"; throws for an unknown name.
 void showPanel(AppState& s, const std::string& name, bool shown);
 
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).

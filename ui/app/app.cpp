@@ -158,6 +158,8 @@ class App {
     }
     if (!settingsWarning_.empty()) state_.log.warning(settingsWarning_);
     actions::open(state_, data);
+    glfwSetWindowUserPointer(window_.get(), this);
+    glfwSetDropCallback(window_.get(), &App::onDrop);
   }
 
   // Runs the frame loop; saves the settings (when on) however it ends.
@@ -178,6 +180,19 @@ class App {
   }
 
  private:
+  // Files / folders dropped on the window: the same action as the script's "drop".
+  static void onDrop(GLFWwindow* window, int count, const char** paths) {
+    auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    if (!app || count <= 0) return;
+    std::vector<std::filesystem::path> dropped(paths, paths + count);
+    try {
+      actions::drop(app->state_, dropped);
+    } catch (const std::exception& e) {
+      app->state_.log.error(e.what());
+      app->state_.jobs.lastError = e.what();
+    }
+  }
+
   int loop() {
     auto last = std::chrono::steady_clock::now();
     while (!glfwWindowShouldClose(window_.get()) && !state_.quitRequested) {
@@ -376,6 +391,7 @@ class App {
       p.log.draw(state_, ctx, l.log);
       p.exports.draw(state_, ctx);
       p.analysis.draw(state_, ctx);
+      p.data.draw(state_, ctx);
       p.tour.draw(state_, ctx);
       p.help.draw(state_, ctx);
       handleShortcuts();

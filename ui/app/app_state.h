@@ -11,6 +11,7 @@
 
 #include "ui/app/analysis.h"
 #include "ui/app/background_job.h"
+#include "ui/app/data_summary.h"
 #include "ui/app/derived.h"
 #include "ui/app/document.h"
 #include "ui/app/export.h"
@@ -18,6 +19,7 @@
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/coefficients_panel.h"
 #include "ui/panels/controls_panel.h"
+#include "ui/panels/data_panel.h"
 #include "ui/panels/export_panel.h"
 #include "ui/panels/header_panel.h"
 #include "ui/panels/help_panel.h"
@@ -41,6 +43,7 @@ struct Jobs {
   BackgroundJob<std::shared_ptr<const Population>> load;
   BackgroundJob<std::shared_ptr<const ModelSet>> models;
   BackgroundJob<std::shared_ptr<const AnalysisResult>> analysis;  // the analysis panel's curves
+  BackgroundJob<std::shared_ptr<const DataSummary>> summary;      // the Data window's table
   AnalysisKey analysisRunning;            // the key of the running analysis job
   std::optional<AnalysisKey> analysisFailed;  // not retried until the inputs change
   std::string analysisError;
@@ -51,7 +54,8 @@ struct Jobs {
   int failures = 0;        // loads or model builds that failed (scripts check it)
 
   bool busy() const {
-    return load.running() || models.running() || analysis.running() || pendingOpen.has_value();
+    return load.running() || models.running() || analysis.running() || summary.running() ||
+           pendingOpen.has_value();
   }
 };
 
@@ -76,6 +80,7 @@ struct Panels {
   ExportPanel exports;
   AnalysisPanel analysis;
   TourPanel tour;
+  DataPanel data;
   HelpPanel help;
 };
 
@@ -89,6 +94,7 @@ struct AppState {
   Jobs jobs;
   Exports exports;
   AnalysisCache analysis;
+  std::shared_ptr<const DataSummary> dataSummary;  // of the current generation, once computed
   Log log;
   Fonts fonts;
   Panels panels;

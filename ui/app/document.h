@@ -35,6 +35,7 @@ struct Document {
   std::shared_ptr<const ModelSet> models;
   std::uint64_t generation = 0;
   std::vector<std::filesystem::path> sourcePaths;  // empty: the synthetic default
+  FileOverrides fileOverrides;                      // per-file unit / frame-rate overrides
 
   Mode mode = Mode::Reconstruct;
   int walker = 0;                                  // index into population->walkers

@@ -21,7 +21,8 @@ const std::set<std::string>& knownActions() {
       "play",         "overlay",        "wait_frames",   "screenshot",  "set_camera",
       "reset_coefficients", "randomise_coefficients", "coefficients_from_subject",
       "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
-      "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour"};
+      "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour",
+      "drop",         "set_file_override", "reload", "export_data_summary"};
   return names;
 }
 
@@ -175,6 +176,17 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::exportAnalysisCsv(s, text(a));
   } else if (n == "set_analysis_metric") {
     actions::setAnalysisMetric(s, text(a));
+  } else if (n == "set_file_override") {
+    if (!a.argument.is_object() || !a.argument.contains("file") || !a.argument["file"].is_string())
+      throw std::invalid_argument(R"(expects {"file": P, "units": "cm", "rate": 100})");
+    std::string units;
+    if (a.argument.contains("units")) {
+      if (!a.argument["units"].is_string()) throw std::invalid_argument("units must be a string");
+      units = a.argument["units"].get<std::string>();
+    }
+    actions::setFileOverride(s, a.argument["file"].get<std::string>(), units, numberField(a.argument, "rate", 0.0));
+  } else if (n == "export_data_summary") {
+    actions::exportDataSummary(s, text(a));
   } else if (n == "set_theme") {
     actions::setTheme(s, text(a));
   } else if (n == "tour") {
@@ -226,6 +238,22 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
     failuresBefore_ = s.jobs.failures;
     checkLoad_ = true;
     actions::open(s, std::move(paths));
+  } else if (n == "drop" || n == "reload") {
+    std::vector<std::filesystem::path> paths;
+    if (n == "drop") {
+      if (!a.argument.is_array()) throw std::invalid_argument("expects a list of paths");
+      for (const auto& p : a.argument) {
+        if (!p.is_string()) throw std::invalid_argument("expects a list of paths");
+        paths.emplace_back(p.get<std::string>());
+      }
+    }
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = true;
+    if (n == "drop") {
+      actions::drop(s, paths);
+    } else {
+      actions::reloadWithOverrides(s);
+    }
   } else if (n == "wait_frames") {
     const double v = number(a);
     if (v < 0 || v != std::floor(v)) throw std::invalid_argument("expects a whole number >= 0");
@@ -270,7 +298,8 @@ void ScriptRunner::step(AppState& s) {
   if (checkLoad_) {
     checkLoad_ = false;
     if (s.jobs.failures != failuresBefore_) {
-      error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) + " (open): " + s.jobs.lastError;
+      error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) + " (" + actions_[next_ - 1].name +
+               "): " + s.jobs.lastError;
       return;
     }
   }
@@ -304,7 +333,7 @@ void ScriptRunner::step(AppState& s) {
       return;
     }
     s.log.info("script: " + a.name + " " + a.argument.dump());
-    if (a.name == "open" || a.name == "wait_frames" || a.name == "screenshot" || a.name == "export_png" ||
+    if (a.name == "open" || a.name == "drop" || a.name == "reload" || a.name == "wait_frames" || a.name == "screenshot" || a.name == "export_png" ||
         a.name == "export_video")
       return;
   }

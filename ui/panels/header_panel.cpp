@@ -13,6 +13,8 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
     ImGui::TextColored(ImVec4(1.0f, 0.72f, 0.38f, 1.0f), "Eigenwalker");
     if (s.fonts.large) ImGui::PopFont();
     ImGui::SameLine(0.0f, 18.0f * ctx.scale);
+    if (ImGui::Button("Open…")) s.panels.data.open = !s.panels.data.open;
+    ImGui::SameLine();
     if (ImGui::Button("Export…")) s.panels.exports.open = !s.panels.exports.open;
     ImGui::SameLine();
     if (ImGui::Button("Analysis")) s.panels.analysis.open = !s.panels.analysis.open;
