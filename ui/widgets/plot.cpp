@@ -17,8 +17,13 @@ std::vector<double> niceTicks(double lo, double hi, int target) {
     step = m * mag;
     if (step >= raw) break;
   }
-  for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + step * 1e-9; v += step)
+  if (!(step > 0.0) || !std::isfinite(step)) return ticks;
+  const double first = std::ceil(lo / step - 1e-9) * step;
+  for (int i = 0; i < 1000; ++i) {
+    const double v = first + i * step;
+    if (v > hi + step * 1e-9) break;
     ticks.push_back(std::abs(v) < step * 1e-9 ? 0.0 : v);
+  }
   return ticks;
 }
 
