@@ -37,8 +37,11 @@ inline constexpr const char* kNoSettings = "EIGENWALKER_NO_SETTINGS=1";
 // ("NAME=value …") replaces the default kNoSettings.
 inline RunResult runViewer(const std::filesystem::path& dir, const std::string& args,
                            const std::string& extraEnv = kNoSettings) {
+  // Slow (frame-pointer-free) unwinding for allocations: Mesa's are otherwise recorded with
+  // truncated stacks that the driver suppressions in lsan.supp cannot match.
   const std::string env = std::string("LSAN_OPTIONS=suppressions=") + EW_GUI_LSAN_SUPPRESSIONS +
-                          ":print_suppressions=0 " + extraEnv + " ";
+                          ":print_suppressions=0:fast_unwind_on_malloc=0 ASAN_OPTIONS=fast_unwind_on_malloc=0 " +
+                          extraEnv + " ";
   const auto out = dir / "out.txt", err = dir / "err.txt";
   const std::string cmd = "xvfb-run -a -s '-screen 0 1920x1080x24' env " + env + quote(EW_GUI_PATH) + " " + args +
                           " > " + quote(out.string()) + " 2> " + quote(err.string());
