@@ -1,6 +1,6 @@
 // eigenwalker: the viewer. Parses the command line and runs the app (ui/app/app.h).
 //   eigenwalker [DATA…] [--size WxH] [--script FILE.json] [--screenshot OUT.png]
-//               [--bench-frames N] [--ui-scale S]
+//               [--bench-frames N] [--ui-scale S] [--no-settings]
 // docs/VIEWER.md describes the views, the controls and the script format.
 
 #include <CLI/CLI.hpp>
@@ -21,14 +21,17 @@ int main(int argc, char** argv) {
   float uiScale = 1.0f;
   cli.add_option("data", data,
                  "Manifest CSV, folders or motion-capture files (default: the synthetic population)");
-  cli.add_option("--size", size, "Window size WxH in screen coordinates")->capture_default_str();
+  auto* sizeOption = cli.add_option("--size", size, "Window size WxH in screen coordinates")->capture_default_str();
   cli.add_option("--script", script, "JSON script of actions to run, then exit (docs/VIEWER.md)")
       ->check(CLI::ExistingFile);
   cli.add_option("--screenshot", screenshot, "Write the final frame to this PNG, then exit");
   cli.add_option("--bench-frames", benchFrames,
                  "Render N frames with playback running, print frame times as JSON, exit")
       ->check(CLI::NonNegativeNumber);
-  cli.add_option("--ui-scale", uiScale, "UI scale on top of the monitor's content scale")
+  bool noSettings = false;
+  cli.add_flag("--no-settings", noSettings,
+               "Neither read nor write the saved settings (also EIGENWALKER_NO_SETTINGS=1)");
+  auto* scaleOption = cli.add_option("--ui-scale", uiScale, "UI scale on top of the monitor's content scale")
       ->check(CLI::Range(0.5f, 4.0f))
       ->capture_default_str();
   CLI11_PARSE(cli, argc, argv);
@@ -47,5 +50,8 @@ int main(int argc, char** argv) {
   if (!screenshot.empty()) options.screenshot = screenshot;
   options.benchFrames = benchFrames;
   options.uiScale = uiScale;
+  options.sizeGiven = sizeOption->count() > 0;
+  options.uiScaleGiven = scaleOption->count() > 0;
+  options.useSettings = !noSettings;
   return ew::ui::runApp(options);
 }

@@ -133,6 +133,11 @@ WalkingTrial loadWalkingTrial(const fs::path& file, const LoadOptions& options) 
 
 Dataset loadDataset(const std::vector<fs::path>& paths, const LoadOptions& options,
                     const ProgressFn& progress) {
+  return loadDatasetPerFile(paths, [&options](const fs::path&) { return options; }, progress);
+}
+
+Dataset loadDatasetPerFile(const std::vector<fs::path>& paths, const LoadOptionsFn& optionsFor,
+                           const ProgressFn& progress) {
   Dataset dataset;
   const auto pending = collectTrialFiles(paths, dataset.warnings);
   const int total = static_cast<int>(pending.size());
@@ -140,7 +145,7 @@ Dataset loadDataset(const std::vector<fs::path>& paths, const LoadOptions& optio
     const auto& p = pending[static_cast<size_t>(i)];
     if (progress) progress(i, total, p.path.string());
     try {
-      DatasetTrial trial{p.info, loadWalkingTrial(p.path, options)};
+      DatasetTrial trial{p.info, loadWalkingTrial(p.path, optionsFor(p.path))};
       if (trial.info.source.empty()) trial.info.source = trial.trial.joints.format;
       dataset.trials.push_back(std::move(trial));
     } catch (const Error& e) {

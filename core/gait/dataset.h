@@ -55,5 +55,9 @@ using ProgressFn = std::function<void(int done, int total, const std::string& cu
 // in a folder, files of unknown type are ignored and unreadable trials become warnings.
 Dataset loadDataset(const std::vector<std::filesystem::path>& paths,
                     const LoadOptions& options = {}, const ProgressFn& progress = {});
+// The same with options chosen per file (the viewer's per-file unit and rate overrides).
+using LoadOptionsFn = std::function<LoadOptions(const std::filesystem::path& file)>;
+Dataset loadDatasetPerFile(const std::vector<std::filesystem::path>& paths, const LoadOptionsFn& optionsFor,
+                           const ProgressFn& progress = {});
 
 }  // namespace ew

@@ -37,6 +37,23 @@ TEST(Dataset, ManifestKeepsSubjectsConditionsAndExtraColumns) {
   EXPECT_NEAR(d.trials[1].trial.cycles.strideHz, 0.95, 0.02);
 }
 
+TEST(Dataset, PerFileOptionsReachOnlyTheirFile) {
+  const auto dir = test::makeTempDir("perfile");
+  const auto a = writeWalker(dir, "a.csv", 0.9);
+  writeWalker(dir, "b.csv", 0.9);
+  // Declaring a's frames at twice their rate doubles its stride frequency; b is untouched.
+  const Dataset d = loadDatasetPerFile({dir}, [&a](const std::filesystem::path& f) {
+    LoadOptions o;
+    if (f.filename() == a.filename()) o.rateHzOverride = 200.0;  // written at 100 Hz
+    return o;
+  });
+  ASSERT_EQ(d.trials.size(), 2u);
+  for (const auto& t : d.trials) {
+    const bool isA = t.info.file.find("a.csv") != std::string::npos;
+    EXPECT_NEAR(t.trial.cycles.strideHz, isA ? 1.8 : 0.9, 0.04) << t.info.file;
+  }
+}
+
 TEST(Dataset, FolderIsRecursiveAndSkipsUnusableFilesWithWarnings) {
   const auto dir = test::makeTempDir("folder");
   writeWalker(dir, "x/07_01.csv", 0.9);

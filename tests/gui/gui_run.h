@@ -30,14 +30,20 @@ inline std::string readAll(const std::filesystem::path& file) {
 
 inline std::string quote(const std::string& s) { return "'" + s + "'"; }
 
-// Runs `eigenwalker ARGS` in a fresh X server. `dir` receives out.txt / err.txt.
-inline RunResult runViewer(const std::filesystem::path& dir, const std::string& args) {
+// Settings off: every run starts from the defaults and leaves no file behind (hermetic).
+inline constexpr const char* kNoSettings = "EIGENWALKER_NO_SETTINGS=1";
+
+// Runs `eigenwalker ARGS` in a fresh X server. `dir` receives out.txt / err.txt. `extraEnv`
+// ("NAME=value …") replaces the default kNoSettings.
+inline RunResult runViewer(const std::filesystem::path& dir, const std::string& args,
+                           const std::string& extraEnv = kNoSettings) {
   // Leak checking is off for the viewer process: Mesa's driver is dlclose'd at exit, so
-  // LeakSanitizer reports its allocations with no stack to attribute or suppress them by.
-  // AddressSanitizer's memory-error checks and UBSan stay on; the suppressions cover the
-  // GL stack for whoever turns leak checking back on (ASAN_OPTIONS=detect_leaks=1).
+  // LeakSanitizer reports its allocations with no stack to attribute or suppress them by
+  // (slow unwinding does not help and makes every run minutes long). AddressSanitizer's
+  // memory-error checks and UBSan stay on; the suppressions cover the GL stack for whoever
+  // turns leak checking back on (ASAN_OPTIONS=detect_leaks=1).
   const std::string env = std::string("ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 LSAN_OPTIONS=suppressions=") +
-                          EW_GUI_LSAN_SUPPRESSIONS + ":print_suppressions=0 ";
+                          EW_GUI_LSAN_SUPPRESSIONS + ":print_suppressions=0 " + extraEnv + " ";
   const auto out = dir / "out.txt", err = dir / "err.txt";
   const std::string cmd = "xvfb-run -a -s '-screen 0 1920x1080x24' env " + env + quote(EW_GUI_PATH) + " " + args +
                           " > " + quote(out.string()) + " 2> " + quote(err.string());

@@ -6,6 +6,13 @@
 #include <stdexcept>
 
 #include "core/engine/model.h"
+#include "core/engine/model_file.h"
+#include "core/io/bvh_writer.h"
+#include "core/io/joint_csv.h"
+#include "core/io/load_trial.h"
+#include "ui/app/script.h"
+#include "ui/app/theme.h"
+#include "ui/app/tour.h"
 #include "core/engine/projection.h"
 
 namespace ew::ui::actions {
@@ -20,12 +27,13 @@ void startLoad(AppState& s, std::vector<std::filesystem::path> paths) {
                                           : "Loading " + paths.front().filename().string() +
                                                 (paths.size() > 1 ? " …" : "");
   s.log.info(title);
-  s.jobs.load.start(title, [paths](JobProgress& progress) -> std::shared_ptr<const Population> {
+  s.jobs.load.start(title, [paths, overrides = s.doc.fileOverrides](
+                               JobProgress& progress) -> std::shared_ptr<const Population> {
     auto report = [&progress](int done, int total, const std::string& what) {
       progress.set(done, total, what);
     };
     if (paths.empty()) return std::make_shared<const Population>(defaultPopulation(report));
-    return std::make_shared<const Population>(loadPopulation(paths, report));
+    return std::make_shared<const Population>(loadPopulation(paths, report, overrides));
   });
 }
 
@@ -57,6 +65,11 @@ void pollJobs(AppState& s) {
       s.doc.population = pop;
       s.doc.models.reset();
       s.doc.sourcePaths = s.jobs.loadingPaths;
+      for (auto it = s.doc.sourcePaths.rbegin(); it != s.doc.sourcePaths.rend(); ++it) {
+        std::erase(s.recentPaths, *it);
+        s.recentPaths.insert(s.recentPaths.begin(), *it);
+      }
+      if (s.recentPaths.size() > 10) s.recentPaths.resize(10);
       ++s.doc.generation;
       s.doc.walker = 0;
       s.doc.editedSd.clear();
@@ -84,6 +97,27 @@ void pollJobs(AppState& s) {
       ++s.jobs.failures;
       s.jobs.lastError = "Could not build the models: " + outcome->error;
       s.log.error(s.jobs.lastError);
+    }
+  }
+  if (auto outcome = s.jobs.summary.poll()) {
+    if (outcome->value) {
+      s.dataSummary = *outcome->value;
+    } else {
+      s.log.error("Data summary failed: " + outcome->error);
+    }
+  }
+  if (auto outcome = s.jobs.analysis.poll()) {
+    if (outcome->value) {
+      const auto& result = *outcome->value;
+      s.analysis.add(result);
+      s.jobs.analysisError.clear();
+      s.log.info("Analysis: " + std::to_string(result->subjects.size()) + " held-out subjects × " +
+                 std::to_string(result->anglesDeg.size()) + " view angles in " +
+                 std::to_string(static_cast<int>(result->seconds * 1000.0)) + " ms");
+    } else {
+      s.jobs.analysisFailed = s.jobs.analysisRunning;
+      s.jobs.analysisError = "Analysis failed: " + outcome->error;
+      s.log.error(s.jobs.analysisError);
     }
   }
   if (s.jobs.pendingOpen && !s.jobs.load.running() && !s.jobs.models.running()) {
@@ -228,27 +262,46 @@ void setPlaying(AppState& s, bool playing) { s.view.playback.playing = playing; 
 
 std::vector<std::string> overlayNames() {
   return {"depth_error", "error_lines", "error_bars", "metrics", "ghost",
-          "camera",      "grid",        "reprojection", "stick_figure", "trails"};
+          "camera",      "grid",        "reprojection", "stick_figure", "trails", "point_lights"};
+}
+
+namespace {
+
+// The flag of overlay `name`, or nullptr.
+template <class O>
+auto overlayFlag(O& o, const std::string& name) -> decltype(&o.trails) {
+  return name == "depth_error"    ? &o.depthErrorColour
+         : name == "error_lines"  ? &o.errorLines
+         : name == "error_bars"   ? &o.errorBars
+         : name == "metrics"      ? &o.metrics
+         : name == "ghost"        ? &o.ghost
+         : name == "camera"       ? &o.cameraGlyph
+         : name == "grid"         ? &o.grid
+         : name == "reprojection" ? &o.reprojection
+         : name == "stick_figure" ? &o.stickFigure
+         : name == "trails"       ? &o.trails
+         : name == "point_lights" ? &o.pointLights
+                                  : nullptr;
+}
+
+[[noreturn]] void unknownOverlay(const std::string& name) {
+  std::string known;
+  for (const auto& n : overlayNames()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown overlay \"" + name + "\" (known: " + known + ")");
+}
+
+}  // namespace
+
+bool overlay(const AppState& s, const std::string& name) {
+  const bool* flag = overlayFlag(s.view.overlays, name);
+  if (!flag) unknownOverlay(name);
+  return *flag;
 }
 
 void setOverlay(AppState& s, const std::string& name, bool on) {
   auto& o = s.view.overlays;
-  bool* target = name == "depth_error"    ? &o.depthErrorColour
-                 : name == "error_lines"  ? &o.errorLines
-                 : name == "error_bars"   ? &o.errorBars
-                 : name == "metrics"      ? &o.metrics
-                 : name == "ghost"        ? &o.ghost
-                 : name == "camera"       ? &o.cameraGlyph
-                 : name == "grid"         ? &o.grid
-                 : name == "reprojection" ? &o.reprojection
-                 : name == "stick_figure" ? &o.stickFigure
-                 : name == "trails"       ? &o.trails
-                                          : nullptr;
-  if (!target) {
-    std::string known;
-    for (const auto& n : overlayNames()) known += (known.empty() ? "" : ", ") + n;
-    throw std::invalid_argument("unknown overlay \"" + name + "\" (known: " + known + ")");
-  }
+  bool* target = overlayFlag(o, name);
+  if (!target) unknownOverlay(name);
   *target = on;
 }
 
@@ -264,6 +317,253 @@ void setCamera(AppState& s, const std::string& preset) {
   } else {
     throw std::invalid_argument("unknown camera \"" + preset +
                                 "\" (known: three_quarter, front, side, top)");
+  }
+}
+
+// [SECTION] Export
+
+void requestPng(AppState& s, std::filesystem::path path, CaptureView view) {
+  if (path.empty()) throw std::invalid_argument("no file name for the PNG");
+  s.exports.png = PngRequest{std::move(path), view, 2};
+}
+
+CaptureView captureViewFromName(const std::string& name) {
+  if (name == "window") return CaptureView::Window;
+  if (name == "input") return CaptureView::Input;
+  if (name == "reconstruction") return CaptureView::Reconstruction;
+  throw std::invalid_argument("unknown view \"" + name + "\" (known: window, input, reconstruction)");
+}
+
+void startVideoExport(AppState& s, const VideoSettings& settings) {
+  requireLoaded(s);
+  if (s.exports.video) throw std::invalid_argument("a video export is already running");
+  if (s.doc.mode == Mode::Reconstruct ? !s.derived.display() : !s.derived.explore())
+    throw std::invalid_argument("nothing to export yet");
+  s.exports.video = std::make_unique<VideoExport>(settings, playbackStrideHz(s));
+  s.log.info("Exporting " + std::to_string(s.exports.video->frameCount()) + " frames to " + settings.path.string());
+}
+
+void cancelVideoExport(AppState& s) {
+  if (!s.exports.video) return;
+  s.log.warning("Video export cancelled: " + s.exports.video->settings().path.string());
+  s.exports.video.reset();
+}
+
+void reportExportError(AppState& s, const std::string& message) {
+  ++s.exports.failures;
+  s.exports.lastError = message;
+  s.log.error(message);
+}
+
+void exportCsv(AppState& s, const std::filesystem::path& path, std::optional<double> cycles) {
+  requireLoaded(s);
+  const WalkerMotion m = displayedWalkerMotion(s, cycles);
+  writeJointCsv(path, m.framesX45, m.rateHz,
+                {"eigenwalker viewer: " + m.description, "cycles=" + std::to_string(m.cycles)});
+  s.log.info("Wrote " + path.string() + " (" + std::to_string(m.framesX45.rows()) + " frames, " + m.description + ")");
+}
+
+void exportBvh(AppState& s, const std::filesystem::path& path, std::optional<double> cycles) {
+  requireLoaded(s);
+  const WalkerMotion m = displayedWalkerMotion(s, cycles);
+  writeBvh(path, m.framesX45, m.rateHz);
+  s.log.info("Wrote " + path.string() + " (" + std::to_string(m.framesX45.rows()) + " frames, " + m.description + ")");
+}
+
+void exportModel(AppState& s, const std::filesystem::path& path) {
+  requireLoaded(s);
+  if (!s.doc.models) throw std::invalid_argument("models not built yet");
+  const EigenwalkerModel* model = &s.doc.models->all;
+  std::string what = "the model of every walker";
+  if (s.doc.mode == Mode::Reconstruct) {
+    const std::string& subject = s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)].subject;
+    const auto it = s.doc.models->withoutSubject.find(subject);
+    if (it == s.doc.models->withoutSubject.end())
+      throw std::invalid_argument("no leave-one-out model for subject " + subject);
+    model = &it->second;
+    what = "the model without " + subject;
+  }
+  saveModel(*model, path);
+  s.log.info("Wrote " + path.string() + " (" + what + ", " + std::to_string(model->walkerCount()) + " walkers)");
+}
+
+// [SECTION] Analysis
+
+AnalysisKey analysisKey(const AppState& s) {
+  return {s.doc.generation, s.doc.recon.components, s.doc.recon.sigma2Mm2};
+}
+
+void requestAnalysis(AppState& s) {
+  if (!s.doc.population || s.jobs.load.running() || s.jobs.analysis.running()) return;
+  const AnalysisKey key = analysisKey(s);
+  if (s.analysis.find(key) || s.jobs.analysisFailed == key) return;
+  auto population = s.doc.population;
+  s.jobs.analysisRunning = key;
+  s.jobs.analysis.start("Analysis (leave-one-subject-out, −90…90°)",
+                        [population, key](JobProgress& progress) -> std::shared_ptr<const AnalysisResult> {
+                          return std::make_shared<const AnalysisResult>(computeAnalysis(
+                              *population, key, [&progress](int done, int total, const std::string& what) {
+                                progress.set(done, total, what);
+                              }));
+                        });
+}
+
+std::shared_ptr<const AnalysisResult> analysisNow(AppState& s) {
+  requireLoaded(s);
+  const AnalysisKey key = analysisKey(s);
+  if (auto cached = s.analysis.find(key)) return cached;
+  auto result = std::make_shared<const AnalysisResult>(computeAnalysis(*s.doc.population, key, {}));
+  s.analysis.add(result);
+  return result;
+}
+
+void exportAnalysisCsv(AppState& s, const std::filesystem::path& path) {
+  const auto result = analysisNow(s);
+  const std::string subject =
+      s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)].subject;
+  writeAnalysisCsv(*result, subject, path);
+  s.log.info("Wrote " + path.string() + " (analysis curves, " + subject + " and the mean)");
+}
+
+void setAnalysisMetric(AppState& s, const std::string& name) {
+  if (name == "E_a") {
+    s.panels.analysis.metric = ErrorMetric::AbsMm2;
+  } else if (name == "E_r") {
+    s.panels.analysis.metric = ErrorMetric::Relative;
+  } else if (name == "MPJPE") {
+    s.panels.analysis.metric = ErrorMetric::MpjpeMm;
+  } else {
+    throw std::invalid_argument("metric must be \"E_a\", \"E_r\" or \"MPJPE\"");
+  }
+}
+
+// [SECTION] Opening data
+
+void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
+  if (paths.empty()) throw std::invalid_argument("nothing dropped");
+  for (const auto& p : paths) {
+    std::error_code ec;
+    if (!std::filesystem::exists(p, ec)) throw std::invalid_argument(p.string() + ": no such file or folder");
+    if (!std::filesystem::is_directory(p, ec) && !isSupportedDataFile(p))
+      throw std::invalid_argument(p.string() + ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv) or folder");
+  }
+  s.log.info("Dropped " + std::to_string(paths.size()) + (paths.size() == 1 ? " item" : " items"));
+  open(s, paths);
+}
+
+void setFileOverride(AppState& s, const std::filesystem::path& file, const std::string& units, double rateHz) {
+  if (!std::isfinite(rateHz) || rateHz < 0.0 || rateHz > 10000.0)
+    throw std::invalid_argument("rate must lie in [0, 10000] Hz (0 = the file's)");
+  LoadOptions o;
+  if (!units.empty()) {
+    if (units != "cmu") (void)unitToMm(units, file.string());  // throws for an unknown unit
+    o.unitsOverride = units;
+  }
+  if (rateHz > 0.0) o.rateHzOverride = rateHz;
+  const std::string key = fileKey(file);
+  if (!o.unitsOverride && !o.rateHzOverride) {
+    s.doc.fileOverrides.erase(key);
+  } else {
+    s.doc.fileOverrides[key] = o;
+  }
+}
+
+void reloadWithOverrides(AppState& s) {
+  if (s.doc.sourcePaths.empty()) throw std::invalid_argument("the synthetic default has no files to override");
+  open(s, s.doc.sourcePaths);
+}
+
+void requestDataSummary(AppState& s) {
+  if (!s.doc.population || s.jobs.load.running() || s.jobs.summary.running()) return;
+  if (s.dataSummary && s.dataSummary->generation == s.doc.generation) return;
+  auto paths = s.doc.sourcePaths;
+  auto overrides = s.doc.fileOverrides;
+  const auto generation = s.doc.generation;
+  s.jobs.summary.start("Summarising the data",
+                       [paths, overrides, generation](JobProgress& progress) -> std::shared_ptr<const DataSummary> {
+                         auto d = summarizeData(paths, overrides, [&progress](int done, int total, const std::string& w) {
+                           progress.set(done, total, w);
+                         });
+                         d.generation = generation;
+                         return std::make_shared<const DataSummary>(std::move(d));
+                       });
+}
+
+std::shared_ptr<const DataSummary> dataSummaryNow(AppState& s) {
+  requireLoaded(s);
+  if (s.dataSummary && s.dataSummary->generation == s.doc.generation) return s.dataSummary;
+  auto d = summarizeData(s.doc.sourcePaths, s.doc.fileOverrides);
+  d.generation = s.doc.generation;
+  s.dataSummary = std::make_shared<const DataSummary>(std::move(d));
+  return s.dataSummary;
+}
+
+void exportDataSummary(AppState& s, const std::filesystem::path& path) {
+  const auto d = dataSummaryNow(s);
+  writeDataSummaryJson(*d, path);
+  s.log.info("Wrote " + path.string() + " (" + std::to_string(d->rows.size()) + " trials)");
+}
+
+// [SECTION] Teaching
+
+void setTheme(AppState& s, const std::string& name) { s.view.theme = themeFromName(name); }
+
+namespace {
+
+void applyTourStep(AppState& s) {
+  const auto& steps = tourSteps();
+  const auto& step = steps[static_cast<std::size_t>(s.panels.tour.step)];
+  const auto script = parseScript(nlohmann::json::parse(step.actionsJson), std::string("tour step ") + step.title);
+  for (const auto& a : script) applyAction(s, a);
+  s.log.info(std::string("Tour ") + std::to_string(s.panels.tour.step + 1) + "/" + std::to_string(steps.size()) +
+             ": " + step.title);
+}
+
+}  // namespace
+
+void tourStart(AppState& s) {
+  requireLoaded(s);
+  s.panels.tour.active = true;
+  s.panels.tour.step = 0;
+  applyTourStep(s);
+}
+
+void tourNext(AppState& s) {
+  if (!s.panels.tour.active) throw std::invalid_argument("the tour has not started");
+  if (s.panels.tour.step + 1 >= static_cast<int>(tourSteps().size())) {
+    tourEnd(s);
+    return;
+  }
+  ++s.panels.tour.step;
+  applyTourStep(s);
+}
+
+void tourBack(AppState& s) {
+  if (!s.panels.tour.active) throw std::invalid_argument("the tour has not started");
+  if (s.panels.tour.step == 0) return;
+  --s.panels.tour.step;
+  applyTourStep(s);
+}
+
+void tourEnd(AppState& s) {
+  if (s.panels.tour.active) s.log.info("Tour ended");
+  s.panels.tour.active = false;
+  s.panels.tour.step = 0;
+  s.view.overlays.pointLights = false;
+  s.panels.analysis.open = false;
+}
+
+void showPanel(AppState& s, const std::string& name, bool shown) {
+  if (name == "export") {
+    s.panels.exports.open = shown;
+  } else if (name == "analysis") {
+    s.panels.analysis.open = shown;
+  } else if (name == "help") {
+    s.panels.help.open = shown;
+  } else if (name == "data") {
+    s.panels.data.open = shown;
+  } else {
+    throw std::invalid_argument("unknown panel \"" + name + "\" (known: export, analysis, help, data)");
   }
 }
 

@@ -4,6 +4,8 @@
 // std::invalid_argument with a readable message when it cannot apply.
 
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,10 +35,64 @@ void coefficientsFromWalker(AppState& s);  // explorer starts from the selected 
 void setPhase(AppState& s, double phase01);
 void setPlaying(AppState& s, bool playing);
 // Overlay names: depth_error, error_lines, error_bars, metrics, ghost, camera, grid,
-// reprojection, stick_figure, trails.
+// reprojection, stick_figure, trails, point_lights.
 void setOverlay(AppState& s, const std::string& name, bool on);
 std::vector<std::string> overlayNames();
+bool overlay(const AppState& s, const std::string& name);  // throws for an unknown name
 void setCamera(AppState& s, const std::string& preset);  // three_quarter, front, side, top
+
+// [SECTION] Export (ui/app/export.h). Paths are written atomically.
+// A PNG of the window or of one view, written after the next frames are drawn.
+void requestPng(AppState& s, std::filesystem::path path, CaptureView view);
+CaptureView captureViewFromName(const std::string& name);  // window, input, reconstruction
+// Starts rendering a video in the background of the frame loop (a progress bar shows
+// it); throws std::invalid_argument / std::runtime_error when it cannot start.
+void startVideoExport(AppState& s, const VideoSettings& settings);
+void cancelVideoExport(AppState& s);
+// The displayed walker (displayedWalkerMotion) as 15-joint CSV / BVH; the model the
+// reconstruction uses (the leave-one-out model of the held-out subject, every component;
+// explore mode: the model of every walker). Throw with a readable message on failure.
+void exportCsv(AppState& s, const std::filesystem::path& path, std::optional<double> cycles = std::nullopt);
+void exportBvh(AppState& s, const std::filesystem::path& path, std::optional<double> cycles = std::nullopt);
+void exportModel(AppState& s, const std::filesystem::path& path);
+// Records a failed PNG / video export: log, header, failure count.
+void reportExportError(AppState& s, const std::string& message);
+
+// [SECTION] Analysis (ui/app/analysis.h)
+AnalysisKey analysisKey(const AppState& s);
+// Starts the analysis for the current inputs in the background unless cached or running.
+void requestAnalysis(AppState& s);
+// The analysis for the current inputs: cached, or computed now (blocking; scripts).
+std::shared_ptr<const AnalysisResult> analysisNow(AppState& s);
+// The current curves (selected subject and mean, LSQ and MAP, every metric) as CSV.
+void exportAnalysisCsv(AppState& s, const std::filesystem::path& path);
+// The plotted metric: "E_a", "E_r" or "MPJPE".
+void setAnalysisMetric(AppState& s, const std::string& name);
+
+// [SECTION] Opening data
+// Files or folders dropped on the window (or the script action "drop"): each must exist
+// and be a folder or a supported file (.c3d .bvh .asf .amc .trc .csv); then opened.
+void drop(AppState& s, const std::vector<std::filesystem::path>& paths);
+// Unit ("" = the file's; mm, cm, m, in, cmu) and frame rate (0 = the file's) for one file;
+// takes effect at the next open (reloadWithOverrides reopens the current data).
+void setFileOverride(AppState& s, const std::filesystem::path& file, const std::string& units, double rateHz);
+void reloadWithOverrides(AppState& s);
+// The data table for the current data: started in the background / computed now (scripts).
+void requestDataSummary(AppState& s);
+std::shared_ptr<const DataSummary> dataSummaryNow(AppState& s);
+void exportDataSummary(AppState& s, const std::filesystem::path& path);
+
+// [SECTION] Teaching
+void setTheme(AppState& s, const std::string& name);  // dark, light, projector
+// The guided tour (ui/app/tour.h): each step applies its actions through applyAction,
+// exactly as a script would. Next on the last step ends the tour.
+void tourStart(AppState& s);
+void tourNext(AppState& s);
+void tourBack(AppState& s);
+void tourEnd(AppState& s);
+
+// Floating panels: "export", "analysis", "help", "data"; throws for an unknown name.
+void showPanel(AppState& s, const std::string& name, bool shown);
 
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).
 int coefficientCount(const AppState& s);

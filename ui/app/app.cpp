@@ -13,6 +13,8 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <string>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -22,6 +24,7 @@
 #include "ui/app/app_state.h"
 #include "ui/app/layout.h"
 #include "ui/app/screenshot.h"
+#include "ui/app/settings.h"
 #include "ui/app/script.h"
 #include "ui/app/theme.h"
 #include "ui/render/renderer.h"
@@ -101,11 +104,33 @@ struct FrameStats {
 
 // [SECTION] The application
 
+// The saved settings when they are on (nothing otherwise); a problem reading them goes
+// to `warning` (logged once the log exists) and the defaults are used.
+std::optional<Settings> loadSettings(const AppOptions& options, std::string& warning) {
+  if (!options.useSettings || settingsDisabledByEnvironment()) return std::nullopt;
+  const auto file = settingsFile();
+  if (!file) return std::nullopt;
+  try {
+    return readSettings(*file);
+  } catch (const std::exception& e) {
+    warning = e.what();
+    return Settings{};
+  }
+}
+
+int windowDimension(const AppOptions& o, const std::optional<Settings>& st, bool width) {
+  const int given = width ? o.width : o.height;
+  if (o.sizeGiven || !st || !st->windowWidth || !st->windowHeight) return given;
+  const int saved = width ? *st->windowWidth : *st->windowHeight;
+  return saved >= 320 && saved <= 16384 ? saved : given;
+}
+
 class App {
  public:
   explicit App(const AppOptions& options)
       : options_(options),
-        window_(createWindow(options.width, options.height)),
+        settings_(loadSettings(options, settingsWarning_)),
+        window_(createWindow(windowDimension(options, settings_, true), windowDimension(options, settings_, false))),
         imgui_(window_.get()),
         renderer_() {
     state_.log.setEcho(options.script.has_value() || options.screenshot.has_value() || options.benchFrames > 0);
@@ -114,10 +139,61 @@ class App {
     scripted_ = options.script.has_value() || options.screenshot.has_value() || options.benchFrames > 0;
     glfwSwapInterval(scripted_ ? 0 : 1);
     if (options.script) runner_ = ScriptRunner(readScript(*options.script), options.script->string());
-    actions::open(state_, options.data);
+    std::vector<std::filesystem::path> data = options.data;
+    if (settings_) {
+      applySettings(state_, *settings_);
+      if (options.uiScaleGiven) state_.view.uiScale = options.uiScale;
+      if (const auto file = settingsFile()) state_.log.info("settings: " + file->string());
+      if (data.empty() && !settings_->data.empty()) {
+        std::vector<std::filesystem::path> last(settings_->data.begin(), settings_->data.end());
+        std::error_code ec;
+        const bool allThere = std::all_of(last.begin(), last.end(),
+                                          [&ec](const auto& p) { return std::filesystem::exists(p, ec); });
+        if (allThere) {
+          data = std::move(last);
+        } else {
+          state_.log.warning("settings: the data last opened is gone; opening the synthetic default");
+        }
+      }
+    }
+    if (!settingsWarning_.empty()) state_.log.warning(settingsWarning_);
+    actions::open(state_, data);
+    glfwSetWindowUserPointer(window_.get(), this);
+    glfwSetDropCallback(window_.get(), &App::onDrop);
   }
 
+  // Runs the frame loop; saves the settings (when on) however it ends.
   int run() {
+    const int code = loop();
+    if (settings_) {
+      if (const auto file = settingsFile()) {
+        int w = 0, h = 0;
+        glfwGetWindowSize(window_.get(), &w, &h);
+        try {
+          writeSettings(*file, captureSettings(state_, w, h));
+        } catch (const std::exception& e) {
+          std::fprintf(stderr, "eigenwalker: %s\n", e.what());
+        }
+      }
+    }
+    return code;
+  }
+
+ private:
+  // Files / folders dropped on the window: the same action as the script's "drop".
+  static void onDrop(GLFWwindow* window, int count, const char** paths) {
+    auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
+    if (!app || count <= 0) return;
+    std::vector<std::filesystem::path> dropped(paths, paths + count);
+    try {
+      actions::drop(app->state_, dropped);
+    } catch (const std::exception& e) {
+      app->state_.log.error(e.what());
+      app->state_.jobs.lastError = e.what();
+    }
+  }
+
+  int loop() {
     auto last = std::chrono::steady_clock::now();
     while (!glfwWindowShouldClose(window_.get()) && !state_.quitRequested) {
       const auto start = std::chrono::steady_clock::now();
@@ -134,6 +210,7 @@ class App {
       }
       state_.derived.update(state_.doc);
       state_.view.playback.advance(dt, actions::playbackStrideHz(state_));
+      stepVideoExport();
 
       const auto t0 = std::chrono::steady_clock::now();
       drawFrame(dt);
@@ -141,6 +218,7 @@ class App {
         gl::finish();
         profile_->draw += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
       }
+      capturePng();
       if (auto file = runner_.takeCapture()) {
         int w = 0, h = 0;
         glfwGetFramebufferSize(window_.get(), &w, &h);
@@ -172,7 +250,7 @@ class App {
           std::fflush(stdout);
           return 0;
         }
-      } else if (scripted_ && runner_.finished() && !state_.jobs.busy()) {
+      } else if (scripted_ && runner_.finished() && !state_.busy()) {
         if (!finalScreenshotRequested_ && options_.screenshot) {
           finalScreenshotRequested_ = true;
           runner_.requestCapture(*options_.screenshot);
@@ -193,14 +271,94 @@ class App {
   }
 
  private:
+  // [SECTION] Exports that need the GL context: video frames and PNG read-back
+
+  void stepVideoExport() {
+    auto& e = state_.exports;
+    if (!e.video) return;
+    try {
+      // Scripted runs spend most of the time encoding; interactive runs keep the UI responsive.
+      if (e.video->step(state_, renderer_, scripted_ ? 400.0 : 40.0)) {
+        state_.log.info("Wrote " + e.video->settings().path.string() + " (" +
+                        std::to_string(e.video->frameCount()) + " frames in " +
+                        std::to_string(e.video->seconds()) + " s)");
+        e.video.reset();
+      }
+    } catch (const std::exception& ex) {
+      actions::reportExportError(state_, ex.what());
+      e.video.reset();
+    }
+  }
+
+  void capturePng() {
+    auto& e = state_.exports;
+    if (!e.png) return;
+    if (e.png->settleFrames > 0) {
+      --e.png->settleFrames;
+      return;
+    }
+    const PngRequest request = std::move(*e.png);
+    e.png.reset();
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_.get(), &w, &h);
+    std::optional<PixelRect> crop;
+    if (request.view != CaptureView::Window) {
+      const PanelRect r = request.view == CaptureView::Input ? state_.panels.input.lastImage
+                                                             : state_.panels.reconstruction.lastImage;
+      const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
+      crop = PixelRect{static_cast<int>(r.pos.x * fb.x), static_cast<int>(r.pos.y * fb.y),
+                       static_cast<int>(r.size.x * fb.x), static_cast<int>(r.size.y * fb.y)};
+      if (crop->width <= 0 || crop->height <= 0) {
+        actions::reportExportError(state_, request.path.string() + ": the view is not on screen");
+        return;
+      }
+    }
+    try {
+      writeScreenshot(request.path, w, h, crop);
+      state_.log.info("Wrote " + request.path.string());
+    } catch (const std::exception& ex) {
+      actions::reportExportError(state_, ex.what());
+    }
+  }
+
+  // [SECTION] Keyboard shortcuts (only when no text field has the keyboard)
+
+  void handleShortcuts() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput) return;
+    auto& p = state_.panels;
+    if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) p.help.open = !p.help.open;
+    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
+      if (p.help.open) {
+        p.help.open = false;
+      } else if (p.tour.active) {
+        actions::tourEnd(state_);
+      }
+    }
+    if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) state_.view.overlays.pointLights = !state_.view.overlays.pointLights;
+    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT, true)) state_.view.playback.step(-1, actions::playbackStrideHz(state_));
+    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT, true)) state_.view.playback.step(1, actions::playbackStrideHz(state_));
+    if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) {
+      const auto& e = p.exports;
+      const std::string stamp = std::to_string(std::chrono::duration_cast<std::chrono::seconds>(
+                                                    std::chrono::system_clock::now().time_since_epoch())
+                                                    .count());
+      actions::requestPng(state_, std::filesystem::path(e.folder.data()) /
+                                      (std::string(e.baseName.data()) + "-" + stamp + ".png"),
+                          CaptureView::Window);
+    }
+  }
+
   void updateScale() {
     float xs = 1.0f, ys = 1.0f;
     glfwGetWindowContentScale(window_.get(), &xs, &ys);
     state_.view.contentScale = std::max(xs, 0.5f);
-    const float scale = state_.view.contentScale * state_.view.uiScale;
-    if (scale != themeScale_) {
+    const float scale = state_.view.contentScale * state_.view.uiScale *
+                        (state_.view.theme == Theme::Projector ? kProjectorScale : 1.0f);
+    if (scale != themeScale_ || state_.view.theme != appliedTheme_) {
       themeScale_ = scale;
-      applyTheme(state_.fonts, scale);
+      appliedTheme_ = state_.view.theme;
+      applyTheme(state_.fonts, scale, state_.view.theme);
       ImGui_ImplOpenGL3_DestroyFontsTexture();
       ImGui_ImplOpenGL3_CreateFontsTexture();
     }
@@ -231,6 +389,12 @@ class App {
       p.jointErrors.draw(state_, ctx, l.jointErrors);
       p.profile.draw(state_, ctx, l.profile);
       p.log.draw(state_, ctx, l.log);
+      p.exports.draw(state_, ctx);
+      p.analysis.draw(state_, ctx);
+      p.data.draw(state_, ctx);
+      p.tour.draw(state_, ctx);
+      p.help.draw(state_, ctx);
+      handleShortcuts();
     } catch (const std::exception& e) {
       // An action refused its input, or GL failed: say so, keep running.
       ImGui::ErrorCheckEndFrameRecover(nullptr);
@@ -240,11 +404,14 @@ class App {
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_.get(), &w, &h);
     gl::bindDefaultFramebuffer(w, h);
-    gl::clear({0.05f, 0.055f, 0.065f, 1.0f});
+    gl::clear(state_.view.theme == Theme::Light ? glm::vec4{0.93f, 0.935f, 0.945f, 1.0f}
+                                                : glm::vec4{0.05f, 0.055f, 0.065f, 1.0f});
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   }
 
   AppOptions options_;
+  std::string settingsWarning_;
+  std::optional<Settings> settings_;  // loaded at start; nothing when settings are off
   GlfwSession glfw_;  // members initialise in this order: GLFW, window, ImGui, GL objects
   WindowPtr window_;
   ImGuiSession imgui_;
@@ -252,6 +419,7 @@ class App {
   AppState state_;
   ScriptRunner runner_;
   float themeScale_ = 0.0f;
+  Theme appliedTheme_ = Theme::Dark;
   bool scripted_ = false;
   bool finalScreenshotRequested_ = false;
   bool benchStarted_ = false;

@@ -16,6 +16,9 @@ struct AppOptions {
   std::optional<std::filesystem::path> screenshot; // PNG of the final frame, then exit
   int benchFrames = 0;                             // render N frames with playback, print JSON, exit
   float uiScale = 1.0f;
+  bool sizeGiven = false;     // --size given: wins over the saved window size
+  bool uiScaleGiven = false;  // --ui-scale given: wins over the saved UI scale
+  bool useSettings = true;    // --no-settings (or EIGENWALKER_NO_SETTINGS=1): neither read nor write
 };
 
 // Runs the viewer; returns the process exit code (0 = fine, 1 = an error, reported on

@@ -35,6 +35,7 @@ struct Document {
   std::shared_ptr<const ModelSet> models;
   std::uint64_t generation = 0;
   std::vector<std::filesystem::path> sourcePaths;  // empty: the synthetic default
+  FileOverrides fileOverrides;                      // per-file unit / frame-rate overrides
 
   Mode mode = Mode::Reconstruct;
   int walker = 0;                                  // index into population->walkers
@@ -57,7 +58,14 @@ struct Overlays {
   bool reprojection = true;      // 2D: the reconstruction projected back at α
   bool stickFigure = true;       // 2D: bones between the point-lights
   bool trails = true;            // 2D: each point-light's path over the cycle
+  bool pointLights = false;      // point-light display: joints as dots only, no skeleton,
+                                 // trails, ghost or error lines (Johansson 1973)
 };
+
+// Dark (default), light (UI panels light, the views stay dark so point-lights show), or
+// projector (dark, higher contrast, every size × kProjectorScale).
+enum class Theme { Dark, Light, Projector };
+inline constexpr float kProjectorScale = 1.3f;
 
 struct Playback {
   bool playing = true;
@@ -73,6 +81,7 @@ struct ViewState {
   OrbitCamera camera;
   Overlays overlays;
   Playback playback;
+  Theme theme = Theme::Dark;
   float uiScale = 1.0f;       // user setting, times the monitor's content scale
   float contentScale = 1.0f;  // from the monitor
 };

@@ -74,14 +74,25 @@ Population populationFromDataset(const Dataset& dataset, std::string label, cons
 
 }  // namespace
 
+std::string fileKey(const std::filesystem::path& file) {
+  std::error_code ec;
+  const auto abs = std::filesystem::weakly_canonical(file, ec);
+  return (ec ? std::filesystem::absolute(file).lexically_normal() : abs).string();
+}
+
 Population loadPopulation(const std::vector<std::filesystem::path>& paths,
-                          const LoadProgress& progress) {
+                          const LoadProgress& progress, const FileOverrides& overrides) {
   std::string label;
   for (const auto& path : paths) {
     if (!label.empty()) label += ", ";
     label += path.filename().empty() ? path.string() : path.filename().string();
   }
-  return populationFromDataset(loadDataset(paths, {}, progress), label, progress);
+  const LoadOptionsFn optionsFor = [&overrides](const std::filesystem::path& file) {
+    if (overrides.empty()) return LoadOptions{};
+    const auto it = overrides.find(fileKey(file));
+    return it == overrides.end() ? LoadOptions{} : it->second;
+  };
+  return populationFromDataset(loadDatasetPerFile(paths, optionsFor, progress), label, progress);
 }
 
 Population defaultPopulation(const LoadProgress& progress) {

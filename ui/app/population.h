@@ -4,6 +4,7 @@
 // or the synthetic default population.
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,10 +37,16 @@ struct Population {
 // Reports (done, total, what) from the loading thread.
 using LoadProgress = ProgressFn;
 
-// Loads and fits every trial the paths name. Throws ew::Error (or std::exception) when
-// nothing usable remains; fewer than 3 walkers cannot give a leave-one-out model.
+// Per-file load options (unit and frame-rate overrides), keyed by fileKey(path).
+using FileOverrides = std::map<std::string, LoadOptions>;
+// The key of a file in FileOverrides: its absolute, normalised path.
+std::string fileKey(const std::filesystem::path& file);
+
+// Loads and fits every trial the paths name (with each file's overrides). Throws ew::Error
+// (or std::exception) when nothing usable remains; fewer than 3 walkers cannot give a
+// leave-one-out model.
 Population loadPopulation(const std::vector<std::filesystem::path>& paths,
-                          const LoadProgress& progress = {});
+                          const LoadProgress& progress = {}, const FileOverrides& overrides = {});
 
 // The synthetic default population (no recorded data needed).
 Population defaultPopulation(const LoadProgress& progress = {});

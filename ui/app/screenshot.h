@@ -1,13 +1,21 @@
 #pragma once
-// Writes the current default framebuffer (the whole window, as drawn) to a PNG.
+// Writes the current default framebuffer (the whole window, as drawn, or a part of it)
+// to a PNG, atomically (a temporary sibling, then a rename).
 
 #include <filesystem>
+#include <optional>
 
 namespace ew::ui {
 
+// A rectangle in framebuffer pixels, top-left origin.
+struct PixelRect {
+  int x = 0, y = 0, width = 0, height = 0;
+};
+
 // Reads back width × height pixels of the framebuffer that was just drawn and writes them
-// as an RGB PNG (top row first), creating the folder if needed. Throws
-// std::runtime_error naming the file when it cannot be written.
-void writeScreenshot(const std::filesystem::path& file, int width, int height);
+// (or only `crop`, clamped to the framebuffer) as an RGB PNG (top row first), creating the
+// folder if needed. Throws std::runtime_error naming the file when it cannot be written.
+void writeScreenshot(const std::filesystem::path& file, int width, int height,
+                     std::optional<PixelRect> crop = std::nullopt);
 
 }  // namespace ew::ui

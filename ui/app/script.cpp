@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <set>
+#include <utility>
 #include <stdexcept>
 
 #include "ui/app/actions.h"
@@ -17,7 +19,10 @@ const std::set<std::string>& knownActions() {
       "open",         "select_subject", "set_mode",      "set_angle",   "set_method",
       "set_sigma2",   "set_components", "unknown_angle", "set_coefficient", "set_phase",
       "play",         "overlay",        "wait_frames",   "screenshot",  "set_camera",
-      "reset_coefficients", "randomise_coefficients", "coefficients_from_subject"};
+      "reset_coefficients", "randomise_coefficients", "coefficients_from_subject",
+      "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
+      "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour",
+      "drop",         "set_file_override", "reload", "export_data_summary"};
   return names;
 }
 
@@ -37,6 +42,26 @@ bool boolean(const ScriptAction& a) {
 std::string text(const ScriptAction& a) {
   if (!a.argument.is_string()) throw std::invalid_argument("expects a string");
   return a.argument.get<std::string>();
+}
+
+// A path string, or {"path": P, "cycles": N}.
+std::pair<std::filesystem::path, std::optional<double>> pathAndCycles(const ScriptAction& a) {
+  if (a.argument.is_string()) return {a.argument.get<std::string>(), std::nullopt};
+  if (a.argument.is_object() && a.argument.contains("path") && a.argument["path"].is_string()) {
+    std::optional<double> cycles;
+    if (a.argument.contains("cycles")) {
+      if (!a.argument["cycles"].is_number()) throw std::invalid_argument("cycles must be a number");
+      cycles = a.argument["cycles"].get<double>();
+    }
+    return {a.argument["path"].get<std::string>(), cycles};
+  }
+  throw std::invalid_argument("expects a path or {\"path\": P, \"cycles\": N}");
+}
+
+double numberField(const nlohmann::json& o, const char* key, double fallback) {
+  if (!o.contains(key)) return fallback;
+  if (!o[key].is_number()) throw std::invalid_argument(std::string(key) + " must be a number");
+  return o[key].get<double>();
 }
 
 }  // namespace
@@ -88,24 +113,9 @@ std::optional<std::filesystem::path> ScriptRunner::takeCapture() {
   return file;
 }
 
-void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
+void applyAction(AppState& s, const ScriptAction& a) {
   const auto& n = a.name;
-  if (n == "open") {
-    std::vector<std::filesystem::path> paths;
-    if (a.argument.is_string()) {
-      paths.emplace_back(a.argument.get<std::string>());
-    } else if (a.argument.is_array()) {
-      for (const auto& p : a.argument) {
-        if (!p.is_string()) throw std::invalid_argument("expects a path or a list of paths");
-        paths.emplace_back(p.get<std::string>());
-      }
-    } else if (!a.argument.is_null()) {
-      throw std::invalid_argument("expects a path, a list of paths, or null (the default population)");
-    }
-    failuresBefore_ = s.jobs.failures;
-    checkLoad_ = true;
-    actions::open(s, std::move(paths));
-  } else if (n == "select_subject") {
+  if (n == "select_subject") {
     actions::selectSubject(s, text(a));
   } else if (n == "set_mode") {
     const std::string m = text(a);
@@ -150,12 +160,6 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
         !a.argument[1].is_boolean())
       throw std::invalid_argument("expects [NAME, true|false]");
     actions::setOverlay(s, a.argument[0].get<std::string>(), a.argument[1].get<bool>());
-  } else if (n == "wait_frames") {
-    const double v = number(a);
-    if (v < 0 || v != std::floor(v)) throw std::invalid_argument("expects a whole number >= 0");
-    waitFrames_ = static_cast<int>(v);
-  } else if (n == "screenshot") {
-    requestCapture(text(a));
   } else if (n == "set_camera") {
     actions::setCamera(s, text(a));
   } else if (n == "reset_coefficients") {
@@ -163,20 +167,147 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   } else if (n == "randomise_coefficients") {
     s.derived.update(s.doc);
     actions::randomiseCoefficients(s, static_cast<unsigned>(number(a)));
+  } else if (n == "show_panel") {
+    if (!a.argument.is_array() || a.argument.size() != 2 || !a.argument[0].is_string() ||
+        !a.argument[1].is_boolean())
+      throw std::invalid_argument("expects [NAME, true|false]");
+    actions::showPanel(s, a.argument[0].get<std::string>(), a.argument[1].get<bool>());
+  } else if (n == "export_analysis_csv") {
+    actions::exportAnalysisCsv(s, text(a));
+  } else if (n == "set_analysis_metric") {
+    actions::setAnalysisMetric(s, text(a));
+  } else if (n == "set_file_override") {
+    if (!a.argument.is_object() || !a.argument.contains("file") || !a.argument["file"].is_string())
+      throw std::invalid_argument(R"(expects {"file": P, "units": "cm", "rate": 100})");
+    std::string units;
+    if (a.argument.contains("units")) {
+      if (!a.argument["units"].is_string()) throw std::invalid_argument("units must be a string");
+      units = a.argument["units"].get<std::string>();
+    }
+    actions::setFileOverride(s, a.argument["file"].get<std::string>(), units, numberField(a.argument, "rate", 0.0));
+  } else if (n == "export_data_summary") {
+    actions::exportDataSummary(s, text(a));
+  } else if (n == "set_theme") {
+    actions::setTheme(s, text(a));
+  } else if (n == "tour") {
+    const std::string t = text(a);
+    if (t == "start") {
+      actions::tourStart(s);
+    } else if (t == "next") {
+      actions::tourNext(s);
+    } else if (t == "back") {
+      actions::tourBack(s);
+    } else if (t == "end") {
+      actions::tourEnd(s);
+    } else {
+      throw std::invalid_argument("tour expects \"start\", \"next\", \"back\" or \"end\"");
+    }
+  } else if (n == "export_csv") {
+    s.derived.update(s.doc);
+    const auto [path, cycles] = pathAndCycles(a);
+    actions::exportCsv(s, path, cycles);
+  } else if (n == "export_bvh") {
+    s.derived.update(s.doc);
+    const auto [path, cycles] = pathAndCycles(a);
+    actions::exportBvh(s, path, cycles);
+  } else if (n == "export_model") {
+    s.derived.update(s.doc);
+    actions::exportModel(s, text(a));
   } else if (n == "coefficients_from_subject") {
     s.derived.update(s.doc);
     actions::coefficientsFromWalker(s);
+  } else {
+    throw std::invalid_argument("cannot be used here");
+  }
+}
+
+void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
+  const auto& n = a.name;
+  if (n == "open") {
+    std::vector<std::filesystem::path> paths;
+    if (a.argument.is_string()) {
+      paths.emplace_back(a.argument.get<std::string>());
+    } else if (a.argument.is_array()) {
+      for (const auto& p : a.argument) {
+        if (!p.is_string()) throw std::invalid_argument("expects a path or a list of paths");
+        paths.emplace_back(p.get<std::string>());
+      }
+    } else if (!a.argument.is_null()) {
+      throw std::invalid_argument("expects a path, a list of paths, or null (the default population)");
+    }
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = true;
+    actions::open(s, std::move(paths));
+  } else if (n == "drop" || n == "reload") {
+    std::vector<std::filesystem::path> paths;
+    if (n == "drop") {
+      if (!a.argument.is_array()) throw std::invalid_argument("expects a list of paths");
+      for (const auto& p : a.argument) {
+        if (!p.is_string()) throw std::invalid_argument("expects a list of paths");
+        paths.emplace_back(p.get<std::string>());
+      }
+    }
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = true;
+    if (n == "drop") {
+      actions::drop(s, paths);
+    } else {
+      actions::reloadWithOverrides(s);
+    }
+  } else if (n == "wait_frames") {
+    const double v = number(a);
+    if (v < 0 || v != std::floor(v)) throw std::invalid_argument("expects a whole number >= 0");
+    waitFrames_ = static_cast<int>(v);
+  } else if (n == "screenshot") {
+    requestCapture(text(a));
+  } else if (n == "export_png") {
+    if (a.argument.is_string()) {
+      actions::requestPng(s, a.argument.get<std::string>(), CaptureView::Window);
+    } else if (a.argument.is_object() && a.argument.contains("path") && a.argument["path"].is_string()) {
+      const std::string view = a.argument.contains("view") && a.argument["view"].is_string()
+                                   ? a.argument["view"].get<std::string>()
+                                   : std::string("window");
+      actions::requestPng(s, a.argument["path"].get<std::string>(), actions::captureViewFromName(view));
+    } else {
+      throw std::invalid_argument(R"(expects a path or {"path": P, "view": "window"|"input"|"reconstruction"})");
+    }
+    exportFailuresBefore_ = s.exports.failures;
+    checkExport_ = true;
+  } else if (n == "export_video") {
+    if (!a.argument.is_object() || !a.argument.contains("path") || !a.argument["path"].is_string())
+      throw std::invalid_argument(R"(expects {"path": P, "cycles": N, "fps": F, "width": W, "height": H})");
+    VideoSettings v;
+    v.path = a.argument["path"].get<std::string>();
+    v.cycles = numberField(a.argument, "cycles", v.cycles);
+    v.fps = numberField(a.argument, "fps", v.fps);
+    v.width = static_cast<int>(numberField(a.argument, "width", v.width));
+    v.height = static_cast<int>(numberField(a.argument, "height", v.height));
+    s.derived.update(s.doc);
+    actions::startVideoExport(s, v);
+    exportFailuresBefore_ = s.exports.failures;
+    checkExport_ = true;
+  } else {
+    applyAction(s, a);
   }
 }
 
 void ScriptRunner::step(AppState& s) {
   if (failed()) return;
   // Everything waits for the background work (and reports a failed load).
-  if (s.jobs.busy()) return;
+  if (s.busy()) return;
   if (checkLoad_) {
     checkLoad_ = false;
     if (s.jobs.failures != failuresBefore_) {
-      error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) + " (open): " + s.jobs.lastError;
+      error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) + " (" + actions_[next_ - 1].name +
+               "): " + s.jobs.lastError;
+      return;
+    }
+  }
+  if (checkExport_) {
+    checkExport_ = false;
+    if (s.exports.failures != exportFailuresBefore_) {
+      const ScriptAction& last = actions_[next_ - 1];
+      error_ = name_ + ": action " + std::to_string(last.position) + " (" + last.name + "): " + s.exports.lastError;
       return;
     }
   }
@@ -202,7 +333,9 @@ void ScriptRunner::step(AppState& s) {
       return;
     }
     s.log.info("script: " + a.name + " " + a.argument.dump());
-    if (a.name == "open" || a.name == "wait_frames" || a.name == "screenshot") return;
+    if (a.name == "open" || a.name == "drop" || a.name == "reload" || a.name == "wait_frames" || a.name == "screenshot" || a.name == "export_png" ||
+        a.name == "export_video")
+      return;
   }
 }
 

@@ -26,6 +26,11 @@ struct ScriptAction {
 std::vector<ScriptAction> readScript(const std::filesystem::path& file);
 std::vector<ScriptAction> parseScript(const nlohmann::json& script, const std::string& name);
 
+// Applies one action that needs no waiting (everything except open, wait_frames,
+// screenshot, export_png and export_video, which only a ScriptRunner can wait for): the
+// guided tour's steps go through it too. Throws std::invalid_argument on a bad argument.
+void applyAction(AppState& s, const ScriptAction& a);
+
 class ScriptRunner {
  public:
   ScriptRunner() = default;
@@ -37,7 +42,7 @@ class ScriptRunner {
   std::optional<std::filesystem::path> takeCapture();
 
   bool active() const { return !actions_.empty() || waitFrames_ > 0 || capture_; }
-  bool finished() const { return next_ >= actions_.size() && waitFrames_ == 0 && !capture_; }
+  bool finished() const { return next_ >= actions_.size() && waitFrames_ == 0 && !capture_ && !checkExport_; }
   bool failed() const { return !error_.empty(); }
   const std::string& error() const { return error_; }
 
@@ -53,6 +58,8 @@ class ScriptRunner {
   int waitFrames_ = 0;
   int failuresBefore_ = 0;
   bool checkLoad_ = false;                     // the last action opened data
+  int exportFailuresBefore_ = 0;
+  bool checkExport_ = false;                   // the last action started a PNG / video export
   std::optional<std::filesystem::path> capture_;
   int captureSettle_ = 0;
   bool captureDue_ = false;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
 #include <system_error>
 
 namespace ew::ui {
@@ -75,9 +76,73 @@ void applyColours(ImGuiStyle& style) {
   c[ImGuiCol_PlotHistogram] = accent;
 }
 
+// Light panels for rooms with the lights on; the accent darkened so it reads on white.
+void applyLightColours(ImGuiStyle& style) {
+  ImGui::StyleColorsLight(&style);
+  ImVec4* c = style.Colors;
+  const ImVec4 accent{0.86f, 0.45f, 0.08f, 1.0f};
+  const ImVec4 accentDim{0.93f, 0.60f, 0.30f, 1.0f};
+  c[ImGuiCol_Text] = {0.07f, 0.08f, 0.10f, 1.0f};
+  c[ImGuiCol_TextDisabled] = {0.36f, 0.39f, 0.44f, 1.0f};
+  c[ImGuiCol_WindowBg] = {0.965f, 0.968f, 0.975f, 1.0f};
+  c[ImGuiCol_PopupBg] = {1.0f, 1.0f, 1.0f, 0.98f};
+  c[ImGuiCol_Border] = {0.76f, 0.78f, 0.82f, 1.0f};
+  c[ImGuiCol_FrameBg] = {0.89f, 0.90f, 0.92f, 1.0f};
+  c[ImGuiCol_FrameBgHovered] = {0.84f, 0.86f, 0.89f, 1.0f};
+  c[ImGuiCol_FrameBgActive] = {0.80f, 0.82f, 0.86f, 1.0f};
+  c[ImGuiCol_TitleBg] = {0.90f, 0.91f, 0.93f, 1.0f};
+  c[ImGuiCol_TitleBgActive] = {0.86f, 0.87f, 0.90f, 1.0f};
+  c[ImGuiCol_CheckMark] = accent;
+  c[ImGuiCol_SliderGrab] = accentDim;
+  c[ImGuiCol_SliderGrabActive] = accent;
+  c[ImGuiCol_Button] = {0.86f, 0.87f, 0.90f, 1.0f};
+  c[ImGuiCol_ButtonHovered] = {0.80f, 0.82f, 0.86f, 1.0f};
+  c[ImGuiCol_ButtonActive] = accentDim;
+  c[ImGuiCol_Header] = {0.96f, 0.58f, 0.24f, 0.35f};
+  c[ImGuiCol_HeaderHovered] = {0.96f, 0.58f, 0.24f, 0.22f};
+  c[ImGuiCol_HeaderActive] = {0.96f, 0.58f, 0.24f, 0.50f};
+  c[ImGuiCol_Separator] = {0.76f, 0.78f, 0.82f, 1.0f};
+  c[ImGuiCol_TableHeaderBg] = {0.90f, 0.91f, 0.93f, 1.0f};
+  c[ImGuiCol_TableRowBgAlt] = {0.0f, 0.0f, 0.0f, 0.03f};
+  c[ImGuiCol_PlotHistogram] = accent;
+}
+
+// The dark theme with white text and brighter borders: contrast survives a washed-out projector.
+void applyProjectorColours(ImGuiStyle& style) {
+  applyColours(style);
+  ImVec4* c = style.Colors;
+  c[ImGuiCol_Text] = {1.0f, 1.0f, 1.0f, 1.0f};
+  c[ImGuiCol_TextDisabled] = {0.70f, 0.74f, 0.80f, 1.0f};
+  c[ImGuiCol_WindowBg] = {0.03f, 0.035f, 0.045f, 1.0f};
+  c[ImGuiCol_Border] = {0.34f, 0.37f, 0.43f, 1.0f};
+  c[ImGuiCol_FrameBg] = {0.16f, 0.18f, 0.21f, 1.0f};
+}
+
 }  // namespace
 
-void applyTheme(Fonts& fonts, float scale) {
+Theme themeFromName(const std::string& name) {
+  if (name == "dark") return Theme::Dark;
+  if (name == "light") return Theme::Light;
+  if (name == "projector") return Theme::Projector;
+  throw std::invalid_argument("unknown theme \"" + name + "\" (known: dark, light, projector)");
+}
+
+const char* themeName(Theme theme) {
+  switch (theme) {
+    case Theme::Dark: return "dark";
+    case Theme::Light: return "light";
+    case Theme::Projector: return "projector";
+  }
+  return "dark";
+}
+
+ImVec4 warningTextColour() {
+  const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+  const bool light = 0.3f * bg.x + 0.59f * bg.y + 0.11f * bg.z > 0.5f;
+  return light ? ImVec4(0.70f, 0.38f, 0.0f, 1.0f) : ImVec4(0.98f, 0.8f, 0.35f, 1.0f);
+}
+
+void applyTheme(Fonts& fonts, float scale, Theme theme) {
   ImGuiIO& io = ImGui::GetIO();
   io.Fonts->Clear();
   const auto regular = findFont("DejaVuSans.ttf");
@@ -89,7 +154,13 @@ void applyTheme(Fonts& fonts, float scale) {
   io.Fonts->Build();
 
   ImGuiStyle style;
-  applyColours(style);
+  if (theme == Theme::Light) {
+    applyLightColours(style);
+  } else if (theme == Theme::Projector) {
+    applyProjectorColours(style);
+  } else {
+    applyColours(style);
+  }
   style.WindowPadding = {10, 8};
   style.FramePadding = {8, 4};
   style.ItemSpacing = {8, 6};
@@ -100,7 +171,7 @@ void applyTheme(Fonts& fonts, float scale) {
   style.GrabMinSize = 10.0f;
   style.ScrollbarSize = 12.0f;
   style.ScrollbarRounding = 6.0f;
-  style.WindowBorderSize = 1.0f;
+  style.WindowBorderSize = theme == Theme::Projector ? 2.0f : 1.0f;
   style.FrameBorderSize = 0.0f;
   style.WindowTitleAlign = {0.0f, 0.5f};
   style.AntiAliasedLines = true;

@@ -2,12 +2,25 @@
 // The look: a dark theme tuned for projectors, DejaVu Sans when installed (else ImGui's
 // built-in font), every size scaled by the monitor's content scale × the user's UI scale.
 
+#include <imgui.h>
+
+#include <string>
+
 #include "ui/app/app_state.h"
 
 namespace ew::ui {
 
-// Rebuilds the font atlas and the style for `scale`. Call between frames; the renderer
-// backend's font texture must be recreated afterwards (the app does).
-void applyTheme(Fonts& fonts, float scale);
+// Rebuilds the font atlas and the style for `scale` (which already includes the projector
+// factor) and the theme's colours. Call between frames; the renderer backend's font
+// texture must be recreated afterwards (the app does).
+void applyTheme(Fonts& fonts, float scale, Theme theme = Theme::Dark);
+
+// "dark", "light", "projector"; throws std::invalid_argument for anything else.
+Theme themeFromName(const std::string& name);
+const char* themeName(Theme theme);
+
+// Warning text that reads on the current theme's window background (amber on dark,
+// dark orange on light).
+ImVec4 warningTextColour();
 
 }  // namespace ew::ui

@@ -245,6 +245,15 @@ void RenderTarget::end() const {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+std::vector<unsigned char> RenderTarget::readPixelsRgb() const {
+  std::vector<unsigned char> pixels(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_) * 3);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolveFbo_.id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, pixels.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return pixels;
+}
+
 // [SECTION] State and draw calls
 
 void apply(const DrawState& state) {

@@ -154,6 +154,8 @@ class RenderTarget {
   // Resolves into the texture and binds the default framebuffer again.
   void end() const;
   const Texture2D& texture() const { return resolved_; }
+  // RGB rows of the resolved image (after end()), bottom row first.
+  std::vector<unsigned char> readPixelsRgb() const;
   int width() const { return width_; }
   int height() const { return height_; }
   bool valid() const { return width_ > 0 && height_ > 0; }

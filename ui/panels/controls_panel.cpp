@@ -93,10 +93,18 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       box("2D reprojection", &o.reprojection);
       box("2D stick figure", &o.stickFigure);
       box("2D trails", &o.trails);
+      box("point-lights only", &o.pointLights);
       ImGui::EndTable();
     }
 
     sectionTitle("Display");
+    int theme = static_cast<int>(s.view.theme);
+    ImGui::RadioButton("dark", &theme, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("light", &theme, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("projector", &theme, 2);
+    s.view.theme = static_cast<Theme>(theme);
     float scale = pendingUiScale > 0.0f ? pendingUiScale : s.view.uiScale;
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderFloat("##uiscale", &scale, 0.75f, 2.5f, "UI scale %.2f×")) pendingUiScale = scale;

@@ -13,6 +13,23 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
     ImGui::TextColored(ImVec4(1.0f, 0.72f, 0.38f, 1.0f), "Eigenwalker");
     if (s.fonts.large) ImGui::PopFont();
     ImGui::SameLine(0.0f, 18.0f * ctx.scale);
+    if (ImGui::Button("Open…")) s.panels.data.open = !s.panels.data.open;
+    ImGui::SameLine();
+    if (ImGui::Button("Export…")) s.panels.exports.open = !s.panels.exports.open;
+    ImGui::SameLine();
+    if (ImGui::Button("Analysis")) s.panels.analysis.open = !s.panels.analysis.open;
+    ImGui::SameLine();
+    if (ImGui::Button("Tour")) {
+      if (s.panels.tour.active) {
+        actions::tourEnd(s);
+      } else if (s.doc.ready()) {
+        actions::tourStart(s);
+      }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("?")) s.panels.help.open = !s.panels.help.open;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keyboard and mouse (F1)");
+    ImGui::SameLine(0.0f, 18.0f * ctx.scale);
     ImGui::AlignTextToFramePadding();
     if (s.doc.population) {
       ImGui::TextDisabled("data:");
@@ -38,11 +55,26 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
 
     // Right side: progress or error.
     const float right = ImGui::GetWindowContentRegionMax().x;
-    if (s.jobs.busy()) {
+    if (s.exports.video) {
+      const auto& v = *s.exports.video;
+      const float w = 420.0f * ctx.scale;
+      const std::string what = "Video: frame " + std::to_string(v.framesDone()) + " of " +
+                               std::to_string(v.frameCount());
+      ImGui::SameLine(right - w - 70.0f * ctx.scale);
+      ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
+      ImGui::ProgressBar(v.fraction(), ImVec2(w, 0.0f), what.c_str());
+      ImGui::PopStyleColor();
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Cancel")) actions::cancelVideoExport(s);
+    } else if (s.jobs.busy()) {
       const bool loading = s.jobs.load.running();
-      const float fraction = loading ? s.jobs.load.fraction() : s.jobs.models.fraction();
-      const std::string what = loading ? s.jobs.load.title() + ": " + s.jobs.load.what()
-                                       : s.jobs.models.title() + ": " + s.jobs.models.what();
+      const bool analysing = !loading && !s.jobs.models.running() && s.jobs.analysis.running();
+      const float fraction = loading     ? s.jobs.load.fraction()
+                             : analysing ? s.jobs.analysis.fraction()
+                                         : s.jobs.models.fraction();
+      const std::string what = loading     ? s.jobs.load.title() + ": " + s.jobs.load.what()
+                               : analysing ? s.jobs.analysis.title()
+                                           : s.jobs.models.title() + ": " + s.jobs.models.what();
       const float w = 420.0f * ctx.scale;
       ImGui::SameLine(right - w);
       ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
@@ -60,6 +92,13 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
       if (ImGui::SmallButton("Retry")) actions::open(s, s.jobs.loadingPaths);
       ImGui::SameLine();
       if (ImGui::SmallButton("Dismiss")) s.jobs.lastError.clear();
+    } else if (!s.exports.lastError.empty()) {
+      const float w = 560.0f * ctx.scale;
+      ImGui::SameLine(right - w);
+      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", s.exports.lastError.substr(0, 80).c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.exports.lastError.c_str());
+      ImGui::SameLine();
+      if (ImGui::SmallButton("Dismiss##export")) s.exports.lastError.clear();
     } else if (!s.derived.error().empty()) {
       ImGui::SameLine(right - 560.0f * ctx.scale);
       ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", s.derived.error().substr(0, 80).c_str());

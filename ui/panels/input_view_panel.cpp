@@ -20,6 +20,62 @@ constexpr float kViewCentreVMm = 975.0f;
 
 }  // namespace
 
+bool buildInputScene(const AppState& s, Scene& scene, float lineScale, double phase) {
+  scene.clearItems();
+  scene.floor.visible = false;
+  scene.backgroundTop = {0.085f, 0.09f, 0.105f, 1.0f};
+  scene.backgroundBottom = {0.04f, 0.045f, 0.055f, 1.0f};
+  const auto& o = s.view.overlays;
+  const bool reconstruct = s.doc.mode == Mode::Reconstruct;
+  const ReconBase* r = s.derived.recon();
+  const ReconDisplay* d = s.derived.display();
+  const ExploreResult* e = s.derived.explore();
+  const Eigen::VectorXd* input = nullptr;
+  const Eigen::MatrixXd* trail = nullptr;
+  if (reconstruct && r) {
+    input = &r->observed;
+    trail = &r->observedTrail;
+  } else if (!reconstruct && e) {
+    input = &e->projected;
+    trail = &e->projectedTrail;
+  }
+
+  // Ground line (v = 0) and the image's vertical axis through u = 0.
+  scene.lines.push_back({{-4000.0f, 0.0f, -2.0f}, 1.5f, {4000.0f, 0.0f, -2.0f}, 0.0f, palette::kAxis});
+  scene.lines.push_back({{0.0f, -60.0f, -2.0f}, 1.0f, {0.0f, 2000.0f, -2.0f}, 8.0f,
+                         glm::vec4(glm::vec3(palette::kAxis), 0.35f)});
+  if (input) {
+    if (o.trails && !o.pointLights && trail) {
+      std::vector<glm::vec2> points(static_cast<std::size_t>(trail->rows()));
+      for (int j = 0; j < kJointCount; ++j) {
+        for (Eigen::Index i = 0; i < trail->rows(); ++i)
+          points[static_cast<std::size_t>(i)] = {static_cast<float>((*trail)(i, 2 * j)),
+                                                 static_cast<float>((*trail)(i, 2 * j + 1))};
+        addPolyline2(scene, points, palette::kTrail, 1.5f * lineScale, true);
+      }
+    }
+    const Pose2 pose = toPose2(frameAtPhase(*input, phase));
+    addPointLights(scene, pose, 34.0f, o.stickFigure && !o.pointLights, 2.5f * lineScale);
+    if (reconstruct && d && o.reprojection && !o.pointLights) {
+      const Pose2 rec = toPose2(frameAtPhase(d->reprojected, phase));
+      for (const auto& [ja, jb] : kBones) {
+        scene.overlayLines.push_back({glm::vec3(rec[static_cast<std::size_t>(index(ja))], 1.0f),
+                                      2.0f * lineScale,
+                                      glm::vec3(rec[static_cast<std::size_t>(index(jb))], 1.0f),
+                                      0.0f, glm::vec4(glm::vec3(palette::kReconRight), 0.9f)});
+      }
+      for (std::size_t j = 0; j < pose.size(); ++j)
+        scene.overlayLines.push_back({glm::vec3(pose[j], 1.0f), 2.0f * lineScale,
+                                      glm::vec3(rec[j], 1.0f), 0.0f, palette::kError});
+    }
+  }
+  return input != nullptr;
+}
+
+CameraMatrices inputViewCamera(float aspect) {
+  return imageCamera(aspect, {0.0f, kViewCentreVMm}, kViewHeightMm);
+}
+
 void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   if (beginPanel("2D input", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
@@ -30,57 +86,12 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
     if (size.x > 4.0f && size.y > 4.0f) {
       target.ensure(static_cast<int>(size.x * fbScale.x), static_cast<int>(size.y * fbScale.y),
                     ctx.renderer.samples());
-      scene.clearItems();
-      scene.floor.visible = false;
-      scene.backgroundTop = {0.085f, 0.09f, 0.105f, 1.0f};
-      scene.backgroundBottom = {0.04f, 0.045f, 0.055f, 1.0f};
-      const auto& o = s.view.overlays;
-      const double phase = s.view.playback.phase();
       const bool reconstruct = s.doc.mode == Mode::Reconstruct;
-      const ReconBase* r = s.derived.recon();
-      const ReconDisplay* d = s.derived.display();
-      const ExploreResult* e = s.derived.explore();
-      const Eigen::VectorXd* input = nullptr;
-      const Eigen::MatrixXd* trail = nullptr;
-      if (reconstruct && r) {
-        input = &r->observed;
-        trail = &r->observedTrail;
-      } else if (!reconstruct && e) {
-        input = &e->projected;
-        trail = &e->projectedTrail;
-      }
-
-      // Ground line (v = 0) and the image's vertical axis through u = 0.
-      scene.lines.push_back({{-4000.0f, 0.0f, -2.0f}, 1.5f, {4000.0f, 0.0f, -2.0f}, 0.0f, palette::kAxis});
-      scene.lines.push_back({{0.0f, -60.0f, -2.0f}, 1.0f, {0.0f, 2000.0f, -2.0f}, 8.0f,
-                             glm::vec4(glm::vec3(palette::kAxis), 0.35f)});
-      if (input) {
-        if (o.trails && trail) {
-          std::vector<glm::vec2> points(static_cast<std::size_t>(trail->rows()));
-          for (int j = 0; j < kJointCount; ++j) {
-            for (Eigen::Index i = 0; i < trail->rows(); ++i)
-              points[static_cast<std::size_t>(i)] = {static_cast<float>((*trail)(i, 2 * j)),
-                                                     static_cast<float>((*trail)(i, 2 * j + 1))};
-            addPolyline2(scene, points, palette::kTrail, 1.5f * ctx.scale, true);
-          }
-        }
-        const Pose2 pose = toPose2(frameAtPhase(*input, phase));
-        addPointLights(scene, pose, 34.0f, o.stickFigure, 2.5f * ctx.scale);
-        if (reconstruct && d && o.reprojection) {
-          const Pose2 rec = toPose2(frameAtPhase(d->reprojected, phase));
-          for (const auto& [ja, jb] : kBones) {
-            scene.overlayLines.push_back({glm::vec3(rec[static_cast<std::size_t>(index(ja))], 1.0f),
-                                          2.0f * ctx.scale,
-                                          glm::vec3(rec[static_cast<std::size_t>(index(jb))], 1.0f),
-                                          0.0f, glm::vec4(glm::vec3(palette::kReconRight), 0.9f)});
-          }
-          for (std::size_t j = 0; j < pose.size(); ++j)
-            scene.overlayLines.push_back({glm::vec3(pose[j], 1.0f), 2.0f * ctx.scale,
-                                          glm::vec3(rec[j], 1.0f), 0.0f, palette::kError});
-        }
-      }
+      const bool drawn = buildInputScene(s, scene, ctx.scale, s.view.playback.phase());
+      const auto& o = s.view.overlays;
       const float aspect = size.x / size.y;
-      ctx.renderer.render(target, scene, imageCamera(aspect, {0.0f, kViewCentreVMm}, kViewHeightMm));
+      ctx.renderer.render(target, scene, inputViewCamera(aspect));
+      lastImage = {p0, size};
 
       ImDrawList* dl = ImGui::GetWindowDrawList();
       const ImVec2 p1{p0.x + size.x, p0.y + size.y};
@@ -98,13 +109,13 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
       drawScaleBar(dl, ImVec2(p1.x - pad - 500.0f * pxPerMm - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale),
                    pxPerMm, 500.0f, ctx.scale);
       std::vector<LegendItem> legend{{palette::kInputPoint, "input joints (u, v)", false}};
-      if (reconstruct && o.reprojection) {
+      if (reconstruct && o.reprojection && !o.pointLights) {
         legend.push_back({palette::kReconRight,
                           s.doc.recon.unknownAngle ? "reconstruction seen at est. α" : "reconstruction seen at α", true});
         legend.push_back({palette::kError, "2D residual", true});
       }
       drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale);
-      if (!input) {
+      if (!drawn) {
         const char* msg = s.jobs.busy() ? "loading…" : "nothing loaded";
         const ImVec2 ts = ImGui::CalcTextSize(msg);
         dl->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y), IM_COL32(160, 168, 180, 255), msg);

@@ -5,6 +5,7 @@
 
 #include "ui/gl/gl.h"
 #include "ui/panels/panel_window.h"
+#include "ui/render/camera.h"
 #include "ui/render/scene.h"
 
 namespace ew::ui {
@@ -12,9 +13,17 @@ namespace ew::ui {
 struct AppState;
 struct FrameContext;
 
+// The view's scene at a gait phase (0 … 1): the panel draws it each frame, the video
+// export at exact phases. lineScale multiplies line widths (the UI scale). Returns false
+// when there is nothing to show yet.
+bool buildInputScene(const AppState& s, Scene& scene, float lineScale, double phase);
+// The fixed image-plane camera of the 2D view for a width / height aspect.
+CameraMatrices inputViewCamera(float aspect);
+
 struct InputViewPanel {
   gl::RenderTarget target;
   Scene scene;  // rebuilt every frame; kept to reuse its allocations
+  PanelRect lastImage;  // where the view was drawn last frame (screen pixels), for PNG export
 
   void draw(AppState& s, const FrameContext& ctx, const PanelRect& rect);
 };

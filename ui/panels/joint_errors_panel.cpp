@@ -36,18 +36,18 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
         const float v = static_cast<float>(d->depthRmsMm(j));
         const float w = barMax * std::min(v / scaleMm, 1.0f);
         const auto name = kJointNames[static_cast<std::size_t>(j)];
-        dl->AddText(ImVec2(x, y + 0.5f * (rowH - textH)), IM_COL32(170, 178, 190, 255), name.data(),
+        dl->AddText(ImVec2(x, y + 0.5f * (rowH - textH)), ImGui::GetColorU32(ImGuiCol_TextDisabled), name.data(),
                     name.data() + name.size());
         const float bh = std::max(3.0f, std::min(rowH * 0.62f, textH * 0.8f));
         const float by = y + 0.5f * (rowH - bh);
         dl->AddRectFilled(ImVec2(x + labelW, by), ImVec2(x + labelW + barMax, by + bh),
-                          IM_COL32(255, 255, 255, 12), 2.0f);
+                          ImGui::GetColorU32(ImGuiCol_FrameBg), 2.0f);
         dl->AddRectFilled(ImVec2(x + labelW, by), ImVec2(x + labelW + w, by + bh),
                           toImU32(palette::errorColour(v / scaleMm)), 2.0f);
         char buf[32];
         std::snprintf(buf, sizeof buf, "%.1f", static_cast<double>(v));
         dl->AddText(ImVec2(x + labelW + w + 4.0f * ctx.scale, y + 0.5f * (rowH - textH)),
-                    IM_COL32(220, 224, 232, 255), buf);
+                    ImGui::GetColorU32(ImGuiCol_Text), buf);
       }
       ImGui::Dummy(size);
       if (ImGui::IsItemHovered()) {

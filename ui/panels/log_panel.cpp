@@ -1,6 +1,7 @@
 #include "ui/panels/log_panel.h"
 
 #include "ui/app/app_state.h"
+#include "ui/app/theme.h"
 
 namespace ew::ui {
 
@@ -12,8 +13,8 @@ void LogPanel::draw(AppState& s, const FrameContext& /*ctx*/, const PanelRect& r
     for (const auto& e : s.log.entries()) {
       if (e.level == LogLevel::Info && !showInfo) continue;
       const ImVec4 colour = e.level == LogLevel::Error     ? ImVec4(1.0f, 0.45f, 0.5f, 1.0f)
-                            : e.level == LogLevel::Warning ? ImVec4(0.98f, 0.8f, 0.35f, 1.0f)
-                                                           : ImVec4(0.75f, 0.78f, 0.84f, 1.0f);
+                            : e.level == LogLevel::Warning ? warningTextColour()
+                                                           : ImGui::GetStyleColorVec4(ImGuiCol_Text);
       ImGui::TextDisabled("%6.1f", e.timeS);
       ImGui::SameLine();
       ImGui::PushStyleColor(ImGuiCol_Text, colour);

@@ -11,7 +11,7 @@ namespace ew::ui {
 namespace {
 
 void metric(const AppState& s, const char* label, const char* value, const char* note, float width,
-            const ImVec4& colour = ImVec4(0.93f, 0.94f, 0.96f, 1.0f)) {
+            const ImVec4& colour = ImGui::GetStyleColorVec4(ImGuiCol_Text)) {
   ImGui::BeginGroup();
   ImGui::TextDisabled("%s", label);
   if (s.fonts.large) ImGui::PushFont(s.fonts.large);
@@ -51,7 +51,7 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
       metric(s, "MPJPE  3D", v, "", w);
       std::snprintf(v, sizeof v, "%.1f mm", d->residualRmsMm);
       metric(s, "2D residual  RMS", v, d->edited ? "(edited k)" : "", w,
-             d->edited ? ImVec4(1.0f, 0.72f, 0.38f, 1.0f) : ImVec4(0.93f, 0.94f, 0.96f, 1.0f));
+             d->edited ? ImVec4(1.0f, 0.72f, 0.38f, 1.0f) : ImGui::GetStyleColorVec4(ImGuiCol_Text));
       if (s.doc.recon.unknownAngle) {
         std::snprintf(v, sizeof v, "%.1f°", r->alphaUsedDeg);
         std::snprintf(n, sizeof n, "error %.1f°", d->angleErrorDeg);

@@ -44,6 +44,57 @@ float strideLengthMm(const AppState& s) {
 
 }  // namespace
 
+bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, double cycles, float* errorScale) {
+  scene.clearItems();
+  const auto& o = s.view.overlays;
+  const double phase = cycles - std::floor(cycles);
+  const bool reconstruct = s.doc.mode == Mode::Reconstruct;
+  const ReconBase* r = s.derived.recon();
+  const ReconDisplay* d = s.derived.display();
+  const ExploreResult* e = s.derived.explore();
+  scene.floor.visible = o.grid;
+  scene.floor.scrollMm = static_cast<float>(std::fmod(cycles * strideLengthMm(s), 1000.0));
+  bool drawn = false;
+  if (reconstruct && r && d) {
+    const Pose3 truth = toPose3(frameAtPhase(r->wTrue, phase));
+    const Pose3 rec = toPose3(frameAtPhase(d->w, phase));
+    scene.floor.shadowCentre = {rec[static_cast<std::size_t>(index(Joint::Pelvis))].x,
+                                rec[static_cast<std::size_t>(index(Joint::Pelvis))].y};
+    std::array<glm::vec4, kJointCount> colours{};
+    *errorScale = palette::errorScaleMm(static_cast<float>(d->depthRmsMm.maxCoeff()));
+    for (int j = 0; j < kJointCount; ++j)
+      colours[static_cast<std::size_t>(j)] =
+          palette::errorColour(static_cast<float>(d->depthRmsMm(j)) / *errorScale);
+    if (o.pointLights) {
+      for (const auto& p : rec) scene.glows.push_back({p, 34.0f, palette::kInputPoint});
+    } else if (o.depthErrorColour) {
+      addFigure(scene, rec, reconstructionStyle(), std::span<const glm::vec4, kJointCount>(colours));
+    } else {
+      addFigure(scene, rec, reconstructionStyle());
+    }
+    if (o.ghost && !o.pointLights) addFigure(scene, truth, ghostStyle());
+    if (o.errorLines && !o.pointLights) addErrorLines(scene, truth, rec, palette::kError, 2.5f * lineScale);
+    if (o.cameraGlyph) {
+      addCameraGlyph(scene, r->alphaTrueDeg, 1500.0f, palette::kCamera, false);
+      if (s.doc.recon.unknownAngle)
+        addCameraGlyph(scene, r->alphaUsedDeg, 1300.0f, palette::kCameraEstimate, true);
+    }
+    drawn = true;
+  } else if (!reconstruct && e) {
+    const Pose3 pose = toPose3(frameAtPhase(e->w, phase));
+    scene.floor.shadowCentre = {pose[static_cast<std::size_t>(index(Joint::Pelvis))].x,
+                                pose[static_cast<std::size_t>(index(Joint::Pelvis))].y};
+    if (o.pointLights) {
+      for (const auto& p : pose) scene.glows.push_back({p, 34.0f, palette::kInputPoint});
+    } else {
+      addFigure(scene, pose, reconstructionStyle());
+    }
+    if (o.cameraGlyph) addCameraGlyph(scene, s.doc.recon.alphaDeg, 1500.0f, palette::kCamera, false);
+    drawn = true;
+  }
+  return drawn;
+}
+
 void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   if (beginPanel("3D reconstruction", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
@@ -59,50 +110,15 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
 
       target.ensure(static_cast<int>(size.x * fbScale.x), static_cast<int>(size.y * fbScale.y),
                     ctx.renderer.samples());
-      scene.clearItems();
       const auto& o = s.view.overlays;
-      const double phase = s.view.playback.phase();
       const bool reconstruct = s.doc.mode == Mode::Reconstruct;
       const ReconBase* r = s.derived.recon();
       const ReconDisplay* d = s.derived.display();
-      const ExploreResult* e = s.derived.explore();
-      scene.floor.visible = o.grid;
-      scene.floor.scrollMm = static_cast<float>(std::fmod(s.view.playback.cycles * strideLengthMm(s), 1000.0));
-      float errorScale = 0.0f;
-      bool drawn = false;
-      if (reconstruct && r && d) {
-        const Pose3 truth = toPose3(frameAtPhase(r->wTrue, phase));
-        const Pose3 rec = toPose3(frameAtPhase(d->w, phase));
-        scene.floor.shadowCentre = {rec[static_cast<std::size_t>(index(Joint::Pelvis))].x,
-                                    rec[static_cast<std::size_t>(index(Joint::Pelvis))].y};
-        std::array<glm::vec4, kJointCount> colours{};
-        errorScale = palette::errorScaleMm(static_cast<float>(d->depthRmsMm.maxCoeff()));
-        for (int j = 0; j < kJointCount; ++j)
-          colours[static_cast<std::size_t>(j)] =
-              palette::errorColour(static_cast<float>(d->depthRmsMm(j)) / errorScale);
-        if (o.depthErrorColour) {
-          addFigure(scene, rec, reconstructionStyle(), std::span<const glm::vec4, kJointCount>(colours));
-        } else {
-          addFigure(scene, rec, reconstructionStyle());
-        }
-        if (o.ghost) addFigure(scene, truth, ghostStyle());
-        if (o.errorLines) addErrorLines(scene, truth, rec, palette::kError, 2.5f * ctx.scale);
-        if (o.cameraGlyph) {
-          addCameraGlyph(scene, r->alphaTrueDeg, 1500.0f, palette::kCamera, false);
-          if (s.doc.recon.unknownAngle)
-            addCameraGlyph(scene, r->alphaUsedDeg, 1300.0f, palette::kCameraEstimate, true);
-        }
-        drawn = true;
-      } else if (!reconstruct && e) {
-        const Pose3 pose = toPose3(frameAtPhase(e->w, phase));
-        scene.floor.shadowCentre = {pose[static_cast<std::size_t>(index(Joint::Pelvis))].x,
-                                    pose[static_cast<std::size_t>(index(Joint::Pelvis))].y};
-        addFigure(scene, pose, reconstructionStyle());
-        if (o.cameraGlyph) addCameraGlyph(scene, s.doc.recon.alphaDeg, 1500.0f, palette::kCamera, false);
-        drawn = true;
-      }
+      float errorScale = 1.0f;
+      const bool drawn = buildReconstructionScene(s, scene, ctx.scale, s.view.playback.cycles, &errorScale);
       const float aspect = size.x / size.y;
       ctx.renderer.render(target, scene, s.view.camera.matrices(aspect));
+      lastImage = {p0, size};
 
       ImDrawList* dl = ImGui::GetWindowDrawList();
       const ImVec2 p1{p0.x + size.x, p0.y + size.y};
@@ -127,7 +143,9 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), reconstruct ? "3D reconstruction" : "Gait space",
                   sub, s.fonts.large, ctx.scale);
       std::vector<LegendItem> legend;
-      if (reconstruct) {
+      if (o.pointLights) {
+        legend.push_back({palette::kInputPoint, reconstruct ? "reconstructed joints (point-lights)" : "joints (point-lights)", false});
+      } else if (reconstruct) {
         legend.push_back({palette::kReconRight, "reconstruction (right side darker)", false});
         if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
         if (o.errorLines) legend.push_back({palette::kError, "3D error per joint", true});
@@ -140,7 +158,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
           legend.push_back({palette::kCameraEstimate, "estimated camera (est. α)", true});
       }
       drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale);
-      if (reconstruct && d && o.depthErrorColour)
+      if (reconstruct && d && o.depthErrorColour && !o.pointLights)
         drawErrorColourBar(dl, ImVec2(p1.x - pad, p0.y + 78.0f * ctx.scale), std::min(200.0f * ctx.scale, size.y * 0.35f),
                            errorScale, "depth error (RMS)", ctx.scale);
       if (!drawn) {

@@ -1,0 +1,103 @@
+// The analysis window, end to end: shown by a script, it computes the leave-one-subject-out
+// curves in the background and draws them (LSQ curves in their blue); the curves export
+// as CSV with one row per view angle.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "tests/common/test_support.h"
+#include "tests/gui/gui_run.h"
+
+namespace ew::test::gui {
+namespace {
+
+class GuiAnalysis : public ::testing::Test {
+ protected:
+  void SetUp() override { dir = makeTempDir("gui_analysis"); }
+  void TearDown() override {
+    if (!HasFailure()) std::filesystem::remove_all(dir);
+  }
+  std::filesystem::path dir;
+};
+
+// The LSQ curves' blue (110, 170, 255).
+bool isLsqBlue(int r, int g, int b) { return std::abs(r - 110) < 30 && std::abs(g - 170) < 30 && b > 225; }
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) out.push_back(cell);
+  return out;
+}
+
+TEST_F(GuiAnalysis, DrawsTheCurvesAndExportsThemAsCsv) {
+  const auto d = dir.string();
+  const auto script = writeScript(dir, R"([
+    {"select_subject": "SYN005"},
+    {"play": false},
+    {"screenshot": ")" + d + R"(/without.png"},
+    {"show_panel": ["analysis", true]},
+    {"set_analysis_metric": "E_a"},
+    {"set_angle": 45},
+    {"screenshot": ")" + d + R"(/with.png"},
+    {"export_analysis_csv": ")" + d + R"(/analysis.csv"},
+    {"show_panel": ["analysis", false]}
+  ])");
+  const RunResult r = runViewer(dir, "--size 1600x900 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+
+  const cv::Mat without = cv::imread(d + "/without.png"), with = cv::imread(d + "/with.png");
+  ASSERT_FALSE(without.empty() || with.empty());
+  const Region plot{0.2, 0.2, 0.8, 0.6};
+  const int blueWith = countPixels(crop(with, plot), isLsqBlue);
+  const int blueWithout = countPixels(crop(without, plot), isLsqBlue);
+  std::printf("LSQ-blue pixels: %d with the analysis window, %d without\n", blueWith, blueWithout);
+  EXPECT_GT(blueWith, 300) << "no LSQ curves drawn";
+  EXPECT_GT(blueWith, 3 * blueWithout + 100);
+
+  std::ifstream in(dir / "analysis.csv");
+  ASSERT_TRUE(in) << "analysis.csv missing";
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("# eigenwalker analysis", 0), 0u) << line;
+  std::getline(in, line);
+  const auto header = split(line);
+  ASSERT_EQ(header.size(), 13u) << line;  // angle + {subject, mean} × {lsq, map} × 3 metrics
+  EXPECT_EQ(header[0], "angle_deg");
+  EXPECT_EQ(header[1], "SYN005_lsq_abs_error_mm2");
+  int rows = 0;
+  double lsqMean = 0.0, mapMean = 0.0;
+  while (std::getline(in, line) && !line.empty()) {
+    const auto cells = split(line);
+    ASSERT_EQ(cells.size(), header.size()) << line;
+    EXPECT_NEAR(std::stod(cells[0]), -90.0 + 5.0 * rows, 1e-9);
+    for (const auto& c : cells) EXPECT_TRUE(std::isfinite(std::stod(c))) << line;
+    lsqMean += std::stod(cells[2]);  // mean_lsq_abs_error_mm2
+    mapMean += std::stod(cells[8]);  // mean_map_abs_error_mm2
+    ++rows;
+  }
+  EXPECT_EQ(rows, 37);
+  // The prior helps on average (SPEC §6, Zhang & Troje 2007 Fig. 4).
+  EXPECT_LT(mapMean, lsqMean);
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("sigma2_mm2,method", 0), 0u) << line;
+}
+
+TEST_F(GuiAnalysis, UnknownPanelAndMetricAreErrors) {
+  const auto script = writeScript(dir, R"([{"show_panel": ["nonsense", true]}])");
+  RunResult r = runViewer(dir, "--size 800x600 --script " + quote(script.string()));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("nonsense"), std::string::npos) << r.err;
+  const auto script2 = writeScript(dir, R"([{"set_analysis_metric": "speed"}])");
+  r = runViewer(dir, "--size 800x600 --script " + quote(script2.string()));
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("E_a"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace ew::test::gui

@@ -1,0 +1,141 @@
+#include "ui/app/analysis.h"
+
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+#include <thread>
+
+#include "core/io/atomic_write.h"
+
+namespace ew::ui {
+
+AnalysisResult computeAnalysis(const Population& population, const AnalysisKey& key, const ProgressFn& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  AnalysisResult r;
+  r.key = key;
+  std::vector<ExperimentWalker> walkers;
+  walkers.reserve(population.walkers.size());
+  for (const auto& w : population.walkers) walkers.push_back({w.id, w.subject, w.source, w.fit, {}, 0.0});
+
+  EvaluationOptions options;
+  for (int a = -90; a <= 90; a += 5) options.anglesDeg.push_back(a);
+  if (key.components > 0) options.model.components = key.components;
+  options.threads = std::max(1u, std::thread::hardware_concurrency() / 2);
+  int stage = 0;
+  options.progress = [&](int done, int total, const std::string& what) {
+    if (progress) progress(stage * total + done, 3 * total, what);
+  };
+  if (progress) progress(0, 1, "building the leave-one-out folds");
+  const std::vector<Fold> folds = buildFolds(walkers, options.model, options.threads);
+  stage = 1;
+  r.knownView = knownViewErrors(walkers, folds, options, key.sigma2Mm2);
+  stage = 2;
+  r.sigmaSweep = sigmaSweep(walkers, folds, options);
+  r.spectrum = varianceTable(buildFullModel(walkers, options.model));
+  r.anglesDeg = options.anglesDeg;
+  r.subjects = walkerSubjects(walkers);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::shared_ptr<const AnalysisResult> AnalysisCache::find(const AnalysisKey& key) const {
+  for (const auto& r : results)
+    if (r->key == key) return r;
+  return nullptr;
+}
+
+void AnalysisCache::add(std::shared_ptr<const AnalysisResult> result) {
+  std::erase_if(results, [&](const auto& r) { return r->key == result->key; });
+  results.push_back(std::move(result));
+  if (results.size() > 6) results.erase(results.begin());
+}
+
+namespace {
+
+double metricValue(const ViewErrorRow& row, ErrorMetric m) {
+  switch (m) {
+    case ErrorMetric::AbsMm2: return row.absErrorMm2;
+    case ErrorMetric::Relative: return row.relError;
+    case ErrorMetric::MpjpeMm: return row.mpjpeMm;
+  }
+  return 0.0;
+}
+
+}  // namespace
+
+std::vector<double> errorCurve(const AnalysisResult& result, const std::string& subject, const std::string& method,
+                               ErrorMetric metric) {
+  const std::size_t n = result.anglesDeg.size();
+  std::vector<double> sum(n, 0.0);
+  std::vector<int> count(n, 0);
+  for (const auto& row : result.knownView) {
+    if (row.method != method || (!subject.empty() && row.subject != subject)) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (std::abs(result.anglesDeg[i] - row.angleDeg) < 1e-9) {
+        sum[i] += metricValue(row, metric);
+        ++count[i];
+        break;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) sum[i] = count[i] > 0 ? sum[i] / count[i] : std::nan("");
+  return sum;
+}
+
+const char* metricName(ErrorMetric metric) {
+  switch (metric) {
+    case ErrorMetric::AbsMm2: return "E_a";
+    case ErrorMetric::Relative: return "E_r";
+    case ErrorMetric::MpjpeMm: return "MPJPE";
+  }
+  return "";
+}
+
+const char* metricUnit(ErrorMetric metric) {
+  switch (metric) {
+    case ErrorMetric::AbsMm2: return "mm²";
+    case ErrorMetric::Relative: return "";
+    case ErrorMetric::MpjpeMm: return "mm";
+  }
+  return "";
+}
+
+void writeAnalysisCsv(const AnalysisResult& result, const std::string& subject, const std::filesystem::path& file) {
+  struct Column {
+    std::string name;
+    std::vector<double> values;
+  };
+  std::vector<Column> columns;
+  const ErrorMetric metrics[] = {ErrorMetric::AbsMm2, ErrorMetric::Relative, ErrorMetric::MpjpeMm};
+  const char* metricKeys[] = {"abs_error_mm2", "rel_error", "mpjpe_mm"};
+  for (const std::string method : {"lsq", "map"}) {
+    for (int m = 0; m < 3; ++m) {
+      if (!subject.empty())
+        columns.push_back({subject + "_" + method + "_" + metricKeys[m], errorCurve(result, subject, method, metrics[m])});
+      columns.push_back({"mean_" + method + "_" + metricKeys[m], errorCurve(result, "", method, metrics[m])});
+    }
+  }
+  writeFileAtomically(file, [&](std::ostream& out) {
+    out << std::setprecision(10);
+    out << "# eigenwalker analysis: error against view angle (leave-one-subject-out), sigma2_mm2="
+        << result.key.sigma2Mm2 << ", components=" << result.key.components << " (0 = 95 %)\n";
+    out << "angle_deg";
+    for (const auto& c : columns) out << ',' << c.name;
+    out << '\n';
+    for (std::size_t i = 0; i < result.anglesDeg.size(); ++i) {
+      out << result.anglesDeg[i];
+      for (const auto& c : columns) out << ',' << c.values[i];
+      out << '\n';
+    }
+    out << "\nsigma2_mm2,method,mean_abs_error_mm2,mean_rel_error,mpjpe_mm\n";
+    for (const auto& row : result.sigmaSweep)
+      out << row.sigma2Mm2 << ',' << row.method << ',' << row.meanAbsErrorMm2 << ',' << row.meanRelError << ','
+          << row.mpjpeMm << '\n';
+    out << "\ncomponent,eigenvalue_mm2,variance_share,cumulative_share\n";
+    for (const auto& row : result.spectrum)
+      out << row.component << ',' << row.eigenvalueMm2 << ',' << row.varianceShare << ',' << row.cumulativeShare << '\n';
+  });
+}
+
+}  // namespace ew::ui

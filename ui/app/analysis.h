@@ -1,0 +1,61 @@
+#pragma once
+// The analysis panel's data (docs/VIEWER.md "Analysis"): reconstruction error against the
+// view angle for every held-out subject (core's leave-one-subject-out evaluation,
+// core/experiments/experiments.h), the MAP σ² sweep and the eigenvalue spectrum. Computed
+// on a worker thread, cached by AnalysisKey; curves are picked out of the rows here.
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/experiments/experiments.h"
+#include "ui/app/population.h"
+
+namespace ew::ui {
+
+enum class ErrorMetric { AbsMm2, Relative, MpjpeMm };  // E_a (mm²), E_r, MPJPE (mm)
+
+// What the curves depend on (the view angle α and the selected subject do not: the curves
+// cover every angle and every subject).
+struct AnalysisKey {
+  std::uint64_t generation = 0;
+  int components = 0;   // N; 0 = 95 % per fold
+  double sigma2Mm2 = 70.0;
+  bool operator==(const AnalysisKey&) const = default;
+};
+
+struct AnalysisResult {
+  AnalysisKey key;
+  std::vector<double> anglesDeg;           // −90 … 90 step 5
+  std::vector<std::string> subjects;       // held out, first-seen order
+  std::vector<ViewErrorRow> knownView;     // subject × angle × {lsq, map}
+  std::vector<SigmaSweepRow> sigmaSweep;   // σ² grid × {lsq, map}, mean over subjects and angles
+  std::vector<VarianceRow> spectrum;       // model of every walker
+  double seconds = 0.0;                    // wall time of the computation
+};
+
+// Finished results by key (the last few), so going back to earlier settings is instant.
+struct AnalysisCache {
+  std::vector<std::shared_ptr<const AnalysisResult>> results;  // newest last, at most 6
+  std::shared_ptr<const AnalysisResult> find(const AnalysisKey& key) const;
+  void add(std::shared_ptr<const AnalysisResult> result);
+};
+
+// Runs the evaluation; progress(done, total, what). Throws on failure.
+AnalysisResult computeAnalysis(const Population& population, const AnalysisKey& key, const ProgressFn& progress);
+
+// The error at each of result.anglesDeg for `method` ("lsq" or "map"), for one subject,
+// or (subject empty) the mean over the held-out subjects.
+std::vector<double> errorCurve(const AnalysisResult& result, const std::string& subject, const std::string& method,
+                               ErrorMetric metric);
+const char* metricName(ErrorMetric metric);  // "E_a", "E_r", "MPJPE"
+const char* metricUnit(ErrorMetric metric);  // "mm²", "", "mm"
+
+// The curves as CSV (atomic write): angle_deg, then one column per curve (subject and
+// mean, LSQ and MAP, every metric); then the σ² sweep and the spectrum as further blocks
+// separated by a blank line. Throws Error(Io) on a write failure.
+void writeAnalysisCsv(const AnalysisResult& result, const std::string& subject, const std::filesystem::path& file);
+
+}  // namespace ew::ui

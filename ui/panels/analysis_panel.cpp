@@ -1,0 +1,188 @@
+#include "ui/panels/analysis_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <vector>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+#include "ui/convert.h"
+#include "ui/render/palette.h"
+#include "ui/widgets/plot.h"
+
+namespace ew::ui {
+
+namespace {
+
+constexpr ImU32 kLsqColour = IM_COL32(110, 170, 255, 255);   // blue
+constexpr ImU32 kMapColour = IM_COL32(255, 160, 60, 255);    // amber (as the reconstruction)
+
+double sweepValue(const SigmaSweepRow& row, ErrorMetric m) {
+  switch (m) {
+    case ErrorMetric::AbsMm2: return row.meanAbsErrorMm2;
+    case ErrorMetric::Relative: return row.meanRelError;
+    case ErrorMetric::MpjpeMm: return row.mpjpeMm;
+  }
+  return 0.0;
+}
+
+std::string axisLabel(ErrorMetric m) {
+  const std::string unit = metricUnit(m);
+  return std::string(metricName(m)) + (unit.empty() ? " (relative)" : " (" + unit + ")");
+}
+
+}  // namespace
+
+void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
+  if (!open) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  if (s.panels.tour.active && s.panels.tour.lastHeight > 0.0f) {
+    // During the tour: between the header and the tour's window.
+    const float top = 52.0f * ctx.scale, bottom = display.y - s.panels.tour.lastHeight - 28.0f * ctx.scale;
+    ImGui::SetNextWindowSize(ImVec2(display.x * 0.62f, std::max(200.0f, bottom - top)), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, top), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  } else {
+    ImGui::SetNextWindowSize(ImVec2(display.x * 0.62f, display.y * 0.78f), ImGuiCond_Appearing);
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.53f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  }
+  if (!ImGui::Begin("Analysis: error against view angle (leave-one-subject-out)", &open,
+                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
+                        ImGuiWindowFlags_NoScrollbar)) {
+    ImGui::End();
+    return;
+  }
+  actions::requestAnalysis(s);
+  const auto result = s.analysis.find(actions::analysisKey(s));
+  const std::string subject =
+      s.doc.population && s.doc.population->walkerCount() > 0
+          ? s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)].subject
+          : std::string();
+
+  // Controls.
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextDisabled("metric");
+  ImGui::SameLine();
+  int m = static_cast<int>(metric);
+  ImGui::RadioButton("E_a (mm²)", &m, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("E_r", &m, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("MPJPE (mm)", &m, 2);
+  metric = static_cast<ErrorMetric>(m);
+  ImGui::SameLine(0.0f, 24.0f * ctx.scale);
+  ImGui::Checkbox("LSQ", &showLsq);
+  ImGui::SameLine();
+  ImGui::Checkbox("MAP", &showMap);
+  ImGui::SameLine(0.0f, 24.0f * ctx.scale);
+  ImGui::SetNextItemWidth(220.0f * ctx.scale);
+  ImGui::InputText("##csv", csvPath.data(), csvPath.size());
+  ImGui::SameLine();
+  if (ImGui::Button("Export CSV")) {
+    try {
+      actions::exportAnalysisCsv(s, csvPath.data());
+      status = std::string("wrote ") + csvPath.data();
+    } catch (const std::exception& e) {
+      status = std::string("CSV export failed: ") + e.what();
+      s.log.error(status);
+    }
+  }
+
+  if (s.jobs.analysis.running()) {
+    ImGui::ProgressBar(s.jobs.analysis.fraction(), ImVec2(-1.0f, 0.0f),
+                       ("computing: " + s.jobs.analysis.what()).c_str());
+  } else if (!s.jobs.analysisError.empty()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", s.jobs.analysisError.c_str());
+  } else if (result) {
+    ImGui::TextDisabled("%zu held-out subjects · σ² = %.0f mm² · N = %s · %.1f s (cached by inputs)%s%s",
+                        result->subjects.size(), result->key.sigma2Mm2,
+                        result->key.components > 0 ? std::to_string(result->key.components).c_str() : "95 % per fold",
+                        result->seconds, status.empty() ? "" : " · ", status.c_str());
+  }
+  if (!result) {
+    if (!s.jobs.analysis.running() && s.jobs.analysisError.empty()) ImGui::TextDisabled("waiting for data…");
+    ImGui::End();
+    return;
+  }
+
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const float gap = 10.0f * ctx.scale;
+  const float topH = avail.y * 0.58f;
+
+  // Error against view angle.
+  std::vector<std::vector<double>> ys;
+  std::vector<PlotSeries> series;
+  ys.reserve(4);
+  const std::span<const double> angles(result->anglesDeg);
+  for (const char* method : {"lsq", "map"}) {
+    const bool lsq = std::string(method) == "lsq";
+    if ((lsq && !showLsq) || (!lsq && !showMap)) continue;
+    const ImU32 colour = lsq ? kLsqColour : kMapColour;
+    ys.push_back(errorCurve(*result, subject, method, metric));
+    series.push_back({subject + (lsq ? " LSQ" : " MAP"), angles, ys.back(), colour, 2.6f, false, true});
+    ys.push_back(errorCurve(*result, "", method, metric));
+    series.push_back({std::string("mean of all subjects ") + (lsq ? "LSQ" : "MAP"), angles, ys.back(),
+                      (colour & 0x00FFFFFF) | 0xB0000000, 2.0f, true, false});
+  }
+  PlotSpec angleSpec;
+  angleSpec.xLabel = "view angle α (°; 0 = frontal, ±90 = profile)";
+  angleSpec.yLabel = axisLabel(metric);
+  angleSpec.xUnit = "°";
+  angleSpec.legendBottom = true;
+  char alphaLabel[32];
+  std::snprintf(alphaLabel, sizeof alphaLabel, "α = %.0f°", s.doc.recon.alphaDeg);
+  if (std::abs(s.doc.recon.alphaDeg) <= 90.0)
+    angleSpec.markers.push_back({s.doc.recon.alphaDeg, alphaLabel, toImU32(palette::kCamera)});
+  drawPlot("##angle", ImVec2(avail.x, topH), angleSpec, series, ctx.scale);
+
+  // σ² sweep and spectrum side by side.
+  const float bottomH = avail.y - topH - gap * 0.5f - 2.0f * ImGui::GetStyle().ItemSpacing.y - 2.0f;
+  const float halfW = 0.5f * (avail.x - gap);
+  std::vector<double> sx, mapY, lsqY;
+  for (const auto& row : result->sigmaSweep) {
+    if (row.method == "map") {
+      sx.push_back(row.sigma2Mm2);
+      mapY.push_back(sweepValue(row, metric));
+    }
+  }
+  for (const auto& row : result->sigmaSweep)
+    if (row.method == "lsq") lsqY.push_back(sweepValue(row, metric));
+  lsqY.resize(sx.size(), lsqY.empty() ? std::nan("") : lsqY.front());
+  std::vector<PlotSeries> sigmaSeries{{"MAP, mean", sx, mapY, kMapColour, 2.4f, false, true},
+                                      {"LSQ (no σ²)", sx, lsqY, kLsqColour, 2.0f, true, false}};
+  PlotSpec sigmaSpec;
+  sigmaSpec.xLabel = "MAP prior σ² (mm², log)";
+  sigmaSpec.yLabel = axisLabel(metric) + ", mean over subjects and angles";
+  sigmaSpec.xLog = true;
+  sigmaSpec.legendBottom = true;
+  char sigmaLabel[40];
+  std::snprintf(sigmaLabel, sizeof sigmaLabel, "σ² = %.0f", s.doc.recon.sigma2Mm2);
+  sigmaSpec.markers.push_back({s.doc.recon.sigma2Mm2, sigmaLabel, toImU32(palette::kCamera)});
+  ImGui::Dummy(ImVec2(0.0f, gap * 0.5f));
+  drawPlot("##sigma", ImVec2(halfW, bottomH), sigmaSpec, sigmaSeries, ctx.scale);
+
+  std::vector<double> cx, ev;
+  for (const auto& row : result->spectrum) {
+    cx.push_back(row.component);
+    ev.push_back(row.eigenvalueMm2);
+  }
+  std::vector<PlotSeries> spectrumSeries{{"eigenvalue λ_n", cx, ev, IM_COL32(230, 234, 240, 255), 2.0f, false, true}};
+  PlotSpec spectrumSpec;
+  spectrumSpec.xLabel = "component n";
+  spectrumSpec.yLabel = "eigenvalue λ_n (mm², log; model of every walker)";
+  spectrumSpec.yLog = true;
+  spectrumSpec.valueFormat = "%.4g mm²";
+  if (const auto* r = s.derived.recon()) {
+    char nLabel[32];
+    std::snprintf(nLabel, sizeof nLabel, "N = %d", r->components);
+    spectrumSpec.markers.push_back({static_cast<double>(r->components), nLabel, toImU32(palette::kCamera)});
+  }
+  ImGui::SameLine(0.0f, gap);
+  drawPlot("##spectrum", ImVec2(halfW, bottomH), spectrumSpec, spectrumSeries, ctx.scale);
+  ImGui::End();
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,226 @@
+#include "ui/panels/data_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <system_error>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+
+namespace ew::ui {
+
+namespace {
+
+constexpr const char* kUnits[] = {"file's", "mm", "cm", "m", "in", "cmu"};
+constexpr const char* kFormatNames[] = {".c3d", ".bvh", ".asf/.amc", ".trc", ".csv"};
+
+// Index into kFormatNames, or -1.
+int formatIndex(const std::string& name) {
+  std::string ext = std::filesystem::path(name).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == ".c3d") return 0;
+  if (ext == ".bvh") return 1;
+  if (ext == ".asf" || ext == ".amc") return 2;
+  if (ext == ".trc") return 3;
+  if (ext == ".csv") return 4;
+  return -1;
+}
+
+void setFolder(std::array<char, 1024>& buffer, const std::string& path) {
+  const std::size_t n = std::min(path.size(), buffer.size() - 1);
+  std::copy_n(path.begin(), n, buffer.begin());
+  buffer[n] = '\0';
+}
+
+}  // namespace
+
+void DataPanel::refresh() {
+  listedFolder = folder.data();
+  entries.clear();
+  selected.clear();
+  listError.clear();
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(listedFolder, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.empty() || name.front() == '.') continue;
+    std::error_code typeError;
+    const bool isFolder = it->is_directory(typeError);
+    if (isFolder || formatIndex(name) >= 0) entries.push_back({name, isFolder});
+  }
+  if (ec) listError = ec.message();
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.folder != b.folder ? a.folder : a.name < b.name;
+  });
+}
+
+void DataPanel::draw(AppState& s, const FrameContext& ctx) {
+  if (!open) return;
+  if (folder[0] == '\0') {
+    std::error_code ec;
+    setFolder(folder, std::filesystem::current_path(ec).string());
+  }
+  if (listedFolder != folder.data()) refresh();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowSize(ImVec2(display.x * 0.66f, display.y * 0.7f), ImGuiCond_Appearing);
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  if (!ImGui::Begin("Data: open files and folders", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  auto attempt = [&](auto&& fn) {
+    try {
+      fn();
+    } catch (const std::exception& e) {
+      status = e.what();
+      s.log.error(status);
+    }
+  };
+  if (ImGui::BeginTabBar("##data")) {
+    // [SECTION] Open: folder browser and recent files
+    if (ImGui::BeginTabItem("Open")) {
+      if (ImGui::Button("Up")) {
+        const auto parent = std::filesystem::path(folder.data()).parent_path();
+        if (!parent.empty()) setFolder(folder, parent.string());
+      }
+      ImGui::SameLine();
+      ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Refresh").x - 3.0f * ImGui::GetStyle().FramePadding.x -
+                              ImGui::GetStyle().ItemSpacing.x);
+      ImGui::InputText("##folder", folder.data(), folder.size());
+      ImGui::SameLine();
+      if (ImGui::Button("Refresh")) refresh();
+      ImGui::TextDisabled("show");
+      for (std::size_t i = 0; i < formats.size(); ++i) {
+        ImGui::SameLine();
+        ImGui::Checkbox(kFormatNames[i], &formats[i]);
+      }
+      const float listH = ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetFrameHeightWithSpacing() -
+                          ImGui::GetTextLineHeightWithSpacing();
+      const float recentW = 300.0f * ctx.scale;
+      ImGui::BeginChild("##list", ImVec2(ImGui::GetContentRegionAvail().x - recentW, listH), true);
+      if (!listError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", listError.c_str());
+      std::string enter;
+      for (const auto& e : entries) {
+        if (e.folder) {
+          if (ImGui::Selectable(("[folder]  " + e.name).c_str(), false, ImGuiSelectableFlags_AllowDoubleClick) &&
+              ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
+            enter = e.name;
+        } else {
+          const int f = formatIndex(e.name);
+          if (f < 0 || !formats[static_cast<std::size_t>(f)]) continue;
+          bool& ticked = selected[e.name];
+          ImGui::Checkbox(e.name.c_str(), &ticked);
+        }
+      }
+      if (entries.empty() && listError.empty()) ImGui::TextDisabled("no folders or motion-capture files here");
+      ImGui::EndChild();
+      if (!enter.empty()) setFolder(folder, (std::filesystem::path(listedFolder) / enter).string());
+      ImGui::SameLine();
+      ImGui::BeginChild("##recent", ImVec2(0.0f, listH), true);
+      ImGui::TextDisabled("Recent");
+      ImGui::Separator();
+      std::vector<std::filesystem::path> reopen;
+      for (const auto& r : s.recentPaths) {
+        if (ImGui::Selectable(r.filename().string().c_str())) reopen = {r};
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.string().c_str());
+      }
+      if (s.recentPaths.empty()) ImGui::TextDisabled("nothing opened yet");
+      ImGui::EndChild();
+      if (!reopen.empty()) attempt([&] { actions::open(s, reopen); });
+
+      std::vector<std::filesystem::path> chosen;
+      for (const auto& [name, on] : selected)
+        if (on) chosen.push_back(std::filesystem::path(listedFolder) / name);
+      ImGui::BeginDisabled(chosen.empty());
+      if (ImGui::Button("Open selected files")) attempt([&] { actions::drop(s, chosen); });
+      ImGui::EndDisabled();
+      ImGui::SameLine();
+      if (ImGui::Button("Open this folder")) attempt([&] { actions::drop(s, {std::filesystem::path(listedFolder)}); });
+      ImGui::SameLine();
+      if (ImGui::Button("Synthetic default")) attempt([&] { actions::open(s, {}); });
+      ImGui::TextDisabled("Tip: drop files or folders on the window. A manifest CSV opens its trials.");
+      ImGui::EndTabItem();
+    }
+    // [SECTION] Summary: one row per trial, warnings, overrides
+    if (ImGui::BeginTabItem("Summary")) {
+      actions::requestDataSummary(s);
+      const auto& d = s.dataSummary;
+      if (s.doc.sourcePaths.empty()) {
+        ImGui::TextDisabled("The synthetic default population has no files.");
+      } else if (s.jobs.summary.running()) {
+        ImGui::ProgressBar(s.jobs.summary.fraction(), ImVec2(-1.0f, 0.0f), "reading the files…");
+      } else if (d && d->generation == s.doc.generation) {
+        for (const auto& w : d->warnings) ImGui::TextColored(ImVec4(0.9f, 0.6f, 0.2f, 1.0f), "%s", w.c_str());
+        const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY |
+                                      ImGuiTableFlags_ScrollX | ImGuiTableFlags_Resizable | ImGuiTableFlags_SizingFixedFit;
+        const float tableH = ImGui::GetContentRegionAvail().y - ImGui::GetFrameHeightWithSpacing();
+        if (ImGui::BeginTable("##summary", 11, flags, ImVec2(0.0f, tableH))) {
+          ImGui::TableSetupScrollFreeze(1, 1);
+          for (const char* h : {"file", "format", "frames", "rate Hz", "units", "points", "cycles", "stride Hz",
+                                "speed m/s", "override (unit, rate)", "warnings"})
+            ImGui::TableSetupColumn(h);
+          ImGui::TableHeadersRow();
+          for (const auto& r : d->rows) {
+            ImGui::PushID(r.file.c_str());
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(std::filesystem::path(r.file).filename().string().c_str());
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.file.c_str());
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(r.format.c_str());
+            ImGui::TableNextColumn();
+            ImGui::Text("%d", r.frames);
+            ImGui::TableNextColumn();
+            ImGui::Text("%.1f", r.rateHz);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(r.units.c_str());
+            ImGui::TableNextColumn();
+            ImGui::Text("%d", r.pointsFound);
+            ImGui::TableNextColumn();
+            if (r.ok()) ImGui::Text("%.2f", r.cycles);
+            ImGui::TableNextColumn();
+            if (r.ok()) ImGui::Text("%.3f", r.strideHz);
+            ImGui::TableNextColumn();
+            if (r.ok()) ImGui::Text("%.2f", r.speedMps);
+            ImGui::TableNextColumn();
+            auto& e = edits[r.file];
+            ImGui::SetNextItemWidth(80.0f * ctx.scale);
+            ImGui::Combo("##unit", &e.unit, kUnits, static_cast<int>(std::size(kUnits)));
+            ImGui::SameLine();
+            ImGui::SetNextItemWidth(90.0f * ctx.scale);
+            ImGui::InputFloat("##rate", &e.rateHz, 0.0f, 0.0f, e.rateHz > 0.0f ? "%.1f Hz" : "file's");
+            e.rateHz = std::clamp(e.rateHz, 0.0f, 10000.0f);
+            ImGui::TableNextColumn();
+            if (!r.ok()) {
+              ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "ERROR (%s): %s", r.errorStage.c_str(), r.error.c_str());
+            } else if (r.warnings.empty()) {
+              ImGui::TextDisabled("none");
+            }
+            for (const auto& w : r.warnings) ImGui::TextColored(ImVec4(0.9f, 0.6f, 0.2f, 1.0f), "%s", w.c_str());
+            ImGui::PopID();
+          }
+          ImGui::EndTable();
+        }
+        if (ImGui::Button("Apply overrides and reload")) {
+          attempt([&] {
+            for (const auto& [file, e] : edits)
+              actions::setFileOverride(s, file, e.unit == 0 ? std::string() : kUnits[e.unit], e.rateHz);
+            actions::reloadWithOverrides(s);
+            status = "reloading with " + std::to_string(s.doc.fileOverrides.size()) + " override(s)";
+          });
+        }
+        ImGui::SameLine();
+        ImGui::TextDisabled("%zu trials · %s", d->rows.size(), status.c_str());
+      }
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+  ImGui::End();
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,87 @@
+#include "ui/panels/tour_panel.h"
+
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+#include "ui/app/tour.h"
+
+namespace ew::ui {
+
+void TourPanel::draw(AppState& s, const FrameContext& ctx) {
+  if (!active) return;
+  const auto steps = tourSteps();
+  const auto& st = steps[static_cast<std::size_t>(step)];
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float w = std::min(display.x * 0.46f, 760.0f * ctx.scale);
+  ImGui::SetNextWindowSize(ImVec2(w, 0.0f), ImGuiCond_Always);
+  const float margin = 16.0f * ctx.scale;
+  const float y = display.y - margin;
+  switch (st.anchor) {
+    case TourAnchor::BottomCentre:
+      ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, y), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+      break;
+    case TourAnchor::BottomLeft:
+      ImGui::SetNextWindowPos(ImVec2(margin, y), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+      break;
+    case TourAnchor::BottomRight:
+      ImGui::SetNextWindowPos(ImVec2(display.x - margin, y), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+      break;
+  }
+  ImGui::SetNextWindowBgAlpha(1.0f);
+  bool open = true;
+  char title[96];
+  std::snprintf(title, sizeof title, "Guided tour · step %d of %zu###tour", step + 1, steps.size());
+  if (ImGui::Begin(title, &open,
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize |
+                       ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize)) {
+    // Above every other window (the analysis window a step opens), without taking focus.
+    ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
+    lastHeight = ImGui::GetWindowHeight();
+    if (s.fonts.large) ImGui::PushFont(s.fonts.large);
+    ImGui::TextColored(ImVec4(1.0f, 0.62f, 0.26f, 1.0f), "%s", st.title);
+    if (s.fonts.large) ImGui::PopFont();
+    ImGui::Spacing();
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + w - 2.0f * ImGui::GetStyle().WindowPadding.x);
+    ImGui::TextUnformatted(st.text);
+    ImGui::PopTextWrapPos();
+    ImGui::Spacing();
+    ImGui::Separator();
+    // Progress dots, then the buttons on the right.
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    const ImVec2 c = ImGui::GetCursorScreenPos();
+    const float r = 5.0f * ctx.scale, h = ImGui::GetFrameHeight();
+    for (int i = 0; i < static_cast<int>(steps.size()); ++i) {
+      const ImVec2 centre{c.x + r + static_cast<float>(i) * 4.0f * r, c.y + 0.5f * h};
+      if (i == step) {
+        dl->AddCircleFilled(centre, r, IM_COL32(255, 158, 66, 255));
+      } else {
+        dl->AddCircle(centre, r, ImGui::GetColorU32(ImGuiCol_TextDisabled), 0, 1.5f * ctx.scale);
+      }
+    }
+    try {
+      const float bw = 110.0f * ctx.scale;
+      const ImGuiStyle& style = ImGui::GetStyle();
+      ImGui::SetCursorPosX(ImGui::GetWindowContentRegionMax().x - 3.0f * bw - 2.0f * style.ItemSpacing.x);
+      ImGui::BeginDisabled(step == 0);
+      if (ImGui::Button("Back", ImVec2(bw, 0))) actions::tourBack(s);
+      ImGui::EndDisabled();
+      ImGui::SameLine();
+      const bool last = step + 1 >= static_cast<int>(steps.size());
+      if (ImGui::Button(last ? "Finish" : "Next", ImVec2(bw, 0))) actions::tourNext(s);
+      ImGui::SameLine();
+      if (ImGui::Button("End tour", ImVec2(bw, 0))) actions::tourEnd(s);
+    } catch (const std::exception& e) {
+      s.log.error(e.what());
+    }
+  }
+  ImGui::End();
+  if (!open) actions::tourEnd(s);
+}
+
+}  // namespace ew::ui

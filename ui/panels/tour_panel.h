@@ -1,0 +1,20 @@
+#pragma once
+// The guided tour's window (ui/app/tour.h): the step's title and text, Back / Next / End.
+// Its steps apply their actions through the script action system (actions::tourNext …).
+
+#include "ui/panels/panel_window.h"
+
+namespace ew::ui {
+
+struct AppState;
+struct FrameContext;
+
+struct TourPanel {
+  bool active = false;
+  int step = 0;  // 0-based
+  float lastHeight = 0.0f;  // of the window last frame (the analysis window stays above it)
+
+  void draw(AppState& s, const FrameContext& ctx);
+};
+
+}  // namespace ew::ui
