@@ -174,7 +174,8 @@ ScanSignals makeScanSignals(const CleanFrames& cf, double rateHz) {
   const auto k = std::min<Eigen::Index>(kScanComponents, dec.cols());
   const Eigen::MatrixXd basis = eig.eigenvectors().rightCols(k);  // largest eigenvalues last
   ScanSignals s;
-  s.full.values.noalias() = cf.centered * basis;
+  // Lazy: a 480 × 45 by 45 × 6 product is cheaper than packing its operands for GEMM.
+  s.full.values = cf.centered.lazyProduct(basis);
   s.full.times = cf.times;
   s.full.totalSS = s.full.values.squaredNorm();
   markUniform(s.full);
