@@ -3,7 +3,6 @@
 // wrote; helpers to measure screenshots with OpenCV. Shared by tests/gui/test_gui_*.cpp.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -44,19 +43,28 @@ inline RunResult runViewer(const std::filesystem::path& dir, const std::string& 
   // turns leak checking back on (ASAN_OPTIONS=detect_leaks=1).
   const std::string env = std::string("ASAN_OPTIONS=detect_leaks=0:abort_on_error=1 LSAN_OPTIONS=suppressions=") +
                           EW_GUI_LSAN_SUPPRESSIONS + ":print_suppressions=0 " + extraEnv + " ";
-  const auto out = dir / "out.txt", err = dir / "err.txt";
-  const std::string cmd = "xvfb-run -a -s '-screen 0 1920x1080x24' env " + env + quote(EW_GUI_PATH) + " " + args +
-                          " > " + quote(out.string()) + " 2> " + quote(err.string());
+  const auto out = dir / "out.txt", err = dir / "err.txt", rc = dir / "rc.txt", runner = dir / "run.sh";
+  // The viewer's exit status goes to rc.txt, not through xvfb-run's: xvfb-run replaces the
+  // status with its own when its clean-up fails (exit 5, "problem while cleaning up
+  // temporary directory", seen on a loaded CI machine), which would hide the viewer's.
+  std::ofstream(runner) << "env " << env << quote(EW_GUI_PATH) << " " << args << " > " << quote(out.string())
+                        << " 2> " << quote(err.string()) << "\necho $? > " << quote(rc.string()) << "\n";
+  const std::string cmd = "xvfb-run -a -s '-screen 0 1920x1080x24' sh " + quote(runner.string()) + " 2> " +
+                          quote((dir / "xvfb.txt").string());
   RunResult r;
   for (int attempt = 0; attempt < 3; ++attempt) {
-    const int status = std::system(cmd.c_str());
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::filesystem::remove(rc);
+    const int xvfbStatus = std::system(cmd.c_str());
     r.out = readAll(out);
     r.err = readAll(err);
-    // xvfb-run -a can race with another test for a display number: try again.
-    if (r.err.find("Xvfb failed to start") == std::string::npos &&
-        r.err.find("Cannot establish any listening sockets") == std::string::npos)
+    const std::string code = readAll(rc);
+    // No rc.txt: the X server did not start (xvfb-run -a can race with another test for a
+    // display number): try again.
+    if (!code.empty()) {
+      r.exitCode = std::stoi(code);
       break;
+    }
+    r.err += readAll(dir / "xvfb.txt") + "(xvfb-run status " + std::to_string(xvfbStatus) + ")\n";
   }
   return r;
 }

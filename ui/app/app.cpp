@@ -236,9 +236,13 @@ class App {
         gl::finish();
         profile_->swap += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
         if (++profile_->frames % 60 == 0) {
-          std::fprintf(stderr, "eigenwalker: profile: frame %.2f ms (of which the two views %.2f ms), swap %.2f ms (means of 60)\n",
-                       profile_->draw / 60.0, profile_->views / 60.0, profile_->swap / 60.0);
-          profile_->draw = profile_->swap = profile_->views = 0.0;
+          std::fprintf(stderr,
+                       "eigenwalker: profile: frame %.2f ms (of which the two views %.2f ms, the UI's draw "
+                       "lists %.2f ms for %d vertices), swap %.2f ms (means of 60)\n",
+                       profile_->draw / 60.0, profile_->views / 60.0, profile_->imgui / 60.0,
+                       profile_->vertices / 60, profile_->swap / 60.0);
+          profile_->draw = profile_->swap = profile_->views = profile_->imgui = 0.0;
+          profile_->vertices = 0;
         }
       }
       ++state_.frame;
@@ -406,7 +410,13 @@ class App {
     gl::bindDefaultFramebuffer(w, h);
     gl::clear(state_.view.theme == Theme::Light ? glm::vec4{0.93f, 0.935f, 0.945f, 1.0f}
                                                 : glm::vec4{0.05f, 0.055f, 0.065f, 1.0f});
+    const auto r0 = std::chrono::steady_clock::now();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (profile_) {
+      gl::finish();
+      profile_->imgui += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - r0).count();
+      profile_->vertices += ImGui::GetDrawData()->TotalVtxCount;
+    }
   }
 
   AppOptions options_;
@@ -426,8 +436,8 @@ class App {
   int benchRemaining_ = 0;
   FrameStats stats_;
   struct Profile {
-    double draw = 0.0, swap = 0.0, views = 0.0;
-    int frames = 0;
+    double draw = 0.0, swap = 0.0, views = 0.0, imgui = 0.0;
+    int frames = 0, vertices = 0;
   };
   // EW_PROFILE=1: per-phase frame times on stderr (adds glFinish, so slower overall).
   std::optional<Profile> profile_ = std::getenv("EW_PROFILE") ? std::optional<Profile>(Profile{}) : std::nullopt;

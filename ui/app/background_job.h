@@ -10,14 +10,22 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
 namespace ew::ui {
 
+// Thrown out of JobProgress::set once the job's owner has gone: the work stops at its next
+// progress report instead of running on for minutes after the window has closed.
+struct JobCancelled : std::runtime_error {
+  JobCancelled() : std::runtime_error("cancelled") {}
+};
+
 class JobProgress {
  public:
   void set(int done, int total, std::string what) {
+    if (cancelled_) throw JobCancelled();
     std::lock_guard lock(mutex_);
     done_ = done;
     total_ = total;
@@ -32,11 +40,13 @@ class JobProgress {
     std::lock_guard lock(mutex_);
     return what_;
   }
+  void cancel() { cancelled_ = true; }
 
  private:
   mutable std::mutex mutex_;
   int done_ = 0, total_ = 0;
   std::string what_;
+  std::atomic<bool> cancelled_{false};
 };
 
 template <class T>
@@ -52,6 +62,7 @@ class BackgroundJob {
   BackgroundJob(const BackgroundJob&) = delete;
   BackgroundJob& operator=(const BackgroundJob&) = delete;
   ~BackgroundJob() {
+    if (progress_) progress_->cancel();
     if (future_.valid()) future_.wait();
   }
 
