@@ -37,6 +37,7 @@ struct ImFont;
 
 namespace ew::ui {
 
+class Backdrop;
 class Renderer;
 
 struct Jobs {
@@ -106,6 +107,7 @@ struct AppState {
 // What a panel needs besides the state to draw one frame.
 struct FrameContext {
   Renderer& renderer;
+  Backdrop& backdrop;  // what the panels draw beneath ImGui (window backgrounds, view images)
   float scale = 1.0f;   // UI scale × content scale (sizes in the panels multiply by it)
   double dtS = 0.0;
 };

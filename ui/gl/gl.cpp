@@ -201,7 +201,7 @@ void RenderTarget::ensure(int width, int height, int samples) {
 
   resolved_.allocate(width, height);
   glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT24,
+  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT32F,
                                    width, height);
   glBindFramebuffer(GL_FRAMEBUFFER, msaaFbo_.id());
   if (samples > 1) {
@@ -254,6 +254,13 @@ std::vector<unsigned char> RenderTarget::readPixelsRgb() const {
   return pixels;
 }
 
+void RenderTarget::blitToDefault(int x, int y) const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolveFbo_.id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 // [SECTION] State and draw calls
 
 void apply(const DrawState& state) {
@@ -294,6 +301,21 @@ void clear(const glm::vec4& colour) {
   glClearColor(colour.r, colour.g, colour.b, colour.a);
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void clearColour(const glm::vec4& colour) {
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClearColor(colour.r, colour.g, colour.b, colour.a);
+  glClear(GL_COLOR_BUFFER_BIT);
+}
+
+void fillRect(int x, int y, int width, int height, const glm::vec4& colour) {
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(x, y, std::max(width, 0), std::max(height, 0));
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glClearColor(colour.r, colour.g, colour.b, colour.a);
+  glClear(GL_COLOR_BUFFER_BIT);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void drawQuads(const VertexArray& vao, int instances) {

@@ -156,6 +156,9 @@ class RenderTarget {
   const Texture2D& texture() const { return resolved_; }
   // RGB rows of the resolved image (after end()), bottom row first.
   std::vector<unsigned char> readPixelsRgb() const;
+  // Copies the resolved image 1:1 into the default framebuffer with its lower-left corner
+  // at (x, y) (framebuffer pixels, origin bottom-left).
+  void blitToDefault(int x, int y) const;
   int width() const { return width_; }
   int height() const { return height_; }
   bool valid() const { return width_ > 0 && height_ > 0; }
@@ -182,6 +185,11 @@ struct DrawState {
 
 void apply(const DrawState& state);
 void clear(const glm::vec4& colour);
+// The colour buffer only (the default framebuffer has no depth).
+void clearColour(const glm::vec4& colour);
+// Fills a rectangle of the bound framebuffer (pixels, origin bottom-left) with a colour:
+// a scissored clear, no shading.
+void fillRect(int x, int y, int width, int height, const glm::vec4& colour);
 // Instanced 4-vertex triangle strip (the quad corners come from gl_VertexID).
 void drawQuads(const VertexArray& vao, int instances);
 // A single quad (or full-screen triangle strip) with no attributes.

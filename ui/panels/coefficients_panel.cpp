@@ -9,7 +9,7 @@
 namespace ew::ui {
 
 void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  if (beginPanel("Eigenwalker coefficients", rect)) {
+  if (beginPanel(ctx.backdrop, "Eigenwalker coefficients", rect)) {
     const bool explore = s.doc.mode == Mode::Explore;
     const ReconBase* r = s.derived.recon();
     const ReconDisplay* d = s.derived.display();

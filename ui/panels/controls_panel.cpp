@@ -20,7 +20,7 @@ void sectionTitle(const char* text) {
 }  // namespace
 
 void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  if (beginPanel("Controls", rect)) {
+  if (beginPanel(ctx.backdrop, "Controls", rect)) {
     auto& doc = s.doc;
     int mode = doc.mode == Mode::Reconstruct ? 0 : 1;
     if (ImGui::RadioButton("Reconstruct", &mode, 0)) actions::setMode(s, Mode::Reconstruct);

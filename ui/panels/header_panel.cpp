@@ -8,7 +8,7 @@
 namespace ew::ui {
 
 void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  if (beginPanel("##header", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
+  if (beginPanel(ctx.backdrop, "##header", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
     if (s.fonts.large) ImGui::PushFont(s.fonts.large);
     ImGui::TextColored(ImVec4(1.0f, 0.72f, 0.38f, 1.0f), "Eigenwalker");
     if (s.fonts.large) ImGui::PopFont();

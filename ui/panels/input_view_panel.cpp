@@ -78,7 +78,7 @@ CameraMatrices inputViewCamera(float aspect) {
 
 void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-  if (beginPanel("2D input", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
+  if (beginPanel(ctx.backdrop, "2D input", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
                                         ImGuiWindowFlags_NoBackground)) {
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     const ImVec2 size = ImGui::GetContentRegionAvail();
@@ -95,7 +95,7 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
 
       ImDrawList* dl = ImGui::GetWindowDrawList();
       const ImVec2 p1{p0.x + size.x, p0.y + size.y};
-      dl->AddImage(target.texture().imguiId(), p0, p1, ImVec2(0, 1), ImVec2(1, 0));
+      ctx.backdrop.image(target, {p0.x, p0.y});
       const float pad = 10.0f * ctx.scale;
       char sub[160];
       if (reconstruct) {

@@ -10,7 +10,7 @@
 namespace ew::ui {
 
 void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  if (beginPanel("Depth error per joint (RMS over one cycle, mm)", rect, ImGuiWindowFlags_NoScrollbar)) {
+  if (beginPanel(ctx.backdrop, "Depth error per joint (RMS over one cycle, mm)", rect, ImGuiWindowFlags_NoScrollbar)) {
     const ReconDisplay* d = s.derived.display();
     if (s.doc.mode == Mode::Explore) {
       ImGui::TextDisabled("reconstruct mode only");

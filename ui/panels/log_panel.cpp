@@ -5,8 +5,8 @@
 
 namespace ew::ui {
 
-void LogPanel::draw(AppState& s, const FrameContext& /*ctx*/, const PanelRect& rect) {
-  if (beginPanel("Log", rect)) {
+void LogPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  if (beginPanel(ctx.backdrop, "Log", rect)) {
     ImGui::Checkbox("info", &showInfo);
     ImGui::Separator();
     ImGui::BeginChild("##entries");

@@ -29,7 +29,7 @@ void metric(const AppState& s, const char* label, const char* value, const char*
 }  // namespace
 
 void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  if (beginPanel("##metrics", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
+  if (beginPanel(ctx.backdrop, "##metrics", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
     const ReconBase* r = s.derived.recon();
     const ReconDisplay* d = s.derived.display();
     if (s.doc.mode == Mode::Explore) {

@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include "ui/render/backdrop.h"
+
 namespace ew::ui {
 
 struct PanelRect {
@@ -11,14 +13,20 @@ struct PanelRect {
   ImVec2 size{0.0f, 0.0f};
 };
 
-// ImGui::Begin at a fixed place; always pair with ImGui::End().
-inline bool beginPanel(const char* title, const PanelRect& r, ImGuiWindowFlags extra = 0) {
+// ImGui::Begin at a fixed place; always pair with ImGui::End(). The window's background
+// is filled by the backdrop (a plain GL clear) rather than by ImGui, unless `extra` asks
+// for no background at all.
+inline bool beginPanel(Backdrop& backdrop, const char* title, const PanelRect& r, ImGuiWindowFlags extra = 0) {
+  if (!(extra & ImGuiWindowFlags_NoBackground)) {
+    const ImVec4 c = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+    backdrop.fill({r.pos.x, r.pos.y}, {r.size.x, r.size.y}, {c.x, c.y, c.z, c.w});
+  }
   ImGui::SetNextWindowPos(r.pos);
   ImGui::SetNextWindowSize(r.size);
   return ImGui::Begin(title, nullptr,
-                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                          ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                          ImGuiWindowFlags_NoBringToFrontOnFocus | extra);
+                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                          ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                          ImGuiWindowFlags_NoBackground | extra);
 }
 
 }  // namespace ew::ui

@@ -13,7 +13,7 @@
 namespace ew::ui {
 
 void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  if (beginPanel("View-angle profile J(α)", rect, ImGuiWindowFlags_NoScrollbar)) {
+  if (beginPanel(ctx.backdrop, "View-angle profile J(α)", rect, ImGuiWindowFlags_NoScrollbar)) {
     const ReconBase* r = s.derived.recon();
     if (s.doc.mode == Mode::Explore) {
       ImGui::TextDisabled("reconstruct mode only");

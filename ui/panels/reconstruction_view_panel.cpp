@@ -97,7 +97,7 @@ bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, 
 
 void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-  if (beginPanel("3D reconstruction", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
+  if (beginPanel(ctx.backdrop, "3D reconstruction", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
                                         ImGuiWindowFlags_NoBackground)) {
     const ImVec2 p0 = ImGui::GetCursorScreenPos();
     const ImVec2 size = ImGui::GetContentRegionAvail();
@@ -122,7 +122,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
 
       ImDrawList* dl = ImGui::GetWindowDrawList();
       const ImVec2 p1{p0.x + size.x, p0.y + size.y};
-      dl->AddImage(target.texture().imguiId(), p0, p1, ImVec2(0, 1), ImVec2(1, 0));
+      ctx.backdrop.image(target, {p0.x, p0.y});
       const float pad = 10.0f * ctx.scale;
       char sub[200];
       if (reconstruct && r) {

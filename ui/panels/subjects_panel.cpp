@@ -32,7 +32,7 @@ void fact(const char* label, const std::string& value) {
 }  // namespace
 
 void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  if (beginPanel("Subjects", rect)) {
+  if (beginPanel(ctx.backdrop, "Subjects", rect)) {
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::InputTextWithHint("##filter", "search subjects…", filter.data(), filter.size());
     const auto* pop = s.doc.population.get();
