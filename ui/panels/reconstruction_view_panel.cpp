@@ -75,9 +75,9 @@ bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, 
     if (o.ghost && !o.pointLights) addFigure(scene, truth, ghostStyle());
     if (o.errorLines && !o.pointLights) addErrorLines(scene, truth, rec, palette::kError, 2.5f * lineScale);
     if (o.cameraGlyph) {
-      addCameraGlyph(scene, r->alphaTrueDeg, 1500.0f, palette::kCamera, false);
+      addCameraGlyph(scene, r->alphaTrueDeg, 1150.0f, palette::kCamera, false);
       if (s.doc.recon.unknownAngle)
-        addCameraGlyph(scene, r->alphaUsedDeg, 1300.0f, palette::kCameraEstimate, true);
+        addCameraGlyph(scene, r->alphaUsedDeg, 1000.0f, palette::kCameraEstimate, true);
     }
     drawn = true;
   } else if (!reconstruct && e) {
@@ -89,7 +89,7 @@ bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, 
     } else {
       addFigure(scene, pose, reconstructionStyle());
     }
-    if (o.cameraGlyph) addCameraGlyph(scene, s.doc.recon.alphaDeg, 1500.0f, palette::kCamera, false);
+    if (o.cameraGlyph) addCameraGlyph(scene, s.doc.recon.alphaDeg, 1150.0f, palette::kCamera, false);
     drawn = true;
   }
   return drawn;
