@@ -10,6 +10,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -376,6 +377,9 @@ class App {
   void drawFrame(double dt) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    // A scripted run ignores the pointer: under Xvfb it rests mid-screen, and its hover
+    // highlights and tooltips would land in screenshots at random.
+    if (scripted_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
     ImGui::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
     const Layout l = computeLayout(io.DisplaySize.x, io.DisplaySize.y, themeScale_);
