@@ -13,6 +13,8 @@
 #include <sstream>
 #include <string>
 
+#include "tests/common/test_support.h"
+
 namespace ew::test::gui {
 
 struct RunResult {
@@ -68,6 +70,25 @@ inline RunResult runViewer(const std::filesystem::path& dir, const std::string& 
   }
   return r;
 }
+
+// A fresh folder per test for its scripts, screenshots and the viewer's output; kept when
+// the test fails, to look at what the viewer drew.
+class GuiTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir = makeTempDir(::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name());
+  }
+  void TearDown() override {
+    if (!HasFailure()) std::filesystem::remove_all(dir);
+  }
+  // An image the viewer wrote into `dir` (empty, with a failure, when missing).
+  cv::Mat load(const std::string& name) const {
+    cv::Mat image = cv::imread((dir / name).string(), cv::IMREAD_COLOR);
+    EXPECT_FALSE(image.empty()) << name << " missing";
+    return image;
+  }
+  std::filesystem::path dir;
+};
 
 inline std::filesystem::path writeScript(const std::filesystem::path& dir, const std::string& json) {
   const auto file = dir / "script.json";

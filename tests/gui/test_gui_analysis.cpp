@@ -15,14 +15,7 @@
 namespace ew::test::gui {
 namespace {
 
-class GuiAnalysis : public ::testing::Test {
- protected:
-  void SetUp() override { dir = makeTempDir("gui_analysis"); }
-  void TearDown() override {
-    if (!HasFailure()) std::filesystem::remove_all(dir);
-  }
-  std::filesystem::path dir;
-};
+using GuiAnalysis = GuiTest;
 
 // The LSQ curves' blue (110, 170, 255).
 bool isLsqBlue(int r, int g, int b) { return std::abs(r - 110) < 30 && std::abs(g - 170) < 30 && b > 225; }

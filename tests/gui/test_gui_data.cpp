@@ -14,14 +14,7 @@
 namespace ew::test::gui {
 namespace {
 
-class GuiData : public ::testing::Test {
- protected:
-  void SetUp() override { dir = makeTempDir("gui_data"); }
-  void TearDown() override {
-    if (!HasFailure()) std::filesystem::remove_all(dir);
-  }
-  std::filesystem::path dir;
-};
+using GuiData = GuiTest;
 
 TEST_F(GuiData, DropAFolderSummariseAndOverrideTheRate) {
   const auto syn = dir / "syn";

@@ -12,19 +12,7 @@
 namespace ew::test::gui {
 namespace {
 
-class GuiDefault : public ::testing::Test {
- protected:
-  void SetUp() override { dir = makeTempDir("gui"); }
-  void TearDown() override {
-    if (!HasFailure()) std::filesystem::remove_all(dir);
-  }
-  cv::Mat load(const std::string& name) {
-    cv::Mat image = cv::imread((dir / name).string(), cv::IMREAD_COLOR);
-    EXPECT_FALSE(image.empty()) << "screenshot " << name << " missing";
-    return image;
-  }
-  std::filesystem::path dir;
-};
+using GuiDefault = GuiTest;
 
 TEST_F(GuiDefault, ScriptScreenshotsShowBothViewsAndFollowTheInputs) {
   const auto d = dir.string();

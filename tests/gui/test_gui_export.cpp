@@ -20,14 +20,7 @@
 namespace ew::test::gui {
 namespace {
 
-class GuiExport : public ::testing::Test {
- protected:
-  void SetUp() override { dir = makeTempDir("gui_export"); }
-  void TearDown() override {
-    if (!HasFailure()) std::filesystem::remove_all(dir);
-  }
-  std::filesystem::path dir;
-};
+using GuiExport = GuiTest;
 
 // Frames of one video (decoded one by one) and its size.
 struct VideoFacts {

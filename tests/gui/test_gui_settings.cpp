@@ -13,15 +13,10 @@
 namespace ew::test::gui {
 namespace {
 
-class GuiSettings : public ::testing::Test {
+class GuiSettings : public GuiTest {
  protected:
-  void SetUp() override { dir = makeTempDir("gui_settings"); }
-  void TearDown() override {
-    if (!HasFailure()) std::filesystem::remove_all(dir);
-  }
   std::string env() const { return "XDG_CONFIG_HOME=" + quote((dir / "config").string()); }
   std::filesystem::path file() const { return dir / "config" / "eigenwalker" / "settings.json"; }
-  std::filesystem::path dir;
 };
 
 TEST_F(GuiSettings, PersistBetweenRuns) {

@@ -13,19 +13,7 @@
 namespace ew::test::gui {
 namespace {
 
-class GuiTeaching : public ::testing::Test {
- protected:
-  void SetUp() override { dir = makeTempDir("gui_teaching"); }
-  void TearDown() override {
-    if (!HasFailure()) std::filesystem::remove_all(dir);
-  }
-  cv::Mat load(const std::string& name) {
-    cv::Mat image = cv::imread((dir / name).string(), cv::IMREAD_COLOR);
-    EXPECT_FALSE(image.empty()) << name << " missing";
-    return image;
-  }
-  std::filesystem::path dir;
-};
+using GuiTeaching = GuiTest;
 
 double brightness(const cv::Mat& bgr) {
   cv::Mat grey;
