@@ -1,6 +1,7 @@
 // eigenwalker: the viewer. Parses the command line and runs the app (ui/app/app.h).
 //   eigenwalker [DATA…] [--size WxH] [--script FILE.json] [--screenshot OUT.png]
-//               [--bench-frames N] [--ui-scale S] [--no-settings]
+//               [--bench-frames N] [--ui-scale S] [--no-settings] [--full-redraw]
+//               [--check-repaint]
 // docs/VIEWER.md describes the views, the controls and the script format.
 
 #include <CLI/CLI.hpp>
@@ -31,6 +32,12 @@ int main(int argc, char** argv) {
   bool noSettings = false;
   cli.add_flag("--no-settings", noSettings,
                "Neither read nor write the saved settings (also EIGENWALKER_NO_SETTINGS=1)");
+  bool fullRedraw = false;
+  cli.add_flag("--full-redraw", fullRedraw,
+               "Repaint the whole window every frame instead of only what changed (for comparison)");
+  bool checkRepaint = false;
+  cli.add_flag("--check-repaint", checkRepaint,
+               "Compare every frame with a full redraw; report, and fail on, any difference (slow; for tests)");
   auto* scaleOption = cli.add_option("--ui-scale", uiScale, "UI scale on top of the monitor's content scale")
       ->check(CLI::Range(0.5f, 4.0f))
       ->capture_default_str();
@@ -53,5 +60,7 @@ int main(int argc, char** argv) {
   options.sizeGiven = sizeOption->count() > 0;
   options.uiScaleGiven = scaleOption->count() > 0;
   options.useSettings = !noSettings;
+  options.fullRedraw = fullRedraw;
+  options.checkRepaint = checkRepaint;
   return ew::ui::runApp(options);
 }

@@ -5,6 +5,8 @@
 
 #include <cstdio>
 #include <nlohmann/json.hpp>
+#include <regex>
+#include <string>
 
 #include "tests/common/test_support.h"
 #include "tests/gui/gui_run.h"
@@ -100,6 +102,50 @@ TEST_F(GuiDefault, BenchFramesPrintsFrameTimesAsJson) {
   EXPECT_GT(json.at("median_ms").get<double>(), 0.0);
   EXPECT_GE(json.at("p95_ms").get<double>(), json.at("median_ms").get<double>());
   EXPECT_GE(json.at("max_ms").get<double>(), json.at("p95_ms").get<double>());
+}
+
+// Repainting only what changed (ui/render/compositor.h) must give the very pixels of a
+// full redraw. --check-repaint paints every frame again, whole, over what was painted and
+// compares the two; the script changes a bit (playback), a lot (α, theme, mode) and
+// makes a window appear and vanish.
+void expectRepaintsMatchAFullRedraw(const std::filesystem::path& dir, const std::string& env) {
+  const auto script = writeScript(dir, R"([
+    {"select_subject": "SYN005"}, {"play": true}, {"wait_frames": 20},
+    {"play": false}, {"set_phase": 0.25}, {"set_angle": 60}, {"wait_frames": 2},
+    {"show_panel": ["help", true]}, {"wait_frames": 2}, {"show_panel": ["help", false]}, {"wait_frames": 2},
+    {"set_theme": "light"}, {"wait_frames": 2},
+    {"set_mode": "explore"}, {"set_coefficient": [1, 2]}, {"play": true}, {"wait_frames": 10},
+    {"overlay": ["ghost", false]}, {"wait_frames": 2}
+  ])");
+  const RunResult r =
+      runViewer(dir, "--size 1280x720 --check-repaint --script " + quote(script.string()), env);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  std::smatch m;
+  const std::regex summary(R"(repaint check: (\d+) frames, (\d+) of them repainted in part, (\d+) differ)");
+  ASSERT_TRUE(std::regex_search(r.out, m, summary)) << r.out;
+  EXPECT_GE(std::stoi(m[1].str()), 40);
+  EXPECT_GE(std::stoi(m[2].str()), 20) << "hardly any partial repaints: nothing was checked";
+  EXPECT_EQ(std::stoi(m[3].str()), 0) << r.err;
+}
+
+TEST_F(GuiDefault, RepaintingWhatChangedMatchesAFullRedraw) {
+  expectRepaintsMatchAFullRedraw(dir, kNoSettings);
+}
+
+TEST_F(GuiDefault, RepaintingWhatChangedMatchesAFullRedrawWhenSwapping) {
+  expectRepaintsMatchAFullRedraw(dir, std::string(kNoSettings) + " EIGENWALKER_PRESENT=swap");
+}
+
+TEST_F(GuiDefault, FullRedrawStillWorks) {
+  const auto script = writeScript(dir, R"([{"select_subject": "SYN005"}, {"play": false}, {"set_phase": 0.25}])");
+  const RunResult r = runViewer(dir, "--size 1600x900 --full-redraw --check-repaint --screenshot " +
+                                         quote((dir / "full.png").string()) + " --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find(" 0 of them repainted in part, 0 differ"), std::string::npos) << r.out;
+  const cv::Mat full = load("full.png");
+  ASSERT_FALSE(full.empty());
+  EXPECT_GT(countPixels(crop(full, kReconView), isAmber), 400);
+  EXPECT_GT(countPixels(crop(full, kInputView), isPointLight), 60);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <imgui_internal.h>
 
 #include "ui/gl/gl.h"  // epoxy before GLFW
+#include "ui/gl/present.h"
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
@@ -15,10 +16,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <string>
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <thread>
 #include <vector>
 
 #include "ui/app/actions.h"
@@ -29,6 +31,7 @@
 #include "ui/app/script.h"
 #include "ui/app/theme.h"
 #include "ui/render/backdrop.h"
+#include "ui/render/compositor.h"
 #include "ui/render/renderer.h"
 
 namespace ew::ui {
@@ -110,6 +113,13 @@ struct FrameStats {
 
 // [SECTION] The application
 
+// EIGENWALKER_PRESENT=swap: show frames by swapping buffers even where copying only the
+// changed rectangles is possible (docs/VIEWER.md, "Frame time").
+bool swapRequested() {
+  const char* v = std::getenv("EIGENWALKER_PRESENT");
+  return v && std::string(v) == "swap";
+}
+
 // The saved settings when they are on (nothing otherwise); a problem reading them goes
 // to `warning` (logged once the log exists) and the defaults are used.
 std::optional<Settings> loadSettings(const AppOptions& options, std::string& warning) {
@@ -143,6 +153,11 @@ class App {
     state_.log.info(gl::describeContext());
     state_.view.uiScale = options.uiScale;
     scripted_ = options.script.has_value() || options.screenshot.has_value() || options.benchFrames > 0;
+    if (!options.fullRedraw && !swapRequested()) presenter_ = gl::SubBufferPresenter::forCurrentContext();
+    compositor_ = Compositor(options.fullRedraw ? Compositor::Target::FullRedraw
+                             : presenter_       ? Compositor::Target::Window
+                                                : Compositor::Target::Layer);
+    compositor_.setChecking(options.checkRepaint);
     glfwSwapInterval(scripted_ ? 0 : 1);
     if (options.script) runner_ = ScriptRunner(readScript(*options.script), options.script->string());
     std::vector<std::filesystem::path> data = options.data;
@@ -166,11 +181,12 @@ class App {
     actions::open(state_, data);
     glfwSetWindowUserPointer(window_.get(), this);
     glfwSetDropCallback(window_.get(), &App::onDrop);
+    glfwSetWindowRefreshCallback(window_.get(), &App::onRefresh);
   }
 
   // Runs the frame loop; saves the settings (when on) however it ends.
   int run() {
-    const int code = loop();
+    const int code = reportRepaintCheck(loop());
     if (settings_) {
       if (const auto file = settingsFile()) {
         int w = 0, h = 0;
@@ -197,6 +213,36 @@ class App {
       app->state_.log.error(e.what());
       app->state_.jobs.lastError = e.what();
     }
+  }
+
+  // --check-repaint: says how the frames compared; a difference fails the run.
+  int reportRepaintCheck(int code) const {
+    if (!options_.checkRepaint) return code;
+    const auto& c = compositor_.checks();
+    std::printf("repaint check: %d frames, %d of them repainted in part, %d differ from a full redraw\n", c.frames,
+                c.partialFrames, c.mismatchedFrames);
+    if (c.mismatchedFrames == 0) return code;
+    std::fprintf(stderr, "eigenwalker: repaint check failed, %s\n", c.firstMismatch.value_or("").c_str());
+    return code == 0 ? 1 : code;
+  }
+
+  // The window system lost (some of) the window's pixels: show the whole frame again.
+  static void onRefresh(GLFWwindow* window) {
+    if (auto* app = static_cast<App*>(glfwGetWindowUserPointer(window))) app->compositor_.invalidate();
+  }
+
+  // Shows the frame just drawn: the changed rectangles when the back buffer is kept,
+  // a swap otherwise. Without swaps nothing waits for the display, so an interactive
+  // run sleeps out the rest of a 60 Hz frame instead of redrawing as fast as it can.
+  void present(std::chrono::steady_clock::time_point frameStart) {
+    if (!presenter_) {
+      glfwSwapBuffers(window_.get());
+      return;
+    }
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window_.get(), &w, &h);
+    presenter_->present(compositor_.changed(), h);
+    if (!scripted_) std::this_thread::sleep_until(frameStart + std::chrono::microseconds(16667));
   }
 
   int loop() {
@@ -237,17 +283,18 @@ class App {
         }
       }
       const auto t1 = std::chrono::steady_clock::now();
-      glfwSwapBuffers(window_.get());
+      present(start);
       if (profile_) {
         gl::finish();
         profile_->swap += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t1).count();
         if (++profile_->frames % 60 == 0) {
           std::fprintf(stderr,
                        "eigenwalker: profile: frame %.2f ms (of which the two views %.2f ms, compositing "
-                       "the UI %.2f ms for %d vertices), swap %.2f ms (means of 60)\n",
+                       "the UI %.2f ms for %d vertices, %.0f %% of the pixels repainted), swap %.2f ms "
+                       "(means of 60)\n",
                        profile_->draw / 60.0, profile_->views / 60.0, profile_->imgui / 60.0,
-                       profile_->vertices / 60, profile_->swap / 60.0);
-          profile_->draw = profile_->swap = profile_->views = profile_->imgui = 0.0;
+                       profile_->vertices / 60, 100.0 * profile_->repainted / 60.0, profile_->swap / 60.0);
+          profile_->draw = profile_->swap = profile_->views = profile_->imgui = profile_->repainted = 0.0;
           profile_->vertices = 0;
         }
       }
@@ -316,9 +363,9 @@ class App {
       const PanelRect r = request.view == CaptureView::Input ? state_.panels.input.lastImage
                                                              : state_.panels.reconstruction.lastImage;
       const ImVec2 fb = ImGui::GetIO().DisplayFramebufferScale;
-      crop = PixelRect{static_cast<int>(r.pos.x * fb.x), static_cast<int>(r.pos.y * fb.y),
-                       static_cast<int>(r.size.x * fb.x), static_cast<int>(r.size.y * fb.y)};
-      if (crop->width <= 0 || crop->height <= 0) {
+      const int x = static_cast<int>(r.pos.x * fb.x), y = static_cast<int>(r.pos.y * fb.y);
+      crop = PixelRect{x, y, x + static_cast<int>(r.size.x * fb.x), y + static_cast<int>(r.size.y * fb.y)};
+      if (crop->empty()) {
         actions::reportExportError(state_, request.path.string() + ": the view is not on screen");
         return;
       }
@@ -371,6 +418,7 @@ class App {
       applyTheme(state_.fonts, scale, state_.view.theme);
       ImGui_ImplOpenGL3_DestroyFontsTexture();
       ImGui_ImplOpenGL3_CreateFontsTexture();
+      compositor_.invalidate();  // the same draw lists now sample another texture
     }
   }
 
@@ -421,16 +469,16 @@ class App {
     ImGui::Render();
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_.get(), &w, &h);
-    gl::bindDefaultFramebuffer(w, h);
-    gl::clearColour(state_.view.theme == Theme::Light ? glm::vec4{0.93f, 0.935f, 0.945f, 1.0f}
-                                                : glm::vec4{0.05f, 0.055f, 0.065f, 1.0f});
     const auto r0 = std::chrono::steady_clock::now();
-    backdrop_.drawAndReset(h, {io.DisplayFramebufferScale.x, io.DisplayFramebufferScale.y});
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    compositor_.draw(backdrop_, *ImGui::GetDrawData(),
+                     state_.view.theme == Theme::Light ? glm::vec4{0.93f, 0.935f, 0.945f, 1.0f}
+                                                       : glm::vec4{0.05f, 0.055f, 0.065f, 1.0f},
+                     w, h);
     if (profile_) {
       gl::finish();
       profile_->imgui += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - r0).count();
       profile_->vertices += ImGui::GetDrawData()->TotalVtxCount;
+      profile_->repainted += compositor_.lastRepaintedShare();
     }
   }
 
@@ -442,6 +490,8 @@ class App {
   ImGuiSession imgui_;
   Renderer renderer_;
   Backdrop backdrop_;
+  Compositor compositor_;
+  std::optional<gl::SubBufferPresenter> presenter_;  // when the back buffer is never swapped
   AppState state_;
   ScriptRunner runner_;
   float themeScale_ = 0.0f;
@@ -452,7 +502,7 @@ class App {
   int benchRemaining_ = 0;
   FrameStats stats_;
   struct Profile {
-    double draw = 0.0, swap = 0.0, views = 0.0, imgui = 0.0;
+    double draw = 0.0, swap = 0.0, views = 0.0, imgui = 0.0, repainted = 0.0;
     int frames = 0, vertices = 0;
   };
   // EW_PROFILE=1: per-phase frame times on stderr (adds glFinish, so slower overall).

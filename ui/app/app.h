@@ -19,6 +19,8 @@ struct AppOptions {
   bool sizeGiven = false;     // --size given: wins over the saved window size
   bool uiScaleGiven = false;  // --ui-scale given: wins over the saved UI scale
   bool useSettings = true;    // --no-settings (or EIGENWALKER_NO_SETTINGS=1): neither read nor write
+  bool fullRedraw = false;    // --full-redraw: repaint the whole window every frame
+  bool checkRepaint = false;  // --check-repaint: compare every frame with a full redraw
 };
 
 // Runs the viewer; returns the process exit code (0 = fine, 1 = an error, reported on

@@ -19,9 +19,9 @@ void writeScreenshot(const std::filesystem::path& file, int width, int height, s
   cv::flip(image, flipped, 0);  // GL rows start at the bottom
   cv::cvtColor(flipped, bgr, cv::COLOR_RGB2BGR);
   if (crop) {
-    const int x0 = std::clamp(crop->x, 0, width - 1), y0 = std::clamp(crop->y, 0, height - 1);
-    const int x1 = std::clamp(crop->x + crop->width, x0 + 1, width);
-    const int y1 = std::clamp(crop->y + crop->height, y0 + 1, height);
+    const int x0 = std::clamp(crop->x0, 0, width - 1), y0 = std::clamp(crop->y0, 0, height - 1);
+    const int x1 = std::clamp(crop->x1, x0 + 1, width);
+    const int y1 = std::clamp(crop->y1, y0 + 1, height);
     bgr = bgr(cv::Rect(x0, y0, x1 - x0, y1 - y0)).clone();
   }
   std::vector<unsigned char> png;

@@ -5,12 +5,9 @@
 #include <filesystem>
 #include <optional>
 
-namespace ew::ui {
+#include "ui/pixel_rect.h"
 
-// A rectangle in framebuffer pixels, top-left origin.
-struct PixelRect {
-  int x = 0, y = 0, width = 0, height = 0;
-};
+namespace ew::ui {
 
 // Reads back width × height pixels of the framebuffer that was just drawn and writes them
 // (or only `crop`, clamped to the framebuffer) as an RGB PNG (top row first), creating the

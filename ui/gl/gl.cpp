@@ -175,14 +175,15 @@ int maxSamples() {
   return std::max(1, static_cast<int>(samples));
 }
 
-void RenderTarget::ensure(int width, int height, int samples) {
+void RenderTarget::ensure(int width, int height, int samples, bool depth) {
   width = std::max(width, 1);
   height = std::max(height, 1);
   samples = std::clamp(samples, 1, maxSamples());
-  if (width == width_ && height == height_ && samples == samples_) return;
+  if (width == width_ && height == height_ && samples == samples_ && depth == hasDepth_) return;
   width_ = width;
   height_ = height;
   samples_ = samples;
+  hasDepth_ = depth;
 
   auto makeFbo = [] {
     GLuint id = 0;
@@ -197,12 +198,14 @@ void RenderTarget::ensure(int width, int height, int samples) {
   if (!msaaFbo_) msaaFbo_ = makeFbo();
   if (!resolveFbo_) resolveFbo_ = makeFbo();
   colour_ = makeRbo();
-  depth_ = makeRbo();
+  depthBuffer_ = depth ? makeRbo() : Handle<deleteRenderbuffer>();
 
   resolved_.allocate(width, height);
-  glBindRenderbuffer(GL_RENDERBUFFER, depth_.id());
-  glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT32F,
-                                   width, height);
+  if (depth) {
+    glBindRenderbuffer(GL_RENDERBUFFER, depthBuffer_.id());
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples > 1 ? samples : 0, GL_DEPTH_COMPONENT32F,
+                                     width, height);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, msaaFbo_.id());
   if (samples > 1) {
     glBindRenderbuffer(GL_RENDERBUFFER, colour_.id());
@@ -213,7 +216,7 @@ void RenderTarget::ensure(int width, int height, int samples) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, resolved_.id(), 0);
   }
   glBindRenderbuffer(GL_RENDERBUFFER, 0);
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depthBuffer_.id());
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     width_ = height_ = 0;
@@ -229,7 +232,8 @@ void RenderTarget::ensure(int width, int height, int samples) {
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void RenderTarget::begin() const {
+void RenderTarget::begin() {
+  ++generation_;
   glBindFramebuffer(GL_FRAMEBUFFER, msaaFbo_.id());
   glViewport(0, 0, width_, height_);
 }
@@ -257,6 +261,13 @@ std::vector<unsigned char> RenderTarget::readPixelsRgb() const {
 void RenderTarget::blitToDefault(int x, int y) const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, resolveFbo_.id());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void RenderTarget::blitInto(const RenderTarget& target, int x, int y) const {
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolveFbo_.id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.resolveFbo_.id());
   glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

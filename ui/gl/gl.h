@@ -141,16 +141,17 @@ class Texture2D {
   Handle<deleteTexture> handle_;
 };
 
-// An offscreen target: a multisampled colour + depth framebuffer that is resolved into
-// a plain texture ImGui can show. Resized on demand.
+// An offscreen target: a multisampled colour (+ depth) framebuffer that is resolved into
+// a plain texture. Resized on demand.
 class RenderTarget {
  public:
   RenderTarget() = default;
-  // (Re)allocates when the size or sample count changes. samples is clamped to what the
-  // driver supports (1 = no multisampling).
-  void ensure(int width, int height, int samples);
-  // Binds the multisampled framebuffer and sets the viewport to the whole target.
-  void begin() const;
+  // (Re)allocates when the size, sample count or depth changes. samples is clamped to
+  // what the driver supports (1 = no multisampling).
+  void ensure(int width, int height, int samples, bool depth = true);
+  // Binds the multisampled framebuffer and sets the viewport to the whole target; counts
+  // as a new image (generation()).
+  void begin();
   // Resolves into the texture and binds the default framebuffer again.
   void end() const;
   const Texture2D& texture() const { return resolved_; }
@@ -159,15 +160,21 @@ class RenderTarget {
   // Copies the resolved image 1:1 into the default framebuffer with its lower-left corner
   // at (x, y) (framebuffer pixels, origin bottom-left).
   void blitToDefault(int x, int y) const;
+  // The same into another (single-sampled) target's image.
+  void blitInto(const RenderTarget& target, int x, int y) const;
+  // How many times it was drawn into (begin()): tells a changed image from the same one.
+  std::uint64_t generation() const { return generation_; }
   int width() const { return width_; }
   int height() const { return height_; }
   bool valid() const { return width_ > 0 && height_ > 0; }
 
  private:
   Handle<deleteFramebuffer> msaaFbo_, resolveFbo_;
-  Handle<deleteRenderbuffer> colour_, depth_;
+  Handle<deleteRenderbuffer> colour_, depthBuffer_;
   Texture2D resolved_;
   int width_ = 0, height_ = 0, samples_ = 0;
+  bool hasDepth_ = false;
+  std::uint64_t generation_ = 0;
 };
 
 // [SECTION] State and draw calls

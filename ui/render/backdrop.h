@@ -1,7 +1,7 @@
 #pragma once
 // What a frame draws beneath Dear ImGui's draw lists with plain GL copies and fills: the
 // fixed panels' backgrounds (scissored clears) and the two views' images (framebuffer
-// blits). Under llvmpipe every ImGui pixel is a blended, textured fragment: drawing the
+// blits), collected while the panels are built. Under llvmpipe every ImGui pixel is a blended, textured fragment: drawing the
 // window backgrounds this way cut ImGui's shaded area at 1600×900 from ~2.0 to ~0.5
 // megapixels a frame (docs/VIEWER.md, "Frame time").
 
@@ -23,11 +23,6 @@ class Backdrop {
   // The target must outlive the frame (the panels own theirs).
   void image(const gl::RenderTarget& target, glm::vec2 pos) { images_.push_back({&target, pos}); }
 
-  // Draws the fills, then the images, into the default framebuffer of the given pixel
-  // height; `fbScale` converts screen coordinates to framebuffer pixels. Forgets them.
-  void drawAndReset(int fbHeight, glm::vec2 fbScale);
-
- private:
   struct Fill {
     glm::vec2 pos, size;
     glm::vec4 colour;
@@ -36,6 +31,15 @@ class Backdrop {
     const gl::RenderTarget* target;
     glm::vec2 pos;
   };
+  // This frame's, in the order given; ui/render/compositor.h draws them, then forgets them.
+  const std::vector<Fill>& fills() const { return fills_; }
+  const std::vector<Image>& images() const { return images_; }
+  void reset() {
+    fills_.clear();
+    images_.clear();
+  }
+
+ private:
   std::vector<Fill> fills_;
   std::vector<Image> images_;
 };
