@@ -13,6 +13,16 @@ std::string composeMessage(const std::string& file, const std::string& position,
 
 }  // namespace
 
+std::string listForMessage(const std::vector<std::string>& items, std::size_t limit, std::string_view separator) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size() && i < limit; ++i) {
+    if (i > 0) out += separator;
+    out += items[i];
+  }
+  if (items.size() > limit) out += std::string(separator) + "… (" + std::to_string(items.size() - limit) + " more)";
+  return out;
+}
+
 std::string_view errorKindName(ErrorKind kind) {
   switch (kind) {
     case ErrorKind::Io: return "io";

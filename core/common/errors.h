@@ -3,8 +3,11 @@
 // file and a position ("byte 512", "line 40", "frame 12", "parameter POINT:SCALE"),
 // so the CLI and the viewer can say exactly what is wrong and where.
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace ew {
 
@@ -32,6 +35,11 @@ class Error : public std::runtime_error {
   ErrorKind kind_;
   std::string file_, position_, problem_;
 };
+
+// Names for a message, at most `limit` of them, then how many were left out:
+// "a, b, c, … (12 more)".
+std::string listForMessage(const std::vector<std::string>& items, std::size_t limit,
+                           std::string_view separator = ", ");
 
 // Convenience constructors; message reads "FILE: POSITION: PROBLEM".
 [[noreturn]] void throwMalformed(const std::string& file, const std::string& position,

@@ -340,19 +340,12 @@ std::vector<std::string> missingMarkers(const MarkerLookup& m, const MarkerSetIn
   return missing;
 }
 
-std::string joined(const std::vector<std::string>& items, std::size_t limit) {
-  std::string out;
-  for (std::size_t i = 0; i < items.size() && i < limit; ++i) out += (i ? " " : "") + items[i];
-  if (items.size() > limit) out += " … (" + std::to_string(items.size() - limit) + " more)";
-  return out;
-}
-
 [[noreturn]] void throwUnknownSet(const RawTrial& raw, const MarkerLookup& m) {
   std::string msg = "no known marker set matches the " + std::to_string(raw.pointCount()) +
-                    " labels [" + joined(raw.labels, 60) + "].";
+                    " labels [" + listForMessage(raw.labels, 60, " ") + "].";
   for (const auto& set : knownMarkerSets()) {
-    msg += " " + set.name + " needs " + joined(set.required, 100) + " (missing " +
-           joined(missingMarkers(m, set), 100) + ").";
+    msg += " " + set.name + " needs " + listForMessage(set.required, 100, " ") + " (missing " +
+           listForMessage(missingMarkers(m, set), 100, " ") + ").";
   }
   throw Error(ErrorKind::UnknownMarkerSet, raw.file, "", msg);
 }

@@ -134,17 +134,10 @@ std::vector<std::string> missingNames(const SkeletonConvention& c, const LabelIn
   return missing;
 }
 
-std::string joined(const std::vector<std::string>& names, size_t maxNames) {
-  std::string s;
-  for (size_t k = 0; k < names.size() && k < maxNames; ++k) s += (k ? ", " : "") + names[k];
-  if (names.size() > maxNames) s += ", … (" + std::to_string(names.size()) + " in all)";
-  return s;
-}
-
 [[noreturn]] void throwUnknownSkeleton(const RawTrial& raw, const LabelIndex& labels) {
-  std::string problem = "skeleton not recognised. Joints found: " + joined(raw.labels, 40) + ".";
+  std::string problem = "skeleton not recognised. Joints found: " + listForMessage(raw.labels, 40) + ".";
   for (const auto& c : conventions()) {
-    problem += " " + std::string(c.source) + " would need: " + joined(missingNames(c, labels), 40) + ".";
+    problem += " " + std::string(c.source) + " would need: " + listForMessage(missingNames(c, labels), 40) + ".";
   }
   throw Error(ErrorKind::UnknownMarkerSet, raw.file, "", problem);
 }

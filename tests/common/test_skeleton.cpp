@@ -45,5 +45,13 @@ TEST(Errors, MessageNamesFilePositionAndProblem) {
   }
 }
 
+TEST(Errors, ListsForMessagesSayHowManyWereLeftOut) {
+  const std::vector<std::string> names{"LASI", "RASI", "LPSI", "RPSI"};
+  EXPECT_EQ(listForMessage(names, 10), "LASI, RASI, LPSI, RPSI");
+  EXPECT_EQ(listForMessage(names, 2), "LASI, RASI, … (2 more)");
+  EXPECT_EQ(listForMessage(names, 3, " "), "LASI RASI LPSI … (1 more)");
+  EXPECT_EQ(listForMessage({}, 3), "");
+}
+
 }  // namespace
 }  // namespace ew

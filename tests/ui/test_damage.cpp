@@ -19,7 +19,8 @@ PaintItem item(std::uint64_t key, PixelRect bounds, const std::string& look = "a
 }
 
 // Two panels side by side, each a fill plus its draw list, and a popup over both.
-std::vector<PaintItem> frame(const std::string& leftLook = "a", const std::string& rightLook = "a") {
+std::vector<PaintItem> frame(const std::string& leftLook = "a",
+                             const std::string& rightLook = "a") {
   return {item(1, {0, 0, 100, 100}), item(2, {100, 0, 200, 100}),  // fills, touching edges
           item(3, {5, 5, 95, 95}, leftLook), item(4, {105, 5, 195, 95}, rightLook)};
 }
@@ -63,8 +64,8 @@ TEST(DamageTracker, AMovedItemDamagesWhereItWasAndWhereItIs) {
   DamageTracker t;
   // A background on the left half, another on the right; the item moves from one to the other.
   const auto make = [](PixelRect where) {
-    return std::vector<PaintItem>{item(1, {0, 0, 100, 50}), item(2, {100, 0, 200, 50}), item(3, where),
-                                  item(4, {0, 60, 200, 100})};
+    return std::vector<PaintItem>{item(1, {0, 0, 100, 50}), item(2, {100, 0, 200, 50}),
+                                  item(3, where), item(4, {0, 60, 200, 100})};
   };
   t.plan(make({10, 10, 20, 20}), kW, kH);
   const RepaintPlan p = t.plan(make({150, 10, 160, 20}), kW, kH);
@@ -86,8 +87,8 @@ TEST(DamageTracker, AVanishedPopupRepaintsWhatWasUnderIt) {
 TEST(DamageTracker, ChainsThroughOverlapsToAFixedPoint) {
   // 1 changes; 2 overlaps 1; 3 overlaps only 2; 4 is apart.
   const auto make = [](const std::string& look) {
-    return std::vector<PaintItem>{item(1, {0, 0, 10, 10}, look), item(2, {5, 5, 30, 15}), item(3, {25, 0, 40, 10}),
-                                  item(4, {100, 50, 110, 60})};
+    return std::vector<PaintItem>{item(1, {0, 0, 10, 10}, look), item(2, {5, 5, 30, 15}),
+                                  item(3, {25, 0, 40, 10}), item(4, {100, 50, 110, 60})};
   };
   DamageTracker t;
   t.plan(make("a"), kW, kH);
@@ -101,7 +102,8 @@ TEST(DamageTracker, ItemsPaintedLaterThanTheDamageAreRepaintedToo) {
   // The changed item is painted first (a fill); the list above it must be repainted.
   DamageTracker t;
   t.plan({item(1, {0, 0, 50, 50}, "red"), item(2, {10, 10, 20, 20})}, kW, kH);
-  const RepaintPlan p = t.plan({item(1, {0, 0, 50, 50}, "blue"), item(2, {10, 10, 20, 20})}, kW, kH);
+  const RepaintPlan p =
+      t.plan({item(1, {0, 0, 50, 50}, "blue"), item(2, {10, 10, 20, 20})}, kW, kH);
   EXPECT_EQ(p.repaint, (std::vector<bool>{true, true}));
 }
 
@@ -130,11 +132,13 @@ TEST(DamageTracker, InvalidateAndLargeDamageRepaintEverything) {
 TEST(DamageTracker, DamageOutsideTheFrameIsClipped) {
   DamageTracker t;
   t.plan({item(1, {0, 0, 400, 100}), item(2, {190, 40, 260, 60})}, kW, kH);
-  const RepaintPlan p = t.plan({item(1, {0, 0, 400, 100}), item(2, {190, 40, 260, 60}, "b")}, kW, kH);
+  const RepaintPlan p =
+      t.plan({item(1, {0, 0, 400, 100}), item(2, {190, 40, 260, 60}, "b")}, kW, kH);
   // The background is repainted (it lies under the item) and cleared within the frame.
   EXPECT_TRUE(p.full);
   t.plan({item(1, {0, 0, 100, 100}), item(2, {150, 40, 260, 60})}, kW, kH);
-  const RepaintPlan q = t.plan({item(1, {0, 0, 100, 100}), item(2, {150, 40, 260, 60}, "c")}, kW, kH);
+  const RepaintPlan q =
+      t.plan({item(1, {0, 0, 100, 100}), item(2, {150, 40, 260, 60}, "c")}, kW, kH);
   EXPECT_FALSE(q.full);
   ASSERT_EQ(q.clear.size(), 1u);
   EXPECT_EQ(q.clear[0], (PixelRect{150, 40, 200, 60}));

@@ -31,7 +31,8 @@ std::optional<SubBufferPresenter> SubBufferPresenter::forCurrentContext() {
   Display* display = glXGetCurrentDisplay();
   const GLXDrawable drawable = glXGetCurrentDrawable();
   if (!display || !drawable || !epoxy_has_glx(display)) return std::nullopt;
-  if (!epoxy_has_glx_extension(display, DefaultScreen(display), "GLX_MESA_copy_sub_buffer")) return std::nullopt;
+  if (!epoxy_has_glx_extension(display, DefaultScreen(display), "GLX_MESA_copy_sub_buffer"))
+    return std::nullopt;
   return SubBufferPresenter(display, drawable);
 }
 

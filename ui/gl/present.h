@@ -25,7 +25,8 @@ class SubBufferPresenter {
   void present(std::span<const ui::PixelRect> rects, int fbHeight) const;
 
  private:
-  SubBufferPresenter(void* display, unsigned long drawable) : display_(display), drawable_(drawable) {}
+  SubBufferPresenter(void* display, unsigned long drawable)
+      : display_(display), drawable_(drawable) {}
   void* display_;           // Display*
   unsigned long drawable_;  // GLXDrawable
 };

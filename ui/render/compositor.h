@@ -31,7 +31,8 @@ class Compositor {
 
   // Draws the frame on a `background` colour into the window's back buffer
   // (fbWidth×fbHeight pixels); forgets the backdrop's items.
-  void draw(Backdrop& backdrop, const ImDrawData& ui, glm::vec4 background, int fbWidth, int fbHeight);
+  void draw(Backdrop& backdrop, const ImDrawData& ui, glm::vec4 background, int fbWidth,
+            int fbHeight);
   // The next frame is repainted whole (the window lost its pixels, or the font texture
   // was rebuilt: the same draw lists, other pixels).
   void invalidate() { damage_.invalidate(); }
@@ -51,10 +52,10 @@ class Compositor {
 
  private:
   // Paints the plan into `into`, or into the window's back buffer when null.
-  void paint(const RepaintPlan& plan, const Backdrop& backdrop, const ImDrawData& ui, gl::RenderTarget* into,
-             int fbWidth, int fbHeight);
-  void check(const RepaintPlan& plan, const Backdrop& backdrop, const ImDrawData& ui, gl::RenderTarget* into,
-             int fbWidth, int fbHeight);
+  void paint(const RepaintPlan& plan, const Backdrop& backdrop, const ImDrawData& ui,
+             gl::RenderTarget* into, int fbWidth, int fbHeight);
+  void check(const RepaintPlan& plan, const Backdrop& backdrop, const ImDrawData& ui,
+             gl::RenderTarget* into, int fbWidth, int fbHeight);
 
   Target target_;
   gl::RenderTarget layer_;

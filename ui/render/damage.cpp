@@ -9,7 +9,8 @@ namespace ew::ui {
 namespace {
 
 bool touchesAny(const PixelRect& r, const std::vector<PixelRect>& rects) {
-  return std::any_of(rects.begin(), rects.end(), [&](const PixelRect& o) { return r.intersects(o); });
+  return std::any_of(rects.begin(), rects.end(),
+                     [&](const PixelRect& o) { return r.intersects(o); });
 }
 
 // Drops empty rectangles and those inside another one (clearing them again is wasted).
@@ -118,7 +119,8 @@ RepaintPlan DamageTracker::plan(std::vector<PaintItem> items, int width, int hei
     for (auto& r : damaged) r = r.intersected(frame);
     p.clear = withoutContained(damaged);
     p.repaintedArea = unionArea(p.clear);
-    if (static_cast<double>(p.repaintedArea) > kFullRepaintShare * static_cast<double>(frame.area()))
+    if (static_cast<double>(p.repaintedArea) >
+        kFullRepaintShare * static_cast<double>(frame.area()))
       p = fullPlan(items.size(), width, height);
   }
   previous_ = std::move(items);

@@ -41,10 +41,10 @@ void appendBytes(std::vector<std::byte>& out, std::span<const T> values) {
 }
 
 struct RepaintPlan {
-  bool full = false;                // everything: clear the whole frame, repaint all items
-  std::vector<PixelRect> clear;     // otherwise: the pixels to clear first…
-  std::vector<bool> repaint;        // …then these items (same order as given), in order
-  long long repaintedArea = 0;      // pixels cleared and repainted (the whole frame when full)
+  bool full = false;             // everything: clear the whole frame, repaint all items
+  std::vector<PixelRect> clear;  // otherwise: the pixels to clear first…
+  std::vector<bool> repaint;     // …then these items (same order as given), in order
+  long long repaintedArea = 0;   // pixels cleared and repainted (the whole frame when full)
 };
 
 class DamageTracker {
