@@ -258,18 +258,17 @@ std::vector<unsigned char> RenderTarget::readPixelsRgb() const {
   return pixels;
 }
 
-void RenderTarget::blitToDefault(int x, int y) const {
+void RenderTarget::blitTo(GLuint drawFramebuffer, int x, int y) const {
   glBindFramebuffer(GL_READ_FRAMEBUFFER, resolveFbo_.id());
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, drawFramebuffer);
   glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+void RenderTarget::blitToDefault(int x, int y) const { blitTo(0, x, y); }
+
 void RenderTarget::blitInto(const RenderTarget& target, int x, int y) const {
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolveFbo_.id());
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target.resolveFbo_.id());
-  glBlitFramebuffer(0, 0, width_, height_, x, y, x + width_, y + height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  blitTo(target.resolveFbo_.id(), x, y);
 }
 
 // [SECTION] State and draw calls

@@ -169,6 +169,8 @@ class RenderTarget {
   bool valid() const { return width_ > 0 && height_ > 0; }
 
  private:
+  void blitTo(GLuint drawFramebuffer, int x, int y) const;
+
   Handle<deleteFramebuffer> msaaFbo_, resolveFbo_;
   Handle<deleteRenderbuffer> colour_, depthBuffer_;
   Texture2D resolved_;

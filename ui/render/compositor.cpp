@@ -112,19 +112,6 @@ void fillPixelRect(const PixelRect& r, int fbHeight, const glm::vec4& colour) {
   gl::fillRect(r.x0, fbHeight - r.y1, r.x1 - r.x0, r.y1 - r.y0, colour);
 }
 
-// The repainted fills and images: they replace their pixels (a clear, a blit: no
-// blending), so clearing beneath one of them first would be wasted work.
-std::vector<PixelRect> replacedPixels(const RepaintPlan& plan, const Backdrop& backdrop,
-                                      ImVec2 scale) {
-  std::vector<PixelRect> out;
-  std::size_t i = 0;
-  for (const auto& f : backdrop.fills())
-    if (plan.repaint[i++]) out.push_back(fillPixels(f, scale));
-  for (const auto& im : backdrop.images())
-    if (plan.repaint[i++]) out.push_back(imagePixels(im, scale));
-  return out;
-}
-
 bool containedInAny(const PixelRect& r, const std::vector<PixelRect>& rects) {
   return std::any_of(rects.begin(), rects.end(),
                      [&](const PixelRect& o) { return o.intersected(r) == r; });
@@ -157,20 +144,29 @@ void Compositor::paint(const RepaintPlan& plan, const Backdrop& backdrop, const 
     else
       gl::bindDefaultFramebuffer(fbWidth, fbHeight);
   };
+  // Item i's pixels, as planned (fills first, then images, then ImGui's lists).
+  const auto& items = damage_.items();
+  const std::size_t fills = backdrop.fills().size(), images = backdrop.images().size();
   bind();
   if (plan.full) {
     gl::clearColour(background_);
   } else {
-    const std::vector<PixelRect> replaced = replacedPixels(plan, backdrop, ui.FramebufferScale);
+    // Fills and images replace their pixels (a clear, a blit: no blending), so clearing
+    // beneath a repainted one first would be wasted work.
+    std::vector<PixelRect> replaced;
+    for (std::size_t k = 0; k < fills + images; ++k)
+      if (plan.repaint[k]) replaced.push_back(items[k].bounds);
     for (const PixelRect& r : plan.clear)
       if (!containedInAny(r, replaced)) fillPixelRect(r, fbHeight, background_);
   }
   std::size_t i = 0;
-  for (const auto& f : backdrop.fills())
-    if (plan.repaint[i++]) fillPixelRect(fillPixels(f, ui.FramebufferScale), fbHeight, f.colour);
+  for (const auto& f : backdrop.fills()) {
+    if (plan.repaint[i]) fillPixelRect(items[i].bounds, fbHeight, f.colour);
+    ++i;
+  }
   for (const auto& im : backdrop.images()) {
+    const PixelRect r = items[i].bounds;
     if (!plan.repaint[i++]) continue;
-    const PixelRect r = imagePixels(im, ui.FramebufferScale);
     if (into)
       im.target->blitInto(*into, r.x0, fbHeight - r.y1);
     else

@@ -55,6 +55,8 @@ class DamageTracker {
   // The next plan repaints everything (the pixels were lost, or something outside the
   // items changed them, e.g. the font texture).
   void invalidate() { valid_ = false; }
+  // The items of the last plan (their bounds are where to paint them).
+  const std::vector<PaintItem>& items() const { return previous_; }
 
  private:
   RepaintPlan fullPlan(std::size_t itemCount, int width, int height) const;
