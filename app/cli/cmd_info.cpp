@@ -30,8 +30,18 @@ std::string fixed(double v, int digits) {
   return s.str();
 }
 
+nlohmann::json segmentsJson(const TrialSummary& s) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& g : s.segments) {
+    out.push_back({{"begin", g.begin}, {"end", g.end}, {"steady_begin", g.steadyBegin},
+                   {"steady_end", g.steadyEnd}, {"heading_deg", g.headingDeg},
+                   {"speed_mps", g.medianSpeedMps}});
+  }
+  return out;
+}
+
 nlohmann::json toJson(const TrialSummary& s) {
-  return {{"file", s.file}, {"format", s.format}, {"frames", s.frames}, {"rate_hz", s.rateHz},
+  return {{"straight_segments", segmentsJson(s)}, {"segment_used", s.segment},{"file", s.file}, {"format", s.format}, {"frames", s.frames}, {"rate_hz", s.rateHz},
           {"duration_s", s.durationS}, {"units", s.units}, {"points_found", s.pointsFound},
           {"source", s.source}, {"joints_estimated", s.estimatedJoints},
           {"window_frames", s.windowFrames}, {"cycles", s.cycles}, {"stride_hz", s.strideHz},

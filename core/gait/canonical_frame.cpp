@@ -4,8 +4,20 @@
 #include <cmath>
 #include <vector>
 
+#include "core/common/errors.h"
+
 namespace ew {
 namespace {
+
+// These work on frames already checked by their caller (prepare.cpp); an empty matrix here
+// is a programming error, reported as one rather than read out of bounds.
+void requireFrames(const Eigen::MatrixXd& m, const char* what) {
+  if (m.rows() == 0 || m.cols() != kDims3) {
+    throw Error(
+        ErrorKind::BadArgument, "", "",
+        std::string("canonical frame: ") + what + " needs at least one frame of 45 columns");
+  }
+}
 
 Eigen::Vector3d meanJoint(const Eigen::MatrixXd& m, Joint j) {
   return m.middleCols<3>(3 * index(j)).colwise().mean().transpose();
@@ -14,6 +26,7 @@ Eigen::Vector3d meanJoint(const Eigen::MatrixXd& m, Joint j) {
 }  // namespace
 
 SignedAxis detectUpAxis(const Eigen::MatrixXd& m) {
+  requireFrames(m, "the up axis");
   const Eigen::Vector3d ankles = 0.5 * (meanJoint(m, Joint::LAnkle) + meanJoint(m, Joint::RAnkle));
   const Eigen::Vector3d up = meanJoint(m, Joint::Head) - ankles;
   Eigen::Index axis = 0;
@@ -56,6 +69,11 @@ double rotateFacingToY(Eigen::MatrixXd& m) {
 }
 
 Eigen::Vector2d removeProgression(Eigen::MatrixXd& m, double rateHz) {
+  requireFrames(m, "removing progression");
+  if (m.rows() < 2 || !(rateHz > 0)) {
+    throw Error(ErrorKind::BadArgument, "", "",
+                "canonical frame: removing progression needs two frames and a rate");
+  }
   const Eigen::Index frames = m.rows();
   Eigen::MatrixXd design(frames, 2);
   for (Eigen::Index r = 0; r < frames; ++r) {
@@ -70,11 +88,12 @@ Eigen::Vector2d removeProgression(Eigen::MatrixXd& m, double rateHz) {
 }
 
 void placeOnFloor(Eigen::MatrixXd& m) {
+  requireFrames(m, "placing on the floor");
   const Eigen::Index frames = m.rows();
   std::vector<double> lowest(static_cast<size_t>(frames));
   for (Eigen::Index r = 0; r < frames; ++r) {
-    lowest[static_cast<size_t>(r)] = std::min(m(r, 3 * index(Joint::LAnkle) + 2),
-                                              m(r, 3 * index(Joint::RAnkle) + 2));
+    lowest[static_cast<size_t>(r)] =
+        std::min(m(r, 3 * index(Joint::LAnkle) + 2), m(r, 3 * index(Joint::RAnkle) + 2));
   }
   const auto k = static_cast<size_t>(std::floor(0.05 * static_cast<double>(frames - 1)));
   std::nth_element(lowest.begin(), lowest.begin() + static_cast<long>(k), lowest.end());

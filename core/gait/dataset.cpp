@@ -37,7 +37,8 @@ bool isTrialFile(const fs::path& p) {
   return kExtensions.count(toLower(p.extension().string())) > 0;
 }
 
-std::vector<PendingTrial> manifestTrials(const fs::path& manifest, std::vector<std::string>& warnings) {
+std::vector<PendingTrial> manifestTrials(const fs::path& manifest,
+                                         std::vector<std::string>& warnings) {
   const std::string text = readFileText(manifest);
   const auto lines = splitLines(text);
   auto header = splitFields(lines.front().text, ',');
@@ -45,7 +46,8 @@ std::vector<PendingTrial> manifestTrials(const fs::path& manifest, std::vector<s
   for (auto h : header) columns.push_back(toLower(h));
   for (const char* needed : {"file", "subject"}) {
     if (std::find(columns.begin(), columns.end(), needed) == columns.end()) {
-      throwMalformed(manifest.string(), linePosition(1), std::string("manifest has no '") + needed + "' column");
+      throwMalformed(manifest.string(), linePosition(1),
+                     std::string("manifest has no '") + needed + "' column");
     }
   }
   std::vector<PendingTrial> trials;
@@ -53,17 +55,23 @@ std::vector<PendingTrial> manifestTrials(const fs::path& manifest, std::vector<s
     if (trim(lines[i].text).empty() || trim(lines[i].text).front() == '#') continue;
     auto fields = splitFields(lines[i].text, ',');
     if (fields.size() != columns.size()) {
-      throwMalformed(manifest.string(), linePosition(lines[i].number),
-                     std::to_string(fields.size()) + " fields, header has " + std::to_string(columns.size()));
+      throwMalformed(
+          manifest.string(), linePosition(lines[i].number),
+          std::to_string(fields.size()) + " fields, header has " + std::to_string(columns.size()));
     }
     PendingTrial t;
     for (size_t c = 0; c < columns.size(); ++c) {
       const std::string value(fields[c]);
-      if (columns[c] == "file") t.path = manifest.parent_path() / value;
-      else if (columns[c] == "subject") t.info.subject = value;
-      else if (columns[c] == "source") t.info.source = value;
-      else if (columns[c] == "condition") t.info.condition = value;
-      else t.info.attributes[std::string(header[c])] = value;
+      if (columns[c] == "file")
+        t.path = manifest.parent_path() / value;
+      else if (columns[c] == "subject")
+        t.info.subject = value;
+      else if (columns[c] == "source")
+        t.info.source = value;
+      else if (columns[c] == "condition")
+        t.info.condition = value;
+      else
+        t.info.attributes[std::string(header[c])] = value;
     }
     if (t.path.empty() || t.info.subject.empty()) {
       throwMalformed(manifest.string(), linePosition(lines[i].number), "empty file or subject");
@@ -79,7 +87,9 @@ std::vector<PendingTrial> manifestTrials(const fs::path& manifest, std::vector<s
 std::vector<PendingTrial> folderTrials(const fs::path& folder, std::vector<std::string>& warnings) {
   std::vector<fs::path> files;
   std::error_code ec;
-  for (fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied, ec), end;
+  for (fs::recursive_directory_iterator
+           it(folder, fs::directory_options::skip_permission_denied, ec),
+       end;
        it != end; it.increment(ec)) {
     if (ec) break;
     if (it->is_regular_file(ec) && isTrialFile(it->path())) files.push_back(it->path());
@@ -89,7 +99,8 @@ std::vector<PendingTrial> folderTrials(const fs::path& folder, std::vector<std::
   std::vector<PendingTrial> trials;
   for (const auto& f : files) {
     if (toLower(f.extension().string()) == ".csv" && isManifest(f)) {
-      warnings.push_back(f.string() + ": a manifest inside a folder is not followed; open it directly");
+      warnings.push_back(f.string() +
+                         ": a manifest inside a folder is not followed; open it directly");
       continue;
     }
     trials.push_back({f, infoFromFileName(f), false});
@@ -105,9 +116,16 @@ std::vector<TrialFile> collectTrialFiles(const std::vector<fs::path>& paths,
   for (const auto& p : paths) {
     std::error_code ec;
     std::vector<PendingTrial> more;
-    if (fs::is_directory(p, ec)) more = folderTrials(p, warnings);
-    else if (toLower(p.extension().string()) == ".csv" && fs::exists(p, ec) && isManifest(p)) more = manifestTrials(p, warnings);
-    else more = {{p, infoFromFileName(p), true}};
+    if (fs::is_directory(p, ec) && isTrialFile(p)) {
+      throw Error(ErrorKind::Io, p.string(), "",
+                  "is a folder, not a " + p.extension().string() + " file");
+    }
+    if (fs::is_directory(p, ec))
+      more = folderTrials(p, warnings);
+    else if (toLower(p.extension().string()) == ".csv" && fs::exists(p, ec) && isManifest(p))
+      more = manifestTrials(p, warnings);
+    else
+      more = {{p, infoFromFileName(p), true}};
     all.insert(all.end(), more.begin(), more.end());
   }
   return all;
@@ -116,7 +134,8 @@ std::vector<TrialFile> collectTrialFiles(const std::vector<fs::path>& paths,
 std::vector<std::string> Dataset::subjects() const {
   std::vector<std::string> out;
   for (const auto& t : trials) {
-    if (std::find(out.begin(), out.end(), t.info.subject) == out.end()) out.push_back(t.info.subject);
+    if (std::find(out.begin(), out.end(), t.info.subject) == out.end())
+      out.push_back(t.info.subject);
   }
   return out;
 }
@@ -128,12 +147,14 @@ bool isManifest(const fs::path& file) {
 }
 
 WalkingTrial loadWalkingTrial(const fs::path& file, const LoadOptions& options) {
-  return prepareWalkingTrial(toJointTrial(readRawTrial(file, options)));
+  JointTrial joints = toJointTrial(readRawTrial(file, options));  // the raw points are gone here
+  return prepareWalkingTrial(joints);
 }
 
 Dataset loadDataset(const std::vector<fs::path>& paths, const LoadOptions& options,
                     const ProgressFn& progress) {
-  return loadDatasetPerFile(paths, [&options](const fs::path&) { return options; }, progress);
+  return loadDatasetPerFile(
+      paths, [&options](const fs::path&) { return options; }, progress);
 }
 
 Dataset loadDatasetPerFile(const std::vector<fs::path>& paths, const LoadOptionsFn& optionsFor,

@@ -31,7 +31,8 @@ std::vector<double> strikesFromEvents(const std::vector<GaitEvent>& events, Side
                                       double durationS) {
   std::vector<double> t;
   for (const auto& e : events) {
-    if (e.side == side && e.type == GaitEventType::FootStrike && e.timeS >= 0 && e.timeS <= durationS) {
+    if (e.side == side && e.type == GaitEventType::FootStrike && e.timeS >= 0 &&
+        e.timeS <= durationS) {
       t.push_back(e.timeS);
     }
   }
@@ -66,8 +67,8 @@ void checkWalking(const Eigen::MatrixXd& m, double rateHz, const std::string& fi
       std::ostringstream msg;
       msg << "not a walking trial: the " << (side == Side::Right ? "right" : "left")
           << " ankle moves only " << std::lround(range)
-          << " mm fore-aft relative to the pelvis (walking needs > "
-          << kMinAnkleExcursionMm << " mm)";
+          << " mm fore-aft relative to the pelvis (walking needs > " << kMinAnkleExcursionMm
+          << " mm)";
       throwBadData(file, "", msg.str());
     }
   }
@@ -76,6 +77,7 @@ void checkWalking(const Eigen::MatrixXd& m, double rateHz, const std::string& fi
 }  // namespace
 
 std::vector<double> footStrikesFromKinematics(const Eigen::MatrixXd& m, double rateHz, Side side) {
+  if (m.rows() < 3 || m.cols() != kDims3 || !(rateHz > 0)) return {};  // no interior peak possible
   const Eigen::VectorXd lead = ankleLead(m, rateHz, side);
   const auto n = lead.size();
   const double mean = lead.mean();
@@ -95,6 +97,12 @@ std::vector<double> footStrikesFromKinematics(const Eigen::MatrixXd& m, double r
 
 GaitCycles detectGaitCycles(const Eigen::MatrixXd& m, double rateHz,
                             const std::vector<GaitEvent>& events, const std::string& file) {
+  if (m.rows() < 2 || m.cols() != kDims3 || !std::isfinite(rateHz) || !(rateHz > 0)) {
+    throwBadData(file, "",
+                 "gait cycles: need at least two frames of 15 joints and a positive rate (" +
+                     std::to_string(m.rows()) + " frames)");
+  }
+  if (!m.allFinite()) throwBadData(file, "", "gait cycles: the joint positions are not all finite");
   checkWalking(m, rateHz, file);
   const double durationS = static_cast<double>(m.rows() - 1) / rateHz;
   GaitCycles cycles;

@@ -1,6 +1,10 @@
 #include "core/gait/gaps.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <sstream>
 
 #include "core/common/skeleton.h"
 
@@ -21,7 +25,77 @@ void interpolateJoint(Eigen::MatrixXd& m, int joint, Eigen::Index before, Eigen:
   }
 }
 
+// Median of the finite values of coordinate `col` in rows r-2..r+2 (NaN when fewer than
+// three of them are finite: no majority to judge the sample against).
+double neighbourhoodMedian(const Eigen::MatrixXd& m, Eigen::Index r, Eigen::Index col) {
+  std::array<double, 5> v{};
+  int n = 0;
+  for (Eigen::Index k = std::max<Eigen::Index>(0, r - 2); k <= std::min(m.rows() - 1, r + 2); ++k) {
+    const double x = m(k, col);
+    if (!std::isfinite(x)) continue;
+    int i = n++;  // insertion into the sorted prefix
+    for (; i > 0 && v[static_cast<size_t>(i - 1)] > x; --i)
+      v[static_cast<size_t>(i)] = v[static_cast<size_t>(i - 1)];
+    v[static_cast<size_t>(i)] = x;
+  }
+  if (n < 3) return std::numeric_limits<double>::quiet_NaN();
+  const auto mid = static_cast<size_t>(n / 2);
+  return n % 2 ? v[mid] : 0.5 * (v[mid - 1] + v[mid]);
+}
+
+// Distance of a joint sample from its neighbourhood's median (0 when that is unknown).
+double deviationFromNeighbours(const Eigen::MatrixXd& m, Eigen::Index r, int joint) {
+  double sum2 = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const double med = neighbourhoodMedian(m, r, 3 * joint + c);
+    if (!std::isfinite(med)) return 0.0;
+    sum2 += (m(r, 3 * joint + c) - med) * (m(r, 3 * joint + c) - med);
+  }
+  return std::sqrt(sum2);
+}
+
+void markMissing(Eigen::MatrixXd& m, Eigen::Index r, int joint) {
+  m.block<1, 3>(r, 3 * joint).setConstant(std::numeric_limits<double>::quiet_NaN());
+}
+
+std::string distanceText(double mm) {
+  std::ostringstream out;
+  out.precision(3);
+  if (mm >= 1e4)
+    out << mm / 1000.0 << " m";
+  else
+    out << std::lround(mm) << " mm";
+  return out.str();
+}
+
 }  // namespace
+
+double outlierThresholdMm(double rateHz) { return 500.0 + 2.0 * 10000.0 / rateHz; }
+
+OutlierReport rejectOutlierSamples(Eigen::MatrixXd& m, double thresholdMm) {
+  OutlierReport report;
+  const Eigen::MatrixXd original = m;  // judge every sample against the data as read
+  for (int j = 0; j < kJointCount; ++j) {
+    for (Eigen::Index r = 0; r < m.rows(); ++r) {
+      const auto sample = original.block<1, 3>(r, 3 * j);
+      if (!sample.allFinite()) {
+        markMissing(m, r, j);
+        continue;
+      }
+      const double offLimits = sample.cwiseAbs().maxCoeff();
+      const double deviation = deviationFromNeighbours(original, r, j);
+      if (offLimits <= kMaxPlausibleCoordinateMm && deviation <= thresholdMm) continue;
+      markMissing(m, r, j);
+      ++report.rejectedSamples;
+      report.notes.push_back(std::string(kJointNames[static_cast<size_t>(j)]) + ": frame " +
+                             std::to_string(r) + ", " +
+                             (offLimits > kMaxPlausibleCoordinateMm
+                                  ? "coordinate " + distanceText(offLimits) + " from the origin"
+                                  : distanceText(deviation) + " from its neighbours"));
+    }
+  }
+  return report;
+}
 
 GapReport bridgeShortGaps(Eigen::MatrixXd& m, int maxGapFrames) {
   GapReport report;
@@ -29,7 +103,10 @@ GapReport bridgeShortGaps(Eigen::MatrixXd& m, int maxGapFrames) {
   for (int j = 0; j < kJointCount; ++j) {
     Eigen::Index r = 0;
     while (r < frames) {
-      if (!jointMissing(m, r, j)) { ++r; continue; }
+      if (!jointMissing(m, r, j)) {
+        ++r;
+        continue;
+      }
       Eigen::Index start = r;
       while (r < frames && jointMissing(m, r, j)) ++r;
       const Eigen::Index length = r - start;
@@ -54,10 +131,16 @@ std::pair<int, int> longestRun(const std::vector<bool>& flags) {
   int bestBegin = 0, bestEnd = 0, i = 0;
   const int n = static_cast<int>(flags.size());
   while (i < n) {
-    if (!flags[static_cast<size_t>(i)]) { ++i; continue; }
+    if (!flags[static_cast<size_t>(i)]) {
+      ++i;
+      continue;
+    }
     int begin = i;
     while (i < n && flags[static_cast<size_t>(i)]) ++i;
-    if (i - begin > bestEnd - bestBegin) { bestBegin = begin; bestEnd = i; }
+    if (i - begin > bestEnd - bestBegin) {
+      bestBegin = begin;
+      bestEnd = i;
+    }
   }
   return {bestBegin, bestEnd};
 }

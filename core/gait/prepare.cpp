@@ -7,18 +7,28 @@
 #include "core/gait/canonical_frame.h"
 #include "core/gait/gait_cycles.h"
 #include "core/gait/gaps.h"
+#include "core/io/reader_limits.h"
 
 namespace ew {
 namespace {
 
+// [SECTION] Preconditions and the complete run
+
 void checkShape(const JointTrial& t) {
   if (t.positionsMm.cols() != kDims3) {
-    throw Error(ErrorKind::BadArgument, t.file, "", "expected 45 joint columns");
+    throw Error(ErrorKind::BadArgument, t.file, "",
+                "walking: expected 45 joint columns, got " + std::to_string(t.positionsMm.cols()));
   }
-  if (!(t.rateHz > 0) || !std::isfinite(t.rateHz)) throwBadData(t.file, "", "no valid frame rate");
+  if (!std::isfinite(t.rateHz) || t.rateHz < kMinFrameRateHz || t.rateHz > kMaxFrameRateHz) {
+    std::ostringstream msg;
+    msg << "walking: frame rate " << t.rateHz << " Hz is outside the plausible " << kMinFrameRateHz
+        << "-" << kMaxFrameRateHz << " Hz";
+    throwBadData(t.file, "", msg.str());
+  }
   if (t.positionsMm.rows() < 2) {
-    throwBadData(t.file, "", std::to_string(t.positionsMm.rows()) +
-                                 " frame(s): a static trial, not walking");
+    throwBadData(t.file, "",
+                 "walking: " + std::to_string(t.positionsMm.rows()) +
+                     " frame(s): a static trial, not walking");
   }
 }
 
@@ -29,17 +39,28 @@ std::string missingJointsMessage(const Eigen::MatrixXd& m) {
       names += (names.empty() ? "" : ", ") + std::string(kJointNames[static_cast<size_t>(j)]);
     }
   }
-  return names.empty() ? "no frame has all 15 joints" : "missing in every frame: " + names;
+  return "walking: " + (names.empty() ? std::string("no two consecutive frames have all 15 joints")
+                                      : "missing in every frame: " + names);
+}
+
+void rejectGlitches(Eigen::MatrixXd& m, double rateHz, std::vector<std::string>& warnings) {
+  const OutlierReport outliers = rejectOutlierSamples(m, outlierThresholdMm(rateHz));
+  if (outliers.rejectedSamples == 0) return;
+  warnings.push_back(std::to_string(outliers.rejectedSamples) +
+                     " glitched sample(s) rejected as outliers (" + outliers.notes.front() +
+                     (outliers.rejectedSamples > 1 ? ", …)" : ")"));
 }
 
 // Gap-free rows [begin, end) with z up.
 Eigen::MatrixXd completeRunZUp(const JointTrial& t, const PrepareOptions& o, WalkingTrial& out) {
   Eigen::MatrixXd m = t.positionsMm;
+  if (o.rejectOutliers) rejectGlitches(m, t.rateHz, out.joints.warnings);
   const int maxGap = std::max(1, static_cast<int>(std::lround(o.maxGapS * t.rateHz)));
   GapReport gaps = bridgeShortGaps(m, maxGap);
   if (gaps.bridgedGaps > 0) {
-    out.joints.warnings.push_back(std::to_string(gaps.bridgedGaps) + " short gap(s) interpolated (" +
-                                  gaps.notes.front() + (gaps.bridgedGaps > 1 ? ", …)" : ")"));
+    out.joints.warnings.push_back(std::to_string(gaps.bridgedGaps) +
+                                  " short gap(s) interpolated (" + gaps.notes.front() +
+                                  (gaps.bridgedGaps > 1 ? ", …)" : ")"));
   }
   auto [begin, end] = longestRun(completeFrames(m));
   if (end - begin < 2) throwBadData(t.file, "", missingJointsMessage(m));
@@ -62,6 +83,97 @@ std::vector<GaitEvent> shiftEvents(const std::vector<GaitEvent>& events, double 
   return shifted;
 }
 
+// [SECTION] Which frames to use
+
+std::vector<StraightSegment> inTrialFrames(std::vector<StraightSegment> segments, int runBegin) {
+  for (auto& s : segments) {
+    s.begin += runBegin;
+    s.end += runBegin;
+    s.steadyBegin += runBegin;
+    s.steadyEnd += runBegin;
+  }
+  return segments;
+}
+
+// A window of the complete run to try, with the warning that says why it was chosen.
+struct Candidate {
+  int begin = 0;
+  int end = 0;
+  int segment = -1;
+  std::string note;
+};
+
+std::string framesText(int begin, int end) {
+  return "frames " + std::to_string(begin) + "-" + std::to_string(end - 1);
+}
+
+std::string segmentsText(const std::vector<StraightSegment>& segments) {
+  std::vector<std::string> parts;
+  for (const auto& s : segments) parts.push_back(describeSegment(s));
+  return listForMessage(parts, 4, "; ");
+}
+
+// The steady part of segment k, then the whole segment (its speed may vary, its heading not).
+// Notes count frames in the loaded trial: the run starts at frame `runBegin`.
+void addSegment(std::vector<Candidate>& out, const std::vector<StraightSegment>& segments, int k,
+                int runFrames, int runBegin) {
+  const StraightSegment& s = segments[static_cast<size_t>(k)];
+  const bool several = segments.size() > 1;
+  std::string steady;
+  if (several) {
+    steady = "walking in " + std::to_string(segments.size()) + " straight segments (" +
+             segmentsText(inTrialFrames(segments, runBegin)) + "): using segment " +
+             std::to_string(k + 1) + ", steady " +
+             framesText(runBegin + s.steadyBegin, runBegin + s.steadyEnd);
+  } else if (s.steadyBegin > 0 || s.steadyEnd < runFrames) {
+    steady = "steady straight walking in " +
+             framesText(runBegin + s.steadyBegin, runBegin + s.steadyEnd) +
+             " (speed or heading off elsewhere)";
+  }
+  out.push_back({s.steadyBegin, s.steadyEnd, k, steady});
+  if (s.begin != s.steadyBegin || s.end != s.steadyEnd) {
+    out.push_back({s.begin, s.end, k,
+                   "no steady part of straight segment " + std::to_string(k + 1) +
+                       " holds a full gait cycle: using the whole segment, " +
+                       framesText(runBegin + s.begin, runBegin + s.end)});
+  }
+}
+
+// Frame ranges of the run to try, best first: the chosen segment's steady part, the whole
+// segment, the other segments by length; the whole run only when the trial never turns.
+std::vector<Candidate> candidateWindows(const SteadyWindow& w, int runFrames, int runBegin,
+                                        const PrepareOptions& o, const std::string& file) {
+  const Candidate wholeRun{0, runFrames, -1, ""};
+  if (w.segments.empty()) return {wholeRun};
+  std::vector<Candidate> out;
+  const int count = static_cast<int>(w.segments.size());
+  if (o.segment) {
+    if (*o.segment < 0 || *o.segment >= count) {
+      throw Error(ErrorKind::BadArgument, file, "",
+                  "walking: segment " + std::to_string(*o.segment + 1) +
+                      " does not exist (the trial has " + std::to_string(count) +
+                      " straight segment(s): " + segmentsText(inTrialFrames(w.segments, runBegin)) +
+                      ")");
+    }
+    addSegment(out, w.segments, *o.segment, runFrames, runBegin);
+    return out;
+  }
+  std::vector<int> order;
+  for (int k = 0; k < count; ++k) order.push_back(k);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return w.segments[static_cast<size_t>(a)].steadyFrames() >
+           w.segments[static_cast<size_t>(b)].steadyFrames();
+  });
+  for (int k : order) addSegment(out, w.segments, k, runFrames, runBegin);
+  if (count == 1 && (w.segments[0].begin > 0 || w.segments[0].end < runFrames)) {
+    out.push_back({0, runFrames, -1,
+                   "no steady straight-walking part of one full cycle: using the whole trial"});
+  }
+  return out;
+}
+
+// [SECTION] The canonical frame and the cycles of one window
+
 // Canonical frame of a z-up window; returns the progression speed in m/s.
 double toCanonical(Eigen::MatrixXd& m, double rateHz, std::vector<std::string>& warnings) {
   rotateFacingToY(m);
@@ -69,10 +181,35 @@ double toCanonical(Eigen::MatrixXd& m, double rateHz, std::vector<std::string>& 
   placeOnFloor(m);
   const double speed = velocity.norm() / 1000.0;
   if (speed > 0.15 && velocity.y() < -0.5 * velocity.norm()) {
-    warnings.push_back("the walker progresses backwards relative to the direction the hips "
-                       "face: left/right labels may be swapped");
+    warnings.push_back(
+        "the walker progresses backwards relative to the direction the hips "
+        "face: left/right labels may be swapped");
   }
   return speed;
+}
+
+// Fills `out` from frames [c.begin, c.end) of the run, or throws Error(BadData).
+void useWindow(const Eigen::MatrixXd& run, int runBegin, const Candidate& c, const JointTrial& t,
+               WalkingTrial& out) {
+  if (c.end - c.begin < 2) {
+    throwBadData(t.file, "",
+                 "walking: " + framesText(runBegin + c.begin, runBegin + c.end) +
+                     " is too short to hold a gait cycle");
+  }
+  Eigen::MatrixXd m = run.middleRows(c.begin, c.end - c.begin);
+  std::vector<std::string> warnings;
+  const double speed = toCanonical(m, t.rateHz, warnings);
+  const double offsetS = (runBegin + c.begin) / t.rateHz;
+  out.cycles = detectGaitCycles(m, t.rateHz, shiftEvents(t.events, offsetS), t.file);
+  if (!c.note.empty()) warnings.push_back(c.note);
+  out.windowBegin = runBegin + c.begin;
+  out.windowEnd = runBegin + c.end;
+  out.segment = c.segment;
+  out.speedMps = speed;
+  out.joints.positionsMm = std::move(m);
+  out.joints.upAxis = SignedAxis{2, 1};
+  out.joints.events = shiftEvents(t.events, offsetS);
+  out.joints.warnings.insert(out.joints.warnings.end(), warnings.begin(), warnings.end());
 }
 
 }  // namespace
@@ -81,37 +218,30 @@ WalkingTrial prepareWalkingTrial(const JointTrial& t, const PrepareOptions& o) {
   checkShape(t);
   WalkingTrial out;
   out.joints = t;
+  out.joints.positionsMm.resize(0, kDims3);  // filled with the window; no second full copy
   out.loadedFrames = t.frameCount();
-  Eigen::MatrixXd run = completeRunZUp(t, o, out);
+  const Eigen::MatrixXd run = completeRunZUp(t, o, out);
   const int runBegin = out.windowBegin;
-  SteadyWindow window{0, static_cast<int>(run.rows()), 0.0, false, ""};
+  const int runFrames = static_cast<int>(run.rows());
+  SteadyWindow window;
   if (o.cropToSteadyWindow) window = detectSteadyWindow(run, t.rateHz, o.window);
-  Eigen::MatrixXd m = run.middleRows(window.begin, window.end - window.begin);
-  std::vector<std::string> warnings;
-  double speed = toCanonical(m, t.rateHz, warnings);
-  double offsetS = (runBegin + window.begin) / t.rateHz;
-  try {
-    out.cycles = detectGaitCycles(m, t.rateHz, shiftEvents(t.events, offsetS), t.file);
-    if (!window.note.empty()) warnings.push_back(window.note);
-  } catch (const Error&) {
-    if (window.end - window.begin == run.rows()) throw;
-    // The steady part is too short for a cycle: fall back to the whole complete run.
-    window = SteadyWindow{0, static_cast<int>(run.rows()), 0.0, false, ""};
-    m = run;
-    warnings.clear();
-    speed = toCanonical(m, t.rateHz, warnings);
-    offsetS = runBegin / t.rateHz;
-    out.cycles = detectGaitCycles(m, t.rateHz, shiftEvents(t.events, offsetS), t.file);
-    warnings.push_back("no steady straight-walking part of one full cycle: using the whole trial");
+  out.segments = inTrialFrames(window.segments, runBegin);
+  const auto candidates = candidateWindows(window, runFrames, runBegin, o, t.file);
+  std::optional<Error> firstFailure, lastFailure;
+  for (const Candidate& c : candidates) {
+    try {
+      useWindow(run, runBegin, c, t, out);
+      return out;
+    } catch (const Error& e) {
+      if (!firstFailure) firstFailure = e;
+      lastFailure = e;
+    }
   }
-  out.windowBegin = runBegin + window.begin;
-  out.windowEnd = runBegin + window.end;
-  out.speedMps = speed;
-  out.joints.positionsMm = std::move(m);
-  out.joints.upAxis = SignedAxis{2, 1};
-  out.joints.events = shiftEvents(t.events, offsetS);
-  out.joints.warnings.insert(out.joints.warnings.end(), warnings.begin(), warnings.end());
-  return out;
+  // One straight walk: the widest window tried says best why it is not usable.
+  if (out.segments.size() < 2) throw *lastFailure;
+  throwBadData(t.file, "",
+               "walking: no straight segment holds a full gait cycle (" +
+                   segmentsText(out.segments) + "): " + firstFailure->problem());
 }
 
 }  // namespace ew

@@ -20,7 +20,8 @@ void fillFromRaw(const RawTrial& raw, TrialSummary& s) {
 void fillFromJoints(const JointTrial& joints, TrialSummary& s) {
   s.source = joints.source;
   for (int j = 0; j < kJointCount; ++j) {
-    if (joints.estimated[static_cast<size_t>(j)]) s.estimatedJoints.emplace_back(kJointNames[static_cast<size_t>(j)]);
+    if (joints.estimated[static_cast<size_t>(j)])
+      s.estimatedJoints.emplace_back(kJointNames[static_cast<size_t>(j)]);
   }
   s.warnings = joints.warnings;
 }
@@ -31,6 +32,8 @@ void fillFromWalking(const WalkingTrial& w, TrialSummary& s) {
   s.strideHz = w.cycles.strideHz;
   s.cycleMethod = w.cycles.method;
   s.speedMps = w.speedMps;
+  s.segments = w.segments;
+  s.segment = w.segment;
   s.warnings = w.joints.warnings;
 }
 
@@ -41,10 +44,13 @@ TrialSummary summarizeTrial(const std::filesystem::path& file, const LoadOptions
   s.file = file.string();
   s.errorStage = "read";
   try {
-    const RawTrial raw = readRawTrial(file, options);
-    fillFromRaw(raw, s);
-    s.errorStage = "joints";
-    const JointTrial joints = toJointTrial(raw);
+    JointTrial joints;
+    {  // the raw points are freed before the walking stage copies the joints
+      const RawTrial raw = readRawTrial(file, options);
+      fillFromRaw(raw, s);
+      s.errorStage = "joints";
+      joints = toJointTrial(raw);
+    }
     fillFromJoints(joints, s);
     s.errorStage = "walking";
     fillFromWalking(prepareWalkingTrial(joints), s);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/gait/steady_window.h"
 #include "core/io/load_trial.h"
 
 namespace ew {
@@ -26,6 +27,8 @@ struct TrialSummary {
   double strideHz = 0.0;
   std::string cycleMethod;     // "file events" / "foot contacts"
   double speedMps = 0.0;
+  std::vector<StraightSegment> segments;  // straight walking segments, frames of the file
+  int segment = -1;                       // the one used (-1: the whole trial)
   std::vector<std::string> warnings;
   std::string error;           // empty when the file is usable as a walker
   std::string errorStage;      // "read", "joints" or "walking"

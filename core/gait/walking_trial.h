@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/common/trial.h"
+#include "core/gait/steady_window.h"
 
 namespace ew {
 
@@ -26,6 +27,11 @@ struct WalkingTrial {
   int loadedFrames = 0;          // rows the loaded trial had before cropping
   GaitCycles cycles;
   double speedMps = 0.0;         // mean horizontal pelvis speed over the window (0 on a treadmill)
+  // The straight walking segments found, frames counted in the loaded trial (an
+  // out-and-back walk has two); `segment` is the one the window lies in, -1 when the
+  // whole trial was used (treadmill, or cropping off).
+  std::vector<StraightSegment> segments;
+  int segment = -1;
 };
 
 }  // namespace ew

@@ -13,6 +13,7 @@
 
 #include "core/common/errors.h"
 #include "core/io/file_bytes.h"
+#include "core/io/reader_limits.h"
 #include "core/io/text_table.h"
 
 namespace ew {
@@ -20,7 +21,6 @@ namespace {
 
 // [SECTION] Limits
 constexpr size_t kMaxBones = 1024;        // CMU: 30; anything far beyond is corruption
-constexpr double kMaxPointFrames = 2e7;   // frames x points kept in memory (~480 MB)
 constexpr double kDefaultRateHz = 120.0;  // CMU captures at 120 Hz; AMC stores no rate
 
 // [SECTION] Words and numbers
@@ -491,7 +491,10 @@ struct AmcMotion {
 class AmcParser {
  public:
   AmcParser(std::string_view text, const std::string& file, const AsfSkeleton& sk)
-      : in_(text, file), sk_(sk), rootCount_(static_cast<int>(sk.rootOrder.size())) {
+      : in_(text, file),
+        sk_(sk),
+        rootCount_(static_cast<int>(sk.rootOrder.size())),
+        allowance_(skeletonPointFrameAllowance(text.size())) {
     angleToRad_ = sk.angleToRad;
   }
 
@@ -507,10 +510,10 @@ class AmcParser {
       long long number = 0;
       if (words.w.size() == 1 && parseInteger(words.w[0], number)) {
         startFrame(words, number);
-        if (static_cast<double>(motion_.frames) * points > kMaxPointFrames) {
-          throw Error(ErrorKind::Unsupported, in_.file(), linePosition(words.line),
-                      "more frames than this reader keeps in memory");
-        }
+        // The dof values of a frame count like coordinates (three to a point).
+        checkPointFrames(static_cast<double>(motion_.frames),
+                         std::max(points, static_cast<double>(width) / 3.0), allowance_,
+                         in_.file(), linePosition(words.line));
         motion_.values.resize(motion_.values.size() + width, 0.0);
         seen_.assign(sk_.bones.size() + 1, false);
         continue;
@@ -575,6 +578,7 @@ class AmcParser {
   LineReader in_;
   const AsfSkeleton& sk_;
   int rootCount_;
+  double allowance_;  // point-frames this AMC's size allows (reader_limits.h)
   double angleToRad_;
   AmcMotion motion_;
   std::vector<bool> seen_;
@@ -688,10 +692,7 @@ RawTrial parseAsfAmc(std::string_view asfText, std::string_view amcText,
   out.firstFrame = motion.firstFrame;
 
   if (options.rateHzOverride) {
-    if (!(*options.rateHzOverride > 0.0) || !std::isfinite(*options.rateHzOverride)) {
-      throw Error(ErrorKind::BadArgument, amcName, "", "frame-rate override must be positive");
-    }
-    out.rateHz = *options.rateHzOverride;
+    out.rateHz = checkedRateOverrideHz(*options.rateHzOverride, amcName);
   } else {
     out.rateHz = kDefaultRateHz;
     out.warnings.push_back("AMC stores no frame rate: assumed 120 Hz (CMU); set the rate "
@@ -709,15 +710,16 @@ RawTrial parseAsfAmc(std::string_view asfText, std::string_view amcText,
   const auto points = static_cast<Eigen::Index>(out.labels.size());
   const auto frames = static_cast<Eigen::Index>(motion.frames);
   const auto width = sk.rootOrder.size() + static_cast<size_t>(sk.valueCount);
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> positions(frames,
-                                                                                   3 * points);
+  // One row at a time into the result: the positions exist once in memory, not twice.
+  out.positionsMm.resize(frames, 3 * points);
+  Eigen::RowVectorXd framePoints(3 * points);
   const FkSkeleton fk = prepareFk(sk);
   std::vector<Mat3> scratch;
   for (Eigen::Index f = 0; f < frames; ++f) {
     forwardKinematics(sk, fk, &motion.values[static_cast<size_t>(f) * width], scratch,
-                      positions.row(f).data());
+                      framePoints.data());
+    out.positionsMm.row(f) = framePoints * mmPerUnit;
   }
-  out.positionsMm = positions * mmPerUnit;
   return out;
 }
 

@@ -13,6 +13,7 @@
 
 #include "core/common/errors.h"
 #include "core/io/file_bytes.h"
+#include "core/io/reader_limits.h"
 #include "core/io/text_table.h"
 
 namespace ew {
@@ -22,7 +23,6 @@ namespace {
 // A malformed file must fail fast and cheaply, never allocate by an unchecked count.
 constexpr int kMaxPoints = 4096;          // joints + End Sites (real skeletons: 20-300)
 constexpr int kMaxDepth = 256;            // nesting of JOINT blocks
-constexpr double kMaxPointFrames = 2e7;   // frames x points kept in memory (~480 MB)
 
 // [SECTION] Words with line numbers
 
@@ -573,19 +573,11 @@ RawTrial parseBvh(std::string_view text, const std::string& name, const LoadOpti
   Motion motion = readMotion(lines, cursor.nextLineIndex(), sk.channelCount, text, name,
                              out.warnings);
   const auto points = static_cast<long long>(sk.joints.size());
-  if (static_cast<double>(motion.frames) * static_cast<double>(points) > kMaxPointFrames) {
-    throw Error(ErrorKind::Unsupported, name, "",
-                std::to_string(motion.frames) + " frames of " + std::to_string(points) +
-                    " points is more than this reader keeps in memory");
-  }
+  checkPointFrames(static_cast<double>(motion.frames), static_cast<double>(points),
+                   skeletonPointFrameAllowance(text.size()), name, "MOTION");
 
-  out.rateHz = 1.0 / motion.frameTimeS;
-  if (options.rateHzOverride) {
-    if (!(*options.rateHzOverride > 0.0) || !std::isfinite(*options.rateHzOverride)) {
-      throw Error(ErrorKind::BadArgument, name, "", "frame-rate override must be positive");
-    }
-    out.rateHz = *options.rateHzOverride;
-  }
+  out.rateHz = options.rateHzOverride ? checkedRateOverrideHz(*options.rateHzOverride, name)
+                                      : checkedFileRateHz(1.0 / motion.frameTimeS, name, "Frame Time");
 
   long long firstRow = 0;
   std::string why;
@@ -614,15 +606,16 @@ RawTrial parseBvh(std::string_view text, const std::string& name, const LoadOpti
 
   for (const auto& joint : sk.joints) out.labels.push_back(joint.name);
   const auto frames = static_cast<Eigen::Index>(motion.frames - firstRow);
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> positions(frames,
-                                                                                   3 * points);
+  // One row at a time into the result: the positions exist once in memory, not twice.
+  out.positionsMm.resize(frames, 3 * points);
+  Eigen::RowVectorXd framePoints(3 * points);
   std::vector<Mat3> scratch;
   for (Eigen::Index f = 0; f < frames; ++f) {
     const double* row =
         &motion.values[static_cast<size_t>(f + firstRow) * static_cast<size_t>(sk.channelCount)];
-    forwardKinematics(sk, row, scratch, positions.row(f).data());
+    forwardKinematics(sk, row, scratch, framePoints.data());
+    out.positionsMm.row(f) = framePoints * mmPerUnit;
   }
-  out.positionsMm = positions * mmPerUnit;
   return out;
 }
 

@@ -14,6 +14,7 @@
 
 #include "core/common/errors.h"
 #include "core/io/file_bytes.h"
+#include "core/io/reader_limits.h"
 
 // Layout notes (C3D User Guide, c3d.org): the file is a sequence of 512-byte blocks.
 // Block 1 is the header: byte 0 = first parameter block (1-based), byte 1 = 0x50.
@@ -365,8 +366,9 @@ struct C3dLayout {
   std::size_t frameBytes() const { return (4 * points + analogPerFrame) * wordBytes(); }
 };
 
-// Practical ceilings far above any real capture; they keep arithmetic away from overflow.
-constexpr double kMaxRateHz = 1.0e6;
+// Analog channels sample faster than points (force plates, EMG: up to ~100 kHz); this
+// ceiling keeps the analog/point ratio arithmetic away from overflow.
+constexpr double kMaxAnalogRateHz = 1.0e6;
 
 std::size_t pointCount(const C3dBytes& b, const C3dParameters& params, const C3dHeader& h,
                        std::vector<std::string>& warnings) {
@@ -382,11 +384,7 @@ std::size_t pointCount(const C3dBytes& b, const C3dParameters& params, const C3d
 double pointRate(const C3dBytes& b, const C3dParameters& params, const C3dHeader& h) {
   const auto* p = findParameter(params, "POINT:RATE");
   const double rate = p ? parameterNumber(b, *p) : static_cast<double>(h.rateHz);
-  if (!std::isfinite(rate) || rate <= 0.0 || rate > kMaxRateHz) {
-    throwMalformed(b.name(), p ? parameterPosition(*p) : "byte 20 (header frame rate)",
-                   "frame rate " + std::to_string(rate) + " Hz is not a positive rate");
-  }
-  return rate;
+  return checkedFileRateHz(rate, b.name(), p ? parameterPosition(*p) : "byte 20 (header frame rate)");
 }
 
 double pointScale(const C3dBytes& b, const C3dParameters& params, const C3dHeader& h) {
@@ -439,7 +437,7 @@ std::size_t analogValuesPerFrame(const C3dBytes& b, const C3dParameters& params,
   const auto used = optionalCount(b, params, "ANALOG:USED");
   const auto rate = optionalNumber(b, params, "ANALOG:RATE");
   if (!used || *used == 0) return h.analogPerFrame;
-  if (!rate || !std::isfinite(*rate) || *rate <= 0.0 || *rate > kMaxRateHz) {
+  if (!rate || !std::isfinite(*rate) || *rate <= 0.0 || *rate > kMaxAnalogRateHz) {
     warnings.push_back("ANALOG:RATE missing or invalid: using the header's analog count");
     return h.analogPerFrame;
   }
@@ -728,14 +726,7 @@ RawTrial parseC3d(std::span<const std::uint8_t> bytes, const std::string& name,
   const C3dParameters params = readParameters(b, paramStart, trial.warnings);
   const C3dLayout layout = readLayout(b, params, header, paramStart, trial.warnings);
   trial.rateHz = layout.rateHz;
-  if (options.rateHzOverride) {
-    if (!(*options.rateHzOverride > 0.0 && *options.rateHzOverride <= kMaxRateHz)) {
-      throw Error(ErrorKind::BadArgument, name, "",
-                  "frame rate override " + std::to_string(*options.rateHzOverride) +
-                      " Hz is not a positive rate");
-    }
-    trial.rateHz = *options.rateHzOverride;
-  }
+  if (options.rateHzOverride) trial.rateHz = checkedRateOverrideHz(*options.rateHzOverride, name);
   trial.firstFrame = layout.firstFrame;
   trial.labels = pointLabels(b, params, layout.points, trial.warnings);
   const double toMm = lengthFactor(b, params, options, trial);

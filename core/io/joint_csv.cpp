@@ -8,6 +8,7 @@
 #include "core/common/errors.h"
 #include "core/io/atomic_write.h"
 #include "core/io/file_bytes.h"
+#include "core/io/reader_limits.h"
 #include "core/io/text_table.h"
 
 namespace ew {
@@ -36,7 +37,7 @@ void readDirective(std::string_view comment, CsvDirectives& directives) {
   auto key = toLower(trim(comment.substr(0, eq)));
   auto value = trim(comment.substr(eq + 1));
   double number = 0;
-  if (key == "rate_hz" && parseDouble(value, number, false) && number > 0) directives.rateHz = number;
+  if (key == "rate_hz" && parseDouble(value, number, false)) directives.rateHz = number;
   if (key == "units") directives.units = std::string(value);
 }
 
@@ -97,6 +98,8 @@ RawTrial parseJointCsv(std::string_view text, const std::string& name, const Loa
   if (i == lines.size()) throwMalformed(name, "", "empty file: no header line");
   checkHeader(lines[i], name);
   const size_t columns = expectedColumns().size();
+  // Every line after the header may be a frame: bound them before storing any.
+  checkPointFrames(static_cast<double>(lines.size() - i - 1), kJointCount, kMaxPointFrames, name, "");
   std::vector<double> values;
   std::vector<double> times;
   for (++i; i < lines.size(); ++i) {
@@ -125,8 +128,13 @@ RawTrial parseJointCsv(std::string_view text, const std::string& name, const Loa
   raw.upAxis = SignedAxis{2, 1};
   const auto frames = static_cast<Eigen::Index>(times.size());
   if (frames == 0) throwBadData(name, "", "no data rows after the header");
-  raw.rateHz = options.rateHzOverride.value_or(
-      directives.rateHz.value_or(frames > 1 ? rateFromTimes(times, name) : 0.0));
+  if (options.rateHzOverride) {
+    raw.rateHz = checkedRateOverrideHz(*options.rateHzOverride, name);
+  } else if (directives.rateHz) {
+    raw.rateHz = checkedFileRateHz(*directives.rateHz, name, "# rate_hz");
+  } else {
+    raw.rateHz = checkedFileRateHz(rateFromTimes(times, name), name, "column time_s");
+  }
   raw.units = options.unitsOverride.value_or(directives.units.value_or("mm"));
   const double scale = unitToMm(raw.units, name);
   raw.positionsMm = Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(

@@ -7,6 +7,7 @@
 
 #include "core/common/errors.h"
 #include "core/io/file_bytes.h"
+#include "core/io/reader_limits.h"
 #include "core/io/text_table.h"
 
 namespace ew {
@@ -45,6 +46,11 @@ std::vector<std::string> markerNames(const TextLine& row, const std::string& nam
   }
   if (labels.empty()) throwMalformed(name, linePosition(row.number), "no marker names");
   return labels;
+}
+
+std::string headerText(const TrcHeader& h, const std::string& key) {
+  auto it = h.keys.find(key);
+  return it == h.keys.end() ? std::string() : it->second.substr(0, 40);
 }
 
 double headerNumber(const TrcHeader& h, const std::string& key) {
@@ -104,22 +110,30 @@ RawTrial parseTrc(std::string_view text, const std::string& name, const LoadOpti
   raw.format = "TRC";
   raw.kind = PointKind::Markers;
   raw.labels = markerNames(lines[header.nameRow], name);
-  const size_t announced = static_cast<size_t>(std::max(0.0, headerNumber(header, "nummarkers")));
-  if (announced != 0 && announced != raw.labels.size()) {
-    raw.warnings.push_back("header says " + std::to_string(announced) + " markers, name row has " +
-                           std::to_string(raw.labels.size()) + ": using the name row");
+  // NumMarkers is only compared, never trusted: the name row says how many there are.
+  const double announced = headerNumber(header, "nummarkers");
+  if (announced != 0 && announced != static_cast<double>(raw.labels.size())) {
+    raw.warnings.push_back("header says " + headerText(header, "nummarkers") +
+                           " markers, name row has " + std::to_string(raw.labels.size()) +
+                           ": using the name row");
   }
+  const size_t dataLines = lines.size() > header.nameRow + 2 ? lines.size() - header.nameRow - 2 : 0;
+  checkPointFrames(static_cast<double>(dataLines), static_cast<double>(raw.labels.size()),
+                   kMaxPointFrames, name, "");
   std::vector<double> values, times;
   readRows(lines, header.nameRow + 2, raw.labels.size(), name, values, times);
   if (times.empty()) throwBadData(name, "", "no data rows");
   raw.rateHz = headerNumber(header, "datarate");
   if (options.rateHzOverride) {
-    raw.rateHz = *options.rateHzOverride;
-  } else if (!(raw.rateHz > 0) && times.size() > 1 && times[1] > times[0]) {
-    raw.rateHz = 1.0 / (times[1] - times[0]);
+    raw.rateHz = checkedRateOverrideHz(*options.rateHzOverride, name);
+  } else if (header.keys.count("datarate") && raw.rateHz != 0) {
+    raw.rateHz = checkedFileRateHz(raw.rateHz, name, "DataRate");
+  } else if (times.size() > 1 && times[1] > times[0]) {
+    raw.rateHz = checkedFileRateHz(1.0 / (times[1] - times[0]), name, "Time column");
     raw.warnings.push_back("no DataRate in header: rate taken from the Time column");
+  } else {
+    throwBadData(name, "", "no frame rate (DataRate missing, Time not increasing)");
   }
-  if (!(raw.rateHz > 0)) throwBadData(name, "", "no frame rate (DataRate missing, Time not increasing)");
   auto units = header.keys.count("units") ? header.keys["units"] : std::string();
   if (units.empty() && !options.unitsOverride) raw.warnings.push_back("no Units in header: assuming mm");
   raw.units = options.unitsOverride.value_or(units.empty() ? "mm" : units);

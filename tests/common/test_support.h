@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace ew::test {
 
@@ -20,6 +21,19 @@ std::filesystem::path sourceDir();
 std::filesystem::path makeTempDir(const std::string& stem);
 
 bool dataRequired();
+
+// A program run to completion: exit code (-1 when killed), the signal that killed it,
+// its peak resident memory, and what it printed (stdout and stderr together).
+struct ProgramRun {
+  int exitCode = -1;
+  int signal = 0;
+  long peakRssKb = 0;
+  std::string output;
+};
+
+// Runs `program` with `arguments` (no shell), output captured through a file in `dir`.
+ProgramRun runProgram(const std::string& program, const std::vector<std::string>& arguments,
+                      const std::filesystem::path& dir);
 
 }  // namespace ew::test
 

@@ -65,7 +65,9 @@ TEST(GaitCycles, FileEventsWinOverKinematics) {
   JointTrial t = analyticWalkTrial(g);
   // Events that imply 1.0 Hz although the kinematics say 0.9 Hz: the file is trusted.
   for (double s : {0.2, 1.2, 2.2}) t.events.push_back({Side::Right, GaitEventType::FootStrike, s, "Foot Strike"});
-  const WalkingTrial w = prepareWalkingTrial(t, PrepareOptions{0.1, false, {}});
+  PrepareOptions whole;
+  whole.cropToSteadyWindow = false;
+  const WalkingTrial w = prepareWalkingTrial(t, whole);
   EXPECT_EQ(w.cycles.method, "file events");
   EXPECT_NEAR(w.cycles.strideHz, 1.0, 1e-9);
 }
