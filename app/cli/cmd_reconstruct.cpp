@@ -65,7 +65,7 @@ Input readInput(const ReconstructArgs& a) {
   const WalkingTrial trial = loadWalkingTrial(a.input);
   in.frames3d = trial.joints.positionsMm;
   in.view = {projectFramesToView(in.frames3d, *a.projectAngleDeg), trial.joints.rateHz};
-  if (trial.cycles.strideHz > 0) in.omegaHintRadS = 2.0 * std::numbers::pi * trial.cycles.strideHz;
+  if (trial.cycles.strideHz > 0 && std::isfinite(trial.cycles.strideHz)) in.omegaHintRadS = 2.0 * std::numbers::pi * trial.cycles.strideHz;
   return in;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
@@ -21,6 +22,9 @@ constexpr double kMinCycles = 0.99;     // "one full cycle", allowing frame quan
 constexpr int kScanComponents = 6;      // principal components the ω scan looks at
 constexpr double kScanRateHz = 25.0;    // the coarse scan runs on data decimated to ≥ this
 constexpr double kHintVarianceSlack = 0.02;
+// Coarse ω grid points at most: 20 per second of data for the default range, so 1e6
+// points is 14 hours of frames; beyond that the rate is wrong or the data is not one walk.
+constexpr double kMaxScanPoints = 1e6;
 
 std::string formatHz(double omegaRadS) {
   char buf[32];
@@ -38,15 +42,55 @@ struct CleanFrames {
   double durationS = 0.0;    // from the first to one past the last kept frame
 };
 
+[[noreturn]] void fitError(ErrorKind kind, const FourierFitOptions& options,
+                           const std::string& problem) {
+  throw Error(kind, options.file, "", "Fourier fit: " + problem);
+}
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// The options' own preconditions (caller mistakes), checked before any data is looked at.
+void checkOptions(const FourierFitOptions& o) {
+  const auto positive = [](const std::optional<double>& v) {
+    return !v || (std::isfinite(*v) && *v > 0.0);
+  };
+  if (!positive(o.omegaFixedRadS))
+    fitError(
+        ErrorKind::BadArgument, o,
+        "the fixed ω must be positive and finite, got " + number(*o.omegaFixedRadS) + " rad/s");
+  if (!positive(o.omegaHintRadS))
+    fitError(ErrorKind::BadArgument, o,
+             "the ω hint must be positive and finite, got " + number(*o.omegaHintRadS) + " rad/s");
+  if (!o.omegaFixedRadS &&
+      !(std::isfinite(o.omegaMaxRadS) && o.omegaMinRadS > 0.0 && o.omegaMinRadS < o.omegaMaxRadS))
+    fitError(ErrorKind::BadArgument, o,
+             "the ω scan range must satisfy 0 < min < max < ∞, got [" + number(o.omegaMinRadS) +
+                 ", " + number(o.omegaMaxRadS) + "] rad/s");
+  if (!(o.maxMissingFraction >= 0.0 && o.maxMissingFraction <= 1.0))
+    fitError(ErrorKind::BadArgument, o,
+             "the allowed missing fraction must be in [0, 1], got " + number(o.maxMissingFraction));
+  if (!(o.hintAgreement >= 0.0 && std::isfinite(o.hintAgreement)))
+    fitError(ErrorKind::BadArgument, o,
+             "the hint agreement must be finite and ≥ 0, got " + number(o.hintAgreement));
+}
+
 CleanFrames cleanFrames(const Eigen::Ref<const Eigen::MatrixXd>& frames, double rateHz,
                         const FourierFitOptions& options) {
   const auto cols = frames.cols();
   if (cols != kDims3 && cols != kDims2)
-    throw Error(ErrorKind::BadArgument, options.file, "",
-                "Fourier fit needs 45 (3D) or 30 (2D) columns, got " + std::to_string(cols));
+    fitError(ErrorKind::BadArgument, options,
+             "needs 45 (3D) or 30 (2D) columns, got " + std::to_string(cols));
   if (!(rateHz > 0.0) || !std::isfinite(rateHz))
-    throw Error(ErrorKind::BadArgument, options.file, "", "frame rate must be positive");
+    fitError(ErrorKind::BadArgument, options,
+             "frame rate must be positive and finite, got " + number(rateHz) + " Hz");
+  if (frames.rows() > std::numeric_limits<int>::max())
+    fitError(ErrorKind::BadData, options, std::to_string(frames.rows()) + " frames are too many");
   const auto rows = static_cast<int>(frames.rows());
+  if (rows == 0) fitError(ErrorKind::BadData, options, "no frames");
   std::vector<int> kept;
   kept.reserve(static_cast<size_t>(rows));
   for (int i = 0; i < rows; ++i) {
@@ -54,14 +98,16 @@ CleanFrames cleanFrames(const Eigen::Ref<const Eigen::MatrixXd>& frames, double 
   }
   CleanFrames out;
   out.dropped = rows - static_cast<int>(kept.size());
-  if (rows == 0 || out.dropped > options.maxMissingFraction * rows) {
-    throw Error(ErrorKind::BadData, options.file, "",
-                std::to_string(out.dropped) + " of " + std::to_string(rows) +
-                    " frames have missing values (the Fourier fit allows " +
-                    std::to_string(static_cast<int>(options.maxMissingFraction * 100)) + " %)");
+  if (out.dropped > options.maxMissingFraction * rows) {
+    fitError(ErrorKind::BadData, options,
+             std::to_string(out.dropped) + " of " + std::to_string(rows) +
+                 " frames have missing values (the Fourier fit allows " +
+                 std::to_string(static_cast<int>(options.maxMissingFraction * 100)) + " %)");
   }
   if (kept.size() < 8)
-    throw Error(ErrorKind::BadData, options.file, "", "too few frames for a Fourier fit");
+    fitError(ErrorKind::BadData, options,
+             "too few frames for a Fourier fit: " + std::to_string(kept.size()) +
+                 " complete, at least 8 needed");
   const auto n = static_cast<Eigen::Index>(kept.size());
   if (out.dropped == 0) {  // the common case: one contiguous copy
     out.centered = frames;
@@ -76,7 +122,15 @@ CleanFrames cleanFrames(const Eigen::Ref<const Eigen::MatrixXd>& frames, double 
   }
   out.mean = out.centered.colwise().mean();
   out.centered.rowwise() -= out.mean;
+  // Finite coordinates can still overflow the sums of squares every step below relies on.
+  if (!out.mean.allFinite() || !std::isfinite(out.centered.squaredNorm()))
+    fitError(ErrorKind::BadData, options,
+             "coordinates too large: their sums of squares overflow (a wrong unit?)");
   out.durationS = (kept.back() - kept.front() + 1) / rateHz;
+  if (!std::isfinite(out.durationS))
+    fitError(ErrorKind::BadData, options,
+             std::to_string(rows) + " frames at " + number(rateHz) +
+                 " Hz last longer than a double holds");
   return out;
 }
 
@@ -159,8 +213,10 @@ struct ScanSignals {
 
 ScanSignals makeScanSignals(const CleanFrames& cf, double rateHz) {
   const Eigen::Index n = cf.centered.rows();
-  const Eigen::Index m = std::min<Eigen::Index>(
-      std::max(1, static_cast<int>(std::floor(rateHz / kScanRateHz))), std::max<Eigen::Index>(1, n / 8));
+  // Block length in double first: rateHz / kScanRateHz may exceed any integer.
+  const double blocks =
+      std::clamp(std::floor(rateHz / kScanRateHz), 1.0, std::max(1.0, static_cast<double>(n / 8)));
+  const auto m = static_cast<Eigen::Index>(blocks);
   const Eigen::Index nd = n / m;  // whole blocks only, so uniform frames stay uniform
   Eigen::MatrixXd dec(nd, cf.centered.cols());
   Eigen::VectorXd decTimes(nd);
@@ -199,9 +255,17 @@ struct Scan {
   std::vector<int> maxima;                // grid indices of local maxima
 };
 
-Scan coarseScan(const ScanSignal& sig, double lo, double hi, double durationS) {
+Scan coarseScan(const ScanSignal& sig, double lo, double hi, double durationS,
+                const FourierFitOptions& options) {
   const double step = std::numbers::pi / (4.0 * durationS);
-  const int count = std::max(3, static_cast<int>(std::ceil((hi - lo) / step)) + 1);
+  // The grid grows with the duration: bounded before the cast and the allocation.
+  const double points = std::ceil((hi - lo) / step) + 1.0;
+  if (!(points <= kMaxScanPoints))
+    fitError(ErrorKind::BadData, options,
+             number(durationS) + " s of frames would need " + number(points) +
+                 " frequency scan points (at most " + number(kMaxScanPoints) +
+                 "): check the frame rate or cut the recording");
+  const int count = std::max(3, static_cast<int>(points));
   Scan scan;
   scan.omegas.resize(static_cast<size_t>(count));
   scan.explained.resize(static_cast<size_t>(count));
@@ -229,7 +293,10 @@ Peak refinePeak(const ScanSignal& full, const Scan& scan, int gridIndex) {
   return {m.x, full.totalSS > 0 ? -m.value / full.totalSS : 0.0, gridIndex};
 }
 
-int bestMaximum(const Scan& scan) {
+int bestMaximum(const Scan& scan, const FourierFitOptions& options) {
+  // Finite values always have a maximum; only a non-finite scan leaves none.
+  if (scan.maxima.empty())
+    fitError(ErrorKind::BadData, options, "the frequency scan found no peak (non-finite variance)");
   return *std::max_element(scan.maxima.begin(), scan.maxima.end(), [&](int a, int b) {
     return scan.explained[static_cast<size_t>(a)] < scan.explained[static_cast<size_t>(b)];
   });
@@ -253,23 +320,23 @@ void chooseOmega(const CleanFrames& cf, double rateHz, const FourierFitOptions& 
   const double lo = std::max(options.omegaMinRadS, kMinCycles * oneCycle);
   const double hi = options.omegaMaxRadS;
   if (lo >= hi) {
-    throw Error(ErrorKind::BadData, options.file, "",
-                "less than one gait cycle: " + std::to_string(cf.durationS) +
-                    " s of frames, a cycle at the fastest allowed " + formatHz(hi) + " takes " +
-                    std::to_string(kTwoPi / hi) + " s");
+    fitError(ErrorKind::BadData, options,
+             "less than one gait cycle: " + std::to_string(cf.durationS) +
+                 " s of frames, a cycle at the fastest allowed " + formatHz(hi) + " takes " +
+                 std::to_string(kTwoPi / hi) + " s");
   }
   const ScanSignals signals = makeScanSignals(cf, rateHz);
-  const Scan scan = coarseScan(signals.decimated, lo, hi, cf.durationS);
-  const Peak best = refinePeak(signals.full, scan, bestMaximum(scan));
+  const Scan scan = coarseScan(signals.decimated, lo, hi, cf.durationS, options);
+  const Peak best = refinePeak(signals.full, scan, bestMaximum(scan, options));
   if (best.omega - lo <= 1e-6 * lo) {
     // The variance explained still grows towards lower ω: the frames' dominant period
     // is longer than they are (or than the slowest gait allowed).
     const bool cycleBound = lo > options.omegaMinRadS;
-    throw Error(ErrorKind::BadData, options.file, "",
-                cycleBound ? "less than one gait cycle: the motion's period is longer than the " +
-                                 std::to_string(cf.durationS) + " s of frames"
-                           : "no gait frequency in range: the motion is slower than " +
-                                 formatHz(options.omegaMinRadS));
+    fitError(ErrorKind::BadData, options,
+             cycleBound ? "less than one gait cycle: the motion's period is longer than the " +
+                              std::to_string(cf.durationS) + " s of frames"
+                        : "no gait frequency in range: the motion is slower than " +
+                              formatHz(options.omegaMinRadS));
   }
   fit.scanOmegaRadS = best.omega;
   fit.omegaRadS = best.omega;
@@ -320,11 +387,25 @@ double wrapPi(double a) {
 // [SECTION] Public API
 
 Eigen::VectorXd frameTimes(int count, double rateHz) {
+  if (count < 0)
+    throw Error(ErrorKind::BadArgument, "", "",
+                "frame times: the frame count must be ≥ 0, got " + std::to_string(count));
+  if (!(rateHz > 0.0) || !std::isfinite(rateHz))
+    throw Error(
+        ErrorKind::BadArgument, "", "",
+        "frame times: frame rate must be positive and finite, got " + number(rateHz) + " Hz");
   return Eigen::VectorXd::LinSpaced(count, 0.0, (count - 1) / rateHz);
 }
 
 Eigen::VectorXd rephase(const Eigen::Ref<const Eigen::VectorXd>& w, double fromPhaseRad,
                         double toPhaseRad) {
+  if (w.size() != kFourierDims3 && w.size() != kFourierDims2)
+    throw Error(ErrorKind::BadArgument, "", "",
+                "rephase: w must have 225 or 150 values, got " + std::to_string(w.size()));
+  if (!std::isfinite(fromPhaseRad) || !std::isfinite(toPhaseRad))
+    throw Error(ErrorKind::BadArgument, "", "",
+                "rephase: phases must be finite, got " + number(fromPhaseRad) + " and " +
+                    number(toPhaseRad) + " rad");
   const Eigen::Index d = w.size() / kFourierBlocks;
   Eigen::VectorXd out = w;
   for (int h = 1; h <= 2; ++h) {
@@ -341,7 +422,17 @@ Eigen::VectorXd rephase(const Eigen::Ref<const Eigen::VectorXd>& w, double fromP
 Eigen::MatrixXd synthesizeFrames(const Eigen::Ref<const Eigen::VectorXd>& w, double omegaRadS,
                                  double phaseRad, const Eigen::Ref<const Eigen::VectorXd>& timesS) {
   if (w.size() != kFourierDims3 && w.size() != kFourierDims2)
-    throw Error(ErrorKind::BadArgument, "", "", "w must have 225 or 150 values");
+    throw Error(
+        ErrorKind::BadArgument, "", "",
+        "Fourier synthesis: w must have 225 or 150 values, got " + std::to_string(w.size()));
+  if (!w.allFinite())
+    throw Error(ErrorKind::BadArgument, "", "", "Fourier synthesis: w has non-finite values");
+  if (!std::isfinite(omegaRadS) || !std::isfinite(phaseRad))
+    throw Error(ErrorKind::BadArgument, "", "",
+                "Fourier synthesis: ω and φ must be finite, got " + number(omegaRadS) +
+                    " rad/s and " + number(phaseRad) + " rad");
+  if (!timesS.allFinite())
+    throw Error(ErrorKind::BadArgument, "", "", "Fourier synthesis: the times must be finite");
   const Eigen::Index d = w.size() / kFourierBlocks;
   // Row-wise basis times the 5 × d coefficient blocks: one small GEMM.
   const Eigen::Map<const Eigen::MatrixXd> blocks(w.data(), d, kFourierBlocks);
@@ -353,6 +444,7 @@ Eigen::MatrixXd synthesizeFrames(const Eigen::Ref<const Eigen::VectorXd>& w, dou
 
 FourierFit fitFourier(const Eigen::Ref<const Eigen::MatrixXd>& frames, double rateHz,
                       const FourierFitOptions& options) {
+  checkOptions(options);
   const CleanFrames cf = cleanFrames(frames, rateHz, options);
   FourierFit fit;
   fit.framesUsed = static_cast<int>(cf.centered.rows());
@@ -362,9 +454,18 @@ FourierFit fitFourier(const Eigen::Ref<const Eigen::MatrixXd>& frames, double ra
   chooseOmega(cf, rateHz, options, fit);
   fit.cycles = fit.omegaRadS * cf.durationS / kTwoPi;
   if (fit.cycles < kMinCycles) {
-    throw Error(ErrorKind::BadData, options.file, "",
-                "less than one gait cycle: " + std::to_string(fit.cycles) + " cycles at " +
-                    formatHz(fit.omegaRadS));
+    fitError(ErrorKind::BadData, options,
+             "less than one gait cycle: " + std::to_string(fit.cycles) + " cycles at " +
+                 formatHz(fit.omegaRadS));
+  }
+  // Sampling must resolve the second harmonic (2ω below the Nyquist frequency πfs): at or
+  // above it the basis columns alias, the 5 × 5 normal equations are singular and the
+  // solve would quietly return zeros for the aliased coefficients.
+  if (!(2.0 * fit.omegaRadS < std::numbers::pi * rateHz)) {
+    fitError(ErrorKind::BadData, options,
+             number(rateHz) + " Hz frames cannot resolve the second harmonic of a " +
+                 formatHz(fit.omegaRadS) + " gait (the rate must exceed " +
+                 number(4.0 * fit.omegaRadS / kTwoPi) + " Hz)");
   }
 
   // Least squares at ω with phase 0: coefficients x (5 × d) = G⁻¹ Aᵀ P.
@@ -387,9 +488,11 @@ FourierFit fitFourier(const Eigen::Ref<const Eigen::MatrixXd>& frames, double ra
   const double residualSS = std::max(0.0, dataSS - (x.array() * atp.array()).sum());
   const double total = dataSS + static_cast<double>(cf.centered.rows()) * x.row(0).squaredNorm();
   const double scale = std::sqrt(total / static_cast<double>(cf.centered.size())) + 1e-300;
+  if (!x.allFinite() || !std::isfinite(total))
+    fitError(ErrorKind::BadData, options, "the least-squares fit gave non-finite coefficients");
   if (std::hypot(rs, rc) <= 1e-9 * scale) {
-    throw Error(ErrorKind::BadData, options.file, "",
-                "the ankle height difference has no fundamental: cannot align the phase");
+    fitError(ErrorKind::BadData, options,
+             "the ankle height difference has no fundamental: cannot align the phase");
   }
   fit.phaseRad = wrapPi(std::atan2(rc, rs));
   fit.w = rephase(w0, 0.0, fit.phaseRad);

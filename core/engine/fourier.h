@@ -69,19 +69,29 @@ struct FourierFit {
 // ω scan and the phase reference see the same samples); more than maxMissingFraction of
 // the frames dropped → Error(BadData).
 // Fewer than 0.99 cycles at the chosen ω (or at omegaMax) → Error(BadData).
+// Every error names options.file and reads "Fourier fit: …". Error(BadArgument) for columns
+// other than 45/30, a rate that is not positive and finite, a fixed ω or hint that is not
+// positive and finite, a scan range other than 0 < min < max < ∞, a missing fraction
+// outside [0, 1]. Error(BadData) for no frames, fewer than 8 complete ones, coordinates
+// whose squares overflow, a rate at or below 4× the stride frequency (the second harmonic
+// aliases: 2ω ≥ π·fs), or a duration needing more than 1e6 scan points (a wrong rate).
+// A frame with ±∞ is a missing frame, like NaN. The result is always finite.
 FourierFit fitFourier(const Eigen::Ref<const Eigen::MatrixXd>& frames, double rateHz,
                       const FourierFitOptions& options = {});
 
-// p(t) for each time (s): rows = times, columns = w.size() / 5 (45 or 30).
+// p(t) for each time (s): rows = times, columns = w.size() / 5 (45 or 30). w, ω, φ and
+// the times must be finite (Error(BadArgument) "Fourier synthesis: …").
 Eigen::MatrixXd synthesizeFrames(const Eigen::Ref<const Eigen::VectorXd>& w, double omegaRadS,
                                  double phaseRad, const Eigen::Ref<const Eigen::VectorXd>& timesS);
 
-// Times i / rateHz for i = 0 … count − 1 (the frame times fitFourier assumes).
+// Times i / rateHz for i = 0 … count − 1 (the frame times fitFourier assumes). count ≥ 0
+// and a positive, finite rate, else Error(BadArgument).
 Eigen::VectorXd frameTimes(int count, double rateHz);
 
 // Re-expresses w for another phase origin: the returned w' satisfies
 // synthesizeFrames(w', ω, toPhase, t) == synthesizeFrames(w, ω, fromPhase, t) for all t
-// (harmonic h's (p, q) pair rotates by h·(fromPhase − toPhase)).
+// (harmonic h's (p, q) pair rotates by h·(fromPhase − toPhase)). w: 225 or 150 values;
+// phases finite (else Error(BadArgument)).
 Eigen::VectorXd rephase(const Eigen::Ref<const Eigen::VectorXd>& w, double fromPhaseRad,
                         double toPhaseRad);
 

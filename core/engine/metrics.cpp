@@ -12,9 +12,24 @@
 namespace ew {
 namespace {
 
+constexpr int kMaxMpjpeSamples = 100'000;  // 2 × 36 MB of synthesised frames
+
+[[noreturn]] void metricsError(ErrorKind kind, const std::string& problem) {
+  throw Error(kind, "", "", "error measures: " + problem);
+}
+
 void requireWalker(const Eigen::Ref<const Eigen::VectorXd>& w, const char* what) {
   if (w.size() != kFourierDims3)
-    throw Error(ErrorKind::BadArgument, "", "", std::string(what) + " must have 225 values");
+    metricsError(ErrorKind::BadArgument,
+                 std::string(what) + " must have 225 values, got " + std::to_string(w.size()));
+  if (!w.allFinite())
+    metricsError(ErrorKind::BadArgument, std::string(what) + " has non-finite values");
+}
+
+void requireRate(double rateHz) {
+  if (!(rateHz > 0.0) || !std::isfinite(rateHz))
+    metricsError(ErrorKind::BadArgument,
+                 "frame rate must be positive and finite, got " + std::to_string(rateHz) + " Hz");
 }
 
 // Depth coefficients (75, block-major then joint) → per joint temporal variance over one
@@ -50,12 +65,16 @@ struct CompleteFrames {
 
 CompleteFrames completeFrames(const Eigen::Ref<const Eigen::MatrixXd>& frames, double rateHz) {
   if (frames.cols() != kDims3)
-    throw Error(ErrorKind::BadArgument, "", "", "frames must be T × 45");
+    metricsError(ErrorKind::BadArgument,
+                 "frames must be T × 45, got " + std::to_string(frames.cols()) + " columns");
+  requireRate(rateHz);
   std::vector<Eigen::Index> rows;
   for (Eigen::Index i = 0; i < frames.rows(); ++i) {
     if (frames.row(i).allFinite()) rows.push_back(i);
   }
-  if (rows.empty()) throw Error(ErrorKind::BadData, "", "", "no complete frame to compare with");
+  if (rows.empty())
+    metricsError(ErrorKind::BadData,
+                 "no complete frame to compare with (of " + std::to_string(frames.rows()) + ")");
   CompleteFrames out;
   out.frames.resize(static_cast<Eigen::Index>(rows.size()), kDims3);
   out.times.resize(out.frames.rows());
@@ -95,6 +114,10 @@ DepthErrors depthErrorsFrames(const Eigen::Ref<const Eigen::MatrixXd>& framesTru
                               double phaseRad, double alphaDeg) {
   requireWalker(wRec, "reconstruction");
   const CompleteFrames cf = completeFrames(framesTrue, rateHz);
+  // σ_m² is the frames' temporal depth variance: one frame has none (E_r would be 0 / 0).
+  if (cf.frames.rows() < 2)
+    metricsError(ErrorKind::BadData,
+                 "depth errors against frames need at least 2 complete frames, got 1");
   const Eigen::MatrixXd dTrue = depthFramesAtView(cf.frames, alphaDeg);
   const Eigen::MatrixXd dRec =
       depthFramesAtView(synthesizeFrames(wRec, omegaRadS, phaseRad, cf.times), alphaDeg);
@@ -108,7 +131,9 @@ double mpjpe(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
              const Eigen::Ref<const Eigen::VectorXd>& wRec, int samples) {
   requireWalker(wTrue, "true walker");
   requireWalker(wRec, "reconstruction");
-  if (samples < 1) throw Error(ErrorKind::BadArgument, "", "", "MPJPE needs at least one sample");
+  if (samples < 1 || samples > kMaxMpjpeSamples)
+    metricsError(ErrorKind::BadArgument, "MPJPE needs 1 to " + std::to_string(kMaxMpjpeSamples) +
+                                             " samples, got " + std::to_string(samples));
   // One cycle of ω = 1 rad/s at phase 0: both walkers share ω and φ, so any would do.
   const Eigen::VectorXd t =
       Eigen::VectorXd::LinSpaced(samples, 0.0, 2.0 * std::numbers::pi * (samples - 1) / samples);
@@ -124,6 +149,10 @@ double mpjpeFrames(const Eigen::Ref<const Eigen::MatrixXd>& framesTrue, double r
 }
 
 double viewAngleErrorDeg(double estimatedDeg, double trueDeg) {
+  if (!std::isfinite(estimatedDeg) || !std::isfinite(trueDeg))
+    metricsError(ErrorKind::BadArgument, "view angle error of non-finite angles (" +
+                                             std::to_string(estimatedDeg) + "°, " +
+                                             std::to_string(trueDeg) + "°)");
   return std::abs(wrapDeg(estimatedDeg - trueDeg));
 }
 

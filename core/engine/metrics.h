@@ -9,6 +9,11 @@
 //   E_rel(j) = E_abs(j) / σ_m²,  E_r = mean over joints
 // Both walkers must share ω and φ (the reconstruction is synthesised with the test
 // walker's own ω and φ, SPEC §6), so Fourier coefficients compare directly.
+//
+// Preconditions (Error "error measures: …"): walkers of 225 finite values, frames T × 45,
+// finite angles, rates positive and finite (BadArgument); at least one complete frame, two
+// for depthErrorsFrames (BadData). A true walker without depth motion (σ_m² = 0) gives
+// E_rel = NaN on purpose: the relative error is undefined, E_abs is still reported.
 
 #include <Eigen/Core>
 

@@ -5,6 +5,9 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include "core/common/errors.h"
 
 namespace ew {
 
@@ -15,9 +18,17 @@ struct Minimum1d {
 };
 
 // Minimises f on [lo, hi] until the bracket is narrower than about 2·xTol (absolute).
-// Finds a local minimum; the caller brackets the one it wants.
+// Finds a local minimum; the caller brackets the one it wants. Needs finite lo ≤ hi, a
+// positive finite xTol and maxEvaluations ≥ 1 (else Error(BadArgument)). f should be
+// finite: callers check their result (a NaN value ends as the returned one).
 template <class F>
 Minimum1d minimizeBrent(F&& f, double lo, double hi, double xTol, int maxEvaluations = 200) {
+  if (!(std::isfinite(lo) && std::isfinite(hi) && lo <= hi) ||
+      !(xTol > 0.0 && std::isfinite(xTol)) || maxEvaluations < 1)
+    throw Error(ErrorKind::BadArgument, "", "",
+                "1-D minimisation: needs a finite bracket lo ≤ hi and a positive tolerance, got [" +
+                    std::to_string(lo) + ", " + std::to_string(hi) + "], tolerance " +
+                    std::to_string(xTol));
   constexpr double kGolden = 0.3819660112501051;  // (3 − √5) / 2
   constexpr double kEps = std::numeric_limits<double>::epsilon();
   double x = lo + kGolden * (hi - lo);

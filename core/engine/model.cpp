@@ -2,6 +2,7 @@
 
 #include <Eigen/SVD>
 #include <algorithm>
+#include <cmath>
 
 #include "core/common/errors.h"
 #include "core/engine/fourier.h"
@@ -9,23 +10,40 @@
 namespace ew {
 namespace {
 
-void checkInputs(const Eigen::Ref<const Eigen::MatrixXd>& w, size_t ids, size_t subjects,
-                 Eigen::Index omegas) {
+[[noreturn]] void modelError(const std::string& problem) {
+  throw Error(ErrorKind::BadArgument, "", "", "model: " + problem);
+}
+
+void checkInputs(const Eigen::Ref<const Eigen::MatrixXd>& w, const std::vector<std::string>& ids,
+                 size_t subjects, const Eigen::Ref<const Eigen::VectorXd>& omegas,
+                 const ModelOptions& options) {
   const auto r = static_cast<size_t>(w.cols());
   if (w.rows() != kFourierDims3)
-    throw Error(ErrorKind::BadArgument, "", "", "W must have 225 rows, got " + std::to_string(w.rows()));
-  if (r < 2) throw Error(ErrorKind::BadArgument, "", "", "a model needs at least 2 walkers");
-  if (ids != r || subjects != r || static_cast<size_t>(omegas) != r)
-    throw Error(ErrorKind::BadArgument, "", "",
-                "walker ids, subjects and frequencies must have one entry per column of W");
-  if (!w.allFinite()) throw Error(ErrorKind::BadArgument, "", "", "W has non-finite values");
+    modelError("W must have 225 rows, got " + std::to_string(w.rows()));
+  if (r < 2) modelError("a model needs at least 2 walkers, got " + std::to_string(r));
+  if (ids.size() != r || subjects != r || static_cast<size_t>(omegas.size()) != r)
+    modelError("walker ids, subjects and frequencies must have one entry per column of W (" +
+               std::to_string(r) + "), got " + std::to_string(ids.size()) + ", " +
+               std::to_string(subjects) + " and " + std::to_string(omegas.size()));
+  for (size_t c = 0; c < r; ++c) {
+    const auto col = static_cast<Eigen::Index>(c);
+    if (!w.col(col).allFinite())
+      modelError("walker '" + ids[c] + "' has non-finite Fourier coefficients");
+    if (!(std::isfinite(omegas(col)) && omegas(col) > 0.0))
+      modelError("walker '" + ids[c] + "' has a non-positive or non-finite stride frequency (" +
+                 std::to_string(omegas(col)) + " rad/s)");
+  }
+  if (!options.components && !(options.varianceThreshold > 0.0 && options.varianceThreshold <= 1.0))
+    modelError("the variance threshold must be in (0, 1], got " +
+               std::to_string(options.varianceThreshold));
 }
 
 int chooseComponents(const Eigen::VectorXd& spectrum, const ModelOptions& options) {
   const int maxN = static_cast<int>(spectrum.size());
   if (options.components) {
     if (*options.components < 1)
-      throw Error(ErrorKind::BadArgument, "", "", "the model needs at least one component");
+      modelError("the model needs at least one component, got " +
+                 std::to_string(*options.components));
     return std::min(*options.components, maxN);
   }
   const double total = spectrum.sum();
@@ -58,7 +76,7 @@ EigenwalkerModel buildModel(const Eigen::Ref<const Eigen::MatrixXd>& w,
                             std::vector<std::string> walkerIds, std::vector<std::string> subjects,
                             const Eigen::Ref<const Eigen::VectorXd>& omegasRadS,
                             const ModelOptions& options) {
-  checkInputs(w, walkerIds.size(), subjects.size(), omegasRadS.size());
+  checkInputs(w, walkerIds, subjects.size(), omegasRadS, options);
   const Eigen::Index r = w.cols();
   EigenwalkerModel model;
   model.mean = w.rowwise().mean();
@@ -85,13 +103,15 @@ EigenwalkerModel buildModelWithoutSubject(const Eigen::Ref<const Eigen::MatrixXd
                                           const Eigen::Ref<const Eigen::VectorXd>& omegasRadS,
                                           const std::string& heldOutSubject,
                                           const ModelOptions& options) {
-  checkInputs(w, walkerIds.size(), subjects.size(), omegasRadS.size());
+  checkInputs(w, walkerIds, subjects.size(), omegasRadS, options);
   std::vector<Eigen::Index> keep;
   for (size_t i = 0; i < subjects.size(); ++i) {
     if (subjects[i] != heldOutSubject) keep.push_back(static_cast<Eigen::Index>(i));
   }
-  if (keep.size() == subjects.size())
-    throw Error(ErrorKind::BadArgument, "", "", "no walker of subject '" + heldOutSubject + "'");
+  if (keep.size() == subjects.size()) modelError("no walker of subject '" + heldOutSubject + "'");
+  if (keep.size() < 2)
+    modelError("leaving out subject '" + heldOutSubject + "' leaves " +
+               std::to_string(keep.size()) + " walker(s); a model needs at least 2");
   Eigen::MatrixXd kept(w.rows(), static_cast<Eigen::Index>(keep.size()));
   Eigen::VectorXd keptOmegas(kept.cols());
   std::vector<std::string> keptIds, keptSubjects;
@@ -107,17 +127,49 @@ EigenwalkerModel buildModelWithoutSubject(const Eigen::Ref<const Eigen::MatrixXd
   return model;
 }
 
+namespace {
+
+// O(1): the shapes every use of a model relies on.
+void checkModelShape(const EigenwalkerModel& model, const std::string& stage) {
+  const Eigen::Index n = model.eigenwalkers.cols();
+  if (model.mean.size() != kFourierDims3 || model.eigenwalkers.rows() != kFourierDims3 || n < 1 ||
+      model.eigenvalues.size() != n)
+    throw Error(ErrorKind::BadArgument, "", "",
+                stage + ": the model is empty or inconsistent (mean " +
+                    std::to_string(model.mean.size()) + ", eigenwalkers " +
+                    std::to_string(model.eigenwalkers.rows()) + " x " + std::to_string(n) +
+                    ", eigenvalues " + std::to_string(model.eigenvalues.size()) +
+                    "; expected 225, 225 x N, N with N ≥ 1)");
+}
+
+}  // namespace
+
+void checkModel(const EigenwalkerModel& model, const std::string& stage) {
+  checkModelShape(model, stage);
+  const auto bad = [&](const std::string& problem) {
+    throw Error(ErrorKind::BadArgument, "", "", stage + ": " + problem);
+  };
+  if (!model.mean.allFinite() || !model.eigenwalkers.allFinite() || !model.eigenvalues.allFinite())
+    bad("the model has non-finite values");
+  if ((model.eigenvalues.array() < 0.0).any()) bad("the model has a negative eigenvalue");
+}
+
 Eigen::VectorXd synthesizeWalker(const EigenwalkerModel& model,
                                  const Eigen::Ref<const Eigen::VectorXd>& k) {
+  checkModelShape(model, "model synthesis");
   if (k.size() != model.componentCount())
-    throw Error(ErrorKind::BadArgument, "", "", "coefficient count differs from the model's N");
+    modelError("coefficient count " + std::to_string(k.size()) +
+               " differs from the model's N = " + std::to_string(model.componentCount()));
+  if (!k.allFinite()) modelError("the coefficients k have non-finite values");
   return model.mean + model.eigenwalkers * k;
 }
 
 Eigen::VectorXd projectOntoModel(const EigenwalkerModel& model,
                                  const Eigen::Ref<const Eigen::VectorXd>& w) {
+  checkModelShape(model, "model projection");
   if (w.size() != model.mean.size())
-    throw Error(ErrorKind::BadArgument, "", "", "walker vector must have 225 values");
+    modelError("walker vector must have 225 values, got " + std::to_string(w.size()));
+  if (!w.allFinite()) modelError("the walker vector has non-finite values");
   return model.eigenwalkers.transpose() * (w - model.mean);
 }
 

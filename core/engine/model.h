@@ -38,7 +38,9 @@ struct EigenwalkerModel {
 
 // Builds the model from W (225 × R, R ≥ 2). ids, subjects and omegas have R entries.
 // Eigenvector signs are fixed (largest-magnitude entry positive) so a rebuild is
-// reproducible. Throws Error(BadArgument) on inconsistent sizes or non-finite values.
+// reproducible. Throws Error(BadArgument) "model: …" on inconsistent sizes, fewer than 2
+// walkers, non-finite coefficients (naming the walker), a non-positive or non-finite ω, or
+// a variance threshold outside (0, 1] (when `components` is unset).
 EigenwalkerModel buildModel(const Eigen::Ref<const Eigen::MatrixXd>& w,
                             std::vector<std::string> walkerIds, std::vector<std::string> subjects,
                             const Eigen::Ref<const Eigen::VectorXd>& omegasRadS,
@@ -48,7 +50,8 @@ EigenwalkerModel buildModel(const Eigen::Ref<const Eigen::MatrixXd>& w,
 // a refit of the remaining columns of W, so N follows the options on the R' remaining
 // walkers (at most R' − 1). Refit rather than an SVD downdate: a thin SVD of 225 × R' costs
 // O(225·R'²), well under a millisecond for R' in the tens, and is exact (docs/ENGINE.md).
-// Throws Error(BadArgument) if the subject is unknown or fewer than 2 walkers remain.
+// Throws Error(BadArgument) "model: …" if the subject is unknown or fewer than 2 walkers
+// remain (and for what buildModel rejects).
 EigenwalkerModel buildModelWithoutSubject(const Eigen::Ref<const Eigen::MatrixXd>& w,
                                           const std::vector<std::string>& walkerIds,
                                           const std::vector<std::string>& subjects,
@@ -56,11 +59,16 @@ EigenwalkerModel buildModelWithoutSubject(const Eigen::Ref<const Eigen::MatrixXd
                                           const std::string& heldOutSubject,
                                           const ModelOptions& options = {});
 
-// Model synthesis w̄ + E k (225).
+// Throws Error(BadArgument) "STAGE: …" unless the model is usable: mean 225, E 225 × N with
+// N ≥ 1, N eigenvalues, all finite, eigenvalues ≥ 0 (O(225·N): once per model, not per use).
+void checkModel(const EigenwalkerModel& model, const std::string& stage);
+
+// Model synthesis w̄ + E k (225). k must have N finite values; the model's shapes are
+// checked (Error(BadArgument)).
 Eigen::VectorXd synthesizeWalker(const EigenwalkerModel& model,
                                  const Eigen::Ref<const Eigen::VectorXd>& k);
 
-// Coefficients of a 3D walker: Eᵀ (w − w̄) (N).
+// Coefficients of a 3D walker: Eᵀ (w − w̄) (N); w: 225 finite values.
 Eigen::VectorXd projectOntoModel(const EigenwalkerModel& model,
                                  const Eigen::Ref<const Eigen::VectorXd>& w);
 

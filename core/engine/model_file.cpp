@@ -1,6 +1,7 @@
 #include "core/engine/model_file.h"
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -72,15 +73,16 @@ std::vector<std::pair<std::string, const Eigen::MatrixXd*>> arraysOf(const Eigen
 
 // [SECTION] Reading helpers
 
-[[noreturn]] void malformed(const std::filesystem::path& file, const std::string& position,
+// `file` names the model in errors: the path given to loadModel, or parseModel's name.
+[[noreturn]] void malformed(const std::string& file, const std::string& position,
                             const std::string& problem) {
-  throwMalformed(file.string(), position, problem);
+  throwMalformed(file, position, problem);
 }
 
 std::string byteAt(size_t offset) { return "byte " + std::to_string(offset); }
 
 std::vector<std::string> stringList(const json& meta, const char* key,
-                                    const std::filesystem::path& file) {
+                                    const std::string& file) {
   if (!meta.contains(key) || !meta[key].is_array())
     malformed(file, "line 2", std::string("metadata has no list '") + key + "'");
   std::vector<std::string> out;
@@ -91,7 +93,7 @@ std::vector<std::string> stringList(const json& meta, const char* key,
   return out;
 }
 
-long long integer(const json& meta, const char* key, const std::filesystem::path& file) {
+long long integer(const json& meta, const char* key, const std::string& file) {
   if (!meta.contains(key) || !meta[key].is_number_integer())
     malformed(file, "line 2", std::string("metadata has no integer '") + key + "'");
   return meta[key].get<long long>();
@@ -99,7 +101,7 @@ long long integer(const json& meta, const char* key, const std::filesystem::path
 
 // The shapes each array must have, from the declared sizes.
 void checkShapes(const std::vector<ArraySpec>& arrays, long long dims, long long walkers,
-                 long long components, long long spectrum, const std::filesystem::path& file) {
+                 long long components, long long spectrum, const std::string& file) {
   const std::vector<std::tuple<std::string, long long, long long>> expected = {
       {"mean", dims, 1},           {"eigenwalkers", dims, components},
       {"eigenvalues", components, 1}, {"spectrum", spectrum, 1},
@@ -117,7 +119,7 @@ void checkShapes(const std::vector<ArraySpec>& arrays, long long dims, long long
   }
 }
 
-std::vector<ArraySpec> arraySpecs(const json& meta, const std::filesystem::path& file) {
+std::vector<ArraySpec> arraySpecs(const json& meta, const std::string& file) {
   if (!meta.contains("arrays") || !meta["arrays"].is_array())
     malformed(file, "line 2", "metadata has no 'arrays' list");
   std::vector<ArraySpec> specs;
@@ -152,7 +154,7 @@ std::string readAll(const std::filesystem::path& file) {
 }
 
 // Returns the end of the line starting at `begin` (the '\n'), or throws.
-size_t lineEnd(const std::string& bytes, size_t begin, int line, const std::filesystem::path& file) {
+size_t lineEnd(std::string_view bytes, size_t begin, int line, const std::string& file) {
   const size_t end = bytes.find('\n', begin);
   if (end == std::string::npos)
     malformed(file, "line " + std::to_string(line),
@@ -160,14 +162,57 @@ size_t lineEnd(const std::string& bytes, size_t begin, int line, const std::file
   return end;
 }
 
-int parseVersion(const std::string& first, const std::filesystem::path& file) {
+int parseVersion(std::string_view first, const std::string& file) {
   const std::string prefix = std::string(kMagic) + " ";
   if (first.rfind(prefix, 0) != 0)
     malformed(file, "byte 0", "not an eigenwalker model file (expected \"" + std::string(kMagic) + " <version>\")");
-  const std::string v = first.substr(prefix.size());
+  const std::string v(first.substr(prefix.size()));
   if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 6)
     malformed(file, "line 1", "bad version \"" + v + "\"");
   return std::stoi(v);
+}
+
+// [SECTION] Values
+
+// A checksum only proves the bytes are the ones written: the values must also be usable.
+// Every array finite; eigenvalues and spectrum ≥ 0 (1/λ is the MAP prior); ω > 0.
+void checkValues(const Eigen::MatrixXd& m, const std::string& name, size_t offset,
+                 const std::string& file) {
+  const bool nonNegative = name == "eigenvalues" || name == "spectrum";
+  const bool positive = name == "omegas_rad_s";
+  for (Eigen::Index i = 0; i < m.size(); ++i) {
+    const double v = m.data()[i];
+    if (std::isfinite(v) && !(nonNegative && v < 0.0) && !(positive && v <= 0.0)) continue;
+    malformed(file, byteAt(offset + static_cast<size_t>(i) * 8),
+              "model file: array '" + name + "' holds " + std::to_string(v) + " at index " +
+                  std::to_string(i) +
+                  (std::isfinite(v) ? (positive ? " (must be > 0)" : " (must be ≥ 0)")
+                                    : " (must be finite)"));
+  }
+}
+
+// What loadModel would refuse is not written: Error(BadArgument) naming the file.
+void checkSavable(const EigenwalkerModel& m, const std::string& file) {
+  const auto bad = [&](const std::string& problem) {
+    throw Error(ErrorKind::BadArgument, file, "", "model file: cannot save: " + problem);
+  };
+  try {
+    checkModel(m, "model file: cannot save");
+  } catch (const Error& e) {
+    throw Error(e.kind(), file, "", e.problem());  // the same problem, naming the file
+  }
+  const Eigen::Index r = m.walkerCount(), n = m.componentCount();
+  if (r < 2 || n >= r || static_cast<Eigen::Index>(m.subjects.size()) != r ||
+      m.omegasRadS.size() != r || m.coefficients.rows() != n || m.coefficients.cols() != r ||
+      m.spectrum.size() < n || m.spectrum.size() >= r)
+    bad("inconsistent sizes: " + std::to_string(r) + " walker ids, " +
+        std::to_string(m.subjects.size()) + " subjects, " + std::to_string(m.omegasRadS.size()) +
+        " frequencies, " + std::to_string(n) + " components, coefficients " +
+        std::to_string(m.coefficients.rows()) + " x " + std::to_string(m.coefficients.cols()) +
+        ", spectrum " + std::to_string(m.spectrum.size()));
+  if (!m.coefficients.allFinite() || !m.spectrum.allFinite() || (m.spectrum.array() < 0.0).any() ||
+      !m.omegasRadS.allFinite() || (m.omegasRadS.array() <= 0.0).any())
+    bad("non-finite coefficients or spectrum, a negative spectrum value or a non-positive ω");
 }
 
 }  // namespace
@@ -175,6 +220,7 @@ int parseVersion(const std::string& first, const std::filesystem::path& file) {
 // [SECTION] Save
 
 void saveModel(const EigenwalkerModel& model, const std::filesystem::path& file) {
+  checkSavable(model, file.string());
   std::vector<Eigen::MatrixXd> tmp;
   const auto arrays = arraysOf(model, tmp);
   json meta;
@@ -213,16 +259,19 @@ void saveModel(const EigenwalkerModel& model, const std::filesystem::path& file)
 // [SECTION] Load
 
 EigenwalkerModel loadModel(const std::filesystem::path& file) {
-  const std::string bytes = readAll(file);
+  return parseModel(readAll(file), file.string());
+}
+
+EigenwalkerModel parseModel(std::string_view bytes, const std::string& file) {
   const size_t end1 = lineEnd(bytes, 0, 1, file);
   const int version = parseVersion(bytes.substr(0, end1), file);
   if (version != kModelFileVersion)
-    throw Error(ErrorKind::Unsupported, file.string(), "line 1",
+    throw Error(ErrorKind::Unsupported, file, "line 1",
                 "model file version " + std::to_string(version) + " (this build reads version " +
                     std::to_string(kModelFileVersion) + ")");
   const size_t end2 = lineEnd(bytes, end1 + 1, 2, file);
   const size_t end3 = lineEnd(bytes, end2 + 1, 3, file);
-  const std::string sumLine = bytes.substr(end2 + 1, end3 - end2 - 1);
+  const std::string_view sumLine = bytes.substr(end2 + 1, end3 - end2 - 1);
   if (sumLine.rfind("fnv1a64 ", 0) != 0 || sumLine.size() != 8 + 16)
     malformed(file, "line 3", "expected \"fnv1a64 <16 hex digits>\"");
   if (sumLine.substr(8) != hex64(fnv1a64(bytes.data() + end1 + 1, end2 - end1 - 1)))
@@ -275,6 +324,7 @@ EigenwalkerModel loadModel(const std::filesystem::path& file) {
                 "checksum mismatch in array '" + s.name + "': the file is damaged");
     Eigen::MatrixXd m(s.rows, s.cols);
     decode(bytes.data() + offset, s.count(), m.data());
+    checkValues(m, s.name, offset, file);
     values.push_back(std::move(m));
     offset += size;
   }

@@ -12,8 +12,18 @@ namespace {
 void requireRows(Eigen::Index rows, Eigen::Index expected, const char* what) {
   if (rows != expected) {
     throw Error(ErrorKind::BadArgument, "", "",
-                std::string(what) + ": expected " + std::to_string(expected) + " rows, got " +
-                    std::to_string(rows));
+                std::string("projection: ") + what + ": expected " + std::to_string(expected) +
+                    " rows, got " + std::to_string(rows));
+  }
+}
+
+// A non-finite α would turn every output into NaN. (NaN coordinates, by contrast, are
+// missing samples and pass through as NaN on purpose.)
+void requireAngle(double alphaDeg, const char* what) {
+  if (!std::isfinite(alphaDeg)) {
+    throw Error(ErrorKind::BadArgument, "", "",
+                std::string("projection: ") + what + ": the view angle must be finite, got " +
+                    std::to_string(alphaDeg) + "°");
   }
 }
 
@@ -51,6 +61,7 @@ double wrapDeg(double deg) {
 }
 
 Eigen::MatrixXd projectionMatrix(double alphaDeg) {
+  requireAngle(alphaDeg, "projectionMatrix");
   const double a = degToRad(alphaDeg), c = std::cos(a), s = std::sin(a);
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(2 * kPointsPerWalker, 3 * kPointsPerWalker);
   for (int i = 0; i < kPointsPerWalker; ++i) {
@@ -63,11 +74,13 @@ Eigen::MatrixXd projectionMatrix(double alphaDeg) {
 
 Eigen::MatrixXd projectToView(const Eigen::Ref<const Eigen::MatrixXd>& w, double alphaDeg) {
   requireRows(w.rows(), 3 * kPointsPerWalker, "projectToView");
+  requireAngle(alphaDeg, "projectToView");
   return projectTriples(w, alphaDeg);
 }
 
 Eigen::MatrixXd depthAtView(const Eigen::Ref<const Eigen::MatrixXd>& w, double alphaDeg) {
   requireRows(w.rows(), 3 * kPointsPerWalker, "depthAtView");
+  requireAngle(alphaDeg, "depthAtView");
   return depthOfTriples(w, alphaDeg);
 }
 
@@ -76,7 +89,9 @@ Eigen::MatrixXd composeFromView(const Eigen::Ref<const Eigen::MatrixXd>& uv,
   requireRows(uv.rows(), 2 * kPointsPerWalker, "composeFromView (image)");
   requireRows(depth.rows(), kPointsPerWalker, "composeFromView (depth)");
   if (uv.cols() != depth.cols())
-    throw Error(ErrorKind::BadArgument, "", "", "composeFromView: column counts differ");
+    throw Error(ErrorKind::BadArgument, "", "",
+                "projection: composeFromView: column counts differ");
+  requireAngle(alphaDeg, "composeFromView");
   // [x; y] = Rᵀ [u; d] for the rotation R = [c s; −s c] that maps (x, y) to (u, d).
   const double a = degToRad(alphaDeg), c = std::cos(a), s = std::sin(a);
   Eigen::MatrixXd w(3 * kPointsPerWalker, uv.cols());
@@ -94,14 +109,20 @@ Eigen::MatrixXd composeFromView(const Eigen::Ref<const Eigen::MatrixXd>& uv,
 Eigen::MatrixXd projectFramesToView(const Eigen::Ref<const Eigen::MatrixXd>& frames,
                                     double alphaDeg) {
   if (frames.cols() != kDims3)
-    throw Error(ErrorKind::BadArgument, "", "", "projectFramesToView needs T × 45 frames");
+    throw Error(ErrorKind::BadArgument, "", "",
+                "projection: projectFramesToView needs T × 45 frames, got " +
+                    std::to_string(frames.cols()) + " columns");
+  requireAngle(alphaDeg, "projectFramesToView");
   return projectTriples(frames.transpose(), alphaDeg).transpose();
 }
 
 Eigen::MatrixXd depthFramesAtView(const Eigen::Ref<const Eigen::MatrixXd>& frames,
                                   double alphaDeg) {
   if (frames.cols() != kDims3)
-    throw Error(ErrorKind::BadArgument, "", "", "depthFramesAtView needs T × 45 frames");
+    throw Error(ErrorKind::BadArgument, "", "",
+                "projection: depthFramesAtView needs T × 45 frames, got " +
+                    std::to_string(frames.cols()) + " columns");
+  requireAngle(alphaDeg, "depthFramesAtView");
   return depthOfTriples(frames.transpose(), alphaDeg).transpose();
 }
 

@@ -7,6 +7,8 @@
 // (block-major, joint, then u,v); depth vectors have 75 (block-major, then joint).
 // The projection acts on every (x,y,z) triple alike, so it is applied as a 2 × 3 rotation
 // per triple; the dense 150 × 225 matrix C(α) is built only for tests and documentation.
+// Every function throws Error(BadArgument) "projection: …" for a wrong row or column count
+// or a non-finite α; NaN coordinates (missing samples) pass through as NaN on purpose.
 
 #include <Eigen/Core>
 
@@ -37,7 +39,7 @@ Eigen::MatrixXd projectFramesToView(const Eigen::Ref<const Eigen::MatrixXd>& fra
 Eigen::MatrixXd depthFramesAtView(const Eigen::Ref<const Eigen::MatrixXd>& frames,
                                   double alphaDeg);
 
-// Angle wrapped to (−180, 180].
+// Angle wrapped to (−180, 180]; NaN for a non-finite angle.
 double wrapDeg(double deg);
 
 }  // namespace ew

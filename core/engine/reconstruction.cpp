@@ -23,10 +23,28 @@ struct ObservedTerms {
   double uu = 0.0, uMx = 0.0, uMy = 0.0, vResidualSq = 0.0;  // uᵀu, uᵀw̄x, uᵀw̄y, ‖v − w̄z‖²
 };
 
+[[noreturn]] void reconstructionError(ErrorKind kind, const std::string& problem) {
+  throw Error(kind, "", "", "reconstruction: " + problem);
+}
+
+// O(1): a ModelGram as precomputeModelGram makes it (a default-constructed one is empty).
+void checkGram(const ModelGram& g) {
+  const auto n = static_cast<Eigen::Index>(g.components);
+  const auto m = static_cast<Eigen::Index>(g.observedPoints.size());
+  if (n < 1 || m < 1 || g.mean.size() != kFourierDims3 || g.eigenwalkers.rows() != kFourierDims3 ||
+      g.eigenwalkers.cols() != n || g.ex.rows() != m || g.ex.cols() != n || g.gxx.rows() != n ||
+      g.inverseLambda.size() != n)
+    reconstructionError(
+        ErrorKind::BadArgument,
+        "the model Gram is empty or inconsistent (build it with precomputeModelGram)");
+}
+
 ObservedTerms observedTerms(const ModelGram& g, const Eigen::Ref<const Eigen::VectorXd>& obs) {
+  checkGram(g);
   if (obs.size() != kFourierDims2)
-    throw Error(ErrorKind::BadArgument, "", "",
-                "observed 2D Fourier vector must have 150 values, got " + std::to_string(obs.size()));
+    reconstructionError(
+        ErrorKind::BadArgument,
+        "observed 2D Fourier vector must have 150 values, got " + std::to_string(obs.size()));
   const auto m = static_cast<Eigen::Index>(g.observedPoints.size());
   Eigen::VectorXd u(m), v(m);
   for (Eigen::Index i = 0; i < m; ++i) {
@@ -35,8 +53,9 @@ ObservedTerms observedTerms(const ModelGram& g, const Eigen::Ref<const Eigen::Ve
     v(i) = obs(2 * p + 1);
   }
   if (!u.allFinite() || !v.allFinite())
-    throw Error(ErrorKind::BadArgument, "", "",
-                "observed 2D Fourier vector has non-finite values at joints not marked missing");
+    reconstructionError(
+        ErrorKind::BadArgument,
+        "observed 2D Fourier vector has non-finite values at joints not marked missing");
   ObservedTerms t;
   const Eigen::VectorXd vr = v - g.mz;
   t.exU.noalias() = g.ex.transpose() * u;
@@ -46,6 +65,10 @@ ObservedTerms observedTerms(const ModelGram& g, const Eigen::Ref<const Eigen::Ve
   t.uMx = u.dot(g.mx);
   t.uMy = u.dot(g.my);
   t.vResidualSq = vr.squaredNorm();
+  if (!std::isfinite(t.uu) || !std::isfinite(t.vResidualSq) || !t.exU.allFinite() ||
+      !t.eyU.allFinite() || !t.ezV.allFinite())
+    reconstructionError(ErrorKind::BadData,
+                        "observed 2D coordinates too large: their sums of squares overflow");
   return t;
 }
 
@@ -58,8 +81,9 @@ class ViewEvaluator {
       : g_(g), t_(t), map_(e.estimator == Estimator::Map), sigma2_(e.sigma2Mm2),
         gram_(g.components, g.components), b_(g.components), bFixed_(g.components),
         k_(g.components), llt_(g.components), ldlt_(g.components) {
-    if (map_ && !(e.sigma2Mm2 >= 0.0))
-      throw Error(ErrorKind::BadArgument, "", "", "MAP needs σ² ≥ 0 mm²");
+    if (map_ && !(e.sigma2Mm2 >= 0.0 && std::isfinite(e.sigma2Mm2)))
+      reconstructionError(ErrorKind::BadArgument,
+                          "MAP needs a finite σ² ≥ 0 mm², got " + std::to_string(e.sigma2Mm2));
   }
 
   double operator()(double alphaDeg) {
@@ -120,6 +144,12 @@ class ViewEvaluator {
 
 Reconstruction makeReconstruction(const ModelGram& g, const Eigen::Ref<const Eigen::VectorXd>& obs,
                                   double alphaDeg, const Eigen::VectorXd& k, double objective) {
+  // Finite inputs can still overflow the solve (a nearly singular G with huge data):
+  // report it rather than hand back a NaN walker.
+  if (!k.allFinite() || !std::isfinite(objective))
+    reconstructionError(
+        ErrorKind::BadData,
+        "the solve gave non-finite coefficients or objective at " + std::to_string(alphaDeg) + "°");
   Reconstruction rec;
   rec.alphaDeg = wrapDeg(alphaDeg);
   rec.k = k;
@@ -156,9 +186,7 @@ std::vector<int> circularLocalMinima(const Eigen::VectorXd& f) {
 // [SECTION] Precomputation
 
 ModelGram precomputeModelGram(const EigenwalkerModel& model, const std::vector<int>& missingJoints) {
-  if (model.mean.size() != kFourierDims3 || model.eigenwalkers.rows() != kFourierDims3 ||
-      model.eigenvalues.size() != model.eigenwalkers.cols() || model.eigenwalkers.cols() < 1)
-    throw Error(ErrorKind::BadArgument, "", "", "model is empty or inconsistent");
+  checkModel(model, "reconstruction");
   ModelGram g;
   g.components = model.componentCount();
   g.missingJoints = missingJoints;
@@ -167,10 +195,11 @@ ModelGram precomputeModelGram(const EigenwalkerModel& model, const std::vector<i
                         g.missingJoints.end());
   for (const int j : g.missingJoints) {
     if (j < 0 || j >= kJointCount)
-      throw Error(ErrorKind::BadArgument, "", "", "missing joint index out of range: " + std::to_string(j));
+      reconstructionError(ErrorKind::BadArgument,
+                          "missing joint index out of range: " + std::to_string(j) + " (0…14)");
   }
   if (static_cast<int>(g.missingJoints.size()) == kJointCount)
-    throw Error(ErrorKind::BadArgument, "", "", "every joint is marked missing");
+    reconstructionError(ErrorKind::BadArgument, "every joint is marked missing");
   for (int b = 0; b < kFourierBlocks; ++b) {
     for (int j = 0; j < kJointCount; ++j) {
       if (!std::binary_search(g.missingJoints.begin(), g.missingJoints.end(), j))
@@ -214,6 +243,9 @@ ModelGram precomputeModelGram(const EigenwalkerModel& model, const std::vector<i
 Reconstruction reconstructKnownView(const ModelGram& gram,
                                     const Eigen::Ref<const Eigen::VectorXd>& observed,
                                     double alphaDeg, const EstimatorOptions& estimator) {
+  if (!std::isfinite(alphaDeg))
+    reconstructionError(ErrorKind::BadArgument,
+                        "the view angle must be finite, got " + std::to_string(alphaDeg) + "°");
   const ObservedTerms terms = observedTerms(gram, observed);
   ViewEvaluator evaluate(gram, terms, estimator);
   const double j = evaluate(alphaDeg);
@@ -249,6 +281,8 @@ Eigen::VectorXd viewObjective(const ModelGram& gram,
                               const Eigen::Ref<const Eigen::VectorXd>& observed,
                               const Eigen::Ref<const Eigen::VectorXd>& alphasDeg,
                               const EstimatorOptions& estimator) {
+  if (!alphasDeg.allFinite())
+    reconstructionError(ErrorKind::BadArgument, "view objective: the angles must be finite");
   const ObservedTerms terms = observedTerms(gram, observed);
   ViewEvaluator evaluate(gram, terms, estimator);
   Eigen::VectorXd j(alphasDeg.size());
@@ -259,8 +293,18 @@ Eigen::VectorXd viewObjective(const ModelGram& gram,
 ViewSearch searchViewAngle(const ModelGram& gram,
                            const Eigen::Ref<const Eigen::VectorXd>& observed,
                            const EstimatorOptions& estimator, const ViewSearchOptions& options) {
-  if (!(options.coarseStepDeg > 0.0 && options.coarseStepDeg <= 30.0))
-    throw Error(ErrorKind::BadArgument, "", "", "coarse step must be in (0°, 30°]");
+  if (!(options.coarseStepDeg >= 1e-3 && options.coarseStepDeg <= 30.0))
+    reconstructionError(ErrorKind::BadArgument,
+                        "view search: the coarse step must be in [0.001°, 30°], got " +
+                            std::to_string(options.coarseStepDeg) + "°");
+  if (!(options.toleranceDeg > 0.0 && std::isfinite(options.toleranceDeg)))
+    reconstructionError(ErrorKind::BadArgument,
+                        "view search: the tolerance must be positive and finite, got " +
+                            std::to_string(options.toleranceDeg) + "°");
+  if (!(options.relationToleranceDeg >= 0.0 && options.relationToleranceDeg <= 180.0))
+    reconstructionError(ErrorKind::BadArgument,
+                        "view search: the relation tolerance must be in [0°, 180°], got " +
+                            std::to_string(options.relationToleranceDeg) + "°");
   const ObservedTerms terms = observedTerms(gram, observed);
   ViewEvaluator evaluate(gram, terms, estimator);
   ViewSearch out;

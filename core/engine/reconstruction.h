@@ -45,7 +45,8 @@ struct ModelGram {
 };
 
 // missingJoints: joints whose u, v are not observed (their rows of Ê are dropped).
-// Throws Error(BadArgument) for a joint index outside 0…14 or all joints missing.
+// Throws Error(BadArgument) "reconstruction: …" for a joint index outside 0…14, all joints
+// missing, or a model that checkModel rejects (empty, inconsistent, non-finite, λ < 0).
 ModelGram precomputeModelGram(const EigenwalkerModel& model,
                               const std::vector<int>& missingJoints = {});
 
@@ -60,6 +61,10 @@ struct Reconstruction {
 };
 
 // Known view. `observed` is ŵ (150); entries of missing joints are ignored (may be NaN).
+// Every reconstruction throws Error "reconstruction: …": BadArgument for a gram not made by
+// precomputeModelGram, ŵ of the wrong size or non-finite at an observed joint, a non-finite
+// α, or MAP with σ² negative or non-finite; BadData when ŵ's magnitude overflows the sums
+// or the solve gives non-finite k or J (never a NaN result).
 Reconstruction reconstructKnownView(const ModelGram& gram,
                                     const Eigen::Ref<const Eigen::VectorXd>& observed,
                                     double alphaDeg, const EstimatorOptions& estimator = {});
@@ -104,7 +109,8 @@ struct ViewSearch {
 };
 
 // Unknown view: minimises J(α) over (−180°, 180°] (coarse scan, Brent refinement of every
-// local minimum of the circular grid), then reconstructs at the best α̂.
+// local minimum of the circular grid), then reconstructs at the best α̂. Options: coarse
+// step in [0.001°, 30°], tolerance positive and finite, relation tolerance in [0°, 180°].
 ViewSearch searchViewAngle(const ModelGram& gram,
                            const Eigen::Ref<const Eigen::VectorXd>& observed,
                            const EstimatorOptions& estimator = {},

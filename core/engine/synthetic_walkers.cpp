@@ -83,7 +83,12 @@ Eigen::VectorXd syntheticBaseWalker() {
 }
 
 Eigen::MatrixXd syntheticWalkerSet(int count, std::uint64_t seed) {
-  if (count < 1) throw Error(ErrorKind::BadArgument, "", "", "walker count must be positive");
+  // 225 doubles a walker: 100 000 walkers is 180 MB, far beyond any test or demo.
+  constexpr int kMaxWalkers = 100'000;
+  if (count < 1 || count > kMaxWalkers)
+    throw Error(ErrorKind::BadArgument, "", "",
+                "synthetic walkers: the count must be in [1, " + std::to_string(kMaxWalkers) +
+                    "], got " + std::to_string(count));
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> unit(0.0, 1.0);
   Eigen::MatrixXd set(kFourierDims3, count);

@@ -14,7 +14,8 @@ Eigen::VectorXd syntheticBaseWalker();
 
 // `count` walkers (225 × count): body size, segment swing amplitudes and every
 // coefficient varied at random (seeded, reproducible on one standard library). Each
-// stays phase-aligned, so the set spans count − 1 independent directions.
+// stays phase-aligned, so the set spans count − 1 independent directions. count in
+// [1, 100 000], else Error(BadArgument).
 Eigen::MatrixXd syntheticWalkerSet(int count, std::uint64_t seed);
 
 }  // namespace ew

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "core/common/errors.h"
+#include "core/common/skeleton.h"
 
 namespace ew {
 namespace {
@@ -32,7 +33,14 @@ std::vector<Group> groupTrials(const Dataset& dataset) {
 FourierFit fitTrial(const DatasetTrial& t) {
   FourierFitOptions options;
   options.file = t.info.file;
-  if (t.trial.cycles.strideHz > 0.0)
+  // A walker averages 3D fits (225 values each); a 2D trial here would break the mean.
+  if (t.trial.joints.positionsMm.cols() != kDims3)
+    throw Error(ErrorKind::BadData, t.info.file, "",
+                "walkers: the trial's joints have " +
+                    std::to_string(t.trial.joints.positionsMm.cols()) +
+                    " columns, 45 (3D) expected");
+  // A hint only when gait events gave a usable frequency (fitFourier rejects others).
+  if (std::isfinite(t.trial.cycles.strideHz) && t.trial.cycles.strideHz > 0.0)
     options.omegaHintRadS = 2.0 * std::numbers::pi * t.trial.cycles.strideHz;
   return fitFourier(t.trial.joints.positionsMm, t.trial.joints.rateHz, options);
 }
@@ -102,7 +110,9 @@ Eigen::MatrixXd walkerMatrix(const std::vector<Walker>& walkers) {
   Eigen::MatrixXd w(kFourierDims3, static_cast<Eigen::Index>(walkers.size()));
   for (size_t r = 0; r < walkers.size(); ++r) {
     if (walkers[r].fit.w.size() != kFourierDims3)
-      throw Error(ErrorKind::BadArgument, "", "", "walker " + walkers[r].id + " is not a 3D fit");
+      throw Error(ErrorKind::BadArgument, "", "",
+                  "model: walker '" + walkers[r].id + "' is not a 3D fit (" +
+                      std::to_string(walkers[r].fit.w.size()) + " values, 225 expected)");
     w.col(static_cast<Eigen::Index>(r)) = walkers[r].fit.w;
   }
   return w;

@@ -26,13 +26,17 @@ struct Walker {
 // Groups trials by (subject, condition) in first-seen order and fits each trial with the
 // stride frequency of its gait cycles as the ω hint (SPEC §3). A trial whose fit fails is
 // left out with a warning "file: reason" (as is a walker left with no trial); fit warnings
-// are kept on the walker, prefixed with the file.
+// are kept on the walker, prefixed with the file. A trial whose joints are not 3D (45
+// columns) is left out the same way; a stride frequency that is not positive and finite is
+// no hint (the scan alone decides ω).
 std::vector<Walker> makeWalkers(const Dataset& dataset, std::vector<std::string>* warnings = nullptr);
 
 // W = [w_1 … w_R] (225 × R).
 Eigen::MatrixXd walkerMatrix(const std::vector<Walker>& walkers);
 
 // The model of these walkers, with one provenance line per walker (id, source, files).
+// Fewer than 2 walkers, or a walker without a finite 3D fit, is Error(BadArgument)
+// "model: …" naming the walker.
 EigenwalkerModel buildModel(const std::vector<Walker>& walkers, const ModelOptions& options = {});
 
 // Leave-one-subject-out model (SPEC §4, §8): every walker of `subject` left out.

@@ -31,6 +31,32 @@ std::vector<Method> methods(const EvaluationOptions& o, double sigma2Mm2) {
   return out;
 }
 
+[[noreturn]] void optionError(const std::string& stage, const std::string& problem) {
+  throw Error(ErrorKind::BadArgument, "", "", stage + ": " + problem);
+}
+
+// Every experiment's common preconditions: finite angles, and folds that index these
+// walkers (folds built from another walker list would read past its end).
+void checkInputs(const std::string& stage, const std::vector<ExperimentWalker>& walkers,
+                 const std::vector<Fold>& folds, const EvaluationOptions& o) {
+  for (double a : o.anglesDeg) {
+    if (!std::isfinite(a))
+      optionError(stage, "view angles must be finite, got " + std::to_string(a));
+  }
+  for (const Fold& f : folds) {
+    for (int r : f.testWalkers) {
+      if (r < 0 || static_cast<size_t>(r) >= walkers.size())
+        optionError(stage, "fold '" + f.subject + "' names walker " + std::to_string(r) + " of " +
+                               std::to_string(walkers.size()) + ": folds and walkers do not match");
+    }
+  }
+}
+
+void checkSigma2(const std::string& stage, double sigma2Mm2) {
+  if (!(sigma2Mm2 >= 0.0 && std::isfinite(sigma2Mm2)))
+    optionError(stage, "σ² must be finite and ≥ 0 mm², got " + std::to_string(sigma2Mm2));
+}
+
 std::vector<double> anglesOf(const EvaluationOptions& o) {
   if (!o.anglesDeg.empty()) return o.anglesDeg;
   std::vector<double> a;
@@ -192,6 +218,15 @@ constexpr int kSweepMpjpeSamples = 24;
 std::vector<SigmaSweepRow> sigmaSweep(const std::vector<ExperimentWalker>& walkers,
                                       const std::vector<Fold>& folds,
                                       const EvaluationOptions& options) {
+  checkInputs("σ² sweep", walkers, folds, options);
+  if (folds.empty()) optionError("σ² sweep", "no folds to evaluate");
+  if (options.sigma2GridMm2.empty()) optionError("σ² sweep", "the σ² grid is empty");
+  for (double s2 : options.sigma2GridMm2) {
+    // Positive: the sweep is read on a log scale (fig. 3).
+    if (!(s2 > 0.0 && std::isfinite(s2)))
+      optionError("σ² sweep",
+                  "grid values must be positive and finite, got " + std::to_string(s2) + " mm²");
+  }
   const auto angles = anglesOf(options);
   const auto& grid = options.sigma2GridMm2;
   const size_t cols = grid.size() + 1;  // last column: LSQ
@@ -242,6 +277,8 @@ std::vector<SigmaSweepRow> sigmaSweep(const std::vector<ExperimentWalker>& walke
 std::vector<ViewErrorRow> knownViewErrors(const std::vector<ExperimentWalker>& walkers,
                                           const std::vector<Fold>& folds,
                                           const EvaluationOptions& options, double sigma2Mm2) {
+  checkInputs("known view", walkers, folds, options);
+  checkSigma2("known view", sigma2Mm2);
   const auto angles = anglesOf(options);
   const auto ms = methods(options, sigma2Mm2);
   std::vector<std::vector<ViewErrorRow>> parts(folds.size());
@@ -268,6 +305,8 @@ std::vector<ViewErrorRow> knownViewErrors(const std::vector<ExperimentWalker>& w
 std::vector<UnknownViewRow> unknownViewErrors(const std::vector<ExperimentWalker>& walkers,
                                               const std::vector<Fold>& folds,
                                               const EvaluationOptions& options, double sigma2Mm2) {
+  checkInputs("unknown view", walkers, folds, options);
+  checkSigma2("unknown view", sigma2Mm2);
   const auto angles = anglesOf(options);
   const auto ms = methods(options, sigma2Mm2);
   std::vector<std::vector<UnknownViewRow>> parts(folds.size());
@@ -299,6 +338,12 @@ std::vector<ViewErrorRow> noiseErrors(const std::vector<ExperimentWalker>& walke
                                       const std::vector<Fold>& folds,
                                       const EvaluationOptions& options, double sigma2Mm2,
                                       std::vector<std::string>& warnings) {
+  checkInputs("noise", walkers, folds, options);
+  checkSigma2("noise", sigma2Mm2);
+  for (double level : options.noiseLevelsMm) {
+    if (!(level >= 0.0 && std::isfinite(level)))
+      optionError("noise", "noise levels must be finite and ≥ 0 mm, got " + std::to_string(level));
+  }
   const auto angles = extensionAngles(options);
   const auto ms = methods(options, sigma2Mm2);
   std::vector<std::vector<ViewErrorRow>> parts(folds.size());
@@ -316,16 +361,25 @@ std::vector<ViewErrorRow> noiseErrors(const std::vector<ExperimentWalker>& walke
       fitOptions.omegaFixedRadS = w.fit.omegaRadS;
       fitOptions.file = w.id;
       // The reference: the same frames' 3D fit at the same ω (φ from the same ankle signal).
-      const FourierFit truth = fitFourier(w.framesMm, w.rateHz, fitOptions);
+      // Frames that cannot be fitted there (too short for the walker's mean ω, a bad rate)
+      // skip the walker with a note instead of ending the whole evaluation.
+      FourierFit truth;
+      try {
+        truth = fitFourier(w.framesMm, w.rateHz, fitOptions);
+      } catch (const Error& e) {
+        notes[static_cast<size_t>(f)].push_back(
+            "noise: walker " + w.id + ": its frames cannot be fitted (" + e.what() + "); skipped");
+        continue;
+      }
       for (size_t ai = 0; ai < angles.size(); ++ai) {
         const double a = angles[ai];
         const Eigen::MatrixXd clean = projectFramesToView(w.framesMm, a);
         for (size_t li = 0; li < options.noiseLevelsMm.size(); ++li) {
           const double level = options.noiseLevelsMm[li];
-          std::mt19937_64 rng(cellSeed(options.noiseSeed, static_cast<size_t>(r), ai, li));
-          std::normal_distribution<double> noise(0.0, level);
           Eigen::MatrixXd noisy = clean;
-          if (level > 0) {
+          if (level > 0) {  // a normal distribution needs SD > 0: none is made for level 0
+            std::mt19937_64 rng(cellSeed(options.noiseSeed, static_cast<size_t>(r), ai, li));
+            std::normal_distribution<double> noise(0.0, level);
             for (Eigen::Index i = 0; i < noisy.size(); ++i) noisy.data()[i] += noise(rng);
           }
           FourierFit fit2d;
@@ -354,6 +408,20 @@ std::vector<ViewErrorRow> noiseErrors(const std::vector<ExperimentWalker>& walke
 std::vector<ViewErrorRow> missingJointErrors(const std::vector<ExperimentWalker>& walkers,
                                              const std::vector<Fold>& folds,
                                              const EvaluationOptions& options, double sigma2Mm2) {
+  checkInputs("missing joints", walkers, folds, options);
+  checkSigma2("missing joints", sigma2Mm2);
+  // Checked up front, naming the set: hideJoints writes at these indices.
+  for (const JointSet& set : options.missingJointSets) {
+    std::vector<int> distinct;
+    for (int j : set.joints) {
+      if (j < 0 || j >= kJointCount)
+        optionError("missing joints",
+                    "set '" + set.name + "' has joint index " + std::to_string(j) + " (0…14)");
+      if (std::find(distinct.begin(), distinct.end(), j) == distinct.end()) distinct.push_back(j);
+    }
+    if (static_cast<int>(distinct.size()) == kJointCount)
+      optionError("missing joints", "set '" + set.name + "' hides every joint");
+  }
   const auto angles = extensionAngles(options);
   const auto ms = methods(options, sigma2Mm2);
   std::vector<std::vector<ViewErrorRow>> parts(folds.size());
@@ -426,6 +494,13 @@ EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
                                 const std::set<Experiment>& experiments,
                                 const EvaluationOptions& options) {
   if (!options.lsq && !options.map) throw Error(ErrorKind::BadArgument, "--method", "", "no method chosen");
+  // Too few walkers is the data's fault (exit 1 in the CLI), not a caller mistake.
+  if (walkers.size() < 2)
+    throwBadData(
+        "", "",
+        "evaluation: a model needs at least 2 walkers, got " + std::to_string(walkers.size()));
+  if (options.sigma2Mm2) checkSigma2("evaluation", *options.sigma2Mm2);
+  checkInputs("evaluation", walkers, {}, options);
   EvaluationResults res;
   res.walkers = static_cast<int>(walkers.size());
   res.subjects = static_cast<int>(walkerSubjects(walkers).size());

@@ -106,6 +106,12 @@ struct EvaluationResults {
 };
 
 // [SECTION] Experiments (each over the same folds)
+//
+// Preconditions, Error(BadArgument) "STAGE: …" (stage: "σ² sweep", "known view", …):
+// finite view angles, σ² finite and ≥ 0, folds whose test walkers index `walkers` (folds
+// of another walker list are refused, not read past the end); the sweep needs folds and a
+// non-empty grid of positive, finite σ²; noise levels finite and ≥ 0; missing-joint sets
+// with indices 0…14 that do not hide every joint.
 
 std::vector<HarmonicsRow> harmonicsTable(const std::vector<ExperimentWalker>& walkers);
 // One row per eigenvalue of the whole spectrum (R − 1 rows).
@@ -124,8 +130,9 @@ std::vector<UnknownViewRow> unknownViewErrors(const std::vector<ExperimentWalker
 // Noise and missing joints use the multiples of 10° of a grid of more than 19 angles.
 // Frames of the held-out walker projected at α, Gaussian noise (SD noise_mm per image
 // coordinate and frame) added, the 2D Fourier fit at the walker's ω, reconstructed and
-// scored against the 3D fit of the same frames at the same ω. Walkers without frames are
-// skipped (a warning). `warnings` receives per-cell fit failures.
+// scored against the 3D fit of the same frames at the same ω. Walkers without frames, or
+// whose frames cannot be fitted at their ω, are skipped (a warning). `warnings` receives
+// per-cell fit failures.
 std::vector<ViewErrorRow> noiseErrors(const std::vector<ExperimentWalker>& walkers,
                                       const std::vector<Fold>& folds,
                                       const EvaluationOptions& options, double sigma2Mm2,
@@ -134,7 +141,8 @@ std::vector<ViewErrorRow> missingJointErrors(const std::vector<ExperimentWalker>
                                              const std::vector<Fold>& folds,
                                              const EvaluationOptions& options, double sigma2Mm2);
 
-// Runs the chosen experiments (folds built once) and times each.
+// Runs the chosen experiments (folds built once) and times each. Fewer than 2 walkers →
+// Error(BadData) "evaluation: …"; no method, a non-finite angle or σ² → Error(BadArgument).
 EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
                                 const std::set<Experiment>& experiments,
                                 const EvaluationOptions& options);

@@ -39,7 +39,15 @@ std::vector<std::string> walkerSubjects(const std::vector<ExperimentWalker>& wal
 
 Eigen::MatrixXd experimentWalkerMatrix(const std::vector<ExperimentWalker>& walkers) {
   Eigen::MatrixXd w(kFourierDims3, static_cast<Eigen::Index>(walkers.size()));
-  for (size_t r = 0; r < walkers.size(); ++r) w.col(static_cast<Eigen::Index>(r)) = walkers[r].fit.w;
+  for (size_t r = 0; r < walkers.size(); ++r) {
+    // Checked here: a column assignment of the wrong size is not caught in a release build.
+    if (walkers[r].fit.w.size() != kFourierDims3)
+      throw Error(ErrorKind::BadArgument, "", "",
+                  "leave-one-subject-out: walker '" + walkers[r].id + "' has " +
+                      std::to_string(walkers[r].fit.w.size()) +
+                      " Fourier values, a 3D fit has 225");
+    w.col(static_cast<Eigen::Index>(r)) = walkers[r].fit.w;
+  }
   return w;
 }
 

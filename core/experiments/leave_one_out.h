@@ -34,7 +34,7 @@ std::vector<ExperimentWalker> experimentWalkers(const std::vector<Walker>& walke
 // Distinct subjects in first-seen order.
 std::vector<std::string> walkerSubjects(const std::vector<ExperimentWalker>& walkers);
 
-// W = [w_1 … w_R] (225 × R).
+// W = [w_1 … w_R] (225 × R). Throws Error(BadArgument) naming a walker whose fit is not 3D.
 Eigen::MatrixXd experimentWalkerMatrix(const std::vector<ExperimentWalker>& walkers);
 
 // The model of all walkers (experiment 1, the `build` command's model).

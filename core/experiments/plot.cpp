@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <sstream>
 
@@ -153,7 +154,13 @@ LinePlot noiseFigure(const EvaluationResults& r) {
   LinePlot p{"2D noise before the Fourier fit: depth error vs noise", "noise SD per image coordinate (mm)",
              "mean E_a (mm^2)", {}, false, {}, {}, 0.0, {}, {}, {}};
   std::map<std::string, std::map<double, MeanSd>> cells;
-  for (const auto& row : r.noise) cells[row.method][std::stod(row.condition)].add(row.absErrorMm2);
+  for (const auto& row : r.noise) {
+    // The condition is the noise level as text; one that is not a number has no x.
+    char* end = nullptr;
+    const double level = std::strtod(row.condition.c_str(), &end);
+    if (row.condition.empty() || end != row.condition.c_str() + row.condition.size()) continue;
+    cells[row.method][level].add(row.absErrorMm2);
+  }
   for (const auto& [m, c] : cells) {
     PlotSeries s = seriesOf(m, c, false);
     s.markers = true;
@@ -301,52 +308,118 @@ struct Axes {
     return area.x + u * area.width;
   }
   double ty(double y) const { return area.y + area.height - (y - y0) / (y1 - y0) * area.height; }
-  cv::Point at(double x, double y) const { return {static_cast<int>(std::lround(tx(x))), static_cast<int>(std::lround(ty(y)))}; }
+  // Pixels clamped far outside any image (OpenCV clips), so no conversion overflows.
+  cv::Point at(double x, double y) const {
+    const auto px = [](double v) {
+      return static_cast<int>(std::lround(std::clamp(v, -1e5, 1e5)));
+    };
+    return {px(tx(x)), px(ty(y))};
+  }
+  // A point that can be placed: finite, and positive x on a log axis. Others (NaN E_r of a
+  // walker without depth motion, say) are gaps in the line.
+  bool drawable(double x, double y) const {
+    return std::isfinite(x) && std::isfinite(y) && (!logX || x > 0.0);
+  }
 };
+
+double spreadAt(const PlotSeries& s, size_t i) {
+  return i < s.spread.size() && std::isfinite(s.spread[i]) ? s.spread[i] : 0.0;
+}
+
+// hi > lo afterwards, even where lo + 1 rounds back to lo.
+void widen(double lo, double& hi) {
+  if (hi <= lo) hi = lo + 1.0;
+  if (hi <= lo) hi = lo + std::abs(lo);
+}
 
 Axes axesFor(const LinePlot& p, cv::Rect area) {
   double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  const Axes probe{area, 1.0, 10.0, 0.0, 1.0, p.logX};
   for (const auto& s : p.series) {
     for (size_t i = 0; i < s.x.size(); ++i) {
-      const double d = i < s.spread.size() ? s.spread[i] : 0.0;
+      if (!probe.drawable(s.x[i], s.y[i])) continue;
+      const double d = spreadAt(s, i);
       x0 = std::min(x0, s.x[i]);
       x1 = std::max(x1, s.x[i]);
       y0 = std::min(y0, s.y[i] - d);
       y1 = std::max(y1, s.y[i] + d);
     }
   }
-  if (x0 > x1) x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+  if (x0 > x1) x0 = p.logX ? 1 : 0, x1 = p.logX ? 10 : 1, y0 = 0, y1 = 1;
   x0 = p.xMin.value_or(x0);
   x1 = p.xMax.value_or(x1);
   y0 = p.yMin.value_or(y0);
   y1 = p.yMax.value_or(y1 + 0.08 * (y1 - y0));  // headroom for the legend
-  if (x1 <= x0) x1 = x0 + 1;
-  if (y1 <= y0) y1 = y0 + 1;
+  widen(x0, x1);
+  widen(y0, y1);
   return {area, x0, x1, y0, y1, p.logX};
+}
+
+// The plot's own preconditions (caller mistakes): Error(BadArgument) naming the plot.
+void checkPlotSize(const std::filesystem::path& file, const std::string& title, int width,
+                   int height) {
+  if (width < 320 || height < 240 || width > 8192 || height > 8192)
+    throw Error(ErrorKind::BadArgument, file.string(), "",
+                "plot '" + title + "': the size must be 320-8192 x 240-8192 pixels, got " +
+                    std::to_string(width) + " x " + std::to_string(height));
+}
+
+void checkLinePlot(const std::filesystem::path& file, const LinePlot& p) {
+  const auto bad = [&](const std::string& problem) {
+    throw Error(ErrorKind::BadArgument, file.string(), "", "plot '" + p.title + "': " + problem);
+  };
+  for (const auto& s : p.series) {
+    if (s.y.size() != s.x.size() || (!s.spread.empty() && s.spread.size() != s.x.size()))
+      bad("series '" + s.label + "' has " + std::to_string(s.x.size()) + " x, " +
+          std::to_string(s.y.size()) + " y and " + std::to_string(s.spread.size()) +
+          " spread values");
+  }
+  for (const auto& limit : {p.xMin, p.xMax, p.yMin, p.yMax}) {
+    if (limit && !std::isfinite(*limit)) bad("axis limits must be finite");
+  }
+  if (p.logX && p.xMin && !(*p.xMin > 0.0)) bad("a log-scale x axis needs a positive xMin");
+  if (p.logX && p.xMax && !(*p.xMax > 0.0)) bad("a log-scale x axis needs a positive xMax");
+  if (p.xTickStep && !(*p.xTickStep > 0.0 && std::isfinite(*p.xTickStep)))
+    bad("the x tick step must be positive and finite");
+}
+
+// Ticks from `first` by `step` up to `last`: at most kMaxTicks, and none once adding the
+// step no longer changes the value (a step below the values' resolution).
+constexpr int kMaxTicks = 200;
+
+std::vector<double> ticks(double first, double last, double step) {
+  std::vector<double> out;
+  if (!std::isfinite(first) || !(step > 0.0) || !std::isfinite(step)) return out;
+  for (double v = first; v <= last && out.size() < kMaxTicks; v += step) {
+    out.push_back(v);
+    if (v + step == v) break;
+  }
+  return out;
 }
 
 void drawTicks(cv::Mat& img, const Axes& ax, const LinePlot& p) {
   const cv::Rect& a = ax.area;
   std::vector<double> xt;
   if (ax.logX) {
-    for (double d = std::pow(10.0, std::floor(std::log10(ax.x0))); d <= ax.x1 * 1.0001; d *= 10) {
+    for (double d = std::pow(10.0, std::floor(std::log10(ax.x0))); d > 0.0 && d <= ax.x1 * 1.0001;
+         d *= 10) {
       for (double m : {1.0, 2.0, 5.0}) {
         if (m * d >= ax.x0 * 0.9999 && m * d <= ax.x1 * 1.0001) xt.push_back(m * d);
       }
     }
   } else {
     const double step = p.xTickStep.value_or(niceStep(ax.x1 - ax.x0, 8));
-    for (double v = std::ceil(ax.x0 / step - 1e-9) * step; v <= ax.x1 + 1e-9 * step; v += step) xt.push_back(v);
+    xt = ticks(std::ceil(ax.x0 / step - 1e-9) * step, ax.x1 + 1e-9 * step, step);
   }
   for (double v : xt) {
-    const int x = static_cast<int>(std::lround(ax.tx(v)));
+    const int x = ax.at(v, ax.y0).x;
     cv::line(img, {x, a.y}, {x, a.y + a.height}, kAxisGrey, 1);
     cv::line(img, {x, a.y + a.height}, {x, a.y + a.height + 5}, kBlack, 1);
     text(img, tickLabel(v, ax.logX ? 1.0 : p.xTickStep.value_or(niceStep(ax.x1 - ax.x0, 8))), x, a.y + a.height + 22, 0);
   }
   const double ystep = niceStep(ax.y1 - ax.y0, 6);
-  for (double v = std::ceil(ax.y0 / ystep - 1e-9) * ystep; v <= ax.y1 + 1e-9 * ystep; v += ystep) {
-    const int y = static_cast<int>(std::lround(ax.ty(v)));
+  for (double v : ticks(std::ceil(ax.y0 / ystep - 1e-9) * ystep, ax.y1 + 1e-9 * ystep, ystep)) {
+    const int y = ax.at(ax.x0, v).y;
     cv::line(img, {a.x, y}, {a.x + a.width, y}, kAxisGrey, 1);
     cv::line(img, {a.x - 5, y}, {a.x, y}, kBlack, 1);
     text(img, tickLabel(v, ystep), a.x - 8, y + 5, 1);
@@ -355,10 +428,12 @@ void drawTicks(cv::Mat& img, const Axes& ax, const LinePlot& p) {
 
 void drawSeries(cv::Mat& img, const Axes& ax, const PlotSeries& s) {
   const cv::Rect& a = ax.area;
-  if (!s.spread.empty()) {  // translucent ± band
+  bool allDrawable = true;
+  for (size_t i = 0; i < s.x.size(); ++i) allDrawable = allDrawable && ax.drawable(s.x[i], s.y[i]);
+  if (!s.spread.empty() && allDrawable) {  // translucent ± band (non-finite SDs count as 0)
     std::vector<cv::Point> poly;
-    for (size_t i = 0; i < s.x.size(); ++i) poly.push_back(ax.at(s.x[i], s.y[i] + s.spread[i]));
-    for (size_t i = s.x.size(); i-- > 0;) poly.push_back(ax.at(s.x[i], s.y[i] - s.spread[i]));
+    for (size_t i = 0; i < s.x.size(); ++i) poly.push_back(ax.at(s.x[i], s.y[i] + spreadAt(s, i)));
+    for (size_t i = s.x.size(); i-- > 0;) poly.push_back(ax.at(s.x[i], s.y[i] - spreadAt(s, i)));
     cv::Mat layer = img.clone();
     cv::fillPoly(layer, std::vector<std::vector<cv::Point>>{poly}, bgr(s.color), cv::LINE_AA);
     cv::Mat roi = img(a);
@@ -367,12 +442,17 @@ void drawSeries(cv::Mat& img, const Axes& ax, const PlotSeries& s) {
   cv::Mat plotArea = img(a);
   const cv::Point offset(a.x, a.y);
   for (size_t i = 1; i < s.x.size(); ++i) {
+    if (!ax.drawable(s.x[i - 1], s.y[i - 1]) || !ax.drawable(s.x[i], s.y[i])) continue;
     const cv::Point p0 = ax.at(s.x[i - 1], s.y[i - 1]) - offset, p1 = ax.at(s.x[i], s.y[i]) - offset;
     if (s.dashed) dashedLine(plotArea, p0, p1, bgr(s.color), 2);
     else cv::line(plotArea, p0, p1, bgr(s.color), 2, cv::LINE_AA);
   }
   if (s.markers) {
-    for (size_t i = 0; i < s.x.size(); ++i) cv::circle(plotArea, ax.at(s.x[i], s.y[i]) - offset, 4, bgr(s.color), cv::FILLED, cv::LINE_AA);
+    for (size_t i = 0; i < s.x.size(); ++i) {
+      if (ax.drawable(s.x[i], s.y[i]))
+        cv::circle(plotArea, ax.at(s.x[i], s.y[i]) - offset, 4, bgr(s.color), cv::FILLED,
+                   cv::LINE_AA);
+    }
   }
 }
 
@@ -424,6 +504,8 @@ void drawLegend(cv::Mat& img, const cv::Rect& a, const std::vector<PlotSeries>& 
 bool plotsAvailable() { return true; }
 
 void saveLinePlot(const std::filesystem::path& file, const LinePlot& p, int width, int height) {
+  checkPlotSize(file, p.title, width, height);
+  checkLinePlot(file, p);
   cv::Mat img(height, width, CV_8UC3, kWhite);
   const cv::Rect area(95, 55, width - 125, height - 125);
   const Axes ax = axesFor(p, area);
@@ -432,8 +514,11 @@ void saveLinePlot(const std::filesystem::path& file, const LinePlot& p, int widt
   for (const auto& s : p.series) {
     drawSeries(img, ax, s);
     for (size_t i = 0; i < s.x.size(); ++i) {  // points along each segment, for the legend
+      if (!ax.drawable(s.x[i], s.y[i])) continue;
       const cv::Point b = ax.at(s.x[i], s.y[i]);
-      const cv::Point e = i + 1 < s.x.size() ? ax.at(s.x[i + 1], s.y[i + 1]) : b;
+      const cv::Point e = i + 1 < s.x.size() && ax.drawable(s.x[i + 1], s.y[i + 1])
+                              ? ax.at(s.x[i + 1], s.y[i + 1])
+                              : b;
       for (int t = 0; t < 8; ++t) drawn.push_back(b + (e - b) * t / 8);
     }
   }
@@ -446,17 +531,34 @@ void saveLinePlot(const std::filesystem::path& file, const LinePlot& p, int widt
 }
 
 void saveBarPlot(const std::filesystem::path& file, const BarPlot& p, int width, int height) {
+  checkPlotSize(file, p.title, width, height);
+  if (p.seriesLabels.size() != p.seriesColors.size())
+    throw Error(ErrorKind::BadArgument, file.string(), "",
+                "plot '" + p.title + "': " + std::to_string(p.seriesLabels.size()) +
+                    " series labels but " + std::to_string(p.seriesColors.size()) + " colours");
+  for (const auto& g : p.groups) {
+    if (g.values.size() > p.seriesColors.size())
+      throw Error(ErrorKind::BadArgument, file.string(), "",
+                  "plot '" + p.title + "': group '" + g.label + "' has " +
+                      std::to_string(g.values.size()) + " values for " +
+                      std::to_string(p.seriesColors.size()) + " series");
+  }
   cv::Mat img(height, width, CV_8UC3, kWhite);
   const cv::Rect area(170, 55, width - 200, height - 120);
-  double vmax = p.referenceValue.value_or(0.0);
+  // Non-finite values (and a non-finite reference) are left out: no bar, no scale.
+  const double reference =
+      p.referenceValue && std::isfinite(*p.referenceValue) ? *p.referenceValue : 0.0;
+  double vmax = reference;
   for (const auto& g : p.groups) {
-    for (double v : g.values) vmax = std::max(vmax, v);
+    for (double v : g.values) {
+      if (std::isfinite(v)) vmax = std::max(vmax, v);
+    }
   }
-  vmax = vmax > 0 ? vmax * 1.08 : 1.0;
+  vmax = vmax > 0 && std::isfinite(vmax * 1.08) ? vmax * 1.08 : 1.0;
   const Axes ax{area, 0.0, vmax, 0.0, 1.0, false};
   const double step = niceStep(vmax, 6);
-  for (double v = 0; v <= vmax; v += step) {
-    const int x = static_cast<int>(std::lround(ax.tx(v)));
+  for (double v : ticks(0.0, vmax, step)) {
+    const int x = ax.at(v, 0.0).x;
     cv::line(img, {x, area.y}, {x, area.y + area.height}, kAxisGrey, 1);
     text(img, tickLabel(v, step), x, area.y + area.height + 20, 0);
   }
@@ -466,17 +568,18 @@ void saveBarPlot(const std::filesystem::path& file, const BarPlot& p, int width,
     const double top = area.y + static_cast<double>(g) * rowH;
     text(img, p.groups[g].label, area.x - 8, static_cast<int>(top + rowH / 2 + 5), 1, 0.45);
     for (size_t s = 0; s < p.groups[g].values.size(); ++s) {
+      if (!std::isfinite(p.groups[g].values[s])) continue;
       const double barH = rowH * 0.8 / static_cast<double>(k);
       const int y0 = static_cast<int>(top + rowH * 0.1 + static_cast<double>(s) * barH);
-      const int x1 = static_cast<int>(std::lround(ax.tx(p.groups[g].values[s])));
+      const int x1 = ax.at(p.groups[g].values[s], 0.0).x;
       cv::rectangle(img, cv::Rect(area.x, y0, std::max(1, x1 - area.x), std::max(1, static_cast<int>(barH) - 1)),
                     bgr(p.seriesColors[s]), cv::FILLED);
     }
   }
   std::vector<PlotSeries> legend;
   for (size_t s = 0; s < p.seriesLabels.size(); ++s) legend.push_back({p.seriesLabels[s], {}, {}, {}, p.seriesColors[s], false, false});
-  if (p.referenceValue) {
-    const int x = static_cast<int>(std::lround(ax.tx(*p.referenceValue)));
+  if (p.referenceValue && std::isfinite(*p.referenceValue)) {
+    const int x = ax.at(*p.referenceValue, 0.0).x;
     dashedLine(img, {x, area.y}, {x, area.y + area.height}, kBlack, 2);
     legend.push_back({p.referenceLabel, {}, {}, {}, {0, 0, 0}, true, false});
   }

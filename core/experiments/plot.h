@@ -49,7 +49,11 @@ struct BarPlot {
 
 bool plotsAvailable();
 
-// Write a PNG (width × height pixels). Throw Error(Io) when the file cannot be written.
+// Write a PNG (width × height pixels). Throw Error(Io) when the file cannot be written,
+// Error(BadArgument) for a size outside 320-8192 × 240-8192, series whose x, y (and spread)
+// differ in length, non-finite axis limits, a log axis with a limit ≤ 0, a tick step ≤ 0,
+// or bar groups with more values than series colours. Non-finite points (and x ≤ 0 on a
+// log axis) are gaps: not drawn, not in the axis range.
 void saveLinePlot(const std::filesystem::path& file, const LinePlot& plot, int width = 960, int height = 640);
 void saveBarPlot(const std::filesystem::path& file, const BarPlot& plot, int width = 960, int height = 720);
 

@@ -197,6 +197,11 @@ std::vector<std::string> writeResultsFolder(const fs::path& dir, const Evaluatio
                                             const EvaluationProvenance& provenance,
                                             const ResultsFolderOptions& options) {
   const fs::path target = dir.lexically_normal();
+  // "" or "." or "dir/..": no folder name to write beside and rename into place.
+  if (target.empty() || target.filename().empty() || target.filename() == "." ||
+      target.filename() == "..")
+    throw Error(ErrorKind::BadArgument, dir.string(), "",
+                "results folder: the path must end in a folder name");
   const fs::path parent = target.has_parent_path() ? target.parent_path() : fs::path(".");
   const std::string stem = "." + target.filename().string() + "." + std::to_string(::getpid());
   const fs::path partial = parent / (stem + ".partial");

@@ -10,6 +10,7 @@
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
 #include "core/io/atomic_write.h"
+#include "core/io/reader_limits.h"
 
 namespace ew {
 namespace {
@@ -33,6 +34,22 @@ double cellValue(const std::string& cell, const std::string& name, int lineNo) {
   const double v = std::strtod(cell.c_str(), &end);
   if (end != cell.c_str() + cell.size()) throwMalformed(name, "line " + std::to_string(lineNo), "'" + cell + "' is not a number");
   return v;
+}
+
+bool plausibleRate(double rateHz) {
+  return std::isfinite(rateHz) && rateHz >= kMinFrameRateHz && rateHz <= kMaxFrameRateHz;
+}
+
+std::string rateRange() {
+  std::ostringstream s;
+  s << kMinFrameRateHz << "-" << kMaxFrameRateHz << " Hz";
+  return s.str();
+}
+
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
 }
 
 }  // namespace
@@ -59,7 +76,9 @@ ViewSequence parseViewCsv(std::string_view text, const std::string& name) {
   int lineNo = 0;
   bool header = false;
   double rateHz = 0.0;
+  int rateLine = 0;
   std::vector<double> times;
+  std::vector<int> rowLines;
   std::vector<std::vector<double>> rows;
   const std::string expected = viewCsvHeader();
   while (std::getline(in, line)) {
@@ -68,7 +87,10 @@ ViewSequence parseViewCsv(std::string_view text, const std::string& name) {
     if (line.empty()) continue;
     if (line[0] == '#') {
       const auto at = line.find("rate_hz=");
-      if (at != std::string::npos) rateHz = cellValue(line.substr(at + 8), name, lineNo);
+      if (at != std::string::npos) {
+        rateHz = cellValue(line.substr(at + 8), name, lineNo);
+        rateLine = lineNo;
+      }
       continue;
     }
     if (!header) {
@@ -82,19 +104,37 @@ ViewSequence parseViewCsv(std::string_view text, const std::string& name) {
                      "expected " + std::to_string(2 + kDims2) + " cells, got " + std::to_string(cells.size()));
     }
     times.push_back(cellValue(cells[1], name, lineNo));
+    rowLines.push_back(lineNo);
     std::vector<double> row;
     for (int c = 0; c < kDims2; ++c) row.push_back(cellValue(cells[static_cast<size_t>(2 + c)], name, lineNo));
     rows.push_back(std::move(row));
   }
   if (!header) throwMalformed(name, "line 1", "no 2D header (frame,time_s,head_u,head_v,…)");
   if (rows.size() < 2) throwBadData(name, "", "fewer than 2 frames");
-  if (rateHz <= 0) {
+  if (rateLine > 0 && !plausibleRate(rateHz)) {
+    throwMalformed(name, "line " + std::to_string(rateLine),
+                   "rate_hz=" + number(rateHz) + " is outside the plausible " + rateRange());
+  }
+  if (rateLine == 0) {
+    // The rate comes from the time column: every time must be there (a NaN would also
+    // break the ordering nth_element needs).
+    for (size_t i = 0; i < times.size(); ++i) {
+      if (!std::isfinite(times[i]))
+        throwBadData(name, "line " + std::to_string(rowLines[i]),
+                     "time_s is missing; fill the time column or add '# rate_hz=R'");
+    }
     std::vector<double> dt;
     for (size_t i = 1; i < times.size(); ++i) dt.push_back(times[i] - times[i - 1]);
     std::nth_element(dt.begin(), dt.begin() + static_cast<long>(dt.size() / 2), dt.end());
     const double median = dt[dt.size() / 2];
     if (!(median > 0)) throwBadData(name, "time_s", "time does not increase; add '# rate_hz=R'");
     rateHz = 1.0 / median;
+    if (!plausibleRate(rateHz)) {
+      throwBadData(name, "time_s",
+                   "the times give a frame rate of " + number(rateHz) +
+                       " Hz, outside the plausible " + rateRange() +
+                       " (times in milliseconds?); add '# rate_hz=R'");
+    }
   }
   ViewSequence s{Eigen::MatrixXd(static_cast<Eigen::Index>(rows.size()), kDims2), rateHz};
   for (size_t i = 0; i < rows.size(); ++i) {
@@ -113,7 +153,7 @@ ViewSequence readViewCsv(const std::filesystem::path& file) {
 
 void writeViewCsv(const std::filesystem::path& file, const ViewSequence& s,
                   const std::vector<std::string>& commentLines) {
-  if (s.framesMm.cols() != kDims2 || !(s.rateHz > 0)) {
+  if (s.framesMm.cols() != kDims2 || !(s.rateHz > 0) || !std::isfinite(s.rateHz)) {
     throw Error(ErrorKind::BadArgument, file.string(), "", "a 2D sequence needs T × 30 frames and a positive rate");
   }
   writeFileAtomically(file, [&](std::ostream& out) {

@@ -24,8 +24,9 @@ std::string viewCsvHeader();
 bool looksLikeViewCsv(std::string_view text);
 
 // Throws Error(Io) if unreadable, Error(Malformed) naming the file and line for a wrong
-// header, a short row or a bad number, Error(BadData) for fewer than 2 frames or a
-// non-increasing time column.
+// header, a short row, a bad number or a rate_hz outside 1-10000 Hz (core/io/reader_limits.h),
+// Error(BadData) for fewer than 2 frames, or — when the rate comes from the time column —
+// a missing time, a non-increasing time column or an implausible rate.
 ViewSequence readViewCsv(const std::filesystem::path& file);
 ViewSequence parseViewCsv(std::string_view text, const std::string& name);
 
