@@ -50,7 +50,7 @@ WalkerMotion displayedWalkerMotion(const AppState& s, std::optional<double> cycl
   const double n = cycles.value_or(defaultCycles);
   if (!std::isfinite(n) || n <= 0.0 || n > 1000.0) throw std::invalid_argument("cycles must lie in (0, 1000]");
   if (!(rateHz > 0.0)) throw std::invalid_argument("rate must be positive");
-  if (!(strideHz > 0.0)) throw std::invalid_argument("the walker has no stride frequency");
+  if (!(strideHz > 0.0 && std::isfinite(strideHz))) throw std::invalid_argument("the walker has no stride frequency");
   const int frames = std::max(2, static_cast<int>(std::lround(n / strideHz * rateHz)));
   m.framesX45 = synthesizeFrames(*w, 2.0 * std::numbers::pi * strideHz, 0.0, frameTimes(frames, rateHz));
   m.rateHz = rateHz;
