@@ -1,4 +1,5 @@
-// `eigenwalker-cli joints FILE --out OUT.csv`: the normalised 15-joint trajectories.
+// `eigenwalker-cli joints FILE --out OUT.csv [--segment N]`: the normalised 15-joint
+// trajectories.
 #include <iostream>
 
 #include "app/cli/commands.h"
@@ -13,24 +14,33 @@ struct JointsArgs {
   std::string out;
   double rateHz = 0.0;
   std::string units;
+  int segment = 0;  // 1-based; 0: the longest steady one
 };
 
 int runJoints(const JointsArgs& args) {
   LoadOptions options;
   if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
-  const WalkingTrial trial = loadWalkingTrial(args.file, options);
+  PrepareOptions prepare;
+  if (args.segment != 0) prepare.segment = args.segment - 1;
+  const WalkingTrial trial = loadWalkingTrial(args.file, options, prepare);
   std::vector<std::string> comments = {
       "eigenwalker 15-joint trajectories, mm, x right, y forward, z up (SPEC §2)",
       "source=" + args.file + " (" + trial.joints.format + ", " + trial.joints.source + ")",
-      "window_frames=" + std::to_string(trial.windowBegin) + "-" + std::to_string(trial.windowEnd - 1),
+      "window_frames=" + std::to_string(trial.windowBegin) + "-" +
+          std::to_string(trial.windowEnd - 1),
+      "straight_segment=" + std::to_string(trial.segment + 1) + " of " +
+          std::to_string(trial.segments.size()),
       "stride_hz=" + std::to_string(trial.cycles.strideHz) + " (" + trial.cycles.method + ")"};
   std::string estimated;
   for (int j = 0; j < kJointCount; ++j) {
-    if (trial.joints.estimated[static_cast<size_t>(j)]) estimated += std::string(estimated.empty() ? "" : ",") + std::string(kJointNames[static_cast<size_t>(j)]);
+    if (trial.joints.estimated[static_cast<size_t>(j)])
+      estimated += std::string(estimated.empty() ? "" : ",") +
+                   std::string(kJointNames[static_cast<size_t>(j)]);
   }
   if (!estimated.empty()) comments.push_back("estimated_joints=" + estimated);
-  for (const auto& w : trial.joints.warnings) std::cerr << "warning: " << args.file << ": " << w << "\n";
+  for (const auto& w : trial.joints.warnings)
+    std::cerr << "warning: " << args.file << ": " << w << "\n";
   writeJointCsv(args.out, trial.joints.positionsMm, trial.joints.rateHz, comments);
   std::cerr << "wrote " << args.out << ": " << trial.joints.frameCount() << " frames at "
             << trial.joints.rateHz << " Hz\n";
@@ -41,12 +51,16 @@ int runJoints(const JointsArgs& args) {
 
 void addJointsCommand(CLI::App& app, int& exitCode) {
   auto args = std::make_shared<JointsArgs>();
-  auto* cmd = app.add_subcommand("joints", "Write one trial's normalised 15-joint trajectories "
-                                           "(steady window, canonical frame, mm) as CSV");
+  auto* cmd = app.add_subcommand("joints",
+                                 "Write one trial's normalised 15-joint trajectories "
+                                 "(steady window, canonical frame, mm) as CSV");
   cmd->add_option("file", args->file, "Motion-capture file (.c3d .bvh .amc .trc .csv)")->required();
   cmd->add_option("--out", args->out, "Output CSV (written atomically)")->required();
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
+  cmd->add_option("--segment", args->segment,
+                  "Straight walking segment to use (1-based, as `info --json` lists them); "
+                  "default: the one with the longest steady part");
   cmd->callback([args, &exitCode] { exitCode = runJoints(*args); });
 }
 

@@ -146,9 +146,10 @@ bool isManifest(const fs::path& file) {
   return !lines.empty() && toLower(trim(lines.front().text)).rfind("file,", 0) == 0;
 }
 
-WalkingTrial loadWalkingTrial(const fs::path& file, const LoadOptions& options) {
+WalkingTrial loadWalkingTrial(const fs::path& file, const LoadOptions& options,
+                              const PrepareOptions& prepare) {
   JointTrial joints = toJointTrial(readRawTrial(file, options));  // the raw points are gone here
-  return prepareWalkingTrial(joints);
+  return prepareWalkingTrial(joints, prepare);
 }
 
 Dataset loadDataset(const std::vector<fs::path>& paths, const LoadOptions& options,

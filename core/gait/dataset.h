@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/gait/prepare.h"
 #include "core/gait/walking_trial.h"
 #include "core/io/load_trial.h"
 
@@ -29,7 +30,7 @@ struct DatasetTrial {
 
 struct Dataset {
   std::vector<DatasetTrial> trials;
-  std::vector<std::string> warnings;  // files skipped and why, odd manifest rows, …
+  std::vector<std::string> warnings;          // files skipped and why, odd manifest rows, …
   std::vector<std::string> subjects() const;  // distinct, in first-seen order
 };
 
@@ -44,7 +45,8 @@ std::vector<TrialFile> collectTrialFiles(const std::vector<std::filesystem::path
                                          std::vector<std::string>& warnings);
 
 // One file through the whole path: read, map to 15 joints, prepare (SPEC §1-2).
-WalkingTrial loadWalkingTrial(const std::filesystem::path& file, const LoadOptions& options = {});
+WalkingTrial loadWalkingTrial(const std::filesystem::path& file, const LoadOptions& options = {},
+                              const PrepareOptions& prepare = {});
 
 // True when a .csv file's first line is a manifest header (starts with "file,").
 bool isManifest(const std::filesystem::path& file);
@@ -57,7 +59,7 @@ Dataset loadDataset(const std::vector<std::filesystem::path>& paths,
                     const LoadOptions& options = {}, const ProgressFn& progress = {});
 // The same with options chosen per file (the viewer's per-file unit and rate overrides).
 using LoadOptionsFn = std::function<LoadOptions(const std::filesystem::path& file)>;
-Dataset loadDatasetPerFile(const std::vector<std::filesystem::path>& paths, const LoadOptionsFn& optionsFor,
-                           const ProgressFn& progress = {});
+Dataset loadDatasetPerFile(const std::vector<std::filesystem::path>& paths,
+                           const LoadOptionsFn& optionsFor, const ProgressFn& progress = {});
 
 }  // namespace ew

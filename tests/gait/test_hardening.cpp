@@ -191,6 +191,23 @@ TEST(Hardening, OutAndBackWalkReconstructsFromItsLongestStraightSegment) {
   expectCleanExit(run);
   EXPECT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("straight segments"), std::string::npos) << run.output;
+
+  // The user may take the other leg: `joints --segment N` counts as `info` lists them.
+  const int other = static_cast<int>(both.segments.size()) - both.segment;  // 1-based
+  const auto chosen = cli({"joints", file.string(), "--segment", std::to_string(other), "--out",
+                           (dir / "other.csv").string()},
+                          dir);
+  EXPECT_EQ(chosen.exitCode, 0) << chosen.output;
+  std::ifstream written(dir / "other.csv");
+  std::stringstream header;
+  header << written.rdbuf();
+  EXPECT_NE(header.str().find("straight_segment=" + std::to_string(other) + " of"),
+            std::string::npos);
+  const auto absent =
+      cli({"joints", file.string(), "--segment", "9", "--out", (dir / "x.csv").string()}, dir);
+  EXPECT_EQ(absent.exitCode, 2) << absent.output;
+  EXPECT_NE(absent.output.find("segment 9 does not exist"), std::string::npos) << absent.output;
+  EXPECT_FALSE(fs::exists(dir / "x.csv"));
 }
 
 TEST(Hardening, ChosenSegmentIsUsedAndABadChoiceIsATypedError) {
