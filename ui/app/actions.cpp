@@ -4,16 +4,20 @@
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <string_view>
 
+#include "core/common/errors.h"
 #include "core/engine/model.h"
 #include "core/engine/model_file.h"
+#include "core/engine/projection.h"
+#include "core/io/atomic_write.h"
 #include "core/io/bvh_writer.h"
 #include "core/io/joint_csv.h"
 #include "core/io/load_trial.h"
 #include "ui/app/script.h"
+#include "ui/app/state_json.h"
 #include "ui/app/theme.h"
 #include "ui/app/tour.h"
-#include "core/engine/projection.h"
 
 namespace ew::ui::actions {
 
@@ -21,11 +25,11 @@ namespace ew::ui::actions {
 
 namespace {
 
-void startLoad(AppState& s, std::vector<std::filesystem::path> paths) {
-  s.jobs.loadingPaths = paths;
-  const std::string title = paths.empty() ? "Synthesising the default population"
-                                          : "Loading " + paths.front().filename().string() +
-                                                (paths.size() > 1 ? " …" : "");
+void startLoad(AppState& s, OpenRequest request) {
+  const auto paths = request.paths;
+  s.jobs.loading = std::move(request);
+  const std::string title =
+      paths.empty() ? "Synthesising the default population" : "Loading " + describePaths(paths);
   s.log.info(title);
   s.jobs.load.start(title, [paths, overrides = s.doc.fileOverrides](
                                JobProgress& progress) -> std::shared_ptr<const Population> {
@@ -35,6 +39,15 @@ void startLoad(AppState& s, std::vector<std::filesystem::path> paths) {
     if (paths.empty()) return std::make_shared<const Population>(defaultPopulation(report));
     return std::make_shared<const Population>(loadPopulation(paths, report, overrides));
   });
+}
+
+// Starts the open now, or once the running load / model build is done.
+void requestOpen(AppState& s, OpenRequest request) {
+  if (s.jobs.load.running() || s.jobs.models.running()) {
+    s.jobs.pendingOpen = std::move(request);
+    return;
+  }
+  startLoad(s, std::move(request));
 }
 
 void startModels(AppState& s) {
@@ -48,55 +61,174 @@ void startModels(AppState& s) {
                       });
 }
 
+LoadedData loadedData(const Document& d) {
+  return {d.population, d.models, d.sourcePaths, d.walker, d.editedSd, d.exploreSd};
+}
+
+// Puts back the data shown before a load, under a new generation (caches computed for what
+// failed must not be taken for it). The user's settings (α, estimator, mode, N, overrides)
+// stay as they are.
+void restoreData(AppState& s, LoadedData before) {
+  s.doc.population = std::move(before.population);
+  s.doc.models = std::move(before.models);
+  s.doc.sourcePaths = std::move(before.sourcePaths);
+  s.doc.walker = before.walker;
+  s.doc.editedSd = std::move(before.editedSd);
+  s.doc.exploreSd = std::move(before.exploreSd);
+  ++s.doc.generation;
+}
+
+// What the user still has after a failure.
+std::string keptDescription(const AppState& s) {
+  if (!s.doc.population || s.doc.population->walkerCount() == 0)
+    return "Nothing is loaded: open other data, or the synthetic default population.";
+  const auto& pop = *s.doc.population;
+  std::string kept =
+      "Still showing " + pop.label + " (" + std::to_string(pop.walkerCount()) + " walkers";
+  if (s.doc.walker >= 0 && s.doc.walker < pop.walkerCount())
+    kept += ", " + pop.walkers[static_cast<std::size_t>(s.doc.walker)].subject + " selected";
+  return kept + "): nothing you had open has changed.";
+}
+
+// The message with each opened path shortened to its file or folder name where it names it
+// (the banner's title says where it was opened from; the log keeps the full paths).
+std::string shortenPaths(std::string message, const std::vector<std::filesystem::path>& paths) {
+  std::vector<std::filesystem::path> sorted = paths;
+  std::sort(sorted.begin(), sorted.end(),
+            [](const auto& a, const auto& b) { return a.string().size() > b.string().size(); });
+  for (const auto& p : sorted) {
+    const std::string full = p.string();
+    const std::string name = describePaths({p});
+    if (full.empty() || full == name) continue;
+    for (std::size_t at = message.find(full); at != std::string::npos;
+         at = message.find(full, at)) {
+      const std::size_t end = at + full.size();
+      const bool whole = end == message.size() ||
+                         std::string_view(":/ ,\n").find(message[end]) != std::string_view::npos;
+      if (!whole) {
+        at = end;
+        continue;
+      }
+      message.replace(at, full.size(), name);
+      at += name.size();
+    }
+  }
+  return message;
+}
+
+void showNotice(AppState& s, OpenNotice notice) {
+  notice.serial = ++s.jobs.noticeSerial;
+  s.jobs.notice = std::move(notice);
+}
+
+// After a load that left some of the items the user named out: an amber banner.
+void noticeSkipped(AppState& s, const OpenRequest& request, const Population& pop) {
+  std::vector<std::string> skipped = request.refused;
+  skipped.insert(skipped.end(), pop.skippedItems.begin(), pop.skippedItems.end());
+  if (skipped.empty()) return;
+  OpenNotice n;
+  n.error = false;
+  const auto& named = request.named.empty() ? request.paths : request.named;
+  n.title = "Opened " + std::to_string(named.size() - skipped.size()) + " of " +
+            std::to_string(named.size()) + " items; skipped " + std::to_string(skipped.size());
+  for (const auto& why : skipped) n.fullText += (n.fullText.empty() ? "" : "\n") + why;
+  n.detail = shortenPaths(n.fullText, named);
+  n.kept = "Showing " + pop.label + " (" + std::to_string(pop.walkerCount()) + " walkers).";
+  showNotice(s, std::move(n));
+}
+
 }  // namespace
 
-void open(AppState& s, std::vector<std::filesystem::path> paths) {
-  if (s.jobs.load.running() || s.jobs.models.running()) {
-    s.jobs.pendingOpen = std::move(paths);
-    return;
+std::string describePaths(const std::vector<std::filesystem::path>& paths) {
+  if (paths.empty()) return "the synthetic default population";
+  std::vector<std::string> names;
+  for (const auto& p : paths) {
+    const auto name = p.filename().empty() ? p.parent_path().filename() : p.filename();
+    names.push_back(name.empty() ? p.string() : name.string());
   }
-  startLoad(s, std::move(paths));
+  return listForMessage(names, 3);
+}
+
+void reportError(AppState& s, const std::string& title, const std::string& detail) {
+  s.jobs.lastError = detail.empty() ? title : title + ": " + detail;
+  s.log.error(s.jobs.lastError);
+  OpenNotice n;
+  n.title = title;
+  n.detail = detail;
+  n.fullText = s.jobs.lastError;
+  n.kept = keptDescription(s);
+  showNotice(s, std::move(n));
+}
+
+void reportOpenError(AppState& s, const std::vector<std::filesystem::path>& paths,
+                     const std::string& message) {
+  reportError(s, "Could not open " + describePaths(paths), message);
+  s.jobs.notice->detail = shortenPaths(message, paths);
+  s.jobs.notice->retryPaths = paths;
+  s.jobs.notice->canRetry = true;
+}
+
+void dismissNotice(AppState& s) {
+  s.jobs.notice.reset();
+  s.jobs.lastError.clear();
+}
+
+void open(AppState& s, std::vector<std::filesystem::path> paths) {
+  OpenRequest request;
+  request.paths = std::move(paths);
+  requestOpen(s, std::move(request));
 }
 
 void pollJobs(AppState& s) {
   if (auto outcome = s.jobs.load.poll()) {
     if (outcome->value) {
       const auto& pop = *outcome->value;
+      // What was shown stays until the new models are built (a failed build puts it back).
+      if (s.doc.population) s.jobs.beforeLoad = loadedData(s.doc);
       s.doc.population = pop;
       s.doc.models.reset();
-      s.doc.sourcePaths = s.jobs.loadingPaths;
-      for (auto it = s.doc.sourcePaths.rbegin(); it != s.doc.sourcePaths.rend(); ++it) {
-        std::erase(s.recentPaths, *it);
-        s.recentPaths.insert(s.recentPaths.begin(), *it);
-      }
-      if (s.recentPaths.size() > 10) s.recentPaths.resize(10);
+      s.doc.sourcePaths = s.jobs.loading.paths;
       ++s.doc.generation;
       s.doc.walker = 0;
       s.doc.editedSd.clear();
       s.doc.exploreSd.clear();
-      s.jobs.lastError.clear();
+      dismissNotice(s);
       s.log.info("Loaded " + pop->label + ": " + std::to_string(pop->walkerCount()) + " walkers");
+      for (const auto& w : s.jobs.loading.refused) s.log.warning("skipped: " + w);
       for (const auto& w : pop->warnings) s.log.warning(w);
+      noticeSkipped(s, s.jobs.loading, *pop);
       startModels(s);
     } else {
       ++s.jobs.failures;
-      s.jobs.lastError = "Could not open " +
-                         (s.jobs.loadingPaths.empty() ? std::string("the default population")
-                                                      : s.jobs.loadingPaths.front().string()) +
-                         ": " + outcome->error;
-      s.log.error(s.jobs.lastError);
+      std::string why = outcome->error;
+      for (const auto& r : s.jobs.loading.refused) why += "\nalso skipped: " + r;
+      reportOpenError(s, s.jobs.loading.paths, why);
+      const auto& named =
+          s.jobs.loading.named.empty() ? s.jobs.loading.paths : s.jobs.loading.named;
+      s.jobs.notice->detail = shortenPaths(why, named);
     }
   }
   if (auto outcome = s.jobs.models.poll()) {
     if (outcome->value) {
       s.doc.models = *outcome->value;
+      s.jobs.beforeLoad.reset();
+      for (auto it = s.doc.sourcePaths.rbegin(); it != s.doc.sourcePaths.rend(); ++it) {
+        std::erase(s.recentPaths, *it);
+        s.recentPaths.insert(s.recentPaths.begin(), *it);
+      }
+      if (s.recentPaths.size() > 10) s.recentPaths.resize(10);
       s.log.info("Built " + std::to_string(s.doc.models->withoutSubject.size()) +
                  " leave-one-out models and the full model (" +
                  std::to_string(s.doc.models->all.walkerCount()) + " walkers)");
     } else {
       ++s.jobs.failures;
-      s.jobs.lastError = "Could not build the models: " + outcome->error;
-      s.log.error(s.jobs.lastError);
+      // The new data cannot be shown without its models: back to what was shown before.
+      const std::string what = s.doc.population ? s.doc.population->label : std::string("the data");
+      restoreData(s, s.jobs.beforeLoad ? std::move(*s.jobs.beforeLoad) : LoadedData{});
+      s.jobs.beforeLoad.reset();
+      reportError(s, "Could not build the models for " + what, outcome->error);
+      s.jobs.notice->retryPaths = s.jobs.loading.paths;
+      s.jobs.notice->canRetry = true;
     }
   }
   if (auto outcome = s.jobs.summary.poll()) {
@@ -121,9 +253,9 @@ void pollJobs(AppState& s) {
     }
   }
   if (s.jobs.pendingOpen && !s.jobs.load.running() && !s.jobs.models.running()) {
-    auto paths = std::move(*s.jobs.pendingOpen);
+    auto request = std::move(*s.jobs.pendingOpen);
     s.jobs.pendingOpen.reset();
-    startLoad(s, std::move(paths));
+    startLoad(s, std::move(request));
   }
 }
 
@@ -387,6 +519,13 @@ void exportModel(AppState& s, const std::filesystem::path& path) {
   s.log.info("Wrote " + path.string() + " (" + what + ", " + std::to_string(model->walkerCount()) + " walkers)");
 }
 
+void exportState(AppState& s, const std::filesystem::path& path) {
+  if (path.empty()) throw std::invalid_argument("no file name for the state");
+  const std::string text = stateJson(s).dump(2) + "\n";
+  writeFileAtomically(path, [&text](std::ostream& out) { out << text; });
+  s.log.info("Wrote " + path.string() + " (viewer state)");
+}
+
 // [SECTION] Analysis
 
 AnalysisKey analysisKey(const AppState& s) {
@@ -441,14 +580,23 @@ void setAnalysisMetric(AppState& s, const std::string& name) {
 
 void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
   if (paths.empty()) throw std::invalid_argument("nothing dropped");
+  OpenRequest request;
+  request.named = paths;
   for (const auto& p : paths) {
     std::error_code ec;
-    if (!std::filesystem::exists(p, ec)) throw std::invalid_argument(p.string() + ": no such file or folder");
-    if (!std::filesystem::is_directory(p, ec) && !isSupportedDataFile(p))
-      throw std::invalid_argument(p.string() + ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv) or folder");
+    if (!std::filesystem::exists(p, ec)) {
+      request.refused.push_back(p.string() + ": no such file or folder");
+    } else if (!std::filesystem::is_directory(p, ec) && !isSupportedDataFile(p)) {
+      request.refused.push_back(
+          p.string() + ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv) or folder");
+    } else {
+      request.paths.push_back(p);
+    }
   }
+  // Nothing to open: the drop is refused as a whole, and nothing changes.
+  if (request.paths.empty()) throw std::invalid_argument(listForMessage(request.refused, 3, "; "));
   s.log.info("Dropped " + std::to_string(paths.size()) + (paths.size() == 1 ? " item" : " items"));
-  open(s, paths);
+  requestOpen(s, std::move(request));
 }
 
 void setFileOverride(AppState& s, const std::filesystem::path& file, const std::string& units, double rateHz) {

@@ -14,9 +14,22 @@
 namespace ew::ui::actions {
 
 // Starts loading `paths` (empty = the synthetic default population) in the background.
+// The data on screen stays until the new data has loaded; a load that fails leaves it, and
+// everything the user chose, as it was, and says why (reportOpenError).
 void open(AppState& s, std::vector<std::filesystem::path> paths);
 // Picks up finished background jobs; starts the model build after a load. Call once a frame.
+// A model build that fails puts back the data shown before the load.
 void pollJobs(AppState& s);
+
+// [SECTION] Errors the user sees: the log, and the banner over the views (OpenNotice).
+// "walk.csv", "a.bvh, b.bvh, c.bvh, … (2 more)", "the synthetic default population".
+std::string describePaths(const std::vector<std::filesystem::path>& paths);
+// An error banner (title, the reason, what is still shown) and lastError; no Retry.
+void reportError(AppState& s, const std::string& title, const std::string& detail);
+// "Could not open PATHS" with the reason, and Retry (which opens `paths` again).
+void reportOpenError(AppState& s, const std::vector<std::filesystem::path>& paths,
+                     const std::string& message);
+void dismissNotice(AppState& s);  // hides the banner, clears lastError
 
 void selectWalker(AppState& s, int index);
 void selectSubject(AppState& s, const std::string& subjectOrId);
@@ -55,6 +68,9 @@ void cancelVideoExport(AppState& s);
 void exportCsv(AppState& s, const std::filesystem::path& path, std::optional<double> cycles = std::nullopt);
 void exportBvh(AppState& s, const std::filesystem::path& path, std::optional<double> cycles = std::nullopt);
 void exportModel(AppState& s, const std::filesystem::path& path);
+// The document, the view settings, the banner and the log as JSON (ui/app/state_json.h), for
+// scripts and tests to check what the viewer holds.
+void exportState(AppState& s, const std::filesystem::path& path);
 // Records a failed PNG / video export: log, header, failure count.
 void reportExportError(AppState& s, const std::string& message);
 
@@ -70,8 +86,9 @@ void exportAnalysisCsv(AppState& s, const std::filesystem::path& path);
 void setAnalysisMetric(AppState& s, const std::string& name);
 
 // [SECTION] Opening data
-// Files or folders dropped on the window (or the script action "drop"): each must exist
-// and be a folder or a supported file (.c3d .bvh .asf .amc .trc .csv); then opened.
+// Files or folders dropped on the window (or the script action "drop"): the items that exist
+// and are a folder or a supported file (.c3d .bvh .asf .amc .trc .csv) are opened, the others
+// skipped with a warning; throws std::invalid_argument (and opens nothing) when none is.
 void drop(AppState& s, const std::vector<std::filesystem::path>& paths);
 // Unit ("" = the file's; mm, cm, m, in, cmu) and frame rate (0 = the file's) for one file;
 // takes effect at the next open (reloadWithOverrides reopens the current data).

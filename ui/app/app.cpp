@@ -206,12 +206,16 @@ class App {
   static void onDrop(GLFWwindow* window, int count, const char** paths) {
     auto* app = static_cast<App*>(glfwGetWindowUserPointer(window));
     if (!app || count <= 0) return;
-    std::vector<std::filesystem::path> dropped(paths, paths + count);
+    // Nothing may leave a GLFW callback (C code) by an exception: a refused drop is shown.
     try {
-      actions::drop(app->state_, dropped);
-    } catch (const std::exception& e) {
-      app->state_.log.error(e.what());
-      app->state_.jobs.lastError = e.what();
+      const std::vector<std::filesystem::path> dropped(paths, paths + count);
+      try {
+        actions::drop(app->state_, dropped);
+      } catch (const std::exception& e) {
+        actions::reportOpenError(app->state_, dropped, e.what());
+      }
+    } catch (...) {
+      app->state_.log.error("a drop could not be handled");
     }
   }
 
@@ -254,15 +258,11 @@ class App {
       glfwPollEvents();
       updateScale();
 
-      actions::pollJobs(state_);
-      runner_.step(state_);
+      update(dt);
       if (runner_.failed()) {
         std::fprintf(stderr, "eigenwalker: %s\n", runner_.error().c_str());
         return 1;
       }
-      state_.derived.update(state_.doc);
-      state_.view.playback.advance(dt, actions::playbackStrideHz(state_));
-      stepVideoExport();
 
       const auto t0 = std::chrono::steady_clock::now();
       drawFrame(dt);
@@ -328,6 +328,32 @@ class App {
   }
 
  private:
+  // [SECTION] One frame's work before drawing
+
+  // Background results, the script, derived results, playback, the video export. Whatever
+  // goes wrong here is shown in the window and the session goes on (a failed load or model
+  // build keeps what the user had: actions::pollJobs).
+  void update(double dt) {
+    try {
+      actions::pollJobs(state_);
+      runner_.step(state_);
+      state_.derived.update(state_.doc);
+      state_.view.playback.advance(dt, actions::playbackStrideHz(state_));
+      stepVideoExport();
+    } catch (const std::exception& e) {
+      reportUnexpected(e.what());
+    } catch (...) {
+      reportUnexpected("an exception of unknown type");
+    }
+  }
+
+  // Shown once, not every frame, while the same error repeats.
+  void reportUnexpected(const std::string& what) {
+    if (what == lastUnexpected_) return;
+    lastUnexpected_ = what;
+    actions::reportError(state_, "Something went wrong", what);
+  }
+
   // [SECTION] Exports that need the GL context: video frames and PNG read-back
 
   void stepVideoExport() {
@@ -455,6 +481,7 @@ class App {
       p.jointErrors.draw(state_, ctx, l.jointErrors);
       p.profile.draw(state_, ctx, l.profile);
       p.log.draw(state_, ctx, l.log);
+      p.notice.draw(state_, ctx, l.metrics);
       p.exports.draw(state_, ctx);
       p.analysis.draw(state_, ctx);
       p.data.draw(state_, ctx);
@@ -465,6 +492,9 @@ class App {
       // An action refused its input, or GL failed: say so, keep running.
       ImGui::ErrorCheckEndFrameRecover(nullptr);
       state_.log.error(e.what());
+    } catch (...) {
+      ImGui::ErrorCheckEndFrameRecover(nullptr);
+      reportUnexpected("an exception of unknown type while drawing");
     }
     ImGui::Render();
     int w = 0, h = 0;
@@ -500,6 +530,7 @@ class App {
   bool finalScreenshotRequested_ = false;
   bool benchStarted_ = false;
   int benchRemaining_ = 0;
+  std::string lastUnexpected_;
   FrameStats stats_;
   struct Profile {
     double draw = 0.0, swap = 0.0, views = 0.0, imgui = 0.0, repainted = 0.0;
@@ -517,6 +548,9 @@ int runApp(const AppOptions& options) {
     return app.run();
   } catch (const std::exception& e) {
     std::fprintf(stderr, "eigenwalker: %s\n", e.what());
+    return 1;
+  } catch (...) {
+    std::fprintf(stderr, "eigenwalker: an exception of unknown type\n");
     return 1;
   }
 }

@@ -3,6 +3,7 @@
 // caches, the background jobs, the log, and one struct per panel (each panel's own
 // state lives in its struct, never in function-local statics).
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -27,6 +28,7 @@
 #include "ui/panels/joint_errors_panel.h"
 #include "ui/panels/log_panel.h"
 #include "ui/panels/metrics_panel.h"
+#include "ui/panels/notice_panel.h"
 #include "ui/panels/playback_panel.h"
 #include "ui/panels/profile_panel.h"
 #include "ui/panels/reconstruction_view_panel.h"
@@ -40,6 +42,38 @@ namespace ew::ui {
 class Backdrop;
 class Renderer;
 
+// An open: the paths to load (empty = the synthetic default) and the dropped items that were
+// left out before loading (not motion capture, missing), each with its reason.
+struct OpenRequest {
+  std::vector<std::filesystem::path> paths;
+  std::vector<std::string> refused;
+  std::vector<std::filesystem::path> named;  // every item the user named (empty: `paths`)
+};
+
+// What the banner over the views says after an open went wrong (ui/panels/notice_panel.h):
+// an open that failed (the previous data stays), or one that succeeded without some of the
+// items the user named.
+struct OpenNotice {
+  bool error = true;     // false: opened, but some items were skipped
+  std::string title;     // "Could not open walk.csv"
+  std::string detail;    // why: the file, where in it, the problem (the opened paths shortened)
+  std::string fullText;  // the same with full paths, as in the log (the banner's tooltip)
+  std::string kept;      // what the viewer still shows
+  std::vector<std::filesystem::path> retryPaths;  // what Retry opens
+  bool canRetry = false;
+  std::uint64_t serial = 0;  // a new notice comes to the front once
+};
+
+// The data shown before a load replaced it, kept until the new data's models are built: a
+// model build that fails puts it back.
+struct LoadedData {
+  std::shared_ptr<const Population> population;
+  std::shared_ptr<const ModelSet> models;
+  std::vector<std::filesystem::path> sourcePaths;
+  int walker = 0;
+  std::vector<double> editedSd, exploreSd;
+};
+
 struct Jobs {
   BackgroundJob<std::shared_ptr<const Population>> load;
   BackgroundJob<std::shared_ptr<const ModelSet>> models;
@@ -49,9 +83,12 @@ struct Jobs {
   std::optional<AnalysisKey> analysisFailed;  // not retried until the inputs change
   std::string analysisError;
   // An open requested while a load was running: started when it finishes.
-  std::optional<std::vector<std::filesystem::path>> pendingOpen;
-  std::vector<std::filesystem::path> loadingPaths;
-  std::string lastError;   // shown in the header until dismissed
+  std::optional<OpenRequest> pendingOpen;
+  OpenRequest loading;                   // the open under way (or the last one)
+  std::optional<LoadedData> beforeLoad;  // until the models of the new data are built
+  std::string lastError;  // the last failed open or model build ("" once dismissed or opened)
+  std::optional<OpenNotice> notice;  // the banner over the views, until dismissed
+  std::uint64_t noticeSerial = 0;
   int failures = 0;        // loads or model builds that failed (scripts check it)
 
   bool busy() const {
@@ -78,6 +115,7 @@ struct Panels {
   JointErrorsPanel jointErrors;
   ProfilePanel profile;
   LogPanel log;
+  NoticePanel notice;
   ExportPanel exports;
   AnalysisPanel analysis;
   TourPanel tour;

@@ -4,10 +4,12 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <numbers>
 
 #include "core/common/errors.h"
 #include "core/synth/population.h"
+#include "ui/app/background_job.h"
 
 namespace ew::ui {
 
@@ -27,7 +29,9 @@ void requireEnough(const Population& p, const std::string& what) {
     for (const auto& w : p.warnings) detail += "\n  " + w;
     throw Error(ErrorKind::BadData, what, "",
                 "only " + std::to_string(p.walkerCount()) +
-                    " usable walker(s); a leave-one-out model needs at least 3" + detail);
+                    " usable walker(s); a leave-one-out model needs at least 3 (open a folder, "
+                    "a manifest or several files)" +
+                    detail);
   }
 }
 
@@ -82,17 +86,56 @@ std::string fileKey(const std::filesystem::path& file) {
 
 Population loadPopulation(const std::vector<std::filesystem::path>& paths,
                           const LoadProgress& progress, const FileOverrides& overrides) {
-  std::string label;
-  for (const auto& path : paths) {
-    if (!label.empty()) label += ", ";
-    label += path.filename().empty() ? path.string() : path.filename().string();
-  }
+  // "walkers.csv", "a.c3d, b.c3d": what the header shows.
+  const auto labelOf = [](const std::vector<std::filesystem::path>& items) {
+    std::string label;
+    for (const auto& path : items) {
+      if (!label.empty()) label += ", ";
+      label += path.filename().empty() ? path.string() : path.filename().string();
+    }
+    return label;
+  };
+  const std::string label = labelOf(paths);
   const LoadOptionsFn optionsFor = [&overrides](const std::filesystem::path& file) {
     if (overrides.empty()) return LoadOptions{};
     const auto it = overrides.find(fileKey(file));
     return it == overrides.end() ? LoadOptions{} : it->second;
   };
-  return populationFromDataset(loadDatasetPerFile(paths, optionsFor, progress), label, progress);
+  if (paths.size() <= 1)
+    return populationFromDataset(loadDatasetPerFile(paths, optionsFor, progress), label, progress);
+  // Several items: each on its own, so that one bad file does not lose the others. Progress
+  // runs over the items, each item's share split by its own files.
+  constexpr int kStepsPerItem = 1000;
+  const int items = static_cast<int>(paths.size());
+  Dataset all;
+  std::vector<std::string> skipped;
+  std::vector<std::filesystem::path> loaded;
+  for (int i = 0; i < items; ++i) {
+    ProgressFn itemProgress;
+    if (progress) {
+      itemProgress = [&progress, i, items](int done, int total, const std::string& what) {
+        const long long share =
+            total > 0 ? static_cast<long long>(done) * kStepsPerItem / total : 0;
+        progress(i * kStepsPerItem + static_cast<int>(share), items * kStepsPerItem, what);
+      };
+    }
+    try {
+      Dataset one =
+          loadDatasetPerFile({paths[static_cast<std::size_t>(i)]}, optionsFor, itemProgress);
+      std::move(one.trials.begin(), one.trials.end(), std::back_inserter(all.trials));
+      std::move(one.warnings.begin(), one.warnings.end(), std::back_inserter(all.warnings));
+      loaded.push_back(paths[static_cast<std::size_t>(i)]);
+    } catch (const JobCancelled&) {
+      throw;
+    } catch (const std::exception& e) {
+      skipped.emplace_back(e.what());
+      all.warnings.push_back(std::string("skipped: ") + e.what());
+    }
+  }
+  // The label names what loaded (the skipped items are in the warnings).
+  Population p = populationFromDataset(all, loaded.empty() ? label : labelOf(loaded), progress);
+  p.skippedItems = std::move(skipped);
+  return p;
 }
 
 Population defaultPopulation(const LoadProgress& progress) {

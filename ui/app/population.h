@@ -28,6 +28,9 @@ struct Population {
   std::vector<Walker> walkers;
   std::vector<WalkerFacts> facts;        // one per walker
   std::vector<std::string> warnings;     // files skipped, fits that failed, …
+  // Of several items opened together, those that did not load, each with its reason (also
+  // in `warnings`): the viewer says so rather than failing the whole open.
+  std::vector<std::string> skippedItems;
 
   int walkerCount() const { return static_cast<int>(walkers.size()); }
   // Index of the walker whose subject or id is `name`; -1 if none.
@@ -42,7 +45,10 @@ using FileOverrides = std::map<std::string, LoadOptions>;
 // The key of a file in FileOverrides: its absolute, normalised path.
 std::string fileKey(const std::filesystem::path& file);
 
-// Loads and fits every trial the paths name (with each file's overrides). Throws ew::Error
+// Loads and fits every trial the paths name (with each file's overrides). One path loads as
+// core's loadDatasetPerFile loads it (a file named on its own that fails is the error). Of
+// several paths (files and folders dropped together), one that fails is skipped with its
+// reason in `skippedItems` and `warnings`, as a bad file inside a folder is. Throws ew::Error
 // (or std::exception) when nothing usable remains; fewer than 3 walkers cannot give a
 // leave-one-out model.
 Population loadPopulation(const std::vector<std::filesystem::path>& paths,

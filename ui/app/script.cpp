@@ -22,7 +22,8 @@ const std::set<std::string>& knownActions() {
       "reset_coefficients", "randomise_coefficients", "coefficients_from_subject",
       "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
       "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour",
-      "drop",         "set_file_override", "reload", "export_data_summary"};
+      "drop",         "set_file_override", "reload", "export_data_summary", "export_state",
+      "expect_failure"};
   return names;
 }
 
@@ -64,6 +65,36 @@ double numberField(const nlohmann::json& o, const char* key, double fallback) {
   return o[key].get<double>();
 }
 
+// The action inside {"expect_failure": {NAME: ARG}}.
+ScriptAction innerAction(const ScriptAction& a) {
+  const auto& inner = a.argument;
+  if (!inner.is_object() || inner.size() != 1)
+    throw std::invalid_argument(R"(expects one action, e.g. {"drop": ["walk.csv"]})");
+  const std::string key = inner.begin().key();
+  if (!knownActions().contains(key) || key == "expect_failure")
+    throw std::invalid_argument("unknown action \"" + key + "\"");
+  return {key, inner.begin().value(), a.position};
+}
+
+// The paths of "open" (a path, a list, or null: none) and "drop" (a list).
+std::vector<std::filesystem::path> pathList(const ScriptAction& a) {
+  std::vector<std::filesystem::path> paths;
+  if (a.name == "open" && a.argument.is_string()) {
+    paths.emplace_back(a.argument.get<std::string>());
+  } else if (a.argument.is_array()) {
+    for (const auto& p : a.argument) {
+      if (!p.is_string()) throw std::invalid_argument("expects a list of paths");
+      paths.emplace_back(p.get<std::string>());
+    }
+  } else if (a.name != "open") {
+    throw std::invalid_argument("expects a list of paths");
+  } else if (!a.argument.is_null()) {
+    throw std::invalid_argument(
+        "expects a path, a list of paths, or null (the default population)");
+  }
+  return paths;
+}
+
 }  // namespace
 
 std::vector<ScriptAction> parseScript(const nlohmann::json& script, const std::string& name) {
@@ -80,6 +111,14 @@ std::vector<ScriptAction> parseScript(const nlohmann::json& script, const std::s
     if (!knownActions().contains(key))
       throw std::runtime_error(name + ": action " + std::to_string(position) + ": unknown action \"" + key + "\"");
     actions.push_back({key, entry.value(), position});
+    if (key == "expect_failure") {
+      try {
+        (void)innerAction(actions.back());
+      } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(name + ": action " + std::to_string(position) +
+                                 ": expect_failure " + e.what());
+      }
+    }
   }
   return actions;
 }
@@ -187,6 +226,8 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::setFileOverride(s, a.argument["file"].get<std::string>(), units, numberField(a.argument, "rate", 0.0));
   } else if (n == "export_data_summary") {
     actions::exportDataSummary(s, text(a));
+  } else if (n == "export_state") {
+    actions::exportState(s, text(a));
   } else if (n == "set_theme") {
     actions::setTheme(s, text(a));
   } else if (n == "tour") {
@@ -223,37 +264,21 @@ void applyAction(AppState& s, const ScriptAction& a) {
 
 void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   const auto& n = a.name;
-  if (n == "open") {
-    std::vector<std::filesystem::path> paths;
-    if (a.argument.is_string()) {
-      paths.emplace_back(a.argument.get<std::string>());
-    } else if (a.argument.is_array()) {
-      for (const auto& p : a.argument) {
-        if (!p.is_string()) throw std::invalid_argument("expects a path or a list of paths");
-        paths.emplace_back(p.get<std::string>());
-      }
-    } else if (!a.argument.is_null()) {
-      throw std::invalid_argument("expects a path, a list of paths, or null (the default population)");
-    }
+  if (n == "expect_failure") {
+    applyExpectingFailure(s, a);
+  } else if (n == "open" || n == "drop") {
+    const auto paths = pathList(a);
     failuresBefore_ = s.jobs.failures;
     checkLoad_ = true;
-    actions::open(s, std::move(paths));
-  } else if (n == "drop" || n == "reload") {
-    std::vector<std::filesystem::path> paths;
-    if (n == "drop") {
-      if (!a.argument.is_array()) throw std::invalid_argument("expects a list of paths");
-      for (const auto& p : a.argument) {
-        if (!p.is_string()) throw std::invalid_argument("expects a list of paths");
-        paths.emplace_back(p.get<std::string>());
-      }
-    }
-    failuresBefore_ = s.jobs.failures;
-    checkLoad_ = true;
-    if (n == "drop") {
-      actions::drop(s, paths);
+    if (n == "open") {
+      actions::open(s, paths);
     } else {
-      actions::reloadWithOverrides(s);
+      actions::drop(s, paths);
     }
+  } else if (n == "reload") {
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = true;
+    actions::reloadWithOverrides(s);
   } else if (n == "wait_frames") {
     const double v = number(a);
     if (v < 0 || v != std::floor(v)) throw std::invalid_argument("expects a whole number >= 0");
@@ -291,13 +316,41 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   }
 }
 
+void ScriptRunner::applyExpectingFailure(AppState& s, const ScriptAction& a) {
+  const ScriptAction inner = innerAction(a);
+  try {
+    apply(s, inner);
+  } catch (const std::exception& e) {
+    // Refused at once: reported as the window reports it (a refused drop gets the banner).
+    checkLoad_ = false;
+    if (inner.name == "open" || inner.name == "drop") {
+      actions::reportOpenError(s, pathList(inner), e.what());
+    } else {
+      s.log.error(inner.name + ": " + e.what());
+    }
+    s.log.info("script: " + inner.name + " failed as expected");
+    return;
+  }
+  if (!checkLoad_)
+    throw std::invalid_argument(inner.name + " was expected to fail, but it succeeded");
+  expectFailure_ = true;  // the load's outcome is checked once it is done (step)
+}
+
 void ScriptRunner::step(AppState& s) {
   if (failed()) return;
   // Everything waits for the background work (and reports a failed load).
   if (s.busy()) return;
   if (checkLoad_) {
     checkLoad_ = false;
-    if (s.jobs.failures != failuresBefore_) {
+    const bool expected = std::exchange(expectFailure_, false);
+    if (expected && s.jobs.failures == failuresBefore_) {
+      error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) +
+               " (expect_failure): the open was expected to fail, but it succeeded";
+      return;
+    }
+    if (expected) {
+      s.log.info("script: failed as expected");
+    } else if (s.jobs.failures != failuresBefore_) {
       error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) + " (" + actions_[next_ - 1].name +
                "): " + s.jobs.lastError;
       return;
@@ -333,7 +386,8 @@ void ScriptRunner::step(AppState& s) {
       return;
     }
     s.log.info("script: " + a.name + " " + a.argument.dump());
-    if (a.name == "open" || a.name == "drop" || a.name == "reload" || a.name == "wait_frames" || a.name == "screenshot" || a.name == "export_png" ||
+    if (a.name == "open" || a.name == "drop" || a.name == "reload" || a.name == "expect_failure" ||
+        a.name == "wait_frames" || a.name == "screenshot" || a.name == "export_png" ||
         a.name == "export_video")
       return;
   }

@@ -51,6 +51,9 @@ class ScriptRunner {
 
  private:
   void apply(AppState& s, const ScriptAction& a);
+  // {"expect_failure": {NAME: ARG}}: the action (or the load it starts) must fail; the failure
+  // is shown as in an interactive session and the script goes on.
+  void applyExpectingFailure(AppState& s, const ScriptAction& a);
 
   std::vector<ScriptAction> actions_;
   std::string name_;
@@ -58,6 +61,7 @@ class ScriptRunner {
   int waitFrames_ = 0;
   int failuresBefore_ = 0;
   bool checkLoad_ = false;                     // the last action opened data
+  bool expectFailure_ = false;                 // … and that open must fail
   int exportFailuresBefore_ = 0;
   bool checkExport_ = false;                   // the last action started a PNG / video export
   std::optional<std::filesystem::path> capture_;

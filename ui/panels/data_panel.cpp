@@ -72,12 +72,13 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
     ImGui::End();
     return;
   }
-  auto attempt = [&](auto&& fn) {
+  // An open refused at once (nothing to open, a bad override) gets the banner, like a failed load.
+  auto attempt = [&](const std::vector<std::filesystem::path>& paths, auto&& fn) {
     try {
       fn();
     } catch (const std::exception& e) {
       status = e.what();
-      s.log.error(status);
+      actions::reportOpenError(s, paths, status);
     }
   };
   if (ImGui::BeginTabBar("##data")) {
@@ -130,18 +131,21 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
       }
       if (s.recentPaths.empty()) ImGui::TextDisabled("nothing opened yet");
       ImGui::EndChild();
-      if (!reopen.empty()) attempt([&] { actions::open(s, reopen); });
+      if (!reopen.empty()) attempt(reopen, [&] { actions::open(s, reopen); });
 
       std::vector<std::filesystem::path> chosen;
       for (const auto& [name, on] : selected)
         if (on) chosen.push_back(std::filesystem::path(listedFolder) / name);
       ImGui::BeginDisabled(chosen.empty());
-      if (ImGui::Button("Open selected files")) attempt([&] { actions::drop(s, chosen); });
+      if (ImGui::Button("Open selected files")) attempt(chosen, [&] { actions::drop(s, chosen); });
       ImGui::EndDisabled();
       ImGui::SameLine();
-      if (ImGui::Button("Open this folder")) attempt([&] { actions::drop(s, {std::filesystem::path(listedFolder)}); });
+      if (ImGui::Button("Open this folder")) {
+        const std::vector<std::filesystem::path> here{std::filesystem::path(listedFolder)};
+        attempt(here, [&] { actions::drop(s, here); });
+      }
       ImGui::SameLine();
-      if (ImGui::Button("Synthetic default")) attempt([&] { actions::open(s, {}); });
+      if (ImGui::Button("Synthetic default")) attempt({}, [&] { actions::open(s, {}); });
       ImGui::TextDisabled("Tip: drop files or folders on the window. A manifest CSV opens its trials.");
       ImGui::EndTabItem();
     }
@@ -206,7 +210,7 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
           ImGui::EndTable();
         }
         if (ImGui::Button("Apply overrides and reload")) {
-          attempt([&] {
+          attempt(s.doc.sourcePaths, [&] {
             for (const auto& [file, e] : edits)
               actions::setFileOverride(s, file, e.unit == 0 ? std::string() : kUnits[e.unit], e.rateHz);
             actions::reloadWithOverrides(s);

@@ -53,7 +53,7 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
                   100.0 * e->explained);
     }
 
-    // Right side: progress or error.
+    // Right side: progress, or an export error (a failed open has its banner over the views).
     const float right = ImGui::GetWindowContentRegionMax().x;
     if (s.exports.video) {
       const auto& v = *s.exports.video;
@@ -80,18 +80,6 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
       ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
       ImGui::ProgressBar(fraction, ImVec2(w, 0.0f), what.c_str());
       ImGui::PopStyleColor();
-    } else if (!s.jobs.lastError.empty()) {
-      const float w = 560.0f * ctx.scale;
-      ImGui::SameLine(right - w);
-      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.5f, 1.0f));
-      const std::string shown = s.jobs.lastError.substr(0, 80);
-      ImGui::TextUnformatted(shown.c_str());
-      ImGui::PopStyleColor();
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.jobs.lastError.c_str());
-      ImGui::SameLine();
-      if (ImGui::SmallButton("Retry")) actions::open(s, s.jobs.loadingPaths);
-      ImGui::SameLine();
-      if (ImGui::SmallButton("Dismiss")) s.jobs.lastError.clear();
     } else if (!s.exports.lastError.empty()) {
       const float w = 560.0f * ctx.scale;
       ImGui::SameLine(right - w);

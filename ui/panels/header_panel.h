@@ -1,6 +1,7 @@
 #pragma once
 // The top bar: what is loaded, which model the reconstruction uses ("model: 23 walkers,
-// CMU07 held out"), background progress, and the last error with Retry / Dismiss.
+// CMU07 held out"), background progress, and the last export error with Dismiss (a failed
+// open has its own banner: notice_panel.h).
 
 #include "ui/panels/panel_window.h"
 
