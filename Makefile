@@ -6,7 +6,7 @@ CMAKE_ARGS     ?=
 JOBS           ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS     ?=
 
-.PHONY: all deps configure build run test test-sanitize bench clean
+.PHONY: all deps configure build run test test-sanitize bench fuzz fuzz-build fuzz-regressions clean
 
 all: build
 
@@ -42,5 +42,25 @@ test-sanitize: deps
 bench: build
 	@for b in $(BUILD_DIR)/bin/bench_*; do echo "== $$b"; $$b; done
 
+# libFuzzer (docs/FUZZING.md): a clang build of core and tests/fuzz only, with ASan +
+# UBSan, then each harness for FUZZ_SECONDS (FUZZ_JOBS at once). Fails on any finding;
+# crashers land in $(FUZZ_DIR)/crashes/<harness>/. `fuzz-regressions` replays the
+# committed regression corpus and the seeds once with the same binaries.
+FUZZ_DIR       ?= build-fuzz
+FUZZ_SECONDS   ?= 30
+FUZZ_JOBS      ?= $(JOBS)
+FUZZ_CMAKE_ARGS ?=
+
+fuzz-build: deps
+	cmake -S . -B $(FUZZ_DIR) -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug \
+	  -DEW_FUZZ=ON $(FUZZ_CMAKE_ARGS)
+	cmake --build $(FUZZ_DIR) -j $(JOBS)
+
+fuzz: fuzz-build
+	FUZZ_JOBS=$(FUZZ_JOBS) bash tests/fuzz/run_fuzz.sh $(FUZZ_DIR) $(FUZZ_SECONDS)
+
+fuzz-regressions: fuzz-build
+	FUZZ_JOBS=$(FUZZ_JOBS) bash tests/fuzz/run_fuzz.sh $(FUZZ_DIR) 0
+
 clean:
-	rm -rf $(BUILD_DIR) $(SANITIZE_DIR)
+	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR)

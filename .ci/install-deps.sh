@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libglfw3-dev libimgui-dev libstb-dev libglm-dev libepoxy-dev libopencv-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
+  clang libclang-rt-14-dev  # make fuzz: clang and its libFuzzer runtime (libclang_rt.fuzzer)
 )
 
 missing=()
