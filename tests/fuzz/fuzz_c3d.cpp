@@ -5,5 +5,6 @@
 #include "tests/fuzz/fuzz_common.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return ew::fuzz::acceptTypedErrors([&] { ew::parseC3d(ew::fuzz::asBytes(data, size), "fuzz.c3d"); });
+  return ew::fuzz::acceptTypedErrors(
+      [&] { ew::parseC3d(ew::fuzz::asBytes(data, size), "fuzz.c3d"); });
 }

@@ -28,14 +28,18 @@ namespace {
 ew::RawTrial parseAs(std::uint8_t selector, const std::uint8_t* data, std::size_t size) {
   const std::string_view text = ew::fuzz::asText(data, size);
   switch (selector % 5) {
-    case 0: return ew::parseC3d(ew::fuzz::asBytes(data, size), "fuzz.c3d");
-    case 1: return ew::parseBvh(text, "fuzz.bvh");
+    case 0:
+      return ew::parseC3d(ew::fuzz::asBytes(data, size), "fuzz.c3d");
+    case 1:
+      return ew::parseBvh(text, "fuzz.bvh");
     case 2: {
       const auto [asf, amc] = ew::fuzz::splitAtLine(text, ew::fuzz::kAmcSeparator);
       return ew::parseAsfAmc(asf, amc, "fuzz.asf", "fuzz.amc");
     }
-    case 3: return ew::parseTrc(text, "fuzz.trc");
-    default: return ew::parseJointCsv(text, "fuzz.csv");
+    case 3:
+      return ew::parseTrc(text, "fuzz.trc");
+    default:
+      return ew::parseJointCsv(text, "fuzz.csv");
   }
 }
 
@@ -51,8 +55,9 @@ void openTrial(const std::uint8_t* data, std::size_t size) {
   const ew::FourierFit fit =
       ew::fitFourier(walking.joints.positionsMm, walking.joints.rateHz, options);
   if (!fit.w.allFinite() || !std::isfinite(fit.omegaRadS) || !std::isfinite(fit.phaseRad)) {
-    std::fprintf(stderr, "fuzz_pipeline: the Fourier fit of %s succeeded with a non-finite "
-                         "result (omega %g, phase %g)\n",
+    std::fprintf(stderr,
+                 "fuzz_pipeline: the Fourier fit of %s succeeded with a non-finite "
+                 "result (omega %g, phase %g)\n",
                  raw.file.c_str(), fit.omegaRadS, fit.phaseRad);
     std::abort();
   }

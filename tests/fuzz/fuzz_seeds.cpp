@@ -72,7 +72,9 @@ class SeedWriter {
   void write(const std::string& harness, const std::string& name, std::string_view bytes) {
     std::ofstream out(root_ / harness / name, std::ios::binary);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    if (!out) throw ew::Error(ew::ErrorKind::Io, (root_ / harness / name).string(), "", "cannot write seed");
+    if (!out)
+      throw ew::Error(ew::ErrorKind::Io, (root_ / harness / name).string(), "",
+                      "cannot write seed");
     ++written_;
   }
 
@@ -124,20 +126,20 @@ struct Marker {
 const std::vector<Marker>& pigMarkers() {
   using ew::Joint;
   static const std::vector<Marker> markers = {
-      {"LASI", Joint::LHip, {-30, 60, 80}},       {"RASI", Joint::RHip, {30, 60, 80}},
-      {"LPSI", Joint::LHip, {40, -110, 90}},      {"RPSI", Joint::RHip, {-40, -110, 90}},
-      {"LHJC", Joint::LHip, {0, 0, 0}},           {"RHJC", Joint::RHip, {0, 0, 0}},
-      {"LKNE", Joint::LKnee, {-50, 0, 0}},        {"RKNE", Joint::RKnee, {50, 0, 0}},
-      {"LKJC", Joint::LKnee, {0, 0, 0}},          {"RKJC", Joint::RKnee, {0, 0, 0}},
-      {"LANK", Joint::LAnkle, {-40, 0, 0}},       {"RANK", Joint::RAnkle, {40, 0, 0}},
-      {"LAJC", Joint::LAnkle, {0, 0, 0}},         {"RAJC", Joint::RAnkle, {0, 0, 0}},
-      {"LSHO", Joint::LShoulder, {0, 0, 60}},     {"RSHO", Joint::RShoulder, {0, 0, 60}},
-      {"LELB", Joint::LElbow, {-40, 0, 0}},       {"RELB", Joint::RElbow, {40, 0, 0}},
-      {"LWRA", Joint::LWrist, {0, 25, 0}},        {"LWRB", Joint::LWrist, {0, -25, 0}},
-      {"RWRA", Joint::RWrist, {0, 25, 0}},        {"RWRB", Joint::RWrist, {0, -25, 0}},
-      {"C7", Joint::Sternum, {0, -60, 0}},        {"CLAV", Joint::Sternum, {0, 60, 0}},
-      {"LFHD", Joint::Head, {-60, 80, 30}},       {"RFHD", Joint::Head, {60, 80, 30}},
-      {"LBHD", Joint::Head, {-60, -80, 30}},      {"RBHD", Joint::Head, {60, -80, 30}},
+      {"LASI", Joint::LHip, {-30, 60, 80}},   {"RASI", Joint::RHip, {30, 60, 80}},
+      {"LPSI", Joint::LHip, {40, -110, 90}},  {"RPSI", Joint::RHip, {-40, -110, 90}},
+      {"LHJC", Joint::LHip, {0, 0, 0}},       {"RHJC", Joint::RHip, {0, 0, 0}},
+      {"LKNE", Joint::LKnee, {-50, 0, 0}},    {"RKNE", Joint::RKnee, {50, 0, 0}},
+      {"LKJC", Joint::LKnee, {0, 0, 0}},      {"RKJC", Joint::RKnee, {0, 0, 0}},
+      {"LANK", Joint::LAnkle, {-40, 0, 0}},   {"RANK", Joint::RAnkle, {40, 0, 0}},
+      {"LAJC", Joint::LAnkle, {0, 0, 0}},     {"RAJC", Joint::RAnkle, {0, 0, 0}},
+      {"LSHO", Joint::LShoulder, {0, 0, 60}}, {"RSHO", Joint::RShoulder, {0, 0, 60}},
+      {"LELB", Joint::LElbow, {-40, 0, 0}},   {"RELB", Joint::RElbow, {40, 0, 0}},
+      {"LWRA", Joint::LWrist, {0, 25, 0}},    {"LWRB", Joint::LWrist, {0, -25, 0}},
+      {"RWRA", Joint::RWrist, {0, 25, 0}},    {"RWRB", Joint::RWrist, {0, -25, 0}},
+      {"C7", Joint::Sternum, {0, -60, 0}},    {"CLAV", Joint::Sternum, {0, 60, 0}},
+      {"LFHD", Joint::Head, {-60, 80, 30}},   {"RFHD", Joint::Head, {60, 80, 30}},
+      {"LBHD", Joint::Head, {-60, -80, 30}},  {"RBHD", Joint::Head, {60, -80, 30}},
   };
   return markers;
 }
@@ -163,8 +165,8 @@ std::vector<std::string> pigLabels() {
 
 // [SECTION] TRC text
 
-std::string trcText(const std::vector<std::string>& labels, const MatrixXd& framesMm,
-                    double rateHz, const std::string& units) {
+std::string trcText(const std::vector<std::string>& labels, const MatrixXd& framesMm, double rateHz,
+                    const std::string& units) {
   std::ostringstream out;
   const auto frames = framesMm.rows();
   out << "PathFileType\t4\t(X/Y/Z)\tseed.trc\n"
@@ -204,12 +206,15 @@ class C3dBuilder {
     float timeS = 0.0f;
   };
 
-  std::string build(const std::vector<std::string>& labels, const MatrixXd& framesMm,
-                    double rateHz, bool real, const std::vector<Event>& events = {}) {
+  std::string build(const std::vector<std::string>& labels, const MatrixXd& framesMm, double rateHz,
+                    bool real, const std::vector<Event>& events = {}) {
     const auto points = static_cast<std::uint16_t>(labels.size());
     const auto frames = static_cast<std::uint16_t>(framesMm.rows());
-    const double maxAbs = framesMm.array().isFinite().select(framesMm.array().abs(), 0.0).maxCoeff();
-    const float scale = real ? -1.0f : static_cast<float>(std::max(0.01, std::ceil(maxAbs / 30000.0 * 100.0) / 100.0));
+    const double maxAbs =
+        framesMm.array().isFinite().select(framesMm.array().abs(), 0.0).maxCoeff();
+    const float scale =
+        real ? -1.0f
+             : static_cast<float>(std::max(0.01, std::ceil(maxAbs / 30000.0 * 100.0) / 100.0));
 
     // Parameter section (block 2, so the data starts at block 3 when it fits in one).
     std::string params;
@@ -227,7 +232,8 @@ class C3dBuilder {
     parameter(params, "UNITS", 1, -1, {2}, "mm");
     parameter(params, "Y_SCREEN", 1, -1, {2}, "+Z");
     parameter(params, "X_SCREEN", 1, -1, {2}, "+X");
-    parameter(params, "LABELS", 1, -1, {static_cast<std::uint8_t>(labelLen), static_cast<std::uint8_t>(points)},
+    parameter(params, "LABELS", 1, -1,
+              {static_cast<std::uint8_t>(labelLen), static_cast<std::uint8_t>(points)},
               padded(labels, labelLen));
     const std::size_t dataStartAt = parameter(params, "DATA_START", 1, 2, {}, word(0));
     if (!events.empty()) {
@@ -273,7 +279,8 @@ class C3dBuilder {
         for (int c = 0; c < 3; ++c) {
           const double value = valid ? v(c) : 0.0;
           data += real ? float32(static_cast<float>(value))
-                       : word(static_cast<std::uint16_t>(static_cast<std::int16_t>(std::lround(value / scale))));
+                       : word(static_cast<std::uint16_t>(
+                             static_cast<std::int16_t>(std::lround(value / scale))));
         }
         data += real ? float32(valid ? 0.0f : -1.0f) : word(valid ? 0 : 0xffff);
       }
@@ -292,22 +299,27 @@ class C3dBuilder {
     std::uint32_t bits = 0;
     std::memcpy(&bits, &f, 4);
     std::string le(4, '\0');
-    for (int b = 0; b < 4; ++b) le[static_cast<std::size_t>(b)] = static_cast<char>((bits >> (8 * b)) & 0xff);
+    for (int b = 0; b < 4; ++b)
+      le[static_cast<std::size_t>(b)] = static_cast<char>((bits >> (8 * b)) & 0xff);
     if (processor_ == Processor::Mips) std::reverse(le.begin(), le.end());
     return le;
   }
 
-  static void put(std::string& s, std::size_t at, const std::string& bytes) { s.replace(at, bytes.size(), bytes); }
+  static void put(std::string& s, std::size_t at, const std::string& bytes) {
+    s.replace(at, bytes.size(), bytes);
+  }
 
   static std::string padded(const std::vector<std::string>& items, std::size_t len) {
     std::string out;
-    for (const auto& s : items) out += s.substr(0, len) + std::string(len - std::min(len, s.size()), ' ');
+    for (const auto& s : items)
+      out += s.substr(0, len) + std::string(len - std::min(len, s.size()), ' ');
     return out;
   }
 
   // A record: name length, id, name, offset word to the next record, then `body`.
   // Returns where the body starts. The offset is counted from the offset word itself.
-  std::size_t record(std::string& params, const std::string& name, int id, const std::string& body) {
+  std::size_t record(std::string& params, const std::string& name, int id,
+                     const std::string& body) {
     params += static_cast<char>(name.size());
     params += static_cast<char>(static_cast<std::int8_t>(id));
     params += name;
@@ -350,7 +362,8 @@ const char* kTinyAsf =
     "   position 0 0 0\n   orientation 0 0 0\n:bonedata\n  begin\n     id 1\n     name a\n"
     "     direction 0 1 0\n     length 2\n     axis 0 0 0 XYZ\n    dof rx\n"
     "    limits (-180.0 180.0)\n  end\n  begin\n     id 2\n     name b\n     direction 1 0 0\n"
-    "     length 1\n     axis 0 0 90 XYZ\n    dof rx rz\n    limits (-inf inf)\n           (-90 90)\n"
+    "     length 1\n     axis 0 0 90 XYZ\n    dof rx rz\n    limits (-inf inf)\n           (-90 "
+    "90)\n"
     "  end\n:hierarchy\n  begin\n    root a\n    a b\n  end\n";
 
 const char* kTinyAmc =
@@ -359,7 +372,8 @@ const char* kTinyAmc =
 
 const char* kTinyTrc =
     "PathFileType\t4\t(X/Y/Z)\twalk.trc\r\n"
-    "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\r\n"
+    "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumF"
+    "rames\r\n"
     "60.00\t60.00\t3\t2\tm\t60.00\t1\t3\r\n"
     "Frame#\tTime\tLASI\t\t\tRASI\t\t\r\n"
     "\t\tX1\tY1\tZ1\tX2\tY2\tZ2\r\n\r\n"
@@ -417,12 +431,16 @@ void syntheticSeeds(SeedWriter& out, const fs::path& tmp) {
     const MatrixXd markers = markerFrames(w.trial.positionsMm);
     out.writeBoth("trc", Format::Trc, stem + "_pig.trc", trcText(pigLabels(), markers, rate, "mm"));
     C3dBuilder intel(C3dBuilder::Processor::Intel);
-    out.writeBoth("c3d", Format::C3d, stem + "_pig_intel_real.c3d", intel.build(pigLabels(), markers, rate, true));
+    out.writeBoth("c3d", Format::C3d, stem + "_pig_intel_real.c3d",
+                  intel.build(pigLabels(), markers, rate, true));
     if (i == 0) {
-      out.writeBoth("trc", Format::Trc, stem + "_pig_m.trc", trcText(pigLabels(), markers, rate, "m"));
-      out.writeBoth("c3d", Format::C3d, stem + "_pig_intel_int.c3d", intel.build(pigLabels(), markers, rate, false));
+      out.writeBoth("trc", Format::Trc, stem + "_pig_m.trc",
+                    trcText(pigLabels(), markers, rate, "m"));
+      out.writeBoth("c3d", Format::C3d, stem + "_pig_intel_int.c3d",
+                    intel.build(pigLabels(), markers, rate, false));
       C3dBuilder mips(C3dBuilder::Processor::Mips);
-      out.writeBoth("c3d", Format::C3d, stem + "_pig_mips_real.c3d", mips.build(pigLabels(), markers, rate, true));
+      out.writeBoth("c3d", Format::C3d, stem + "_pig_mips_real.c3d",
+                    mips.build(pigLabels(), markers, rate, true));
     }
   }
 }
@@ -446,11 +464,13 @@ void gaitEdgeSeeds(SeedWriter& out, const fs::path& tmp) {
   // starting where the first leg ended, so the walker comes back to the start.
   MatrixXd outAndBack(2 * frames, ew::kDims3);
   outAndBack.topRows(frames) = walk;
-  const Vector3d start = jointOf(walk, 0, ew::Joint::Pelvis), end = jointOf(walk, static_cast<int>(frames - 1), ew::Joint::Pelvis);
+  const Vector3d start = jointOf(walk, 0, ew::Joint::Pelvis),
+                 end = jointOf(walk, static_cast<int>(frames - 1), ew::Joint::Pelvis);
   for (Eigen::Index f = 0; f < frames; ++f) {
     for (int j = 0; j < ew::kJointCount; ++j) {
       const Vector3d p = walk.block<1, 3>(f, 3 * j).transpose() - start;
-      outAndBack.block<1, 3>(frames + f, 3 * j) = Vector3d(end.x() - p.x(), end.y() - p.y(), p.z() + start.z()).transpose();
+      outAndBack.block<1, 3>(frames + f, 3 * j) =
+          Vector3d(end.x() - p.x(), end.y() - p.y(), p.z() + start.z()).transpose();
     }
   }
   csv("edge_out_and_back.csv", outAndBack, rate);
@@ -461,7 +481,8 @@ void gaitEdgeSeeds(SeedWriter& out, const fs::path& tmp) {
   csv("edge_glitch_1km_one_frame.csv", glitch, rate);
   MatrixXd markers = markerFrames(w.trial.positionsMm);
   markers(frames / 2, 0) += 1.0e6;
-  out.writeBoth("trc", Format::Trc, "edge_glitch_1km_one_frame_pig.trc", trcText(pigLabels(), markers, rate, "mm"));
+  out.writeBoth("trc", Format::Trc, "edge_glitch_1km_one_frame_pig.trc",
+                trcText(pigLabels(), markers, rate, "mm"));
 
   // Standing still, a single frame, a joint never seen, the rate bounds of the readers.
   csv("edge_standing_still.csv", walk.row(0).replicate(frames, 1), rate);
@@ -479,7 +500,8 @@ void gaitEdgeSeeds(SeedWriter& out, const fs::path& tmp) {
   treadmill.simulation.cycles = 3.5;
   treadmill.simulation.treadmill = true;
   const auto onBelt = ew::generatePopulation(treadmill);
-  csv("edge_treadmill.csv", roundedTo01(onBelt.front().trial.positionsMm), onBelt.front().trial.rateHz);
+  csv("edge_treadmill.csv", roundedTo01(onBelt.front().trial.positionsMm),
+      onBelt.front().trial.rateHz);
 }
 
 void handMadeSeeds(SeedWriter& out) {
@@ -490,7 +512,7 @@ void handMadeSeeds(SeedWriter& out) {
   out.writeBoth("joint_csv", Format::Csv, "tiny_gaps_comments.csv", tinyCsv());
 
   MatrixXd two(3, 6);
-  two << 100, 900, 200, 300, 900, 200,  //
+  two << 100, 900, 200, 300, 900, 200,    //
       101, 901, 201, std::nan(""), 0, 0,  //
       102, 902, 202, 302, 902, 202;
   C3dBuilder intel(C3dBuilder::Processor::Intel);
@@ -520,8 +542,10 @@ void sharedDataSeeds(SeedWriter& out, const fs::path& data) {
     const fs::path file = data / relative;
     if (!fs::is_regular_file(file)) return;
     const std::string name = "shared_" + file.filename().string();
-    if (alsoPipeline) out.writeBoth(harness, format, name, readText(file));
-    else out.write(harness, name, readText(file));
+    if (alsoPipeline)
+      out.writeBoth(harness, format, name, readText(file));
+    else
+      out.write(harness, name, readText(file));
   };
   // C3D samples under 200 KB (every processor type and storage), one static and one
   // walking Schreiber-Moissenet trial.
@@ -536,8 +560,10 @@ void sharedDataSeeds(SeedWriter& out, const fs::path& data) {
     copy("c3d", Format::C3d, f, false);
   copy("c3d", Format::C3d, "schreiber-moissenet-2019/2014025/2014025_C4_04.c3d", true);
   copy("bvh", Format::Bvh, "cmu-mocap-bvh/08/08_01.bvh", true);
-  copy("trc", Format::Trc, "pose2sim-balancing/pose-3d/S00_P00_T01_BalancingTrial_0-100.trc", false);
-  const fs::path asf = data / "cmu-mocap-asfamc/35/35.asf", amc = data / "cmu-mocap-asfamc/35/35_01.amc";
+  copy("trc", Format::Trc, "pose2sim-balancing/pose-3d/S00_P00_T01_BalancingTrial_0-100.trc",
+       false);
+  const fs::path asf = data / "cmu-mocap-asfamc/35/35.asf",
+                 amc = data / "cmu-mocap-asfamc/35/35_01.amc";
   if (fs::is_regular_file(asf) && fs::is_regular_file(amc)) {
     out.writeBoth("asf_amc", Format::AsfAmc, "shared_35_01.asfamc",
                   asfAmc(readText(asf), readText(amc)));

@@ -5,5 +5,6 @@
 #include "tests/fuzz/fuzz_common.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return ew::fuzz::acceptTypedErrors([&] { ew::parseTrc(ew::fuzz::asText(data, size), "fuzz.trc"); });
+  return ew::fuzz::acceptTypedErrors(
+      [&] { ew::parseTrc(ew::fuzz::asText(data, size), "fuzz.trc"); });
 }

@@ -359,6 +359,7 @@ TEST(Hardening, RealSizedSkeletonFilesStillLoad) {
   EXPECT_EQ(readRawTrial(dir / "dense.bvh").frameCount(), 3000);
 }
 
+#if !defined(__SANITIZE_ADDRESS__)
 // A joint CSV of `frames` frames of zeros: as many positions as a CSV may hold.
 void writeLongCsv(const fs::path& file, int frames) {
   std::ofstream out(file);
@@ -368,7 +369,6 @@ void writeLongCsv(const fs::path& file, int frames) {
   for (int r = 0; r < frames; ++r) out << r << "," << r / 100.0 << zeros << "\n";
 }
 
-#if !defined(__SANITIZE_ADDRESS__)
 // Peak memory of the CLI on each amplifying file, and on files just inside each reader's
 // cap (sanitizer builds shadow every byte, so only the plain build measures it). The bound
 // is the issue's: 600 MB.
