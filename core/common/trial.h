@@ -65,6 +65,9 @@ struct JointTrial {
   std::vector<std::string> sourceLabels;  // the markers / skeleton joints the file had
   Eigen::MatrixXd positionsMm;    // frames x 45, joint-major x,y,z; file axes until normalised
   std::array<bool, kJointCount> estimated{};  // joint estimated, not measured (SPEC §1)
+  // Joint not measured at all (its columns are NaN in every frame): to be estimated from a
+  // model (core/engine/joint_completion.h). Set by mappings whose marker set lacks it.
+  std::array<bool, kJointCount> missing{};
   std::optional<SignedAxis> upAxis;
   std::vector<GaitEvent> events;
   std::vector<std::string> warnings;
