@@ -17,6 +17,7 @@
 #include "core/experiments/experiments.h"
 #include "core/experiments/results_folder.h"
 #include "core/gait/dataset.h"
+#include "core/io/atomic_write.h"
 
 namespace ew::cli {
 namespace {
@@ -113,7 +114,7 @@ void printHeadline(const EvaluationResults& r, const fs::path& out) {
 
 int runEvaluate(const EvaluateArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  const fs::path out = fs::path(a.out).lexically_normal();
+  const fs::path out = folderPathWithoutTrailingSeparator(a.out);  // "results/" is "results"
   if (out.filename().empty() || out.filename() == "." || out.filename() == "..") {
     throw Error(ErrorKind::BadArgument, "--out", "", "must name a folder, got '" + a.out + "'");
   }

@@ -1,8 +1,10 @@
-// `eigenwalker-cli reconstruct --model MODEL --input FILE (--angle DEG | --unknown-angle)
-//  [--method lsq|map] [--sigma2 MM2] --out OUT.csv [--project-angle DEG] [--json]`:
-// the 3D walker behind a 2D sequence (SPEC §6). FILE is a 2D CSV (docs/EXPERIMENTS.md) or
-// any 3D trial the loaders read, projected at --project-angle (ground truth known: errors
-// of SPEC §7 are reported).
+// `eigenwalker-cli reconstruct [--model MODEL] [--components N] --input FILE
+//  (--angle DEG | --unknown-angle) [--method lsq|map] [--sigma2 MM2] --out OUT.csv
+//  [--project-angle DEG] [--json]`: the 3D walker behind a 2D sequence (SPEC §6). Without
+// --model the default model of real walkers (core/engine/default_model.h); without
+// --sigma2 the σ² optimum stored in the model (else the paper's 70 mm²). FILE is a 2D CSV
+// (docs/EXPERIMENTS.md) or any 3D trial the loaders read, projected at --project-angle (ground
+// truth known: errors of SPEC §7 are reported).
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -13,7 +15,9 @@
 
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
+#include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
+#include "core/engine/joint_completion.h"
 #include "core/engine/metrics.h"
 #include "core/engine/model_file.h"
 #include "core/engine/projection.h"
@@ -32,14 +36,45 @@ struct ReconstructArgs {
   std::string model, input, out, method = "map", save2d;
   std::optional<double> angleDeg, projectAngleDeg;
   bool unknownAngle = false, json = false, dataPreserving = false;
-  double sigma2Mm2 = 70.0;
+  std::optional<double> sigma2Mm2;  // unset: the model's stored optimum (defaultSigma2Mm2)
+  std::optional<int> components;    // unset: every eigenwalker of the model
 };
+
+// The model the user named, or the default one; truncated to --components (the viewer's
+// N means the same: leadingComponents).
+struct ChosenModel {
+  EigenwalkerModel model;
+  std::string name;  // the file, or defaultRealModelName()
+};
+
+ChosenModel chooseModel(const ReconstructArgs& a) {
+  ChosenModel c;
+  if (a.model.empty()) {
+    c.model = defaultRealModel();
+    c.name = defaultRealModelName();
+  } else {
+    c.model = loadModel(a.model);
+    c.name = a.model;
+  }
+  if (a.components) {
+    if (*a.components > c.model.componentCount())
+      throw Error(ErrorKind::BadArgument, "--components", "",
+                  std::to_string(*a.components) + " components asked, the model " + c.name +
+                      " has " + std::to_string(c.model.componentCount()));
+    c.model = leadingComponents(c.model, *a.components);
+  }
+  std::cerr << "model: " << c.name << " (" << c.model.componentCount() << " eigenwalkers)\n";
+  return c;
+}
 
 // The 2D input and, for a 3D file, the truth it came from.
 struct Input {
   ViewSequence view;
   std::optional<double> omegaHintRadS;
   Eigen::MatrixXd frames3d;  // empty for a 2D file
+  // Joints not measured in any frame (a lower-body marker set, a 2D column left empty):
+  // dropped from the likelihood (their rows of Ê), estimated by the model, flagged.
+  JointMask missing{};
 };
 
 bool isViewCsv(const fs::path& file) {
@@ -56,6 +91,7 @@ Input readInput(const ReconstructArgs& a) {
   if (isViewCsv(a.input)) {
     if (a.projectAngleDeg) throw Error(ErrorKind::BadArgument, "--project-angle", "", "the input is already 2D");
     in.view = readViewCsv(a.input);
+    in.missing = jointsMissingThroughout(in.view.framesMm);
     return in;
   }
   if (!a.projectAngleDeg) {
@@ -64,9 +100,17 @@ Input readInput(const ReconstructArgs& a) {
   }
   const WalkingTrial trial = loadWalkingTrial(a.input);
   in.frames3d = trial.joints.positionsMm;
+  in.missing = trial.joints.missing;
   in.view = {projectFramesToView(in.frames3d, *a.projectAngleDeg), trial.joints.rateHz};
   if (trial.cycles.strideHz > 0 && std::isfinite(trial.cycles.strideHz)) in.omegaHintRadS = 2.0 * std::numbers::pi * trial.cycles.strideHz;
   return in;
+}
+
+std::vector<std::string> jointNames(const JointMask& mask) {
+  std::vector<std::string> out;
+  for (int j = 0; j < kJointCount; ++j)
+    if (mask[static_cast<size_t>(j)]) out.emplace_back(kJointNames[static_cast<size_t>(j)]);
+  return out;
 }
 
 json minimaJson(const ViewSearch& s) {
@@ -79,20 +123,50 @@ json minimaJson(const ViewSearch& s) {
   return out;
 }
 
-// SPEC §7 errors against the 3D truth: Fourier (one cycle) and raw frames.
+// SPEC §7 errors against the 3D truth: Fourier (one cycle) and raw frames. Joints the trial
+// did not measure have no truth: they are filled with the reconstruction (zero error), and
+// every error is averaged over the measured joints only (MPJPE over joints with 0 added
+// rescaled by 15 / measured); σ_m² is then that of the truth completed by the reconstruction.
 json truthErrors(const Input& in, const FourierFit& fit2d, const Eigen::VectorXd& wRec, double trueAngleDeg) {
   FourierFitOptions o;
   o.omegaFixedRadS = fit2d.omegaRadS;
-  const FourierFit truth = fitFourier(in.frames3d, in.view.rateHz, o);
+  FourierFit truth = fitFourierMeasured(in.frames3d, in.view.rateHz, in.missing, o);
   const Eigen::VectorXd aligned = rephase(wRec, fit2d.phaseRad, truth.phaseRad);
+  Eigen::MatrixXd frames = in.frames3d;
+  const Eigen::MatrixXd recFrames =
+      synthesizeFrames(wRec, fit2d.omegaRadS, fit2d.phaseRad,
+                       frameTimes(static_cast<int>(frames.rows()), in.view.rateHz));
+  JointMask measured{};
+  for (int j = 0; j < kJointCount; ++j) {
+    measured[static_cast<size_t>(j)] = !in.missing[static_cast<size_t>(j)];
+    if (measured[static_cast<size_t>(j)]) continue;
+    for (int b = 0; b < kFourierBlocks; ++b)
+      truth.w.segment<3>(b * kDims3 + 3 * j) = aligned.segment<3>(b * kDims3 + 3 * j);
+    frames.middleCols<3>(3 * j) = recFrames.middleCols<3>(3 * j);
+  }
+  const double scale = static_cast<double>(kJointCount) / jointCount(measured);
   const DepthErrors e = depthErrors(truth.w, aligned, trueAngleDeg);
-  const DepthErrors f = depthErrorsFrames(in.frames3d, in.view.rateHz, wRec, fit2d.omegaRadS, fit2d.phaseRad, trueAngleDeg);
-  return {{"abs_error_mm2", e.absMean}, {"rel_error", e.relMean}, {"var_missing_mm2", e.sigmaM2Mm2},
-          {"mpjpe_mm", mpjpe(truth.w, aligned)}, {"abs_error_frames_mm2", f.absMean},
-          {"mpjpe_frames_mm", mpjpeFrames(in.frames3d, in.view.rateHz, wRec, fit2d.omegaRadS, fit2d.phaseRad)}};
+  const DepthErrors f = depthErrorsFrames(frames, in.view.rateHz, wRec, fit2d.omegaRadS,
+                                          fit2d.phaseRad, trueAngleDeg);
+  const double absMeasured = meanOverJoints(e.absPerJoint, measured);
+  const double mpjpeMeasured = meanOverJoints(mpjpePerJoint(truth.w, aligned), measured);
+  return {{"abs_error_mm2", absMeasured},
+          {"rel_error", absMeasured / e.sigmaM2Mm2},
+          {"var_missing_mm2", e.sigmaM2Mm2},
+          {"mpjpe_mm", mpjpeMeasured},
+          {"abs_error_frames_mm2", meanOverJoints(f.absPerJoint, measured)},
+          {"mpjpe_frames_mm",
+           scale * mpjpeFrames(frames, in.view.rateHz, wRec, fit2d.omegaRadS, fit2d.phaseRad)},
+          {"joints_scored", jointCount(measured)},
+          {"mpjpe_measured_mm", mpjpeMeasured},
+          // No truth for a joint the trial did not measure: nothing to score (null, not 0).
+          {"mpjpe_model_estimated_mm", nullptr}};
 }
 
 void printReport(const json& r) {
+  if (r.contains("sigma2_mm2"))
+    std::cerr << "MAP sigma2 " << r["sigma2_mm2"].get<double>()
+              << " mm2: " << r["sigma2_source"].get<std::string>() << "\n";
   std::cerr << std::fixed << std::setprecision(2);
   std::cerr << "view angle " << r["angle_deg"].get<double>() << " deg (" << r["angle_source"].get<std::string>() << ")";
   if (r.contains("angle_error_deg")) std::cerr << ", error " << r["angle_error_deg"].get<double>() << " deg";
@@ -110,7 +184,15 @@ void printReport(const json& r) {
     std::cerr << std::setprecision(1) << "E_a " << e["abs_error_mm2"].get<double>() << " mm2, E_r "
               << std::setprecision(3) << e["rel_error"].get<double>() << ", MPJPE " << std::setprecision(1)
               << e["mpjpe_mm"].get<double>() << " mm (vs raw frames: E_a " << e["abs_error_frames_mm2"].get<double>()
-              << " mm2, MPJPE " << e["mpjpe_frames_mm"].get<double>() << " mm)\n";
+ << " mm2, MPJPE " << e["mpjpe_frames_mm"].get<double>() << " mm)\n";
+  }
+  if (!r["joints_model_estimated"].empty()) {
+    std::cerr << "model-estimated (not in the input, no truth to score):";
+    for (const auto& j : r["joints_model_estimated"]) std::cerr << " " << j.get<std::string>();
+    std::cerr << "\n";
+    if (r.contains("errors"))
+      std::cerr << "errors above: MPJPE measured " << r["errors"]["mpjpe_measured_mm"].get<double>()
+                << " mm over the " << r["errors"]["joints_scored"].get<int>() << " measured joints\n";
   }
   std::cerr << "wrote " << r["output"].get<std::string>() << "\n";
 }
@@ -119,19 +201,36 @@ int runReconstruct(const ReconstructArgs& a) {
   if (a.angleDeg.has_value() == a.unknownAngle) {
     throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
   }
-  const EigenwalkerModel model = loadModel(a.model);
+  const ChosenModel chosen = chooseModel(a);
+  const EigenwalkerModel& model = chosen.model;
+  const double sigma2Mm2 = a.sigma2Mm2.value_or(defaultSigma2Mm2(model));
   const Input in = readInput(a);
   if (!a.save2d.empty()) writeViewCsv(a.save2d, in.view, {"2D view of " + a.input});
   FourierFitOptions fitOptions;
   fitOptions.omegaHintRadS = in.omegaHintRadS;
   fitOptions.file = a.input;
-  const FourierFit fit2d = fitFourier(in.view.framesMm, in.view.rateHz, fitOptions);
-  const ModelGram gram = precomputeModelGram(model);
-  const EstimatorOptions estimator{a.method == "map" ? Estimator::Map : Estimator::Lsq, a.sigma2Mm2};
-  json report = {{"input", a.input}, {"model", a.model}, {"method", a.method}, {"output", a.out},
-                 {"stride_hz", fit2d.omegaRadS / (2 * std::numbers::pi)}, {"cycles", fit2d.cycles},
-                 {"phase_rad", fit2d.phaseRad}, {"frames", in.view.framesMm.rows()}, {"rate_hz", in.view.rateHz}};
-  if (a.method == "map") report["sigma2_mm2"] = a.sigma2Mm2;
+  const FourierFit fit2d =
+      fitFourierMeasured(in.view.framesMm, in.view.rateHz, in.missing, fitOptions);
+  std::vector<int> missingJoints;
+  for (int j = 0; j < kJointCount; ++j)
+    if (in.missing[static_cast<size_t>(j)]) missingJoints.push_back(j);
+  const ModelGram gram = precomputeModelGram(model, missingJoints);
+  const EstimatorOptions estimator{a.method == "map" ? Estimator::Map : Estimator::Lsq, sigma2Mm2};
+  json report = {{"input", a.input},
+                 {"model", chosen.name},
+                 {"components", model.componentCount()},
+                 {"method", a.method},
+                 {"output", a.out},
+                 {"stride_hz", fit2d.omegaRadS / (2 * std::numbers::pi)},
+                 {"cycles", fit2d.cycles},
+                 {"phase_rad", fit2d.phaseRad},
+                 {"frames", in.view.framesMm.rows()},
+                 {"rate_hz", in.view.rateHz}};
+  if (a.method == "map") {
+    report["sigma2_mm2"] = sigma2Mm2;
+    report["sigma2_source"] =
+        a.sigma2Mm2 ? std::string("given (--sigma2)") : defaultSigma2Source(model);
+  }
   Reconstruction rec;
   if (a.angleDeg) {
     rec = reconstructKnownView(gram, fit2d.w, *a.angleDeg, estimator);
@@ -145,6 +244,7 @@ int runReconstruct(const ReconstructArgs& a) {
   report["angle_deg"] = rec.alphaDeg;
   report["k"] = std::vector<double>(rec.k.data(), rec.k.data() + rec.k.size());
   report["data_preserving"] = a.dataPreserving;
+  report["joints_model_estimated"] = jointNames(in.missing);
   const Eigen::VectorXd& wOut = a.dataPreserving ? rec.wDataPreserving : rec.w;
   if (in.frames3d.rows() > 0) {
     report["true_angle_deg"] = *a.projectAngleDeg;
@@ -155,9 +255,14 @@ int runReconstruct(const ReconstructArgs& a) {
                                                   frameTimes(static_cast<int>(in.view.framesMm.rows()), in.view.rateHz));
   std::ostringstream angle;
   angle << rec.alphaDeg;
-  writeJointCsv(a.out, frames, in.view.rateHz,
-                {"eigenwalker reconstruction of " + a.input + " (" + a.method + ", view " + angle.str() + " deg)",
-                 "model " + a.model});
+  std::vector<std::string> comments = {
+      "eigenwalker reconstruction of " + a.input + " (" + a.method + ", view " + angle.str() +
+          " deg)",
+      "model " + chosen.name + ", " + std::to_string(model.componentCount()) + " eigenwalkers"};
+  if (anyJoint(in.missing))
+    comments.push_back("model_estimated_joints=" + jointList(in.missing) +
+                       " (not in the input: estimated from the model)");
+  writeJointCsv(a.out, frames, in.view.rateHz, comments);
   printReport(report);
   if (a.json) std::cout << report.dump(2) << "\n";
   return 0;
@@ -172,13 +277,20 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
       "3D walker from a 2D sequence (SPEC §6). --input is a 2D CSV frame,time_s,head_u,head_v,...,l_ankle_v "
       "(mm; docs/EXPERIMENTS.md) or a 3D trial viewed at --project-angle (errors against it reported). "
       "Writes the 15-joint 3D CSV over the input's duration.");
-  cmd->add_option("--model", args->model, "Model file from `build`")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--model", args->model,
+                  "Model file from `build` (default: the built-in model of 24 real walkers)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--components", args->components,
+                  "Use the first N eigenwalkers of the model (as the viewer's N)")
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--input", args->input, "2D CSV or 3D trial file")->required()->check(CLI::ExistingFile);
   cmd->add_option("--out", args->out, "3D joint CSV to write")->required();
   cmd->add_option("--angle", args->angleDeg, "Known view angle in degrees (0 frontal, +-90 profile)");
   cmd->add_flag("--unknown-angle", args->unknownAngle, "Estimate the view angle over the whole circle");
   cmd->add_option("--method", args->method, "lsq or map")->check(CLI::IsMember({"lsq", "map"}))->capture_default_str();
-  cmd->add_option("--sigma2", args->sigma2Mm2, "MAP noise variance (mm^2)")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--sigma2", args->sigma2Mm2,
+                  "MAP noise variance (mm^2); default: the optimum stored in the model, else 70")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--project-angle", args->projectAngleDeg, "View a 3D input at this angle (degrees)");
   cmd->add_option("--save-2d", args->save2d, "Also write the 2D sequence that was reconstructed (2D CSV)");
   cmd->add_flag("--data-preserving", args->dataPreserving, "Keep the observed u, v; only depth from the model (eq. 3.16)");

@@ -108,7 +108,7 @@ void writePopulationFolder(const fs::path& out, const std::vector<SynthWalker>& 
 
 int runSynth(const SynthArgs& a) {
   if (a.out.empty()) badArgument("--out", "an output folder is required");
-  const fs::path out = fs::path(a.out).lexically_normal();
+  const fs::path out = folderPathWithoutTrailingSeparator(a.out);  // "synth/" is "synth"
   if (out.filename().empty() || out.filename() == "." || out.filename() == "..") {
     badArgument("--out", "must name a folder, got '" + a.out + "'");
   }

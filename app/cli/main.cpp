@@ -3,10 +3,13 @@
 
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
+#include "ew_version.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"eigenwalker-cli: load walking motion capture, build eigenwalker models, "
                "reconstruct 3D walkers from 2D views"};
+  app.set_version_flag("--version", std::string("eigenwalker-cli ") + EW_VERSION + " (commit " +
+                                        EW_GIT_COMMIT + ")");
   app.require_subcommand(1);
   int exitCode = 0;
   ew::cli::addInfoCommand(app, exitCode);

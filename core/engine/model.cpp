@@ -72,6 +72,26 @@ double EigenwalkerModel::explainedVariance() const {
   return total > 0.0 ? eigenvalues.sum() / total : 1.0;
 }
 
+double defaultSigma2Mm2(const EigenwalkerModel& model) {
+  return model.sigma2Optimum ? model.sigma2Optimum->sigma2Mm2 : kPaperSigma2Mm2;
+}
+
+std::string defaultSigma2Source(const EigenwalkerModel& model) {
+  if (!model.sigma2Optimum) return "the paper's 70 mm2 (the model records no optimum of its own)";
+  return "the optimum measured on the model's " + std::to_string(model.walkerCount()) +
+         " walkers (leave-one-subject-out sweep)";
+}
+
+EigenwalkerModel leadingComponents(const EigenwalkerModel& model, int components) {
+  const int n = std::clamp(components, 1, std::max(1, model.componentCount()));
+  if (n >= model.componentCount()) return model;
+  EigenwalkerModel m = model;
+  m.eigenwalkers = model.eigenwalkers.leftCols(n);
+  m.eigenvalues = model.eigenvalues.head(n);
+  m.coefficients = model.coefficients.topRows(n);
+  return m;
+}
+
 EigenwalkerModel buildModel(const Eigen::Ref<const Eigen::MatrixXd>& w,
                             std::vector<std::string> walkerIds, std::vector<std::string> subjects,
                             const Eigen::Ref<const Eigen::VectorXd>& omegasRadS,

@@ -19,6 +19,24 @@ struct ModelOptions {
   std::optional<int> components;
 };
 
+// The paper's optimum MAP noise variance on its own data (Zhang & Troje 2007, §4.3): the
+// fallback σ² for a model that does not record the optimum measured on its walkers.
+inline constexpr double kPaperSigma2Mm2 = 70.0;
+
+// The MAP σ² that reconstructs this model's own walkers best, measured when the model was
+// built (core/experiments/model_build.h): a leave-one-subject-out sweep over a σ² grid,
+// each held-out walker projected at every angle of `anglesDeg` and reconstructed by MAP
+// with the model without its subject; the σ² with the smallest mean E_a (SPEC §7) wins.
+struct Sigma2Optimum {
+  double sigma2Mm2 = kPaperSigma2Mm2;  // the optimum, mm²
+  double meanAbsErrorMm2 = 0.0;        // its mean E_a over subjects and angles, mm²
+  std::vector<double> gridMm2;         // the σ² tried, mm²
+  std::vector<double> anglesDeg;       // the view angles of each held-out walker
+  std::string criterion;               // how the optimum was chosen, in words
+  bool atGridEdge = false;             // the optimum is the grid's first or last value
+  bool operator==(const Sigma2Optimum&) const = default;
+};
+
 struct EigenwalkerModel {
   Eigen::VectorXd mean;          // w̄, 225, mm
   Eigen::MatrixXd eigenwalkers;  // E, 225 × N, orthonormal columns
@@ -29,12 +47,28 @@ struct EigenwalkerModel {
   std::vector<std::string> subjects;   // R, subject of each walker
   Eigen::VectorXd omegasRadS;          // R, ω of each walker (kept beside w)
   std::vector<std::string> provenance; // free text: sources, files, options, …
+  // The σ² optimum measured on the model's own walkers; unset for a model built without
+  // the sweep (fewer than 3 subjects, a leave-one-out model) or read from an older file.
+  std::optional<Sigma2Optimum> sigma2Optimum;
 
   int componentCount() const { return static_cast<int>(eigenwalkers.cols()); }
   int walkerCount() const { return static_cast<int>(walkerIds.size()); }
   // Σ_{n ≤ N} λ_n / Σ λ over the whole spectrum.
   double explainedVariance() const;
 };
+
+// The σ² a MAP reconstruction with this model uses when the user gives none: the optimum
+// stored in the model, else kPaperSigma2Mm2.
+double defaultSigma2Mm2(const EigenwalkerModel& model);
+// Where that σ² comes from, for reports: "optimum measured on the model's 24 walkers
+// (leave-one-subject-out sweep)" or "the paper's 70 mm² (the model records no optimum)".
+std::string defaultSigma2Source(const EigenwalkerModel& model);
+
+// The model reduced to its first `components` eigenwalkers (clamped to 1 … N): E, λ and k
+// truncated, the mean and spectrum kept. Exact for PCA: the first n principal directions
+// of the full fit are those of a fit with n components. The viewer's N and the CLI's
+// `--components N` both mean this.
+EigenwalkerModel leadingComponents(const EigenwalkerModel& model, int components);
 
 // Builds the model from W (225 × R, R ≥ 2). ids, subjects and omegas have R entries.
 // Eigenvector signs are fixed (largest-magnitude entry positive) so a rebuild is

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "core/common/errors.h"
@@ -97,6 +98,52 @@ long long integer(const json& meta, const char* key, const std::string& file) {
   if (!meta.contains(key) || !meta[key].is_number_integer())
     malformed(file, "line 2", std::string("metadata has no integer '") + key + "'");
   return meta[key].get<long long>();
+}
+
+// [SECTION] σ² optimum (optional: files written before it was stored lack the key)
+
+json sigma2Json(const Sigma2Optimum& o) {
+  return {{"sigma2_mm2", o.sigma2Mm2}, {"mean_abs_error_mm2", o.meanAbsErrorMm2},
+          {"grid_mm2", o.gridMm2},     {"angles_deg", o.anglesDeg},
+          {"criterion", o.criterion},  {"at_grid_edge", o.atGridEdge}};
+}
+
+std::vector<double> numberList(const json& o, const char* key, const std::string& file) {
+  if (!o.contains(key) || !o[key].is_array())
+    malformed(file, "line 2", std::string("sigma2_optimum has no list '") + key + "'");
+  std::vector<double> out;
+  for (const auto& v : o[key]) {
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      malformed(file, "line 2", std::string("sigma2_optimum '") + key + "' holds a non-number");
+    out.push_back(v.get<double>());
+  }
+  return out;
+}
+
+std::optional<Sigma2Optimum> sigma2FromJson(const json& meta, const std::string& file) {
+  if (!meta.contains("sigma2_optimum")) return std::nullopt;
+  const json& o = meta["sigma2_optimum"];
+  const auto number = [&](const char* key) {
+    if (!o.is_object() || !o.contains(key) || !o[key].is_number() ||
+        !std::isfinite(o[key].get<double>()))
+      malformed(file, "line 2", std::string("sigma2_optimum has no finite number '") + key + "'");
+    return o[key].get<double>();
+  };
+  Sigma2Optimum s;
+  s.sigma2Mm2 = number("sigma2_mm2");
+  if (!(s.sigma2Mm2 > 0.0))
+    malformed(file, "line 2",
+              "sigma2_optimum: sigma2_mm2 must be > 0, got " + std::to_string(s.sigma2Mm2));
+  s.meanAbsErrorMm2 = number("mean_abs_error_mm2");
+  s.gridMm2 = numberList(o, "grid_mm2", file);
+  s.anglesDeg = numberList(o, "angles_deg", file);
+  if (!o.contains("criterion") || !o["criterion"].is_string() || !o.contains("at_grid_edge") ||
+      !o["at_grid_edge"].is_boolean())
+    malformed(file, "line 2",
+              "sigma2_optimum lacks the text 'criterion' or the flag 'at_grid_edge'");
+  s.criterion = o["criterion"].get<std::string>();
+  s.atGridEdge = o["at_grid_edge"].get<bool>();
+  return s;
 }
 
 // The shapes each array must have, from the declared sizes.
@@ -213,6 +260,10 @@ void checkSavable(const EigenwalkerModel& m, const std::string& file) {
   if (!m.coefficients.allFinite() || !m.spectrum.allFinite() || (m.spectrum.array() < 0.0).any() ||
       !m.omegasRadS.allFinite() || (m.omegasRadS.array() <= 0.0).any())
     bad("non-finite coefficients or spectrum, a negative spectrum value or a non-positive ω");
+  if (m.sigma2Optimum &&
+      !(m.sigma2Optimum->sigma2Mm2 > 0.0 && std::isfinite(m.sigma2Optimum->sigma2Mm2) &&
+        std::isfinite(m.sigma2Optimum->meanAbsErrorMm2)))
+    bad("the stored σ² optimum must be positive and finite");
 }
 
 }  // namespace
@@ -236,6 +287,7 @@ void saveModel(const EigenwalkerModel& model, const std::filesystem::path& file)
   meta["walker_ids"] = model.walkerIds;
   meta["subjects"] = model.subjects;
   meta["provenance"] = model.provenance;
+  if (model.sigma2Optimum) meta["sigma2_optimum"] = sigma2Json(*model.sigma2Optimum);
   std::string payload;
   json list = json::array();
   for (const auto& [name, m] : arrays) {
@@ -300,6 +352,7 @@ EigenwalkerModel parseModel(std::string_view bytes, const std::string& file) {
   model.walkerIds = stringList(meta, "walker_ids", file);
   model.subjects = stringList(meta, "subjects", file);
   model.provenance = stringList(meta, "provenance", file);
+  model.sigma2Optimum = sigma2FromJson(meta, file);
   if (static_cast<long long>(model.walkerIds.size()) != walkers ||
       static_cast<long long>(model.subjects.size()) != walkers)
     malformed(file, "line 2", "walker_ids and subjects must list " + std::to_string(walkers) + " walkers");

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/common/errors.h"
+#include "core/io/atomic_write.h"
 #include "core/experiments/plot.h"
 
 namespace ew {
@@ -196,7 +197,8 @@ void writeText(const fs::path& file, const std::string& text) {
 std::vector<std::string> writeResultsFolder(const fs::path& dir, const EvaluationResults& r,
                                             const EvaluationProvenance& provenance,
                                             const ResultsFolderOptions& options) {
-  const fs::path target = dir.lexically_normal();
+  // "results/" names the folder "results" (users type the slash; README's commands do).
+  const fs::path target = folderPathWithoutTrailingSeparator(dir);
   // "" or "." or "dir/..": no folder name to write beside and rename into place.
   if (target.empty() || target.filename().empty() || target.filename() == "." ||
       target.filename() == "..")

@@ -48,8 +48,9 @@ struct ResultsFolderOptions {
 // Writes the files of the experiments that ran into `dir` (created or replaced
 // atomically; its parent is created if missing) and returns their names. On failure the
 // temporary folder is removed, `dir` is left as it was, and the error is rethrown
-// (filesystem errors as Error(Io) naming `dir`). A path that does not end in a folder name
-// ("", ".", "a/..", "a/") is Error(BadArgument).
+// (filesystem errors as Error(Io) naming `dir`). Trailing separators are ignored ("a/" is
+// the folder "a"); a path that does not end in a folder name ("", ".", "a/..") is
+// Error(BadArgument).
 std::vector<std::string> writeResultsFolder(const std::filesystem::path& dir,
                                             const EvaluationResults& results,
                                             const EvaluationProvenance& provenance,

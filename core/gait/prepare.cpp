@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/common/errors.h"
+#include "core/gait/body_size.h"
 #include "core/gait/canonical_frame.h"
 #include "core/gait/gait_cycles.h"
 #include "core/gait/gaps.h"
@@ -220,6 +221,7 @@ WalkingTrial prepareWalkingTrial(const JointTrial& t, const PrepareOptions& o) {
   out.joints = t;
   out.joints.positionsMm.resize(0, kDims3);  // filled with the window; no second full copy
   out.loadedFrames = t.frameCount();
+  if (auto size = bodySizeWarning(t)) out.joints.warnings.push_back(*size);  // a wrong --units
   const Eigen::MatrixXd run = completeRunZUp(t, o, out);
   const int runBegin = out.windowBegin;
   const int runFrames = static_cast<int>(run.rows());

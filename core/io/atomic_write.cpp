@@ -37,4 +37,10 @@ void writeFileAtomically(const std::filesystem::path& target,
   }
 }
 
+std::filesystem::path folderPathWithoutTrailingSeparator(const std::filesystem::path& path) {
+  std::filesystem::path p = path.lexically_normal();
+  while (!p.empty() && p.filename().empty() && p.has_relative_path()) p = p.parent_path();
+  return p;
+}
+
 }  // namespace ew

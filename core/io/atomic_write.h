@@ -14,4 +14,9 @@ namespace ew {
 void writeFileAtomically(const std::filesystem::path& target,
                          const std::function<void(std::ostream&)>& write);
 
+// A folder path as users type it, without trailing separators ("results/" → "results",
+// "a//" → "a"), lexically normalised, so its filename() names the folder: the atomic
+// writers put a temporary sibling beside it and rename it into place. "/" stays "/".
+std::filesystem::path folderPathWithoutTrailingSeparator(const std::filesystem::path& path);
+
 }  // namespace ew

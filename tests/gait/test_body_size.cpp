@@ -1,0 +1,95 @@
+// A walker of no human size (a wrong length unit) is warned about, naming the file, the
+// size measured and the unit that would make it a person; a person's size is not.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "core/gait/body_size.h"
+#include "core/gait/dataset.h"
+#include "core/io/bvh_writer.h"
+#include "tests/common/synthetic_gait.h"
+#include "tests/common/test_support.h"
+
+namespace ew {
+namespace {
+
+JointTrial analyticTrial(double scale, const std::string& units) {
+  JointTrial t = test::analyticWalkTrial({});
+  t.positionsMm *= scale;
+  t.units = units;
+  t.file = "walk.bvh";
+  return t;
+}
+
+bool hasWarningWith(const std::vector<std::string>& warnings, const std::string& text) {
+  return std::any_of(warnings.begin(), warnings.end(),
+                     [&](const std::string& w) { return w.find(text) != std::string::npos; });
+}
+
+TEST(BodySize, APersonsSizeIsMeasuredAndNotWarnedAbout) {
+  const JointTrial t = analyticTrial(1.0, "mm");
+  const auto size = measureBodySize(t.positionsMm);
+  ASSERT_TRUE(size.has_value());
+  EXPECT_EQ(size->what, "head to ankles");
+  EXPECT_GT(size->lengthMm, size->minMm);
+  EXPECT_LT(size->lengthMm, size->maxMm);
+  EXPECT_FALSE(bodySizeWarning(t).has_value());
+}
+
+TEST(BodySize, AWalkerInTheWrongUnitNamesTheFileTheSizeAndTheLikelyUnit) {
+  // Millimetre numbers read as centimetres: ten times too tall.
+  const auto w = bodySizeWarning(analyticTrial(10.0, "cm"));
+  ASSERT_TRUE(w.has_value());
+  EXPECT_EQ(w->rfind("walk.bvh: the walker measures ", 0), 0u) << *w;
+  EXPECT_NE(w->find(" m from head to ankles"), std::string::npos) << *w;
+  EXPECT_NE(w->find("the file's unit is probably mm, not cm; use --units mm"), std::string::npos)
+      << *w;
+  // Centimetre numbers read as metres: a hundred times too tall.
+  const auto m = bodySizeWarning(analyticTrial(0.1 * 1000.0, "m"));
+  ASSERT_TRUE(m.has_value());
+  EXPECT_NE(m->find("probably cm, not m; use --units cm"), std::string::npos) << *m;
+  // Metre numbers read as millimetres: a thousand times too small.
+  const auto mm = bodySizeWarning(analyticTrial(0.001, "mm"));
+  ASSERT_TRUE(mm.has_value());
+  EXPECT_NE(mm->find("probably m, not mm; use --units m"), std::string::npos) << *mm;
+}
+
+TEST(BodySize, WithoutAHeadTheLegsAreMeasured) {
+  JointTrial t = analyticTrial(1.0, "mm");
+  t.positionsMm.middleCols<3>(3 * index(Joint::Head))
+      .setConstant(std::numeric_limits<double>::quiet_NaN());
+  const auto size = measureBodySize(t.positionsMm);
+  ASSERT_TRUE(size.has_value());
+  EXPECT_EQ(size->what, "hips to ankles");
+  EXPECT_FALSE(bodySizeWarning(t).has_value());
+  t.positionsMm *= 25.4;  // inch numbers read as mm
+  t.units = "in";
+  EXPECT_TRUE(bodySizeWarning(t).has_value());
+}
+
+TEST(BodySize, NothingToMeasureIsNoWarning) {
+  JointTrial t = analyticTrial(1.0, "mm");
+  t.positionsMm.setConstant(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_FALSE(measureBodySize(t.positionsMm).has_value());
+  EXPECT_FALSE(bodySizeWarning(t).has_value());
+}
+
+// The case: a BVH loaded with the wrong --units (here cm for a file in mm) loads,
+// walks, and now says so.
+TEST(BodySize, ABvhLoadedWithTheWrongUnitWarns) {
+  const auto dir = test::makeTempDir("body_size");
+  const auto file = dir / "walk.bvh";
+  writeBvh(file, test::analyticWalkFrames({}), 100.0);
+  const WalkingTrial right = loadWalkingTrial(file);
+  EXPECT_FALSE(hasWarningWith(right.joints.warnings, "the walker measures"));
+  LoadOptions wrong;
+  wrong.unitsOverride = "cm";
+  const WalkingTrial trial = loadWalkingTrial(file, wrong);
+  EXPECT_TRUE(hasWarningWith(trial.joints.warnings, file.string() + ": the walker measures"));
+  EXPECT_TRUE(hasWarningWith(trial.joints.warnings, "probably mm, not cm; use --units mm"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace ew
