@@ -16,6 +16,7 @@ struct InfoArgs {
   bool json = false;
   double rateHz = 0.0;
   std::string units;
+  std::string mapping;  // joint mapping file (--mapping)
 };
 
 std::string joined(const std::vector<std::string>& items, const char* sep) {
@@ -44,15 +45,24 @@ nlohmann::json toJson(const TrialSummary& s) {
   return {{"straight_segments", segmentsJson(s)}, {"segment_used", s.segment},{"file", s.file}, {"format", s.format}, {"frames", s.frames}, {"rate_hz", s.rateHz},
           {"duration_s", s.durationS}, {"units", s.units}, {"points_found", s.pointsFound},
           {"source", s.source}, {"joints_estimated", s.estimatedJoints},
+          {"joints_model_estimated", s.modelEstimatedJoints},
           {"window_frames", s.windowFrames}, {"cycles", s.cycles}, {"stride_hz", s.strideHz},
           {"cycle_method", s.cycleMethod}, {"speed_mps", s.speedMps}, {"warnings", s.warnings},
           {"ok", s.ok()}, {"error", s.error}, {"error_stage", s.errorStage}};
 }
 
+// Joints estimated by the loader's rule, then those a model will estimate ("model: …").
+std::string estimatedCell(const TrialSummary& s) {
+  std::string cell = joined(s.estimatedJoints, ",");
+  if (!s.modelEstimatedJoints.empty())
+    cell += (cell.empty() ? "model: " : "; model: ") + joined(s.modelEstimatedJoints, ",");
+  return cell.empty() ? "-" : cell;
+}
+
 std::vector<std::string> tableRow(const TrialSummary& s) {
   return {s.file, s.format, std::to_string(s.frames), fixed(s.rateHz, 2), fixed(s.durationS, 2),
           s.units, std::to_string(s.pointsFound) + (s.source.empty() ? "" : " (" + s.source + ")"),
-          s.estimatedJoints.empty() ? "-" : joined(s.estimatedJoints, ","),
+          estimatedCell(s),
           s.ok() ? fixed(s.cycles, 2) : "-", s.ok() ? fixed(s.strideHz, 3) : "-",
           s.ok() ? fixed(s.speedMps, 2) : "-",
           s.ok() ? joined(s.warnings, "; ") : "ERROR (" + s.errorStage + "): " + s.error +
@@ -81,6 +91,7 @@ int runInfo(const InfoArgs& args) {
   LoadOptions options;
   if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
+  if (!args.mapping.empty()) options.mappingFile = args.mapping;
   std::vector<std::filesystem::path> paths(args.paths.begin(), args.paths.end());
   std::vector<std::string> warnings;
   std::vector<TrialSummary> summaries;
@@ -110,6 +121,9 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--json", args->json, "One JSON object per trial instead of a table");
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's (AMC has none)");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
+  cmd->add_option("--mapping", args->mapping,
+                  "Joint mapping file (JSON, docs/FORMATS.md): which markers make each joint, "
+                  "for marker sets the program does not know");
   cmd->callback([args, &exitCode] { exitCode = runInfo(*args); });
 }
 

@@ -1,8 +1,12 @@
-// `eigenwalker-cli joints FILE --out OUT.csv [--segment N]`: the normalised 15-joint
-// trajectories.
+// `eigenwalker-cli joints FILE --out OUT.csv [--segment N] [--model MODEL]`: the normalised
+// 15-joint trajectories. Joints the file does not measure (a lower-body marker set) are
+// estimated from --model, else the default model of real walkers, and named in a comment.
 #include <iostream>
 
 #include "app/cli/commands.h"
+#include "core/engine/default_model.h"
+#include "core/engine/joint_completion.h"
+#include "core/engine/model_file.h"
 #include "core/gait/dataset.h"
 #include "core/io/joint_csv.h"
 
@@ -14,13 +18,29 @@ struct JointsArgs {
   std::string out;
   double rateHz = 0.0;
   std::string units;
-  int segment = 0;  // 1-based; 0: the longest steady one
+  std::string mapping;  // joint mapping file (--mapping)
+  int segment = 0;    // 1-based; 0: the longest steady one
+  std::string model;  // completes missing joints; empty: the default model of real walkers
 };
+
+// Fills the joints the file lacks from the model; the comment line names them and the model.
+WalkingTrial completeFromModel(const WalkingTrial& trial, const JointsArgs& args,
+                               std::vector<std::string>& comments) {
+  if (!anyJoint(trial.joints.missing)) return trial;
+  const EigenwalkerModel model = args.model.empty() ? defaultRealModel() : loadModel(args.model);
+  const std::string name = args.model.empty() ? defaultRealModelName() : args.model;
+  CompletedTrial c = completeWalkingTrial(trial, model);
+  comments.push_back("model_estimated_joints=" + jointList(c.trial.modelEstimated) +
+                     " (not measured: estimated from the model " + name + ", sigma2 " +
+                     std::to_string(c.completion.sigma2Mm2) + " mm2)");
+  return std::move(c.trial);
+}
 
 int runJoints(const JointsArgs& args) {
   LoadOptions options;
   if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
+  if (!args.mapping.empty()) options.mappingFile = args.mapping;
   PrepareOptions prepare;
   if (args.segment != 0) prepare.segment = args.segment - 1;
   const WalkingTrial trial = loadWalkingTrial(args.file, options, prepare);
@@ -39,11 +59,12 @@ int runJoints(const JointsArgs& args) {
                    std::string(kJointNames[static_cast<size_t>(j)]);
   }
   if (!estimated.empty()) comments.push_back("estimated_joints=" + estimated);
-  for (const auto& w : trial.joints.warnings)
+  const WalkingTrial out = completeFromModel(trial, args, comments);
+  for (const auto& w : out.joints.warnings)
     std::cerr << "warning: " << args.file << ": " << w << "\n";
-  writeJointCsv(args.out, trial.joints.positionsMm, trial.joints.rateHz, comments);
-  std::cerr << "wrote " << args.out << ": " << trial.joints.frameCount() << " frames at "
-            << trial.joints.rateHz << " Hz\n";
+  writeJointCsv(args.out, out.joints.positionsMm, out.joints.rateHz, comments);
+  std::cerr << "wrote " << args.out << ": " << out.joints.frameCount() << " frames at "
+            << out.joints.rateHz << " Hz\n";
   return 0;
 }
 
@@ -58,9 +79,16 @@ void addJointsCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", args->out, "Output CSV (written atomically)")->required();
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
+  cmd->add_option("--mapping", args->mapping,
+                  "Joint mapping file (JSON, docs/FORMATS.md): which markers make each joint, "
+                  "for marker sets the program does not know");
   cmd->add_option("--segment", args->segment,
                   "Straight walking segment to use (1-based, as `info --json` lists them); "
                   "default: the one with the longest steady part");
+  cmd->add_option("--model", args->model,
+                  "Model (.ewm) that estimates the joints the file lacks (a lower-body marker "
+                  "set); default: the model of real walkers shipped with the program")
+      ->check(CLI::ExistingFile);
   cmd->callback([args, &exitCode] { exitCode = runJoints(*args); });
 }
 

@@ -184,7 +184,7 @@ void printReport(const json& r) {
     std::cerr << std::setprecision(1) << "E_a " << e["abs_error_mm2"].get<double>() << " mm2, E_r "
               << std::setprecision(3) << e["rel_error"].get<double>() << ", MPJPE " << std::setprecision(1)
               << e["mpjpe_mm"].get<double>() << " mm (vs raw frames: E_a " << e["abs_error_frames_mm2"].get<double>()
- << " mm2, MPJPE " << e["mpjpe_frames_mm"].get<double>() << " mm)\n";
+              << " mm2, MPJPE " << e["mpjpe_frames_mm"].get<double>() << " mm)\n";
   }
   if (!r["joints_model_estimated"].empty()) {
     std::cerr << "model-estimated (not in the input, no truth to score):";

@@ -1,6 +1,7 @@
 #include "core/engine/metrics.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -138,6 +139,38 @@ double mpjpe(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
   const Eigen::VectorXd t =
       Eigen::VectorXd::LinSpaced(samples, 0.0, 2.0 * std::numbers::pi * (samples - 1) / samples);
   return meanJointDistance(synthesizeFrames(wTrue, 1.0, 0.0, t), synthesizeFrames(wRec, 1.0, 0.0, t));
+}
+
+Eigen::VectorXd mpjpePerJoint(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
+                              const Eigen::Ref<const Eigen::VectorXd>& wRec, int samples) {
+  requireWalker(wTrue, "true walker");
+  requireWalker(wRec, "reconstruction");
+  if (samples < 1 || samples > kMaxMpjpeSamples)
+    metricsError(ErrorKind::BadArgument, "MPJPE needs 1 to " + std::to_string(kMaxMpjpeSamples) +
+                                             " samples, got " + std::to_string(samples));
+  const Eigen::VectorXd t =
+      Eigen::VectorXd::LinSpaced(samples, 0.0, 2.0 * std::numbers::pi * (samples - 1) / samples);
+  const Eigen::MatrixXd a = synthesizeFrames(wTrue, 1.0, 0.0, t);
+  const Eigen::MatrixXd b = synthesizeFrames(wRec, 1.0, 0.0, t);
+  Eigen::VectorXd perJoint(kJointCount);
+  for (int j = 0; j < kJointCount; ++j)
+    perJoint(j) = (a.middleCols<3>(3 * j) - b.middleCols<3>(3 * j)).rowwise().norm().mean();
+  return perJoint;
+}
+
+double meanOverJoints(const Eigen::Ref<const Eigen::VectorXd>& perJoint,
+                      const std::array<bool, kJointCount>& joints) {
+  if (perJoint.size() != kJointCount)
+    metricsError(ErrorKind::BadArgument, "per-joint errors need 15 values, got " +
+                                             std::to_string(perJoint.size()));
+  double sum = 0.0;
+  int count = 0;
+  for (int j = 0; j < kJointCount; ++j) {
+    if (!joints[static_cast<size_t>(j)]) continue;
+    sum += perJoint(j);
+    ++count;
+  }
+  return count > 0 ? sum / count : std::numeric_limits<double>::quiet_NaN();
 }
 
 double mpjpeFrames(const Eigen::Ref<const Eigen::MatrixXd>& framesTrue, double rateHz,

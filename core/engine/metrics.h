@@ -16,6 +16,9 @@
 // E_rel = NaN on purpose: the relative error is undefined, E_abs is still reported.
 
 #include <Eigen/Core>
+#include <array>
+
+#include "core/common/skeleton.h"
 
 namespace ew {
 
@@ -48,6 +51,16 @@ double depthVarianceMm2(const Eigen::Ref<const Eigen::VectorXd>& wTrue, double a
 // form; 120 samples ≈ a 120 Hz cycle).
 double mpjpe(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
              const Eigen::Ref<const Eigen::VectorXd>& wRec, int samples = 120);
+
+// MPJPE of each joint (15, mm), same sampling as mpjpe: the errors of measured and of
+// model-estimated joints (core/engine/joint_completion.h) are reported apart.
+Eigen::VectorXd mpjpePerJoint(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
+                              const Eigen::Ref<const Eigen::VectorXd>& wRec, int samples = 120);
+
+// Mean of perJoint (15) over the joints flagged in `joints`; NaN when none is flagged
+// (no such joint: nothing to report, not a zero error).
+double meanOverJoints(const Eigen::Ref<const Eigen::VectorXd>& perJoint,
+                      const std::array<bool, kJointCount>& joints);
 
 // MPJPE against raw frames (T × 45; NaN frames skipped), reconstruction at ω, φ.
 double mpjpeFrames(const Eigen::Ref<const Eigen::MatrixXd>& framesTrue, double rateHz,

@@ -6,6 +6,7 @@
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
+#include "core/gait/missing_joints.h"
 
 namespace ew {
 namespace {
@@ -39,6 +40,13 @@ FourierFit fitTrial(const DatasetTrial& t) {
                 "walkers: the trial's joints have " +
                     std::to_string(t.trial.joints.positionsMm.cols()) +
                     " columns, 45 (3D) expected");
+  // A model is not built from its own estimates: a trial that lacks joints (a lower-body
+  // marker set) can be completed by a model (joint_completion.h) but is no walker of one.
+  const JointMask missing = missingJointsOf(t.trial.joints);
+  if (anyJoint(missing))
+    throw Error(ErrorKind::BadData, t.info.file, "",
+                "walkers: joints not measured (" + jointList(missing) +
+                    "): a model is built from complete walkers only");
   // A hint only when gait events gave a usable frequency (fitFourier rejects others).
   if (std::isfinite(t.trial.cycles.strideHz) && t.trial.cycles.strideHz > 0.0)
     options.omegaHintRadS = 2.0 * std::numbers::pi * t.trial.cycles.strideHz;

@@ -28,7 +28,8 @@ struct Walker {
 // left out with a warning "file: reason" (as is a walker left with no trial); fit warnings
 // are kept on the walker, prefixed with the file. A trial whose joints are not 3D (45
 // columns) is left out the same way; a stride frequency that is not positive and finite is
-// no hint (the scan alone decides ω).
+// no hint (the scan alone decides ω). A trial with joints missing throughout
+// (missing_joints.h) is left out the same way: a model is not built from its own estimates.
 std::vector<Walker> makeWalkers(const Dataset& dataset, std::vector<std::string>* warnings = nullptr);
 
 // W = [w_1 … w_R] (225 × R).

@@ -146,6 +146,7 @@ std::string experimentName(Experiment e) {
     case Experiment::UnknownView: return "unknown-view";
     case Experiment::Noise: return "noise";
     case Experiment::MissingJoints: return "missing-joints";
+    case Experiment::LowerBody: return "lower-body";
   }
   return "";
 }
@@ -153,7 +154,8 @@ std::string experimentName(Experiment e) {
 const std::vector<Experiment>& allExperiments() {
   static const std::vector<Experiment> kAll = {
       Experiment::Variance,    Experiment::SigmaSweep, Experiment::KnownView,
-      Experiment::UnknownView, Experiment::Noise,      Experiment::MissingJoints};
+      Experiment::UnknownView, Experiment::Noise,      Experiment::MissingJoints,
+      Experiment::LowerBody};
   return kAll;
 }
 
@@ -533,6 +535,9 @@ EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
   timed(Experiment::UnknownView, [&] { res.unknownView = unknownViewErrors(walkers, folds, options, s2); });
   timed(Experiment::Noise, [&] { res.noise = noiseErrors(walkers, folds, options, s2, res.warnings); });
   timed(Experiment::MissingJoints, [&] { res.missingJoints = missingJointErrors(walkers, folds, options, s2); });
+  timed(Experiment::LowerBody, [&] {
+    res.lowerBody = lowerBodyErrors(walkers, folds, options.lsq, options.map, s2, options.threads);
+  });
   return res;
 }
 

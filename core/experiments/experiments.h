@@ -15,10 +15,11 @@
 #include <vector>
 
 #include "core/experiments/leave_one_out.h"
+#include "core/experiments/lower_body.h"
 
 namespace ew {
 
-enum class Experiment { Variance, SigmaSweep, KnownView, UnknownView, Noise, MissingJoints };
+enum class Experiment { Variance, SigmaSweep, KnownView, UnknownView, Noise, MissingJoints, LowerBody };
 
 std::string experimentName(Experiment e);  // "variance", "sigma-sweep", …
 std::optional<Experiment> experimentFromName(const std::string& name);
@@ -101,6 +102,7 @@ struct EvaluationResults {
   double sigma2UsedMm2 = 0;             // σ² of every other MAP result
   std::vector<ViewErrorRow> knownView, noise, missingJoints;
   std::vector<UnknownViewRow> unknownView;
+  std::vector<LowerBodyRow> lowerBody;  // experiment "lower-body" (lower_body.h)
   std::vector<std::pair<std::string, double>> timingsS;  // per experiment, wall seconds
   std::vector<std::string> warnings;
 };

@@ -89,6 +89,12 @@ std::string missingJointsCsv(const std::vector<ViewErrorRow>& rows) {
   return csv(kMissingJointsHeader, rows, [](const ViewErrorRow& r) { return viewErrorLine(r, true); });
 }
 
+std::string lowerBodyCsv(const std::vector<LowerBodyRow>& rows) {
+  return csv(kLowerBodyHeader, rows, [](const LowerBodyRow& r) {
+    return join({r.subject, r.walker, r.joint, r.method, num(r.mpjpeMm)});
+  });
+}
+
 // [SECTION] summary.json
 
 namespace {
@@ -172,6 +178,11 @@ std::string summaryJson(const EvaluationResults& r, const EvaluationProvenance& 
   if (r.ran.count(Experiment::UnknownView)) s["unknown_view"] = unknownViewSummary(r.unknownView);
   if (r.ran.count(Experiment::Noise)) s["noise_mean_abs_error_mm2"] = byCondition(r.noise);
   if (r.ran.count(Experiment::MissingJoints)) s["missing_joints_mean_abs_error_mm2"] = byCondition(r.missingJoints);
+  if (r.ran.count(Experiment::LowerBody)) {
+    json lower = json::object();  // method → joint (and "all") → mean MPJPE of estimated joints, mm
+    for (const auto& m : summarizeLowerBody(r.lowerBody)) lower[m.method][m.joint] = m.meanMpjpeMm;
+    s["lower_body_estimated_mpjpe_mm"] = lower;
+  }
   json timings = json::object();
   for (const auto& [name, seconds] : r.timingsS) timings[name] = seconds;
   s["timings_s"] = timings;
@@ -227,6 +238,7 @@ std::vector<std::string> writeResultsFolder(const fs::path& dir, const Evaluatio
     if (r.ran.count(Experiment::UnknownView)) add("unknown_view.csv", unknownViewCsv(r.unknownView));
     if (r.ran.count(Experiment::Noise)) add("noise.csv", noiseCsv(r.noise));
     if (r.ran.count(Experiment::MissingJoints)) add("missing_joints.csv", missingJointsCsv(r.missingJoints));
+    if (r.ran.count(Experiment::LowerBody)) add("lower_body.csv", lowerBodyCsv(r.lowerBody));
     if (options.plots) {
       for (const auto& name : writeEvaluationPlots(partial, r)) {
         written.push_back(name);

@@ -20,6 +20,7 @@ inline constexpr const char* kKnownViewHeader = "subject,angle_deg,method,abs_er
 inline constexpr const char* kUnknownViewHeader = "subject,true_angle_deg,method,est_angle_deg,angle_error_deg,abs_error_mm2,mpjpe_mm";
 inline constexpr const char* kNoiseHeader = "subject,noise_mm,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm";
 inline constexpr const char* kMissingJointsHeader = "subject,missing,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm";
+inline constexpr const char* kLowerBodyHeader = "subject,walker,estimated_joint,method,mpjpe_mm";
 
 std::string harmonicsCsv(const std::vector<HarmonicsRow>& rows);
 std::string varianceCsv(const std::vector<VarianceRow>& rows);
@@ -28,6 +29,7 @@ std::string knownViewCsv(const std::vector<ViewErrorRow>& rows);
 std::string unknownViewCsv(const std::vector<UnknownViewRow>& rows);
 std::string noiseCsv(const std::vector<ViewErrorRow>& rows);
 std::string missingJointsCsv(const std::vector<ViewErrorRow>& rows);
+std::string lowerBodyCsv(const std::vector<LowerBodyRow>& rows);
 
 // What produced the results (recorded in summary.json).
 struct EvaluationProvenance {

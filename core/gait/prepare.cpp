@@ -1,6 +1,7 @@
 #include "core/gait/prepare.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "core/common/errors.h"
@@ -8,6 +9,7 @@
 #include "core/gait/canonical_frame.h"
 #include "core/gait/gait_cycles.h"
 #include "core/gait/gaps.h"
+#include "core/gait/missing_joints.h"
 #include "core/io/reader_limits.h"
 
 namespace ew {
@@ -52,9 +54,35 @@ void rejectGlitches(Eigen::MatrixXd& m, double rateHz, std::vector<std::string>&
                      (outliers.rejectedSamples > 1 ? ", …)" : ")"));
 }
 
+// [SECTION] Joints missing throughout
+
+// Missing joints are not gaps: while the frame is made their columns hold stand-ins, so no
+// frame counts as incomplete for their sake — the pelvis the mid-hip (the progression and
+// the steady window follow it), every other joint the pelvis (the up axis then points from
+// the ankles to the pelvis). useWindow sets them back to NaN.
+void standInForMissing(Eigen::MatrixXd& m, const JointMask& missing) {
+  const auto pelvis = static_cast<size_t>(index(Joint::Pelvis));
+  if (missing[pelvis]) {
+    m.middleCols<3>(3 * index(Joint::Pelvis)) =
+        0.5 * (m.middleCols<3>(3 * index(Joint::RHip)) + m.middleCols<3>(3 * index(Joint::LHip)));
+  }
+  for (int j = 0; j < kJointCount; ++j) {
+    if (missing[static_cast<size_t>(j)] && j != index(Joint::Pelvis))
+      m.middleCols<3>(3 * j) = m.middleCols<3>(3 * index(Joint::Pelvis));
+  }
+}
+
+void blankMissing(Eigen::MatrixXd& m, const JointMask& missing) {
+  for (int j = 0; j < kJointCount; ++j) {
+    if (missing[static_cast<size_t>(j)])
+      m.middleCols<3>(3 * j).setConstant(std::numeric_limits<double>::quiet_NaN());
+  }
+}
+
 // Gap-free rows [begin, end) with z up.
 Eigen::MatrixXd completeRunZUp(const JointTrial& t, const PrepareOptions& o, WalkingTrial& out) {
   Eigen::MatrixXd m = t.positionsMm;
+  standInForMissing(m, out.joints.missing);
   if (o.rejectOutliers) rejectGlitches(m, t.rateHz, out.joints.warnings);
   const int maxGap = std::max(1, static_cast<int>(std::lround(o.maxGapS * t.rateHz)));
   GapReport gaps = bridgeShortGaps(m, maxGap);
@@ -202,6 +230,7 @@ void useWindow(const Eigen::MatrixXd& run, int runBegin, const Candidate& c, con
   const double speed = toCanonical(m, t.rateHz, warnings);
   const double offsetS = (runBegin + c.begin) / t.rateHz;
   out.cycles = detectGaitCycles(m, t.rateHz, shiftEvents(t.events, offsetS), t.file);
+  blankMissing(m, out.joints.missing);
   if (!c.note.empty()) warnings.push_back(c.note);
   out.windowBegin = runBegin + c.begin;
   out.windowEnd = runBegin + c.end;
@@ -222,6 +251,8 @@ WalkingTrial prepareWalkingTrial(const JointTrial& t, const PrepareOptions& o) {
   out.joints.positionsMm.resize(0, kDims3);  // filled with the window; no second full copy
   out.loadedFrames = t.frameCount();
   if (auto size = bodySizeWarning(t)) out.joints.warnings.push_back(*size);  // a wrong --units
+  out.joints.missing = missingJointsOf(t);
+  if (anyJoint(out.joints.missing)) requireMinimumMeasured(out.joints.missing, t.file, "walking");
   const Eigen::MatrixXd run = completeRunZUp(t, o, out);
   const int runBegin = out.windowBegin;
   const int runFrames = static_cast<int>(run.rows());

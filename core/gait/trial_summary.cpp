@@ -1,6 +1,7 @@
 #include "core/gait/trial_summary.h"
 
 #include "core/common/errors.h"
+#include "core/gait/missing_joints.h"
 #include "core/gait/prepare.h"
 #include "core/mapping/joint_mapping.h"
 
@@ -17,12 +18,21 @@ void fillFromRaw(const RawTrial& raw, TrialSummary& s) {
   s.warnings = raw.warnings;
 }
 
+void fillModelEstimated(const JointMask& missing, TrialSummary& s) {
+  s.modelEstimatedJoints.clear();
+  for (int j = 0; j < kJointCount; ++j) {
+    if (missing[static_cast<size_t>(j)])
+      s.modelEstimatedJoints.emplace_back(kJointNames[static_cast<size_t>(j)]);
+  }
+}
+
 void fillFromJoints(const JointTrial& joints, TrialSummary& s) {
   s.source = joints.source;
   for (int j = 0; j < kJointCount; ++j) {
     if (joints.estimated[static_cast<size_t>(j)])
       s.estimatedJoints.emplace_back(kJointNames[static_cast<size_t>(j)]);
   }
+  fillModelEstimated(missingJointsOf(joints), s);
   s.warnings = joints.warnings;
 }
 
@@ -34,6 +44,7 @@ void fillFromWalking(const WalkingTrial& w, TrialSummary& s) {
   s.speedMps = w.speedMps;
   s.segments = w.segments;
   s.segment = w.segment;
+  fillModelEstimated(w.joints.missing, s);
   s.warnings = w.joints.warnings;
 }
 

@@ -3,6 +3,7 @@
 // y forward, z up, progression and heading removed), cropped to its steady straight-walking
 // window, with its gait cycles.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,11 @@ struct WalkingTrial {
   // whole trial was used (treadmill, or cropping off).
   std::vector<StraightSegment> segments;
   int segment = -1;
+  // Joints not measured are joints.missing (their columns NaN after prepare). Once a model
+  // completes the trial (core/engine/joint_completion.h), their columns hold frames
+  // synthesised from the model and they are flagged here: draw them differently and report
+  // their errors apart from the measured joints'.
+  std::array<bool, kJointCount> modelEstimated{};
 };
 
 }  // namespace ew

@@ -200,6 +200,7 @@ TEST(ResultsFolder, HeadersSummaryAndFigures) {
             "subject,noise_mm,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm");
   EXPECT_EQ(firstLine(out / "missing_joints.csv"),
             "subject,missing,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm");
+  EXPECT_EQ(firstLine(out / "lower_body.csv"), "subject,walker,estimated_joint,method,mpjpe_mm");
   // One line per row plus the header.
   const std::string known = readText(out / "known_view.csv");
   EXPECT_EQ(std::count(known.begin(), known.end(), '\n'), 1 + 6 * 5 * 2);
@@ -218,7 +219,9 @@ TEST(ResultsFolder, HeadersSummaryAndFigures) {
     EXPECT_TRUE(s["unknown_view"][m].contains("mae_deg_abs_le_60"));
   }
   EXPECT_TRUE(s["known_view"].contains("map_vs_lsq_reduction"));
-  for (const char* t : {"variance", "folds", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints"}) {
+  for (const char* m : {"lsq", "map", "mean"}) EXPECT_TRUE(s["lower_body_estimated_mpjpe_mm"][m].contains("all")) << m;
+  for (const char* t : {"variance", "folds", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints",
+                        "lower-body"}) {
     EXPECT_TRUE(s["timings_s"].contains(t)) << t;
   }
   EXPECT_EQ(s["data_files"][0], "a.c3d");
