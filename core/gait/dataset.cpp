@@ -5,7 +5,9 @@
 
 #include "core/common/errors.h"
 #include "core/gait/prepare.h"
+#include "core/io/asf_amc_reader.h"
 #include "core/io/file_bytes.h"
+#include "core/io/load_trial.h"
 #include "core/io/text_table.h"
 #include "core/mapping/joint_mapping.h"
 
@@ -108,6 +110,37 @@ std::vector<PendingTrial> folderTrials(const fs::path& folder, std::vector<std::
   return trials;
 }
 
+bool hasExtension(const fs::path& p, const char* ext) {
+  return toLower(p.extension().string()) == ext;
+}
+
+// An .asf is a skeleton: given together with .amc files it adds no trial (the reader pairs
+// each .amc with the .asf in its folder); given alone it stands for the .amc files beside it
+// that pair with it.
+std::vector<PendingTrial> asfTrials(const fs::path& asf, const std::vector<fs::path>& paths,
+                                    std::vector<std::string>& warnings) {
+  std::vector<PendingTrial> out;
+  bool withAmc = false;
+  for (const auto& q : paths) {
+    if (!hasExtension(q, ".amc")) continue;
+    withAmc = true;
+    std::error_code ec;
+    const fs::path paired = asfSkeletonFor(q);
+    if (!fs::equivalent(paired, asf, ec)) {
+      warnings.push_back(q.string() + ": opened with the skeleton beside it, " + paired.string() +
+                         ", not " + asf.string() + " (an .amc pairs with the .asf in its folder)");
+    }
+  }
+  if (withAmc) return out;
+  for (const auto& amc : amcMotionsFor(asf)) out.push_back({amc, infoFromFileName(amc), true});
+  if (out.empty()) {
+    throw Error(ErrorKind::Io, asf.string(), "",
+                "an .asf file is a skeleton only, and no .amc motion file beside it pairs with "
+                "it (open the .amc, or both files)");
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<TrialFile> collectTrialFiles(const std::vector<fs::path>& paths,
@@ -122,6 +155,8 @@ std::vector<TrialFile> collectTrialFiles(const std::vector<fs::path>& paths,
     }
     if (fs::is_directory(p, ec))
       more = folderTrials(p, warnings);
+    else if (hasExtension(p, ".asf") && fs::exists(p, ec))
+      more = asfTrials(p, paths, warnings);
     else if (toLower(p.extension().string()) == ".csv" && fs::exists(p, ec) && isManifest(p))
       more = manifestTrials(p, warnings);
     else
@@ -148,7 +183,7 @@ bool isManifest(const fs::path& file) {
 
 WalkingTrial loadWalkingTrial(const fs::path& file, const LoadOptions& options,
                               const PrepareOptions& prepare) {
-  JointTrial joints = toJointTrial(readRawTrial(file, options));  // the raw points are gone here
+  JointTrial joints = mapRawTrial(readRawTrial(file, options), options);  // raw points gone here
   return prepareWalkingTrial(joints, prepare);
 }
 

@@ -60,7 +60,7 @@ TrialSummary summarizeTrial(const std::filesystem::path& file, const LoadOptions
       const RawTrial raw = readRawTrial(file, options);
       fillFromRaw(raw, s);
       s.errorStage = "joints";
-      joints = toJointTrial(raw);
+      joints = mapRawTrial(raw, options);
     }
     fillFromJoints(joints, s);
     s.errorStage = "walking";

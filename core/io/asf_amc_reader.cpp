@@ -728,6 +728,26 @@ RawTrial parseAsfAmc(std::string_view asfText, std::string_view amcText, const s
   return parseAsfAmc(asfText, amcText, name, name, options);
 }
 
+std::filesystem::path asfSkeletonFor(const std::filesystem::path& amcFile) {
+  return findAsf(amcFile);
+}
+
+std::vector<std::filesystem::path> amcMotionsFor(const std::filesystem::path& asfFile) {
+  const auto dir = asfFile.has_parent_path() ? asfFile.parent_path() : std::filesystem::path(".");
+  std::error_code ec;
+  std::vector<std::filesystem::path> out;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    if (toLower(entry.path().extension().string()) != ".amc") continue;
+    try {
+      if (std::filesystem::equivalent(findAsf(entry.path()), asfFile, ec)) out.push_back(entry.path());
+    } catch (const Error&) {
+      // an .amc that pairs with no .asf here is not this skeleton's motion
+    }
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 RawTrial readAsfAmc(const std::filesystem::path& amcFile, const LoadOptions& options) {
   const auto amcText = readFileText(amcFile);
   const auto asfFile = findAsf(amcFile);

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/common/trial.h"
 #include "core/io/load_trial.h"
@@ -27,6 +28,11 @@ namespace ew {
 // `file` is the .amc; the skeleton is the .asf in the same folder (the one whose stem
 // prefixes the AMC's, e.g. 35.asf for 35_01.amc, else the only .asf there).
 RawTrial readAsfAmc(const std::filesystem::path& amcFile, const LoadOptions& options = {});
+// The .asf readAsfAmc pairs with an .amc (Error(Io) naming the .amc when there is none), and
+// the .amc files in an .asf's folder that pair with it (sorted), so "x.asf + y.amc" given
+// together, or an .asf alone, open as the AMC trials (core/gait/dataset.cpp).
+std::filesystem::path asfSkeletonFor(const std::filesystem::path& amcFile);
+std::vector<std::filesystem::path> amcMotionsFor(const std::filesystem::path& asfFile);
 RawTrial parseAsfAmc(std::string_view asfText, std::string_view amcText, const std::string& name,
                      const LoadOptions& options = {});
 // The same, with separate names so errors in the skeleton name the .asf.

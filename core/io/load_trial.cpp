@@ -9,6 +9,8 @@
 #include "core/io/joint_csv.h"
 #include "core/io/text_table.h"
 #include "core/io/trc_reader.h"
+#include "core/mapping/joint_mapping.h"
+#include "core/mapping/mapping_file.h"
 
 namespace ew {
 
@@ -59,6 +61,17 @@ RawTrial readRawTrial(const std::filesystem::path& file, const LoadOptions& opti
     case FileFormat::Csv: return readJointCsv(file, options);
   }
   throw Error(ErrorKind::Unsupported, file.string(), "", "unknown format");
+}
+
+JointTrial mapRawTrial(const RawTrial& raw, const LoadOptions& options) {
+  if (!options.mappingFile) return toJointTrial(raw);
+  const std::string mapping = options.mappingFile->string();
+  if (raw.kind != PointKind::Markers) {
+    throw Error(ErrorKind::BadArgument, mapping, "",
+                "a joint mapping applies to marker files (C3D, TRC), not to " + raw.format +
+                    " " + raw.file);
+  }
+  return applyJointMapping(raw, readJointMappingFile(*options.mappingFile), mapping);
 }
 
 }  // namespace ew

