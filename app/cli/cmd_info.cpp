@@ -17,7 +17,6 @@ struct InfoArgs {
   double rateHz = 0.0;
   std::string units;
   std::string mapping;  // joint mapping file (--mapping)
-  std::string mapping;  // joint mapping file (--mapping)
 };
 
 std::string joined(const std::vector<std::string>& items, const char* sep) {
@@ -93,7 +92,6 @@ int runInfo(const InfoArgs& args) {
   if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
   if (!args.mapping.empty()) options.mappingFile = args.mapping;
-  if (!args.mapping.empty()) options.mappingFile = args.mapping;
   std::vector<std::filesystem::path> paths(args.paths.begin(), args.paths.end());
   std::vector<std::string> warnings;
   std::vector<TrialSummary> summaries;
@@ -123,9 +121,6 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--json", args->json, "One JSON object per trial instead of a table");
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's (AMC has none)");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
-  cmd->add_option("--mapping", args->mapping,
-                  "Joint mapping file (JSON, docs/FORMATS.md): which markers make each joint, "
-                  "for marker sets the program does not know");
   cmd->add_option("--mapping", args->mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md): which markers make each joint, "
                   "for marker sets the program does not know");

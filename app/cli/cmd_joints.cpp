@@ -19,7 +19,6 @@ struct JointsArgs {
   double rateHz = 0.0;
   std::string units;
   std::string mapping;  // joint mapping file (--mapping)
-  std::string mapping;  // joint mapping file (--mapping)
   int segment = 0;    // 1-based; 0: the longest steady one
   std::string model;  // completes missing joints; empty: the default model of real walkers
 };
@@ -41,7 +40,6 @@ int runJoints(const JointsArgs& args) {
   LoadOptions options;
   if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
-  if (!args.mapping.empty()) options.mappingFile = args.mapping;
   if (!args.mapping.empty()) options.mappingFile = args.mapping;
   PrepareOptions prepare;
   if (args.segment != 0) prepare.segment = args.segment - 1;
@@ -81,9 +79,6 @@ void addJointsCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--out", args->out, "Output CSV (written atomically)")->required();
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
-  cmd->add_option("--mapping", args->mapping,
-                  "Joint mapping file (JSON, docs/FORMATS.md): which markers make each joint, "
-                  "for marker sets the program does not know");
   cmd->add_option("--mapping", args->mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md): which markers make each joint, "
                   "for marker sets the program does not know");
