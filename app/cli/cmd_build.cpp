@@ -21,6 +21,7 @@ struct BuildArgs {
   double variance = 0.0;
   bool noSigma2Sweep = false;
   int threads = 0;  // 0 = hardware concurrency
+  std::string mapping;  // joint mapping file (--mapping)
 };
 
 void printSigma2(const ModelBuildResult& r) {
@@ -39,6 +40,7 @@ int runBuild(const BuildArgs& a) {
   if (a.components > 0) options.model.components = a.components;
   if (a.variance > 0) options.model.varianceThreshold = a.variance;
   options.measureSigma2 = !a.noSigma2Sweep;
+  if (!a.mapping.empty()) options.load.mappingFile = a.mapping;
   options.threads = a.threads > 0
                         ? a.threads
                         : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -58,6 +60,9 @@ void addBuildCommand(CLI::App& app, int& exitCode) {
   auto args = std::make_shared<BuildArgs>();
   auto* cmd = app.add_subcommand("build", "Build an eigenwalker model (SPEC §4) from walking trials and save it");
   cmd->add_option("--data", args->data, "Trial files, folders (recursive) or manifest CSVs")->required();
+  cmd->add_option("--mapping", args->mapping,
+                  "Joint mapping file (JSON, docs/FORMATS.md) for marker files whose set the "
+                  "program does not know");
   cmd->add_option("--out", args->out, "Model file to write (atomically)")->required();
   auto* components = cmd->add_option("--components", args->components, "Number of eigenwalkers (at most walkers - 1)")
                          ->check(CLI::Range(1, 100000));

@@ -38,6 +38,7 @@ struct ReconstructArgs {
   bool unknownAngle = false, json = false, dataPreserving = false;
   std::optional<double> sigma2Mm2;  // unset: the model's stored optimum (defaultSigma2Mm2)
   std::optional<int> components;    // unset: every eigenwalker of the model
+  std::string mapping;              // joint mapping file for a 3D marker input (--mapping)
 };
 
 // The model the user named, or the default one; truncated to --components (the viewer's
@@ -98,7 +99,9 @@ Input readInput(const ReconstructArgs& a) {
     throw Error(ErrorKind::BadArgument, "--project-angle", "",
                 a.input + " is a 3D trial: give --project-angle DEG to view it in 2D (or pass a 2D CSV)");
   }
-  const WalkingTrial trial = loadWalkingTrial(a.input);
+  LoadOptions load;
+  if (!a.mapping.empty()) load.mappingFile = a.mapping;
+  const WalkingTrial trial = loadWalkingTrial(a.input, load);
   in.frames3d = trial.joints.positionsMm;
   in.missing = trial.joints.missing;
   in.view = {projectFramesToView(in.frames3d, *a.projectAngleDeg), trial.joints.rateHz};
@@ -284,6 +287,9 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
                   "Use the first N eigenwalkers of the model (as the viewer's N)")
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--input", args->input, "2D CSV or 3D trial file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--mapping", args->mapping,
+                  "Joint mapping file (JSON, docs/FORMATS.md) for a 3D marker input whose set "
+                  "the program does not know");
   cmd->add_option("--out", args->out, "3D joint CSV to write")->required();
   cmd->add_option("--angle", args->angleDeg, "Known view angle in degrees (0 frontal, +-90 profile)");
   cmd->add_flag("--unknown-angle", args->unknownAngle, "Estimate the view angle over the whole circle");

@@ -96,7 +96,7 @@ ModelBuildResult buildModelFromData(const std::vector<fs::path>& data,
                                     const ModelBuildOptions& options) {
   if (data.empty())
     throw Error(ErrorKind::BadArgument, "--data", "", "no data to build a model from");
-  const Dataset dataset = loadDataset(data);
+  const Dataset dataset = loadDataset(data, options.load);
   ModelBuildResult result;
   result.warnings = dataset.warnings;
   std::vector<Walker> walkers = makeWalkers(dataset, &result.warnings);

@@ -12,6 +12,7 @@
 
 #include "core/engine/model.h"
 #include "core/experiments/leave_one_out.h"
+#include "core/io/load_trial.h"
 
 namespace ew {
 
@@ -39,6 +40,7 @@ struct ModelBuildOptions {
   bool measureSigma2 = true;
   Sigma2SweepPlan sigma2Plan = defaultBuildSigma2Plan();
   int threads = 1;  // the sweep's folds; the result does not depend on it
+  LoadOptions load;  // how trials are read (e.g. a joint mapping file for unknown marker sets)
 };
 
 struct ModelBuildResult {
