@@ -2,6 +2,7 @@
 // 15-joint trajectories. Joints the file does not measure (a lower-body marker set) are
 // estimated from --model, else the default model of real walkers, and named in a comment.
 #include <iostream>
+#include <sstream>
 
 #include "app/cli/commands.h"
 #include "core/engine/default_model.h"
@@ -19,8 +20,8 @@ struct JointsArgs {
   double rateHz = 0.0;
   std::string units;
   std::string mapping;  // joint mapping file (--mapping)
-  int segment = 0;    // 1-based; 0: the longest steady one
-  std::string model;  // completes missing joints; empty: the default model of real walkers
+  int segment = 0;      // 1-based; 0: the longest steady one
+  std::string model;    // completes missing joints; empty: the default model of real walkers
 };
 
 // Fills the joints the file lacks from the model; the comment line names them and the model.
@@ -30,9 +31,11 @@ WalkingTrial completeFromModel(const WalkingTrial& trial, const JointsArgs& args
   const EigenwalkerModel model = args.model.empty() ? defaultRealModel() : loadModel(args.model);
   const std::string name = args.model.empty() ? defaultRealModelName() : args.model;
   CompletedTrial c = completeWalkingTrial(trial, model);
-  comments.push_back("model_estimated_joints=" + jointList(c.trial.modelEstimated) +
-                     " (not measured: estimated from the model " + name + ", sigma2 " +
-                     std::to_string(c.completion.sigma2Mm2) + " mm2)");
+  std::ostringstream line;
+  line << "model_estimated_joints=" << jointList(c.trial.modelEstimated)
+       << " (not measured: estimated from the model " << name << ", sigma2 "
+       << c.completion.sigma2Mm2 << " mm2)";
+  comments.push_back(line.str());
   return std::move(c.trial);
 }
 

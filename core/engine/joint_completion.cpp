@@ -50,9 +50,10 @@ Eigen::VectorXd mapCoefficients(const EigenwalkerModel& model,
   if (!ro.allFinite())
     completionError(ErrorKind::BadArgument, "the measured joints' coefficients are not finite");
   // λ floored as in precomputeModelGram: a zero eigenvalue must not divide.
-  const double floor = 1e-12 * std::max(model.eigenvalues.maxCoeff(), 1e-300);
+  const double lambdaFloor = 1e-12 * std::max(model.eigenvalues.maxCoeff(), 1e-300);
   Eigen::MatrixXd g = eo.transpose() * eo;
-  for (Eigen::Index i = 0; i < n; ++i) g(i, i) += sigma2 / std::max(model.eigenvalues(i), floor);
+  for (Eigen::Index i = 0; i < n; ++i)
+    g(i, i) += sigma2 / std::max(model.eigenvalues(i), lambdaFloor);
   const Eigen::VectorXd b = eo.transpose() * ro;
   Eigen::LLT<Eigen::MatrixXd> llt(g);
   Eigen::VectorXd k = llt.info() == Eigen::Success ? Eigen::VectorXd(llt.solve(b))

@@ -13,6 +13,7 @@
 #include "core/engine/projection.h"
 #include "core/engine/reconstruction.h"
 #include "core/engine/synthetic_walkers.h"
+#include "core/engine/walker_set.h"
 #include "core/gait/prepare.h"
 #include "core/io/load_trial.h"
 #include "core/mapping/joint_mapping.h"
@@ -293,6 +294,33 @@ TEST(MissingJointsRealData, LowerBodyOfARealTrialPrepares) {
   const FourierFit fit =
       fitFourierMeasured(b.joints.positionsMm, b.joints.rateHz, b.joints.missing);
   EXPECT_GT(fit.h1Share, 0.5);
+}
+
+}  // namespace
+}  // namespace ew
+
+namespace ew {
+namespace {
+
+// [SECTION] A model is not built from its own estimates
+
+TEST(MissingJointsWalkers, PartialTrialsAreLeftOutOfTheModelWithAWarning) {
+  Dataset dataset;
+  for (const char* name : {"full", "lower"}) {
+    JointTrial t = test::analyticWalkTrial(gait());
+    t.file = name;
+    if (std::string(name) == "lower") t.positionsMm = blank(t.positionsMm, upperBody());
+    dataset.trials.push_back({{name, name, "test", "walk", {}}, prepareWalkingTrial(t)});
+  }
+  std::vector<std::string> warnings;
+  const std::vector<Walker> walkers = makeWalkers(dataset, &warnings);
+  ASSERT_EQ(walkers.size(), 1u);
+  EXPECT_EQ(walkers[0].subject, "full");
+  bool named = false;
+  for (const auto& w : warnings)
+    named = named || (w.find("lower") != std::string::npos &&
+                      w.find("joints not measured (head, sternum") != std::string::npos);
+  EXPECT_TRUE(named);
 }
 
 }  // namespace
