@@ -14,6 +14,7 @@
 #include "core/engine/reconstruction.h"
 #include "core/engine/synthetic_walkers.h"
 #include "core/engine/walker_set.h"
+#include "core/experiments/lower_body.h"
 #include "core/gait/prepare.h"
 #include "core/io/load_trial.h"
 #include "core/mapping/joint_mapping.h"
@@ -321,6 +322,32 @@ TEST(MissingJointsWalkers, PartialTrialsAreLeftOutOfTheModelWithAWarning) {
     named = named || (w.find("lower") != std::string::npos &&
                       w.find("joints not measured (head, sternum") != std::string::npos);
   EXPECT_TRUE(named);
+}
+
+}  // namespace
+}  // namespace ew
+
+namespace ew {
+namespace {
+
+// [SECTION] The lower-body experiment on the shared walkers
+
+TEST(LowerBodyRealData, ModelEstimatesTheUpperBodyBetterThanTheMeanWalker) {
+  EW_REQUIRE_SHARED_DATA();
+  const Dataset dataset = loadDataset({test::sharedDataDir() / "walkers.csv"});
+  const auto walkers = experimentWalkers(makeWalkers(dataset), dataset);
+  const auto folds = buildFolds(walkers, {}, 2);
+  const auto rows = lowerBodyErrors(walkers, folds, true, true, 1000.0, 2);
+  double map = 0, mean = 0;
+  for (const auto& s : summarizeLowerBody(rows)) {
+    if (s.joint != "all") continue;
+    if (s.method == "map") map = s.meanMpjpeMm;
+    if (s.method == "mean") mean = s.meanMpjpeMm;
+  }
+  std::printf("lower body, 24 walkers: MAP %.1f mm, mean walker %.1f mm\n", map, mean);
+  EXPECT_EQ(rows.size(), walkers.size() * 8 * 3);
+  EXPECT_GT(map, 0.0);
+  EXPECT_LT(map, 0.8 * mean);
 }
 
 }  // namespace
