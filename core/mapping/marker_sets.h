@@ -1,16 +1,13 @@
 #pragma once
 // Skin-marker sets -> the 15 joints of SPEC §1. Entry point: mapMarkerSet (declared in
-// joint_mapping.h). The rules, formulas and citations are in docs/JOINTS.md; this header
-// exposes the pieces the tests and the docs refer to.
-//
-// Known sets (matched on labels, case-insensitive, "Subject:" prefixes ignored):
-//   ISB (Schreiber-Moissenet)  L_IAS R_IAS L_IPS R_IPS, L_FLE/L_FME, L_FAL/L_TAM, L_SAA,
-//                              L_HLE/L_HME, L_RSP/L_UHE, CV7, SJN (no head markers)
-//   Plug-in Gait / Helen Hayes LASI RASI + LPSI/RPSI or SACR/VSAC, LKNE, LANK, LSHO, LELB,
-//                              LWRA+LWRB or LWRI; C7 CLAV and head markers when present;
-//                              the model's LHJC/LKJC/LAJC outputs win when present
-//   CMU 41-marker              LFWT RFWT LBWT RBWT, LKNE, LANK, LSHO, LELB, LWRA LWRB,
-//                              C7 CLAV, LFHD RFHD LBHD RBHD
+// joint_mapping.h). The sets are data: assets/marker-sets/*.json, read by
+// core/mapping/marker_set_table.h, whose named rules use the formulas below. Among the
+// tables whose identifying labels the file has, the one that builds the most joints wins
+// (the earlier file on a tie); joints it cannot build are JointTrial::missing, and below
+// the minimum (pelvis, both knees, both ankles) the mapping fails naming what is missing.
+// A trial that does not map and does not walk says "not walking: …" first (raw_motion.h).
+// Labels match case-insensitively, "Subject:" prefixes ignored. Rules and citations:
+// docs/JOINTS.md.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -22,7 +19,7 @@
 
 namespace ew {
 
-// A marker set and the markers it cannot do without ("A|B": either label will do).
+// A marker set and the labels that identify it ("A|B": either label will do).
 struct MarkerSetInfo {
   std::string name;  // becomes JointTrial::source
   std::vector<std::string> required;

@@ -70,7 +70,7 @@ std::optional<std::string> rawNotWalkingReason(const RawTrial& raw) {
                              " m/s)";
   if (m.travelM < kWalkingMinTravelM || m.speedMps() < kWalkingMinSpeedMps) {
     return travel + "; walking covers at least " + fixed(kWalkingMinTravelM, 1) + " m at " +
-           fixed(kWalkingMinSpeedMps, 1) + " m/s";
+           fixed(kWalkingMinSpeedMps, 2) + " m/s";
   }
   if (m.straightness() < kWalkingMinStraightness) {
     return travel + " along a path " + fixed(m.pathM, 2) +
