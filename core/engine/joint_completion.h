@@ -23,11 +23,10 @@
 // (z_l_ankle − z_r_ankle a pure +sine); a partial walker's fit uses the same reference,
 // so its w is aligned the same way and the ankles are part of the minimum below.
 //
-// Minimum (kMinimumMeasured, core/gait/missing_joints.h): both hips (the heading, SPEC §2)
-// and both ankles (the floor, the gait cycles and the phase reference). Below it:
-// Error(BadData) naming the missing joints and saying too few were measured to estimate
-// the rest. A missing pelvis is stood in for by the mid-hip while the canonical frame is
-// made (prepare.cpp).
+// Minimum (core/gait/missing_joints.h): both ankles (the floor, the gait cycles and the
+// phase reference), both hips or both knees (the heading, SPEC §2), the pelvis or both
+// hips (the progression). Below it: Error(BadData) naming the missing joints and saying
+// too few were measured to estimate the rest.
 
 #include <Eigen/Core>
 #include <array>
@@ -43,7 +42,7 @@
 
 namespace ew {
 
-// JointMask, anyJoint, jointList, kMinimumMeasured, requireMinimumMeasured and
+// JointMask, anyJoint, jointList, lackingForMinimum, requireMinimumMeasured and
 // missingJointsOf: core/gait/missing_joints.h.
 
 // [SECTION] Fourier fit of the measured joints only
@@ -53,8 +52,8 @@ namespace ew {
 // add nothing to the ω scan, the phase reference or the variance shares; their
 // coefficients in w are 0 (unknown) — completeJoints (3D) or a reconstruction with those
 // joints' rows of Ê dropped (2D) fills them. Frames with a NaN in a measured joint are
-// dropped as usual. Error(BadArgument) for other widths; the minimum above is checked
-// (Error(BadData)).
+// dropped as usual. Error(BadArgument) for other widths; Error(BadData) when an ankle is
+// missing (the phase reference).
 FourierFit fitFourierMeasured(const Eigen::Ref<const Eigen::MatrixXd>& frames, double rateHz,
                               const JointMask& missing, const FourierFitOptions& options = {});
 

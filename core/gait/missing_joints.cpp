@@ -1,5 +1,7 @@
 #include "core/gait/missing_joints.h"
 
+#include <initializer_list>
+
 #include "core/common/errors.h"
 
 namespace ew {
@@ -36,17 +38,38 @@ JointMask missingJointsOf(const JointTrial& t) {
   return missing;
 }
 
+namespace {
+
+bool has(const JointMask& missing, Joint j) { return !missing[static_cast<size_t>(index(j))]; }
+
+void markMissing(JointMask& out, const JointMask& missing, std::initializer_list<Joint> joints) {
+  for (Joint j : joints) {
+    if (!has(missing, j)) out[static_cast<size_t>(index(j))] = true;
+  }
+}
+
+}  // namespace
+
+JointMask lackingForMinimum(const JointMask& missing) {
+  JointMask lacking{};
+  markMissing(lacking, missing, {Joint::RAnkle, Joint::LAnkle});
+  const bool hips = has(missing, Joint::RHip) && has(missing, Joint::LHip);
+  const bool knees = has(missing, Joint::RKnee) && has(missing, Joint::LKnee);
+  if (!hips && !knees)
+    markMissing(lacking, missing, {Joint::RHip, Joint::LHip, Joint::RKnee, Joint::LKnee});
+  if (!has(missing, Joint::Pelvis) && !hips)
+    markMissing(lacking, missing, {Joint::Pelvis, Joint::RHip, Joint::LHip});
+  return lacking;
+}
+
 void requireMinimumMeasured(const JointMask& missing, const std::string& file,
                             const std::string& stage) {
-  JointMask lacking{};
-  for (Joint j : kMinimumMeasured) {
-    const auto i = static_cast<size_t>(index(j));
-    lacking[i] = missing[i];
-  }
+  const JointMask lacking = lackingForMinimum(missing);
   if (!anyJoint(lacking)) return;
   throwBadData(file, "",
                stage + ": too few joints measured to estimate the rest: " + jointList(lacking) +
-                   " missing (needs both hips and both ankles; missing in every frame: " +
+                   " missing (needs both ankles, both hips or both knees, and the pelvis or "
+                   "both hips; missing in every frame: " +
                    jointList(missing) + ")");
 }
 

@@ -3,10 +3,14 @@
 // opposed to gaps (a joint hidden for some frames, core/gait/gaps.h). Missing joints are
 // estimated from a model (core/engine/joint_completion.h), never interpolated.
 //
-// Minimum (kMinimumMeasured): both hips — the heading of SPEC §2 is z × (r_hip − l_hip) —
-// and both ankles — the floor, the gait cycles and the phase reference of SPEC §3
-// (z_l_ankle − z_r_ankle). A missing pelvis is stood in for by the mid-hip while the
-// canonical frame is made (prepare.cpp); every other joint may be missing.
+// Minimum to prepare a trial (SPEC §2-3) and estimate the rest:
+//   - both ankles: the floor, the gait cycles and the phase reference z_l_ankle − z_r_ankle;
+//   - a left-right pair for the heading z × (right − left): both hips, else both knees;
+//   - a body centre for the progression and the steady window: the pelvis, else the
+//     mid-hip (both hips).
+// While the canonical frame is made, a missing pelvis is stood in for by the mid-hip and a
+// missing hip by the knee of its side (prepare.cpp). The marker-set minimum of
+// docs/JOINTS.md (pelvis, both knees, both ankles) satisfies this one.
 
 #include <Eigen/Core>
 #include <array>
@@ -18,9 +22,6 @@
 namespace ew {
 
 using JointMask = std::array<bool, kJointCount>;
-
-inline constexpr std::array<Joint, 4> kMinimumMeasured = {Joint::RHip, Joint::LHip, Joint::RAnkle,
-                                                          Joint::LAnkle};
 
 bool anyJoint(const JointMask& mask);
 int jointCount(const JointMask& mask);
@@ -35,9 +36,12 @@ JointMask jointsMissingThroughout(const Eigen::Ref<const Eigen::MatrixXd>& frame
 // sample in any frame (a CSV or a mapping that left the columns empty).
 JointMask missingJointsOf(const JointTrial& trial);
 
-// Throws Error(BadData) "<stage>: too few joints measured to estimate the rest: r_hip
-// missing (needs both hips and both ankles; missing in every frame: …)" naming `file`
-// when a joint of kMinimumMeasured is missing.
+// The joints whose absence breaks the minimum above; an empty mask when it is met.
+JointMask lackingForMinimum(const JointMask& missing);
+
+// Throws Error(BadData) "<stage>: too few joints measured to estimate the rest: r_hip,
+// r_knee missing (needs both ankles, both hips or both knees, and the pelvis or both hips;
+// missing in every frame: …)" naming `file` when the minimum above is not met.
 void requireMinimumMeasured(const JointMask& missing, const std::string& file,
                             const std::string& stage);
 

@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "core/common/errors.h"
-#include "core/gait/body_size.h"
 #include "core/gait/canonical_frame.h"
 #include "core/gait/gait_cycles.h"
 #include "core/gait/gaps.h"
@@ -57,18 +56,27 @@ void rejectGlitches(Eigen::MatrixXd& m, double rateHz, std::vector<std::string>&
 // [SECTION] Joints missing throughout
 
 // Missing joints are not gaps: while the frame is made their columns hold stand-ins, so no
-// frame counts as incomplete for their sake — the pelvis the mid-hip (the progression and
-// the steady window follow it), every other joint the pelvis (the up axis then points from
-// the ankles to the pelvis). useWindow sets them back to NaN.
+// frame counts as incomplete for their sake — a hip the knee of its side (the heading is
+// the horizontal part of right − left), the pelvis the mid-hip (the progression and the
+// steady window follow it), every other joint the pelvis (the up axis then points from the
+// ankles to the pelvis). useWindow sets them back to NaN. missing_joints.h's minimum
+// guarantees every stand-in has a measured source.
 void standInForMissing(Eigen::MatrixXd& m, const JointMask& missing) {
-  const auto pelvis = static_cast<size_t>(index(Joint::Pelvis));
-  if (missing[pelvis]) {
+  const auto isMissing = [&](Joint j) { return missing[static_cast<size_t>(index(j))]; };
+  const auto copy = [&](Joint to, Joint from) {
+    m.middleCols<3>(3 * index(to)) = m.middleCols<3>(3 * index(from));
+  };
+  if (isMissing(Joint::RHip)) copy(Joint::RHip, Joint::RKnee);
+  if (isMissing(Joint::LHip)) copy(Joint::LHip, Joint::LKnee);
+  if (isMissing(Joint::Pelvis)) {
     m.middleCols<3>(3 * index(Joint::Pelvis)) =
         0.5 * (m.middleCols<3>(3 * index(Joint::RHip)) + m.middleCols<3>(3 * index(Joint::LHip)));
   }
   for (int j = 0; j < kJointCount; ++j) {
-    if (missing[static_cast<size_t>(j)] && j != index(Joint::Pelvis))
-      m.middleCols<3>(3 * j) = m.middleCols<3>(3 * index(Joint::Pelvis));
+    const auto joint = static_cast<Joint>(j);
+    if (!isMissing(joint) || joint == Joint::Pelvis || joint == Joint::RHip || joint == Joint::LHip)
+      continue;
+    copy(joint, Joint::Pelvis);
   }
 }
 
@@ -250,7 +258,6 @@ WalkingTrial prepareWalkingTrial(const JointTrial& t, const PrepareOptions& o) {
   out.joints = t;
   out.joints.positionsMm.resize(0, kDims3);  // filled with the window; no second full copy
   out.loadedFrames = t.frameCount();
-  if (auto size = bodySizeWarning(t)) out.joints.warnings.push_back(*size);  // a wrong --units
   out.joints.missing = missingJointsOf(t);
   if (anyJoint(out.joints.missing)) requireMinimumMeasured(out.joints.missing, t.file, "walking");
   const Eigen::MatrixXd run = completeRunZUp(t, o, out);
