@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/common/errors.h"
+#include "core/gait/body_size.h"
 #include "core/io/asf_amc_reader.h"
 #include "core/io/bvh_reader.h"
 #include "core/io/c3d_reader.h"
@@ -63,7 +64,9 @@ RawTrial readRawTrial(const std::filesystem::path& file, const LoadOptions& opti
   throw Error(ErrorKind::Unsupported, file.string(), "", "unknown format");
 }
 
-JointTrial mapRawTrial(const RawTrial& raw, const LoadOptions& options) {
+namespace {
+
+JointTrial mapRawPoints(const RawTrial& raw, const LoadOptions& options) {
   if (!options.mappingFile) return toJointTrial(raw);
   const std::string mapping = options.mappingFile->string();
   if (raw.kind != PointKind::Markers) {
@@ -72,6 +75,16 @@ JointTrial mapRawTrial(const RawTrial& raw, const LoadOptions& options) {
                     " " + raw.file);
   }
   return applyJointMapping(raw, readJointMappingFile(*options.mappingFile), mapping);
+}
+
+}  // namespace
+
+JointTrial mapRawTrial(const RawTrial& raw, const LoadOptions& options) {
+  JointTrial t = mapRawPoints(raw, options);
+  // A wrong --units scales everything after it; said here, so it shows even when the trial
+  // then fails as walking (info lists the joints' warnings beside the error).
+  if (auto size = bodySizeWarning(t)) t.warnings.push_back(*size);
+  return t;
 }
 
 }  // namespace ew

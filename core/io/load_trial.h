@@ -32,7 +32,8 @@ std::string formatName(FileFormat format);
 RawTrial readRawTrial(const std::filesystem::path& file, const LoadOptions& options = {});
 
 // The 15 joints of a raw trial: through options.mappingFile when given (marker files
-// only; Error(BadArgument) for a skeleton or joint file), else toJointTrial.
+// only; Error(BadArgument) for a skeleton or joint file), else toJointTrial. A body of no
+// human size for the unit read is warned about (core/gait/body_size.h).
 JointTrial mapRawTrial(const RawTrial& raw, const LoadOptions& options);
 
 // Factor that converts a length in `unit` to millimetres; throws Error(BadArgument)

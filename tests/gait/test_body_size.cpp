@@ -8,6 +8,7 @@
 #include "core/gait/body_size.h"
 #include "core/gait/dataset.h"
 #include "core/io/bvh_writer.h"
+#include "core/io/load_trial.h"
 #include "tests/common/synthetic_gait.h"
 #include "tests/common/test_support.h"
 
@@ -88,6 +89,14 @@ TEST(BodySize, ABvhLoadedWithTheWrongUnitWarns) {
   const WalkingTrial trial = loadWalkingTrial(file, wrong);
   EXPECT_TRUE(hasWarningWith(trial.joints.warnings, file.string() + ": the walker measures"));
   EXPECT_TRUE(hasWarningWith(trial.joints.warnings, "probably mm, not cm; use --units mm"));
+  // Said when the file is mapped to joints, before any walking check can fail (info lists
+  // the joints' warnings beside a walking error).
+  const JointTrial joints = mapRawTrial(readRawTrial(file, wrong), wrong);
+  EXPECT_TRUE(hasWarningWith(joints.warnings, "use --units mm"));
+  size_t count = 0;
+  for (const auto& w : trial.joints.warnings)
+    count += w.find("the walker measures") != std::string::npos;
+  EXPECT_EQ(count, 1u);  // once, not again by a later stage
   std::filesystem::remove_all(dir);
 }
 
