@@ -88,6 +88,7 @@ std::vector<std::string> suggestionRefs(const MarkerRule& rule) {
       return {rule.acromion};
     case RuleOp::HarringtonHip:
       return {rule.side == Side::Left ? rule.leftAsis : rule.rightAsis};
+    case RuleOp::FunctionalCentre:  // a fitted point no mean of markers stands for
     case RuleOp::MidJoints:
     case RuleOp::HeadAboveSternum:
       return {};

@@ -10,6 +10,7 @@
 
 #include "core/assets/embedded_assets.h"
 #include "core/common/errors.h"
+#include "core/mapping/functional_centre.h"
 #include "core/mapping/joint_mapping.h"
 #include "core/mapping/marker_sets.h"
 
@@ -167,6 +168,14 @@ MarkerRule parseRule(const json& o, const std::string& file, const std::string& 
     r.otherAcromion = str(o, "other_acromion", file, key);
   } else if (op == "head_above_sternum") {
     r.op = RuleOp::HeadAboveSternum;
+  } else if (op == "functional_centre") {
+    r.op = RuleOp::FunctionalCentre;
+    r.markers = strings(o, "proximal", file, key);
+    r.distal = strings(o, "distal", file, key);
+    if (r.markers.size() < 3 || r.distal.size() < 3)
+      bad(file, key, "a functional centre needs 3 or more markers in each cluster");
+    const std::string anchor = str(o, "anchor", file, key, true);
+    if (!anchor.empty()) r.anchor = jointFromName(anchor, file, key + ".anchor");
   } else {
     bad(file, key + ".op", "unknown rule '" + op + "'");
   }
@@ -183,6 +192,8 @@ std::vector<Joint> jointsRead(const MarkerRule& r) {
     case RuleOp::ShoulderDrop:
     case RuleOp::HeadAboveSternum:
       return {Joint::Pelvis, Joint::Sternum};
+    case RuleOp::FunctionalCentre:
+      return r.anchor ? std::vector<Joint>{*r.anchor} : std::vector<Joint>{};
     default:
       return {};
   }
@@ -191,6 +202,7 @@ std::vector<Joint> jointsRead(const MarkerRule& r) {
 // Markers the rule cannot do without (the medial marker of LateralMedial is optional).
 std::vector<std::string> requiredMarkers(const MarkerRule& r) {
   std::vector<std::string> m = r.markers;
+  m.insert(m.end(), r.distal.begin(), r.distal.end());
   for (const std::string* s :
        {&r.leftAsis, &r.rightAsis, &r.lateral, &r.acromion, &r.otherAcromion}) {
     if (!s->empty()) m.push_back(*s);
@@ -277,8 +289,26 @@ Vector3d evaluate(const MarkerRule& r, const FrameContext& c) {
     }
     case RuleOp::HeadAboveSternum:
       return estimateHead(c.joint(Joint::Pelvis), c.joint(Joint::Sternum));
+    case RuleOp::FunctionalCentre:
+      break;  // a whole-trial fit: functionalTrack
   }
   return Vector3d::Constant(kNaN);
+}
+
+MarkerTrack functionalTrack(const MarkerRule& r, const Markers& m, const Eigen::MatrixXd& joints,
+                            int frames) {
+  const auto tracks = [&](const std::vector<std::string>& refs) {
+    std::vector<MarkerTrack> out;
+    for (const auto& ref : refs) {
+      MarkerTrack t(frames, 3);
+      for (int f = 0; f < frames; ++f) t.row(f) = m.at(m.resolve(ref), f).transpose();
+      out.push_back(t);
+    }
+    return out;
+  };
+  if (!r.anchor) return functionalJointCentre(tracks(r.markers), tracks(r.distal));
+  const MarkerTrack anchor = joints.middleCols(3 * index(*r.anchor), 3);
+  return functionalJointCentre(tracks(r.markers), tracks(r.distal), &anchor);
 }
 
 // The estimate flag and warning a rule carries for this trial.
@@ -370,6 +400,11 @@ JointTrial applyMarkerSetTable(const MarkerSetTable& table, const TablePlan& pla
       continue;
     }
     const MarkerRule& r = table.joints[at(j)][static_cast<std::size_t>(k)];
+    if (r.op == RuleOp::FunctionalCentre) {
+      out.positionsMm.middleCols(3 * index(j), 3) =
+          functionalTrack(r, m, out.positionsMm, raw.frameCount());
+      continue;
+    }
     for (int f = 0; f < raw.frameCount(); ++f) {
       const FrameContext c{m, out.positionsMm, f};
       out.positionsMm.block<1, 3>(f, 3 * index(j)) = evaluate(r, c).transpose();

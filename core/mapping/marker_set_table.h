@@ -11,6 +11,7 @@
 // marker counts as present only when it has a position in at least one frame.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +28,7 @@ enum class RuleOp {
   LateralMedial,  // mid lateral/medial; without the medial marker, lateral shifted medially
   ShoulderDrop,   // acromion lowered along the trunk (Rab 2002), needs pelvis and sternum
   HeadAboveSternum,  // SPEC §1 head rule from pelvis and sternum
+  FunctionalCentre,  // SCoRE centre of two clusters: `markers` proximal, `distal` (3+ each)
 };
 
 // Which of the measured half-widths (marker_sets.h) a lateral-only joint is shifted by.
@@ -41,6 +43,8 @@ struct MarkerRule {
   std::vector<Joint> joints;         // MidJoints; LateralMedial: proximal, midline from, to
   HalfWidth halfWidth = HalfWidth::Knee;
   std::string acromion, otherAcromion;  // ShoulderDrop
+  std::vector<std::string> distal;      // FunctionalCentre: the distal segment's cluster
+  std::optional<Joint> anchor;          // FunctionalCentre: joint a hinge's axis point is nearest
   std::string estimated;  // non-empty: joint flagged estimated, warning "<joint> estimated: …"
 };
 
