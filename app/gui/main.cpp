@@ -20,8 +20,11 @@ int main(int argc, char** argv) {
   std::string script, screenshot;
   int benchFrames = 0;
   float uiScale = 1.0f;
-  cli.add_option("data", data,
-                 "Manifest CSV, folders or motion-capture files (default: the synthetic population)");
+  cli.add_option(
+      "data", data,
+      "Manifest CSV, folders or motion-capture files (default: the synthetic population); "
+      "one or two trials are inspected against the default model of real walkers; a "
+      ".ewm model file is held and the trials are inspected against it");
   auto* sizeOption = cli.add_option("--size", size, "Window size WxH in screen coordinates")->capture_default_str();
   cli.add_option("--script", script, "JSON script of actions to run, then exit (docs/VIEWER.md)")
       ->check(CLI::ExistingFile);

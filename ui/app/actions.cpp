@@ -14,6 +14,7 @@
 #include "core/io/bvh_writer.h"
 #include "core/io/joint_csv.h"
 #include "core/io/load_trial.h"
+#include "ui/app/held_model.h"
 #include "ui/app/script.h"
 #include "ui/app/state_json.h"
 #include "ui/app/theme.h"
@@ -25,20 +26,45 @@ namespace ew::ui::actions {
 
 namespace {
 
+void ensureDefaultModel(AppState& s);
+
+// The model that completes trials lacking joints (joint_completion.h): the one they will be
+// inspected against (the default model when the synthetic population, or nothing, is shown).
+std::shared_ptr<const EigenwalkerModel> completionModel(AppState& s) {
+  const Document& d = s.doc;
+  if (d.modelSource == ModelSource::Population && d.models && !d.sourcePaths.empty())
+    return {d.models, &d.models->all};
+  if (d.modelSource == ModelSource::File && d.heldModel())
+    return {d.modelFiles[static_cast<std::size_t>(d.modelFile)], d.heldModel()};
+  try {
+    ensureDefaultModel(s);
+  } catch (const std::exception& e) {
+    s.log.warning(std::string("no model to complete trials that lack joints: ") + e.what());
+    return nullptr;
+  }
+  return {s.doc.defaultModel, &s.doc.defaultModel->model};
+}
+
 void startLoad(AppState& s, OpenRequest request) {
   const auto paths = request.paths;
+  auto completion = paths.empty() ? nullptr : completionModel(s);
   s.jobs.loading = std::move(request);
   const std::string title =
       paths.empty() ? "Synthesising the default population" : "Loading " + describePaths(paths);
   s.log.info(title);
-  s.jobs.load.start(title, [paths, overrides = s.doc.fileOverrides](
-                               JobProgress& progress) -> std::shared_ptr<const Population> {
-    auto report = [&progress](int done, int total, const std::string& what) {
-      progress.set(done, total, what);
-    };
-    if (paths.empty()) return std::make_shared<const Population>(defaultPopulation(report));
-    return std::make_shared<const Population>(loadPopulation(paths, report, overrides));
-  });
+  s.jobs.load.start(title,
+                    [paths, overrides = s.doc.fileOverrides,
+                     completion](JobProgress& progress) -> std::shared_ptr<const Population> {
+                      auto report = [&progress](int done, int total, const std::string& what) {
+                        progress.set(done, total, what);
+                      };
+                      if (paths.empty())
+                        return std::make_shared<const Population>(defaultPopulation(report));
+                      // One walker is enough: fewer than a leave-one-out population needs are
+                      // inspected against the held model (pollJobs decides).
+                      return std::make_shared<const Population>(
+                          loadPopulation(paths, report, overrides, 1, completion));
+                    });
 }
 
 // Starts the open now, or once the running load / model build is done.
@@ -62,7 +88,7 @@ void startModels(AppState& s) {
 }
 
 LoadedData loadedData(const Document& d) {
-  return {d.population, d.models, d.sourcePaths, d.walker, d.editedSd, d.exploreSd};
+  return {d.population, d.models, d.sourcePaths, d.walker, d.editedSd, d.exploreSd, d.modelSource};
 }
 
 // Puts back the data shown before a load, under a new generation (caches computed for what
@@ -75,18 +101,25 @@ void restoreData(AppState& s, LoadedData before) {
   s.doc.walker = before.walker;
   s.doc.editedSd = std::move(before.editedSd);
   s.doc.exploreSd = std::move(before.exploreSd);
+  s.doc.modelSource = before.modelSource;
   ++s.doc.generation;
 }
 
 // What the user still has after a failure.
 std::string keptDescription(const AppState& s) {
-  if (!s.doc.population || s.doc.population->walkerCount() == 0)
+  if (s.doc.walkerCount() == 0)
     return "Nothing is loaded: open other data, or the synthetic default population.";
-  const auto& pop = *s.doc.population;
-  std::string kept =
-      "Still showing " + pop.label + " (" + std::to_string(pop.walkerCount()) + " walkers";
-  if (s.doc.walker >= 0 && s.doc.walker < pop.walkerCount())
-    kept += ", " + pop.walkers[static_cast<std::size_t>(s.doc.walker)].subject + " selected";
+  std::string kept = "Still showing ";
+  if (s.doc.population) {
+    kept += s.doc.population->label + " (" + std::to_string(s.doc.population->walkerCount()) +
+            " walkers";
+    if (s.doc.inspected)
+      kept += " + " + std::to_string(s.doc.inspected->walkerCount()) + " inspected";
+  } else {
+    kept +=
+        std::to_string(s.doc.walkerCount()) + " inspected walker(s) (model " + heldModelName(s.doc);
+  }
+  if (const Walker* w = s.doc.selectedWalker()) kept += ", " + w->subject + " selected";
   return kept + "): nothing you had open has changed.";
 }
 
@@ -137,6 +170,118 @@ void noticeSkipped(AppState& s, const OpenRequest& request, const Population& po
   showNotice(s, std::move(n));
 }
 
+// [SECTION] Models held and walkers inspected
+
+// Makes `saved` the held model: every walker is inspected against it from now on.
+void holdModel(AppState& s, std::shared_ptr<const SavedModel> saved) {
+  auto& files = s.doc.modelFiles;
+  const auto same = std::find_if(files.begin(), files.end(), [&saved](const auto& m) {
+    return !m->file.empty() && fileKey(m->file) == fileKey(saved->file);
+  });
+  const int index = static_cast<int>(same - files.begin());
+  if (same != files.end()) {
+    *same = saved;  // opened again: the file's current contents
+  } else {
+    files.push_back(saved);
+  }
+  s.doc.modelFile = index;
+  s.doc.modelSource = ModelSource::File;
+  s.doc.editedSd.clear();
+  ++s.doc.generation;
+  s.log.info("Model " + saved->name + " (" + std::to_string(saved->model.walkerCount()) +
+             " walkers, " + std::to_string(saved->model.componentCount()) +
+             " components): the walkers are inspected against it");
+}
+
+// The default model of real walkers, read once. Throws ew::Error when its asset is bad.
+void ensureDefaultModel(AppState& s) {
+  if (!s.doc.defaultModel) s.doc.defaultModel = readDefaultModel();
+}
+
+// Reads the .ewm files among `paths` and holds the last that reads; a file that does not
+// read is reported as a failed open. Returns the other paths.
+std::vector<std::filesystem::path> openModelFiles(AppState& s,
+                                                  std::vector<std::filesystem::path> paths) {
+  std::vector<std::filesystem::path> rest;
+  for (auto& p : paths) {
+    if (!isModelFile(p)) {
+      rest.push_back(std::move(p));
+      continue;
+    }
+    try {
+      holdModel(s, readModelFile(p));
+      dismissNotice(s);
+    } catch (const std::exception& e) {
+      ++s.jobs.failures;
+      reportOpenError(s, {p}, e.what());
+    }
+  }
+  return rest;
+}
+
+// Whether walkers just loaded are inspected against the held model rather than becoming the
+// population: always while a saved or default model is held; with the population's model,
+// when they are too few for a leave-one-out population of their own.
+bool inspectLoaded(const AppState& s, const Population& loaded) {
+  if (s.jobs.loading.paths.empty()) return false;  // the synthetic default population
+  // A model is not built from its own estimates: completed trials are always inspected.
+  return s.doc.modelSource != ModelSource::Population || loaded.walkerCount() < kMinPopulation ||
+         hasModelEstimated(loaded);
+}
+
+// Appends `loaded` to the inspected walkers and selects the first of them. A synthetic
+// population's model is no model of real walkers: with it (or nothing) held, they meet the
+// default model of real walkers. Throws when that model cannot be read.
+void addInspected(AppState& s, const Population& loaded) {
+  if (s.doc.modelSource == ModelSource::Population &&
+      (!s.doc.population || s.doc.sourcePaths.empty())) {
+    ensureDefaultModel(s);
+    s.doc.modelSource = ModelSource::Default;
+    s.log.info(
+        "Inspecting against " + s.doc.defaultModel->name +
+        (s.doc.population ? ": the synthetic population is not a model of real walkers" : ""));
+  }
+  auto all = std::make_shared<Population>();
+  if (s.doc.inspected) *all = *s.doc.inspected;
+  all->label = all->label.empty() ? loaded.label : all->label + ", " + loaded.label;
+  const int first = s.doc.populationCount() + all->walkerCount();
+  all->walkers.insert(all->walkers.end(), loaded.walkers.begin(), loaded.walkers.end());
+  all->facts.insert(all->facts.end(), loaded.facts.begin(), loaded.facts.end());
+  all->warnings.insert(all->warnings.end(), loaded.warnings.begin(), loaded.warnings.end());
+  s.doc.inspected = std::move(all);
+  s.doc.walker = first;
+  s.panels.subjects.scrollToSelection = true;
+  s.doc.editedSd.clear();
+  ++s.doc.generation;
+  s.log.info("Inspecting " + loaded.label + " (" + std::to_string(loaded.walkerCount()) +
+             " walker(s)) against " + heldModelName(s.doc));
+}
+
+// A load finished: the new population (its models built next), or walkers to inspect.
+void takeLoaded(AppState& s, const std::shared_ptr<const Population>& pop) {
+  dismissNotice(s);
+  for (const auto& w : s.jobs.loading.refused) s.log.warning("skipped: " + w);
+  for (const auto& w : pop->warnings) s.log.warning(w);
+  if (inspectLoaded(s, *pop)) {
+    addInspected(s, *pop);
+    noticeSkipped(s, s.jobs.loading, *pop);
+    return;
+  }
+  // What was shown stays until the new models are built (a failed build puts it back).
+  if (s.doc.population) s.jobs.beforeLoad = loadedData(s.doc);
+  s.doc.population = pop;
+  s.doc.models.reset();
+  if (!s.jobs.loading.keepModel) s.doc.modelSource = ModelSource::Population;
+  s.doc.sourcePaths = s.jobs.loading.paths;
+  ++s.doc.generation;
+  s.doc.walker = 0;
+  s.doc.editedSd.clear();
+  s.doc.exploreSd.clear();
+  s.log.info("Loaded " + pop->label + ": " + std::to_string(pop->walkerCount()) + " walkers");
+  noticeSkipped(s, s.jobs.loading, *pop);
+  startModels(s);
+}
+
 }  // namespace
 
 std::string describePaths(const std::vector<std::filesystem::path>& paths) {
@@ -175,30 +320,30 @@ void dismissNotice(AppState& s) {
 
 void open(AppState& s, std::vector<std::filesystem::path> paths) {
   OpenRequest request;
-  request.paths = std::move(paths);
+  const bool onlyModels =
+      !paths.empty() &&
+      std::all_of(paths.begin(), paths.end(), [](const auto& p) { return isModelFile(p); });
+  request.paths = openModelFiles(s, std::move(paths));
+  if (onlyModels) {
+    // A model alone, with nothing to inspect yet: the synthetic walkers, against it.
+    if (s.doc.walkerCount() > 0 || s.jobs.busy() || s.doc.modelSource != ModelSource::File) return;
+    request.keepModel = true;
+  }
   requestOpen(s, std::move(request));
 }
 
 void pollJobs(AppState& s) {
   if (auto outcome = s.jobs.load.poll()) {
+    bool taken = false;
     if (outcome->value) {
-      const auto& pop = *outcome->value;
-      // What was shown stays until the new models are built (a failed build puts it back).
-      if (s.doc.population) s.jobs.beforeLoad = loadedData(s.doc);
-      s.doc.population = pop;
-      s.doc.models.reset();
-      s.doc.sourcePaths = s.jobs.loading.paths;
-      ++s.doc.generation;
-      s.doc.walker = 0;
-      s.doc.editedSd.clear();
-      s.doc.exploreSd.clear();
-      dismissNotice(s);
-      s.log.info("Loaded " + pop->label + ": " + std::to_string(pop->walkerCount()) + " walkers");
-      for (const auto& w : s.jobs.loading.refused) s.log.warning("skipped: " + w);
-      for (const auto& w : pop->warnings) s.log.warning(w);
-      noticeSkipped(s, s.jobs.loading, *pop);
-      startModels(s);
-    } else {
+      try {
+        takeLoaded(s, *outcome->value);
+        taken = true;
+      } catch (const std::exception& e) {
+        outcome->error = std::string("no model to inspect it against: ") + e.what();
+      }
+    }
+    if (!taken) {
       ++s.jobs.failures;
       std::string why = outcome->error;
       for (const auto& r : s.jobs.loading.refused) why += "\nalso skipped: " + r;
@@ -264,15 +409,14 @@ void pollJobs(AppState& s) {
 namespace {
 
 void requireLoaded(const AppState& s) {
-  if (!s.doc.population || s.doc.population->walkerCount() == 0)
-    throw std::invalid_argument("no data loaded");
+  if (s.doc.walkerCount() == 0) throw std::invalid_argument("no data loaded");
 }
 
 }  // namespace
 
 void selectWalker(AppState& s, int index) {
   requireLoaded(s);
-  if (index < 0 || index >= s.doc.population->walkerCount())
+  if (index < 0 || index >= s.doc.walkerCount())
     throw std::invalid_argument("walker index " + std::to_string(index) + " out of range");
   if (s.doc.walker != index) s.doc.editedSd.clear();
   s.doc.walker = index;
@@ -280,7 +424,11 @@ void selectWalker(AppState& s, int index) {
 
 void selectSubject(AppState& s, const std::string& subjectOrId) {
   requireLoaded(s);
-  const int i = s.doc.population->findWalker(subjectOrId);
+  int i = s.doc.population ? s.doc.population->findWalker(subjectOrId) : -1;
+  if (i < 0 && s.doc.inspected) {
+    const int j = s.doc.inspected->findWalker(subjectOrId);
+    if (j >= 0) i = s.doc.populationCount() + j;
+  }
   if (i < 0) throw std::invalid_argument("no subject or walker \"" + subjectOrId + "\"");
   selectWalker(s, i);
   s.panels.subjects.scrollToSelection = true;  // bring it into the list's view
@@ -309,8 +457,8 @@ void setSigma2(AppState& s, double sigma2Mm2) {
 
 void setComponents(AppState& s, int components) {
   if (components < 0) throw std::invalid_argument("components must be >= 0 (0 = auto)");
-  if (s.doc.models) {
-    const int maxN = s.doc.models->all.componentCount();
+  if (const EigenwalkerModel* held = s.doc.heldModel()) {
+    const int maxN = held->componentCount();
     if (components > maxN)
       throw std::invalid_argument("components must be at most " + std::to_string(maxN));
   }
@@ -370,12 +518,13 @@ void randomiseCoefficients(AppState& s, unsigned seed) {
 
 void coefficientsFromWalker(AppState& s) {
   requireLoaded(s);
-  if (!s.doc.models) throw std::invalid_argument("models not built yet");
+  const EigenwalkerModel* held = s.doc.heldModel();
+  const Walker* walker = s.doc.selectedWalker();
+  if (!held || !walker) throw std::invalid_argument("models not built yet");
   const auto* e = s.derived.explore();
   const int n = e ? e->components : 0;
-  const EigenwalkerModel m = truncateModel(s.doc.models->all, n);
-  const Eigen::VectorXd k =
-      projectOntoModel(m, s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)].fit.w);
+  const EigenwalkerModel m = truncateModel(*held, n);
+  const Eigen::VectorXd k = projectOntoModel(m, walker->fit.w);
   s.doc.exploreSd.resize(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i)
     s.doc.exploreSd[static_cast<std::size_t>(i)] =
@@ -504,19 +653,23 @@ void exportBvh(AppState& s, const std::filesystem::path& path, std::optional<dou
 
 void exportModel(AppState& s, const std::filesystem::path& path) {
   requireLoaded(s);
-  if (!s.doc.models) throw std::invalid_argument("models not built yet");
-  const EigenwalkerModel* model = &s.doc.models->all;
+  const EigenwalkerModel* held = s.doc.heldModel();
+  if (!held) throw std::invalid_argument("models not built yet");
+  EigenwalkerModel model = *held;
   std::string what = "the model of every walker";
   if (s.doc.mode == Mode::Reconstruct) {
-    const std::string& subject = s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)].subject;
-    const auto it = s.doc.models->withoutSubject.find(subject);
-    if (it == s.doc.models->withoutSubject.end())
-      throw std::invalid_argument("no leave-one-out model for subject " + subject);
-    model = &it->second;
-    what = "the model without " + subject;
+    WalkerModel used;
+    try {
+      used = modelForWalker(s.doc, s.doc.walker);
+    } catch (const std::runtime_error& e) {
+      throw std::invalid_argument(e.what());
+    }
+    model = std::move(used.model);
+    what = used.member ? "the model without " + used.heldOutSubject : "the model held";
   }
-  saveModel(*model, path);
-  s.log.info("Wrote " + path.string() + " (" + what + ", " + std::to_string(model->walkerCount()) + " walkers)");
+  saveModel(model, path);
+  s.log.info("Wrote " + path.string() + " (" + what + ", " + std::to_string(model.walkerCount()) +
+             " walkers)");
 }
 
 void exportState(AppState& s, const std::filesystem::path& path) {
@@ -548,7 +701,7 @@ void requestAnalysis(AppState& s) {
 }
 
 std::shared_ptr<const AnalysisResult> analysisNow(AppState& s) {
-  requireLoaded(s);
+  if (!s.doc.population) throw std::invalid_argument("the analysis needs a loaded population");
   const AnalysisKey key = analysisKey(s);
   if (auto cached = s.analysis.find(key)) return cached;
   auto result = std::make_shared<const AnalysisResult>(computeAnalysis(*s.doc.population, key, {}));
@@ -558,10 +711,12 @@ std::shared_ptr<const AnalysisResult> analysisNow(AppState& s) {
 
 void exportAnalysisCsv(AppState& s, const std::filesystem::path& path) {
   const auto result = analysisNow(s);
-  const std::string subject =
-      s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)].subject;
+  // An inspected walker is no population member: the curves are the population's mean.
+  const Walker* w = s.doc.selectedWalker();
+  const std::string subject = w && !s.doc.isInspected(s.doc.walker) ? w->subject : std::string();
   writeAnalysisCsv(*result, subject, path);
-  s.log.info("Wrote " + path.string() + " (analysis curves, " + subject + " and the mean)");
+  s.log.info("Wrote " + path.string() + " (analysis curves, " +
+             (subject.empty() ? std::string("the mean") : subject + " and the mean") + ")");
 }
 
 void setAnalysisMetric(AppState& s, const std::string& name) {
@@ -586,9 +741,11 @@ void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
     std::error_code ec;
     if (!std::filesystem::exists(p, ec)) {
       request.refused.push_back(p.string() + ": no such file or folder");
-    } else if (!std::filesystem::is_directory(p, ec) && !isSupportedDataFile(p)) {
-      request.refused.push_back(
-          p.string() + ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv) or folder");
+    } else if (!std::filesystem::is_directory(p, ec) && !isSupportedDataFile(p) &&
+               !isModelFile(p)) {
+      request.refused.push_back(p.string() +
+                                ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv), a "
+                                "model (.ewm) or a folder");
     } else {
       request.paths.push_back(p);
     }
@@ -596,6 +753,14 @@ void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
   // Nothing to open: the drop is refused as a whole, and nothing changes.
   if (request.paths.empty()) throw std::invalid_argument(listForMessage(request.refused, 3, "; "));
   s.log.info("Dropped " + std::to_string(paths.size()) + (paths.size() == 1 ? " item" : " items"));
+  // A dropped model is held at once; the trials dropped with it are inspected against it.
+  const bool onlyModels = std::all_of(request.paths.begin(), request.paths.end(),
+                                      [](const auto& p) { return isModelFile(p); });
+  request.paths = openModelFiles(s, std::move(request.paths));
+  if (onlyModels) {
+    for (const auto& r : request.refused) s.log.warning("skipped: " + r);
+    return;
+  }
   requestOpen(s, std::move(request));
 }
 
@@ -609,7 +774,10 @@ void setFileOverride(AppState& s, const std::filesystem::path& file, const std::
   }
   if (rateHz > 0.0) o.rateHzOverride = rateHz;
   const std::string key = fileKey(file);
-  if (!o.unitsOverride && !o.rateHzOverride) {
+  // A joint mapping written for the file (writeJointMapping) stays.
+  if (const auto it = s.doc.fileOverrides.find(key); it != s.doc.fileOverrides.end())
+    o.mappingFile = it->second.mappingFile;
+  if (!o.unitsOverride && !o.rateHzOverride && !o.mappingFile) {
     s.doc.fileOverrides.erase(key);
   } else {
     s.doc.fileOverrides[key] = o;
@@ -619,6 +787,17 @@ void setFileOverride(AppState& s, const std::filesystem::path& file, const std::
 void reloadWithOverrides(AppState& s) {
   if (s.doc.sourcePaths.empty()) throw std::invalid_argument("the synthetic default has no files to override");
   open(s, s.doc.sourcePaths);
+}
+
+void writeJointMapping(AppState& s, const std::filesystem::path& file,
+                       const std::filesystem::path& out, const JointMapping& mapping,
+                       bool openNow) {
+  if (file.empty()) throw std::invalid_argument("no file to map");
+  if (out.empty()) throw std::invalid_argument("no file name for the mapping");
+  writeJointMappingFile(out, mapping);
+  s.doc.fileOverrides[fileKey(file)].mappingFile = out;
+  s.log.info("Wrote " + out.string() + " (joint mapping of " + file.filename().string() + ")");
+  if (openNow) open(s, {file});
 }
 
 void requestDataSummary(AppState& s) {
@@ -710,18 +889,62 @@ void showPanel(AppState& s, const std::string& name, bool shown) {
     s.panels.help.open = shown;
   } else if (name == "data") {
     s.panels.data.open = shown;
+  } else if (name == "notice_details") {
+    if (shown && !s.panels.notice.visible(s))
+      throw std::invalid_argument("no notice to show the details of");
+    s.panels.notice.detailsOpen = shown;
+  } else if (name == "model") {
+    s.panels.header.modelMenuOpen = shown;
   } else {
-    throw std::invalid_argument("unknown panel \"" + name + "\" (known: export, analysis, help, data)");
+    throw std::invalid_argument("unknown panel \"" + name +
+                                "\" (known: export, analysis, help, data, notice_details, model)");
   }
 }
 
 double playbackStrideHz(const AppState& s) {
-  if (!s.doc.population || s.doc.population->walkerCount() == 0) return 0.9;
   if (s.doc.mode == Mode::Explore) {
     const auto* e = s.derived.explore();
     return e ? e->strideHz : 0.9;
   }
-  return s.doc.population->facts[static_cast<std::size_t>(s.doc.walker)].strideHz;
+  const WalkerFacts* f = s.doc.selectedFacts();
+  return f ? f->strideHz : 0.9;
+}
+
+// [SECTION] The model held
+
+void setModelSource(AppState& s, const std::string& which) {
+  if (which == "population") {
+    if (!s.doc.population) throw std::invalid_argument("no population is loaded");
+    s.doc.modelSource = ModelSource::Population;
+  } else if (which == "default") {
+    try {
+      ensureDefaultModel(s);
+    } catch (const std::exception& e) {
+      throw std::invalid_argument(std::string("the default model cannot be read: ") + e.what());
+    }
+    s.doc.modelSource = ModelSource::Default;
+  } else {
+    // An opened model by file name or path; a path not opened yet is opened.
+    const auto& files = s.doc.modelFiles;
+    const auto it = std::find_if(files.begin(), files.end(), [&which](const auto& m) {
+      return m->name == which || (!m->file.empty() && fileKey(m->file) == fileKey(which));
+    });
+    if (it == files.end()) {
+      if (!isModelFile(which))
+        throw std::invalid_argument("model must be \"population\", \"default\" or an .ewm file");
+      try {
+        holdModel(s, readModelFile(which));
+      } catch (const std::exception& e) {
+        throw std::invalid_argument(e.what());
+      }
+      return;
+    }
+    s.doc.modelSource = ModelSource::File;
+    s.doc.modelFile = static_cast<int>(it - files.begin());
+  }
+  s.doc.editedSd.clear();
+  ++s.doc.generation;
+  s.log.info("Model: " + heldModelName(s.doc));
 }
 
 }  // namespace ew::ui::actions

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/mapping/mapping_file.h"
 #include "ui/app/app_state.h"
 
 namespace ew::ui::actions {
@@ -94,6 +95,11 @@ void drop(AppState& s, const std::vector<std::filesystem::path>& paths);
 // takes effect at the next open (reloadWithOverrides reopens the current data).
 void setFileOverride(AppState& s, const std::filesystem::path& file, const std::string& units, double rateHz);
 void reloadWithOverrides(AppState& s);
+// Writes `mapping` (core/mapping/mapping_file.h) to `out` and makes it `file`'s mapping for the
+// next open (a per-file override); `openNow`: opens `file` with it at once. Throws ew::Error
+// naming the file when it cannot be written.
+void writeJointMapping(AppState& s, const std::filesystem::path& file,
+                       const std::filesystem::path& out, const JointMapping& mapping, bool openNow);
 // The data table for the current data: started in the background / computed now (scripts).
 void requestDataSummary(AppState& s);
 std::shared_ptr<const DataSummary> dataSummaryNow(AppState& s);
@@ -108,8 +114,15 @@ void tourNext(AppState& s);
 void tourBack(AppState& s);
 void tourEnd(AppState& s);
 
-// Floating panels: "export", "analysis", "help", "data"; throws for an unknown name.
+// Floating panels: "export", "analysis", "help", "data", "notice_details" (the full message of
+// the notice row), "model" (the model selector); throws for an unknown name.
 void showPanel(AppState& s, const std::string& name, bool shown);
+
+// [SECTION] The model held (docs/VIEWER.md, "Models and walkers")
+// "population" (the loaded population's leave-one-out models), "default" (the default model
+// of real walkers), or an opened .ewm by file name or path (a path not opened yet is read).
+// Every walker is then inspected against it. Throws std::invalid_argument with the reason.
+void setModelSource(AppState& s, const std::string& which);
 
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).
 int coefficientCount(const AppState& s);

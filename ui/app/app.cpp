@@ -456,11 +456,13 @@ class App {
     if (scripted_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
     ImGui::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
-    const Layout l = computeLayout(io.DisplaySize.x, io.DisplaySize.y, themeScale_);
+    const Layout l = computeLayout(io.DisplaySize.x, io.DisplaySize.y, themeScale_,
+                                   state_.panels.notice.visible(state_));
     FrameContext ctx{renderer_, backdrop_, themeScale_, dt};
     auto& p = state_.panels;
     try {
       p.header.draw(state_, ctx, l.header);
+      p.notice.draw(state_, ctx, l.notice);
       p.subjects.draw(state_, ctx, l.subjects);
       p.controls.draw(state_, ctx, l.controls);
       p.metrics.draw(state_, ctx, l.metrics);
@@ -481,12 +483,13 @@ class App {
       p.jointErrors.draw(state_, ctx, l.jointErrors);
       p.profile.draw(state_, ctx, l.profile);
       p.log.draw(state_, ctx, l.log);
-      p.notice.draw(state_, ctx, l.metrics);
       p.exports.draw(state_, ctx);
       p.analysis.draw(state_, ctx);
       p.data.draw(state_, ctx);
       p.tour.draw(state_, ctx);
       p.help.draw(state_, ctx);
+      p.header.drawModelMenu(state_, ctx);
+      p.notice.drawDetails(state_, ctx);
       handleShortcuts();
     } catch (const std::exception& e) {
       // An action refused its input, or GL failed: say so, keep running.

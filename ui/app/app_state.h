@@ -48,6 +48,9 @@ struct OpenRequest {
   std::vector<std::filesystem::path> paths;
   std::vector<std::string> refused;
   std::vector<std::filesystem::path> named;  // every item the user named (empty: `paths`)
+  // The population loaded is shown with the model held (a .ewm opened with nothing else
+  // loaded: the synthetic walkers are inspected against it) instead of its own.
+  bool keepModel = false;
 };
 
 // What the banner over the views says after an open went wrong (ui/panels/notice_panel.h):
@@ -72,6 +75,7 @@ struct LoadedData {
   std::vector<std::filesystem::path> sourcePaths;
   int walker = 0;
   std::vector<double> editedSd, exploreSd;
+  ModelSource modelSource = ModelSource::Population;
 };
 
 struct Jobs {

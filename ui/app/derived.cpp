@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <utility>
 
 #include "core/engine/fourier.h"
 #include "core/engine/model.h"
 #include "core/engine/projection.h"
+#include "ui/app/held_model.h"
 
 namespace ew::ui {
 
@@ -25,14 +27,15 @@ Eigen::MatrixXd trailOverCycle(const Eigen::VectorXd& w, int samples) {
 namespace {
 
 std::unique_ptr<ReconBase> computeRecon(const Document& doc, const ReconKey& key) {
-  const Population& pop = *doc.population;
-  const Walker& walker = pop.walkers.at(static_cast<std::size_t>(key.walker));
-  auto it = doc.models->withoutSubject.find(walker.subject);
-  if (it == doc.models->withoutSubject.end())
-    throw std::runtime_error("no leave-one-out model for " + walker.subject);
-  const EigenwalkerModel& loo = it->second;
+  const Walker& walker = *doc.walkerAt(key.walker);
+  const WalkerModel chosen = modelForWalker(doc, key.walker);
+  const EigenwalkerModel& loo = chosen.model;
   auto r = std::make_unique<ReconBase>();
-  r->heldOutSubject = walker.subject;
+  r->heldOutSubject = chosen.heldOutSubject;
+  r->inModel = chosen.member;
+  r->inspected = doc.isInspected(key.walker);
+  r->modelName = heldModelName(doc);
+  r->modelEstimated = doc.factsAt(key.walker)->modelEstimated;
   r->modelWalkers = loo.walkerCount();
   r->autoComponents = key.settings.components <= 0;
   r->components = r->autoComponents ? autoComponentCount(loo)
@@ -74,6 +77,16 @@ std::unique_ptr<ReconDisplay> computeDisplay(const ReconBase& base,
   d->errors = depthErrors(base.wTrue, d->w, base.alphaTrueDeg);
   d->depthRmsMm = d->errors.absPerJoint.cwiseMax(0.0).cwiseSqrt();
   d->mpjpeMm = mpjpe(base.wTrue, d->w);
+  const Eigen::VectorXd perJoint = mpjpePerJoint(base.wTrue, d->w);
+  double measured = 0.0, estimated = 0.0;
+  int nMeasured = 0, nEstimated = 0;
+  for (int j = 0; j < kJointCount; ++j) {
+    const bool model = base.modelEstimated[static_cast<std::size_t>(j)];
+    (model ? estimated : measured) += perJoint(j);
+    ++(model ? nEstimated : nMeasured);
+  }
+  d->mpjpeMeasuredMm = nMeasured > 0 ? measured / nMeasured : 0.0;
+  if (nEstimated > 0) d->mpjpeModelEstimatedMm = estimated / nEstimated;
   d->residualRmsMm =
       std::sqrt((base.observed - d->reprojected).squaredNorm() / static_cast<double>(base.observed.size()));
   d->angleErrorDeg = viewAngleErrorDeg(base.alphaUsedDeg, base.alphaTrueDeg);
@@ -81,7 +94,7 @@ std::unique_ptr<ReconDisplay> computeDisplay(const ReconBase& base,
 }
 
 std::unique_ptr<ExploreResult> computeExplore(const Document& doc, const ExploreKey& key) {
-  const EigenwalkerModel& all = doc.models->all;
+  const EigenwalkerModel& all = *doc.heldModel();
   auto e = std::make_unique<ExploreResult>();
   e->autoComponents = key.components <= 0;
   e->components = e->autoComponents ? autoComponentCount(all)
@@ -98,6 +111,7 @@ std::unique_ptr<ExploreResult> computeExplore(const Document& doc, const Explore
   e->projectedTrail = trailOverCycle(e->projected, kTrailSamples);
   e->strideHz = all.omegasRadS.size() > 0 ? all.omegasRadS.mean() / (2.0 * std::numbers::pi) : 0.9;
   e->modelWalkers = all.walkerCount();
+  e->modelName = heldModelName(doc);
   return e;
 }
 
@@ -115,6 +129,7 @@ void Derived::update(const Document& doc) {
   }
   try {
     const ReconKey rk{doc.generation, doc.walker, doc.recon};
+    if (!doc.walkerAt(doc.walker)) throw std::runtime_error("no walker selected");
     if (!reconKey_ || !(*reconKey_ == rk)) {
       recon_.reset();
       display_.reset();

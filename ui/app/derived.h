@@ -4,6 +4,7 @@
 // overlays are not inputs: animating or orbiting never recomputes anything here.
 
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -26,8 +27,14 @@ struct ReconKey {
 };
 
 struct ReconBase {
-  std::string heldOutSubject;
-  int modelWalkers = 0;          // walkers in the leave-one-out model
+  std::string modelName;       // the held model (heldModelName)
+  bool inModel = false;        // the walker's subject is in the held model …
+  std::string heldOutSubject;  // … and this one was left out of the model used
+  bool inspected = false;      // a trial the user opened, not a population member
+  // Joints the trial lacked, filled in from a model: its "ground truth" there is the model's,
+  // so their errors are reported apart from the measured joints'.
+  std::array<bool, kJointCount> modelEstimated{};
+  int modelWalkers = 0;          // walkers in the model used
   int components = 0;            // N used
   bool autoComponents = true;    // N from the 95 % rule
   double explained = 0.0;        // variance share of the N components
@@ -59,6 +66,8 @@ struct ReconDisplay {
   DepthErrors errors;            // at the true α (SPEC §7)
   Eigen::VectorXd depthRmsMm;    // √E_abs(j) per joint, mm
   double mpjpeMm = 0.0;
+  double mpjpeMeasuredMm = 0.0;                 // over the measured joints
+  std::optional<double> mpjpeModelEstimatedMm;  // over the model-estimated joints, if any
   double residualRmsMm = 0.0;    // RMS of ŵ − C(α_used) w over the 150 values
   double angleErrorDeg = 0.0;    // |α̂ − α| (0 with a known angle)
 };
@@ -84,6 +93,7 @@ struct ExploreResult {
   Eigen::MatrixXd projectedTrail;
   double strideHz = 0.0;         // mean of the population
   int modelWalkers = 0;
+  std::string modelName;  // the held model (heldModelName)
 };
 
 inline constexpr int kTrailSamples = 64;

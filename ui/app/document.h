@@ -29,6 +29,18 @@ struct ReconstructionSettings {
   bool operator==(const ReconstructionSettings&) const = default;
 };
 
+// Where the model the viewer holds comes from (docs/VIEWER.md, "Models and walkers"): the
+// loaded population (leave-one-out per subject), the default model of real walkers, or a
+// saved .ewm file the user opened.
+enum class ModelSource { Population, Default, File };
+
+// A model read from a file (or the default model's asset), with what the header calls it.
+struct SavedModel {
+  std::string name;            // "24 real walkers (default)", "my_model.ewm"
+  std::filesystem::path file;  // empty for the default model
+  EigenwalkerModel model;
+};
+
 struct Document {
   // The loaded population and its models; a new load bumps the generation.
   std::shared_ptr<const Population> population;
@@ -37,14 +49,34 @@ struct Document {
   std::vector<std::filesystem::path> sourcePaths;  // empty: the synthetic default
   FileOverrides fileOverrides;                      // per-file unit / frame-rate overrides
 
+  // [SECTION] The model held and the walkers inspected against it
+  ModelSource modelSource = ModelSource::Population;
+  std::shared_ptr<const SavedModel> defaultModel;             // read on first use
+  std::vector<std::shared_ptr<const SavedModel>> modelFiles;  // .ewm files opened, in order
+  int modelFile = 0;                                          // which one, when modelSource is File
+  // Trials the user opened to inspect against the held model (not population members).
+  std::shared_ptr<const Population> inspected;
+
   Mode mode = Mode::Reconstruct;
-  int walker = 0;                                  // index into population->walkers
+  // Index into the walkers: the population's first, then the inspected ones.
+  int walker = 0;
   ReconstructionSettings recon;
   std::vector<double> exploreSd;   // explorer coefficients, units of each component's SD
   std::vector<double> editedSd;    // reconstruct mode: coefficients the user dragged
                                    // (empty = the estimate)
 
-  bool ready() const { return population && models && population->walkerCount() > 0; }
+  int populationCount() const { return population ? population->walkerCount() : 0; }
+  int walkerCount() const { return populationCount() + (inspected ? inspected->walkerCount() : 0); }
+  bool isInspected(int index) const { return index >= populationCount(); }
+  // Walker `index` (population first, then inspected) and its facts; nullptr out of range.
+  const Walker* walkerAt(int index) const;
+  const WalkerFacts* factsAt(int index) const;
+  const Walker* selectedWalker() const { return walkerAt(walker); }
+  const WalkerFacts* selectedFacts() const { return factsAt(walker); }
+  // The model of every walker the held source gives (nullptr while the population's models
+  // are being built, or when the chosen source has none).
+  const EigenwalkerModel* heldModel() const;
+  bool ready() const { return walkerCount() > 0 && heldModel() != nullptr; }
 };
 
 struct Overlays {

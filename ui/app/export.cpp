@@ -34,11 +34,13 @@ WalkerMotion displayedWalkerMotion(const AppState& s, std::optional<double> cycl
     if (!r || !d) throw std::invalid_argument("no reconstruction to export yet");
     w = &d->w;
     strideHz = r->strideHz;
-    const auto& walker = s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)];
-    defaultCycles = std::max(1.0, walker.fit.cycles);
-    m.description = "reconstruction of " + walker.id + " (" +
-                    (s.doc.recon.estimator == Estimator::Lsq ? "LSQ" : "MAP") + ", model without " +
-                    r->heldOutSubject + ", N = " + std::to_string(r->components) +
+    const Walker* walker = s.doc.selectedWalker();
+    if (!walker) throw std::invalid_argument("no walker selected");
+    defaultCycles = std::max(1.0, walker->fit.cycles);
+    m.description = "reconstruction of " + walker->id + " (" +
+                    (s.doc.recon.estimator == Estimator::Lsq ? "LSQ" : "MAP") + ", model " +
+                    (r->inModel ? r->modelName + " without " + r->heldOutSubject : r->modelName) +
+                    ", N = " + std::to_string(r->components) +
                     (d->edited ? ", coefficients edited" : "") + ")";
   } else {
     const auto* e = s.derived.explore();

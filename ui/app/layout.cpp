@@ -4,9 +4,12 @@
 
 namespace ew::ui {
 
-Layout computeLayout(float width, float height, float scale) {
+float noticeRowHeight(float scale) { return 34.0f * scale; }
+
+Layout computeLayout(float width, float height, float scale, bool noticeRow) {
   Layout l;
   const float headerH = 46.0f * scale;
+  const float noticeH = noticeRow ? noticeRowHeight(scale) : 0.0f;
   const float sideW = std::clamp(width * 0.19f, 250.0f * scale, 360.0f * scale);
   const float rightW = std::clamp(width * 0.18f, 240.0f * scale, 340.0f * scale);
   const float metricsH = 66.0f * scale;
@@ -14,10 +17,11 @@ Layout computeLayout(float width, float height, float scale) {
   const float bottomH = std::clamp(height * 0.24f, 170.0f * scale, 300.0f * scale);
   const float centreX = sideW;
   const float centreW = std::max(100.0f, width - sideW - rightW);
-  const float bodyY = headerH;
-  const float bodyH = height - headerH;
+  const float bodyY = headerH + noticeH;
+  const float bodyH = height - bodyY;
 
   l.header = {{0, 0}, {width, headerH}};
+  l.notice = {{0, headerH}, {width, noticeH}};
   const float subjectsH = bodyH * 0.46f;
   l.subjects = {{0, bodyY}, {sideW, subjectsH}};
   l.controls = {{0, bodyY + subjectsH}, {sideW, bodyH - subjectsH}};

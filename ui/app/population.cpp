@@ -8,6 +8,8 @@
 #include <numbers>
 
 #include "core/common/errors.h"
+#include "core/engine/joint_completion.h"
+#include "core/gait/missing_joints.h"
 #include "core/synth/population.h"
 #include "ui/app/background_job.h"
 
@@ -23,28 +25,55 @@ int Population::findWalker(const std::string& name) const {
 
 namespace {
 
-void requireEnough(const Population& p, const std::string& what) {
-  if (p.walkerCount() < 3) {
-    std::string detail;
-    for (const auto& w : p.warnings) detail += "\n  " + w;
-    throw Error(ErrorKind::BadData, what, "",
-                "only " + std::to_string(p.walkerCount()) +
-                    " usable walker(s); a leave-one-out model needs at least 3 (open a folder, "
-                    "a manifest or several files)" +
-                    detail);
-  }
+void requireEnough(const Population& p, const std::string& what, int minWalkers) {
+  if (p.walkerCount() >= minWalkers) return;
+  std::string detail;
+  for (const auto& w : p.warnings) detail += "\n  " + w;
+  if (p.walkerCount() == 0) throw Error(ErrorKind::BadData, what, "", "no usable walker" + detail);
+  throw Error(ErrorKind::BadData, what, "",
+              "only " + std::to_string(p.walkerCount()) +
+                  " usable walker(s); a leave-one-out model needs at least " +
+                  std::to_string(kMinPopulation) + " (open a folder, a manifest or several files)" +
+                  detail);
 }
 
 }  // namespace
 
 namespace {
 
+// Trials that lack joints, completed from `model` (the joints flagged modelEstimated and no
+// longer missing, so that they make walkers); without a model they stay as they are and
+// makeWalkers leaves them out with its warning.
+void completeTrials(Dataset& dataset, const EigenwalkerModel* model,
+                    std::vector<std::string>& warnings) {
+  if (!model) return;
+  auto& trials = dataset.trials;
+  for (auto it = trials.begin(); it != trials.end();) {
+    it->trial.joints.missing = missingJointsOf(it->trial.joints);
+    if (!anyJoint(it->trial.joints.missing)) {
+      ++it;
+      continue;
+    }
+    try {
+      CompletedTrial done = completeWalkingTrial(it->trial, *model);
+      done.trial.joints.missing = {};
+      it->trial = std::move(done.trial);
+      ++it;
+    } catch (const std::exception& e) {
+      warnings.push_back(it->info.file + ": " + e.what());
+      it = trials.erase(it);
+    }
+  }
+}
+
 // Walkers and their facts from a loaded dataset (SPEC §3-4: fit, average per subject).
-Population populationFromDataset(const Dataset& dataset, std::string label, const LoadProgress& progress) {
+Population populationFromDataset(Dataset dataset, std::string label, const LoadProgress& progress,
+                                 int minWalkers, const EigenwalkerModel* completion = nullptr) {
   Population p;
   p.label = std::move(label);
   p.warnings = dataset.warnings;
   if (progress) progress(0, 1, "fitting walkers");
+  completeTrials(dataset, completion, p.warnings);
   p.walkers = makeWalkers(dataset, &p.warnings);
   for (const auto& w : p.walkers) {
     WalkerFacts f;
@@ -63,8 +92,10 @@ Population populationFromDataset(const Dataset& dataset, std::string label, cons
         speedSum += t.trial.speedMps;
         ++speedCount;
       }
-      for (std::size_t j = 0; j < estimated.size(); ++j)
+      for (std::size_t j = 0; j < estimated.size(); ++j) {
         estimated[j] = estimated[j] || t.trial.joints.estimated[j];
+        f.modelEstimated[j] = f.modelEstimated[j] || t.trial.modelEstimated[j];
+      }
     }
     if (speedCount > 0) f.speedMps = speedSum / speedCount;
     for (std::size_t j = 0; j < estimated.size(); ++j)
@@ -72,7 +103,7 @@ Population populationFromDataset(const Dataset& dataset, std::string label, cons
     p.facts.push_back(std::move(f));
   }
   if (progress) progress(1, 1, "fitted");
-  requireEnough(p, p.label);
+  requireEnough(p, p.label, minWalkers);
   return p;
 }
 
@@ -84,8 +115,15 @@ std::string fileKey(const std::filesystem::path& file) {
   return (ec ? std::filesystem::absolute(file).lexically_normal() : abs).string();
 }
 
+bool hasModelEstimated(const Population& p) {
+  return std::any_of(p.facts.begin(), p.facts.end(), [](const WalkerFacts& f) {
+    return std::any_of(f.modelEstimated.begin(), f.modelEstimated.end(), [](bool b) { return b; });
+  });
+}
+
 Population loadPopulation(const std::vector<std::filesystem::path>& paths,
-                          const LoadProgress& progress, const FileOverrides& overrides) {
+                          const LoadProgress& progress, const FileOverrides& overrides,
+                          int minWalkers, std::shared_ptr<const EigenwalkerModel> completion) {
   // "walkers.csv", "a.c3d, b.c3d": what the header shows.
   const auto labelOf = [](const std::vector<std::filesystem::path>& items) {
     std::string label;
@@ -102,7 +140,8 @@ Population loadPopulation(const std::vector<std::filesystem::path>& paths,
     return it == overrides.end() ? LoadOptions{} : it->second;
   };
   if (paths.size() <= 1)
-    return populationFromDataset(loadDatasetPerFile(paths, optionsFor, progress), label, progress);
+    return populationFromDataset(loadDatasetPerFile(paths, optionsFor, progress), label, progress,
+                                 minWalkers, completion.get());
   // Several items: each on its own, so that one bad file does not lose the others. Progress
   // runs over the items, each item's share split by its own files.
   constexpr int kStepsPerItem = 1000;
@@ -133,7 +172,8 @@ Population loadPopulation(const std::vector<std::filesystem::path>& paths,
     }
   }
   // The label names what loaded (the skipped items are in the warnings).
-  Population p = populationFromDataset(all, loaded.empty() ? label : labelOf(loaded), progress);
+  Population p = populationFromDataset(std::move(all), loaded.empty() ? label : labelOf(loaded),
+                                       progress, minWalkers, completion.get());
   p.skippedItems = std::move(skipped);
   return p;
 }
@@ -143,7 +183,7 @@ Population defaultPopulation(const LoadProgress& progress) {
   // through the same preparation and Fourier fit as recorded data.
   if (progress) progress(0, 1, "simulating the synthetic population");
   const Dataset dataset = syntheticDataset();
-  return populationFromDataset(dataset, "synthetic default population", progress);
+  return populationFromDataset(dataset, "synthetic default population", progress, kMinPopulation);
 }
 
 }  // namespace ew::ui

@@ -3,12 +3,15 @@
 // the facts the subject list displays. Loaded from files (a manifest, a folder, files)
 // or the synthetic default population.
 
+#include <array>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "core/engine/model.h"
 #include "core/engine/walker_set.h"
 #include "core/gait/dataset.h"
 
@@ -19,6 +22,9 @@ struct WalkerFacts {
   double strideHz = 0.0;                 // ω / 2π
   std::optional<double> speedMps;        // mean over the trials (absent: unknown / treadmill)
   std::vector<std::string> estimatedJoints;  // joints estimated rather than measured
+  // Joints the trial's marker set lacks, filled in from a model (core/engine/
+  // joint_completion.h): drawn differently, their errors reported apart.
+  std::array<bool, kJointCount> modelEstimated{};
   int trials = 0;
   double h1Share = 0.0, h2Share = 0.0;   // variance shares of the two harmonics
 };
@@ -37,6 +43,9 @@ struct Population {
   int findWalker(const std::string& name) const;
 };
 
+// Walkers a leave-one-out population needs (each held out, at least 2 remain).
+inline constexpr int kMinPopulation = 3;
+
 // Reports (done, total, what) from the loading thread.
 using LoadProgress = ProgressFn;
 
@@ -49,10 +58,16 @@ std::string fileKey(const std::filesystem::path& file);
 // core's loadDatasetPerFile loads it (a file named on its own that fails is the error). Of
 // several paths (files and folders dropped together), one that fails is skipped with its
 // reason in `skippedItems` and `warnings`, as a bad file inside a folder is. Throws ew::Error
-// (or std::exception) when nothing usable remains; fewer than 3 walkers cannot give a
-// leave-one-out model.
+// (or std::exception) when fewer than `minWalkers` usable walkers remain (kMinPopulation for
+// a leave-one-out population; 1 for walkers to inspect against a model the viewer holds).
+// Trials that lack joints (a lower-body marker set) are completed from `completion` when
+// given (their walkers' facts flag the joints), and left out with a warning otherwise.
 Population loadPopulation(const std::vector<std::filesystem::path>& paths,
-                          const LoadProgress& progress = {}, const FileOverrides& overrides = {});
+                          const LoadProgress& progress = {}, const FileOverrides& overrides = {},
+                          int minWalkers = kMinPopulation,
+                          std::shared_ptr<const EigenwalkerModel> completion = nullptr);
+// True when a walker of `p` has joints estimated from a model.
+bool hasModelEstimated(const Population& p);
 
 // The synthetic default population (no recorded data needed).
 Population defaultPopulation(const LoadProgress& progress = {});

@@ -15,15 +15,41 @@ namespace ew::ui {
 namespace {
 
 const std::set<std::string>& knownActions() {
-  static const std::set<std::string> names{
-      "open",         "select_subject", "set_mode",      "set_angle",   "set_method",
-      "set_sigma2",   "set_components", "unknown_angle", "set_coefficient", "set_phase",
-      "play",         "overlay",        "wait_frames",   "screenshot",  "set_camera",
-      "reset_coefficients", "randomise_coefficients", "coefficients_from_subject",
-      "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
-      "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour",
-      "drop",         "set_file_override", "reload", "export_data_summary", "export_state",
-      "expect_failure"};
+  static const std::set<std::string> names{"open",
+                                           "select_subject",
+                                           "set_mode",
+                                           "set_angle",
+                                           "set_method",
+                                           "set_sigma2",
+                                           "set_components",
+                                           "unknown_angle",
+                                           "set_coefficient",
+                                           "set_phase",
+                                           "play",
+                                           "overlay",
+                                           "wait_frames",
+                                           "screenshot",
+                                           "set_camera",
+                                           "reset_coefficients",
+                                           "randomise_coefficients",
+                                           "coefficients_from_subject",
+                                           "export_png",
+                                           "export_video",
+                                           "export_csv",
+                                           "export_bvh",
+                                           "export_model",
+                                           "show_panel",
+                                           "export_analysis_csv",
+                                           "set_analysis_metric",
+                                           "set_theme",
+                                           "tour",
+                                           "drop",
+                                           "set_file_override",
+                                           "reload",
+                                           "export_data_summary",
+                                           "export_state",
+                                           "expect_failure",
+                                           "set_model"};
   return names;
 }
 
@@ -227,6 +253,7 @@ void applyAction(AppState& s, const ScriptAction& a) {
   } else if (n == "export_data_summary") {
     actions::exportDataSummary(s, text(a));
   } else if (n == "export_state") {
+    s.derived.update(s.doc);  // the reconstruction of what the actions before chose
     actions::exportState(s, text(a));
   } else if (n == "set_theme") {
     actions::setTheme(s, text(a));
@@ -254,6 +281,8 @@ void applyAction(AppState& s, const ScriptAction& a) {
   } else if (n == "export_model") {
     s.derived.update(s.doc);
     actions::exportModel(s, text(a));
+  } else if (n == "set_model") {
+    actions::setModelSource(s, text(a));
   } else if (n == "coefficients_from_subject") {
     s.derived.update(s.doc);
     actions::coefficientsFromWalker(s);

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "ui/app/app_state.h"
+#include "ui/app/held_model.h"
 #include "ui/app/theme.h"
 
 namespace ew::ui {
@@ -28,11 +29,58 @@ nlohmann::json dataJson(const Document& d) {
 
 nlohmann::json selectionJson(const Document& d) {
   nlohmann::json j = {{"index", d.walker}};
-  if (d.population && d.walker >= 0 && d.walker < d.population->walkerCount()) {
-    const auto& w = d.population->walkers[static_cast<std::size_t>(d.walker)];
-    j["id"] = w.id;
-    j["subject"] = w.subject;
+  if (const Walker* w = d.selectedWalker()) {
+    j["inspected"] = d.isInspected(d.walker);
+    j["id"] = w->id;
+    j["subject"] = w->subject;
+    j["files"] = w->files;
   }
+  return j;
+}
+
+// The model held, and the walkers inspected against it.
+nlohmann::json modelJson(const Document& d) {
+  nlohmann::json j = {{"source", modelSourceName(d.modelSource)}, {"name", heldModelName(d)}};
+  if (const EigenwalkerModel* m = d.heldModel()) {
+    j["walkers"] = m->walkerCount();
+    j["components"] = m->componentCount();
+  }
+  nlohmann::json files = nlohmann::json::array();
+  for (const auto& f : d.modelFiles) files.push_back(f->file.string());
+  j["files"] = files;
+  nlohmann::json inspected = nlohmann::json::array();
+  if (d.inspected)
+    for (const auto& w : d.inspected->walkers) inspected.push_back(w.id);
+  j["inspected"] = inspected;
+  return j;
+}
+
+// What the reconstruction of the selected walker used and measured (the metrics strip).
+nlohmann::json reconstructionJson(const Derived& derived) {
+  const ReconBase* r = derived.recon();
+  const ReconDisplay* d = derived.display();
+  if (!r || !d) return nullptr;
+  nlohmann::json j = {{"model", r->modelName},
+                      {"in_model", r->inModel},
+                      {"held_out", r->heldOutSubject},
+                      {"model_walkers", r->modelWalkers},
+                      {"components", r->components},
+                      {"alpha_used_deg", r->alphaUsedDeg},
+                      {"abs_error_mm2", d->errors.absMean},
+                      {"rel_error", d->errors.relMean},
+                      {"mpjpe_mm", d->mpjpeMm},
+                      {"residual_rms_mm", d->residualRmsMm}};
+  std::vector<double> perJoint(d->depthRmsMm.data(), d->depthRmsMm.data() + d->depthRmsMm.size());
+  j["depth_rms_mm"] = perJoint;
+  // Joints the marker set lacked, estimated from a model: their errors apart.
+  nlohmann::json estimated = nlohmann::json::array();
+  for (int i = 0; i < kJointCount; ++i)
+    if (r->modelEstimated[static_cast<std::size_t>(i)]) estimated.push_back(kJointNames[i]);
+  j["model_estimated"] = estimated;
+  j["mpjpe_measured_mm"] = d->mpjpeMeasuredMm;
+  j["mpjpe_model_estimated_mm"] = d->mpjpeModelEstimatedMm
+                                      ? nlohmann::json(*d->mpjpeModelEstimatedMm)
+                                      : nlohmann::json(nullptr);
   return j;
 }
 
@@ -48,6 +96,9 @@ nlohmann::json stateJson(const AppState& s) {
   nlohmann::json j;
   j["data"] = dataJson(d);
   j["walker"] = selectionJson(d);
+  j["model"] = modelJson(d);
+  j["reconstruction"] = reconstructionJson(s.derived);
+  j["reconstruction_error"] = s.derived.error();
   j["mode"] = d.mode == Mode::Reconstruct ? "reconstruct" : "explore";
   j["angle_deg"] = d.recon.alphaDeg;
   j["method"] = d.recon.estimator == Estimator::Lsq ? "lsq" : "map";

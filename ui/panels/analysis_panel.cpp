@@ -57,10 +57,8 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   }
   actions::requestAnalysis(s);
   const auto result = s.analysis.find(actions::analysisKey(s));
-  const std::string subject =
-      s.doc.population && s.doc.population->walkerCount() > 0
-          ? s.doc.population->walkers[static_cast<std::size_t>(s.doc.walker)].subject
-          : std::string();
+  const Walker* selected = s.doc.selectedWalker();
+  const std::string subject = selected ? selected->subject : std::string();
 
   // Controls.
   ImGui::AlignTextToFramePadding();

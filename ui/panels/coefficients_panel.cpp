@@ -20,7 +20,8 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
       ImGui::SameLine();
       if (ImGui::Button("Randomise")) actions::randomiseCoefficients(s, randomSeed++);
       ImGui::SameLine();
-      if (ImGui::Button("From subject") && s.doc.population) actions::coefficientsFromWalker(s);
+      if (ImGui::Button("From subject") && s.doc.selectedWalker())
+        actions::coefficientsFromWalker(s);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected walker's coefficients in the full model");
       ImGui::TextDisabled("units: SD of each component (√λ)");
     } else {

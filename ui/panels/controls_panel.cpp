@@ -54,7 +54,7 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     ImGui::EndDisabled();
 
     sectionTitle("Eigenwalkers");
-    const int maxN = doc.models ? doc.models->all.componentCount() : 1;
+    const int maxN = doc.heldModel() ? doc.heldModel()->componentCount() : 1;
     int n = doc.recon.components;
     const int shown = doc.mode == Mode::Explore
                           ? (s.derived.explore() ? s.derived.explore()->components : 0)

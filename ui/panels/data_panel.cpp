@@ -222,6 +222,11 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
       }
       ImGui::EndTabItem();
     }
+    // [SECTION] Joint mapping: a table of a file's labels that writes a mapping file
+    if (ImGui::BeginTabItem("Joint mapping")) {
+      mapping.draw(s, ctx);
+      ImGui::EndTabItem();
+    }
     ImGui::EndTabBar();
   }
   ImGui::End();

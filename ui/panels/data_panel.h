@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "ui/panels/mapping_tab.h"
 #include "ui/panels/panel_window.h"
 
 namespace ew::ui {
@@ -35,6 +36,7 @@ struct DataPanel {
   std::array<bool, 5> formats{true, true, true, true, true};  // c3d, bvh, asf/amc, trc, csv
   std::map<std::string, OverrideEdit> edits;  // by file path, until applied
   std::string status;
+  MappingTab mapping;  // the "Joint mapping" tab
 
   void draw(AppState& s, const FrameContext& ctx);
 

@@ -1,19 +1,122 @@
 #include "ui/panels/header_panel.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <exception>
+#include <string>
+#include <vector>
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/app/held_model.h"
+#include "ui/widgets/text_fit.h"
 
 namespace ew::ui {
 
+namespace {
+
+std::string componentsText(int n, bool automatic, double explained) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "N = %d%s (%.1f %% of variance)", n, automatic ? " auto" : "",
+                100.0 * explained);
+  return buf;
+}
+
+// Progress of the background work, right-aligned (returns the x where it starts).
+float drawProgress(AppState& s, const FrameContext& ctx, float right) {
+  const float w = std::min(420.0f * ctx.scale, 0.3f * right);
+  if (s.exports.video) {
+    const auto& v = *s.exports.video;
+    const std::string what =
+        "Video: frame " + std::to_string(v.framesDone()) + " of " + std::to_string(v.frameCount());
+    const float cancelW = ImGui::CalcTextSize("Cancel").x + 2.0f * ImGui::GetStyle().FramePadding.x;
+    const float x = right - w - cancelW - ImGui::GetStyle().ItemSpacing.x;
+    ImGui::SameLine(x);
+    ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
+    ImGui::ProgressBar(v.fraction(), ImVec2(w, 0.0f), what.c_str());
+    ImGui::PopStyleColor();
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Cancel")) actions::cancelVideoExport(s);
+    return x;
+  }
+  if (!s.jobs.busy()) return right;
+  const bool loading = s.jobs.load.running();
+  const bool analysing = !loading && !s.jobs.models.running() && s.jobs.analysis.running();
+  const float fraction = loading     ? s.jobs.load.fraction()
+                         : analysing ? s.jobs.analysis.fraction()
+                                     : s.jobs.models.fraction();
+  const std::string what = loading     ? s.jobs.load.title() + ": " + s.jobs.load.what()
+                           : analysing ? s.jobs.analysis.title()
+                                       : s.jobs.models.title() + ": " + s.jobs.models.what();
+  ImGui::SameLine(right - w);
+  ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
+  ImGui::ProgressBar(fraction, ImVec2(w, 0.0f), fitText(what, w).c_str());
+  ImGui::PopStyleColor();
+  return right - w;
+}
+
+// One entry of the model selector; a choice that fails says why in the log.
+void modelChoice(AppState& s, const char* label, bool selected, bool enabled,
+                 const std::string& which) {
+  if (!enabled) ImGui::BeginDisabled();
+  if (ImGui::RadioButton(label, selected) && !selected) {
+    try {
+      actions::setModelSource(s, which);
+    } catch (const std::exception& e) {
+      actions::reportError(s, "Could not use that model", e.what());
+    }
+  }
+  if (!enabled) ImGui::EndDisabled();
+}
+
+}  // namespace
+
+std::vector<std::string> modelLines(const AppState& s) {
+  std::string full, medium, brief;
+  if (s.doc.mode == Mode::Reconstruct) {
+    if (const auto* r = s.derived.recon()) {
+      const std::string n =
+          "N = " + std::to_string(r->components) + (r->autoComponents ? " auto" : "");
+      full = "model: " + r->modelName + "  ·  ";
+      full += r->inModel ? "in the model: leave-one-out model without " + r->heldOutSubject + " (" +
+                               std::to_string(r->modelWalkers) + " walkers)"
+                         : std::string("walker not in the model");
+      full += "  ·  " + componentsText(r->components, r->autoComponents, r->explained);
+      medium = "model: " + r->modelName + "  ·  " +
+               (r->inModel ? "in it: leave-one-out without " + r->heldOutSubject
+                           : "walker not in the model") +
+               "  ·  " + n;
+      brief =
+          r->modelName + " · " + (r->inModel ? "without " + r->heldOutSubject : "not in the model");
+    } else if (s.doc.heldModel()) {
+      full = medium = brief = "model: " + heldModelName(s.doc);
+    }
+  } else if (const auto* e = s.derived.explore()) {
+    full = "model: " + e->modelName + ", all " + std::to_string(e->modelWalkers) + " walkers  ·  " +
+           componentsText(e->components, e->autoComponents, e->explained);
+    medium = brief = "model: " + e->modelName;
+  }
+  if (s.doc.population)
+    full += (full.empty() ? "" : "  ·  ") + std::string("data: ") + s.doc.population->label + " (" +
+            std::to_string(s.doc.population->walkerCount()) + " walkers)";
+  if (s.doc.inspected)
+    full += "  ·  inspecting " + std::to_string(s.doc.inspected->walkerCount()) + " of your own";
+  return {full, medium, brief};
+}
+
 void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  if (beginPanel(ctx.backdrop, "##header", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
+  if (beginPanel(ctx.backdrop, "##header", rect,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
     if (s.fonts.large) ImGui::PushFont(s.fonts.large);
     ImGui::TextColored(ImVec4(1.0f, 0.72f, 0.38f, 1.0f), "Eigenwalker");
     if (s.fonts.large) ImGui::PopFont();
     ImGui::SameLine(0.0f, 18.0f * ctx.scale);
     if (ImGui::Button("Open…")) s.panels.data.open = !s.panels.data.open;
+    ImGui::SameLine();
+    if (ImGui::Button("Model…")) modelMenuOpen = !modelMenuOpen;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Which model the walkers are inspected against");
+    modelButtonX = ImGui::GetItemRectMin().x;
+    modelButtonBottom = ImGui::GetItemRectMax().y;
     ImGui::SameLine();
     if (ImGui::Button("Export…")) s.panels.exports.open = !s.panels.exports.open;
     ImGui::SameLine();
@@ -30,69 +133,65 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
     if (ImGui::Button("?")) s.panels.help.open = !s.panels.help.open;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keyboard and mouse (F1)");
     ImGui::SameLine(0.0f, 18.0f * ctx.scale);
-    ImGui::AlignTextToFramePadding();
-    if (s.doc.population) {
-      ImGui::TextDisabled("data:");
-      ImGui::SameLine();
-      ImGui::Text("%s (%d walkers)", s.doc.population->label.c_str(), s.doc.population->walkerCount());
-    }
-    if (s.doc.mode == Mode::Reconstruct) {
-      if (const auto* r = s.derived.recon()) {
-        ImGui::SameLine(0.0f, 24.0f * ctx.scale);
-        ImGui::TextDisabled("model:");
-        ImGui::SameLine();
-        ImGui::Text("%d walkers, %s held out  ·  N = %d%s (%.1f %% of variance)", r->modelWalkers,
-                    r->heldOutSubject.c_str(), r->components, r->autoComponents ? " auto" : "",
-                    100.0 * r->explained);
+    const float lineX = ImGui::GetCursorPosX();
+    const float progressX = drawProgress(s, ctx, ImGui::GetWindowContentRegionMax().x);
+    // The model line fills what the buttons and the progress bar leave, never overprinting.
+    // The longest of the line's forms that fits (the last one shortened when none does).
+    const auto lines = modelLines(s);
+    if (!lines.front().empty()) {
+      ImGui::SameLine(lineX);
+      ImGui::AlignTextToFramePadding();
+      const float room = std::max(0.0f, progressX - lineX - 12.0f * ctx.scale);
+      std::string shown = lines.back();
+      for (const auto& l : lines) {
+        if (ImGui::CalcTextSize(l.c_str()).x <= room) {
+          shown = l;
+          break;
+        }
       }
-    } else if (const auto* e = s.derived.explore()) {
-      ImGui::SameLine(0.0f, 24.0f * ctx.scale);
-      ImGui::TextDisabled("model:");
-      ImGui::SameLine();
-      ImGui::Text("all %d walkers  ·  N = %d (%.1f %% of variance)", e->modelWalkers, e->components,
-                  100.0 * e->explained);
-    }
-
-    // Right side: progress, or an export error (a failed open has its banner over the views).
-    const float right = ImGui::GetWindowContentRegionMax().x;
-    if (s.exports.video) {
-      const auto& v = *s.exports.video;
-      const float w = 420.0f * ctx.scale;
-      const std::string what = "Video: frame " + std::to_string(v.framesDone()) + " of " +
-                               std::to_string(v.frameCount());
-      ImGui::SameLine(right - w - 70.0f * ctx.scale);
-      ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
-      ImGui::ProgressBar(v.fraction(), ImVec2(w, 0.0f), what.c_str());
-      ImGui::PopStyleColor();
-      ImGui::SameLine();
-      if (ImGui::SmallButton("Cancel")) actions::cancelVideoExport(s);
-    } else if (s.jobs.busy()) {
-      const bool loading = s.jobs.load.running();
-      const bool analysing = !loading && !s.jobs.models.running() && s.jobs.analysis.running();
-      const float fraction = loading     ? s.jobs.load.fraction()
-                             : analysing ? s.jobs.analysis.fraction()
-                                         : s.jobs.models.fraction();
-      const std::string what = loading     ? s.jobs.load.title() + ": " + s.jobs.load.what()
-                               : analysing ? s.jobs.analysis.title()
-                                           : s.jobs.models.title() + ": " + s.jobs.models.what();
-      const float w = 420.0f * ctx.scale;
-      ImGui::SameLine(right - w);
-      ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
-      ImGui::ProgressBar(fraction, ImVec2(w, 0.0f), what.c_str());
-      ImGui::PopStyleColor();
-    } else if (!s.exports.lastError.empty()) {
-      const float w = 560.0f * ctx.scale;
-      ImGui::SameLine(right - w);
-      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", s.exports.lastError.substr(0, 80).c_str());
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", s.exports.lastError.c_str());
-      ImGui::SameLine();
-      if (ImGui::SmallButton("Dismiss##export")) s.exports.lastError.clear();
-    } else if (!s.derived.error().empty()) {
-      ImGui::SameLine(right - 560.0f * ctx.scale);
-      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", s.derived.error().substr(0, 80).c_str());
+      ImGui::TextUnformatted(fitText(shown, room).c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", lines.front().c_str());
     }
   }
   ImGui::End();
+}
+
+void HeaderPanel::drawModelMenu(AppState& s, const FrameContext& ctx) {
+  if (!modelMenuOpen) return;
+  ImGui::SetNextWindowPos(ImVec2(modelButtonX, modelButtonBottom + 4.0f * ctx.scale),
+                          ImGuiCond_Always);
+  bool open = true;
+  if (ImGui::Begin("Model###model_menu", &open,
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
+                       ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove)) {
+    ImGui::TextDisabled("Every walker is reconstructed with this model; a walker it was built");
+    ImGui::TextDisabled("from is reconstructed with the model without its subject.");
+    ImGui::Separator();
+    const auto& d = s.doc;
+    const std::string pop = d.population ? "Population: " + d.population->label + " (" +
+                                               std::to_string(d.population->walkerCount()) +
+                                               " walkers, leave-one-out)"
+                                         : std::string("Population (none loaded)");
+    modelChoice(s, pop.c_str(), d.modelSource == ModelSource::Population, d.models != nullptr,
+                "population");
+    const std::string def =
+        d.defaultModel ? "Default: " + d.defaultModel->name : std::string("Default: real walkers");
+    modelChoice(s, def.c_str(), d.modelSource == ModelSource::Default, true, "default");
+    for (std::size_t i = 0; i < d.modelFiles.size(); ++i) {
+      const auto& m = *d.modelFiles[i];
+      const std::string label =
+          "File: " + m.name + " (" + std::to_string(m.model.walkerCount()) + " walkers)";
+      ImGui::PushID(static_cast<int>(i));
+      modelChoice(s, label.c_str(),
+                  d.modelSource == ModelSource::File && d.modelFile == static_cast<int>(i), true,
+                  m.file.string());
+      ImGui::PopID();
+    }
+    ImGui::Separator();
+    ImGui::TextDisabled("Open or drop a .ewm file (eigenwalker-cli build) to add one.");
+  }
+  ImGui::End();
+  if (!open) modelMenuOpen = false;
 }
 
 }  // namespace ew::ui

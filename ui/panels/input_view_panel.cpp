@@ -1,5 +1,6 @@
 #include "ui/panels/input_view_panel.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <vector>
 
@@ -56,6 +57,15 @@ bool buildInputScene(const AppState& s, Scene& scene, float lineScale, double ph
     }
     const Pose2 pose = toPose2(frameAtPhase(*input, phase));
     addPointLights(scene, pose, 34.0f, o.stickFigure && !o.pointLights, 2.5f * lineScale);
+    // Joints estimated from a model (the marker set lacked them) are no measured point-lights.
+    if (reconstruct && r && scene.glows.size() >= pose.size()) {
+      const std::size_t first = scene.glows.size() - pose.size();
+      for (std::size_t j = 0; j < pose.size(); ++j) {
+        if (!r->modelEstimated[j]) continue;
+        scene.glows[first + j].colour = palette::kModelEstimated;
+        scene.glows[first + j].radius *= 0.8f;
+      }
+    }
     if (reconstruct && d && o.reprojection && !o.pointLights) {
       const Pose2 rec = toPose2(frameAtPhase(d->reprojected, phase));
       for (const auto& [ja, jb] : kBones) {
@@ -109,6 +119,12 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
       drawScaleBar(dl, ImVec2(p1.x - pad - 500.0f * pxPerMm - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale),
                    pxPerMm, 500.0f, ctx.scale);
       std::vector<LegendItem> legend{{palette::kInputPoint, "input joints (u, v)", false}};
+      const ReconBase* r = s.derived.recon();
+      const bool anyEstimated =
+          reconstruct && r &&
+          std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(), [](bool b) { return b; });
+      if (anyEstimated)
+        legend.push_back({palette::kModelEstimated, "model-estimated (not measured)", false});
       if (reconstruct && o.reprojection && !o.pointLights) {
         legend.push_back({palette::kReconRight,
                           s.doc.recon.unknownAngle ? "reconstruction seen at est. α" : "reconstruction seen at α", true});

@@ -12,6 +12,7 @@ namespace ew::ui {
 void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   if (beginPanel(ctx.backdrop, "Depth error per joint (RMS over one cycle, mm)", rect, ImGuiWindowFlags_NoScrollbar)) {
     const ReconDisplay* d = s.derived.display();
+    const ReconBase* r = s.derived.recon();
     if (s.doc.mode == Mode::Explore) {
       ImGui::TextDisabled("reconstruct mode only");
     } else if (!s.view.overlays.errorBars) {
@@ -36,8 +37,12 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
         const float v = static_cast<float>(d->depthRmsMm(j));
         const float w = barMax * std::min(v / scaleMm, 1.0f);
         const auto name = kJointNames[static_cast<std::size_t>(j)];
-        dl->AddText(ImVec2(x, y + 0.5f * (rowH - textH)), ImGui::GetColorU32(ImGuiCol_TextDisabled), name.data(),
-                    name.data() + name.size());
+        // Model-estimated joints (the marker set lacked them): their name in the legend's colour.
+        const bool estimated = r && r->modelEstimated[static_cast<std::size_t>(j)];
+        dl->AddText(ImVec2(x, y + 0.5f * (rowH - textH)),
+                    estimated ? toImU32(palette::kModelEstimated)
+                              : ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                    name.data(), name.data() + name.size());
         const float bh = std::max(3.0f, std::min(rowH * 0.62f, textH * 0.8f));
         const float by = y + 0.5f * (rowH - bh);
         dl->AddRectFilled(ImVec2(x + labelW, by), ImVec2(x + labelW + barMax, by + bh),
@@ -54,9 +59,13 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
         const int col = std::clamp(static_cast<int>((ImGui::GetMousePos().x - p0.x) / colW), 0, columns - 1);
         const int row = std::clamp(static_cast<int>((ImGui::GetMousePos().y - p0.y) / rowH), 0, rows - 1);
         const int j = std::min(col * rows + row, kJointCount - 1);
-        ImGui::SetTooltip("%s: RMS depth error %.1f mm (E_abs %.0f mm², E_rel %.3f)",
+        ImGui::SetTooltip("%s: RMS depth error %.1f mm (E_abs %.0f mm², E_rel %.3f)%s",
                           kJointNames[static_cast<std::size_t>(j)].data(), d->depthRmsMm(j),
-                          d->errors.absPerJoint(j), d->errors.relPerJoint(j));
+                          d->errors.absPerJoint(j), d->errors.relPerJoint(j),
+                          r && r->modelEstimated[static_cast<std::size_t>(j)]
+                              ? "\nmodel-estimated: the marker set lacks this joint; its ground "
+                                "truth is the model's"
+                              : "");
       }
     } else {
       ImGui::TextDisabled("no reconstruction");

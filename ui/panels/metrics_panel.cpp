@@ -48,7 +48,14 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
       std::snprintf(n, sizeof n, "σ_m² %.0f mm²", d->errors.sigmaM2Mm2);
       metric(s, "E_r  relative", v, n, w);
       std::snprintf(v, sizeof v, "%.1f mm", d->mpjpeMm);
-      metric(s, "MPJPE  3D", v, "", w);
+      // Joints estimated from a model are scored apart (their ground truth is the model's).
+      if (d->mpjpeModelEstimatedMm) {
+        std::snprintf(n, sizeof n, "measured %.1f · est. %.1f", d->mpjpeMeasuredMm,
+                      *d->mpjpeModelEstimatedMm);
+      } else {
+        n[0] = '\0';
+      }
+      metric(s, "MPJPE  3D", v, n, w);
       std::snprintf(v, sizeof v, "%.1f mm", d->residualRmsMm);
       metric(s, "2D residual  RMS", v, d->edited ? "(edited k)" : "", w,
              d->edited ? ImVec4(1.0f, 0.72f, 0.38f, 1.0f) : ImGui::GetStyleColorVec4(ImGuiCol_Text));

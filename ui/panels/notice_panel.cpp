@@ -9,112 +9,196 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/widgets/text_fit.h"
 
 namespace ew::ui {
 
 namespace {
 
-// The banner keeps its own dark colours in every theme, so its text colours are fixed too.
+// The row keeps its own dark colours in every theme, so its text colours are fixed too.
 const ImVec4 kErrorBg{0.23f, 0.07f, 0.09f, 1.0f};
 const ImVec4 kErrorAccent{1.0f, 0.45f, 0.5f, 1.0f};
 const ImVec4 kWarningBg{0.22f, 0.16f, 0.05f, 1.0f};
 const ImVec4 kWarningAccent{0.98f, 0.8f, 0.35f, 1.0f};
 const ImVec4 kDetailText{0.95f, 0.93f, 0.93f, 1.0f};
 const ImVec4 kKeptText{0.62f, 0.88f, 0.8f, 1.0f};
-constexpr int kMaxDetailLines = 6;  // longer reasons scroll
 
 float buttonWidth(const char* label) {
   return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
 }
 
+// A "name: " prefix that names a file or folder (no spaces, a dot or a slash in it).
+std::size_t filePrefixEnd(const std::string& line) {
+  const std::size_t colon = line.find(": ");
+  if (colon == std::string::npos || colon == 0) return 0;
+  const std::string head = line.substr(0, colon);
+  if (head.find(' ') != std::string::npos) return 0;
+  if (head.find('.') == std::string::npos && head.find('/') == std::string::npos) return 0;
+  return colon + 2;
+}
+
+// The buttons of a notice, left to right.
+std::vector<const char*> buttonsFor(const AppState& s, const NoticeView& n) {
+  std::vector<const char*> buttons{"Details…"};
+  if (n.canRetry) buttons.push_back("Retry");
+  if (n.kind == NoticeView::Kind::Open && n.error && s.doc.walkerCount() == 0 && !s.jobs.busy())
+    buttons.push_back("Open the synthetic default");
+  buttons.push_back("Dismiss");
+  return buttons;
+}
+
 }  // namespace
 
-void NoticePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& area) {
-  if (!s.jobs.notice) return;
-  const OpenNotice n = *s.jobs.notice;  // a button below may replace or clear it
+std::string shortReason(const std::string& message) {
+  std::string line = message.substr(0, message.find('\n'));
+  line.erase(0, filePrefixEnd(line));
+  std::size_t cut = line.size();
+  for (const char* stop : {"; ", " (", ". "}) cut = std::min(cut, line.find(stop));
+  line.resize(cut);
+  return line;
+}
+
+std::optional<NoticeView> NoticePanel::current(const AppState& s) const {
+  if (s.jobs.notice) {
+    const auto& o = *s.jobs.notice;
+    return NoticeView{NoticeView::Kind::Open,
+                      o.error,
+                      o.title,
+                      o.detail,
+                      o.fullText,
+                      o.kept,
+                      o.canRetry,
+                      o.serial};
+  }
+  if (!s.exports.lastError.empty())
+    return NoticeView{NoticeView::Kind::Export,
+                      true,
+                      "Export failed",
+                      s.exports.lastError,
+                      s.exports.lastError,
+                      "Nothing was written; what is shown has not changed.",
+                      false,
+                      0};
+  const std::string& recon = s.derived.error();
+  if (!recon.empty() && recon != dismissedReconError)
+    return NoticeView{NoticeView::Kind::Reconstruction,
+                      true,
+                      "Reconstruction failed",
+                      recon,
+                      recon,
+                      "Choose another walker, model or setting.",
+                      false,
+                      0};
+  return std::nullopt;
+}
+
+void NoticePanel::apply(AppState& s, const NoticeView& n, const std::string& clicked) {
+  if (clicked.empty()) return;
+  if (clicked == "Details…") {
+    detailsOpen = true;
+    return;
+  }
+  detailsOpen = false;
+  if (n.kind == NoticeView::Kind::Export) {
+    s.exports.lastError.clear();
+  } else if (n.kind == NoticeView::Kind::Reconstruction) {
+    dismissedReconError = n.detail;
+  } else if (clicked == "Retry") {
+    const auto paths = s.jobs.notice->retryPaths;
+    actions::dismissNotice(s);
+    actions::open(s, paths);
+  } else if (clicked == "Open the synthetic default") {
+    actions::dismissNotice(s);
+    actions::open(s, {});
+  } else {
+    actions::dismissNotice(s);
+  }
+}
+
+void NoticePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& row) {
+  const auto shown = current(s);
+  if (!shown || row.size.y <= 0.0f) return;
+  const NoticeView n = *shown;  // a button below may replace or clear it
   const ImVec4 accent = n.error ? kErrorAccent : kWarningAccent;
-  const float margin = 8.0f * ctx.scale;
-  const float width = std::max(area.size.x - 2.0f * margin, 240.0f * ctx.scale);
-  ImGui::SetNextWindowPos(ImVec2(area.pos.x + margin, area.pos.y + 0.5f * margin),
-                          ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);
   ImGui::PushStyleColor(ImGuiCol_WindowBg, n.error ? kErrorBg : kWarningBg);
-  ImGui::PushStyleColor(ImGuiCol_Border, accent);
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, std::max(1.0f, 1.5f * ctx.scale));
-  const bool shown =
-      ImGui::Begin("##open_notice", nullptr,
-                   ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize |
-                       ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                       ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize |
-                       ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-  ImGui::PopStyleVar();
-  ImGui::PopStyleColor(2);
-  if (shown) {
-    // A new notice comes in front of the floating windows once (the Data window it came from).
-    if (n.serial != frontSerial) {
-      ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
-      frontSerial = n.serial;
-    }
+  const bool open = beginPanel(ctx.backdrop, "##notice_row", row,
+                               ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar |
+                                   ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoNav);
+  ImGui::PopStyleColor();
+  if (open) {
     const ImGuiStyle& style = ImGui::GetStyle();
-    const float contentW = width - 2.0f * style.WindowPadding.x;
-    // Title, then the buttons on the right (or below it when it is long).
-    std::vector<const char*> buttons;
-    if (n.canRetry) buttons.push_back("Retry");
-    const bool nothingLoaded = !s.doc.population && !s.jobs.busy();
-    if (n.error && nothingLoaded) buttons.push_back("Open the synthetic default");
-    buttons.push_back("Dismiss");
+    const auto buttons = buttonsFor(s, n);
     float buttonsW = 0.0f;
     for (const char* b : buttons) buttonsW += buttonWidth(b) + style.ItemSpacing.x;
-    if (s.fonts.large) ImGui::PushFont(s.fonts.large);
-    const float titleW = ImGui::CalcTextSize(n.title.c_str()).x;
-    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + contentW);
-    ImGui::TextColored(accent, "%s", n.title.c_str());
-    ImGui::PopTextWrapPos();
-    if (s.fonts.large) ImGui::PopFont();
-    if (titleW + buttonsW <= contentW) {
-      ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - buttonsW + style.ItemSpacing.x);
-    }
+    // Title and reason share what the buttons leave; the title gets at most half of it.
+    const float room =
+        std::max(0.0f, ImGui::GetContentRegionAvail().x - buttonsW - style.ItemSpacing.x);
+    const std::string title = fitText(n.title + ":", 0.5f * room);
+    ImGui::AlignTextToFramePadding();
+    ImGui::TextColored(accent, "%s", title.c_str());
+    const float used = ImGui::GetItemRectSize().x + style.ItemSpacing.x;
+    ImGui::SameLine();
+    const std::string reason = fitText(shortReason(n.detail), std::max(0.0f, room - used));
+    ImGui::TextColored(kDetailText, "%s", reason.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", n.fullText.c_str());
+    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - buttonsW + style.ItemSpacing.x);
     std::string clicked;
     for (std::size_t i = 0; i < buttons.size(); ++i) {
       if (i > 0) ImGui::SameLine();
       if (ImGui::Button(buttons[i])) clicked = buttons[i];
     }
+    apply(s, n, clicked);
+  }
+  ImGui::End();
+}
 
-    // Why, in full (scrolling past kMaxDetailLines lines), then what is still shown.
+void NoticePanel::drawDetails(AppState& s, const FrameContext& ctx) {
+  const auto shown = current(s);
+  if (!shown) detailsOpen = false;
+  if (!detailsOpen) return;
+  const NoticeView n = *shown;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float width = std::min(760.0f * ctx.scale, display.x - 40.0f * ctx.scale);
+  ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.4f), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, display.y * 0.8f));
+  bool keep = true;
+  if (ImGui::Begin((n.title + "###notice_details").c_str(), &keep,
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
+                       ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (n.serial != frontSerial) {
+      ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
+      frontSerial = n.serial;
+    }
+    const float contentW = width - 2.0f * ImGui::GetStyle().WindowPadding.x;
+    const float maxH = 12.0f * ImGui::GetTextLineHeightWithSpacing();
+    const float textH = ImGui::CalcTextSize(n.fullText.c_str(), nullptr, false, contentW).y;
     ImGui::PushStyleColor(ImGuiCol_Text, kDetailText);
-    const float detailH = ImGui::CalcTextSize(n.detail.c_str(), nullptr, false, contentW).y;
-    const float maxH = static_cast<float>(kMaxDetailLines) * ImGui::GetTextLineHeightWithSpacing();
-    if (!n.detail.empty() && detailH > maxH) {
-      ImGui::BeginChild("##detail", ImVec2(contentW, maxH));
-      ImGui::TextWrapped("%s", n.detail.c_str());
-      ImGui::EndChild();
-    } else if (!n.detail.empty()) {
-      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + contentW);
-      ImGui::TextUnformatted(n.detail.c_str());
-      ImGui::PopTextWrapPos();
-    }
+    ImGui::BeginChild("##full", ImVec2(contentW, std::min(maxH, textH + 8.0f * ctx.scale)));
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(n.fullText.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndChild();
     ImGui::PopStyleColor();
-    if (n.fullText != n.detail && !n.fullText.empty() && ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("%s", n.fullText.c_str());
-    }
     if (!n.kept.empty()) {
       ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + contentW);
       ImGui::TextColored(kKeptText, "%s", n.kept.c_str());
       ImGui::PopTextWrapPos();
     }
-    ImGui::Dummy(ImVec2(contentW, 0.0f));  // the banner spans the views even for a short message
-
-    if (clicked == "Retry") {
-      actions::dismissNotice(s);
-      actions::open(s, n.retryPaths);
-    } else if (clicked == "Open the synthetic default") {
-      actions::dismissNotice(s);
-      actions::open(s, {});
-    } else if (clicked == "Dismiss") {
-      actions::dismissNotice(s);
+    ImGui::Separator();
+    std::string clicked;
+    if (ImGui::Button("Copy")) ImGui::SetClipboardText(n.fullText.c_str());
+    for (const char* b : buttonsFor(s, n)) {
+      if (std::string(b) == "Details…") continue;
+      ImGui::SameLine();
+      if (ImGui::Button(b)) clicked = b;
     }
+    ImGui::SameLine();
+    if (ImGui::Button("Close")) keep = false;
+    apply(s, n, clicked);
   }
   ImGui::End();
+  if (!keep) detailsOpen = false;
 }
 
 }  // namespace ew::ui

@@ -35,10 +35,9 @@ void handleMouse(OrbitCamera& camera, const ImVec2& size) {
 }
 
 float strideLengthMm(const AppState& s) {
-  if (s.doc.mode == Mode::Reconstruct && s.doc.population) {
-    const auto& f = s.doc.population->facts[static_cast<std::size_t>(s.doc.walker)];
-    if (f.speedMps && f.strideHz > 0.0) return static_cast<float>(*f.speedMps * 1000.0 / f.strideHz);
-  }
+  const WalkerFacts* f = s.doc.selectedFacts();
+  if (s.doc.mode == Mode::Reconstruct && f && f->speedMps && f->strideHz > 0.0)
+    return static_cast<float>(*f->speedMps * 1000.0 / f->strideHz);
   return 1400.0f;
 }
 

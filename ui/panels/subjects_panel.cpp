@@ -35,7 +35,6 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
   if (beginPanel(ctx.backdrop, "Subjects", rect)) {
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::InputTextWithHint("##filter", "search subjects…", filter.data(), filter.size());
-    const auto* pop = s.doc.population.get();
     const float factsHeight = 175.0f * ctx.scale;
     const float listHeight = std::max(80.0f * ctx.scale, ImGui::GetContentRegionAvail().y - factsHeight);
     if (ImGui::BeginTable("walkers", 3,
@@ -46,9 +45,17 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       ImGui::TableSetupColumn("source", ImGuiTableColumnFlags_WidthStretch);
       ImGui::TableSetupColumn("Hz", ImGuiTableColumnFlags_WidthFixed, 44.0f * ctx.scale);
       ImGui::TableHeadersRow();
-      if (pop) {
-        for (int i = 0; i < pop->walkerCount(); ++i) {
-          const auto& w = pop->walkers[static_cast<std::size_t>(i)];
+      {
+        // The population's walkers, then the user's own trials inspected against the model.
+        for (int i = 0; i < s.doc.walkerCount(); ++i) {
+          const auto& w = *s.doc.walkerAt(i);
+          if (i == s.doc.populationCount()) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextColored(ImVec4(0.32f, 0.88f, 0.76f, 1.0f), "inspected");
+            if (ImGui::IsItemHovered())
+              ImGui::SetTooltip("Trials you opened, reconstructed with the model held (Model…)");
+          }
           if (filter[0] != '\0' && !containsNoCase(w.id, filter.data()) &&
               !containsNoCase(w.source, filter.data()))
             continue;
@@ -66,15 +73,15 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
           ImGui::TableNextColumn();
           ImGui::TextDisabled("%s", w.source.c_str());
           ImGui::TableNextColumn();
-          ImGui::Text("%.2f", pop->facts[static_cast<std::size_t>(i)].strideHz);
+          ImGui::Text("%.2f", s.doc.factsAt(i)->strideHz);
         }
       }
       ImGui::EndTable();
     }
 
-    if (pop && s.doc.walker < pop->walkerCount()) {
-      const auto& w = pop->walkers[static_cast<std::size_t>(s.doc.walker)];
-      const auto& f = pop->facts[static_cast<std::size_t>(s.doc.walker)];
+    if (s.doc.selectedWalker()) {
+      const auto& w = *s.doc.selectedWalker();
+      const auto& f = *s.doc.selectedFacts();
       ImGui::Spacing();
       if (ImGui::BeginTable("facts", 2, ImGuiTableFlags_SizingStretchProp)) {
         ImGui::TableSetupColumn("k", ImGuiTableColumnFlags_WidthFixed, 92.0f * ctx.scale);
@@ -91,6 +98,12 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
         std::string estimated;
         for (const auto& j : f.estimatedJoints) estimated += (estimated.empty() ? "" : ", ") + j;
         fact("estimated", estimated.empty() ? "none (all measured)" : estimated);
+        std::string fromModel;
+        for (int j = 0; j < kJointCount; ++j)
+          if (f.modelEstimated[static_cast<std::size_t>(j)])
+            fromModel += (fromModel.empty() ? "" : ", ") +
+                         std::string(kJointNames[static_cast<std::size_t>(j)]);
+        if (!fromModel.empty()) fact("from model", fromModel + " (the marker set lacks them)");
         if (f.h1Share > 0.0) {
           std::snprintf(buf, sizeof buf, "%.1f %% + %.1f %% (%d trial%s)", 100.0 * f.h1Share, 100.0 * f.h2Share,
                         f.trials, f.trials == 1 ? "" : "s");

@@ -17,6 +17,8 @@ inline constexpr glm::vec4 kGhostRight{0.36f, 0.62f, 1.00f, 0.38f};
 inline constexpr glm::vec4 kGhostLeft{0.62f, 0.80f, 1.00f, 0.38f};
 inline constexpr glm::vec4 kGhostMid{0.50f, 0.72f, 1.00f, 0.38f};
 inline constexpr glm::vec4 kInputPoint{0.96f, 0.97f, 1.00f, 1.0f};
+// A joint the trial's marker set lacks, estimated from a model: not a measured point-light.
+inline constexpr glm::vec4 kModelEstimated{0.40f, 0.62f, 0.66f, 1.0f};
 inline constexpr glm::vec4 kInputBoneRight{0.62f, 0.68f, 0.78f, 0.85f};
 inline constexpr glm::vec4 kInputBoneLeft{0.42f, 0.47f, 0.56f, 0.85f};
 inline constexpr glm::vec4 kError{1.00f, 0.28f, 0.62f, 0.95f};

@@ -1,0 +1,138 @@
+#include "ui/app/held_model.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/engine/default_model.h"
+#include "core/engine/model_file.h"
+
+namespace ew::ui {
+
+namespace {
+
+// Within this RMS (mm, over the 225 values) a walker is the model walker it matches.
+constexpr double kSameWalkerRmsMm = 1.0;
+
+bool isLetters(const std::string& s) {
+  return !s.empty() &&
+         std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalpha(c); });
+}
+
+// "SM2014001" names "2014001" (a manifest's short letter prefix before a file's subject).
+bool namesSubject(const std::string& modelSubject, const std::string& subject) {
+  if (modelSubject == subject) return true;
+  if (subject.empty() || modelSubject.size() <= subject.size()) return false;
+  const std::size_t prefix = modelSubject.size() - subject.size();
+  return prefix <= 4 && modelSubject.compare(prefix, subject.size(), subject) == 0 &&
+         isLetters(modelSubject.substr(0, prefix));
+}
+
+// The walkers' Fourier vectors as the model stores them: w̄ + E k_r (exact when the model
+// kept every component, R − 1).
+Eigen::MatrixXd storedWalkers(const EigenwalkerModel& m) {
+  Eigen::MatrixXd w = m.eigenwalkers * m.coefficients;
+  w.colwise() += m.mean;
+  return w;
+}
+
+EigenwalkerModel leaveOneOut(const EigenwalkerModel& m, const std::string& subject) {
+  ModelOptions every;
+  every.components = m.walkerCount();  // clamped to R' − 1 by the engine
+  return buildModelWithoutSubject(storedWalkers(m), m.walkerIds, m.subjects, m.omegasRadS, subject,
+                                  every);
+}
+
+}  // namespace
+
+std::string subjectInModel(const EigenwalkerModel& model, const Walker& walker) {
+  for (const auto& s : model.subjects)
+    if (namesSubject(s, walker.subject)) return s;
+  if (walker.fit.w.size() != model.mean.size() || model.coefficients.cols() == 0) return "";
+  const Eigen::VectorXd k = projectOntoModel(model, walker.fit.w);
+  const double limit = kSameWalkerRmsMm * std::sqrt(static_cast<double>(model.mean.size()));
+  for (Eigen::Index r = 0; r < model.coefficients.cols(); ++r)
+    if ((model.coefficients.col(r) - k).norm() < limit)
+      return model.subjects[static_cast<std::size_t>(r)];
+  return "";
+}
+
+WalkerModel modelForWalker(const Document& doc, int index) {
+  const Walker* walker = doc.walkerAt(index);
+  if (!walker) throw std::runtime_error("no walker " + std::to_string(index));
+  const EigenwalkerModel* held = doc.heldModel();
+  if (!held) throw std::runtime_error("the model is not ready yet");
+  WalkerModel out;
+  out.heldOutSubject = doc.modelSource == ModelSource::Population && !doc.isInspected(index)
+                           ? walker->subject
+                           : subjectInModel(*held, *walker);
+  out.member = !out.heldOutSubject.empty();
+  if (!out.member) {
+    out.model = *held;
+  } else if (doc.modelSource == ModelSource::Population) {
+    const auto it = doc.models->withoutSubject.find(out.heldOutSubject);
+    if (it == doc.models->withoutSubject.end())
+      throw std::runtime_error("no leave-one-out model for " + out.heldOutSubject);
+    out.model = it->second;
+  } else {
+    out.model = leaveOneOut(*held, out.heldOutSubject);
+  }
+  return out;
+}
+
+const char* modelSourceName(ModelSource source) {
+  switch (source) {
+    case ModelSource::Population:
+      return "population";
+    case ModelSource::Default:
+      return "default";
+    case ModelSource::File:
+      return "file";
+  }
+  return "population";
+}
+
+std::string heldModelName(const Document& doc) {
+  switch (doc.modelSource) {
+    case ModelSource::Population:
+      return doc.population ? doc.population->label + " (" +
+                                  std::to_string(doc.population->walkerCount()) + " walkers)"
+                            : "no population loaded";
+    case ModelSource::Default:
+      return doc.defaultModel ? doc.defaultModel->name : "the default model (not read)";
+    case ModelSource::File:
+      if (doc.modelFile >= 0 && doc.modelFile < static_cast<int>(doc.modelFiles.size())) {
+        const auto& m = *doc.modelFiles[static_cast<std::size_t>(doc.modelFile)];
+        return m.name + " (" + std::to_string(m.model.walkerCount()) + " walkers)";
+      }
+      return "no model file";
+  }
+  return "";
+}
+
+std::shared_ptr<const SavedModel> readDefaultModel() {
+  auto saved = std::make_shared<SavedModel>();
+  saved->model = defaultRealModel();
+  saved->name = defaultRealModelName();
+  if (saved->name.find("default") == std::string::npos) saved->name += " (default)";
+  return saved;
+}
+
+std::shared_ptr<const SavedModel> readModelFile(const std::filesystem::path& file) {
+  auto saved = std::make_shared<SavedModel>();
+  saved->model = loadModel(file);
+  checkModel(saved->model, file.string());
+  saved->file = file;
+  saved->name = file.filename().string();
+  return saved;
+}
+
+bool isModelFile(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext == ".ewm";
+}
+
+}  // namespace ew::ui
