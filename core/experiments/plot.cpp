@@ -198,6 +198,34 @@ BarPlot missingFigure(const EvaluationResults& r) {
   return p;
 }
 
+// Lower-body input: MPJPE of each estimated joint per method, the mean walker as baseline.
+BarPlot lowerBodyFigure(const EvaluationResults& r) {
+  BarPlot p{"Lower body measured, upper body from the model: MPJPE of the estimated joints",
+            "MPJPE over one cycle (mm)", {}, {}, {}, {}, {}};
+  const auto summary = summarizeLowerBody(r.lowerBody);
+  std::vector<std::string> methods, joints;
+  for (const auto& s : summary) {
+    if (std::find(methods.begin(), methods.end(), s.method) == methods.end()) methods.push_back(s.method);
+    if (std::find(joints.begin(), joints.end(), s.joint) == joints.end()) joints.push_back(s.joint);
+  }
+  for (const auto& m : methods) {
+    p.seriesLabels.push_back(m == "mean" ? "mean walker (baseline)" : methodLabel(m));
+    p.seriesColors.push_back(m == "mean" ? Rgb{150, 150, 150} : methodColor(m));
+  }
+  for (const auto& j : joints) {
+    BarGroup g{j, {}};
+    for (const auto& m : methods) {
+      double v = 0.0;
+      for (const auto& s : summary) {
+        if (s.method == m && s.joint == j) v = s.meanMpjpeMm;
+      }
+      g.values.push_back(v);
+    }
+    p.groups.push_back(g);
+  }
+  return p;
+}
+
 }  // namespace
 
 std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir, const EvaluationResults& r) {
@@ -219,6 +247,10 @@ std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir, 
   if (r.ran.count(Experiment::MissingJoints) && !r.missingJoints.empty()) {
     saveBarPlot(dir / "missing_joints.png", missingFigure(r));
     names.push_back("missing_joints.png");
+  }
+  if (r.ran.count(Experiment::LowerBody) && !r.lowerBody.empty()) {
+    saveBarPlot(dir / "lower_body.png", lowerBodyFigure(r));
+    names.push_back("lower_body.png");
   }
   return names;
 }
@@ -554,7 +586,8 @@ void saveBarPlot(const std::filesystem::path& file, const BarPlot& p, int width,
       if (std::isfinite(v)) vmax = std::max(vmax, v);
     }
   }
-  vmax = vmax > 0 && std::isfinite(vmax * 1.08) ? vmax * 1.08 : 1.0;
+  // A third more than the longest bar: room for the legend beside the bars, not over them.
+  vmax = vmax > 0 && std::isfinite(vmax * 1.35) ? vmax * 1.35 : 1.0;
   const Axes ax{area, 0.0, vmax, 0.0, 1.0, false};
   const double step = niceStep(vmax, 6);
   for (double v : ticks(0.0, vmax, step)) {
@@ -562,6 +595,7 @@ void saveBarPlot(const std::filesystem::path& file, const BarPlot& p, int width,
     cv::line(img, {x, area.y}, {x, area.y + area.height}, kAxisGrey, 1);
     text(img, tickLabel(v, step), x, area.y + area.height + 20, 0);
   }
+  std::vector<cv::Point> barPoints;
   const double rowH = static_cast<double>(area.height) / static_cast<double>(std::max<size_t>(p.groups.size(), 1));
   const size_t k = std::max<size_t>(p.seriesLabels.size(), 1);
   for (size_t g = 0; g < p.groups.size(); ++g) {
@@ -574,6 +608,8 @@ void saveBarPlot(const std::filesystem::path& file, const BarPlot& p, int width,
       const int x1 = ax.at(p.groups[g].values[s], 0.0).x;
       cv::rectangle(img, cv::Rect(area.x, y0, std::max(1, x1 - area.x), std::max(1, static_cast<int>(barH) - 1)),
                     bgr(p.seriesColors[s]), cv::FILLED);
+      // Points along the bar, so the legend goes to the corner it hides least.
+      for (int x = area.x; x <= x1; x += 8) barPoints.emplace_back(x, y0 + static_cast<int>(barH / 2));
     }
   }
   std::vector<PlotSeries> legend;
@@ -586,7 +622,7 @@ void saveBarPlot(const std::filesystem::path& file, const BarPlot& p, int width,
   cv::rectangle(img, area, kBlack, 1);
   text(img, p.title, width / 2, 32, 0, 0.62, 1);
   text(img, p.valueLabel, area.x + area.width / 2, height - 22, 0, 0.55);
-  drawLegend(img, area, legend, {});
+  drawLegend(img, area, legend, {}, barPoints);
   writePng(file, img);
 }
 

@@ -228,7 +228,7 @@ TEST(ResultsFolder, HeadersSummaryAndFigures) {
   if (plotsAvailable()) {
     for (const char* png : {"fig2_cumulative_variance.png", "fig3_sigma_sweep.png", "fig5a_abs_error.png",
                             "fig5b_rel_error.png", "fig5c_var_missing.png", "fig6_view_angle.png", "noise.png",
-                            "missing_joints.png"}) {
+                            "missing_joints.png", "lower_body.png"}) {
       EXPECT_TRUE(fs::exists(out / png)) << png;
       EXPECT_GT(fs::file_size(out / png), 5000u) << png;
     }
