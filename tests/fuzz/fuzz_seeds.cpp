@@ -37,6 +37,7 @@
 
 #include "core/common/errors.h"
 #include "core/engine/model_file.h"
+#include "core/mapping/mapping_file.h"
 #include "core/engine/walker_set.h"
 #include "core/io/bvh_writer.h"
 #include "core/io/file_bytes.h"
@@ -504,12 +505,29 @@ void gaitEdgeSeeds(SeedWriter& out, const fs::path& tmp) {
       onBelt.front().trial.rateHz);
 }
 
+// Joint mapping files (docs/FORMATS.md): a lower-body one that applies to the harness's
+// trial, and one with every kind of value (label, list, null).
+void mappingSeeds(SeedWriter& out) {
+  ew::JointMapping lower;
+  lower.joints[ew::index(ew::Joint::Pelvis)] = {"LASI", "RASI"};
+  lower.joints[ew::index(ew::Joint::LKnee)] = {"LKNE"};
+  lower.joints[ew::index(ew::Joint::RKnee)] = {"RKNE"};
+  lower.joints[ew::index(ew::Joint::LAnkle)] = {"LANK"};
+  lower.joints[ew::index(ew::Joint::RAnkle)] = {"RANK"};
+  out.write("mapping_file", "lower_body.json", ew::jointMappingToJson(lower));
+  ew::JointMapping mixed = lower;
+  mixed.joints[ew::index(ew::Joint::Head)] = {"HEAD"};
+  mixed.joints[ew::index(ew::Joint::Sternum)] = {"GONE", "HEAD"};
+  out.write("mapping_file", "mixed_with_unseen_marker.json", ew::jointMappingToJson(mixed));
+}
+
 void handMadeSeeds(SeedWriter& out) {
   out.writeBoth("asf_amc", Format::AsfAmc, "tiny_two_bones.asfamc", asfAmc(kTinyAsf, kTinyAmc));
   out.write("asf_amc", "tiny_skeleton_only.asfamc", kTinyAsf);
   out.writeBoth("trc", Format::Trc, "tiny_three_frames_crlf.trc", kTinyTrc);
   out.writeBoth("bvh", Format::Bvh, "tiny_two_legs.bvh", kTinyBvh);
   out.writeBoth("joint_csv", Format::Csv, "tiny_gaps_comments.csv", tinyCsv());
+  mappingSeeds(out);
 
   MatrixXd two(3, 6);
   two << 100, 900, 200, 300, 900, 200,    //
@@ -588,7 +606,8 @@ int main(int argc, char** argv) {
   try {
     const fs::path root = argv[1];
     SeedWriter out(root);
-    for (const char* h : {"c3d", "bvh", "asf_amc", "trc", "joint_csv", "model_file", "pipeline"})
+    for (const char* h :
+         {"c3d", "bvh", "asf_amc", "trc", "joint_csv", "model_file", "mapping_file", "pipeline"})
       out.reset(h);
     const fs::path tmp = root / ".tmp";
     fs::create_directories(tmp);
