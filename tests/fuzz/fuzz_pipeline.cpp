@@ -1,6 +1,7 @@
 // libFuzzer harness: the whole open-a-file path, as `eigenwalker-cli info` / `build` and
 // the viewer run it on a trial, from bytes in memory:
-//   reader -> ew::toJointTrial -> ew::prepareWalkingTrial -> ew::fitFourier
+//   reader -> ew::toJointTrial -> ew::prepareWalkingTrial -> ew::fitFourierMeasured
+//   (-> ew::completeWalkingTrial with the default model when joints are missing)
 // The first input byte picks the format (value % 5: C3D, BVH, ASF+AMC, TRC, CSV); the rest
 // is the file (for ASF+AMC: skeleton, a line "%%AMC%%", motion). The fit gets the stride
 // frequency of the gait cycles as its ω hint, as a trial becomes a walker in
@@ -13,7 +14,9 @@
 #include <cstdlib>
 #include <numbers>
 
+#include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
+#include "core/engine/joint_completion.h"
 #include "core/gait/prepare.h"
 #include "core/io/asf_amc_reader.h"
 #include "core/io/bvh_reader.h"
@@ -52,8 +55,17 @@ void openTrial(const std::uint8_t* data, std::size_t size) {
   options.file = raw.file;
   if (walking.cycles.strideHz > 0.0)
     options.omegaHintRadS = 2.0 * std::numbers::pi * walking.cycles.strideHz;
-  const ew::FourierFit fit =
-      ew::fitFourier(walking.joints.positionsMm, walking.joints.rateHz, options);
+  // Joints the file lacks are fitted around and then estimated from the default model.
+  const ew::FourierFit fit = ew::fitFourierMeasured(
+      walking.joints.positionsMm, walking.joints.rateHz, walking.joints.missing, options);
+  if (ew::anyJoint(walking.joints.missing)) {
+    const ew::CompletedTrial completed = ew::completeWalkingTrial(walking, ew::defaultRealModel());
+    if (!completed.trial.joints.positionsMm.allFinite()) {
+      std::fprintf(stderr, "fuzz_pipeline: the completed joints of %s are not finite\n",
+                   raw.file.c_str());
+      std::abort();
+    }
+  }
   if (!fit.w.allFinite() || !std::isfinite(fit.omegaRadS) || !std::isfinite(fit.phaseRad)) {
     std::fprintf(stderr,
                  "fuzz_pipeline: the Fourier fit of %s succeeded with a non-finite "
