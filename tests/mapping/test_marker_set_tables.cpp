@@ -15,6 +15,7 @@
 
 #include "core/assets/embedded_assets.h"
 #include "core/common/errors.h"
+#include "core/gait/canonical_frame.h"
 #include "core/io/c3d_reader.h"
 #include "core/io/trc_reader.h"
 #include "core/mapping/functional_centre.h"
@@ -355,6 +356,8 @@ TEST(MarkerSetTables, Pose2SimTrcMapsInMillimetresWithYUp) {
   EXPECT_LT(head, 1000);
   EXPECT_GT(ankle, 600);
   EXPECT_LT(ankle, 1000);
+  // What the canonical frame will take as up (the file states none): +Y.
+  EXPECT_EQ(detectUpAxis(t.positionsMm), (SignedAxis{1, 1}));
 }
 
 // [SECTION] Not walking, and the minimum ------------------------------------------------------
