@@ -188,15 +188,19 @@ std::string jointMappingToJson(const JointMapping& mapping) {
   for (int j = 0; j < kJointCount; ++j) {
     const auto& labels = mapping.joints[static_cast<std::size_t>(j)];
     const std::string name(kJointNames[static_cast<std::size_t>(j)]);
-    if (labels.empty())
+    std::vector<std::string> utf8;
+    for (const auto& l : labels) utf8.push_back(labelAsUtf8(l));
+    if (utf8.empty())
       joints[name] = nullptr;
-    else if (labels.size() == 1)
-      joints[name] = labels.front();
+    else if (utf8.size() == 1)
+      joints[name] = utf8.front();
     else
-      joints[name] = labels;
+      joints[name] = utf8;
   }
   json doc = {{kVersionKey, kJointMappingVersion}, {"joints", joints}};
-  return doc.dump(2) + "\n";
+  // Labels are UTF-8 by now (labelAsUtf8); a malformed sequence that slipped through is
+  // replaced rather than thrown on.
+  return doc.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 void writeJointMappingFile(const std::filesystem::path& file, const JointMapping& mapping) {

@@ -79,6 +79,51 @@ std::string notWalkingPrefix(const RawTrial& raw) {
 
 // [SECTION] Public API ----------------------------------------------------------------------
 
+namespace {
+
+// Well-formed UTF-8 sequences by their lead bytes (overlong forms are left to the JSON
+// writer's replacement, jointMappingToJson).
+bool isUtf8(std::string_view text) {
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    std::size_t extra = 0;
+    if (c >= 0x80) {
+      if ((c >> 5) == 0x6)
+        extra = 1;
+      else if ((c >> 4) == 0xE)
+        extra = 2;
+      else if ((c >> 3) == 0x1E)
+        extra = 3;
+      else
+        return false;
+    }
+    if (i + extra >= text.size() && extra > 0) return false;
+    for (std::size_t k = 1; k <= extra; ++k) {
+      if ((static_cast<unsigned char>(text[i + k]) >> 6) != 0x2) return false;
+    }
+    i += extra + 1;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string labelAsUtf8(std::string_view label) {
+  if (isUtf8(label)) return std::string(label);
+  std::string out;
+  for (const char ch : label) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x80) {
+      out += ch;
+    } else {
+      out += static_cast<char>(0xC0 | (c >> 6));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+  }
+  return out;
+}
+
 std::string normaliseMarkerLabel(std::string_view label) {
   const std::size_t colon = label.rfind(':');
   if (colon != std::string_view::npos) label.remove_prefix(colon + 1);
@@ -86,8 +131,10 @@ std::string normaliseMarkerLabel(std::string_view label) {
     label.remove_prefix(1);
   while (!label.empty() && std::isspace(static_cast<unsigned char>(label.back())))
     label.remove_suffix(1);
-  std::string out(label);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  std::string out = labelAsUtf8(label);
+  for (char& c : out) {
+    if (static_cast<unsigned char>(c) < 0x80) c = static_cast<char>(std::toupper(c));
+  }
   return out;
 }
 

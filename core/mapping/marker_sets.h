@@ -26,8 +26,14 @@ struct MarkerSetInfo {
 };
 const std::vector<MarkerSetInfo>& knownMarkerSets();
 
-// "Subject:LASI " -> "LASI": drops a subject prefix up to the last ':', trims, upper case.
+// "Subject:LASI " -> "LASI": drops a subject prefix up to the last ':', trims, upper case
+// (ASCII letters), as UTF-8 (labelAsUtf8), so a Latin-1 label in a C3D file and the same
+// label in a UTF-8 mapping file compare equal.
 std::string normaliseMarkerLabel(std::string_view label);
+
+// A label's bytes as UTF-8: unchanged when they already are, else read as Latin-1 (C3D
+// files from European labs carry labels such as "GENOU_\xE9"), so they can go into JSON.
+std::string labelAsUtf8(std::string_view label);
 
 // Glenohumeral centre below the acromion marker, as a fraction of the acromion-acromion
 // distance, along the trunk's downward axis (Rab, Petuskey & Bagley 2002).

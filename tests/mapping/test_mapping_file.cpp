@@ -13,6 +13,7 @@
 #include "core/common/errors.h"
 #include "core/io/load_trial.h"
 #include "core/mapping/mapping_file.h"
+#include "core/mapping/marker_sets.h"
 #include "tests/common/test_support.h"
 
 namespace ew {
@@ -194,6 +195,21 @@ TEST(MappingFile, LabelTableSuggestsFromTheRecognisedSetOrByName) {
   EXPECT_EQ(n.suggested.joints[index(Joint::RAnkle)], (std::vector<std::string>{"RightAnkle"}));
   EXPECT_EQ(n.suggested.joints[index(Joint::Head)], (std::vector<std::string>{"head"}));
   EXPECT_TRUE(n.suggested.joints[index(Joint::Sternum)].empty());
+}
+
+// European labs' C3D labels are often Latin-1 ("GENOU_\xE9"): the mapping file (JSON, so
+// UTF-8) holds them as UTF-8 and still matches the file's bytes.
+TEST(MappingFile, Latin1LabelsRoundTripThroughTheJsonFile) {
+  RawTrial raw = ownLabTrial();
+  raw.labels[4] = "GENOU_G\xE9";  // the left knee marker, Latin-1
+  auto mapping = parseJointMapping(mappingText(kLowerBody), "m.json");
+  mapping.joints[index(Joint::LKnee)] = {raw.labels[4]};
+  const std::string text = jointMappingToJson(mapping);
+  EXPECT_NE(text.find("GENOU_G\xC3\xA9"), std::string::npos) << text;
+  const JointTrial t = applyJointMapping(raw, parseJointMapping(text, "m.json"), "m.json");
+  EXPECT_LT((jointAt(t.positionsMm, 0, Joint::LKnee) - Eigen::Vector3d(0, 90, 520)).norm(), 1e-9);
+  EXPECT_EQ(normaliseMarkerLabel("genou_g\xE9"), "GENOU_G\xC3\xA9");
+  EXPECT_EQ(labelAsUtf8("GENOU_G\xC3\xA9"), "GENOU_G\xC3\xA9");  // already UTF-8: kept
 }
 
 // [SECTION] Through the loader and the CLI
