@@ -5,7 +5,8 @@
 // with the CLI's `build` from the Schreiber–Moissenet folder) becomes the model, and a
 // dropped CMU BVH is inspected against it (not in it). The exported state names the model
 // and the membership, and its metrics agree with `eigenwalker-cli reconstruct` on the same
-// trial, model, angle and σ². `eigenwalker ONE.c3d` opens inspecting that trial.
+// trial, model, angle and σ². `eigenwalker ONE.c3d` opens inspecting that trial. A
+// lower-body trial has its upper body from the model, scored apart.
 
 #include <gtest/gtest.h>
 
@@ -155,6 +156,28 @@ TEST_F(GuiBringYourOwn, OneTrialOnTheCommandLineIsInspected) {
   ASSERT_FALSE(shot.empty());
   EXPECT_GT(countPixels(crop(shot, kInputView), isPointLight), 40);
   EXPECT_GT(countPixels(crop(shot, kReconView), isAmber), 200);
+}
+
+// A lower-body marker set (pyCGM2 lower limb, Plug-in Gait): the trunk, head and arms are
+// completed from the default model, drawn apart and scored apart.
+TEST_F(GuiBringYourOwn, LowerBodyTrialHasItsUpperBodyFromTheModel) {
+  EW_REQUIRE_SHARED_DATA();
+  const fs::path c3d = sharedDataDir() / "c3d-samples" / "sample00_vicon_nexus" /
+                       "pyCGM2 lower limb CGM24 Walking01.c3d";
+  if (!fs::exists(c3d)) GTEST_SKIP() << c3d << " not in the shared data";
+  const RunResult r =
+      run(nlohmann::json::array({action("drop", {c3d.string()}), action("play", false),
+                                 action("export_state", path("lower.json"))}));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto s = state("lower.json");
+  EXPECT_EQ(s.at("model").at("source"), "default");
+  const auto& rec = s.at("reconstruction");
+  expectMetrics(rec);
+  const std::vector<std::string> upper{"head",    "sternum",    "r_shoulder", "r_elbow",
+                                       "r_wrist", "l_shoulder", "l_elbow",    "l_wrist"};
+  EXPECT_EQ(rec.at("model_estimated").get<std::vector<std::string>>(), upper) << rec.dump(1);
+  ASSERT_TRUE(rec.at("mpjpe_model_estimated_mm").is_number()) << rec.dump(1);
+  EXPECT_GT(rec.at("mpjpe_measured_mm").get<double>(), 0.0);
 }
 
 }  // namespace

@@ -66,8 +66,12 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
           if (ImGui::Selectable(w.subject.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns))
             actions::selectWalker(s, i);
           if (selected && scrollToSelection) {
+            // The list's height counts rows added this frame only from the next one: scroll twice.
             ImGui::SetScrollHereY(0.5f);
-            scrollToSelection = false;
+            if (++scrolledFrames >= 2) {
+              scrollToSelection = false;
+              scrolledFrames = 0;
+            }
           }
           ImGui::PopID();
           ImGui::TableNextColumn();

@@ -15,6 +15,7 @@ struct SubjectsPanel {
   std::array<char, 128> filter{};
   std::array<char, 1024> openPath{};
   bool scrollToSelection = true;
+  int scrolledFrames = 0;  // the scroll is repeated next frame: rows just added count then
 
   void draw(AppState& s, const FrameContext& ctx, const PanelRect& rect);
 };
