@@ -166,6 +166,18 @@ std::vector<TrialFile> collectTrialFiles(const std::vector<fs::path>& paths,
   return all;
 }
 
+std::vector<fs::path> withoutSkeletonsOfGivenMotions(const std::vector<fs::path>& paths) {
+  std::vector<fs::path> out;
+  for (const auto& p : paths) {
+    const bool skeletonOfAGivenMotion =
+        hasExtension(p, ".asf") && std::any_of(paths.begin(), paths.end(), [&](const fs::path& q) {
+          return hasExtension(q, ".amc") && q.parent_path() == p.parent_path();
+        });
+    if (!skeletonOfAGivenMotion) out.push_back(p);
+  }
+  return out;
+}
+
 std::vector<std::string> Dataset::subjects() const {
   std::vector<std::string> out;
   for (const auto& t : trials) {

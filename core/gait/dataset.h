@@ -44,6 +44,12 @@ struct TrialFile {
 std::vector<TrialFile> collectTrialFiles(const std::vector<std::filesystem::path>& paths,
                                          std::vector<std::string>& warnings);
 
+// Items opened one by one (the viewer's drop): an .asf given with an .amc of its own folder
+// is not an item of its own (the .amc opens with it), so "x.asf + y.amc" dropped together
+// is the one trial y, not y plus every motion beside x. Other paths are kept, in order.
+std::vector<std::filesystem::path> withoutSkeletonsOfGivenMotions(
+    const std::vector<std::filesystem::path>& paths);
+
 // One file through the whole path: read, map to 15 joints, prepare (SPEC §1-2).
 WalkingTrial loadWalkingTrial(const std::filesystem::path& file, const LoadOptions& options = {},
                               const PrepareOptions& prepare = {});

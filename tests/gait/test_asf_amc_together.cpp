@@ -61,6 +61,16 @@ TEST(AsfAmcTogether, TheSkeletonAloneOrTheFolderOpenEveryMotion) {
   EXPECT_EQ(collected({dir}), want);
 }
 
+// The viewer opens dropped items one by one: the .asf dropped with its .amc is no item.
+TEST(AsfAmcTogether, DroppedTogetherTheSkeletonIsNoItemOfItsOwn) {
+  const fs::path dir = writeSkeletonFolder("asf_amc_drop");
+  const std::vector<fs::path> dropped = {dir / "07.asf", dir / "07_02.amc", dir / "other.c3d"};
+  EXPECT_EQ(withoutSkeletonsOfGivenMotions(dropped),
+            (std::vector<fs::path>{dir / "07_02.amc", dir / "other.c3d"}));
+  EXPECT_EQ(withoutSkeletonsOfGivenMotions({dir / "07.asf"}),
+            (std::vector<fs::path>{dir / "07.asf"}));
+}
+
 TEST(AsfAmcTogether, ASkeletonWithoutMotionSaysSo) {
   const fs::path dir = test::makeTempDir("asf_no_amc");
   std::ofstream(dir / "07.asf") << kAsf;
