@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/mapping/mapping_file.h"
 #include "tests/common/test_support.h"
 #include "tests/gui/gui_run.h"
 
@@ -178,6 +179,50 @@ TEST_F(GuiBringYourOwn, LowerBodyTrialHasItsUpperBodyFromTheModel) {
   EXPECT_EQ(rec.at("model_estimated").get<std::vector<std::string>>(), upper) << rec.dump(1);
   ASSERT_TRUE(rec.at("mpjpe_model_estimated_mm").is_number()) << rec.dump(1);
   EXPECT_GT(rec.at("mpjpe_measured_mm").get<double>(), 0.0);
+}
+
+// The Data window's Joint mapping tab (through its script action): the suggested mapping of
+// the lower-body file is written as a mapping file core reads back, and the file opened with
+// it gives the same walker, its upper body from the model.
+TEST_F(GuiBringYourOwn, JointMappingTabWritesAMappingFileAndOpensWithIt) {
+  EW_REQUIRE_SHARED_DATA();
+  const fs::path c3d = sharedDataDir() / "c3d-samples" / "sample00_vicon_nexus" /
+                       "pyCGM2 lower limb CGM24 Walking01.c3d";
+  if (!fs::exists(c3d)) GTEST_SKIP() << c3d << " not in the shared data";
+  const fs::path mapping = dir / "lower.mapping.json";
+  const RunResult r = run(nlohmann::json::array(
+      {action("write_joint_mapping",
+              {{"file", c3d.string()}, {"out", mapping.string()}, {"open", true}}),
+       action("export_state", path("mapped.json"))}));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_TRUE(fs::exists(mapping));
+  const JointMapping m = readJointMappingFile(mapping);
+  int absent = 0;
+  for (const auto& labels : m.joints) absent += labels.empty() ? 1 : 0;
+  EXPECT_EQ(absent, 8) << readAll(mapping);  // the upper body: not in a lower-limb set
+  const auto s = state("mapped.json");
+  EXPECT_TRUE(s.at("walker").at("inspected").get<bool>());
+  EXPECT_EQ(s.at("reconstruction").at("model_estimated").size(), 8u)
+      << s.at("reconstruction").dump(1);
+}
+
+// A model alone on the command line: held, with the synthetic walkers inspected against it.
+TEST_F(GuiBringYourOwn, AModelAloneIsHeld) {
+  EW_REQUIRE_SHARED_DATA();
+  const fs::path ewm = dir / "sm18.ewm";
+  const std::string build = quote(EW_CLI_PATH) + " build --data " +
+                            quote((sharedDataDir() / "schreiber-moissenet-2019").string()) +
+                            " --out " + quote(ewm.string()) + " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(build.c_str()), 0) << build;
+  const RunResult r = run(nlohmann::json::array({action("export_state", path("held.json"))}),
+                          quote(ewm.string()) + " --size 1280x720");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto s = state("held.json");
+  EXPECT_EQ(s.at("model").at("source"), "file");
+  EXPECT_EQ(s.at("model").at("name"), "sm18.ewm (18 walkers)");
+  EXPECT_EQ(s.at("data").at("label"), "synthetic default population");
+  EXPECT_FALSE(s.at("reconstruction").at("in_model").get<bool>());
+  EXPECT_EQ(s.at("reconstruction").at("model_walkers"), 18);
 }
 
 }  // namespace

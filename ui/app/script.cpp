@@ -15,41 +15,17 @@ namespace ew::ui {
 namespace {
 
 const std::set<std::string>& knownActions() {
-  static const std::set<std::string> names{"open",
-                                           "select_subject",
-                                           "set_mode",
-                                           "set_angle",
-                                           "set_method",
-                                           "set_sigma2",
-                                           "set_components",
-                                           "unknown_angle",
-                                           "set_coefficient",
-                                           "set_phase",
-                                           "play",
-                                           "overlay",
-                                           "wait_frames",
-                                           "screenshot",
-                                           "set_camera",
-                                           "reset_coefficients",
-                                           "randomise_coefficients",
-                                           "coefficients_from_subject",
-                                           "export_png",
-                                           "export_video",
-                                           "export_csv",
-                                           "export_bvh",
-                                           "export_model",
-                                           "show_panel",
-                                           "export_analysis_csv",
-                                           "set_analysis_metric",
-                                           "set_theme",
-                                           "tour",
-                                           "drop",
-                                           "set_file_override",
-                                           "reload",
-                                           "export_data_summary",
-                                           "export_state",
-                                           "expect_failure",
-                                           "set_model"};
+  // clang-format off
+  static const std::set<std::string> names{
+      "open",         "select_subject", "set_mode",      "set_angle",   "set_method",
+      "set_sigma2",   "set_components", "unknown_angle", "set_coefficient", "set_phase",
+      "play",         "overlay",        "wait_frames",   "screenshot",  "set_camera",
+      "reset_coefficients", "randomise_coefficients", "coefficients_from_subject",
+      "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
+      "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour",
+      "drop",         "set_file_override", "reload", "export_data_summary", "export_state",
+      "expect_failure", "set_model", "write_joint_mapping"};
+  // clang-format on
   return names;
 }
 
@@ -304,6 +280,23 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
     } else {
       actions::drop(s, paths);
     }
+  } else if (n == "write_joint_mapping") {
+    // The Data window's Joint mapping tab: the suggestion for every joint, written to "out".
+    const auto& arg = a.argument;
+    if (!arg.is_object() || !arg.contains("file") || !arg["file"].is_string() ||
+        !arg.contains("out") || !arg["out"].is_string())
+      throw std::invalid_argument(R"(expects {"file": F, "out": P, "open": true|false})");
+    const bool openNow =
+        arg.contains("open") && arg["open"].is_boolean() && arg["open"].get<bool>();
+    auto& tab = s.panels.data.mapping;
+    tab.read(s, arg["file"].get<std::string>());
+    if (tab.statusIsError) throw std::invalid_argument(tab.status);
+    const std::string out = arg["out"].get<std::string>();
+    tab.outPath.fill('\0');
+    out.copy(tab.outPath.data(), tab.outPath.size() - 1);
+    failuresBefore_ = s.jobs.failures;
+    tab.write(s, openNow);
+    checkLoad_ = openNow;
   } else if (n == "reload") {
     failuresBefore_ = s.jobs.failures;
     checkLoad_ = true;
@@ -416,8 +409,8 @@ void ScriptRunner::step(AppState& s) {
     }
     s.log.info("script: " + a.name + " " + a.argument.dump());
     if (a.name == "open" || a.name == "drop" || a.name == "reload" || a.name == "expect_failure" ||
-        a.name == "wait_frames" || a.name == "screenshot" || a.name == "export_png" ||
-        a.name == "export_video")
+        a.name == "write_joint_mapping" || a.name == "wait_frames" || a.name == "screenshot" ||
+        a.name == "export_png" || a.name == "export_video")
       return;
   }
 }

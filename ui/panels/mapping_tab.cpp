@@ -4,6 +4,7 @@
 
 #include <exception>
 #include <filesystem>
+#include <stdexcept>
 
 #include "core/io/load_trial.h"
 #include "ui/app/actions.h"
@@ -29,8 +30,9 @@ std::string describe(const std::vector<std::string>& labels) {
 
 }  // namespace
 
-void MappingTab::read(AppState& s) {
-  readFile = file.data();
+void MappingTab::read(AppState& s, const std::string& path) {
+  copyTo(file, path);
+  readFile = path;
   try {
     table = labelTable(readRawTrial(readFile));
     for (int j = 0; j < kJointCount; ++j)
@@ -69,7 +71,7 @@ void MappingTab::draw(AppState& s, const FrameContext& ctx) {
   ImGui::SetNextItemWidth(-110.0f * ctx.scale);
   ImGui::InputTextWithHint("##mapfile", "a marker file (.c3d, .trc)…", file.data(), file.size());
   ImGui::SameLine();
-  if (ImGui::Button("Read labels")) read(s);
+  if (ImGui::Button("Read labels")) read(s, file.data());
   if (!status.empty()) {
     ImGui::PushTextWrapPos(0.0f);
     if (statusIsError) {
@@ -120,13 +122,18 @@ void MappingTab::draw(AppState& s, const FrameContext& ctx) {
   const bool writeOpen = ImGui::Button("Write and open with it");
   if (!write && !writeOpen) return;
   try {
-    actions::writeJointMapping(s, readFile, outPath.data(), mapping(), writeOpen);
-    status = "wrote " + std::string(outPath.data());
-    statusIsError = false;
+    this->write(s, writeOpen);
   } catch (const std::exception& e) {
     status = e.what();
     statusIsError = true;
   }
+}
+
+void MappingTab::write(AppState& s, bool openNow) {
+  if (table.labels.empty()) throw std::invalid_argument("no labels read (Read labels first)");
+  actions::writeJointMapping(s, readFile, outPath.data(), mapping(), openNow);
+  status = "wrote " + std::string(outPath.data());
+  statusIsError = false;
 }
 
 }  // namespace ew::ui

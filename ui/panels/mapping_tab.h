@@ -28,9 +28,13 @@ struct MappingTab {
   bool statusIsError = false;
 
   void draw(AppState& s, const FrameContext& ctx);
+  // What the buttons do (the script action write_joint_mapping uses them too): list `path`'s
+  // labels with the suggestion chosen for every joint; write the chosen mapping to outPath
+  // (and open the file with it). read reports a failure in `status`; write throws.
+  void read(AppState& s, const std::string& path);
+  void write(AppState& s, bool openNow);
 
  private:
-  void read(AppState& s);
   JointMapping mapping() const;
 };
 
