@@ -1,9 +1,10 @@
 #include "ui/panels/reconstruction_view_panel.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 #include "core/engine/reconstruction.h"
@@ -64,6 +65,14 @@ bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, 
     for (int j = 0; j < kJointCount; ++j)
       colours[static_cast<std::size_t>(j)] =
           palette::errorColour(static_cast<float>(d->depthRmsMm(j)) / *errorScale);
+    // Joints the marker set lacked: their ground truth is the model's own estimate, so they
+    // get the model-estimated colour and no error line (their errors are reported apart).
+    Pose3 lineTruth = truth;
+    for (std::size_t j = 0; j < colours.size(); ++j) {
+      if (!r->modelEstimated[j]) continue;
+      colours[j] = palette::kModelEstimated;
+      lineTruth[j] = rec[j];
+    }
     if (o.pointLights) {
       for (const auto& p : rec) scene.glows.push_back({p, 34.0f, palette::kInputPoint});
     } else if (o.depthErrorColour) {
@@ -72,7 +81,8 @@ bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, 
       addFigure(scene, rec, reconstructionStyle());
     }
     if (o.ghost && !o.pointLights) addFigure(scene, truth, ghostStyle());
-    if (o.errorLines && !o.pointLights) addErrorLines(scene, truth, rec, palette::kError, 2.5f * lineScale);
+    if (o.errorLines && !o.pointLights)
+      addErrorLines(scene, lineTruth, rec, palette::kError, 2.5f * lineScale);
     if (o.cameraGlyph) {
       addCameraGlyph(scene, r->alphaTrueDeg, 1150.0f, palette::kCamera, false);
       if (s.doc.recon.unknownAngle)
@@ -148,6 +158,11 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
         legend.push_back({palette::kReconRight, "reconstruction (right side darker)", false});
         if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
         if (o.errorLines) legend.push_back({palette::kError, "3D error per joint", true});
+        if (reconstruct && r &&
+            std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(),
+                        [](bool b) { return b; }))
+          legend.push_back(
+              {palette::kModelEstimated, "model-estimated joint (not measured)", false});
       } else {
         legend.push_back({palette::kReconRight, "synthesised walker", false});
       }

@@ -101,12 +101,14 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
         fact("stride", buf);
         std::string estimated;
         for (const auto& j : f.estimatedJoints) estimated += (estimated.empty() ? "" : ", ") + j;
-        fact("estimated", estimated.empty() ? "none (all measured)" : estimated);
         std::string fromModel;
         for (int j = 0; j < kJointCount; ++j)
           if (f.modelEstimated[static_cast<std::size_t>(j)])
             fromModel += (fromModel.empty() ? "" : ", ") +
                          std::string(kJointNames[static_cast<std::size_t>(j)]);
+        fact("estimated", !estimated.empty()  ? estimated
+                          : fromModel.empty() ? "none (all measured)"
+                                              : "none from the markers");
         if (!fromModel.empty()) fact("from model", fromModel + " (the marker set lacks them)");
         if (f.h1Share > 0.0) {
           std::snprintf(buf, sizeof buf, "%.1f %% + %.1f %% (%d trial%s)", 100.0 * f.h1Share, 100.0 * f.h2Share,
