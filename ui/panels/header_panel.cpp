@@ -96,12 +96,16 @@ std::vector<std::string> modelLines(const AppState& s) {
            componentsText(e->components, e->autoComponents, e->explained);
     medium = brief = "model: " + e->modelName;
   }
+  // The model's facts alone come before the data's: they matter more when room is short.
+  std::string withData = full;
   if (s.doc.population)
-    full += (full.empty() ? "" : "  ·  ") + std::string("data: ") + s.doc.population->label + " (" +
-            std::to_string(s.doc.population->walkerCount()) + " walkers)";
+    withData += (withData.empty() ? "" : "  ·  ") + std::string("data: ") +
+                s.doc.population->label + " (" + std::to_string(s.doc.population->walkerCount()) +
+                " walkers)";
   if (s.doc.inspected)
-    full += "  ·  inspecting " + std::to_string(s.doc.inspected->walkerCount()) + " of your own";
-  return {full, medium, brief};
+    withData +=
+        "  ·  inspecting " + std::to_string(s.doc.inspected->walkerCount()) + " of your own";
+  return {withData, full, medium, brief};
 }
 
 void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
@@ -142,7 +146,7 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
       ImGui::SameLine(lineX);
       ImGui::AlignTextToFramePadding();
       const float room = std::max(0.0f, progressX - lineX - 12.0f * ctx.scale);
-      std::string shown = lines.back();
+      std::string shown = lines.back().empty() ? lines.front() : lines.back();
       for (const auto& l : lines) {
         if (ImGui::CalcTextSize(l.c_str()).x <= room) {
           shown = l;

@@ -32,6 +32,9 @@ void fact(const char* label, const std::string& value) {
 }  // namespace
 
 void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  // A notice row opening or closing moves the panel: keep the selected walker in view.
+  if (rect.size.y != lastHeight) scrollToSelection = true;
+  lastHeight = rect.size.y;
   if (beginPanel(ctx.backdrop, "Subjects", rect)) {
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::InputTextWithHint("##filter", "search subjects…", filter.data(), filter.size());
