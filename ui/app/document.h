@@ -61,6 +61,8 @@ struct Document {
   // Index into the walkers: the population's first, then the inspected ones.
   int walker = 0;
   ReconstructionSettings recon;
+  // σ² follows the held model's stored optimum (defaultSigma2Mm2) until the user sets it.
+  bool sigma2Chosen = false;
   std::vector<double> exploreSd;   // explorer coefficients, units of each component's SD
   std::vector<double> editedSd;    // reconstruct mode: coefficients the user dragged
                                    // (empty = the estimate)

@@ -142,10 +142,13 @@ Population loadPopulation(const std::vector<std::filesystem::path>& paths,
   if (paths.size() <= 1)
     return populationFromDataset(loadDatasetPerFile(paths, optionsFor, progress), label, progress,
                                  minWalkers, completion.get());
+  // "x.asf + y.amc" dropped together is the trial y (its skeleton opens with it), not y
+  // twice plus every motion beside x.
+  const std::vector<std::filesystem::path> itemPaths = withoutSkeletonsOfGivenMotions(paths);
   // Several items: each on its own, so that one bad file does not lose the others. Progress
   // runs over the items, each item's share split by its own files.
   constexpr int kStepsPerItem = 1000;
-  const int items = static_cast<int>(paths.size());
+  const int items = static_cast<int>(itemPaths.size());
   Dataset all;
   std::vector<std::string> skipped;
   std::vector<std::filesystem::path> loaded;
@@ -160,10 +163,10 @@ Population loadPopulation(const std::vector<std::filesystem::path>& paths,
     }
     try {
       Dataset one =
-          loadDatasetPerFile({paths[static_cast<std::size_t>(i)]}, optionsFor, itemProgress);
+          loadDatasetPerFile({itemPaths[static_cast<std::size_t>(i)]}, optionsFor, itemProgress);
       std::move(one.trials.begin(), one.trials.end(), std::back_inserter(all.trials));
       std::move(one.warnings.begin(), one.warnings.end(), std::back_inserter(all.warnings));
-      loaded.push_back(paths[static_cast<std::size_t>(i)]);
+      loaded.push_back(itemPaths[static_cast<std::size_t>(i)]);
     } catch (const JobCancelled&) {
       throw;
     } catch (const std::exception& e) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/engine/model.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 
@@ -30,7 +31,8 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     sectionTitle("View angle");
     float alpha = static_cast<float>(doc.recon.alphaDeg);
     ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::SliderFloat("##alpha", &alpha, -180.0f, 180.0f, "α = %.1f°", ImGuiSliderFlags_AlwaysClamp))
+    if (ImGui::SliderFloat("##alpha", &alpha, -180.0f, 180.0f, "α = %.1f°",
+                           ImGuiSliderFlags_AlwaysClamp))
       actions::setAngle(s, alpha);
     ImGui::SetNextItemWidth(100.0f * ctx.scale);
     if (ImGui::DragFloat("fine (drag / type)", &alpha, 0.05f, -180.0f, 180.0f, "%.2f°",
@@ -38,19 +40,24 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       actions::setAngle(s, alpha);
     ImGui::TextDisabled("0° frontal · ±90° profiles");
     bool unknown = doc.recon.unknownAngle;
-    if (ImGui::Checkbox("Unknown view angle (estimate α)", &unknown)) actions::setUnknownAngle(s, unknown);
+    if (ImGui::Checkbox("Unknown view angle (estimate α)", &unknown))
+      actions::setUnknownAngle(s, unknown);
 
     sectionTitle("Estimator");
     int est = doc.recon.estimator == Estimator::Lsq ? 0 : 1;
     if (ImGui::RadioButton("LSQ", &est, 0)) actions::setEstimator(s, Estimator::Lsq);
     ImGui::SameLine();
-    if (ImGui::RadioButton("MAP (Bayesian prior)", &est, 1)) actions::setEstimator(s, Estimator::Map);
+    if (ImGui::RadioButton("MAP (Bayesian prior)", &est, 1))
+      actions::setEstimator(s, Estimator::Map);
     ImGui::BeginDisabled(doc.recon.estimator != Estimator::Map);
     float sigma2 = static_cast<float>(doc.recon.sigma2Mm2);
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderFloat("##sigma2", &sigma2, 1.0f, 5000.0f, "σ² = %.0f mm²",
                            ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp))
       actions::setSigma2(s, sigma2);
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && doc.heldModel())
+      ImGui::SetTooltip("%s", doc.sigma2Chosen ? "σ² as you set it"
+                                               : defaultSigma2Source(*doc.heldModel()).c_str());
     ImGui::EndDisabled();
 
     sectionTitle("Eigenwalkers");
@@ -66,7 +73,8 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       actions::setComponents(s, n);
 
     sectionTitle("3D camera");
-    const float bw = (ImGui::GetContentRegionAvail().x - 3.0f * ImGui::GetStyle().ItemSpacing.x) / 4.0f;
+    const float bw =
+        (ImGui::GetContentRegionAvail().x - 3.0f * ImGui::GetStyle().ItemSpacing.x) / 4.0f;
     if (ImGui::Button("3/4", ImVec2(bw, 0))) actions::setCamera(s, "three_quarter");
     ImGui::SameLine();
     if (ImGui::Button("Front", ImVec2(bw, 0))) actions::setCamera(s, "front");
@@ -107,7 +115,8 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     s.view.theme = static_cast<Theme>(theme);
     float scale = pendingUiScale > 0.0f ? pendingUiScale : s.view.uiScale;
     ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::SliderFloat("##uiscale", &scale, 0.75f, 2.5f, "UI scale %.2f×")) pendingUiScale = scale;
+    if (ImGui::SliderFloat("##uiscale", &scale, 0.75f, 2.5f, "UI scale %.2f×"))
+      pendingUiScale = scale;
     if (pendingUiScale > 0.0f && ImGui::IsItemDeactivated()) {
       s.view.uiScale = pendingUiScale;
       pendingUiScale = 0.0f;
