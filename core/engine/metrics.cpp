@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "core/common/errors.h"
@@ -89,7 +90,8 @@ CompleteFrames completeFrames(const Eigen::Ref<const Eigen::MatrixXd>& frames, d
 double meanJointDistance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   double sum = 0.0;
   for (Eigen::Index t = 0; t < a.rows(); ++t) {
-    for (int j = 0; j < kJointCount; ++j) sum += (a.row(t).segment<3>(3 * j) - b.row(t).segment<3>(3 * j)).norm();
+    for (int j = 0; j < kJointCount; ++j)
+      sum += (a.row(t).segment<3>(3 * j) - b.row(t).segment<3>(3 * j)).norm();
   }
   return sum / static_cast<double>(a.rows() * kJointCount);
 }
@@ -128,30 +130,34 @@ DepthErrors depthErrorsFrames(const Eigen::Ref<const Eigen::MatrixXd>& framesTru
   return finish(absPerJoint, sigmaM2);
 }
 
-double mpjpe(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
-             const Eigen::Ref<const Eigen::VectorXd>& wRec, int samples) {
+namespace {
+
+// Both walkers over one cycle of ω = 1 rad/s at phase 0 (they share ω and φ, so any would
+// do), `samples` frames each, after checking the inputs MPJPE needs.
+std::pair<Eigen::MatrixXd, Eigen::MatrixXd> sampledCycles(
+    const Eigen::Ref<const Eigen::VectorXd>& wTrue, const Eigen::Ref<const Eigen::VectorXd>& wRec,
+    int samples) {
   requireWalker(wTrue, "true walker");
   requireWalker(wRec, "reconstruction");
   if (samples < 1 || samples > kMaxMpjpeSamples)
     metricsError(ErrorKind::BadArgument, "MPJPE needs 1 to " + std::to_string(kMaxMpjpeSamples) +
                                              " samples, got " + std::to_string(samples));
-  // One cycle of ω = 1 rad/s at phase 0: both walkers share ω and φ, so any would do.
   const Eigen::VectorXd t =
       Eigen::VectorXd::LinSpaced(samples, 0.0, 2.0 * std::numbers::pi * (samples - 1) / samples);
-  return meanJointDistance(synthesizeFrames(wTrue, 1.0, 0.0, t), synthesizeFrames(wRec, 1.0, 0.0, t));
+  return {synthesizeFrames(wTrue, 1.0, 0.0, t), synthesizeFrames(wRec, 1.0, 0.0, t)};
+}
+
+}  // namespace
+
+double mpjpe(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
+             const Eigen::Ref<const Eigen::VectorXd>& wRec, int samples) {
+  const auto [a, b] = sampledCycles(wTrue, wRec, samples);
+  return meanJointDistance(a, b);
 }
 
 Eigen::VectorXd mpjpePerJoint(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
                               const Eigen::Ref<const Eigen::VectorXd>& wRec, int samples) {
-  requireWalker(wTrue, "true walker");
-  requireWalker(wRec, "reconstruction");
-  if (samples < 1 || samples > kMaxMpjpeSamples)
-    metricsError(ErrorKind::BadArgument, "MPJPE needs 1 to " + std::to_string(kMaxMpjpeSamples) +
-                                             " samples, got " + std::to_string(samples));
-  const Eigen::VectorXd t =
-      Eigen::VectorXd::LinSpaced(samples, 0.0, 2.0 * std::numbers::pi * (samples - 1) / samples);
-  const Eigen::MatrixXd a = synthesizeFrames(wTrue, 1.0, 0.0, t);
-  const Eigen::MatrixXd b = synthesizeFrames(wRec, 1.0, 0.0, t);
+  const auto [a, b] = sampledCycles(wTrue, wRec, samples);
   Eigen::VectorXd perJoint(kJointCount);
   for (int j = 0; j < kJointCount; ++j)
     perJoint(j) = (a.middleCols<3>(3 * j) - b.middleCols<3>(3 * j)).rowwise().norm().mean();
@@ -161,8 +167,8 @@ Eigen::VectorXd mpjpePerJoint(const Eigen::Ref<const Eigen::VectorXd>& wTrue,
 double meanOverJoints(const Eigen::Ref<const Eigen::VectorXd>& perJoint,
                       const std::array<bool, kJointCount>& joints) {
   if (perJoint.size() != kJointCount)
-    metricsError(ErrorKind::BadArgument, "per-joint errors need 15 values, got " +
-                                             std::to_string(perJoint.size()));
+    metricsError(ErrorKind::BadArgument,
+                 "per-joint errors need 15 values, got " + std::to_string(perJoint.size()));
   double sum = 0.0;
   int count = 0;
   for (int j = 0; j < kJointCount; ++j) {

@@ -70,11 +70,26 @@ ProgramRun runProgram(const std::string& program, const std::vector<std::string>
   if (WIFEXITED(status)) run.exitCode = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) run.signal = WTERMSIG(status);
   run.peakRssKb = usage.ru_maxrss;
-  std::ifstream in(log);
+  run.output = readTextFile(log);
+  return run;
+}
+
+std::string readTextFile(const std::filesystem::path& file) {
+  std::ifstream in(file);
   std::ostringstream text;
   text << in.rdbuf();
-  run.output = text.str();
-  return run;
+  return text.str();
+}
+
+ShellRun runShell(const std::string& commandLine, const std::filesystem::path& dir) {
+  const auto out = dir / "shell_stdout.txt", err = dir / "shell_stderr.txt";
+  const std::string command =
+      commandLine + " > \"" + out.string() + "\" 2> \"" + err.string() + "\"";
+  const int status = std::system(command.c_str());
+  ShellRun r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readTextFile(out), readTextFile(err)};
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return r;
 }
 
 }  // namespace ew::test

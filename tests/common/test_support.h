@@ -35,6 +35,17 @@ struct ProgramRun {
 ProgramRun runProgram(const std::string& program, const std::vector<std::string>& arguments,
                       const std::filesystem::path& dir);
 
+// A shell command line run to completion: exit code (-1 when it did not exit) and what it
+// wrote to stdout and stderr, each captured through a file in `dir` (removed afterwards).
+struct ShellRun {
+  int exitCode = -1;
+  std::string out, err;
+};
+ShellRun runShell(const std::string& commandLine, const std::filesystem::path& dir);
+
+// A whole text file ("" when it cannot be read).
+std::string readTextFile(const std::filesystem::path& file);
+
 }  // namespace ew::test
 
 // Use at the top of a test that reads ../shared/data: skips (or fails in CI) when missing.

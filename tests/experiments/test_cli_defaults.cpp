@@ -17,28 +17,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliResult {
-  int exitCode = -1;
-  std::string out, err;
-};
+using CliResult = test::ShellRun;
 
-std::string readText(const fs::path& file) {
-  std::ifstream in(file);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
+// The CLI run from inside `dir` (relative paths in `arguments` are the user's).
 CliResult runCli(const std::string& arguments, const fs::path& dir) {
-  const fs::path out = dir / "cli_stdout.txt", err = dir / "cli_stderr.txt";
-  const std::string command = std::string("cd \"") + dir.string() + "\" && \"" + EW_CLI_PATH +
-                              "\" " + arguments + " > \"" + out.string() + "\" 2> \"" +
-                              err.string() + "\"";
-  const int status = std::system(command.c_str());
-  CliResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(out), readText(err)};
-  fs::remove(out);
-  fs::remove(err);
-  return r;
+  return test::runShell("cd \"" + dir.string() + "\" && \"" + EW_CLI_PATH + "\" " + arguments, dir);
 }
 
 std::string q(const fs::path& p) { return "\"" + p.string() + "\""; }

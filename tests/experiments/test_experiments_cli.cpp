@@ -17,27 +17,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CliResult {
-  int exitCode = -1;
-  std::string out, err;
-};
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using CliResult = test::ShellRun;
+using test::readTextFile;
 
 CliResult runCli(const std::string& arguments, const fs::path& dir) {
-  const fs::path out = dir / "cli_stdout.txt", err = dir / "cli_stderr.txt";
-  const std::string command = std::string("\"") + EW_CLI_PATH + "\" " + arguments + " > \"" + out.string() +
-                              "\" 2> \"" + err.string() + "\"";
-  const int status = std::system(command.c_str());
-  CliResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, readText(out), readText(err)};
-  fs::remove(out);
-  fs::remove(err);
-  return r;
+  return test::runShell(std::string("\"") + EW_CLI_PATH + "\" " + arguments, dir);
 }
 
 std::string firstLine(const fs::path& file) {
@@ -88,7 +72,7 @@ TEST_F(ExperimentsCli, EvaluateWritesTheChosenExperiments) {
             "subject,true_angle_deg,method,est_angle_deg,angle_error_deg,abs_error_mm2,mpjpe_mm");
   EXPECT_FALSE(fs::exists(out / "sigma_sweep.csv"));  // σ² given, sweep not chosen
   EXPECT_FALSE(fs::exists(out / "noise.csv"));
-  const auto s = nlohmann::json::parse(readText(out / "summary.json"));
+  const auto s = nlohmann::json::parse(readTextFile(out / "summary.json"));
   EXPECT_EQ(s["walkers"], 5);
   EXPECT_EQ(s["subjects"], 5);
   EXPECT_EQ(s["sigma2_used_mm2"], 200.0);
@@ -139,7 +123,7 @@ TEST_F(ExperimentsCli, UnusableDataExitsWith1AndLeavesTheFolderAsItWas) {
   const CliResult missing = runCli("evaluate --data " + q(dir_ / "nope.csv") + " --out " + q(out), dir_);
   EXPECT_EQ(missing.exitCode, 1) << missing.err;
   EXPECT_NE(missing.err.find("nope.csv"), std::string::npos) << missing.err;
-  EXPECT_EQ(readText(out / "marker.txt"), "previous");
+  EXPECT_EQ(readTextFile(out / "marker.txt"), "previous");
   size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(out)) ++entries;
   EXPECT_EQ(entries, 1u);
