@@ -42,7 +42,12 @@ std::unique_ptr<ReconBase> computeRecon(const Document& doc, const ReconKey& key
                                     : std::min(key.settings.components, loo.componentCount());
   r->explained = explainedShare(loo, r->components);
   r->model = truncateModel(loo, r->components);
-  r->gram = precomputeModelGram(r->model);
+  // Joints the trial never measured are not part of its 2D view: their rows are dropped
+  // from the likelihood (the model estimates them), as `reconstruct` does for the CLI.
+  std::vector<int> notMeasured;
+  for (int j = 0; j < kJointCount; ++j)
+    if (r->modelEstimated[static_cast<std::size_t>(j)]) notMeasured.push_back(j);
+  r->gram = precomputeModelGram(r->model, notMeasured);
   r->sd = r->model.eigenvalues.cwiseMax(0.0).cwiseSqrt();
   r->wTrue = walker.fit.w;
   r->alphaTrueDeg = key.settings.alphaDeg;
