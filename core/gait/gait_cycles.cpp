@@ -65,7 +65,7 @@ void checkWalking(const Eigen::MatrixXd& m, double rateHz, const std::string& fi
     const double range = lead.maxCoeff() - lead.minCoeff();
     if (range < kMinAnkleExcursionMm) {
       std::ostringstream msg;
-      msg << "not a walking trial: the " << (side == Side::Right ? "right" : "left")
+      msg << "not walking: the " << (side == Side::Right ? "right" : "left")
           << " ankle moves only " << std::lround(range)
           << " mm fore-aft relative to the pelvis (walking needs > " << kMinAnkleExcursionMm
           << " mm)";
@@ -118,7 +118,7 @@ GaitCycles detectGaitCycles(const Eigen::MatrixXd& m, double rateHz,
   }
   if (cycles.strideHz < kMinStrideHz || cycles.strideHz > kMaxStrideHz) {
     std::ostringstream msg;
-    msg << "not a walking trial: no regular foot strikes (found " << cycles.rightStrikesS.size()
+    msg << "not walking: no regular foot strikes (found " << cycles.rightStrikesS.size()
         << " right, " << cycles.leftStrikesS.size() << " left";
     if (cycles.strideHz > 0) msg << ", stride frequency " << cycles.strideHz << " Hz";
     msg << "; walking is " << kMinStrideHz << "-" << kMaxStrideHz << " Hz)";

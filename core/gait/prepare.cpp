@@ -279,9 +279,11 @@ WalkingTrial prepareWalkingTrial(const JointTrial& t, const PrepareOptions& o) {
   }
   // One straight walk: the widest window tried says best why it is not usable.
   if (out.segments.size() < 2) throw *lastFailure;
+  std::string why = firstFailure->problem();
+  if (why.starts_with("not walking: ")) why.erase(0, std::string_view("not walking: ").size());
   throwBadData(t.file, "",
-               "walking: no straight segment holds a full gait cycle (" +
-                   segmentsText(out.segments) + "): " + firstFailure->problem());
+               "not walking: no straight segment holds a full gait cycle (" +
+                   segmentsText(out.segments) + "): " + why);
 }
 
 }  // namespace ew

@@ -96,7 +96,7 @@ TEST(Prepare, StandingStillIsNotWalking) {
     FAIL() << "a standing trial was accepted";
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::BadData);
-    EXPECT_NE(std::string(e.what()).find("not a walking trial"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("not walking: "), std::string::npos) << e.what();
   }
 }
 
