@@ -28,6 +28,7 @@
 #include "core/engine/reconstruction.h"
 #include "core/engine/synthetic_walkers.h"
 #include "core/engine/walker_set.h"
+#include "tests/common/error_matchers.h"
 #include "tests/common/test_support.h"
 
 namespace ew {
@@ -40,28 +41,7 @@ constexpr double kRateHz = 120.0;
 
 // [SECTION] Helpers
 
-// Passes when f throws ew::Error of `kind` whose message contains every part.
-template <class F>
-::testing::AssertionResult throwsError(F&& f, ErrorKind kind,
-                                       std::initializer_list<std::string_view> parts) {
-  try {
-    f();
-  } catch (const Error& e) {
-    const std::string message = e.what();
-    if (e.kind() != kind) {
-      return ::testing::AssertionFailure() << "kind " << errorKindName(e.kind()) << ", expected "
-                                           << errorKindName(kind) << ": " << message;
-    }
-    for (const auto part : parts) {
-      if (message.find(part) == std::string::npos)
-        return ::testing::AssertionFailure() << "message lacks '" << part << "': " << message;
-    }
-    return ::testing::AssertionSuccess() << message;
-  } catch (const std::exception& e) {
-    return ::testing::AssertionFailure() << "not an ew::Error: " << e.what();
-  }
-  return ::testing::AssertionFailure() << "no exception";
-}
+using test::throwsError;
 
 // `seconds` of the synthetic base walker at `rateHz` (T × 45, mm).
 Eigen::MatrixXd walkFrames(double rateHz = kRateHz, double seconds = 3.0) {

@@ -20,6 +20,7 @@
 #include "core/experiments/plot.h"
 #include "core/experiments/results_folder.h"
 #include "core/experiments/view_csv.h"
+#include "tests/common/error_matchers.h"
 #include "tests/common/test_support.h"
 
 namespace ew {
@@ -32,28 +33,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kOmega = 2.0 * std::numbers::pi * 0.9;
 constexpr double kRateHz = 60.0;
 
-// Passes when f throws ew::Error of `kind` whose message contains every part.
-template <class F>
-::testing::AssertionResult throwsError(F&& f, ErrorKind kind,
-                                       std::initializer_list<std::string_view> parts) {
-  try {
-    f();
-  } catch (const Error& e) {
-    const std::string message = e.what();
-    if (e.kind() != kind) {
-      return ::testing::AssertionFailure() << "kind " << errorKindName(e.kind()) << ", expected "
-                                           << errorKindName(kind) << ": " << message;
-    }
-    for (const auto part : parts) {
-      if (message.find(part) == std::string::npos)
-        return ::testing::AssertionFailure() << "message lacks '" << part << "': " << message;
-    }
-    return ::testing::AssertionSuccess() << message;
-  } catch (const std::exception& e) {
-    return ::testing::AssertionFailure() << "not an ew::Error: " << e.what();
-  }
-  return ::testing::AssertionFailure() << "no exception";
-}
+using test::throwsError;
 
 // `count` walkers of distinct subjects, each with 2 cycles of frames at 60 Hz.
 std::vector<ExperimentWalker> walkers(int count) {
