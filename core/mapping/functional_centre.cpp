@@ -80,6 +80,12 @@ void slideAlongAxis(const Eigen::JacobiSVD<Eigen::MatrixXd>& svd, const std::vec
   x += toAnchor.dot(axis) / axis.squaredNorm() * v;
 }
 
+MarkerTrack clusterCentroid(const std::vector<MarkerTrack>& cluster) {
+  MarkerTrack sum = MarkerTrack::Zero(cluster.front().rows(), 3);
+  for (const auto& m : cluster) sum += m;
+  return sum / static_cast<double>(cluster.size());
+}
+
 }  // namespace
 
 MarkerTrack functionalJointCentre(const std::vector<MarkerTrack>& proximal,
@@ -125,6 +131,31 @@ MarkerTrack functionalJointCentre(const std::vector<MarkerTrack>& proximal,
       out.row(f) = fromD.transpose();
   }
   return out;
+}
+
+HipPair symmetricFunctionalHips(const std::vector<MarkerTrack>& pelvis,
+                                const std::vector<MarkerTrack>& leftThigh,
+                                const std::vector<MarkerTrack>& rightThigh, double widthMm) {
+  if (pelvis.empty() || leftThigh.empty() || rightThigh.empty()) {
+    const Eigen::Index frames = pelvis.empty() ? 0 : pelvis.front().rows();
+    return {MarkerTrack::Constant(frames, 3, kNaN), MarkerTrack::Constant(frames, 3, kNaN)};
+  }
+  // Each fit nearly a hinge: its point on the flexion axis is taken nearest its thigh
+  // cluster, so the pair's midpoint follows the thighs' (symmetric) clusters rather than
+  // wherever the pelvis cluster sits.
+  const MarkerTrack leftAnchor = clusterCentroid(leftThigh), rightAnchor = clusterCentroid(rightThigh);
+  HipPair h{functionalJointCentre(pelvis, leftThigh, &leftAnchor),
+            functionalJointCentre(pelvis, rightThigh, &rightAnchor)};
+  for (Eigen::Index f = 0; f < h.left.rows(); ++f) {
+    const Eigen::RowVector3d mid = 0.5 * (h.left.row(f) + h.right.row(f));
+    const Eigen::RowVector3d across = h.left.row(f) - h.right.row(f);
+    const double n = across.norm();
+    const Eigen::RowVector3d half =
+        n > 1e-9 ? Eigen::RowVector3d(0.5 * widthMm / n * across) : Eigen::RowVector3d::Constant(kNaN);
+    h.left.row(f) = mid + half;
+    h.right.row(f) = mid - half;
+  }
+  return h;
 }
 
 }  // namespace ew

@@ -26,4 +26,16 @@ MarkerTrack functionalJointCentre(const std::vector<MarkerTrack>& proximal,
                                   const std::vector<MarkerTrack>& distal,
                                   const MarkerTrack* anchor = nullptr);
 
+// Both hip centres from a pelvis cluster and the two thigh clusters, when no pelvic
+// landmarks give a regression hip (segment-cluster sets). A gait trial moves the hip mostly
+// in flexion, so each fit is poorly placed along the left-right axis: on the 18 Schreiber
+// trials the two fits were 132-328 mm apart against Harrington's 154-193 mm. The pair keeps
+// the fits' midpoint and left-right direction and is set `widthMm` apart (docs/JOINTS.md).
+struct HipPair {
+  MarkerTrack left, right;
+};
+HipPair symmetricFunctionalHips(const std::vector<MarkerTrack>& pelvis,
+                                const std::vector<MarkerTrack>& leftThigh,
+                                const std::vector<MarkerTrack>& rightThigh, double widthMm);
+
 }  // namespace ew

@@ -89,6 +89,7 @@ std::vector<std::string> suggestionRefs(const MarkerRule& rule) {
     case RuleOp::HarringtonHip:
       return {rule.side == Side::Left ? rule.leftAsis : rule.rightAsis};
     case RuleOp::FunctionalCentre:  // a fitted point no mean of markers stands for
+    case RuleOp::FunctionalHip:
     case RuleOp::MidJoints:
     case RuleOp::HeadAboveSternum:
       return {};

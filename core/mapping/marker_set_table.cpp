@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "core/assets/embedded_assets.h"
 #include "core/common/errors.h"
@@ -137,6 +138,31 @@ HalfWidth halfWidthFrom(const std::string& s, const std::string& file, const std
   bad(file, key + ".half_width", "must be knee, ankle or elbow, not '" + s + "'");
 }
 
+Side sideFrom(const json& o, const std::string& file, const std::string& key) {
+  const std::string side = str(o, "side", file, key);
+  if (side != "left" && side != "right") bad(file, key + ".side", "must be left or right");
+  return side == "left" ? Side::Left : Side::Right;
+}
+
+// A human inter-hip distance: anything outside is a unit or typing mistake.
+constexpr double kMinHipWidthMm = 80, kMaxHipWidthMm = 400;
+
+void parseFunctionalHip(const json& o, const std::string& file, const std::string& key,
+                        MarkerRule& r) {
+  r.op = RuleOp::FunctionalHip;
+  r.side = sideFrom(o, file, key);
+  r.markers = strings(o, "pelvis", file, key);
+  r.distal = strings(o, "thigh", file, key);
+  r.otherDistal = strings(o, "other_thigh", file, key);
+  if (r.markers.size() < 3 || r.distal.size() < 3 || r.otherDistal.size() < 3)
+    bad(file, key, "a functional hip needs 3 or more markers in each cluster");
+  if (!o.contains("width_mm") || !o["width_mm"].is_number())
+    bad(file, key + ".width_mm", "must be a number (mm between the hip centres)");
+  r.widthMm = o["width_mm"].get<double>();
+  if (!(r.widthMm >= kMinHipWidthMm && r.widthMm <= kMaxHipWidthMm))
+    bad(file, key + ".width_mm", "must be between 80 and 400 mm");
+}
+
 MarkerRule parseRule(const json& o, const std::string& file, const std::string& key) {
   if (!o.is_object()) bad(file, key, "a rule must be an object with \"op\"");
   MarkerRule r;
@@ -146,9 +172,7 @@ MarkerRule parseRule(const json& o, const std::string& file, const std::string& 
     r.markers = strings(o, "markers", file, key);
   } else if (op == "harrington_hip") {
     r.op = RuleOp::HarringtonHip;
-    const std::string side = str(o, "side", file, key);
-    if (side != "left" && side != "right") bad(file, key + ".side", "must be left or right");
-    r.side = side == "left" ? Side::Left : Side::Right;
+    r.side = sideFrom(o, file, key);
     r.leftAsis = str(o, "l_asis", file, key);
     r.rightAsis = str(o, "r_asis", file, key);
     r.markers = strings(o, "psis", file, key);
@@ -176,6 +200,8 @@ MarkerRule parseRule(const json& o, const std::string& file, const std::string& 
       bad(file, key, "a functional centre needs 3 or more markers in each cluster");
     const std::string anchor = str(o, "anchor", file, key, true);
     if (!anchor.empty()) r.anchor = jointFromName(anchor, file, key + ".anchor");
+  } else if (op == "functional_hip") {
+    parseFunctionalHip(o, file, key, r);
   } else {
     bad(file, key + ".op", "unknown rule '" + op + "'");
   }
@@ -203,6 +229,7 @@ std::vector<Joint> jointsRead(const MarkerRule& r) {
 std::vector<std::string> requiredMarkers(const MarkerRule& r) {
   std::vector<std::string> m = r.markers;
   m.insert(m.end(), r.distal.begin(), r.distal.end());
+  m.insert(m.end(), r.otherDistal.begin(), r.otherDistal.end());
   for (const std::string* s :
        {&r.leftAsis, &r.rightAsis, &r.lateral, &r.acromion, &r.otherAcromion}) {
     if (!s->empty()) m.push_back(*s);
@@ -290,6 +317,7 @@ Vector3d evaluate(const MarkerRule& r, const FrameContext& c) {
     case RuleOp::HeadAboveSternum:
       return estimateHead(c.joint(Joint::Pelvis), c.joint(Joint::Sternum));
     case RuleOp::FunctionalCentre:
+    case RuleOp::FunctionalHip:
       break;  // a whole-trial fit: functionalTrack
   }
   return Vector3d::Constant(kNaN);
@@ -306,9 +334,76 @@ MarkerTrack functionalTrack(const MarkerRule& r, const Markers& m, const Eigen::
     }
     return out;
   };
+  if (r.op == RuleOp::FunctionalHip) {
+    const bool left = r.side == Side::Left;
+    const HipPair h = symmetricFunctionalHips(tracks(r.markers), tracks(left ? r.distal : r.otherDistal),
+                                              tracks(left ? r.otherDistal : r.distal), r.widthMm);
+    return left ? h.left : h.right;
+  }
   if (!r.anchor) return functionalJointCentre(tracks(r.markers), tracks(r.distal));
   const MarkerTrack anchor = joints.middleCols(3 * index(*r.anchor), 3);
   return functionalJointCentre(tracks(r.markers), tracks(r.distal), &anchor);
+}
+
+bool isFunctional(const MarkerRule& r) {
+  return r.op == RuleOp::FunctionalCentre || r.op == RuleOp::FunctionalHip;
+}
+
+double meanDistanceMm(const Eigen::MatrixXd& joints, Joint a, Joint b) {
+  double sum = 0;
+  int n = 0;
+  for (Eigen::Index f = 0; f < joints.rows(); ++f) {
+    const double d = (jointAt(joints, static_cast<int>(f), a) - jointAt(joints, static_cast<int>(f), b)).norm();
+    if (std::isfinite(d)) sum += d, ++n;
+  }
+  return n ? sum / n : kNaN;
+}
+
+// Left and right thighs and shanks of one person differ by a few percent, and a shank is
+// about as long as its thigh (0.89-1.21 on the 24 shared walkers' trials); functional
+// centres fitted on too little joint motion are not (TESTBPI.c3d: shanks 0.75 of thighs).
+constexpr double kMaxLegAsymmetry = 0.10;
+constexpr double kMinShankToThigh = 0.80, kMaxShankToThigh = 1.35;
+
+struct LegLengths {
+  double leftThigh, rightThigh, leftShank, rightShank;
+};
+
+LegLengths legLengths(const Eigen::MatrixXd& p) {
+  return {meanDistanceMm(p, Joint::LHip, Joint::LKnee), meanDistanceMm(p, Joint::RHip, Joint::RKnee),
+          meanDistanceMm(p, Joint::LKnee, Joint::LAnkle), meanDistanceMm(p, Joint::RKnee, Joint::RAnkle)};
+}
+
+[[noreturn]] void implausibleLegs(const JointTrial& t, const std::string& what) {
+  throw Error(ErrorKind::BadData, t.file, "",
+              "the functional joint centres fitted on the marker clusters are implausible (" +
+                  what +
+                  "): the trial moves its joints too little to locate them, and the file has "
+                  "no anatomical markers to place them instead");
+}
+
+// Throws Error(BadData) saying which proportion fails when legs built with functional
+// centres are not a person's: left and right apart by more than kMaxLegAsymmetry, or shank
+// to thigh outside [kMinShankToThigh, kMaxShankToThigh].
+void checkFunctionalLegs(const JointTrial& t) {
+  const LegLengths g = legLengths(t.positionsMm);
+  std::ostringstream what;
+  what.precision(0);
+  what << std::fixed;
+  for (const auto& [name, l, r] : {std::tuple{"thigh", g.leftThigh, g.rightThigh},
+                                   std::tuple{"shank", g.leftShank, g.rightShank}}) {
+    const double asymmetry = std::abs(l - r) / (0.5 * (l + r));
+    if (!(asymmetry > kMaxLegAsymmetry)) continue;
+    what << "left " << name << " " << l << " mm, right " << r << " mm: " << 100 * asymmetry
+         << " % apart, more than " << 100 * kMaxLegAsymmetry << " %";
+    implausibleLegs(t, what.str());
+  }
+  const double ratio = (g.leftShank + g.rightShank) / (g.leftThigh + g.rightThigh);
+  if (!std::isfinite(ratio) || (ratio >= kMinShankToThigh && ratio <= kMaxShankToThigh)) return;
+  what.precision(2);
+  what << "shanks " << ratio << " of the thighs' length, outside " << kMinShankToThigh << "-"
+       << kMaxShankToThigh;
+  implausibleLegs(t, what.str());
 }
 
 // The estimate flag and warning a rule carries for this trial.
@@ -400,7 +495,7 @@ JointTrial applyMarkerSetTable(const MarkerSetTable& table, const TablePlan& pla
       continue;
     }
     const MarkerRule& r = table.joints[at(j)][static_cast<std::size_t>(k)];
-    if (r.op == RuleOp::FunctionalCentre) {
+    if (isFunctional(r)) {
       out.positionsMm.middleCols(3 * index(j), 3) =
           functionalTrack(r, m, out.positionsMm, raw.frameCount());
       continue;
@@ -416,6 +511,13 @@ JointTrial applyMarkerSetTable(const MarkerSetTable& table, const TablePlan& pla
     if (k >= 0)
       flagRule(out, static_cast<Joint>(j),
                table.joints[static_cast<std::size_t>(j)][static_cast<std::size_t>(k)], m);
+  }
+  for (Joint j : {Joint::LHip, Joint::RHip, Joint::LKnee, Joint::RKnee, Joint::LAnkle, Joint::RAnkle}) {
+    const int k = plan.rule[at(j)];
+    if (k >= 0 && isFunctional(table.joints[at(j)][static_cast<std::size_t>(k)])) {
+      checkFunctionalLegs(out);
+      break;
+    }
   }
   std::vector<std::string> missing;
   for (int j = 0; j < kJointCount; ++j) {

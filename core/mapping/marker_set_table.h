@@ -29,6 +29,8 @@ enum class RuleOp {
   ShoulderDrop,   // acromion lowered along the trunk (Rab 2002), needs pelvis and sternum
   HeadAboveSternum,  // SPEC §1 head rule from pelvis and sternum
   FunctionalCentre,  // SCoRE centre of two clusters: `markers` proximal, `distal` (3+ each)
+  FunctionalHip,     // hip of `side` from pelvis cluster `markers`, thighs `distal` (this side)
+                     // and `otherDistal`, the pair set `widthMm` apart (symmetricFunctionalHips)
 };
 
 // Which of the measured half-widths (marker_sets.h) a lateral-only joint is shifted by.
@@ -38,12 +40,14 @@ struct MarkerRule {
   RuleOp op = RuleOp::Mean;
   std::vector<std::string> markers;  // Mean; HarringtonHip: the PSIS markers (mean)
   std::string leftAsis, rightAsis;   // HarringtonHip
-  Side side = Side::Left;            // HarringtonHip
+  Side side = Side::Left;            // HarringtonHip, FunctionalHip
   std::string lateral, medial;       // LateralMedial (medial may be empty)
   std::vector<Joint> joints;         // MidJoints; LateralMedial: proximal, midline from, to
   HalfWidth halfWidth = HalfWidth::Knee;
   std::string acromion, otherAcromion;  // ShoulderDrop
   std::vector<std::string> distal;      // FunctionalCentre: the distal segment's cluster
+  std::vector<std::string> otherDistal; // FunctionalHip: the other side's thigh cluster
+  double widthMm = 0;                   // FunctionalHip: distance between the hip centres
   std::optional<Joint> anchor;          // FunctionalCentre: joint a hinge's axis point is nearest
   std::string estimated;  // non-empty: joint flagged estimated, warning "<joint> estimated: …"
 };

@@ -1,6 +1,7 @@
 // `info --json` on the vendor C3D samples (../shared/data/c3d-samples): every walking sample
-// whose markers include a recognised set maps to joints (lower-body sets with the upper body
-// missing), and the non-walking ones say "not walking" before anything about markers.
+// whose markers include a recognised set maps to joints (lower-body and cluster sets with the
+// upper body missing), the one whose fitted legs are implausible says so, and the non-walking
+// ones say "not walking" before anything about markers.
 // docs/FORMATS.md tabulates all 15 files from the same run.
 
 #include <gtest/gtest.h>
@@ -54,10 +55,23 @@ TEST(C3dSamplesMapping, InfoMapsTheWalkingSamplesAndNamesTheOthers) {
   const std::string mac = byName.at("MACsample.c3d")["error"];
   EXPECT_NE(mac.find("Motion Analysis Helen Hayes"), std::string::npos) << mac;
   EXPECT_NE(mac.find("missing l_knee, r_knee, l_ankle, r_ankle"), std::string::npos) << mac;
-  // Walking, but cluster-only markers (no set applies): a marker message, no "not walking".
-  const std::string clusters = byName.at("TESTBPI.c3d")["error"];
-  EXPECT_NE(clusters.find("no known marker set"), std::string::npos) << clusters;
-  EXPECT_EQ(clusters.find("not walking"), std::string::npos) << clusters;
+  // Technical clusters only: every leg joint a functional centre, the same in each encoding.
+  for (const char* name : {"dec_int.c3d", "dec_real.c3d", "pc_int.c3d", "pc_real.c3d",
+                           "sgi_int.c3d", "sgi_real.c3d"}) {
+    SCOPED_TRACE(name);
+    const auto& s = byName.at(name);
+    EXPECT_EQ(s["source"], "Segment clusters (Vicon 370 / Motion Lab technical triads)");
+    EXPECT_NE(s["error_stage"], "joints") << s["error"];
+    EXPECT_NE(s["error_stage"], "read") << s["error"];
+    // Integer encodings round positions to the scale factor: the same cycles within a frame.
+    EXPECT_NEAR(s["cycles"].get<double>(), byName.at("pc_real.c3d")["cycles"].get<double>(), 0.05);
+  }
+  // Walking, clusters too, but the fitted legs are not a person's: says so, and why.
+  const std::string testbpi = byName.at("TESTBPI.c3d")["error"];
+  EXPECT_NE(testbpi.find("functional joint centres fitted on the marker clusters are implausible"),
+            std::string::npos)
+      << testbpi;
+  EXPECT_EQ(testbpi.find("not walking"), std::string::npos) << testbpi;
 }
 
 }  // namespace
