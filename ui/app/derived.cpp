@@ -81,16 +81,20 @@ std::unique_ptr<ReconDisplay> computeDisplay(const ReconBase& base,
   d->reprojected = projectToView(d->w, base.alphaUsedDeg);
   d->errors = depthErrors(base.wTrue, d->w, base.alphaTrueDeg);
   d->depthRmsMm = d->errors.absPerJoint.cwiseMax(0.0).cwiseSqrt();
-  d->mpjpeMm = mpjpe(base.wTrue, d->w);
   const Eigen::VectorXd perJoint = mpjpePerJoint(base.wTrue, d->w);
-  double measured = 0.0, estimated = 0.0;
+  double measured = 0.0, estimated = 0.0, absMeasured = 0.0;
   int nMeasured = 0, nEstimated = 0;
   for (int j = 0; j < kJointCount; ++j) {
     const bool model = base.modelEstimated[static_cast<std::size_t>(j)];
     (model ? estimated : measured) += perJoint(j);
+    if (!model) absMeasured += d->errors.absPerJoint(j);
     ++(model ? nEstimated : nMeasured);
   }
+  d->jointsScored = nMeasured;
   d->mpjpeMeasuredMm = nMeasured > 0 ? measured / nMeasured : 0.0;
+  d->mpjpeMm = d->mpjpeMeasuredMm;
+  d->absScoredMm2 = nMeasured > 0 ? absMeasured / nMeasured : 0.0;
+  d->relScored = d->errors.sigmaM2Mm2 > 0.0 ? d->absScoredMm2 / d->errors.sigmaM2Mm2 : 0.0;
   if (nEstimated > 0) d->mpjpeModelEstimatedMm = estimated / nEstimated;
   d->residualRmsMm =
       std::sqrt((base.observed - d->reprojected).squaredNorm() / static_cast<double>(base.observed.size()));

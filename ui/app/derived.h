@@ -63,10 +63,15 @@ struct ReconDisplay {
   Eigen::VectorXd kSd;           // coefficients in SD units (N)
   Eigen::VectorXd w;             // 225, model synthesis w̄ + E k
   Eigen::VectorXd reprojected;   // C(α_used) w (150)
-  DepthErrors errors;            // at the true α (SPEC §7)
+  DepthErrors errors;            // at the true α (SPEC §7), all 15 joints
   Eigen::VectorXd depthRmsMm;    // √E_abs(j) per joint, mm
+  // The headline errors, over the joints the trial measured (all 15 unless a marker set
+  // lacked some), as `reconstruct` reports them: a model-estimated joint has no truth.
+  double absScoredMm2 = 0.0;     // E_a
+  double relScored = 0.0;        // E_r = E_a / σ_m²
   double mpjpeMm = 0.0;
-  double mpjpeMeasuredMm = 0.0;                 // over the measured joints
+  int jointsScored = kJointCount;
+  double mpjpeMeasuredMm = 0.0;                 // over the measured joints (= mpjpeMm)
   std::optional<double> mpjpeModelEstimatedMm;  // over the model-estimated joints, if any
   double residualRmsMm = 0.0;    // RMS of ŵ − C(α_used) w over the 150 values
   double angleErrorDeg = 0.0;    // |α̂ − α| (0 with a known angle)

@@ -66,9 +66,10 @@ nlohmann::json reconstructionJson(const Derived& derived) {
                       {"model_walkers", r->modelWalkers},
                       {"components", r->components},
                       {"alpha_used_deg", r->alphaUsedDeg},
-                      {"abs_error_mm2", d->errors.absMean},
-                      {"rel_error", d->errors.relMean},
+                      {"abs_error_mm2", d->absScoredMm2},
+                      {"rel_error", d->relScored},
                       {"mpjpe_mm", d->mpjpeMm},
+                      {"joints_scored", d->jointsScored},
                       {"residual_rms_mm", d->residualRmsMm}};
   std::vector<double> perJoint(d->depthRmsMm.data(), d->depthRmsMm.data() + d->depthRmsMm.size());
   j["depth_rms_mm"] = perJoint;

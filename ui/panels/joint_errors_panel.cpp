@@ -22,7 +22,7 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
       const ImVec2 p0 = ImGui::GetCursorScreenPos();
       const ImVec2 size = ImGui::GetContentRegionAvail();
       const float labelW = ImGui::CalcTextSize("r_shoulder ").x;
-      const float valueW = ImGui::CalcTextSize("000.0").x + 6.0f * ctx.scale;
+      const float valueW = ImGui::CalcTextSize("(000.0)").x + 6.0f * ctx.scale;
       const float textH = ImGui::GetTextLineHeight();
       // One column when 15 rows fit, else two side by side.
       const int columns = size.y / static_cast<float>(kJointCount) >= textH + 2.0f ? 1 : 2;
@@ -37,7 +37,9 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
         const float v = static_cast<float>(d->depthRmsMm(j));
         const float w = barMax * std::min(v / scaleMm, 1.0f);
         const auto name = kJointNames[static_cast<std::size_t>(j)];
-        // Model-estimated joints (the marker set lacked them): their name in the legend's colour.
+        // Model-estimated joints (the marker set lacked them) have no truth, only the model's
+        // completion: name, bar and value in the legend's colour, the value in parentheses,
+        // so they never read as measured errors.
         const bool estimated = r && r->modelEstimated[static_cast<std::size_t>(j)];
         dl->AddText(ImVec2(x, y + 0.5f * (rowH - textH)),
                     estimated ? toImU32(palette::kModelEstimated)
@@ -48,11 +50,14 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
         dl->AddRectFilled(ImVec2(x + labelW, by), ImVec2(x + labelW + barMax, by + bh),
                           ImGui::GetColorU32(ImGuiCol_FrameBg), 2.0f);
         dl->AddRectFilled(ImVec2(x + labelW, by), ImVec2(x + labelW + w, by + bh),
-                          toImU32(palette::errorColour(v / scaleMm)), 2.0f);
+                          estimated ? toImU32(palette::kModelEstimated)
+                                    : toImU32(palette::errorColour(v / scaleMm)),
+                          2.0f);
         char buf[32];
-        std::snprintf(buf, sizeof buf, "%.1f", static_cast<double>(v));
+        std::snprintf(buf, sizeof buf, estimated ? "(%.1f)" : "%.1f", static_cast<double>(v));
         dl->AddText(ImVec2(x + labelW + w + 4.0f * ctx.scale, y + 0.5f * (rowH - textH)),
-                    ImGui::GetColorU32(ImGuiCol_Text), buf);
+                    estimated ? toImU32(palette::kModelEstimated) : ImGui::GetColorU32(ImGuiCol_Text),
+                    buf);
       }
       ImGui::Dummy(size);
       if (ImGui::IsItemHovered()) {
@@ -63,8 +68,8 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
                           kJointNames[static_cast<std::size_t>(j)].data(), d->depthRmsMm(j),
                           d->errors.absPerJoint(j), d->errors.relPerJoint(j),
                           r && r->modelEstimated[static_cast<std::size_t>(j)]
-                              ? "\nmodel-estimated: the marker set lacks this joint; its ground "
-                                "truth is the model's"
+                              ? "\nmodel-estimated: the marker set lacks this joint; the error is "
+                                "against the model's own completion, not a measurement"
                               : "");
       }
     } else {

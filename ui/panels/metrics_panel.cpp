@@ -41,16 +41,17 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
     } else if (r && d) {
       const float w = std::max(150.0f * ctx.scale, (ImGui::GetContentRegionAvail().x - 8.0f) / 5.0f);
       char v[64], n[64];
-      std::snprintf(v, sizeof v, "%.0f mm²", d->errors.absMean);
-      std::snprintf(n, sizeof n, "(√ %.1f mm)", std::sqrt(std::max(d->errors.absMean, 0.0)));
+      // Over the measured joints, as `reconstruct` reports: a model-estimated joint has no truth.
+      std::snprintf(v, sizeof v, "%.0f mm²", d->absScoredMm2);
+      std::snprintf(n, sizeof n, "(√ %.1f mm)", std::sqrt(std::max(d->absScoredMm2, 0.0)));
       metric(s, "E_a  depth error", v, n, w);
-      std::snprintf(v, sizeof v, "%.3f", d->errors.relMean);
+      std::snprintf(v, sizeof v, "%.3f", d->relScored);
       std::snprintf(n, sizeof n, "σ_m² %.0f mm²", d->errors.sigmaM2Mm2);
       metric(s, "E_r  relative", v, n, w);
       std::snprintf(v, sizeof v, "%.1f mm", d->mpjpeMm);
       // Joints estimated from a model are scored apart (their ground truth is the model's).
       if (d->mpjpeModelEstimatedMm) {
-        std::snprintf(n, sizeof n, "measured %.1f · est. %.1f", d->mpjpeMeasuredMm,
+        std::snprintf(n, sizeof n, "%d measured joints · est. (%.1f)", d->jointsScored,
                       *d->mpjpeModelEstimatedMm);
       } else {
         n[0] = '\0';
