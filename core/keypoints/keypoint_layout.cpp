@@ -1,0 +1,131 @@
+#include "core/keypoints/keypoint_layout.h"
+
+#include <algorithm>
+#include <cctype>
+#include <map>
+#include <nlohmann/json.hpp>
+
+#include "core/assets/embedded_assets.h"
+#include "core/common/errors.h"
+
+namespace ew {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void bad(const std::string& file, const std::string& key, const std::string& what) {
+  throw Error(ErrorKind::Malformed, file, key, what);
+}
+
+// Lower case without '_', '-' or spaces: "BODY_25B", "body25b" and "Body-25B" are one name.
+std::string nameKey(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '_' || c == '-' || c == ' ') continue;
+    out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return out;
+}
+
+std::vector<std::string> pointNames(const json& doc, const std::string& file) {
+  if (!doc.contains("points") || !doc["points"].is_array() || doc["points"].empty())
+    bad(file, "points", "must be a non-empty list of point names");
+  std::vector<std::string> points;
+  for (const auto& p : doc["points"]) {
+    if (!p.is_string() || p.get<std::string>().empty()) bad(file, "points", "names must be strings");
+    if (std::find(points.begin(), points.end(), p.get<std::string>()) != points.end())
+      bad(file, "points", "'" + p.get<std::string>() + "' appears twice");
+    points.push_back(p.get<std::string>());
+  }
+  return points;
+}
+
+int jointIndex(const std::string& name, const std::string& file, const std::string& key) {
+  for (int j = 0; j < kJointCount; ++j) {
+    if (kJointNames[static_cast<std::size_t>(j)] == name) return j;
+  }
+  bad(file, key, "unknown joint name '" + name + "'");
+}
+
+std::vector<int> alternative(const json& a, const std::vector<std::string>& points,
+                             const std::string& file, const std::string& key) {
+  if (!a.is_array() || a.empty()) bad(file, key, "an alternative must be a non-empty list of point names");
+  std::vector<int> out;
+  for (const auto& p : a) {
+    const auto it = p.is_string() ? std::find(points.begin(), points.end(), p.get<std::string>()) : points.end();
+    if (it == points.end()) bad(file, key, "'" + p.dump() + "' is not one of the layout's points");
+    out.push_back(static_cast<int>(it - points.begin()));
+  }
+  return out;
+}
+
+}  // namespace
+
+KeypointLayout parseKeypointLayout(std::string_view text, const std::string& file) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::exception& e) {
+    bad(file, "", std::string("not JSON: ") + e.what());
+  }
+  if (!doc.is_object()) bad(file, "", "a keypoint layout must be a JSON object");
+  KeypointLayout l;
+  l.file = file;
+  if (!doc.contains("name") || !doc["name"].is_string() || doc["name"].get<std::string>().empty())
+    bad(file, "name", "must be a non-empty string");
+  l.name = doc["name"].get<std::string>();
+  l.about = doc.value("about", "");
+  l.points = pointNames(doc, file);
+  if (!doc.contains("joints") || !doc["joints"].is_object()) bad(file, "joints", "missing object");
+  for (const auto& [name, alternatives] : doc["joints"].items()) {
+    const std::string key = "joints." + name;
+    const int j = jointIndex(name, file, key);
+    if (!alternatives.is_array() || alternatives.empty())
+      bad(file, key, "must be a list of alternatives (lists of point names)");
+    for (std::size_t k = 0; k < alternatives.size(); ++k) {
+      l.joints[static_cast<std::size_t>(j)].push_back(
+          alternative(alternatives[k], l.points, file, key + "[" + std::to_string(k) + "]"));
+    }
+  }
+  if (doc.contains("derived")) {
+    if (!doc["derived"].is_object()) bad(file, "derived", "must be an object joint -> reason");
+    for (const auto& [name, why] : doc["derived"].items()) {
+      const int j = jointIndex(name, file, "derived." + name);
+      if (!why.is_string()) bad(file, "derived." + name, "must be a string");
+      l.derived[static_cast<std::size_t>(j)] = why.get<std::string>();
+    }
+  }
+  return l;
+}
+
+const std::vector<KeypointLayout>& keypointLayouts() {
+  static const std::vector<KeypointLayout> layouts = [] {
+    std::vector<KeypointLayout> out;
+    for (const auto& name : embeddedAssetNames("keypoint-layouts/")) {
+      if (name.ends_with(".json")) out.push_back(parseKeypointLayout(embeddedAsset(name), "assets/" + name));
+    }
+    if (out.empty()) throw Error(ErrorKind::Io, "assets/keypoint-layouts", "", "no layouts embedded");
+    return out;
+  }();
+  return layouts;
+}
+
+const KeypointLayout& keypointLayoutNamed(std::string_view name) {
+  std::string known;
+  for (const auto& l : keypointLayouts()) {
+    if (nameKey(l.name) == nameKey(name)) return l;
+    known += (known.empty() ? "" : ", ") + l.name;
+  }
+  throw Error(ErrorKind::BadArgument, "", "--layout",
+              "unknown keypoint layout '" + std::string(name) + "' (known: " + known + ")");
+}
+
+std::vector<const KeypointLayout*> keypointLayoutsWithPoints(int pointCount) {
+  std::vector<const KeypointLayout*> out;
+  for (const auto& l : keypointLayouts()) {
+    if (static_cast<int>(l.points.size()) == pointCount) out.push_back(&l);
+  }
+  return out;
+}
+
+}  // namespace ew

@@ -1,0 +1,338 @@
+#include "core/keypoints/keypoint_trial.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/common/errors.h"
+#include "core/io/reader_limits.h"
+
+namespace ew {
+namespace {
+
+using Eigen::Vector2d;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// A detection joins a track when its centre is within this share of the person's size.
+constexpr double kMaxStepOfSize = 0.5;
+constexpr int kMaxTrackGapFrames = 15;
+// A detection with fewer points is noise, not a person.
+constexpr int kMinPointsPerDetection = 3;
+// The walker is chosen among tracks present at least this share as long as the longest.
+constexpr double kMinShareOfLongest = 0.5;
+// A joint's alternative is used when its points are all seen in this share of the frames.
+constexpr double kAlternativeShare = 0.5;
+
+struct Shape {
+  Vector2d centre = Vector2d::Constant(kNaN);
+  double heightPx = 0.0;
+  int points = 0;
+};
+
+Shape shapeOf(const Eigen::MatrixX3d& p) {
+  Shape s;
+  Vector2d sum = Vector2d::Zero();
+  double top = std::numeric_limits<double>::infinity(), bottom = -top;
+  for (Eigen::Index i = 0; i < p.rows(); ++i) {
+    if (!std::isfinite(p(i, 0)) || !std::isfinite(p(i, 1))) continue;
+    sum += Vector2d(p(i, 0), p(i, 1));
+    top = std::min(top, p(i, 1));
+    bottom = std::max(bottom, p(i, 1));
+    ++s.points;
+  }
+  if (s.points > 0) s.centre = sum / s.points, s.heightPx = bottom - top;
+  return s;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+struct Active {
+  int track;
+  Vector2d centre;
+  double size;
+  int lastFrame;
+};
+
+// [SECTION] Joints of one layout ------------------------------------------------------------
+
+bool pointSeen(const Eigen::MatrixX3d& p, int i, double minConfidence) {
+  return i < p.rows() && std::isfinite(p(i, 0)) && std::isfinite(p(i, 1)) && p(i, 2) >= minConfidence;
+}
+
+struct JointChoice {
+  std::array<int, kJointCount> alternative{};  // -1: never seen
+};
+
+// Per joint the first alternative whose points are all seen in kAlternativeShare of the
+// person's frames, else the one seen most, else none.
+JointChoice chooseAlternatives(const KeypointLayout& layout, const std::vector<const Eigen::MatrixX3d*>& person,
+                               double minConfidence) {
+  JointChoice c;
+  for (int j = 0; j < kJointCount; ++j) {
+    const auto& alts = layout.joints[static_cast<std::size_t>(j)];
+    int best = -1;
+    double bestShare = 0.0;
+    for (std::size_t a = 0; a < alts.size(); ++a) {
+      int seen = 0;
+      for (const auto* p : person) {
+        seen += std::all_of(alts[a].begin(), alts[a].end(), [&](int i) { return pointSeen(*p, i, minConfidence); });
+      }
+      const double share = person.empty() ? 0.0 : static_cast<double>(seen) / static_cast<double>(person.size());
+      if (share >= kAlternativeShare) {
+        best = static_cast<int>(a);
+        break;
+      }
+      if (share > bestShare) best = static_cast<int>(a), bestShare = share;
+    }
+    c.alternative[static_cast<std::size_t>(j)] = best;
+  }
+  return c;
+}
+
+Eigen::RowVectorXd jointsOf(const KeypointLayout& layout, const JointChoice& c, const Eigen::MatrixX3d& p,
+                            double minConfidence) {
+  Eigen::RowVectorXd row = Eigen::RowVectorXd::Constant(2 * kJointCount, kNaN);
+  for (int j = 0; j < kJointCount; ++j) {
+    const int a = c.alternative[static_cast<std::size_t>(j)];
+    if (a < 0) continue;
+    const auto& pts = layout.joints[static_cast<std::size_t>(j)][static_cast<std::size_t>(a)];
+    if (!std::all_of(pts.begin(), pts.end(), [&](int i) { return pointSeen(p, i, minConfidence); })) continue;
+    Vector2d sum = Vector2d::Zero();
+    for (int i : pts) sum += Vector2d(p(i, 0), p(i, 1));
+    row.segment<2>(2 * j) = (sum / static_cast<double>(pts.size())).transpose();
+  }
+  return row;
+}
+
+// Share of the checks an upright person passes (v grows downwards): ankles below knees
+// below hips below shoulders, head above the sternum. The wrong reading of a 25-point file
+// puts eyes where shoulders are and fails them.
+double uprightShare(const Eigen::MatrixXd& joints) {
+  const std::vector<std::pair<Joint, Joint>> below = {
+      {Joint::RAnkle, Joint::RKnee}, {Joint::LAnkle, Joint::LKnee}, {Joint::RKnee, Joint::RHip},
+      {Joint::LKnee, Joint::LHip},   {Joint::RHip, Joint::RShoulder}, {Joint::LHip, Joint::LShoulder},
+      {Joint::Sternum, Joint::Head}};
+  int pass = 0, total = 0;
+  for (Eigen::Index f = 0; f < joints.rows(); ++f) {
+    for (const auto& [low, high] : below) {
+      const double vLow = joints(f, 2 * index(low) + 1), vHigh = joints(f, 2 * index(high) + 1);
+      if (!std::isfinite(vLow) || !std::isfinite(vHigh)) continue;
+      pass += vLow > vHigh;
+      ++total;
+    }
+  }
+  return total ? static_cast<double>(pass) / total : 0.0;
+}
+
+std::string percent(double share) { return std::to_string(static_cast<int>(std::lround(100.0 * share))) + " %"; }
+
+// [SECTION] Choices --------------------------------------------------------------------------
+
+int chooseWalker(const std::vector<PersonTrack>& people, std::string& reason, std::vector<std::string>& warnings,
+                 int frameCount) {
+  const double longest = static_cast<double>(people.front().frames.size());
+  int best = 0;
+  double bestMoves = -1.0;
+  for (std::size_t k = 0; k < people.size(); ++k) {
+    if (static_cast<double>(people[k].frames.size()) < kMinShareOfLongest * longest) continue;
+    const double moves = people[k].travelPx / std::max(people[k].sizePx, 1.0);
+    if (moves > bestMoves) best = static_cast<int>(k), bestMoves = moves;
+  }
+  if (bestMoves < 0.5) {
+    best = 0;
+    warnings.push_back("nobody in the clip moves more than half a body height: using the person present longest");
+  }
+  std::ostringstream r;
+  r.precision(1);
+  r << std::fixed << "person " << best + 1 << " of " << people.size() << ": in "
+    << people[static_cast<std::size_t>(best)].frames.size() << " of " << frameCount << " frames, moves "
+    << people[static_cast<std::size_t>(best)].travelPx / std::max(people[static_cast<std::size_t>(best)].sizePx, 1.0)
+    << " body heights";
+  reason = r.str();
+  return best;
+}
+
+std::vector<const Eigen::MatrixX3d*> detectionsOf(const KeypointFrames& frames, const PersonTrack& t) {
+  std::vector<const Eigen::MatrixX3d*> out;
+  for (std::size_t i = 0; i < t.frames.size(); ++i) {
+    out.push_back(&frames.frames[static_cast<std::size_t>(t.frames[i])][static_cast<std::size_t>(t.detection[i])].points);
+  }
+  return out;
+}
+
+Eigen::MatrixXd personJoints(const KeypointLayout& layout, const KeypointFrames& frames, const PersonTrack& t,
+                             double minConfidence, JointChoice* choiceOut = nullptr) {
+  const auto person = detectionsOf(frames, t);
+  const JointChoice c = chooseAlternatives(layout, person, minConfidence);
+  if (choiceOut) *choiceOut = c;
+  Eigen::MatrixXd out = Eigen::MatrixXd::Constant(frames.frameCount(), 2 * kJointCount, kNaN);
+  for (std::size_t i = 0; i < t.frames.size(); ++i) out.row(t.frames[i]) = jointsOf(layout, c, *person[i], minConfidence);
+  return out;
+}
+
+const KeypointLayout& chooseLayout(const KeypointFrames& frames, const PersonTrack& walker,
+                                   const KeypointOptions& options, std::string& source,
+                                   std::vector<std::string>& warnings) {
+  if (options.layout) {
+    const KeypointLayout& l = keypointLayoutNamed(*options.layout);
+    if (static_cast<int>(l.points.size()) != frames.pointCount)
+      throw Error(ErrorKind::BadArgument, frames.file, "--layout",
+                  l.name + " has " + std::to_string(l.points.size()) + " points, the file " +
+                      std::to_string(frames.pointCount));
+    source = "given (--layout)";
+    return l;
+  }
+  const auto candidates = keypointLayoutsWithPoints(frames.pointCount);
+  if (candidates.empty()) {
+    std::string known;
+    for (const auto& l : keypointLayouts()) known += (known.empty() ? "" : ", ") + l.name + " " + std::to_string(l.points.size());
+    throw Error(ErrorKind::BadData, frames.file, "",
+                std::to_string(frames.pointCount) + " keypoints per person: no layout we know has that many (" +
+                    known + ")");
+  }
+  if (frames.layoutHint) {
+    for (const auto* l : candidates) {
+      if (l->name == *frames.layoutHint) {
+        source = "stated by the file";
+        return *l;
+      }
+    }
+  }
+  if (candidates.size() == 1) {
+    source = "the only layout with " + std::to_string(frames.pointCount) + " points";
+    return *candidates.front();
+  }
+  const KeypointLayout* best = nullptr;
+  double bestShare = -1.0;
+  std::string others;
+  std::vector<double> shares;
+  for (const auto* l : candidates) {
+    const double share = uprightShare(personJoints(*l, frames, walker, options.minConfidence));
+    shares.push_back(share);
+    if (share > bestShare) best = l, bestShare = share;
+  }
+  for (std::size_t k = 0; k < candidates.size(); ++k) {
+    if (candidates[k] != best) others += (others.empty() ? "" : ", ") + candidates[k]->name + " " + percent(shares[k]);
+  }
+  source = "guessed: upright in " + percent(bestShare) + " of checks as " + best->name + " (" + others +
+           "); --layout overrides";
+  if (bestShare < 0.6) warnings.push_back("no layout reads the person upright (best " + best->name + ", " +
+                                          percent(bestShare) + "): give --layout");
+  return *best;
+}
+
+}  // namespace
+
+// [SECTION] Public API -------------------------------------------------------------------------
+
+std::vector<PersonTrack> trackPeople(const KeypointFrames& frames) {
+  std::vector<PersonTrack> tracks;
+  std::vector<Active> active;
+  std::vector<std::vector<double>> heights;
+  std::vector<Vector2d> firstCentre;
+  for (int f = 0; f < frames.frameCount(); ++f) {
+    const auto& dets = frames.frames[static_cast<std::size_t>(f)];
+    std::vector<Shape> shapes;
+    for (const auto& d : dets) shapes.push_back(shapeOf(d.points));
+    // Candidate pairs, nearest first.
+    std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;
+    for (std::size_t a = 0; a < active.size(); ++a) {
+      if (f - active[a].lastFrame > kMaxTrackGapFrames) continue;
+      for (std::size_t d = 0; d < shapes.size(); ++d) {
+        if (shapes[d].points < kMinPointsPerDetection) continue;
+        const double dist = (shapes[d].centre - active[a].centre).norm();
+        if (dist <= kMaxStepOfSize * std::max(active[a].size, shapes[d].heightPx)) pairs.emplace_back(dist, a, d);
+      }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    std::vector<bool> usedActive(active.size(), false), usedDet(shapes.size(), false);
+    const auto extend = [&](std::size_t a, std::size_t d) {
+      PersonTrack& t = tracks[static_cast<std::size_t>(active[a].track)];
+      t.frames.push_back(f);
+      t.detection.push_back(static_cast<int>(d));
+      heights[static_cast<std::size_t>(active[a].track)].push_back(shapes[d].heightPx);
+      t.travelPx = std::max(t.travelPx, (shapes[d].centre - firstCentre[static_cast<std::size_t>(active[a].track)]).norm());
+      active[a].centre = shapes[d].centre;
+      active[a].size = std::max(shapes[d].heightPx, 1.0);
+      active[a].lastFrame = f;
+    };
+    for (const auto& [dist, a, d] : pairs) {
+      if (usedActive[a] || usedDet[d]) continue;
+      usedActive[a] = usedDet[d] = true;
+      extend(a, d);
+    }
+    for (std::size_t d = 0; d < shapes.size(); ++d) {
+      if (usedDet[d] || shapes[d].points < kMinPointsPerDetection) continue;
+      tracks.emplace_back();
+      heights.emplace_back();
+      firstCentre.push_back(shapes[d].centre);
+      active.push_back({static_cast<int>(tracks.size() - 1), shapes[d].centre, 1.0, f});
+      extend(active.size() - 1, d);
+    }
+  }
+  for (std::size_t k = 0; k < tracks.size(); ++k) tracks[k].sizePx = median(heights[k]);
+  std::stable_sort(tracks.begin(), tracks.end(),
+                   [](const PersonTrack& a, const PersonTrack& b) { return a.frames.size() > b.frames.size(); });
+  return tracks;
+}
+
+KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions& options) {
+  KeypointTrial t;
+  t.file = frames.file;
+  t.format = frames.format;
+  t.frameCount = frames.frameCount();
+  t.warnings = frames.warnings;
+  if (options.fps) t.rateHz = checkedFileRateHz(*options.fps, frames.file, "--fps"), t.rateAssumed = false;
+  for (const auto& f : frames.frames) t.maxPeople = std::max(t.maxPeople, static_cast<int>(f.size()));
+  t.people = trackPeople(frames);
+  if (t.people.empty())
+    throw Error(ErrorKind::BadData, frames.file, "", "no detection has " + std::to_string(kMinPointsPerDetection) +
+                                                         " or more keypoints: nobody to follow");
+  if (options.person) {
+    if (*options.person < 0 || *options.person >= static_cast<int>(t.people.size()))
+      throw Error(ErrorKind::BadArgument, frames.file, "--person",
+                  "person " + std::to_string(*options.person + 1) + " asked for, the clip has " +
+                      std::to_string(t.people.size()));
+    t.chosen = *options.person;
+    t.chosenReason = "person " + std::to_string(t.chosen + 1) + " of " + std::to_string(t.people.size()) + " (chosen)";
+  } else {
+    t.chosen = chooseWalker(t.people, t.chosenReason, t.warnings, t.frameCount);
+  }
+  const PersonTrack& walker = t.people[static_cast<std::size_t>(t.chosen)];
+  t.layout = &chooseLayout(frames, walker, options, t.layoutSource, t.warnings);
+  t.jointsPx = personJoints(*t.layout, frames, walker, options.minConfidence);
+  std::vector<std::string> unseen;
+  for (int j = 0; j < kJointCount; ++j) {
+    const auto col = t.jointsPx.col(2 * j);
+    const auto seen = static_cast<double>(col.array().isFinite().count());
+    t.seenShare[static_cast<std::size_t>(j)] = t.frameCount ? seen / t.frameCount : 0.0;
+    t.missing[static_cast<std::size_t>(j)] = seen == 0;
+    t.derived[static_cast<std::size_t>(j)] = !t.layout->derived[static_cast<std::size_t>(j)].empty();
+    if (seen == 0) unseen.emplace_back(jointName(static_cast<Joint>(j)));
+  }
+  if (!unseen.empty()) {
+    std::string list;
+    for (const auto& u : unseen) list += (list.empty() ? "" : ", ") + u;
+    t.warnings.push_back("never seen above confidence " + std::to_string(options.minConfidence).substr(0, 4) +
+                         ": " + list + " (to be estimated from a model)");
+  }
+  for (Joint j : {Joint::Pelvis, Joint::RKnee, Joint::LKnee, Joint::RAnkle, Joint::LAnkle}) {
+    if (t.missing[static_cast<std::size_t>(index(j))])
+      throw Error(ErrorKind::BadData, frames.file, "",
+                  std::string(jointName(j)) + " of " + t.chosenReason.substr(0, t.chosenReason.find(':')) +
+                      " is never seen above confidence " + std::to_string(options.minConfidence).substr(0, 4) +
+                      ": a walk needs pelvis, knees and ankles");
+  }
+  return t;
+}
+
+KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options) {
+  return cleanKeypoints(readKeypointFrames(path), options);
+}
+
+}  // namespace ew

@@ -1,0 +1,68 @@
+#pragma once
+// From what a pose estimator wrote (keypoint_frames.h) to one walker's 15 joints in the
+// image: follow each person across the frames, choose the one who walks, decide the
+// skeleton layout (stated, or guessed from which reading stands upright), drop points
+// below a confidence, and build the 15 joints (docs/KEYPOINTS.md).
+// Image coordinates throughout: pixels, u to the right, v down, as the video has them.
+
+#include <Eigen/Core>
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/common/skeleton.h"
+#include "core/keypoints/keypoint_frames.h"
+#include "core/keypoints/keypoint_layout.h"
+
+namespace ew {
+
+struct KeypointOptions {
+  std::optional<std::string> layout;  // a layout name (--layout): no guessing
+  std::optional<double> fps;          // the video's frame rate; JSON files do not store one
+  double minConfidence = 0.3;         // points below are missing (Pose2Sim's default)
+  std::optional<int> person;          // the track to use (index into KeypointTrial::people)
+};
+
+inline constexpr double kDefaultKeypointFps = 30.0;
+
+// One person followed across frames.
+struct PersonTrack {
+  std::vector<int> frames;            // frames it appears in, increasing
+  std::vector<int> detection;         // its detection index in each of those frames
+  double travelPx = 0.0;              // how far its centre moves from where it starts (max)
+  double sizePx = 0.0;                // median height of its keypoints' bounding box
+};
+
+struct KeypointTrial {
+  std::string file, format;
+  const KeypointLayout* layout = nullptr;
+  std::string layoutSource;           // how the layout was decided, for the user
+  double rateHz = kDefaultKeypointFps;
+  bool rateAssumed = true;            // no --fps given: kDefaultKeypointFps
+  int frameCount = 0;
+  int maxPeople = 0;                  // most people in one frame
+  std::vector<PersonTrack> people;    // every track, longest first
+  int chosen = 0;                     // index into people
+  std::string chosenReason;
+  Eigen::MatrixXd jointsPx;           // frames x 30: u, v per joint (SPEC §1 order), NaN = missing
+  std::array<bool, kJointCount> derived{};  // built from other points (head from the ears, …)
+  std::array<bool, kJointCount> missing{};  // never seen: for the model to estimate
+  std::array<double, kJointCount> seenShare{};  // share of the clip's frames the joint has
+  std::vector<std::string> warnings;
+};
+
+// Follows people across frames: a detection joins the track whose last centre is nearest,
+// within half that person's size and 15 frames; else it starts a track.
+std::vector<PersonTrack> trackPeople(const KeypointFrames& frames);
+
+// Cleans what a reader gave. Throws Error(BadArgument) for an unknown --layout, a layout
+// whose point count differs from the file's, or a --person out of range; Error(BadData)
+// naming the file when no layout has the file's point count, or the person chosen never
+// shows the minimum joints (pelvis or hips, knees, ankles) in any frame.
+KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions& options = {});
+
+KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options = {});
+
+}  // namespace ew
