@@ -7,6 +7,8 @@
 #include "app/cli/commands.h"
 #include "core/gait/dataset.h"
 #include "core/gait/trial_summary.h"
+#include "core/keypoints/keypoint_frames.h"
+#include "core/keypoints/keypoint_summary.h"
 
 namespace ew::cli {
 namespace {
@@ -17,6 +19,7 @@ struct InfoArgs {
   double rateHz = 0.0;
   std::string units;
   std::string mapping;  // joint mapping file (--mapping)
+  std::string layout;   // keypoint layout (--layout)
 };
 
 std::string joined(const std::vector<std::string>& items, const char* sep) {
@@ -94,8 +97,15 @@ int runInfo(const InfoArgs& args) {
   if (!args.mapping.empty()) options.mappingFile = args.mapping;
   std::vector<std::filesystem::path> paths(args.paths.begin(), args.paths.end());
   std::vector<std::string> warnings;
+  KeypointOptions keypoints;
+  if (args.rateHz > 0) keypoints.fps = args.rateHz;
+  if (!args.layout.empty()) keypoints.layout = args.layout;
   std::vector<TrialSummary> summaries;
-  for (const auto& f : collectTrialFiles(paths, warnings)) summaries.push_back(summarizeTrial(f.path, options));
+  for (const auto& f : collectTrialFiles(paths, warnings)) {
+    summaries.push_back(looksLikeKeypointInput(f.path) ? summarizeKeypoints(f.path, keypoints)
+                                                       : summarizeTrial(f.path, options));
+  }
+  for (const auto& p : collectKeypointInputs(paths)) summaries.push_back(summarizeKeypoints(p, keypoints));
   for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
   if (args.json) {
     nlohmann::json all = nlohmann::json::array();
@@ -116,10 +126,16 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
   auto args = std::make_shared<InfoArgs>();
   auto* cmd = app.add_subcommand("info", "One row per trial: format, frames, rate, units, "
                                          "markers/joints, estimated joints, cycles, stride "
-                                         "frequency, speed, warnings. Exit 1 if any trial is unusable.");
+                                         "frequency, speed, warnings. Motion capture and "
+                                         "pose-estimator keypoint files (OpenPose, AlphaPose, "
+                                         "MMPose JSON). Exit 1 if any trial is unusable.");
   cmd->add_option("paths", args->paths, "Files, folders (recursive) or manifest CSVs")->required();
   cmd->add_flag("--json", args->json, "One JSON object per trial instead of a table");
-  cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's (AMC has none)");
+  cmd->add_option("--rate", args->rateHz,
+                  "Frame rate in Hz, overriding the file's (AMC and keypoint JSON have none; default 30)");
+  cmd->add_option("--layout", args->layout,
+                  "Keypoint layout of pose-estimator files (BODY_25, BODY_25B, COCO-18, COCO-17, "
+                  "Halpe-26, MediaPipe-33); guessed when not given");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
   cmd->add_option("--mapping", args->mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md): which markers make each joint, "

@@ -1,0 +1,107 @@
+#include "core/keypoints/image_gait.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/common/errors.h"
+#include "core/gait/gait_cycles.h"
+
+namespace ew {
+namespace {
+
+[[noreturn]] void notWalking(const KeypointTrial& t, const std::string& why) {
+  throw Error(ErrorKind::BadData, t.file, "", "not walking: " + why);
+}
+
+// Mean pelvis position over the first (or last) tenth of the frames where it is seen.
+Eigen::Vector2d pelvisAtEnd(const KeypointTrial& t, bool last) {
+  std::vector<Eigen::Vector2d> seen;
+  for (Eigen::Index f = 0; f < t.jointsPx.rows(); ++f) {
+    const Eigen::Vector2d p = t.jointsPx.block<1, 2>(f, 2 * index(Joint::Pelvis)).transpose();
+    if (p.allFinite()) seen.push_back(p);
+  }
+  const std::size_t n = std::max<std::size_t>(1, seen.size() / 10);
+  Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+  for (std::size_t i = 0; i < n; ++i) sum += seen[last ? seen.size() - 1 - i : i];
+  return sum / static_cast<double>(n);
+}
+
+// Stride frequency from same-side strike intervals (strides per second).
+double strideHz(const std::vector<double>& right, const std::vector<double>& left) {
+  double total = 0.0;
+  int count = 0;
+  for (const auto* side : {&right, &left}) {
+    if (side->size() < 2) continue;
+    total += side->back() - side->front();
+    count += static_cast<int>(side->size()) - 1;
+  }
+  return count > 0 && total > 0 ? count / total : 0.0;
+}
+
+// Missing samples filled linearly between seen ones (held at the ends), so one missed
+// ankle does not hide a strike; the strike finder needs every sample.
+void fillGaps(Eigen::Ref<Eigen::VectorXd> x) {
+  Eigen::Index last = -1;
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i])) continue;
+    if (last < 0) x.head(i).setConstant(x[i]);
+    for (Eigen::Index k = last + 1; last >= 0 && k < i; ++k)
+      x[k] = x[last] + (x[i] - x[last]) * static_cast<double>(k - last) / static_cast<double>(i - last);
+    last = i;
+  }
+  if (last >= 0) x.tail(x.size() - last - 1).setConstant(x[last]);
+}
+
+std::string fixed1(double v) {
+  std::ostringstream s;
+  s.precision(1);
+  s << std::fixed << v;
+  return s.str();
+}
+
+}  // namespace
+
+ImageGait imageGaitCycles(const KeypointTrial& t) {
+  ImageGait g;
+  const double height = std::max(t.people.at(static_cast<std::size_t>(t.chosen)).sizePx, 1.0);
+  const Eigen::Vector2d travel = pelvisAtEnd(t, true) - pelvisAtEnd(t, false);
+  g.travelPx = travel.norm();
+  if (!(g.travelPx >= kMinImageTravelOfHeight * height))
+    notWalking(t, "the pelvis crosses " + fixed1(g.travelPx / height) +
+                      " of the walker's height in the image (walking across or towards the camera: > " +
+                      fixed1(kMinImageTravelOfHeight) + ")");
+  g.direction = travel / g.travelPx;
+  // The leads as the forward coordinate of canonical frames, so the 3D strike finder applies.
+  Eigen::MatrixXd frames = Eigen::MatrixXd::Zero(t.jointsPx.rows(), 3 * kJointCount);
+  for (Joint j : {Joint::Pelvis, Joint::RAnkle, Joint::LAnkle}) {
+    frames.col(3 * index(j) + 1) = t.jointsPx.middleCols<2>(2 * index(j)) * g.direction;
+    fillGaps(frames.col(3 * index(j) + 1));
+  }
+  for (Joint ankle : {Joint::RAnkle, Joint::LAnkle}) {
+    const Eigen::VectorXd lead = frames.col(3 * index(ankle) + 1) - frames.col(3 * index(Joint::Pelvis) + 1);
+    double lo = INFINITY, hi = -INFINITY;
+    for (double x : lead) {
+      if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
+    }
+    if (!(hi - lo >= kMinImageAnkleLeadOfHeight * height))
+      notWalking(t, std::string("the ") + (ankle == Joint::RAnkle ? "right" : "left") + " ankle swings " +
+                        fixed1(std::isfinite(hi - lo) ? (hi - lo) / height : 0.0) +
+                        " of the walker's height about the pelvis (walking: > " +
+                        fixed1(kMinImageAnkleLeadOfHeight) + ")");
+  }
+  g.rightStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Right);
+  g.leftStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Left);
+  g.strideHz = strideHz(g.rightStrikesS, g.leftStrikesS);
+  if (g.strideHz < kMinStrideHz || g.strideHz > kMaxStrideHz)
+    notWalking(t, "no regular foot strikes (" + std::to_string(g.rightStrikesS.size()) + " right, " +
+                      std::to_string(g.leftStrikesS.size()) + " left at " + fixed1(t.rateHz) +
+                      " fps; give the video's --fps if it is not that)");
+  g.cycles = static_cast<double>(t.frameCount) / t.rateHz * g.strideHz;
+  if (g.cycles < 1.0)
+    throw Error(ErrorKind::BadData, t.file, "",
+                "shorter than one gait cycle (" + fixed1(g.cycles) + " cycles): at least one full cycle is needed");
+  return g;
+}
+
+}  // namespace ew

@@ -1,0 +1,169 @@
+// Gait cycles in the image (core/keypoints/image_gait.h) and `info` on keypoint files: the
+// default model's mean walker, walking at 1.3 m/s, filmed in profile and from 45° (scaled
+// orthography, y down) and written as OpenPose BODY_25 JSON; its stride frequency is
+// known. A walker standing still, and the real Pose2Sim balancing trial, are "not walking".
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/common/errors.h"
+#include "core/engine/default_model.h"
+#include "core/engine/fourier.h"
+#include "core/keypoints/image_gait.h"
+#include "core/keypoints/keypoint_summary.h"
+#include "tests/common/error_matchers.h"
+#include "tests/common/test_support.h"
+
+namespace ew {
+namespace {
+
+namespace fs = std::filesystem;
+using Eigen::Vector3d;
+using nlohmann::json;
+
+constexpr double kFps = 30.0;
+constexpr double kPxPerMm = 0.4;
+
+// The model's mean walker, `seconds` long at 30 fps, moving forward at `speedMmS`, seen
+// from azimuth `alphaDeg` (0 = front, 90 = profile): pixel u right, v down.
+struct Clip {
+  fs::path folder;
+  double strideHz = 0.0;
+};
+
+Vector3d at(const Eigen::MatrixXd& frames, int f, Joint j) { return jointAt(frames, f, j); }
+
+json body25(const Eigen::MatrixXd& frames, int f, double alphaDeg) {
+  const double a = alphaDeg * M_PI / 180.0;
+  const auto pixel = [&](const Vector3d& p) {
+    const double u = p.x() * std::cos(a) + p.y() * std::sin(a);
+    return std::pair{960 + kPxPerMm * u, 1000 - kPxPerMm * p.z()};
+  };
+  const Vector3d up(0, 0, 1), fwd(0, 1, 0), right(1, 0, 0);
+  const Vector3d head = at(frames, f, Joint::Head);
+  // BODY_25's points from the 15 joints (face and feet placed around head and ankles).
+  const std::vector<Vector3d> points = {
+      head + 90 * fwd,                   at(frames, f, Joint::Sternum),  at(frames, f, Joint::RShoulder),
+      at(frames, f, Joint::RElbow),      at(frames, f, Joint::RWrist),   at(frames, f, Joint::LShoulder),
+      at(frames, f, Joint::LElbow),      at(frames, f, Joint::LWrist),   at(frames, f, Joint::Pelvis),
+      at(frames, f, Joint::RHip),        at(frames, f, Joint::RKnee),    at(frames, f, Joint::RAnkle),
+      at(frames, f, Joint::LHip),        at(frames, f, Joint::LKnee),    at(frames, f, Joint::LAnkle),
+      head + 70 * fwd + 30 * right + 30 * up, head + 70 * fwd - 30 * right + 30 * up,
+      head + 75 * right,                 head - 75 * right,
+      at(frames, f, Joint::LAnkle) + 150 * fwd - 60 * up, at(frames, f, Joint::LAnkle) + 140 * fwd - 40 * right - 60 * up,
+      at(frames, f, Joint::LAnkle) - 60 * fwd - 70 * up,  at(frames, f, Joint::RAnkle) + 150 * fwd - 60 * up,
+      at(frames, f, Joint::RAnkle) + 140 * fwd + 40 * right - 60 * up, at(frames, f, Joint::RAnkle) - 60 * fwd - 70 * up};
+  json flat = json::array();
+  for (const auto& p : points) {
+    const auto [u, v] = pixel(p);
+    flat.push_back(u);
+    flat.push_back(v);
+    flat.push_back(0.8);
+  }
+  return flat;
+}
+
+Clip meanWalkerClip(const std::string& stem, double alphaDeg, double speedMmS, double seconds) {
+  const EigenwalkerModel& model = defaultRealModel();
+  Clip clip;
+  const double omega = model.omegasRadS.mean();
+  clip.strideHz = omega / (2 * M_PI);
+  const int n = static_cast<int>(seconds * kFps);
+  Eigen::MatrixXd frames = synthesizeFrames(model.mean, omega, 0.0, frameTimes(n, kFps));
+  for (int f = 0; f < n; ++f) {
+    for (int j = 0; j < kJointCount; ++j) frames(f, 3 * j + 1) += speedMmS * f / kFps - 0.5 * speedMmS * seconds;
+  }
+  clip.folder = test::makeTempDir(stem);
+  for (int f = 0; f < n; ++f) {
+    char name[64];
+    std::snprintf(name, sizeof name, "walk_%012d_keypoints.json", f);
+    std::ofstream(clip.folder / name)
+        << json{{"version", 1.3}, {"people", {{{"pose_keypoints_2d", body25(frames, f, alphaDeg)}}}}}.dump();
+  }
+  return clip;
+}
+
+KeypointOptions at30Fps() {
+  KeypointOptions o;
+  o.fps = kFps;
+  o.layout = "BODY_25";
+  return o;
+}
+
+// Foot strikes from the image give the walker's stride frequency: within 3 % (one frame
+// in a 1 s stride is 3 %), in profile and at 45°.
+TEST(ImageGait, StrideFrequencyOfAWalkerCrossingTheImage) {
+  for (const double alpha : {90.0, 45.0}) {
+    SCOPED_TRACE(alpha);
+    const Clip clip = meanWalkerClip("gait_" + std::to_string(static_cast<int>(alpha)), alpha, 1300, 4.0);
+    const KeypointTrial t = readKeypointTrial(clip.folder, at30Fps());
+    const ImageGait g = imageGaitCycles(t);
+    EXPECT_NEAR(g.strideHz, clip.strideHz, 0.03 * clip.strideHz);
+    EXPECT_NEAR(g.cycles, 4.0 * clip.strideHz, 0.03 * 4.0 * clip.strideHz);
+    EXPECT_GT(g.direction.x(), 0.99);  // walking to the image's right
+    EXPECT_GE(g.rightStrikesS.size(), 3u);
+    EXPECT_GE(g.leftStrikesS.size(), 3u);
+  }
+}
+
+TEST(ImageGait, WalkingOnTheSpotIsNotWalking) {
+  const Clip clip = meanWalkerClip("gait_spot", 90.0, 0.0, 3.0);
+  const KeypointTrial t = readKeypointTrial(clip.folder, at30Fps());
+  EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(t); }, ErrorKind::BadData,
+                                {"not walking: the pelvis crosses 0.0 of the walker's height"}));
+}
+
+TEST(ImageGait, InfoSummarisesKeypointFolders) {
+  const Clip clip = meanWalkerClip("gait_info", 90.0, 1300, 4.0);
+  KeypointOptions o;
+  o.fps = kFps;
+  const TrialSummary s = summarizeKeypoints(clip.folder, o);
+  EXPECT_TRUE(s.ok()) << s.error;
+  EXPECT_EQ(s.format, "OpenPose JSON");
+  EXPECT_EQ(s.units, "px");
+  EXPECT_EQ(s.frames, 120);
+  EXPECT_EQ(s.pointsFound, 25);
+  EXPECT_EQ(s.source, "BODY_25");
+  EXPECT_NEAR(s.strideHz, clip.strideHz, 0.03 * clip.strideHz);
+  EXPECT_EQ(s.estimatedJoints, (std::vector<std::string>{"head", "sternum"}));
+  // A folder of folders: each OpenPose folder is one input, in name order.
+  const fs::path tree = test::makeTempDir("gait_tree");
+  fs::create_directories(tree / "trial" / "cam2");
+  fs::copy(clip.folder, tree / "trial" / "cam1");
+  std::ofstream(tree / "trial" / "notes.txt") << "not keypoints";
+  EXPECT_EQ(collectKeypointInputs({tree}), (std::vector<fs::path>{tree / "trial" / "cam1"}));
+}
+
+// The CLI: `info --json --rate 30 FOLDER` on the walking clip, exit 0.
+TEST(ImageGait, CliInfoReadsAnOpenPoseFolder) {
+  const Clip clip = meanWalkerClip("gait_cli", 90.0, 1300, 4.0);
+  const auto run = test::runProgram(EW_CLI_PATH, {"info", "--json", "--rate", "30", clip.folder.string()},
+                                    test::makeTempDir("gait_cli_run"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const auto begin = run.output.find('[');
+  ASSERT_NE(begin, std::string::npos) << run.output;
+  const json all = json::parse(run.output.substr(begin, run.output.rfind(']') - begin + 1));
+  ASSERT_EQ(all.size(), 1u);
+  EXPECT_EQ(all[0]["format"], "OpenPose JSON");
+  EXPECT_EQ(all[0]["source"], "BODY_25");
+  EXPECT_NEAR(all[0]["stride_hz"].get<double>(), clip.strideHz, 0.03 * clip.strideHz);
+}
+
+TEST(ImageGait, Pose2SimBalancingIsNotWalking) {
+  EW_REQUIRE_SHARED_DATA();
+  const auto inputs = collectKeypointInputs({test::sharedDataDir() / "pose2sim-balancing" / "pose"});
+  ASSERT_EQ(inputs.size(), 4u);
+  for (const auto& p : inputs) {
+    const TrialSummary s = summarizeKeypoints(p);
+    EXPECT_EQ(s.errorStage, "walking") << s.error;
+    EXPECT_NE(s.error.find("not walking: the pelvis crosses"), std::string::npos) << s.error;
+    EXPECT_EQ(s.source, "BODY_25B");
+  }
+}
+
+}  // namespace
+}  // namespace ew
