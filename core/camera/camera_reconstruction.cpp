@@ -1,0 +1,386 @@
+#include "core/camera/camera_reconstruction.h"
+
+#include <Eigen/Cholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/common/errors.h"
+#include "core/engine/fourier.h"
+#include "core/engine/joint_completion.h"
+#include "core/engine/projection.h"
+#include "core/gait/missing_joints.h"
+
+namespace ew {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+// Elevations each view-angle start is tried at: the orthographic search cannot see the
+// camera's tilt, and a tilted view of a walker coming closer misleads a level start.
+constexpr double kStartElevationsDeg[] = {5.0, 25.0};
+// An orthographic image cannot tell α from −α (depth reversed), 180° − α (mirror) or
+// α + 180° (both); perspective and the direction of walking can, so each is a start.
+constexpr double kRelatedOffsetsDeg[] = {0.0, 180.0};
+// Every start runs this many iterations; the best few then run to convergence.
+constexpr int kScreeningIterations = 25;
+constexpr int kRefinedStarts = 3;
+// Elevations outside this range are no camera filming a walk: a steep penalty.
+constexpr double kMinElevationDeg = -30.0, kMaxElevationDeg = 80.0;
+
+[[noreturn]] void badData(const std::string& file, const std::string& what) {
+  throw Error(ErrorKind::BadData, file, "", "camera reconstruction: " + what);
+}
+
+// [SECTION] Parameters ----------------------------------------------------------------------
+
+// θ = [k (N), α°, ε°, log scale (orthography: s px/mm; pinhole: D mm), c_x, c_y, v mm/s,
+//      ω, φ, (pinhole:) h mm, y0 mm].
+struct Layout {
+  int n = 0;
+  bool pinhole = false;
+  int alpha() const { return n; }
+  int elevation() const { return n + 1; }
+  int logScale() const { return n + 2; }
+  int cx() const { return n + 3; }
+  int cy() const { return n + 4; }
+  int speed() const { return n + 5; }
+  int omega() const { return n + 6; }
+  int phase() const { return n + 7; }
+  int height() const { return n + 8; }
+  int offset() const { return n + 9; }
+  int size() const { return n + (pinhole ? 10 : 8); }
+};
+
+struct Problem {
+  const EigenwalkerModel& model;
+  Layout layout;
+  double focalPx = 0.0;
+  MatrixXd observed;        // T × 30
+  VectorXd timesS;
+  double mmPerPx = 1.0;     // fixed weighting of the data term (from the start)
+  double dataWeight = 1.0;  // 1 / sqrt(seen samples / 2): a mean over joint-frames
+  VectorXd priorWeight;     // sqrt(σ² / λ_n) for MAP, empty for LSQ
+  std::vector<int> seen;    // indices into observed (column-major) of seen samples
+};
+
+WalkCamera cameraOf(const Problem& p, const VectorXd& t) {
+  const Layout& l = p.layout;
+  WalkCamera c;
+  c.model = l.pinhole ? CameraModel::Pinhole : CameraModel::ScaledOrthographic;
+  c.alphaDeg = t[l.alpha()];
+  c.elevationDeg = t[l.elevation()];
+  if (l.pinhole) {
+    c.focalPx = p.focalPx;
+    c.distanceMm = std::exp(t[l.logScale()]);
+    c.lookAtHeightMm = t[l.height()];
+    c.startOffsetMm = t[l.offset()];
+  } else {
+    c.pxPerMm = std::exp(t[l.logScale()]);
+  }
+  c.cxPx = t[l.cx()];
+  c.cyPx = t[l.cy()];
+  c.speedMmS = t[l.speed()];
+  return c;
+}
+
+VectorXd walkerOf(const Problem& p, const VectorXd& t) {
+  return p.model.mean + p.model.eigenwalkers * t.head(p.layout.n);
+}
+
+MatrixXd imageOf(const Problem& p, const VectorXd& t) {
+  const MatrixXd frames = synthesizeFrames(walkerOf(p, t), t[p.layout.omega()], t[p.layout.phase()], p.timesS);
+  return projectWalk(frames, p.timesS, cameraOf(p, t));
+}
+
+// Data residuals in mm (pixels × mmPerPx, weighted to a mean), then the prior's.
+VectorXd residuals(const Problem& p, const VectorXd& t) {
+  const MatrixXd image = imageOf(p, t);
+  VectorXd r(static_cast<Eigen::Index>(p.seen.size()) + p.priorWeight.size() + 1);
+  for (std::size_t i = 0; i < p.seen.size(); ++i) {
+    const double d = image.data()[p.seen[i]] - p.observed.data()[p.seen[i]];
+    // A point behind a pinhole camera: a large, smooth penalty rather than NaN.
+    r[static_cast<Eigen::Index>(i)] = std::isfinite(d) ? p.dataWeight * p.mmPerPx * d : 1e6;
+  }
+  if (p.priorWeight.size() > 0)
+    r.segment(static_cast<Eigen::Index>(p.seen.size()), p.priorWeight.size()) =
+        p.priorWeight.cwiseProduct(t.head(p.layout.n));
+  const double e = t[p.layout.elevation()];
+  r[r.size() - 1] = 1e3 * (std::max(0.0, e - kMaxElevationDeg) + std::max(0.0, kMinElevationDeg - e));
+  return r;
+}
+
+// [SECTION] Levenberg-Marquardt ---------------------------------------------------------------
+
+VectorXd stepSizes(const Problem& p, const VectorXd& t) {
+  VectorXd h = (t.cwiseAbs().array() * 1e-6 + 1e-6).matrix();
+  h.head(p.layout.n) = (p.model.eigenvalues.cwiseMax(1.0).cwiseSqrt() * 1e-5);
+  h[p.layout.alpha()] = h[p.layout.elevation()] = 1e-5;
+  h[p.layout.logScale()] = 1e-7;
+  h[p.layout.phase()] = 1e-6;
+  h[p.layout.omega()] = 1e-7;
+  return h;
+}
+
+MatrixXd jacobian(const Problem& p, const VectorXd& t, const VectorXd& r0) {
+  const VectorXd h = stepSizes(p, t);
+  MatrixXd jac(r0.size(), t.size());
+  for (Eigen::Index i = 0; i < t.size(); ++i) {
+    VectorXd tp = t, tm = t;
+    tp[i] += h[i];
+    tm[i] -= h[i];
+    jac.col(i) = (residuals(p, tp) - residuals(p, tm)) / (2.0 * h[i]);
+  }
+  return jac;
+}
+
+struct LmResult {
+  VectorXd theta;
+  double cost = 0.0;
+  int iterations = 0;
+};
+
+LmResult levenbergMarquardt(const Problem& p, VectorXd t, int maxIterations) {
+  VectorXd r = residuals(p, t);
+  double cost = r.squaredNorm(), mu = 1e-3;
+  int it = 0;
+  for (; it < maxIterations; ++it) {
+    const MatrixXd jac = jacobian(p, t, r);
+    const MatrixXd jtj = jac.transpose() * jac;
+    const VectorXd g = jac.transpose() * r;
+    bool improved = false;
+    for (int tries = 0; tries < 12 && !improved; ++tries) {
+      MatrixXd a = jtj;
+      a.diagonal() += mu * jtj.diagonal().cwiseMax(1e-12);
+      const VectorXd step = a.ldlt().solve(-g);
+      const VectorXd tNew = t + step;
+      const VectorXd rNew = residuals(p, tNew);
+      const double costNew = rNew.squaredNorm();
+      if (std::isfinite(costNew) && costNew < cost) {
+        const double gain = (cost - costNew) / std::max(cost, 1e-300);
+        t = tNew, r = rNew, cost = costNew, mu = std::max(mu / 3.0, 1e-12);
+        improved = true;
+        if (gain < 1e-13 || step.norm() < 1e-12 * (1.0 + t.norm())) return {t, cost, it + 1};
+      } else {
+        mu *= 4.0;
+      }
+    }
+    if (!improved) break;
+  }
+  return {t, cost, it};
+}
+
+// [SECTION] Start: the orthographic view-angle search --------------------------------------------
+
+// Missing samples filled linearly per column (held at the ends) for the start's Fourier fit.
+MatrixXd filled(MatrixXd m) {
+  for (Eigen::Index c = 0; c < m.cols(); ++c) {
+    auto x = m.col(c);
+    Eigen::Index last = -1;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+      if (!std::isfinite(x[i])) continue;
+      if (last < 0) x.head(i).setConstant(x[i]);
+      for (Eigen::Index k = last + 1; last >= 0 && k < i; ++k)
+        x[k] = x[last] + (x[i] - x[last]) * static_cast<double>(k - last) / static_cast<double>(i - last);
+      last = i;
+    }
+    if (last >= 0) x.tail(x.size() - last - 1).setConstant(x[last]);
+  }
+  return m;
+}
+
+// Least-squares line a + b t through the finite samples of x.
+Eigen::Vector2d lineFit(const VectorXd& x, const VectorXd& t) {
+  Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i])) continue;
+    const Eigen::Vector2d row(1.0, t[i]);
+    a += row * row.transpose();
+    b += row * x[i];
+  }
+  return a.ldlt().solve(b);
+}
+
+// Head above the mean ankle, cycle mean, of a 3D walker (mm) or, in the image, in pixels.
+double modelHeadHeightMm(const VectorXd& w) {
+  const MatrixXd f = synthesizeFrames(w, 2 * std::numbers::pi, 0.0, frameTimes(50, 50.0));
+  const VectorXd ankles = 0.5 * (f.col(3 * index(Joint::LAnkle) + 2) + f.col(3 * index(Joint::RAnkle) + 2));
+  return (f.col(3 * index(Joint::Head) + 2) - ankles).mean();
+}
+
+// Head-to-ankle height of the walker in each frame of the image (NaN where unseen).
+VectorXd imageHeightsPx(const MatrixXd& px) {
+  VectorXd h(px.rows());
+  for (Eigen::Index f = 0; f < px.rows(); ++f) {
+    const double ankles = 0.5 * (px(f, 2 * index(Joint::LAnkle) + 1) + px(f, 2 * index(Joint::RAnkle) + 1));
+    const double head = px(f, 2 * index(Joint::Head) + 1), sternum = px(f, 2 * index(Joint::Sternum) + 1);
+    // No head in the image: the sternum, raised by the model's usual head-to-sternum ratio.
+    const double top = std::isfinite(head) ? head : sternum - 0.17 * (ankles - sternum);
+    h[f] = ankles - top;
+  }
+  return h;
+}
+
+struct OrthoStart {
+  FourierFit fit;
+  ViewSearch search;
+  double pxPerMm = 0.0;              // at mid-clip
+  Eigen::Vector2d pelvisU, pelvisV;  // a + b t of the pelvis in the image
+};
+
+OrthoStart orthographicStart(const EigenwalkerModel& model, const MatrixXd& px, const VectorXd& times,
+                             const JointMask& unseen, const CameraFitOptions& o) {
+  OrthoStart s;
+  // The walker's image size along the clip (a line through the per-frame heights: a walker
+  // coming closer grows), and its progression (a line through the pelvis) are taken out,
+  // leaving a near-orthographic view of the walk in model millimetres.
+  const double modelHeight = modelHeadHeightMm(model.mean);
+  const Eigen::Vector2d height = lineFit(imageHeightsPx(px), times);
+  const double midT = 0.5 * (times[0] + times[times.size() - 1]);
+  s.pxPerMm = (height[0] + height[1] * midT) / modelHeight;
+  if (!(s.pxPerMm > 0)) badData(o.file, "the walker's head-to-ankle height in the image cannot be measured");
+  s.pelvisU = lineFit(px.col(2 * index(Joint::Pelvis)), times);
+  s.pelvisV = lineFit(px.col(2 * index(Joint::Pelvis) + 1), times);
+  MatrixXd mm(px.rows(), px.cols());
+  for (Eigen::Index f = 0; f < px.rows(); ++f) {
+    const double scale = std::max(height[0] + height[1] * times[f], 1e-6) / modelHeight;
+    for (int j = 0; j < kJointCount; ++j) {
+      mm(f, 2 * j) = (px(f, 2 * j) - s.pelvisU[0] - s.pelvisU[1] * times[f]) / scale;
+      mm(f, 2 * j + 1) = -(px(f, 2 * j + 1) - s.pelvisV[0] - s.pelvisV[1] * times[f]) / scale;
+    }
+  }
+  MatrixXd seen = filled(mm);
+  for (int j = 0; j < kJointCount; ++j) {
+    if (unseen[static_cast<std::size_t>(j)]) seen.middleCols<2>(2 * j).setConstant(kNaN);
+  }
+  FourierFitOptions f;
+  // The image's foot strikes fix the start's frequency: the detrended image keeps slow
+  // drifts (perspective, sway) that a scan could take for the gait.
+  if (o.strideHzHint) f.omegaFixedRadS = 2 * std::numbers::pi * *o.strideHzHint;
+  f.file = o.file;
+  const double rate = 1.0 / (times[1] - times[0]);
+  s.fit = fitFourierMeasured(seen, rate, unseen, f);
+  std::vector<int> missing;
+  for (int j = 0; j < kJointCount; ++j)
+    if (unseen[static_cast<std::size_t>(j)]) missing.push_back(j);
+  s.search = searchViewAngle(precomputeModelGram(model, missing), s.fit.w, o.estimator);
+  return s;
+}
+
+// θ from a view-angle minimum: the walker at α, elevation 0, its image scale, and the
+// pelvis line of the image (c_x, c_y and v).
+VectorXd startTheta(const Problem& p, const OrthoStart& s, const Reconstruction& rec, double elevationDeg) {
+  const Layout& l = p.layout;
+  VectorXd t = VectorXd::Zero(l.size());
+  t.head(l.n) = rec.k;
+  t[l.alpha()] = rec.alphaDeg;
+  t[l.elevation()] = elevationDeg;
+  t[l.omega()] = s.fit.omegaRadS;
+  t[l.phase()] = s.fit.phaseRad;
+  const double sinA = std::sin(degToRad(rec.alphaDeg));
+  // The pelvis moves across the image at s·v·sin α px/s; a walker seen from ahead or
+  // behind barely moves across it, so its speed starts at a usual 1.3 m/s.
+  const double speed = std::abs(sinA) > 0.3 ? s.pelvisU[1] / (s.pxPerMm * sinA) : 1300.0;
+  t[l.speed()] = speed;
+  const VectorXd w = walkerOf(p, t);
+  const double pelvisZ = w[3 * index(Joint::Pelvis) + 2];
+  const double midT = 0.5 * (p.timesS[0] + p.timesS[p.timesS.size() - 1]);
+  if (l.pinhole) {
+    t[l.logScale()] = std::log(p.focalPx / s.pxPerMm);
+    t[l.height()] = pelvisZ;
+    t[l.offset()] = -speed * midT;  // the walker passes the look-at point mid-clip
+    t[l.cx()] = s.pelvisU[0] + s.pelvisU[1] * midT;
+    t[l.cy()] = s.pelvisV[0] + s.pelvisV[1] * midT;
+  } else {
+    t[l.logScale()] = std::log(s.pxPerMm);
+    t[l.cx()] = s.pelvisU[0];
+    t[l.cy()] = s.pelvisV[0] + s.pxPerMm * pelvisZ;
+  }
+  return t;
+}
+
+void fillOutputs(const Problem& p, const VectorXd& t, CameraFit& fit) {
+  fit.camera = cameraOf(p, t);
+  fit.k = t.head(p.layout.n);
+  fit.w = walkerOf(p, t);
+  fit.omegaRadS = t[p.layout.omega()];
+  fit.phaseRad = t[p.layout.phase()];
+  const MatrixXd image = imageOf(p, t);
+  double sq = 0.0;
+  for (int i : p.seen) sq += std::pow(image.data()[i] - p.observed.data()[i], 2);
+  fit.reprojectionRmsPx = std::sqrt(sq / static_cast<double>(p.seen.size()));
+  fit.headHeightMm = modelHeadHeightMm(fit.w);
+  fit.strideHz = fit.omegaRadS / (2 * std::numbers::pi);
+  fit.speedMps = fit.camera.speedMmS / 1000.0;
+  fit.strideLengthM = fit.strideHz > 0 ? fit.speedMps / fit.strideHz : 0.0;
+  fit.cadenceStepsPerMin = 120.0 * fit.strideHz;
+}
+
+}  // namespace
+
+CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd& jointsPx, double rateHz,
+                                   const CameraFitOptions& o) {
+  if (jointsPx.cols() != 2 * kJointCount) badData(o.file, "need 30 columns (u, v of 15 joints)");
+  if (jointsPx.rows() < 8) badData(o.file, "fewer than 8 frames");
+  if (o.focalPx && !(std::isfinite(*o.focalPx) && *o.focalPx > 0))
+    throw Error(ErrorKind::BadArgument, o.file, "--focal-px", "the focal length must be positive and finite");
+  const VectorXd times = frameTimes(static_cast<int>(jointsPx.rows()), rateHz);
+  JointMask unseen{};
+  CameraFit fit;
+  for (int j = 0; j < kJointCount; ++j) {
+    unseen[static_cast<std::size_t>(j)] = !jointsPx.col(2 * j).array().isFinite().any();
+    if (unseen[static_cast<std::size_t>(j)]) fit.unseenJoints.push_back(j);
+  }
+  const OrthoStart start = orthographicStart(model, jointsPx, times, unseen, o);
+  Problem p{model, {static_cast<int>(model.eigenvalues.size()), o.focalPx.has_value()}, o.focalPx.value_or(0.0),
+            jointsPx, times, 1.0 / start.pxPerMm, 1.0, {}, {}};
+  for (Eigen::Index i = 0; i < jointsPx.size(); ++i)
+    if (std::isfinite(jointsPx.data()[i])) p.seen.push_back(static_cast<int>(i));
+  p.dataWeight = 1.0 / std::sqrt(0.5 * static_cast<double>(p.seen.size()) / kJointCount);
+  if (o.estimator.estimator == Estimator::Map)
+    p.priorWeight = (o.estimator.sigma2Mm2 / model.eigenvalues.cwiseMax(1e-12).array()).sqrt().matrix();
+  std::vector<std::pair<VectorXd, CameraStart>> results;
+  const int minima = std::min<int>(o.startCount, static_cast<int>(start.search.minima.size()));
+  const ModelGram gram = precomputeModelGram(model, fit.unseenJoints);
+  std::vector<std::pair<LmResult, double>> screened;  // (short run, start α)
+  for (int m = 0; m < minima; ++m) {
+    const double found = start.search.minima[static_cast<std::size_t>(m)].alphaDeg;
+    for (double alpha : {found, -found}) {
+      for (double offset : kRelatedOffsetsDeg) {
+        const Reconstruction rec = reconstructKnownView(gram, start.fit.w, wrapDeg(alpha + offset), o.estimator);
+        for (double elevation : kStartElevationsDeg)
+          screened.emplace_back(levenbergMarquardt(p, startTheta(p, start, rec, elevation), kScreeningIterations),
+                                rec.alphaDeg);
+      }
+    }
+  }
+  std::stable_sort(screened.begin(), screened.end(),
+                   [](const auto& a, const auto& b) { return a.first.cost < b.first.cost; });
+  for (std::size_t i = 0; i < screened.size(); ++i) {
+    const bool refine = static_cast<int>(i) < kRefinedStarts;
+    const LmResult lm = refine ? levenbergMarquardt(p, screened[i].first.theta, o.maxIterations) : screened[i].first;
+    CameraFit trial;
+    fillOutputs(p, lm.theta, trial);
+    results.emplace_back(lm.theta, CameraStart{screened[i].second, wrapDeg(trial.camera.alphaDeg),
+                                               trial.camera.elevationDeg, lm.cost, trial.reprojectionRmsPx,
+                                               trial.camera.speedMmS, lm.iterations + (refine ? kScreeningIterations : 0)});
+  }
+  // A walker walking backwards is the reflected reading of the image: only forward ones.
+  std::stable_sort(results.begin(), results.end(), [](const auto& a, const auto& b) {
+    const bool fa = a.second.speedMmS > 0, fb = b.second.speedMmS > 0;
+    return fa != fb ? fa : a.second.objective < b.second.objective;
+  });
+  if (results.empty() || !(results.front().second.speedMmS > 0))
+    badData(o.file, "no start converged to a walker moving forward");
+  fillOutputs(p, results.front().first, fit);
+  fit.camera.alphaDeg = wrapDeg(fit.camera.alphaDeg);
+  fit.objective = results.front().second.objective;
+  for (const auto& r : results) fit.starts.push_back(r.second);
+  return fit;
+}
+
+}  // namespace ew

@@ -1,0 +1,53 @@
+#pragma once
+// 3D walker and camera from a walker's joints in a real image (pixels, y down), the camera
+// unknown (docs/CAMERA.md): azimuth α over the whole circle, elevation, scale (or distance
+// for a known focal length), image translation and the walker's progression, with the
+// eigenwalker coefficients, stride frequency and phase. Levenberg-Marquardt on the
+// reprojection error of every frame (plus the MAP prior), started from the orthographic
+// view-angle search of core/engine/reconstruction.h at each of its best minima.
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/camera/walk_camera.h"
+#include "core/engine/model.h"
+#include "core/engine/reconstruction.h"
+
+namespace ew {
+
+struct CameraFitOptions {
+  EstimatorOptions estimator{Estimator::Map, 1000.0};
+  std::optional<double> focalPx;        // known: pinhole; unknown: scaled orthography
+  std::optional<double> strideHzHint;   // from the image's foot strikes (image_gait.h)
+  int startCount = 4;                   // view-angle minima tried as starts
+  int maxIterations = 300;
+  std::string file;                     // named in errors
+};
+
+struct CameraStart {
+  double startAlphaDeg = 0.0, alphaDeg = 0.0, elevationDeg = 0.0;
+  double objective = 0.0, reprojectionRmsPx = 0.0, speedMmS = 0.0;
+  int iterations = 0;
+};
+
+struct CameraFit {
+  WalkCamera camera;
+  Eigen::VectorXd k, w;           // coefficients and the 3D walker (225, canonical frame)
+  double omegaRadS = 0.0, phaseRad = 0.0;
+  double objective = 0.0;         // mean squared reprojection error in mm (+ prior)
+  double reprojectionRmsPx = 0.0; // over every seen joint sample
+  double headHeightMm = 0.0;      // head centre above the ankles' lowest level, cycle mean
+  double strideHz = 0.0, speedMps = 0.0, strideLengthM = 0.0, cadenceStepsPerMin = 0.0;
+  std::vector<CameraStart> starts;  // every start, best first
+  std::vector<int> unseenJoints;    // joints with no image data (estimated by the model)
+};
+
+// jointsPx: T × 30 (u, v per joint, SPEC §1 order), NaN = not seen. Throws Error(BadData)
+// naming options.file when fewer than 8 frames or no start converges to a walker moving
+// forward, Error(BadArgument) for a focal length that is not positive and finite.
+CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const Eigen::MatrixXd& jointsPx,
+                                   double rateHz, const CameraFitOptions& options = {});
+
+}  // namespace ew

@@ -1,0 +1,142 @@
+// The camera of core/camera: a walker synthesised by the model, projected through a known
+// camera without noise, is recovered exactly with everything unknown but the focal length
+// (pinhole) or with the focal length unknown too (scaled orthography).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "core/camera/camera_reconstruction.h"
+#include "core/camera/walk_camera.h"
+#include "core/common/skeleton.h"
+#include "core/engine/default_model.h"
+#include "core/engine/fourier.h"
+
+namespace ew {
+namespace {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+struct Scene {
+  VectorXd w;
+  double omega = 2 * std::numbers::pi * 0.95, phase = 0.3;
+  VectorXd times;
+  MatrixXd frames, px;
+};
+
+Scene filmed(const WalkCamera& camera, int frames = 150, double fps = 30.0) {
+  const EigenwalkerModel& m = defaultRealModel();
+  Scene s;
+  VectorXd k = VectorXd::Zero(m.eigenvalues.size());
+  for (Eigen::Index i = 0; i < k.size(); ++i) k[i] = (i % 2 ? -0.6 : 0.8) * std::sqrt(m.eigenvalues[i]) / (1.0 + 0.3 * static_cast<double>(i));
+  s.w = m.mean + m.eigenwalkers * k;
+  s.times = frameTimes(frames, fps);
+  s.frames = synthesizeFrames(s.w, s.omega, s.phase, s.times);
+  s.px = projectWalk(s.frames, s.times, camera);
+  return s;
+}
+
+CameraFitOptions lsq() {
+  CameraFitOptions o;
+  o.estimator = {Estimator::Lsq, 0.0};
+  o.strideHzHint = 0.95;
+  return o;
+}
+
+void expectSameWalk(const CameraFit& fit, const Scene& s) {
+  const MatrixXd got = synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, s.times);
+  EXPECT_LT((got - s.frames).cwiseAbs().maxCoeff(), 1e-3) << "mm";
+  EXPECT_LT(fit.reprojectionRmsPx, 1e-4);
+}
+
+TEST(WalkCamera, ProjectsThePinholeEquations) {
+  MatrixXd frame = MatrixXd::Zero(1, 45);
+  frame(0, 3 * index(Joint::Head) + 2) = 1700;  // the head 1.7 m up, the rest at the origin
+  WalkCamera c;
+  c.model = CameraModel::Pinhole;
+  c.focalPx = 1000;
+  c.distanceMm = 5000;
+  c.cxPx = 960;
+  c.cyPx = 540;
+  c.lookAtHeightMm = 1000;
+  c.elevationDeg = 0;
+  const MatrixXd px = projectWalk(frame, VectorXd::Zero(1), c);
+  // Head 700 mm above the look-at point at 5 m: 140 px above the image centre.
+  EXPECT_NEAR(px(0, 2 * index(Joint::Head) + 1), 540 - 140, 1e-9);
+  EXPECT_NEAR(px(0, 2 * index(Joint::Pelvis) + 1), 540 + 200, 1e-9);
+  // Looking down 30°: the look-at point stays at the centre; the head rises less.
+  c.elevationDeg = 30;
+  const MatrixXd tilted = projectWalk(frame, VectorXd::Zero(1), c);
+  const double zc = 5000 - 700 * std::sin(std::numbers::pi / 6), yc = -700 * std::cos(std::numbers::pi / 6);
+  EXPECT_NEAR(tilted(0, 2 * index(Joint::Head) + 1), 540 + 1000 * yc / zc, 1e-9);
+}
+
+TEST(CameraReconstruction, RecoversAPinholeCameraExactly) {
+  WalkCamera c;
+  c.model = CameraModel::Pinhole;
+  c.alphaDeg = 40;
+  c.elevationDeg = 12;
+  c.focalPx = 1500;
+  c.distanceMm = 6000;
+  c.cxPx = 960;
+  c.cyPx = 540;
+  c.lookAtHeightMm = 900;
+  c.speedMmS = 1300;
+  c.startOffsetMm = -1300 * 2.5;
+  const Scene s = filmed(c);
+  CameraFitOptions o = lsq();
+  o.focalPx = 1500;
+  const CameraFit fit = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o);
+  EXPECT_NEAR(fit.camera.alphaDeg, 40, 1e-3 * 40);
+  EXPECT_NEAR(fit.camera.elevationDeg, 12, 1e-3 * 12);
+  EXPECT_NEAR(fit.camera.distanceMm, 6000, 1e-3 * 6000);
+  EXPECT_NEAR(fit.camera.speedMmS, 1300, 1e-3 * 1300);
+  EXPECT_NEAR(fit.camera.lookAtHeightMm, 900, 1e-3 * 900);
+  expectSameWalk(fit, s);
+}
+
+// Coming towards a camera 25° above, 7 m away at mid-clip: the walker grows in the image.
+TEST(CameraReconstruction, RecoversAnApproachingWalkerExactly) {
+  WalkCamera c;
+  c.model = CameraModel::Pinhole;
+  c.alphaDeg = 165;
+  c.elevationDeg = 25;
+  c.focalPx = 2200;
+  c.distanceMm = 7000;
+  c.cxPx = 540;
+  c.cyPx = 960;
+  c.lookAtHeightMm = 1000;
+  c.speedMmS = 1400;
+  c.startOffsetMm = -1400 * 2.5;
+  const Scene s = filmed(c);
+  CameraFitOptions o = lsq();
+  o.focalPx = 2200;
+  const CameraFit fit = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o);
+  EXPECT_NEAR(fit.camera.alphaDeg, 165, 1e-3 * 165);
+  EXPECT_NEAR(fit.camera.elevationDeg, 25, 1e-3 * 25);
+  EXPECT_NEAR(fit.camera.distanceMm, 7000, 1e-3 * 7000);
+  EXPECT_NEAR(fit.camera.speedMmS, 1400, 1e-3 * 1400);
+  expectSameWalk(fit, s);
+}
+
+TEST(CameraReconstruction, RecoversAScaledOrthographicCameraExactly) {
+  WalkCamera c;
+  c.alphaDeg = -65;
+  c.elevationDeg = 20;
+  c.pxPerMm = 0.35;
+  c.cxPx = 800;
+  c.cyPx = 700;
+  c.speedMmS = 1250;
+  const Scene s = filmed(c);
+  const CameraFit fit = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, lsq());
+  EXPECT_NEAR(fit.camera.alphaDeg, -65, 1e-3 * 65);
+  EXPECT_NEAR(fit.camera.elevationDeg, 20, 1e-3 * 20);
+  EXPECT_NEAR(fit.camera.pxPerMm, 0.35, 1e-3 * 0.35);
+  EXPECT_NEAR(fit.camera.speedMmS, 1250, 1e-3 * 1250);
+  expectSameWalk(fit, s);
+}
+
+}  // namespace
+}  // namespace ew
