@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "app/cli/commands.h"
+#include "app/cli/reconstruct_camera.h"
 #include "core/common/errors.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
@@ -39,6 +40,9 @@ struct ReconstructArgs {
   std::optional<double> sigma2Mm2;  // unset: the model's stored optimum (defaultSigma2Mm2)
   std::optional<int> components;    // unset: every eigenwalker of the model
   std::string mapping;              // joint mapping file for a 3D marker input (--mapping)
+  bool unknownCamera = false;       // keypoint input through an unknown real camera
+  std::string layout;               // keypoint layout (--layout)
+  std::optional<double> fps, focalPx;
 };
 
 // The model the user named, or the default one; truncated to --components (the viewer's
@@ -201,6 +205,14 @@ void printReport(const json& r) {
 }
 
 int runReconstruct(const ReconstructArgs& a) {
+  if (a.unknownCamera) {
+    if (a.angleDeg || a.unknownAngle || a.projectAngleDeg)
+      throw Error(ErrorKind::BadArgument, "--unknown-camera", "",
+                  "the camera's angle is estimated: --angle, --unknown-angle and --project-angle do not apply");
+    const ChosenModel chosen = chooseModel(a);
+    return runReconstructCamera(chosen.model, {a.input, a.out, a.layout, a.method, chosen.name, a.fps, a.focalPx,
+                                               a.sigma2Mm2, a.json});
+  }
   if (a.angleDeg.has_value() == a.unknownAngle) {
     throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
   }
@@ -286,7 +298,21 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--components", args->components,
                   "Use the first N eigenwalkers of the model (as the viewer's N)")
       ->check(CLI::Range(1, 100000));
-  cmd->add_option("--input", args->input, "2D CSV or 3D trial file")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--input", args->input,
+                  "2D CSV or 3D trial file; with --unknown-camera a pose estimator's keypoints "
+                  "(OpenPose folder or JSON, AlphaPose or MMPose JSON)")
+      ->required()
+      ->check(CLI::ExistingPath);
+  cmd->add_flag("--unknown-camera", args->unknownCamera,
+                "Keypoints in pixels through an unknown real camera (docs/CAMERA.md): estimates azimuth, "
+                "elevation, scale or distance, image translation and progression with the walker");
+  cmd->add_option("--layout", args->layout, "Keypoint layout (BODY_25, BODY_25B, COCO-18, COCO-17, Halpe-26, "
+                                            "MediaPipe-33); guessed when not given");
+  cmd->add_option("--fps", args->fps, "Video frame rate of keypoint input (JSON stores none; default 30)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--focal-px", args->focalPx,
+                  "Known focal length in pixels: a pinhole camera (else scaled orthography)")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--mapping", args->mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md) for a 3D marker input whose set "
                   "the program does not know");

@@ -1,0 +1,92 @@
+#include "app/cli/reconstruct_camera.h"
+
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/camera/camera_reconstruction.h"
+#include "core/engine/fourier.h"
+#include "core/engine/model_file.h"
+#include "core/io/joint_csv.h"
+#include "core/keypoints/image_gait.h"
+#include "core/keypoints/keypoint_trial.h"
+
+namespace ew::cli {
+namespace {
+
+using nlohmann::json;
+
+json startsJson(const CameraFit& fit) {
+  json out = json::array();
+  for (const auto& s : fit.starts) {
+    out.push_back({{"start_alpha_deg", s.startAlphaDeg}, {"alpha_deg", s.alphaDeg},
+                   {"elevation_deg", s.elevationDeg}, {"objective", s.objective},
+                   {"reprojection_rms_px", s.reprojectionRmsPx}, {"speed_mps", s.speedMmS / 1000.0},
+                   {"iterations", s.iterations}});
+  }
+  return out;
+}
+
+json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fit) {
+  const WalkCamera& c = fit.camera;
+  const bool pinhole = c.model == CameraModel::Pinhole;
+  std::vector<std::string> unseen;
+  for (int j : fit.unseenJoints) unseen.emplace_back(jointName(static_cast<Joint>(j)));
+  return {{"input", a.input}, {"format", t.format}, {"layout", t.layout->name},
+          {"layout_source", t.layoutSource}, {"person", t.chosenReason}, {"frames", t.frameCount},
+          {"rate_hz", t.rateHz}, {"rate_assumed", t.rateAssumed}, {"output", a.out},
+          {"camera_model", pinhole ? "pinhole" : "scaled orthographic"},
+          {"alpha_deg", c.alphaDeg}, {"elevation_deg", c.elevationDeg},
+          {"focal_px", pinhole ? json(c.focalPx) : json(nullptr)},
+          {"distance_m", pinhole ? json(c.distanceMm / 1000.0) : json(nullptr)},
+          {"px_per_mm", pinhole ? json(nullptr) : json(c.pxPerMm)},
+          {"image_centre_px", {c.cxPx, c.cyPx}}, {"reprojection_rms_px", fit.reprojectionRmsPx},
+          {"stride_hz", fit.strideHz}, {"cadence_steps_per_min", fit.cadenceStepsPerMin},
+          {"speed_mps", fit.speedMps}, {"stride_length_m", fit.strideLengthM},
+          {"head_height_m", fit.headHeightMm / 1000.0}, {"k", std::vector<double>(fit.k.data(), fit.k.data() + fit.k.size())},
+          {"joints_model_estimated", unseen}, {"minima", startsJson(fit)}};
+}
+
+void printSummary(const json& r) {
+  std::cerr << std::fixed << std::setprecision(1) << r["format"].get<std::string>() << ", layout "
+            << r["layout"].get<std::string>() << " (" << r["layout_source"].get<std::string>() << "); "
+            << r["person"].get<std::string>() << "\n";
+  std::cerr << "camera (" << r["camera_model"].get<std::string>() << "): azimuth " << r["alpha_deg"].get<double>()
+            << " deg, elevation " << r["elevation_deg"].get<double>() << " deg";
+  if (r["distance_m"].is_number()) std::cerr << ", distance " << std::setprecision(2) << r["distance_m"].get<double>() << " m";
+  std::cerr << "; reprojection RMS " << std::setprecision(2) << r["reprojection_rms_px"].get<double>() << " px\n";
+  std::cerr << "walk: stride " << std::setprecision(3) << r["stride_hz"].get<double>() << " Hz ("
+            << std::setprecision(0) << r["cadence_steps_per_min"].get<double>() << " steps/min), speed "
+            << std::setprecision(2) << r["speed_mps"].get<double>() << " m/s, stride length "
+            << r["stride_length_m"].get<double>() << " m, head height " << r["head_height_m"].get<double>() << " m";
+  if (r["rate_assumed"].get<bool>()) std::cerr << " (at an assumed " << r["rate_hz"].get<double>() << " fps: give --fps)";
+  std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
+}
+
+}  // namespace
+
+int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
+  KeypointOptions k;
+  if (!a.layout.empty()) k.layout = a.layout;
+  k.fps = a.fps;
+  const KeypointTrial t = readKeypointTrial(a.input, k);
+  const ImageGait gait = imageGaitCycles(t);
+  CameraFitOptions o;
+  o.estimator = {a.method == "map" ? Estimator::Map : Estimator::Lsq, a.sigma2Mm2.value_or(defaultSigma2Mm2(model))};
+  o.focalPx = a.focalPx;
+  o.strideHzHint = gait.strideHz;
+  o.file = a.input;
+  const CameraFit fit = reconstructUnknownCamera(model, t.jointsPx, t.rateHz, o);
+  const Eigen::MatrixXd frames = synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, frameTimes(t.frameCount, t.rateHz));
+  std::ostringstream what;
+  what << "eigenwalker reconstruction of " << a.input << " through an unknown camera (azimuth " << fit.camera.alphaDeg
+       << " deg, elevation " << fit.camera.elevationDeg << " deg), model " << a.modelName;
+  writeJointCsv(a.out, frames, t.rateHz, {what.str()});
+  const json report = reportJson(a, t, fit);
+  printSummary(report);
+  if (a.json) std::cout << report.dump(2) << "\n";
+  return 0;
+}
+
+}  // namespace ew::cli

@@ -1,0 +1,21 @@
+#pragma once
+// `reconstruct --unknown-camera`: a pose estimator's keypoints (OpenPose, AlphaPose, MMPose
+// JSON) through an unknown real camera to the walker's 3D joints, one row per input frame,
+// and the camera, with the walk's metric measures (docs/CAMERA.md).
+
+#include <optional>
+#include <string>
+
+#include "core/engine/model.h"
+
+namespace ew::cli {
+
+struct CameraArgs {
+  std::string input, out, layout, method = "map", modelName;
+  std::optional<double> fps, focalPx, sigma2Mm2;
+  bool json = false;
+};
+
+int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args);
+
+}  // namespace ew::cli
