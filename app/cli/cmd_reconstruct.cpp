@@ -43,6 +43,7 @@ struct ReconstructArgs {
   bool unknownCamera = false;       // keypoint input through an unknown real camera
   std::string layout;               // keypoint layout (--layout)
   std::optional<double> fps, focalPx;
+  bool orthographic = false;
 };
 
 // The model the user named, or the default one; truncated to --components (the viewer's
@@ -211,7 +212,7 @@ int runReconstruct(const ReconstructArgs& a) {
                   "the camera's angle is estimated: --angle, --unknown-angle and --project-angle do not apply");
     const ChosenModel chosen = chooseModel(a);
     return runReconstructCamera(chosen.model, {a.input, a.out, a.layout, a.method, chosen.name, a.fps, a.focalPx,
-                                               a.sigma2Mm2, a.json});
+                                               a.sigma2Mm2, a.json, a.orthographic});
   }
   if (a.angleDeg.has_value() == a.unknownAngle) {
     throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
@@ -311,8 +312,11 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--fps", args->fps, "Video frame rate of keypoint input (JSON stores none; default 30)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--focal-px", args->focalPx,
-                  "Known focal length in pixels: a pinhole camera (else scaled orthography)")
+                  "Known focal length in pixels (else it is estimated with the camera)")
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--orthographic", args->orthographic,
+                "With --unknown-camera and no --focal-px: scaled orthography instead of a pinhole "
+                "whose focal length is estimated (a distant camera)");
   cmd->add_option("--mapping", args->mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md) for a 3D marker input whose set "
                   "the program does not know");

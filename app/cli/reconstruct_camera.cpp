@@ -39,6 +39,7 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
           {"camera_model", pinhole ? "pinhole" : "scaled orthographic"},
           {"alpha_deg", c.alphaDeg}, {"elevation_deg", c.elevationDeg},
           {"focal_px", pinhole ? json(c.focalPx) : json(nullptr)},
+          {"focal_source", pinhole ? json(a.focalPx ? "given (--focal-px)" : "estimated") : json(nullptr)},
           {"distance_m", pinhole ? json(c.distanceMm / 1000.0) : json(nullptr)},
           {"px_per_mm", pinhole ? json(nullptr) : json(c.pxPerMm)},
           {"image_centre_px", {c.cxPx, c.cyPx}}, {"reprojection_rms_px", fit.reprojectionRmsPx},
@@ -54,7 +55,10 @@ void printSummary(const json& r) {
             << r["person"].get<std::string>() << "\n";
   std::cerr << "camera (" << r["camera_model"].get<std::string>() << "): azimuth " << r["alpha_deg"].get<double>()
             << " deg, elevation " << r["elevation_deg"].get<double>() << " deg";
-  if (r["distance_m"].is_number()) std::cerr << ", distance " << std::setprecision(2) << r["distance_m"].get<double>() << " m";
+  if (r["distance_m"].is_number())
+    std::cerr << ", distance " << std::setprecision(2) << r["distance_m"].get<double>() << " m, focal "
+              << std::setprecision(0) << r["focal_px"].get<double>() << " px (" << r["focal_source"].get<std::string>()
+              << ")";
   std::cerr << "; reprojection RMS " << std::setprecision(2) << r["reprojection_rms_px"].get<double>() << " px\n";
   std::cerr << "walk: stride " << std::setprecision(3) << r["stride_hz"].get<double>() << " Hz ("
             << std::setprecision(0) << r["cadence_steps_per_min"].get<double>() << " steps/min), speed "
@@ -75,6 +79,7 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   CameraFitOptions o;
   o.estimator = {a.method == "map" ? Estimator::Map : Estimator::Lsq, a.sigma2Mm2.value_or(defaultSigma2Mm2(model))};
   o.focalPx = a.focalPx;
+  o.estimateFocal = !a.orthographic;
   o.strideHzHint = gait.strideHz;
   o.file = a.input;
   const CameraFit fit = reconstructUnknownCamera(model, t.jointsPx, t.rateHz, o);

@@ -14,6 +14,7 @@ struct CameraArgs {
   std::string input, out, layout, method = "map", modelName;
   std::optional<double> fps, focalPx, sigma2Mm2;
   bool json = false;
+  bool orthographic = false;  // scaled orthography instead of estimating the focal length
 };
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args);

@@ -30,6 +30,7 @@ constexpr int kScreeningIterations = 25;
 constexpr int kRefinedStarts = 3;
 // Elevations outside this range are no camera filming a walk: a steep penalty.
 constexpr double kMinElevationDeg = -30.0, kMaxElevationDeg = 80.0;
+constexpr double kStartDistanceMm = 5000.0;
 
 [[noreturn]] void badData(const std::string& file, const std::string& what) {
   throw Error(ErrorKind::BadData, file, "", "camera reconstruction: " + what);
@@ -38,10 +39,11 @@ constexpr double kMinElevationDeg = -30.0, kMaxElevationDeg = 80.0;
 // [SECTION] Parameters ----------------------------------------------------------------------
 
 // θ = [k (N), α°, ε°, log scale (orthography: s px/mm; pinhole: D mm), c_x, c_y, v mm/s,
-//      ω, φ, (pinhole:) h mm, y0 mm].
+//      ω, φ, (pinhole:) h mm, y0 mm, (focal unknown:) log f px].
 struct Layout {
   int n = 0;
   bool pinhole = false;
+  bool focalFree = false;  // pinhole whose focal length is estimated
   int alpha() const { return n; }
   int elevation() const { return n + 1; }
   int logScale() const { return n + 2; }
@@ -52,7 +54,8 @@ struct Layout {
   int phase() const { return n + 7; }
   int height() const { return n + 8; }
   int offset() const { return n + 9; }
-  int size() const { return n + (pinhole ? 10 : 8); }
+  int logFocal() const { return n + 10; }
+  int size() const { return n + (pinhole ? (focalFree ? 11 : 10) : 8); }
 };
 
 struct Problem {
@@ -74,7 +77,7 @@ WalkCamera cameraOf(const Problem& p, const VectorXd& t) {
   c.alphaDeg = t[l.alpha()];
   c.elevationDeg = t[l.elevation()];
   if (l.pinhole) {
-    c.focalPx = p.focalPx;
+    c.focalPx = l.focalFree ? std::exp(t[l.logFocal()]) : p.focalPx;
     c.distanceMm = std::exp(t[l.logScale()]);
     c.lookAtHeightMm = t[l.height()];
     c.startOffsetMm = t[l.offset()];
@@ -120,6 +123,7 @@ VectorXd stepSizes(const Problem& p, const VectorXd& t) {
   h.head(p.layout.n) = (p.model.eigenvalues.cwiseMax(1.0).cwiseSqrt() * 1e-5);
   h[p.layout.alpha()] = h[p.layout.elevation()] = 1e-5;
   h[p.layout.logScale()] = 1e-7;
+  if (p.layout.focalFree) h[p.layout.logFocal()] = 1e-7;
   h[p.layout.phase()] = 1e-6;
   h[p.layout.omega()] = 1e-7;
   return h;
@@ -290,7 +294,10 @@ VectorXd startTheta(const Problem& p, const OrthoStart& s, const Reconstruction&
   const double pelvisZ = w[3 * index(Joint::Pelvis) + 2];
   const double midT = 0.5 * (p.timesS[0] + p.timesS[p.timesS.size() - 1]);
   if (l.pinhole) {
-    t[l.logScale()] = std::log(p.focalPx / s.pxPerMm);
+    // An unknown focal length starts as the one that puts the walker kStartDistanceMm away.
+    const double focal = l.focalFree ? s.pxPerMm * kStartDistanceMm : p.focalPx;
+    if (l.focalFree) t[l.logFocal()] = std::log(focal);
+    t[l.logScale()] = std::log(focal / s.pxPerMm);
     t[l.height()] = pelvisZ;
     t[l.offset()] = -speed * midT;  // the walker passes the look-at point mid-clip
     t[l.cx()] = s.pelvisU[0] + s.pelvisU[1] * midT;
@@ -336,7 +343,8 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
     if (unseen[static_cast<std::size_t>(j)]) fit.unseenJoints.push_back(j);
   }
   const OrthoStart start = orthographicStart(model, jointsPx, times, unseen, o);
-  Problem p{model, {static_cast<int>(model.eigenvalues.size()), o.focalPx.has_value()}, o.focalPx.value_or(0.0),
+  const bool pinhole = o.focalPx.has_value() || o.estimateFocal;
+  Problem p{model, {static_cast<int>(model.eigenvalues.size()), pinhole, pinhole && !o.focalPx}, o.focalPx.value_or(0.0),
             jointsPx, times, 1.0 / start.pxPerMm, 1.0, {}, {}};
   for (Eigen::Index i = 0; i < jointsPx.size(); ++i)
     if (std::isfinite(jointsPx.data()[i])) p.seen.push_back(static_cast<int>(i));

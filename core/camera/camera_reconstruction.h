@@ -19,7 +19,8 @@ namespace ew {
 
 struct CameraFitOptions {
   EstimatorOptions estimator{Estimator::Map, 1000.0};
-  std::optional<double> focalPx;        // known: pinhole; unknown: scaled orthography
+  std::optional<double> focalPx;        // known: a pinhole with this focal length
+  bool estimateFocal = true;            // focal unknown: a pinhole estimating it, else scaled orthography
   std::optional<double> strideHzHint;   // from the image's foot strikes (image_gait.h)
   int startCount = 4;                   // view-angle minima tried as starts
   int maxIterations = 300;

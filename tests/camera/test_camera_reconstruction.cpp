@@ -121,6 +121,27 @@ TEST(CameraReconstruction, RecoversAnApproachingWalkerExactly) {
   expectSameWalk(fit, s);
 }
 
+// Nothing known: the focal length comes out of the perspective too.
+TEST(CameraReconstruction, RecoversTheFocalLengthExactly) {
+  WalkCamera c;
+  c.model = CameraModel::Pinhole;
+  c.alphaDeg = 40;
+  c.elevationDeg = 12;
+  c.focalPx = 1500;
+  c.distanceMm = 6000;
+  c.cxPx = 960;
+  c.cyPx = 540;
+  c.lookAtHeightMm = 900;
+  c.speedMmS = 1300;
+  c.startOffsetMm = -1300 * 2.5;
+  const Scene s = filmed(c);
+  const CameraFit fit = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, lsq());
+  EXPECT_NEAR(fit.camera.focalPx, 1500, 1e-3 * 1500);
+  EXPECT_NEAR(fit.camera.distanceMm, 6000, 1e-3 * 6000);
+  EXPECT_NEAR(fit.camera.alphaDeg, 40, 1e-3 * 40);
+  expectSameWalk(fit, s);
+}
+
 TEST(CameraReconstruction, RecoversAScaledOrthographicCameraExactly) {
   WalkCamera c;
   c.alphaDeg = -65;
@@ -130,7 +151,9 @@ TEST(CameraReconstruction, RecoversAScaledOrthographicCameraExactly) {
   c.cyPx = 700;
   c.speedMmS = 1250;
   const Scene s = filmed(c);
-  const CameraFit fit = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, lsq());
+  CameraFitOptions o = lsq();
+  o.estimateFocal = false;
+  const CameraFit fit = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o);
   EXPECT_NEAR(fit.camera.alphaDeg, -65, 1e-3 * 65);
   EXPECT_NEAR(fit.camera.elevationDeg, 20, 1e-3 * 20);
   EXPECT_NEAR(fit.camera.pxPerMm, 0.35, 1e-3 * 0.35);
