@@ -197,6 +197,12 @@ std::optional<std::string> layoutFromDatasetName(const std::string& name) {
   return std::nullopt;
 }
 
+bool isCsvPath(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".csv";
+}
+
 }  // namespace
 
 // [SECTION] Public API -----------------------------------------------------------------------
@@ -284,12 +290,14 @@ bool looksLikeKeypointInput(const fs::path& path) {
   }
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".csv") return sniffKeypointCsv(path) != KeypointCsvKind::NotKeypoints;  // not our joint CSVs
   return ext == ".json";
 }
 
 KeypointFrames readKeypointFrames(const fs::path& path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) return parseOpenPoseFrames(readOpenPoseFolder(path), path.string());
+  if (isCsvPath(path)) return readKeypointCsv(path);
   const std::string text = readFileText(path);
   const json doc = parseJson(text, path.string());
   const bool openPose = (doc.is_object() && doc.contains("people")) ||

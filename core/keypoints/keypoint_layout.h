@@ -7,6 +7,9 @@
 // the sternum from the shoulders) is flagged derived, with the reason.
 
 #include <array>
+#include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,5 +41,18 @@ const KeypointLayout& keypointLayoutNamed(std::string_view name);
 
 // The layouts with exactly `pointCount` points (BODY_25 and BODY_25B share 25).
 std::vector<const KeypointLayout*> keypointLayoutsWithPoints(int pointCount);
+
+// A layout for a file that names its own points (DeepLabCut body parts), built in
+// custom_layout.cpp. With a joint mapping file (core/mapping/mapping_file.h) each joint is
+// the mean of the points the mapping lists for it (Error(BadArgument) naming the mapping file
+// and the joint key for a name not among `names`). Without one: the embedded layout whose
+// point names are `names` (case-insensitive, in any order), else Error(BadData) naming
+// `file`, listing its points and asking for a mapping file.
+struct PointNamesLayout {
+  std::shared_ptr<const KeypointLayout> layout;  // an embedded layout, or one built here
+  std::string source;                            // how it was decided, for the user
+};
+PointNamesLayout layoutForPointNames(const std::vector<std::string>& names, const std::string& file,
+                                     const std::optional<std::filesystem::path>& mappingFile);
 
 }  // namespace ew

@@ -177,7 +177,7 @@ Eigen::MatrixXd personJoints(const KeypointLayout& layout, const KeypointFrames&
 
 const KeypointLayout& chooseLayout(const KeypointFrames& frames, const PersonTrack& walker,
                                    const KeypointOptions& options, std::string& source,
-                                   std::vector<std::string>& warnings) {
+                                   std::vector<std::string>& warnings, std::shared_ptr<const KeypointLayout>& built) {
   if (options.layout) {
     const KeypointLayout& l = keypointLayoutNamed(*options.layout);
     if (static_cast<int>(l.points.size()) != frames.pointCount)
@@ -186,6 +186,12 @@ const KeypointLayout& chooseLayout(const KeypointFrames& frames, const PersonTra
                       std::to_string(frames.pointCount));
     source = "given (--layout)";
     return l;
+  }
+  if (!frames.pointNames.empty()) {  // the file names its points: by name, not by count
+    PointNamesLayout named = layoutForPointNames(frames.pointNames, frames.file, options.mappingFile);
+    source = named.source;
+    built = std::move(named.layout);
+    return *built;
   }
   const auto candidates = keypointLayoutsWithPoints(frames.pointCount);
   if (candidates.empty()) {
@@ -288,6 +294,7 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
   t.frameCount = frames.frameCount();
   t.warnings = frames.warnings;
   if (options.fps) t.rateHz = checkedFileRateHz(*options.fps, frames.file, "--fps"), t.rateAssumed = false;
+  else if (frames.rateHz) t.rateHz = *frames.rateHz, t.rateAssumed = false;
   for (const auto& f : frames.frames) t.maxPeople = std::max(t.maxPeople, static_cast<int>(f.size()));
   t.people = trackPeople(frames);
   if (t.people.empty())
@@ -304,7 +311,7 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
     t.chosen = chooseWalker(t.people, t.chosenReason, t.warnings, t.frameCount);
   }
   const PersonTrack& walker = t.people[static_cast<std::size_t>(t.chosen)];
-  t.layout = &chooseLayout(frames, walker, options, t.layoutSource, t.warnings);
+  t.layout = &chooseLayout(frames, walker, options, t.layoutSource, t.warnings, t.builtLayout);
   t.jointsPx = personJoints(*t.layout, frames, walker, options.minConfidence);
   std::vector<std::string> unseen;
   for (int j = 0; j < kJointCount; ++j) {

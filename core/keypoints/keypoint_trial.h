@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,9 +21,11 @@ namespace ew {
 
 struct KeypointOptions {
   std::optional<std::string> layout;  // a layout name (--layout): no guessing
-  std::optional<double> fps;          // the video's frame rate; JSON files do not store one
+  std::optional<double> fps;          // the video's frame rate; else the file's (CSV time), else 30
   double minConfidence = 0.3;         // points below are missing (Pose2Sim's default)
   std::optional<int> person;          // the track to use (index into KeypointTrial::people)
+  // Which named points make each joint, for files that name their own (DeepLabCut).
+  std::optional<std::filesystem::path> mappingFile;
 };
 
 inline constexpr double kDefaultKeypointFps = 30.0;
@@ -38,6 +41,7 @@ struct PersonTrack {
 struct KeypointTrial {
   std::string file, format;
   const KeypointLayout* layout = nullptr;
+  std::shared_ptr<const KeypointLayout> builtLayout;  // keeps `layout` alive when made for this file
   std::string layoutSource;           // how the layout was decided, for the user
   double rateHz = kDefaultKeypointFps;
   bool rateAssumed = true;            // no --fps given: kDefaultKeypointFps
@@ -60,7 +64,8 @@ std::vector<PersonTrack> trackPeople(const KeypointFrames& frames);
 // Cleans what a reader gave. Throws Error(BadArgument) for an unknown --layout, a layout
 // whose point count differs from the file's, or a --person out of range; Error(BadData)
 // naming the file when no layout has the file's point count, or the person chosen never
-// shows the minimum joints (pelvis or hips, knees, ankles) in any frame.
+// shows the minimum joints (pelvis or hips, knees, ankles) in any frame. A file naming its
+// own points (DeepLabCut) takes its layout from layoutForPointNames (options.mappingFile).
 KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions& options = {});
 
 KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options = {});
