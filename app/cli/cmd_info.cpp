@@ -20,6 +20,7 @@ struct InfoArgs {
   std::string units;
   std::string mapping;  // joint mapping file (--mapping)
   std::string layout;   // keypoint layout (--layout)
+  std::string imageSize;  // a MediaPipe CSV's image (--image-size)
 };
 
 std::string joined(const std::vector<std::string>& items, const char* sep) {
@@ -100,6 +101,8 @@ int runInfo(const InfoArgs& args) {
   KeypointOptions keypoints;
   if (args.rateHz > 0) keypoints.fps = args.rateHz;
   if (!args.layout.empty()) keypoints.layout = args.layout;
+  if (!args.mapping.empty()) keypoints.mappingFile = args.mapping;
+  if (!args.imageSize.empty()) keypoints.imageSize = parseKeypointImageSize(args.imageSize, "--image-size");
   std::vector<TrialSummary> summaries;
   for (const auto& f : collectTrialFiles(paths, warnings)) {
     summaries.push_back(looksLikeKeypointInput(f.path) ? summarizeKeypoints(f.path, keypoints)
@@ -128,7 +131,7 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
                                          "markers/joints, estimated joints, cycles, stride "
                                          "frequency, speed, warnings. Motion capture and "
                                          "pose-estimator keypoint files (OpenPose, AlphaPose, "
-                                         "MMPose JSON). Exit 1 if any trial is unusable.");
+                                         "MMPose JSON, MediaPipe and DeepLabCut CSV). Exit 1 if any trial is unusable.");
   cmd->add_option("paths", args->paths, "Files, folders (recursive) or manifest CSVs")->required();
   cmd->add_flag("--json", args->json, "One JSON object per trial instead of a table");
   cmd->add_option("--rate", args->rateHz,
@@ -136,10 +139,12 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--layout", args->layout,
                   "Keypoint layout of pose-estimator files (BODY_25, BODY_25B, COCO-18, COCO-17, "
                   "Halpe-26, MediaPipe-33); guessed when not given");
+  cmd->add_option("--image-size", args->imageSize,
+                  "WxH in pixels of the video behind a MediaPipe CSV (its x, y are fractions of it)");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
   cmd->add_option("--mapping", args->mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md): which markers make each joint, "
-                  "for marker sets the program does not know");
+                  "for marker sets the program does not know, and DeepLabCut body parts");
   cmd->callback([args, &exitCode] { exitCode = runInfo(*args); });
 }
 

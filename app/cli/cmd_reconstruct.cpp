@@ -44,6 +44,7 @@ struct ReconstructArgs {
   std::string layout;               // keypoint layout (--layout)
   std::optional<double> fps, focalPx;
   bool orthographic = false;
+  std::string imageSize;
 };
 
 // The model the user named, or the default one; truncated to --components (the viewer's
@@ -211,8 +212,11 @@ int runReconstruct(const ReconstructArgs& a) {
       throw Error(ErrorKind::BadArgument, "--unknown-camera", "",
                   "the camera's angle is estimated: --angle, --unknown-angle and --project-angle do not apply");
     const ChosenModel chosen = chooseModel(a);
-    return runReconstructCamera(chosen.model, {a.input, a.out, a.layout, a.method, chosen.name, a.fps, a.focalPx,
-                                               a.sigma2Mm2, a.json, a.orthographic});
+    CameraArgs c;
+    c.input = a.input, c.out = a.out, c.layout = a.layout, c.method = a.method, c.modelName = chosen.name;
+    c.mapping = a.mapping, c.imageSize = a.imageSize, c.fps = a.fps, c.focalPx = a.focalPx;
+    c.sigma2Mm2 = a.sigma2Mm2, c.json = a.json, c.orthographic = a.orthographic;
+    return runReconstructCamera(chosen.model, c);
   }
   if (a.angleDeg.has_value() == a.unknownAngle) {
     throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
@@ -314,12 +318,14 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--focal-px", args->focalPx,
                   "Known focal length in pixels (else it is estimated with the camera)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--image-size", args->imageSize,
+                  "WxH in pixels of the video behind a MediaPipe CSV keypoint input");
   cmd->add_flag("--orthographic", args->orthographic,
                 "With --unknown-camera and no --focal-px: scaled orthography instead of a pinhole "
                 "whose focal length is estimated (a distant camera)");
   cmd->add_option("--mapping", args->mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md) for a 3D marker input whose set "
-                  "the program does not know");
+                  "the program does not know, or a DeepLabCut keypoint file's body parts");
   cmd->add_option("--out", args->out, "3D joint CSV to write")->required();
   cmd->add_option("--angle", args->angleDeg, "Known view angle in degrees (0 frontal, +-90 profile)");
   cmd->add_flag("--unknown-angle", args->unknownAngle, "Estimate the view angle over the whole circle");

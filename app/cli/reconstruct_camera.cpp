@@ -73,6 +73,8 @@ void printSummary(const json& r) {
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   KeypointOptions k;
   if (!a.layout.empty()) k.layout = a.layout;
+  if (!a.mapping.empty()) k.mappingFile = a.mapping;
+  if (!a.imageSize.empty()) k.imageSize = parseKeypointImageSize(a.imageSize, "--image-size");
   k.fps = a.fps;
   const KeypointTrial t = readKeypointTrial(a.input, k);
   const ImageGait gait = imageGaitCycles(t);

@@ -11,7 +11,7 @@
 namespace ew::cli {
 
 struct CameraArgs {
-  std::string input, out, layout, method = "map", modelName;
+  std::string input, out, layout, method = "map", modelName, mapping, imageSize;
   std::optional<double> fps, focalPx, sigma2Mm2;
   bool json = false;
   bool orthographic = false;  // scaled orthography instead of estimating the focal length

@@ -294,10 +294,28 @@ bool looksLikeKeypointInput(const fs::path& path) {
   return ext == ".json";
 }
 
-KeypointFrames readKeypointFrames(const fs::path& path) {
+KeypointImageSize parseKeypointImageSize(const std::string& text, const std::string& option) {
+  const auto x = text.find_first_of("xX");
+  KeypointImageSize size;
+  try {
+    std::size_t wEnd = 0, hEnd = 0;
+    if (x == std::string::npos) throw std::invalid_argument("no x");
+    size.width = std::stoi(text.substr(0, x), &wEnd);
+    size.height = std::stoi(text.substr(x + 1), &hEnd);
+    if (wEnd != x || hEnd != text.size() - x - 1) throw std::invalid_argument("trailing text");
+  } catch (const std::exception&) {
+    throw Error(ErrorKind::BadArgument, "", option, "'" + text + "' is not an image size like 1920x1080");
+  }
+  if (size.width < 1 || size.height < 1 || size.width > kMaxKeypointImageSidePx || size.height > kMaxKeypointImageSidePx)
+    throw Error(ErrorKind::BadArgument, "", option,
+                "'" + text + "': each side must be 1-" + std::to_string(kMaxKeypointImageSidePx) + " px");
+  return size;
+}
+
+KeypointFrames readKeypointFrames(const fs::path& path, const std::optional<KeypointImageSize>& imageSize) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) return parseOpenPoseFrames(readOpenPoseFolder(path), path.string());
-  if (isCsvPath(path)) return readKeypointCsv(path);
+  if (isCsvPath(path)) return readKeypointCsv(path, imageSize);
   const std::string text = readFileText(path);
   const json doc = parseJson(text, path.string());
   const bool openPose = (doc.is_object() && doc.contains("people")) ||

@@ -50,7 +50,14 @@ bool looksLikeKeypointInput(const std::filesystem::path& path);
 // point count that changes, a keypoint list not a multiple of 3 (2 for MMPose), non-numeric
 // or non-finite values, more frames / points / people than the bounds above, and
 // Error(BadData) when no frame has anybody in it. A .csv path goes to readKeypointCsv.
-KeypointFrames readKeypointFrames(const std::filesystem::path& path);
+// The image a MediaPipe CSV's normalised (0-1) coordinates refer to, in pixels.
+struct KeypointImageSize {
+  int width = 0;
+  int height = 0;
+};
+
+KeypointFrames readKeypointFrames(const std::filesystem::path& path,
+                                  const std::optional<KeypointImageSize>& imageSize = std::nullopt);
 
 // The parsers behind it, on text already read (`name` is what errors say).
 KeypointFrames parseOpenPoseFrames(const std::vector<std::pair<std::string, std::string>>& filesAndTexts,
@@ -60,12 +67,10 @@ KeypointFrames parseMmposeJson(const std::string& text, const std::string& name)
 
 // [SECTION] CSV keypoint files (keypoint_csv.cpp) --------------------------------------------
 
-// The image a MediaPipe CSV's normalised (0-1) coordinates refer to, in pixels.
-struct KeypointImageSize {
-  int width = 0;
-  int height = 0;
-};
 inline constexpr int kMaxKeypointImageSidePx = 100000;
+
+// "1920x1080" (the --image-size option); Error(BadArgument) naming `option` otherwise.
+KeypointImageSize parseKeypointImageSize(const std::string& text, const std::string& option);
 
 enum class KeypointCsvKind { NotKeypoints, MediaPipe, DeepLabCut };
 

@@ -81,7 +81,7 @@ TrialSummary summarizeKeypoints(const fs::path& path, const KeypointOptions& opt
     return false;
   };
   KeypointFrames frames;
-  if (!stage("read", [&] { frames = readKeypointFrames(path); })) return s;
+  if (!stage("read", [&] { frames = readKeypointFrames(path, options.imageSize); })) return s;
   s.format = frames.format;
   s.frames = frames.frameCount();
   s.pointsFound = frames.pointCount;

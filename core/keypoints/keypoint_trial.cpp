@@ -339,7 +339,7 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
 }
 
 KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options) {
-  return cleanKeypoints(readKeypointFrames(path), options);
+  return cleanKeypoints(readKeypointFrames(path, options.imageSize), options);
 }
 
 }  // namespace ew

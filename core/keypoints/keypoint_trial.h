@@ -26,6 +26,7 @@ struct KeypointOptions {
   std::optional<int> person;          // the track to use (index into KeypointTrial::people)
   // Which named points make each joint, for files that name their own (DeepLabCut).
   std::optional<std::filesystem::path> mappingFile;
+  std::optional<KeypointImageSize> imageSize;  // a MediaPipe CSV's image (--image-size)
 };
 
 inline constexpr double kDefaultKeypointFps = 30.0;

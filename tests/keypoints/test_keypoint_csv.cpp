@@ -198,6 +198,19 @@ TEST(KeypointCsv, MediaPipeWithoutImageSizeIsRefused) {
                                 ErrorKind::BadArgument, {"z.csv", "0x1080"}));
 }
 
+// The size given as an option (the CLI's --image-size) reaches the reader through the
+// trial path; "WxH" is checked.
+TEST(KeypointCsv, ImageSizeOptionReachesTheReader) {
+  const fs::path file = writeText("mp_option", "pose.csv", mediaPipeCsv(5));
+  KeypointOptions o;
+  o.imageSize = parseKeypointImageSize("1280x720", "--image-size");
+  EXPECT_EQ(readKeypointFrames(file, o.imageSize).format, "MediaPipe CSV");
+  EXPECT_TRUE(test::throwsError([] { parseKeypointImageSize("1280 by 720", "--image-size"); }, ErrorKind::BadArgument,
+                                {"--image-size", "like 1920x1080"}));
+  EXPECT_TRUE(test::throwsError([] { parseKeypointImageSize("0x720", "--image-size"); }, ErrorKind::BadArgument,
+                                {"each side must be 1-100000 px"}));
+}
+
 // [SECTION] DeepLabCut --------------------------------------------------------------------
 
 TEST(KeypointCsv, DeepLabCutWithMappingFileBuildsTheJoints) {
