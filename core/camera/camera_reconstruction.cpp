@@ -26,11 +26,14 @@ constexpr double kStartElevationsDeg[] = {5.0, 25.0};
 // α + 180° (both); perspective and the direction of walking can, so each is a start.
 constexpr double kRelatedOffsetsDeg[] = {0.0, 180.0};
 // Every start runs this many iterations; the best few then run to convergence.
-constexpr int kScreeningIterations = 25;
+constexpr int kScreeningIterations = 12;
 constexpr int kRefinedStarts = 3;
 // Elevations outside this range are no camera filming a walk: a steep penalty.
 constexpr double kMinElevationDeg = -30.0, kMaxElevationDeg = 80.0;
 constexpr double kStartDistanceMm = 5000.0;
+// Starts closer than this in α are one start (the minima of a profile often come in pairs).
+constexpr double kSameStartDeg = 5.0;
+constexpr double kScreeningFramesPerStride = 8.0;
 
 [[noreturn]] void badData(const std::string& file, const std::string& what) {
   throw Error(ErrorKind::BadData, file, "", "camera reconstruction: " + what);
@@ -70,6 +73,22 @@ struct Problem {
   std::vector<int> seen;    // indices into observed (column-major) of seen samples
 };
 
+// The problem on every `stride`-th frame: the seen samples, the data weight and the prior.
+Problem makeProblem(const EigenwalkerModel& model, Layout layout, double focalPx, const MatrixXd& px,
+                    const VectorXd& times, double mmPerPx, const EstimatorOptions& estimator, int stride) {
+  const auto rows = (px.rows() + stride - 1) / stride;
+  MatrixXd observed(rows, px.cols());
+  VectorXd t(rows);
+  for (Eigen::Index i = 0; i < rows; ++i) observed.row(i) = px.row(i * stride), t[i] = times[i * stride];
+  Problem p{model, layout, focalPx, observed, t, mmPerPx, 1.0, {}, {}};
+  for (Eigen::Index i = 0; i < observed.size(); ++i)
+    if (std::isfinite(observed.data()[i])) p.seen.push_back(static_cast<int>(i));
+  p.dataWeight = 1.0 / std::sqrt(std::max(1.0, 0.5 * static_cast<double>(p.seen.size()) / kJointCount));
+  if (estimator.estimator == Estimator::Map)
+    p.priorWeight = (estimator.sigma2Mm2 / model.eigenvalues.cwiseMax(1e-12).array()).sqrt().matrix();
+  return p;
+}
+
 WalkCamera cameraOf(const Problem& p, const VectorXd& t) {
   const Layout& l = p.layout;
   WalkCamera c;
@@ -94,14 +113,16 @@ VectorXd walkerOf(const Problem& p, const VectorXd& t) {
   return p.model.mean + p.model.eigenwalkers * t.head(p.layout.n);
 }
 
-MatrixXd imageOf(const Problem& p, const VectorXd& t) {
-  const MatrixXd frames = synthesizeFrames(walkerOf(p, t), t[p.layout.omega()], t[p.layout.phase()], p.timesS);
-  return projectWalk(frames, p.timesS, cameraOf(p, t));
+MatrixXd framesOf(const Problem& p, const VectorXd& t) {
+  return synthesizeFrames(walkerOf(p, t), t[p.layout.omega()], t[p.layout.phase()], p.timesS);
 }
 
-// Data residuals in mm (pixels × mmPerPx, weighted to a mean), then the prior's.
-VectorXd residuals(const Problem& p, const VectorXd& t) {
-  const MatrixXd image = imageOf(p, t);
+MatrixXd imageOf(const Problem& p, const VectorXd& t) { return projectWalk(framesOf(p, t), p.timesS, cameraOf(p, t)); }
+
+// Data residuals in mm (pixels × mmPerPx, weighted to a mean) of the walker's frames seen
+// by the camera of θ, then the prior's and the elevation bound's.
+VectorXd residualsOfFrames(const Problem& p, const MatrixXd& frames, const VectorXd& t) {
+  const MatrixXd image = projectWalk(frames, p.timesS, cameraOf(p, t));
   VectorXd r(static_cast<Eigen::Index>(p.seen.size()) + p.priorWeight.size() + 1);
   for (std::size_t i = 0; i < p.seen.size(); ++i) {
     const double d = image.data()[p.seen[i]] - p.observed.data()[p.seen[i]];
@@ -116,6 +137,8 @@ VectorXd residuals(const Problem& p, const VectorXd& t) {
   return r;
 }
 
+VectorXd residuals(const Problem& p, const VectorXd& t) { return residualsOfFrames(p, framesOf(p, t), t); }
+
 // [SECTION] Levenberg-Marquardt ---------------------------------------------------------------
 
 VectorXd stepSizes(const Problem& p, const VectorXd& t) {
@@ -129,14 +152,27 @@ VectorXd stepSizes(const Problem& p, const VectorXd& t) {
   return h;
 }
 
+// Finite differences (central for ω and φ, forward elsewhere: the steps are small enough
+// for Levenberg-Marquardt, and each saves a projection). The walker's frames are linear in
+// k and do not depend on the camera, so only ω and φ synthesise the walk again; k moves
+// the frames by h·(frames of its eigenwalker), and the camera parameters reproject them.
 MatrixXd jacobian(const Problem& p, const VectorXd& t, const VectorXd& r0) {
   const VectorXd h = stepSizes(p, t);
+  const MatrixXd frames = framesOf(p, t);
   MatrixXd jac(r0.size(), t.size());
   for (Eigen::Index i = 0; i < t.size(); ++i) {
     VectorXd tp = t, tm = t;
     tp[i] += h[i];
     tm[i] -= h[i];
-    jac.col(i) = (residuals(p, tp) - residuals(p, tm)) / (2.0 * h[i]);
+    if (i == p.layout.omega() || i == p.layout.phase()) {
+      jac.col(i) = (residuals(p, tp) - residuals(p, tm)) / (2.0 * h[i]);
+    } else if (i < p.layout.n) {
+      const MatrixXd step = h[i] * synthesizeFrames(p.model.eigenwalkers.col(i), t[p.layout.omega()],
+                                                    t[p.layout.phase()], p.timesS);
+      jac.col(i) = (residualsOfFrames(p, frames + step, tp) - r0) / h[i];
+    } else {
+      jac.col(i) = (residualsOfFrames(p, frames, tp) - r0) / h[i];
+    }
   }
   return jac;
 }
@@ -153,7 +189,9 @@ LmResult levenbergMarquardt(const Problem& p, VectorXd t, int maxIterations) {
   int it = 0;
   for (; it < maxIterations; ++it) {
     const MatrixXd jac = jacobian(p, t, r);
-    const MatrixXd jtj = jac.transpose() * jac;
+    MatrixXd jtj = MatrixXd::Zero(t.size(), t.size());
+    jtj.selfadjointView<Eigen::Lower>().rankUpdate(jac.transpose());
+    jtj.triangularView<Eigen::StrictlyUpper>() = jtj.transpose();
     const VectorXd g = jac.transpose() * r;
     bool improved = false;
     for (int tries = 0; tries < 12 && !improved; ++tries) {
@@ -344,24 +382,30 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
   }
   const OrthoStart start = orthographicStart(model, jointsPx, times, unseen, o);
   const bool pinhole = o.focalPx.has_value() || o.estimateFocal;
-  Problem p{model, {static_cast<int>(model.eigenvalues.size()), pinhole, pinhole && !o.focalPx}, o.focalPx.value_or(0.0),
-            jointsPx, times, 1.0 / start.pxPerMm, 1.0, {}, {}};
-  for (Eigen::Index i = 0; i < jointsPx.size(); ++i)
-    if (std::isfinite(jointsPx.data()[i])) p.seen.push_back(static_cast<int>(i));
-  p.dataWeight = 1.0 / std::sqrt(0.5 * static_cast<double>(p.seen.size()) / kJointCount);
-  if (o.estimator.estimator == Estimator::Map)
-    p.priorWeight = (o.estimator.sigma2Mm2 / model.eigenvalues.cwiseMax(1e-12).array()).sqrt().matrix();
+  const Layout layout{static_cast<int>(model.eigenvalues.size()), pinhole, pinhole && !o.focalPx};
+  const Problem p = makeProblem(model, layout, o.focalPx.value_or(0.0), jointsPx, times, 1.0 / start.pxPerMm,
+                                o.estimator, 1);
+  // Screening sees every few frames (the walk is smooth; ~8 frames a stride are plenty).
+  const int stride = std::max(1, static_cast<int>(rateHz / (kScreeningFramesPerStride * start.fit.omegaRadS / (2 * std::numbers::pi))));
+  const Problem coarse = makeProblem(model, layout, o.focalPx.value_or(0.0), jointsPx, times, 1.0 / start.pxPerMm,
+                                     o.estimator, stride);
   std::vector<std::pair<VectorXd, CameraStart>> results;
   const int minima = std::min<int>(o.startCount, static_cast<int>(start.search.minima.size()));
   const ModelGram gram = precomputeModelGram(model, fit.unseenJoints);
   std::vector<std::pair<LmResult, double>> screened;  // (short run, start α)
+  std::vector<double> startAngles;
   for (int m = 0; m < minima; ++m) {
     const double found = start.search.minima[static_cast<std::size_t>(m)].alphaDeg;
     for (double alpha : {found, -found}) {
       for (double offset : kRelatedOffsetsDeg) {
-        const Reconstruction rec = reconstructKnownView(gram, start.fit.w, wrapDeg(alpha + offset), o.estimator);
+        const double a = wrapDeg(alpha + offset);
+        const bool tried = std::any_of(startAngles.begin(), startAngles.end(),
+                                       [&](double b) { return std::abs(wrapDeg(a - b)) < kSameStartDeg; });
+        if (tried) continue;
+        startAngles.push_back(a);
+        const Reconstruction rec = reconstructKnownView(gram, start.fit.w, a, o.estimator);
         for (double elevation : kStartElevationsDeg)
-          screened.emplace_back(levenbergMarquardt(p, startTheta(p, start, rec, elevation), kScreeningIterations),
+          screened.emplace_back(levenbergMarquardt(coarse, startTheta(coarse, start, rec, elevation), kScreeningIterations),
                                 rec.alphaDeg);
       }
     }
@@ -370,7 +414,7 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
                    [](const auto& a, const auto& b) { return a.first.cost < b.first.cost; });
   for (std::size_t i = 0; i < screened.size(); ++i) {
     const bool refine = static_cast<int>(i) < kRefinedStarts;
-    const LmResult lm = refine ? levenbergMarquardt(p, screened[i].first.theta, o.maxIterations) : screened[i].first;
+    const LmResult lm = refine ? levenbergMarquardt(coarse, screened[i].first.theta, o.maxIterations) : screened[i].first;
     CameraFit trial;
     fillOutputs(p, lm.theta, trial);
     results.emplace_back(lm.theta, CameraStart{screened[i].second, wrapDeg(trial.camera.alphaDeg),
@@ -384,7 +428,13 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
   });
   if (results.empty() || !(results.front().second.speedMmS > 0))
     badData(o.file, "no start converged to a walker moving forward");
-  fillOutputs(p, results.front().first, fit);
+  // The best, finished on every frame.
+  const LmResult best = levenbergMarquardt(p, results.front().first, o.maxIterations);
+  results.front().first = best.theta;
+  results.front().second.objective = best.cost;
+  results.front().second.iterations += best.iterations;
+  fillOutputs(p, best.theta, fit);
+  results.front().second.reprojectionRmsPx = fit.reprojectionRmsPx;
   fit.camera.alphaDeg = wrapDeg(fit.camera.alphaDeg);
   fit.objective = results.front().second.objective;
   for (const auto& r : results) fit.starts.push_back(r.second);
