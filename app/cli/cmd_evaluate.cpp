@@ -165,14 +165,17 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "  missing_joints.csv subject,missing,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm\n"
       "  lower_body.csv     subject,walker,estimated_joint,method,mpjpe_mm (pelvis, hips, knees, ankles kept in\n"
       "                     3D; the other joints estimated from the model; method map, lsq or mean = baseline)\n"
+      "  camera.csv         one row per held-out walker x random camera x pixel noise: the clip written as\n"
+      "                     OpenPose JSON, read back and reconstructed with everything unknown (--experiment\n"
+      "                     camera only, not in all; docs/CAMERA.md)\n"
       "  summary.json, fig*.png. DIR is written to a temporary sibling and renamed into place.");
   cmd->add_option("--data", args->data, "Trial files, folders (recursive) or manifest CSVs")->required();
   cmd->add_option("--out", args->out, "Output folder (replaced only after success)")->required();
   cmd->add_option("--experiment", args->experiments,
-                  "variance, sigma-sweep, known-view, unknown-view, noise, missing-joints, lower-body or all "
+                  "variance, sigma-sweep, known-view, unknown-view, noise, missing-joints, lower-body, camera or all "
                   "(repeat or comma-separate)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "lower-body", "all"}))
+      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "lower-body", "camera", "all"}))
       ->capture_default_str();
   cmd->add_option("--angles", args->angles, "View angles in degrees: FROM:TO:STEP or a list a,b,c")->capture_default_str();
   cmd->add_option("--method", args->method, "lsq, map or both")

@@ -27,13 +27,14 @@ constexpr double kStartElevationsDeg[] = {5.0, 25.0};
 constexpr double kRelatedOffsetsDeg[] = {0.0, 180.0};
 // Every start runs this many iterations; the best few then run to convergence.
 constexpr int kScreeningIterations = 12;
-constexpr int kRefinedStarts = 3;
+constexpr int kRefinedStarts = 5;
 // Elevations outside this range are no camera filming a walk: a steep penalty.
 constexpr double kMinElevationDeg = -30.0, kMaxElevationDeg = 80.0;
 constexpr double kStartDistanceMm = 5000.0;
 // Starts closer than this in α are one start (the minima of a profile often come in pairs).
 constexpr double kSameStartDeg = 5.0;
 constexpr double kScreeningFramesPerStride = 8.0;
+constexpr double kMaxRmsOfHeight = 0.10;
 
 [[noreturn]] void badData(const std::string& file, const std::string& what) {
   throw Error(ErrorKind::BadData, file, "", "camera reconstruction: " + what);
@@ -247,12 +248,15 @@ Eigen::Vector2d lineFit(const VectorXd& x, const VectorXd& t) {
   return a.ldlt().solve(b);
 }
 
-// Head above the mean ankle, cycle mean, of a 3D walker (mm) or, in the image, in pixels.
-double modelHeadHeightMm(const VectorXd& w) {
+}  // namespace
+
+double walkerHeadHeightMm(const VectorXd& w) {
   const MatrixXd f = synthesizeFrames(w, 2 * std::numbers::pi, 0.0, frameTimes(50, 50.0));
   const VectorXd ankles = 0.5 * (f.col(3 * index(Joint::LAnkle) + 2) + f.col(3 * index(Joint::RAnkle) + 2));
   return (f.col(3 * index(Joint::Head) + 2) - ankles).mean();
 }
+
+namespace {
 
 // Head-to-ankle height of the walker in each frame of the image (NaN where unseen).
 VectorXd imageHeightsPx(const MatrixXd& px) {
@@ -280,7 +284,7 @@ OrthoStart orthographicStart(const EigenwalkerModel& model, const MatrixXd& px, 
   // The walker's image size along the clip (a line through the per-frame heights: a walker
   // coming closer grows), and its progression (a line through the pelvis) are taken out,
   // leaving a near-orthographic view of the walk in model millimetres.
-  const double modelHeight = modelHeadHeightMm(model.mean);
+  const double modelHeight = walkerHeadHeightMm(model.mean);
   const Eigen::Vector2d height = lineFit(imageHeightsPx(px), times);
   const double midT = 0.5 * (times[0] + times[times.size() - 1]);
   s.pxPerMm = (height[0] + height[1] * midT) / modelHeight;
@@ -358,7 +362,7 @@ void fillOutputs(const Problem& p, const VectorXd& t, CameraFit& fit) {
   double sq = 0.0;
   for (int i : p.seen) sq += std::pow(image.data()[i] - p.observed.data()[i], 2);
   fit.reprojectionRmsPx = std::sqrt(sq / static_cast<double>(p.seen.size()));
-  fit.headHeightMm = modelHeadHeightMm(fit.w);
+  fit.headHeightMm = walkerHeadHeightMm(fit.w);
   fit.strideHz = fit.omegaRadS / (2 * std::numbers::pi);
   fit.speedMps = fit.camera.speedMmS / 1000.0;
   fit.strideLengthM = fit.strideHz > 0 ? fit.speedMps / fit.strideHz : 0.0;
@@ -435,6 +439,13 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
   results.front().second.iterations += best.iterations;
   fillOutputs(p, best.theta, fit);
   results.front().second.reprojectionRmsPx = fit.reprojectionRmsPx;
+  // A fit that misses the image by more than a few percent of the walker's height is a
+  // wrong basin, not an answer (good fits: 1-3 %, 7 % for a 140 px walker at 5 px noise; wrong basins 19-43 %).
+  const double heightPx = start.pxPerMm * walkerHeadHeightMm(model.mean);
+  if (fit.reprojectionRmsPx > kMaxRmsOfHeight * heightPx)
+    badData(o.file, "no start fits the image (best reprojection RMS " + std::to_string(fit.reprojectionRmsPx) +
+                        " px, more than " + std::to_string(static_cast<int>(100 * kMaxRmsOfHeight)) +
+                        " % of the walker's " + std::to_string(static_cast<int>(heightPx)) + " px height)");
   fit.camera.alphaDeg = wrapDeg(fit.camera.alphaDeg);
   fit.objective = results.front().second.objective;
   for (const auto& r : results) fit.starts.push_back(r.second);

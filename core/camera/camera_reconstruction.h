@@ -45,6 +45,10 @@ struct CameraFit {
   std::vector<int> unseenJoints;    // joints with no image data (estimated by the model)
 };
 
+// A 3D walker's head centre above its ankles (the mean of the two), cycle mean, mm: the
+// "height" the fit reports, and its truth in the experiment.
+double walkerHeadHeightMm(const Eigen::VectorXd& w);
+
 // jointsPx: T × 30 (u, v per joint, SPEC §1 order), NaN = not seen. Throws Error(BadData)
 // naming options.file when fewer than 8 frames or no start converges to a walker moving
 // forward, Error(BadArgument) for a focal length that is not positive and finite.

@@ -147,6 +147,7 @@ std::string experimentName(Experiment e) {
     case Experiment::Noise: return "noise";
     case Experiment::MissingJoints: return "missing-joints";
     case Experiment::LowerBody: return "lower-body";
+    case Experiment::Camera: return "camera";
   }
   return "";
 }
@@ -163,6 +164,7 @@ std::optional<Experiment> experimentFromName(const std::string& name) {
   for (Experiment e : allExperiments()) {
     if (experimentName(e) == name) return e;
   }
+  if (name == experimentName(Experiment::Camera)) return Experiment::Camera;
   return std::nullopt;
 }
 
@@ -537,6 +539,12 @@ EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
   timed(Experiment::MissingJoints, [&] { res.missingJoints = missingJointErrors(walkers, folds, options, s2); });
   timed(Experiment::LowerBody, [&] {
     res.lowerBody = lowerBodyErrors(walkers, folds, options.lsq, options.map, s2, options.threads);
+  });
+  timed(Experiment::Camera, [&] {
+    CameraExperimentOptions camera;
+    camera.sigma2Mm2 = s2;
+    camera.threads = options.threads;
+    res.camera = cameraErrors(walkers, folds, camera);
   });
   return res;
 }

@@ -95,6 +95,19 @@ std::string lowerBodyCsv(const std::vector<LowerBodyRow>& rows) {
   });
 }
 
+std::string cameraCsv(const std::vector<CameraRow>& rows) {
+  return csv(kCameraHeader, rows, [](const CameraRow& r) {
+    // The error text may hold commas: quoted, inner quotes doubled (RFC 4180).
+    std::string error = r.error;
+    for (std::size_t i = 0; (i = error.find('"', i)) != std::string::npos; i += 2) error.insert(i, "\"");
+    return join({r.subject, r.walker, std::to_string(r.camera), num(r.noisePx), r.bystander ? "1" : "0",
+                 std::to_string(r.frames), num(r.trueAlphaDeg), num(r.trueElevationDeg), num(r.trueFocalPx),
+                 num(r.trueDistanceM), num(r.alphaDeg), num(r.elevationDeg), num(r.focalPx), num(r.distanceM),
+                 num(r.alphaErrorDeg), num(r.elevationErrorDeg), num(r.focalRelError), num(r.heightRelError),
+                 num(r.mpjpeMm), num(r.reprojectionRmsPx), error.empty() ? "" : "\"" + error + "\""});
+  });
+}
+
 // [SECTION] summary.json
 
 namespace {
@@ -183,6 +196,18 @@ std::string summaryJson(const EvaluationResults& r, const EvaluationProvenance& 
     for (const auto& m : summarizeLowerBody(r.lowerBody)) lower[m.method][m.joint] = m.meanMpjpeMm;
     s["lower_body_estimated_mpjpe_mm"] = lower;
   }
+  if (r.ran.count(Experiment::Camera)) {
+    json camera = json::array();  // per noise level (px)
+    for (const auto& c : summarizeCamera(r.camera)) {
+      camera.push_back({{"noise_px", c.noisePx}, {"clips", c.clips}, {"failures", c.failures},
+                        {"mean_mpjpe_mm", c.meanMpjpeMm}, {"median_alpha_error_deg", c.medianAlphaErrorDeg},
+                        {"median_elevation_error_deg", c.medianElevationErrorDeg},
+                        {"median_focal_rel_error", c.medianFocalRelError},
+                        {"median_height_rel_error", c.medianHeightRelError},
+                        {"height_within_5_percent_share", c.heightWithin5Share}});
+    }
+    s["camera"] = camera;
+  }
   json timings = json::object();
   for (const auto& [name, seconds] : r.timingsS) timings[name] = seconds;
   s["timings_s"] = timings;
@@ -239,6 +264,7 @@ std::vector<std::string> writeResultsFolder(const fs::path& dir, const Evaluatio
     if (r.ran.count(Experiment::Noise)) add("noise.csv", noiseCsv(r.noise));
     if (r.ran.count(Experiment::MissingJoints)) add("missing_joints.csv", missingJointsCsv(r.missingJoints));
     if (r.ran.count(Experiment::LowerBody)) add("lower_body.csv", lowerBodyCsv(r.lowerBody));
+    if (r.ran.count(Experiment::Camera)) add("camera.csv", cameraCsv(r.camera));
     if (options.plots) {
       for (const auto& name : writeEvaluationPlots(partial, r)) {
         written.push_back(name);

@@ -21,6 +21,10 @@ inline constexpr const char* kUnknownViewHeader = "subject,true_angle_deg,method
 inline constexpr const char* kNoiseHeader = "subject,noise_mm,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm";
 inline constexpr const char* kMissingJointsHeader = "subject,missing,angle_deg,method,abs_error_mm2,rel_error,var_missing_mm2,mpjpe_mm";
 inline constexpr const char* kLowerBodyHeader = "subject,walker,estimated_joint,method,mpjpe_mm";
+inline constexpr const char* kCameraHeader =
+    "subject,walker,camera,noise_px,bystander,frames,true_alpha_deg,true_elevation_deg,true_focal_px,"
+    "true_distance_m,alpha_deg,elevation_deg,focal_px,distance_m,alpha_error_deg,elevation_error_deg,"
+    "focal_rel_error,height_rel_error,mpjpe_mm,reprojection_rms_px,error";
 
 std::string harmonicsCsv(const std::vector<HarmonicsRow>& rows);
 std::string varianceCsv(const std::vector<VarianceRow>& rows);
@@ -30,6 +34,7 @@ std::string unknownViewCsv(const std::vector<UnknownViewRow>& rows);
 std::string noiseCsv(const std::vector<ViewErrorRow>& rows);
 std::string missingJointsCsv(const std::vector<ViewErrorRow>& rows);
 std::string lowerBodyCsv(const std::vector<LowerBodyRow>& rows);
+std::string cameraCsv(const std::vector<CameraRow>& rows);
 
 // What produced the results (recorded in summary.json).
 struct EvaluationProvenance {

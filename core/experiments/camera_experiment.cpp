@@ -1,0 +1,253 @@
+#include "core/experiments/camera_experiment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+#include <random>
+#include <unistd.h>
+
+#include "core/camera/camera_reconstruction.h"
+#include "core/camera/walk_camera.h"
+#include "core/common/errors.h"
+#include "core/engine/fourier.h"
+#include "core/engine/projection.h"
+#include "core/keypoints/image_gait.h"
+#include "core/keypoints/keypoint_trial.h"
+#include "core/keypoints/openpose_writer.h"
+
+namespace ew {
+namespace {
+
+namespace fs = std::filesystem;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+constexpr double kImageW = 1920, kImageH = 1080;
+constexpr double kClipS = 10.0;            // filmed; the clip is the part in the image
+constexpr double kMinStrides = 1.5;
+constexpr double kWalkerFitHeightMm = 1900;  // head top plus margin must fit 85 % of the image
+constexpr int kMaxCameraDraws = 50;
+
+[[noreturn]] void bad(const std::string& what) { throw Error(ErrorKind::BadArgument, "", "", "camera: " + what); }
+
+void checkOptions(const CameraExperimentOptions& o) {
+  if (o.camerasPerWalker < 1) bad("at least one camera per walker");
+  for (double n : o.noisePx)
+    if (!(std::isfinite(n) && n >= 0)) bad("noise levels must be finite and >= 0");
+  if (o.noisePx.empty()) bad("no noise level");
+  if (!(o.dropShare >= 0 && o.dropShare <= 1) || !(o.bystanderShare >= 0 && o.bystanderShare <= 1))
+    bad("shares must be within [0, 1]");
+  if (!(std::isfinite(o.sigma2Mm2) && o.sigma2Mm2 >= 0)) bad("sigma2 must be finite and >= 0");
+  if (!(o.fps >= 1 && o.fps <= 240)) bad("the frame rate must be 1-240 fps");
+}
+
+struct Clip {
+  WalkCamera camera;
+  VectorXd times;    // of the kept frames
+  MatrixXd truth;    // T × 45 canonical frames of the walker
+  MatrixXd px;       // T × 30 clean image positions
+};
+
+// The longest run of frames whose pelvis is inside the image.
+std::pair<Eigen::Index, Eigen::Index> longestInside(const MatrixXd& px) {
+  std::pair<Eigen::Index, Eigen::Index> best{0, 0};
+  Eigen::Index begin = -1;
+  for (Eigen::Index f = 0; f <= px.rows(); ++f) {
+    const bool in = f < px.rows() && px(f, 2 * index(Joint::Pelvis)) >= 0 && px(f, 2 * index(Joint::Pelvis)) < kImageW &&
+                    px(f, 2 * index(Joint::Pelvis) + 1) >= 0 && px(f, 2 * index(Joint::Pelvis) + 1) < kImageH;
+    if (in && begin < 0) begin = f;
+    if (!in && begin >= 0) {
+      if (f - begin > best.second - best.first) best = {begin, f};
+      begin = -1;
+    }
+  }
+  return best;
+}
+
+// A random camera filming the walker; redrawn until the clip holds kMinStrides strides.
+Clip filmWalker(const ExperimentWalker& w, double fps, std::mt19937& rng) {
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  const int n = static_cast<int>(kClipS * fps);
+  const VectorXd all = frameTimes(n, fps);
+  const MatrixXd frames = synthesizeFrames(w.fit.w, w.fit.omegaRadS, 0.0, all);
+  const double strideS = 2 * std::numbers::pi / w.fit.omegaRadS;
+  for (int draw = 0; draw < kMaxCameraDraws; ++draw) {
+    WalkCamera c;
+    c.model = CameraModel::Pinhole;
+    c.alphaDeg = -180.0 + 360.0 * uni(rng);
+    c.elevationDeg = 30.0 * uni(rng);
+    c.focalPx = 800.0 + 2200.0 * uni(rng);
+    const double fitsMm = c.focalPx * kWalkerFitHeightMm / (0.85 * kImageH);
+    const double lo = std::max(3500.0, fitsMm), hi = std::max(8000.0, lo + 1000.0);
+    c.distanceMm = lo + (hi - lo) * uni(rng);
+    c.cxPx = kImageW / 2;
+    c.cyPx = kImageH / 2;
+    c.lookAtHeightMm = 1000.0;
+    c.speedMmS = 1100.0 + 400.0 * uni(rng);
+    c.startOffsetMm = -c.speedMmS * kClipS / 2;
+    const MatrixXd px = projectWalk(frames, all, c);
+    const auto [a, b] = longestInside(px);
+    if (static_cast<double>(b - a) / fps < kMinStrides * strideS) continue;
+    return {c, all.segment(a, b - a), frames.middleRows(a, b - a), px.middleRows(a, b - a)};
+  }
+  throw Error(ErrorKind::BadData, w.id, "", "camera: no camera draw kept the walker in the image for 1.5 strides");
+}
+
+// Someone standing still: the walker's first pose, smaller, elsewhere in the image.
+MatrixXd bystander(const MatrixXd& px, std::mt19937& rng) {
+  std::uniform_real_distribution<double> uni(0.0, 1.0);
+  const Eigen::RowVectorXd pose = px.row(0);
+  Eigen::RowVectorXd moved(pose.size());
+  const double u0 = pose[2 * index(Joint::Pelvis)], v0 = pose[2 * index(Joint::Pelvis) + 1];
+  const double u = 200 + (kImageW - 400) * uni(rng), scale = 0.7;
+  for (int j = 0; j < kJointCount; ++j) {
+    moved[2 * j] = u + scale * (pose[2 * j] - u0);
+    moved[2 * j + 1] = v0 + scale * (pose[2 * j + 1] - v0);
+  }
+  return moved.replicate(px.rows(), 1);
+}
+
+double mpjpeWithoutTranslation(const MatrixXd& rec, const MatrixXd& truth) {
+  const MatrixXd d = rec - truth;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int j = 0; j < kJointCount; ++j) mean += d.middleCols<3>(3 * j).colwise().mean().transpose();
+  mean /= kJointCount;
+  double sum = 0;
+  for (Eigen::Index f = 0; f < d.rows(); ++f)
+    for (int j = 0; j < kJointCount; ++j) sum += (d.block<1, 3>(f, 3 * j).transpose() - mean).norm();
+  return sum / static_cast<double>(d.rows() * kJointCount);
+}
+
+fs::path clipFolder(int index) {
+  return fs::temp_directory_path() /
+         ("eigenwalker_camera_" + std::to_string(::getpid()) + "_" + std::to_string(index));
+}
+
+void reconstructClip(const Fold& fold, const ExperimentWalker& w, const Clip& clip, const MatrixXd& observed,
+                     const MatrixXd& confidence, const MatrixXd* other, const CameraExperimentOptions& o,
+                     int index, CameraRow& row) {
+  const fs::path folder = clipFolder(index);
+  fs::remove_all(folder);
+  std::vector<OpenPosePerson> people{{observed, confidence}};
+  if (other) people.push_back({*other, MatrixXd()});
+  writeOpenPoseBody25(folder, people);
+  try {
+    KeypointOptions k;
+    k.fps = o.fps;
+    const KeypointTrial t = readKeypointTrial(folder, k);
+    CameraFitOptions f;
+    f.estimator = {Estimator::Map, o.sigma2Mm2};
+    f.strideHzHint = imageGaitCycles(t).strideHz;
+    f.file = folder.string();
+    const CameraFit fit = reconstructUnknownCamera(fold.model, t.jointsPx, t.rateHz, f);
+    row.alphaDeg = fit.camera.alphaDeg;
+    row.elevationDeg = fit.camera.elevationDeg;
+    row.focalPx = fit.camera.focalPx;
+    row.distanceM = fit.camera.distanceMm / 1000;
+    row.alphaErrorDeg = std::abs(wrapDeg(fit.camera.alphaDeg - clip.camera.alphaDeg));
+    row.elevationErrorDeg = std::abs(fit.camera.elevationDeg - clip.camera.elevationDeg);
+    row.focalRelError = std::abs(fit.camera.focalPx - clip.camera.focalPx) / clip.camera.focalPx;
+    const double height = walkerHeadHeightMm(w.fit.w);
+    row.heightRelError = std::abs(fit.headHeightMm - height) / height;
+    const VectorXd times = frameTimes(static_cast<int>(clip.times.size()), o.fps);
+    row.mpjpeMm = mpjpeWithoutTranslation(synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, times), clip.truth);
+    row.reprojectionRmsPx = fit.reprojectionRmsPx;
+  } catch (const std::exception& e) {
+    row.error = e.what();
+  }
+  fs::remove_all(folder);
+}
+
+}  // namespace
+
+std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers, const std::vector<Fold>& folds,
+                                    const CameraExperimentOptions& o) {
+  checkOptions(o);
+  struct Job {
+    int fold, walker, camera;
+  };
+  std::vector<Job> jobs;
+  for (std::size_t f = 0; f < folds.size(); ++f)
+    for (int w : folds[f].testWalkers) {
+      if (w < 0 || w >= static_cast<int>(walkers.size())) bad("a fold's test walker is not among the walkers");
+      for (int c = 0; c < o.camerasPerWalker; ++c) jobs.push_back({static_cast<int>(f), w, c});
+    }
+  const std::size_t levels = o.noisePx.size();
+  std::vector<CameraRow> rows(jobs.size() * levels);
+  parallelFor(static_cast<int>(jobs.size()), o.threads, [&](int j) {
+    const Job& job = jobs[static_cast<std::size_t>(j)];
+    const ExperimentWalker& w = walkers[static_cast<std::size_t>(job.walker)];
+    // One generator per (walker, camera): the same camera and bystander at every noise level.
+    std::mt19937 rng(o.seed + 7919u * static_cast<unsigned>(job.walker) + 104729u * static_cast<unsigned>(job.camera));
+    const Clip clip = filmWalker(w, o.fps, rng);
+    std::uniform_real_distribution<double> uni(0.0, 1.0);
+    const bool withBystander = uni(rng) < o.bystanderShare;
+    const MatrixXd other = withBystander ? bystander(clip.px, rng) : MatrixXd();
+    for (std::size_t l = 0; l < levels; ++l) {
+      std::normal_distribution<double> noise(0.0, 1.0);
+      MatrixXd observed = clip.px;
+      for (Eigen::Index i = 0; i < observed.size(); ++i) observed.data()[i] += o.noisePx[l] * noise(rng);
+      MatrixXd confidence = MatrixXd::Constant(observed.rows(), kJointCount, 0.9);
+      for (Eigen::Index i = 0; i < confidence.size(); ++i)
+        if (uni(rng) < o.dropShare) confidence.data()[i] = 0.1;
+      CameraRow& row = rows[static_cast<std::size_t>(j) * levels + l];
+      row.subject = w.subject;
+      row.walker = w.id;
+      row.camera = job.camera;
+      row.noisePx = o.noisePx[l];
+      row.bystander = withBystander;
+      row.frames = static_cast<int>(clip.times.size());
+      row.trueAlphaDeg = clip.camera.alphaDeg;
+      row.trueElevationDeg = clip.camera.elevationDeg;
+      row.trueFocalPx = clip.camera.focalPx;
+      row.trueDistanceM = clip.camera.distanceMm / 1000;
+      reconstructClip(folds[static_cast<std::size_t>(job.fold)], w, clip, observed, confidence,
+                      withBystander ? &other : nullptr, o, j * static_cast<int>(levels) + static_cast<int>(l), row);
+    }
+  });
+  return rows;
+}
+
+std::vector<CameraSummary> summarizeCamera(const std::vector<CameraRow>& rows) {
+  std::map<double, std::vector<const CameraRow*>> byNoise;
+  for (const auto& r : rows) byNoise[r.noisePx].push_back(&r);
+  const auto median = [](std::vector<double> v) {
+    if (v.empty()) return std::nan("");
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  };
+  std::vector<CameraSummary> out;
+  for (const auto& [noise, list] : byNoise) {
+    CameraSummary s;
+    s.noisePx = noise;
+    s.clips = static_cast<int>(list.size());
+    std::vector<double> alpha, elevation, focal, height;
+    double mpjpe = 0;
+    int within = 0;
+    for (const auto* r : list) {
+      if (!r->error.empty()) {
+        ++s.failures;
+        continue;
+      }
+      mpjpe += r->mpjpeMm;
+      alpha.push_back(r->alphaErrorDeg);
+      elevation.push_back(r->elevationErrorDeg);
+      focal.push_back(r->focalRelError);
+      height.push_back(r->heightRelError);
+      within += r->heightRelError <= 0.05;
+    }
+    const int ok = s.clips - s.failures;
+    s.meanMpjpeMm = ok ? mpjpe / ok : std::nan("");
+    s.medianAlphaErrorDeg = median(alpha);
+    s.medianElevationErrorDeg = median(elevation);
+    s.medianFocalRelError = median(focal);
+    s.medianHeightRelError = median(height);
+    s.heightWithin5Share = ok ? static_cast<double>(within) / ok : 0.0;
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace ew

@@ -1,0 +1,62 @@
+#pragma once
+// Experiment "camera" (issue 13): each held-out walker filmed by random real cameras and
+// reconstructed with everything unknown, through the whole user path — the clip is written
+// as OpenPose BODY_25 JSON, read back, cleaned (core/keypoints) and reconstructed
+// (core/camera/camera_reconstruction.h) with the fold's model (docs/CAMERA.md).
+//
+// Cameras: azimuth uniform over the circle, elevation 0-30°, focal 800-3000 px, distance
+// 3.5-8 m (further when the walker would not fit the 1080 px height), 1920 × 1080 image,
+// looking at 1 m height where the walker passes mid-clip; the walker crosses at 1.1-1.5 m/s
+// and the clip is the longest run of frames with its pelvis in the image (at least 1.5
+// strides). Keypoints: Gaussian pixel noise per level, a share of joint samples given low
+// confidence (dropped by the reader), and in a share of clips a person standing still.
+// Errors: MPJPE over the clip's frames after removing the mean translation (mm), |α̂ − α|,
+// |ε̂ − ε| (degrees), focal length and head-height relative errors.
+
+#include <string>
+#include <vector>
+
+#include "core/experiments/leave_one_out.h"
+
+namespace ew {
+
+struct CameraExperimentOptions {
+  int camerasPerWalker = 3;
+  std::vector<double> noisePx{0.0, 2.0, 5.0};
+  double dropShare = 0.03;
+  double bystanderShare = 1.0 / 3.0;
+  unsigned seed = 2026;
+  double sigma2Mm2 = 1000.0;
+  double fps = 30.0;
+  int threads = 1;
+};
+
+struct CameraRow {
+  std::string subject, walker;
+  int camera = 0;           // 0 … camerasPerWalker − 1 (the same camera at every noise level)
+  double noisePx = 0.0;
+  bool bystander = false;
+  int frames = 0;
+  double trueAlphaDeg = 0, trueElevationDeg = 0, trueFocalPx = 0, trueDistanceM = 0;
+  double alphaDeg = 0, elevationDeg = 0, focalPx = 0, distanceM = 0;
+  double alphaErrorDeg = 0, elevationErrorDeg = 0, focalRelError = 0, heightRelError = 0;
+  double mpjpeMm = 0, reprojectionRmsPx = 0;
+  std::string error;        // empty: reconstructed; else why not (a failure)
+};
+
+// Error(BadArgument) "camera: …" for no cameras, a negative or non-finite noise level, a
+// share outside [0, 1], σ² negative, a frame rate outside 1-240, or folds not of `walkers`.
+std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers, const std::vector<Fold>& folds,
+                                    const CameraExperimentOptions& options);
+
+// Per noise level: mean MPJPE, medians of |α error|, |elevation error|, focal relative
+// error, share of heights within 5 %, failures.
+struct CameraSummary {
+  double noisePx = 0;
+  int clips = 0, failures = 0;
+  double meanMpjpeMm = 0, medianAlphaErrorDeg = 0, medianElevationErrorDeg = 0, medianFocalRelError = 0;
+  double medianHeightRelError = 0, heightWithin5Share = 0;
+};
+std::vector<CameraSummary> summarizeCamera(const std::vector<CameraRow>& rows);
+
+}  // namespace ew
