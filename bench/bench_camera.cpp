@@ -4,62 +4,24 @@
 // 12° above, keypoints placed as a detector would (docs/CAMERA.md).
 #include <benchmark/benchmark.h>
 
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
-#include <numbers>
 
 #include "core/camera/camera_reconstruction.h"
-#include "core/camera/walk_camera.h"
 #include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
 #include "core/keypoints/image_gait.h"
 #include "core/keypoints/keypoint_trial.h"
+#include "tests/camera/filmed_walk.h"
 
 namespace {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
 
 constexpr int kFrames = 300;
 
 fs::path writeClip() {
-  ew::WalkCamera c;
-  c.model = ew::CameraModel::Pinhole;
-  c.alphaDeg = 40;
-  c.elevationDeg = 12;
-  c.focalPx = 1400;
-  c.distanceMm = 6000;
-  c.cxPx = 960;
-  c.cyPx = 540;
-  c.lookAtHeightMm = 900;
-  c.speedMmS = 1300;
-  c.startOffsetMm = -1300 * 5.0;
-  const Eigen::VectorXd t = ew::frameTimes(kFrames, 30.0);
-  const Eigen::MatrixXd px = ew::projectWalk(
-      ew::synthesizeFrames(ew::defaultRealModel().mean, 2 * std::numbers::pi * 0.95, 0.2, t), t, c);
   const fs::path dir = fs::temp_directory_path() / "eigenwalker_bench_camera";
   fs::remove_all(dir);
-  fs::create_directories(dir);
-  using ew::Joint;
-  for (int f = 0; f < kFrames; ++f) {
-    const auto p = [&](Joint j, double du = 0, double dv = 0) {
-      return std::pair{px(f, 2 * ew::index(j)) + du, px(f, 2 * ew::index(j) + 1) + dv};
-    };
-    const std::vector<std::pair<double, double>> points = {
-        p(Joint::Head, 0, 8), p(Joint::Sternum), p(Joint::RShoulder), p(Joint::RElbow), p(Joint::RWrist),
-        p(Joint::LShoulder), p(Joint::LElbow), p(Joint::LWrist), p(Joint::Pelvis), p(Joint::RHip),
-        p(Joint::RKnee), p(Joint::RAnkle), p(Joint::LHip), p(Joint::LKnee), p(Joint::LAnkle),
-        p(Joint::Head, -3, -4), p(Joint::Head, 3, -4), p(Joint::Head, -6, 0), p(Joint::Head, 6, 0),
-        p(Joint::LAnkle, 5, 10), p(Joint::LAnkle, 7, 10), p(Joint::LAnkle, -3, 8), p(Joint::RAnkle, 5, 10),
-        p(Joint::RAnkle, 7, 10), p(Joint::RAnkle, -3, 8)};
-    json flat = json::array();
-    for (const auto& [u, v] : points) flat.insert(flat.end(), {u, v, 0.9});
-    char name[64];
-    std::snprintf(name, sizeof name, "walk_%06d_keypoints.json", f);
-    std::ofstream(dir / name) << json{{"people", {{{"pose_keypoints_2d", flat}}}}}.dump();
-  }
+  ew::test::writeFilmedOpenPose(dir, ew::test::crossingPinhole(1400, kFrames / 30.0), kFrames, 30.0);
   return dir;
 }
 

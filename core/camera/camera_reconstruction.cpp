@@ -10,6 +10,7 @@
 #include "core/engine/fourier.h"
 #include "core/engine/joint_completion.h"
 #include "core/engine/projection.h"
+#include "core/gait/gaps.h"
 #include "core/gait/missing_joints.h"
 
 namespace ew {
@@ -218,23 +219,6 @@ LmResult levenbergMarquardt(const Problem& p, VectorXd t, int maxIterations) {
 
 // [SECTION] Start: the orthographic view-angle search --------------------------------------------
 
-// Missing samples filled linearly per column (held at the ends) for the start's Fourier fit.
-MatrixXd filled(MatrixXd m) {
-  for (Eigen::Index c = 0; c < m.cols(); ++c) {
-    auto x = m.col(c);
-    Eigen::Index last = -1;
-    for (Eigen::Index i = 0; i < x.size(); ++i) {
-      if (!std::isfinite(x[i])) continue;
-      if (last < 0) x.head(i).setConstant(x[i]);
-      for (Eigen::Index k = last + 1; last >= 0 && k < i; ++k)
-        x[k] = x[last] + (x[i] - x[last]) * static_cast<double>(k - last) / static_cast<double>(i - last);
-      last = i;
-    }
-    if (last >= 0) x.tail(x.size() - last - 1).setConstant(x[last]);
-  }
-  return m;
-}
-
 // Least-squares line a + b t through the finite samples of x.
 Eigen::Vector2d lineFit(const VectorXd& x, const VectorXd& t) {
   Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
@@ -299,7 +283,9 @@ OrthoStart orthographicStart(const EigenwalkerModel& model, const MatrixXd& px, 
       mm(f, 2 * j + 1) = -(px(f, 2 * j + 1) - s.pelvisV[0] - s.pelvisV[1] * times[f]) / scale;
     }
   }
-  MatrixXd seen = filled(mm);
+  // Every sample filled for the start's Fourier fit (it drops any frame with a gap).
+  MatrixXd seen = mm;
+  for (Eigen::Index c = 0; c < seen.cols(); ++c) fillAllGapsLinearly(seen.col(c));
   for (int j = 0; j < kJointCount; ++j) {
     if (unseen[static_cast<std::size_t>(j)]) seen.middleCols<2>(2 * j).setConstant(kNaN);
   }

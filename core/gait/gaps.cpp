@@ -145,4 +145,16 @@ std::pair<int, int> longestRun(const std::vector<bool>& flags) {
   return {bestBegin, bestEnd};
 }
 
+void fillAllGapsLinearly(Eigen::Ref<Eigen::VectorXd> x) {
+  Eigen::Index last = -1;
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i])) continue;
+    if (last < 0) x.head(i).setConstant(x[i]);
+    for (Eigen::Index k = last + 1; last >= 0 && k < i; ++k)
+      x[k] = x[last] + (x[i] - x[last]) * static_cast<double>(k - last) / static_cast<double>(i - last);
+    last = i;
+  }
+  if (last >= 0) x.tail(x.size() - last - 1).setConstant(x[last]);
+}
+
 }  // namespace ew

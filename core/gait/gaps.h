@@ -37,6 +37,11 @@ OutlierReport rejectOutlierSamples(Eigen::MatrixXd& framesX45, double thresholdM
 // joint are treated together). Longer runs and runs touching the ends stay NaN.
 GapReport bridgeShortGaps(Eigen::MatrixXd& framesX45, int maxGapFrames);
 
+// Every NaN of one signal filled: linearly between the finite samples around it, held at
+// the ends (left all NaN when none is finite). For steps that need every sample, however
+// long the gap (a strike finder, a start for a fit), not for data kept as measured.
+void fillAllGapsLinearly(Eigen::Ref<Eigen::VectorXd> x);
+
 // Rows with no NaN.
 std::vector<bool> completeFrames(const Eigen::MatrixXd& framesX45);
 

@@ -6,6 +6,7 @@
 
 #include "core/common/errors.h"
 #include "core/gait/gait_cycles.h"
+#include "core/gait/gaps.h"
 
 namespace ew {
 namespace {
@@ -39,20 +40,6 @@ double strideHz(const std::vector<double>& right, const std::vector<double>& lef
   return count > 0 && total > 0 ? count / total : 0.0;
 }
 
-// Missing samples filled linearly between seen ones (held at the ends), so one missed
-// ankle does not hide a strike; the strike finder needs every sample.
-void fillGaps(Eigen::Ref<Eigen::VectorXd> x) {
-  Eigen::Index last = -1;
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    if (!std::isfinite(x[i])) continue;
-    if (last < 0) x.head(i).setConstant(x[i]);
-    for (Eigen::Index k = last + 1; last >= 0 && k < i; ++k)
-      x[k] = x[last] + (x[i] - x[last]) * static_cast<double>(k - last) / static_cast<double>(i - last);
-    last = i;
-  }
-  if (last >= 0) x.tail(x.size() - last - 1).setConstant(x[last]);
-}
-
 std::string fixed1(double v) {
   std::ostringstream s;
   s.precision(1);
@@ -76,7 +63,8 @@ ImageGait imageGaitCycles(const KeypointTrial& t) {
   Eigen::MatrixXd frames = Eigen::MatrixXd::Zero(t.jointsPx.rows(), 3 * kJointCount);
   for (Joint j : {Joint::Pelvis, Joint::RAnkle, Joint::LAnkle}) {
     frames.col(3 * index(j) + 1) = t.jointsPx.middleCols<2>(2 * index(j)) * g.direction;
-    fillGaps(frames.col(3 * index(j) + 1));
+    // Every sample filled: one missed ankle must not hide a strike.
+    fillAllGapsLinearly(frames.col(3 * index(j) + 1));
   }
   for (Joint ankle : {Joint::RAnkle, Joint::LAnkle}) {
     const Eigen::VectorXd lead = frames.col(3 * index(ankle) + 1) - frames.col(3 * index(Joint::Pelvis) + 1);

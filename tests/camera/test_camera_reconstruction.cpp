@@ -12,6 +12,7 @@
 #include "core/common/skeleton.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
+#include "tests/camera/filmed_walk.h"
 
 namespace ew {
 namespace {
@@ -74,18 +75,7 @@ TEST(WalkCamera, ProjectsThePinholeEquations) {
 }
 
 TEST(CameraReconstruction, RecoversAPinholeCameraExactly) {
-  WalkCamera c;
-  c.model = CameraModel::Pinhole;
-  c.alphaDeg = 40;
-  c.elevationDeg = 12;
-  c.focalPx = 1500;
-  c.distanceMm = 6000;
-  c.cxPx = 960;
-  c.cyPx = 540;
-  c.lookAtHeightMm = 900;
-  c.speedMmS = 1300;
-  c.startOffsetMm = -1300 * 2.5;
-  const Scene s = filmed(c);
+  const Scene s = filmed(test::crossingPinhole(1500, 5.0));
   CameraFitOptions o = lsq();
   o.focalPx = 1500;
   const CameraFit fit = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o);
@@ -123,18 +113,7 @@ TEST(CameraReconstruction, RecoversAnApproachingWalkerExactly) {
 
 // Nothing known: the focal length comes out of the perspective too.
 TEST(CameraReconstruction, RecoversTheFocalLengthExactly) {
-  WalkCamera c;
-  c.model = CameraModel::Pinhole;
-  c.alphaDeg = 40;
-  c.elevationDeg = 12;
-  c.focalPx = 1500;
-  c.distanceMm = 6000;
-  c.cxPx = 960;
-  c.cyPx = 540;
-  c.lookAtHeightMm = 900;
-  c.speedMmS = 1300;
-  c.startOffsetMm = -1300 * 2.5;
-  const Scene s = filmed(c);
+  const Scene s = filmed(test::crossingPinhole(1500, 5.0));
   const CameraFit fit = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, lsq());
   EXPECT_NEAR(fit.camera.focalPx, 1500, 1e-3 * 1500);
   EXPECT_NEAR(fit.camera.distanceMm, 6000, 1e-3 * 6000);

@@ -12,10 +12,7 @@
 #include <numbers>
 #include <string>
 
-#include "core/camera/walk_camera.h"
-#include "core/common/skeleton.h"
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
+#include "tests/camera/filmed_walk.h"
 #include "tests/common/test_support.h"
 
 namespace ew {
@@ -25,39 +22,8 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 fs::path filmedOpenPose(const std::string& stem) {
-  WalkCamera c;
-  c.model = CameraModel::Pinhole;
-  c.alphaDeg = 40;
-  c.elevationDeg = 12;
-  c.focalPx = 1400;
-  c.distanceMm = 6000;
-  c.cxPx = 960;
-  c.cyPx = 540;
-  c.lookAtHeightMm = 900;
-  c.speedMmS = 1300;
-  c.startOffsetMm = -1300 * 2.5;
-  const Eigen::VectorXd t = frameTimes(150, 30.0);
-  const Eigen::MatrixXd px =
-      projectWalk(synthesizeFrames(defaultRealModel().mean, 2 * std::numbers::pi * 0.95, 0.2, t), t, c);
   const fs::path dir = test::makeTempDir(stem);
-  for (int f = 0; f < 150; ++f) {
-    const auto p = [&](Joint j, double du = 0, double dv = 0) {
-      return std::pair{px(f, 2 * index(j)) + du, px(f, 2 * index(j) + 1) + dv};
-    };
-    // BODY_25: face points around the head, feet around the ankles.
-    const std::vector<std::pair<double, double>> points = {
-        p(Joint::Head, 0, 8), p(Joint::Sternum), p(Joint::RShoulder), p(Joint::RElbow), p(Joint::RWrist),
-        p(Joint::LShoulder), p(Joint::LElbow), p(Joint::LWrist), p(Joint::Pelvis), p(Joint::RHip),
-        p(Joint::RKnee), p(Joint::RAnkle), p(Joint::LHip), p(Joint::LKnee), p(Joint::LAnkle),
-        p(Joint::Head, -3, -4), p(Joint::Head, 3, -4), p(Joint::Head, -6, 0), p(Joint::Head, 6, 0),
-        p(Joint::LAnkle, 5, 10), p(Joint::LAnkle, 7, 10), p(Joint::LAnkle, -3, 8), p(Joint::RAnkle, 5, 10),
-        p(Joint::RAnkle, 7, 10), p(Joint::RAnkle, -3, 8)};
-    json flat = json::array();
-    for (const auto& [u, v] : points) flat.insert(flat.end(), {u, v, 0.9});
-    char name[64];
-    std::snprintf(name, sizeof name, "walk_%06d_keypoints.json", f);
-    std::ofstream(dir / name) << json{{"people", {{{"pose_keypoints_2d", flat}}}}}.dump();
-  }
+  test::writeFilmedOpenPose(dir, test::crossingPinhole(1400, 5.0), 150, 30.0);
   return dir;
 }
 

@@ -10,11 +10,13 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "core/camera/walk_camera.h"
 #include "core/common/errors.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
 #include "core/keypoints/image_gait.h"
 #include "core/keypoints/keypoint_summary.h"
+#include "core/keypoints/openpose_writer.h"
 #include "tests/common/error_matchers.h"
 #include "tests/common/test_support.h"
 
@@ -22,68 +24,33 @@ namespace ew {
 namespace {
 
 namespace fs = std::filesystem;
-using Eigen::Vector3d;
 using nlohmann::json;
 
 constexpr double kFps = 30.0;
 constexpr double kPxPerMm = 0.4;
 
-// The model's mean walker, `seconds` long at 30 fps, moving forward at `speedMmS`, seen
-// from azimuth `alphaDeg` (0 = front, 90 = profile): pixel u right, v down.
 struct Clip {
   fs::path folder;
   double strideHz = 0.0;
 };
 
-Vector3d at(const Eigen::MatrixXd& frames, int f, Joint j) { return jointAt(frames, f, j); }
-
-json body25(const Eigen::MatrixXd& frames, int f, double alphaDeg) {
-  const double a = alphaDeg * M_PI / 180.0;
-  const auto pixel = [&](const Vector3d& p) {
-    const double u = p.x() * std::cos(a) + p.y() * std::sin(a);
-    return std::pair{960 + kPxPerMm * u, 1000 - kPxPerMm * p.z()};
-  };
-  const Vector3d up(0, 0, 1), fwd(0, 1, 0), right(1, 0, 0);
-  const Vector3d head = at(frames, f, Joint::Head);
-  // BODY_25's points from the 15 joints (face and feet placed around head and ankles).
-  const std::vector<Vector3d> points = {
-      head + 90 * fwd,                   at(frames, f, Joint::Sternum),  at(frames, f, Joint::RShoulder),
-      at(frames, f, Joint::RElbow),      at(frames, f, Joint::RWrist),   at(frames, f, Joint::LShoulder),
-      at(frames, f, Joint::LElbow),      at(frames, f, Joint::LWrist),   at(frames, f, Joint::Pelvis),
-      at(frames, f, Joint::RHip),        at(frames, f, Joint::RKnee),    at(frames, f, Joint::RAnkle),
-      at(frames, f, Joint::LHip),        at(frames, f, Joint::LKnee),    at(frames, f, Joint::LAnkle),
-      head + 70 * fwd + 30 * right + 30 * up, head + 70 * fwd - 30 * right + 30 * up,
-      head + 75 * right,                 head - 75 * right,
-      at(frames, f, Joint::LAnkle) + 150 * fwd - 60 * up, at(frames, f, Joint::LAnkle) + 140 * fwd - 40 * right - 60 * up,
-      at(frames, f, Joint::LAnkle) - 60 * fwd - 70 * up,  at(frames, f, Joint::RAnkle) + 150 * fwd - 60 * up,
-      at(frames, f, Joint::RAnkle) + 140 * fwd + 40 * right - 60 * up, at(frames, f, Joint::RAnkle) - 60 * fwd - 70 * up};
-  json flat = json::array();
-  for (const auto& p : points) {
-    const auto [u, v] = pixel(p);
-    flat.push_back(u);
-    flat.push_back(v);
-    flat.push_back(0.8);
-  }
-  return flat;
-}
-
+// The model's mean walker, `seconds` long at 30 fps, moving forward at `speedMmS`, seen
+// from azimuth `alphaDeg` (0 = from behind, 90 = profile) by a level, distant camera
+// (scaled orthography, 0.4 px/mm), written as OpenPose BODY_25 JSON.
 Clip meanWalkerClip(const std::string& stem, double alphaDeg, double speedMmS, double seconds) {
   const EigenwalkerModel& model = defaultRealModel();
   Clip clip;
   const double omega = model.omegasRadS.mean();
   clip.strideHz = omega / (2 * M_PI);
-  const int n = static_cast<int>(seconds * kFps);
-  Eigen::MatrixXd frames = synthesizeFrames(model.mean, omega, 0.0, frameTimes(n, kFps));
-  for (int f = 0; f < n; ++f) {
-    for (int j = 0; j < kJointCount; ++j) frames(f, 3 * j + 1) += speedMmS * f / kFps - 0.5 * speedMmS * seconds;
-  }
+  const Eigen::VectorXd t = frameTimes(static_cast<int>(seconds * kFps), kFps);
+  WalkCamera camera;
+  camera.alphaDeg = alphaDeg;
+  camera.pxPerMm = kPxPerMm;
+  camera.cxPx = 960 - kPxPerMm * 0.5 * speedMmS * seconds * std::sin(alphaDeg * M_PI / 180.0);
+  camera.cyPx = 1000;
+  camera.speedMmS = speedMmS;
   clip.folder = test::makeTempDir(stem);
-  for (int f = 0; f < n; ++f) {
-    char name[64];
-    std::snprintf(name, sizeof name, "walk_%012d_keypoints.json", f);
-    std::ofstream(clip.folder / name)
-        << json{{"version", 1.3}, {"people", {{{"pose_keypoints_2d", body25(frames, f, alphaDeg)}}}}}.dump();
-  }
+  writeOpenPoseBody25(clip.folder, {{projectWalk(synthesizeFrames(model.mean, omega, 0.0, t), t, camera), {}}});
   return clip;
 }
 
