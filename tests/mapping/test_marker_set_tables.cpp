@@ -23,6 +23,7 @@
 #include "core/mapping/marker_set_table.h"
 #include "core/mapping/marker_sets.h"
 #include "core/mapping/raw_motion.h"
+#include "tests/common/marker_tracks.h"
 #include "tests/common/test_support.h"
 
 namespace ew {
@@ -491,22 +492,8 @@ TEST(FunctionalCentre, FindsABallJointAndAPointOnAHingeAxis) {
 // (knee) and 27.0 mm (ankle) over 16 trials x 2 sides, worst 63 mm.
 TEST(FunctionalCentre, CloseToTheAnatomicalCentresOnSchreiberTrials) {
   EW_REQUIRE_SHARED_DATA();
-  const auto track = [](const RawTrial& r, const std::string& label) {
-    for (std::size_t k = 0; k < r.labels.size(); ++k) {
-      if (r.labels[k] == label)
-        return MarkerTrack(r.positionsMm.middleCols(3 * static_cast<int>(k), 3));
-    }
-    return MarkerTrack(MarkerTrack::Constant(r.frameCount(), 3, NAN));
-  };
-  const auto meanDistance = [](const MarkerTrack& a, const MarkerTrack& b) {
-    double sum = 0;
-    int n = 0;
-    for (int f = 0; f < a.rows(); ++f) {
-      const double d = (a.row(f) - b.row(f)).norm();
-      if (std::isfinite(d)) sum += d, ++n;
-    }
-    return n ? sum / n : NAN;
-  };
+  const auto track = test::markerTrack;
+  const auto meanDistance = test::meanTrackDistanceMm;
   double knees = 0, ankles = 0;
   int n = 0;
   std::ifstream list(test::sharedDataDir() / "walkers.csv");

@@ -19,6 +19,7 @@
 #include "core/mapping/joint_mapping.h"
 #include "core/mapping/marker_set_table.h"
 #include "tests/common/error_matchers.h"
+#include "tests/common/marker_tracks.h"
 #include "tests/common/test_support.h"
 
 namespace ew {
@@ -256,13 +257,7 @@ TEST(SegmentClusters, TestbpiLegsAreRefusedAsImplausible) {
 // mean 38.2 mm (the plain fits: 57.6 mm, 132-328 mm apart).
 TEST(SegmentClusters, SymmetricHipsNearTheHarringtonHipsOnSchreiberTrials) {
   EW_REQUIRE_SHARED_DATA();
-  const auto track = [](const RawTrial& r, const std::string& label) {
-    for (std::size_t k = 0; k < r.labels.size(); ++k) {
-      if (r.labels[k] == label) return MarkerTrack(r.positionsMm.middleCols(3 * static_cast<int>(k), 3));
-    }
-    ADD_FAILURE() << "no " << label << " in " << r.file;
-    return MarkerTrack(MarkerTrack::Constant(r.frameCount(), 3, NAN));
-  };
+  const auto track = test::markerTrack;
   double sum = 0;
   int n = 0;
   std::ifstream list(test::sharedDataDir() / "walkers.csv");
@@ -278,15 +273,11 @@ TEST(SegmentClusters, SymmetricHipsNearTheHarringtonHipsOnSchreiberTrials) {
     const HipPair h = symmetricFunctionalHips({track(r, "R_IAS"), track(r, "R_IPS"), track(r, "L_IAS")},
                                               thigh("L_"), thigh("R_"), 176);
     for (const auto& [got, joint] : {std::pair{&h.left, Joint::LHip}, std::pair{&h.right, Joint::RHip}}) {
-      double s = 0;
-      int k = 0;
-      for (int f = 0; f < r.frameCount(); ++f) {
-        const double d = (got->row(f).transpose() - jointAt(isb.positionsMm, f, joint)).norm();
-        if (std::isfinite(d)) s += d, ++k;
-      }
-      ASSERT_GT(k, 0) << r.file;
-      EXPECT_LT(s / k, 100.0) << r.file << " " << jointName(joint);
-      sum += s / k, ++n;
+      // NaN when a marker is missing or no frame has both: fails the assertion.
+      const double d = test::meanTrackDistanceMm(*got, isb.positionsMm.middleCols(3 * index(joint), 3));
+      ASSERT_TRUE(std::isfinite(d)) << r.file;
+      EXPECT_LT(d, 100.0) << r.file << " " << jointName(joint);
+      sum += d, ++n;
     }
   }
   ASSERT_EQ(n, 32);
