@@ -257,6 +257,7 @@ VectorXd imageHeightsPx(const MatrixXd& px) {
 
 struct OrthoStart {
   FourierFit fit;
+  ModelGram gram;                    // the model with the unseen joints dropped
   ViewSearch search;
   double pxPerMm = 0.0;              // at mid-clip
   Eigen::Vector2d pelvisU, pelvisV;  // a + b t of the pelvis in the image
@@ -299,7 +300,8 @@ OrthoStart orthographicStart(const EigenwalkerModel& model, const MatrixXd& px, 
   std::vector<int> missing;
   for (int j = 0; j < kJointCount; ++j)
     if (unseen[static_cast<std::size_t>(j)]) missing.push_back(j);
-  s.search = searchViewAngle(precomputeModelGram(model, missing), s.fit.w, o.estimator);
+  s.gram = precomputeModelGram(model, missing);
+  s.search = searchViewAngle(s.gram, s.fit.w, o.estimator);
   return s;
 }
 
@@ -381,7 +383,6 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
                                      o.estimator, stride);
   std::vector<std::pair<VectorXd, CameraStart>> results;
   const int minima = std::min<int>(o.startCount, static_cast<int>(start.search.minima.size()));
-  const ModelGram gram = precomputeModelGram(model, fit.unseenJoints);
   std::vector<std::pair<LmResult, double>> screened;  // (short run, start α)
   std::vector<double> startAngles;
   for (int m = 0; m < minima; ++m) {
@@ -393,7 +394,7 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
                                        [&](double b) { return std::abs(wrapDeg(a - b)) < kSameStartDeg; });
         if (tried) continue;
         startAngles.push_back(a);
-        const Reconstruction rec = reconstructKnownView(gram, start.fit.w, a, o.estimator);
+        const Reconstruction rec = reconstructKnownView(start.gram, start.fit.w, a, o.estimator);
         for (double elevation : kStartElevationsDeg)
           screened.emplace_back(levenbergMarquardt(coarse, startTheta(coarse, start, rec, elevation), kScreeningIterations),
                                 rec.alphaDeg);
