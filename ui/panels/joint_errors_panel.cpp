@@ -29,7 +29,8 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
       const int rows = (kJointCount + columns - 1) / columns;
       const float colW = size.x / static_cast<float>(columns);
       const float rowH = size.y / static_cast<float>(rows);
-      const float barMax = std::max(10.0f, colW - labelW - valueW - 8.0f * ctx.scale);
+      // The bar takes what the label and the value leave; none when they fill the column.
+      const float barMax = std::max(0.0f, colW - labelW - valueW - 8.0f * ctx.scale);
       const float scaleMm = palette::errorScaleMm(static_cast<float>(d->depthRmsMm.maxCoeff()));
       for (int j = 0; j < kJointCount; ++j) {
         const float x = p0.x + colW * static_cast<float>(j / rows);
@@ -41,6 +42,9 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
         // completion: name, bar and value in the legend's colour, the value in parentheses,
         // so they never read as measured errors.
         const bool estimated = r && r->modelEstimated[static_cast<std::size_t>(j)];
+        // Each cell clipped to its column: a narrow panel cuts a value, never overprints
+        // the next column.
+        dl->PushClipRect(ImVec2(x, p0.y), ImVec2(x + colW - 4.0f * ctx.scale, p0.y + size.y), true);
         dl->AddText(ImVec2(x, y + 0.5f * (rowH - textH)),
                     estimated ? toImU32(palette::kModelEstimated)
                               : ImGui::GetColorU32(ImGuiCol_TextDisabled),
@@ -58,6 +62,7 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
         dl->AddText(ImVec2(x + labelW + w + 4.0f * ctx.scale, y + 0.5f * (rowH - textH)),
                     estimated ? toImU32(palette::kModelEstimated) : ImGui::GetColorU32(ImGuiCol_Text),
                     buf);
+        dl->PopClipRect();
       }
       ImGui::Dummy(size);
       if (ImGui::IsItemHovered()) {
