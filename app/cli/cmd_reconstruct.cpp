@@ -42,7 +42,7 @@ struct ReconstructArgs {
   std::string mapping;              // joint mapping file for a 3D marker input (--mapping)
   bool unknownCamera = false;       // keypoint input through an unknown real camera
   std::string layout;               // keypoint layout (--layout)
-  std::optional<double> fps, focalPx;
+  std::optional<double> fps, focalPx, elevationDeg;
   bool orthographic = false;
   std::string imageSize;
 };
@@ -208,16 +208,20 @@ void printReport(const json& r) {
 
 int runReconstruct(const ReconstructArgs& a) {
   if (a.unknownCamera) {
-    if (a.angleDeg || a.unknownAngle || a.projectAngleDeg)
+    if (a.unknownAngle || a.projectAngleDeg)
       throw Error(ErrorKind::BadArgument, "--unknown-camera", "",
-                  "the camera's angle is estimated: --angle, --unknown-angle and --project-angle do not apply");
+                  "the camera's azimuth is estimated (or given with --angle): --unknown-angle and --project-angle "
+                  "do not apply");
     const ChosenModel chosen = chooseModel(a);
     CameraArgs c;
     c.input = a.input, c.out = a.out, c.layout = a.layout, c.method = a.method, c.modelName = chosen.name;
     c.mapping = a.mapping, c.imageSize = a.imageSize, c.fps = a.fps, c.focalPx = a.focalPx;
     c.sigma2Mm2 = a.sigma2Mm2, c.json = a.json, c.orthographic = a.orthographic;
+    c.alphaDeg = a.angleDeg, c.elevationDeg = a.elevationDeg;
     return runReconstructCamera(chosen.model, c);
   }
+  if (a.elevationDeg)
+    throw Error(ErrorKind::BadArgument, "--elevation", "", "a camera elevation applies to --unknown-camera only");
   if (a.angleDeg.has_value() == a.unknownAngle) {
     throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
   }
@@ -318,6 +322,10 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--focal-px", args->focalPx,
                   "Known focal length in pixels (else it is estimated with the camera)")
       ->check(CLI::PositiveNumber);
+  cmd->add_option("--elevation", args->elevationDeg,
+                  "With --unknown-camera: the camera's known elevation in degrees (looking down), held "
+                  "instead of estimated; --angle likewise holds the azimuth")
+      ->check(CLI::Range(-30.0, 80.0));
   cmd->add_option("--image-size", args->imageSize,
                   "WxH in pixels of the video behind a MediaPipe CSV keypoint input");
   cmd->add_flag("--orthographic", args->orthographic,

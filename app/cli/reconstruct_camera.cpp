@@ -5,12 +5,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/camera/camera_reconstruction.h"
-#include "core/engine/fourier.h"
+#include "core/camera/clip_reconstruction.h"
 #include "core/engine/model_file.h"
 #include "core/io/joint_csv.h"
-#include "core/keypoints/image_gait.h"
-#include "core/keypoints/keypoint_trial.h"
 
 namespace ew::cli {
 namespace {
@@ -37,7 +34,9 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
           {"layout_source", t.layoutSource}, {"person", t.chosenReason}, {"frames", t.frameCount},
           {"rate_hz", t.rateHz}, {"rate_assumed", t.rateAssumed}, {"output", a.out},
           {"camera_model", pinhole ? "pinhole" : "scaled orthographic"},
-          {"alpha_deg", c.alphaDeg}, {"elevation_deg", c.elevationDeg},
+          {"alpha_deg", c.alphaDeg}, {"alpha_source", a.alphaDeg ? "given (--angle)" : "estimated"},
+          {"elevation_deg", c.elevationDeg},
+          {"elevation_source", a.elevationDeg ? "given (--elevation)" : "estimated"},
           {"focal_px", pinhole ? json(c.focalPx) : json(nullptr)},
           {"focal_source", pinhole ? json(a.focalPx ? "given (--focal-px)" : "estimated") : json(nullptr)},
           {"distance_m", pinhole ? json(c.distanceMm / 1000.0) : json(nullptr)},
@@ -76,16 +75,16 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   if (!a.mapping.empty()) k.mappingFile = a.mapping;
   if (!a.imageSize.empty()) k.imageSize = parseKeypointImageSize(a.imageSize, "--image-size");
   k.fps = a.fps;
-  const KeypointTrial t = readKeypointTrial(a.input, k);
-  const ImageGait gait = imageGaitCycles(t);
   CameraFitOptions o;
   o.estimator = {a.method == "map" ? Estimator::Map : Estimator::Lsq, a.sigma2Mm2.value_or(defaultSigma2Mm2(model))};
   o.focalPx = a.focalPx;
   o.estimateFocal = !a.orthographic;
-  o.strideHzHint = gait.strideHz;
-  o.file = a.input;
-  const CameraFit fit = reconstructUnknownCamera(model, t.jointsPx, t.rateHz, o);
-  const Eigen::MatrixXd frames = synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, frameTimes(t.frameCount, t.rateHz));
+  o.alphaDeg = a.alphaDeg;
+  o.elevationDeg = a.elevationDeg;
+  const ClipReconstruction clip = reconstructKeypointClip(model, a.input, k, o);
+  const KeypointTrial& t = clip.trial;
+  const CameraFit& fit = clip.fit;
+  const Eigen::MatrixXd& frames = clip.framesMm;
   std::ostringstream what;
   what << "eigenwalker reconstruction of " << a.input << " through an unknown camera (azimuth " << fit.camera.alphaDeg
        << " deg, elevation " << fit.camera.elevationDeg << " deg), model " << a.modelName;

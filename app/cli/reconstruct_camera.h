@@ -13,6 +13,7 @@ namespace ew::cli {
 struct CameraArgs {
   std::string input, out, layout, method = "map", modelName, mapping, imageSize;
   std::optional<double> fps, focalPx, sigma2Mm2;
+  std::optional<double> alphaDeg, elevationDeg;  // known: held, not estimated
   bool json = false;
   bool orthographic = false;  // scaled orthography instead of estimating the focal length
 };

@@ -49,6 +49,7 @@ struct Layout {
   int n = 0;
   bool pinhole = false;
   bool focalFree = false;  // pinhole whose focal length is estimated
+  bool alphaFixed = false, elevationFixed = false;  // held at their start values
   int alpha() const { return n; }
   int elevation() const { return n + 1; }
   int logScale() const { return n + 2; }
@@ -61,6 +62,7 @@ struct Layout {
   int offset() const { return n + 9; }
   int logFocal() const { return n + 10; }
   int size() const { return n + (pinhole ? (focalFree ? 11 : 10) : 8); }
+  bool fixed(Eigen::Index i) const { return (alphaFixed && i == alpha()) || (elevationFixed && i == elevation()); }
 };
 
 struct Problem {
@@ -163,6 +165,10 @@ MatrixXd jacobian(const Problem& p, const VectorXd& t, const VectorXd& r0) {
   const MatrixXd frames = framesOf(p, t);
   MatrixXd jac(r0.size(), t.size());
   for (Eigen::Index i = 0; i < t.size(); ++i) {
+    if (p.layout.fixed(i)) {
+      jac.col(i).setZero();
+      continue;
+    }
     VectorXd tp = t, tm = t;
     tp[i] += h[i];
     tm[i] -= h[i];
@@ -194,6 +200,9 @@ LmResult levenbergMarquardt(const Problem& p, VectorXd t, int maxIterations) {
     MatrixXd jtj = MatrixXd::Zero(t.size(), t.size());
     jtj.selfadjointView<Eigen::Lower>().rankUpdate(jac.transpose());
     jtj.triangularView<Eigen::StrictlyUpper>() = jtj.transpose();
+    // A fixed parameter's column is zero: a unit pivot keeps its step at zero.
+    for (Eigen::Index i = 0; i < t.size(); ++i)
+      if (p.layout.fixed(i)) jtj(i, i) = 1.0;
     const VectorXd g = jac.transpose() * r;
     bool improved = false;
     for (int tries = 0; tries < 12 && !improved; ++tries) {
@@ -357,14 +366,44 @@ void fillOutputs(const Problem& p, const VectorXd& t, CameraFit& fit) {
   fit.cadenceStepsPerMin = 120.0 * fit.strideHz;
 }
 
+// The azimuths the fit starts from: the given one, or each of the orthographic search's best
+// minima with its depth-reversed, turned-around and mirrored readings.
+std::vector<double> startAngles(const ViewSearch& search, const CameraFitOptions& o) {
+  if (o.alphaDeg) return {*o.alphaDeg};
+  std::vector<double> angles;
+  const int minima = std::min<int>(o.startCount, static_cast<int>(search.minima.size()));
+  for (int m = 0; m < minima; ++m) {
+    const double found = search.minima[static_cast<std::size_t>(m)].alphaDeg;
+    for (double alpha : {found, -found}) {
+      for (double offset : kRelatedOffsetsDeg) {
+        const double a = wrapDeg(alpha + offset);
+        const bool tried = std::any_of(angles.begin(), angles.end(),
+                                       [&](double b) { return std::abs(wrapDeg(a - b)) < kSameStartDeg; });
+        if (!tried) angles.push_back(a);
+      }
+    }
+  }
+  return angles;
+}
+
+void checkOptions(const CameraFitOptions& o) {
+  if (o.focalPx && !(std::isfinite(*o.focalPx) && *o.focalPx > 0))
+    throw Error(ErrorKind::BadArgument, o.file, "--focal-px", "the focal length must be positive and finite");
+  if (o.alphaDeg && !std::isfinite(*o.alphaDeg))
+    throw Error(ErrorKind::BadArgument, o.file, "azimuth", "a fixed azimuth must be finite");
+  if (o.elevationDeg && !(*o.elevationDeg >= kMinElevationDeg && *o.elevationDeg <= kMaxElevationDeg))
+    throw Error(ErrorKind::BadArgument, o.file, "elevation",
+                "a fixed elevation must lie between " + std::to_string(static_cast<int>(kMinElevationDeg)) + " and " +
+                    std::to_string(static_cast<int>(kMaxElevationDeg)) + " degrees");
+}
+
 }  // namespace
 
 CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd& jointsPx, double rateHz,
                                    const CameraFitOptions& o) {
   if (jointsPx.cols() != 2 * kJointCount) badData(o.file, "need 30 columns (u, v of 15 joints)");
   if (jointsPx.rows() < 8) badData(o.file, "fewer than 8 frames");
-  if (o.focalPx && !(std::isfinite(*o.focalPx) && *o.focalPx > 0))
-    throw Error(ErrorKind::BadArgument, o.file, "--focal-px", "the focal length must be positive and finite");
+  checkOptions(o);
   const VectorXd times = frameTimes(static_cast<int>(jointsPx.rows()), rateHz);
   JointMask unseen{};
   CameraFit fit;
@@ -374,7 +413,8 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
   }
   const OrthoStart start = orthographicStart(model, jointsPx, times, unseen, o);
   const bool pinhole = o.focalPx.has_value() || o.estimateFocal;
-  const Layout layout{static_cast<int>(model.eigenvalues.size()), pinhole, pinhole && !o.focalPx};
+  const Layout layout{static_cast<int>(model.eigenvalues.size()), pinhole, pinhole && !o.focalPx,
+                      o.alphaDeg.has_value(), o.elevationDeg.has_value()};
   const Problem p = makeProblem(model, layout, o.focalPx.value_or(0.0), jointsPx, times, 1.0 / start.pxPerMm,
                                 o.estimator, 1);
   // Screening sees every few frames (the walk is smooth; ~8 frames a stride are plenty).
@@ -382,24 +422,15 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
   const Problem coarse = makeProblem(model, layout, o.focalPx.value_or(0.0), jointsPx, times, 1.0 / start.pxPerMm,
                                      o.estimator, stride);
   std::vector<std::pair<VectorXd, CameraStart>> results;
-  const int minima = std::min<int>(o.startCount, static_cast<int>(start.search.minima.size()));
   std::vector<std::pair<LmResult, double>> screened;  // (short run, start α)
-  std::vector<double> startAngles;
-  for (int m = 0; m < minima; ++m) {
-    const double found = start.search.minima[static_cast<std::size_t>(m)].alphaDeg;
-    for (double alpha : {found, -found}) {
-      for (double offset : kRelatedOffsetsDeg) {
-        const double a = wrapDeg(alpha + offset);
-        const bool tried = std::any_of(startAngles.begin(), startAngles.end(),
-                                       [&](double b) { return std::abs(wrapDeg(a - b)) < kSameStartDeg; });
-        if (tried) continue;
-        startAngles.push_back(a);
-        const Reconstruction rec = reconstructKnownView(start.gram, start.fit.w, a, o.estimator);
-        for (double elevation : kStartElevationsDeg)
-          screened.emplace_back(levenbergMarquardt(coarse, startTheta(coarse, start, rec, elevation), kScreeningIterations),
-                                rec.alphaDeg);
-      }
-    }
+  const std::vector<double> elevations =
+      o.elevationDeg ? std::vector<double>{*o.elevationDeg}
+                     : std::vector<double>(std::begin(kStartElevationsDeg), std::end(kStartElevationsDeg));
+  for (double a : startAngles(start.search, o)) {
+    const Reconstruction rec = reconstructKnownView(start.gram, start.fit.w, a, o.estimator);
+    for (double elevation : elevations)
+      screened.emplace_back(levenbergMarquardt(coarse, startTheta(coarse, start, rec, elevation), kScreeningIterations),
+                            rec.alphaDeg);
   }
   std::stable_sort(screened.begin(), screened.end(),
                    [](const auto& a, const auto& b) { return a.first.cost < b.first.cost; });

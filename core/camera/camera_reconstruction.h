@@ -21,6 +21,9 @@ struct CameraFitOptions {
   EstimatorOptions estimator{Estimator::Map, 1000.0};
   std::optional<double> focalPx;        // known: a pinhole with this focal length
   bool estimateFocal = true;            // focal unknown: a pinhole estimating it, else scaled orthography
+  // Known view: held at these values instead of estimated (the viewer's "fix" controls).
+  std::optional<double> alphaDeg;       // azimuth, SPEC §5
+  std::optional<double> elevationDeg;   // camera looking down by this much
   std::optional<double> strideHzHint;   // from the image's foot strikes (image_gait.h)
   int startCount = 4;                   // view-angle minima tried as starts
   int maxIterations = 300;
@@ -51,7 +54,8 @@ double walkerHeadHeightMm(const Eigen::VectorXd& w);
 
 // jointsPx: T × 30 (u, v per joint, SPEC §1 order), NaN = not seen. Throws Error(BadData)
 // naming options.file when fewer than 8 frames or no start converges to a walker moving
-// forward, Error(BadArgument) for a focal length that is not positive and finite.
+// forward, Error(BadArgument) for a focal length that is not positive and finite or a fixed
+// azimuth or elevation that is not finite (or an elevation outside −30…80°).
 CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const Eigen::MatrixXd& jointsPx,
                                    double rateHz, const CameraFitOptions& options = {});
 

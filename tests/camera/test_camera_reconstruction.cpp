@@ -5,10 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "core/camera/camera_reconstruction.h"
+#include "core/camera/clip_reconstruction.h"
 #include "core/camera/walk_camera.h"
+#include "core/common/errors.h"
 #include "core/common/skeleton.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
@@ -138,6 +141,61 @@ TEST(CameraReconstruction, RecoversAScaledOrthographicCameraExactly) {
   EXPECT_NEAR(fit.camera.pxPerMm, 0.35, 1e-3 * 0.35);
   EXPECT_NEAR(fit.camera.speedMmS, 1250, 1e-3 * 1250);
   expectSameWalk(fit, s);
+}
+
+// The viewer's "fix" controls: a held elevation or azimuth stays exactly where it is put. At
+// the true values the rest is recovered as before; a wrong elevation costs reprojection.
+TEST(CameraReconstruction, FixedElevationAndAzimuthAreHeld) {
+  const Scene s = filmed(test::crossingPinhole(1500, 5.0));
+  CameraFitOptions o = lsq();
+  o.elevationDeg = 12.0;
+  o.alphaDeg = 40.0;
+  const CameraFit right = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o);
+  EXPECT_EQ(right.camera.elevationDeg, 12.0);
+  EXPECT_EQ(right.camera.alphaDeg, 40.0);
+  EXPECT_NEAR(right.camera.focalPx, 1500, 1e-3 * 1500);
+  expectSameWalk(right, s);
+  o.alphaDeg.reset();
+  o.elevationDeg = 30.0;
+  const CameraFit wrong = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o);
+  EXPECT_EQ(wrong.camera.elevationDeg, 30.0);
+  EXPECT_GT(wrong.reprojectionRmsPx, 0.1);
+}
+
+TEST(CameraReconstruction, FixedValuesOutOfRangeAreRefused) {
+  const Scene s = filmed(test::crossingPinhole(1500, 5.0));
+  CameraFitOptions o = lsq();
+  o.elevationDeg = 95.0;
+  EXPECT_THROW(reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o), Error);
+  o.elevationDeg.reset();
+  o.alphaDeg = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o), Error);
+}
+
+// The camera's centre (what the viewer draws): every point on the line from it through the
+// look-at point is imaged at the look-at point's pixel, for any azimuth and elevation.
+TEST(WalkCamera, CentreLiesOnTheOpticalAxis) {
+  for (double alpha : {-120.0, 0.0, 40.0, 165.0}) {
+    for (double elevation : {0.0, 12.0, 30.0}) {
+      WalkCamera c = test::crossingPinhole(1500, 5.0);
+      c.alphaDeg = alpha;
+      c.elevationDeg = elevation;
+      c.speedMmS = 0.0;
+      const Eigen::Vector3d lookAt = -walkerOriginFromLookAt(c, 0.0);  // in the walker's frame
+      const Eigen::Vector3d eye = lookAt + cameraFromLookAt(c);
+      MatrixXd frame = MatrixXd::Zero(1, 45);
+      // The head half-way from the camera to the look-at point, the pelvis beyond it.
+      frame.block<1, 3>(0, 3 * index(Joint::Head)) = (0.5 * (eye + lookAt)).transpose();
+      frame.block<1, 3>(0, 3 * index(Joint::Pelvis)) = (lookAt + 0.4 * (lookAt - eye)).transpose();
+      const MatrixXd px = projectWalk(frame, VectorXd::Zero(1), c);
+      for (Joint j : {Joint::Head, Joint::Pelvis}) {
+        EXPECT_NEAR(px(0, 2 * index(j)), c.cxPx, 1e-6) << alpha << " " << elevation;
+        EXPECT_NEAR(px(0, 2 * index(j) + 1), c.cyPx, 1e-6) << alpha << " " << elevation;
+      }
+      EXPECT_NEAR((eye - lookAt).norm(), c.distanceMm, 1e-6);
+      EXPECT_NEAR(eye.z() - lookAt.z(), c.distanceMm * std::sin(elevation * std::numbers::pi / 180), 1e-6);
+    }
+  }
 }
 
 }  // namespace

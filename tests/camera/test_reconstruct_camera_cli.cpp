@@ -69,14 +69,32 @@ TEST(ReconstructCameraCli, OpenPoseFolderWithTheFocalLengthUnknown) {
   EXPECT_NEAR(r["alpha_deg"].get<double>(), 40, 2.0);
 }
 
-TEST(ReconstructCameraCli, AngleOptionsDoNotApply) {
+TEST(ReconstructCameraCli, UnknownAngleAndProjectAngleDoNotApply) {
   const fs::path clip = filmedOpenPose("camera_cli_bad");
   const auto run = test::runProgram(EW_CLI_PATH,
-                                    {"reconstruct", "--input", clip.string(), "--unknown-camera", "--angle", "30",
+                                    {"reconstruct", "--input", clip.string(), "--unknown-camera", "--unknown-angle",
                                      "--out", (clip.parent_path() / "x.csv").string()},
                                     test::makeTempDir("camera_cli_bad_run"));
   EXPECT_NE(run.exitCode, 0);
-  EXPECT_NE(run.output.find("the camera's angle is estimated"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("the camera's azimuth is estimated"), std::string::npos) << run.output;
+}
+
+// --angle and --elevation hold the azimuth and elevation (the viewer's "fix" controls); the
+// JSON says they were given.
+TEST(ReconstructCameraCli, KnownAzimuthAndElevationAreHeld) {
+  const fs::path clip = filmedOpenPose("camera_cli_fixed");
+  const auto run = test::runProgram(EW_CLI_PATH,
+                                    {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
+                                     "--angle", "40", "--elevation", "12", "--out",
+                                     (clip.parent_path() / "camera_cli_fixed.csv").string(), "--json"},
+                                    test::makeTempDir("camera_cli_fixed_run"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const json r = json::parse(run.output.substr(run.output.find("{\n")));
+  EXPECT_EQ(r["alpha_deg"].get<double>(), 40.0);
+  EXPECT_EQ(r["elevation_deg"].get<double>(), 12.0);
+  EXPECT_EQ(r["elevation_source"], "given (--elevation)");
+  EXPECT_NEAR(r["distance_m"].get<double>(), 6.0, 0.05 * 6.0);
+  EXPECT_LT(r["reprojection_rms_px"].get<double>(), 6.0);
 }
 
 }  // namespace

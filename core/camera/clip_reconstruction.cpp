@@ -1,0 +1,61 @@
+#include "core/camera/clip_reconstruction.h"
+
+#include <cmath>
+#include <limits>
+
+#include "core/engine/fourier.h"
+#include "core/engine/projection.h"
+
+namespace ew {
+
+namespace {
+
+std::array<double, kJointCount> residualRms(const Eigen::MatrixXd& reprojected, const Eigen::MatrixXd& observed) {
+  std::array<double, kJointCount> rms{};
+  for (int j = 0; j < kJointCount; ++j) {
+    double sum = 0.0;
+    int n = 0;
+    for (Eigen::Index f = 0; f < observed.rows(); ++f) {
+      const double du = reprojected(f, 2 * j) - observed(f, 2 * j);
+      const double dv = reprojected(f, 2 * j + 1) - observed(f, 2 * j + 1);
+      if (!std::isfinite(du) || !std::isfinite(dv)) continue;
+      sum += du * du + dv * dv;
+      ++n;
+    }
+    rms[static_cast<std::size_t>(j)] = n > 0 ? std::sqrt(sum / n) : std::numeric_limits<double>::quiet_NaN();
+  }
+  return rms;
+}
+
+}  // namespace
+
+ClipReconstruction reconstructKeypointClip(const EigenwalkerModel& model, const std::filesystem::path& input,
+                                           const KeypointOptions& keypointOptions, CameraFitOptions fitOptions) {
+  ClipReconstruction c;
+  c.trial = readKeypointTrial(input, keypointOptions);
+  c.gait = imageGaitCycles(c.trial);
+  fitOptions.strideHzHint = c.gait.strideHz;
+  if (fitOptions.file.empty()) fitOptions.file = input.string();
+  c.fit = reconstructUnknownCamera(model, c.trial.jointsPx, c.trial.rateHz, fitOptions);
+  c.timesS = frameTimes(c.trial.frameCount, c.trial.rateHz);
+  c.framesMm = synthesizeFrames(c.fit.w, c.fit.omegaRadS, c.fit.phaseRad, c.timesS);
+  c.reprojectedPx = projectWalk(c.framesMm, c.timesS, c.fit.camera);
+  c.residualRmsPx = residualRms(c.reprojectedPx, c.trial.jointsPx);
+  return c;
+}
+
+Eigen::Vector3d walkerOriginFromLookAt(const WalkCamera& camera, double timeS) {
+  if (camera.model == CameraModel::ScaledOrthographic) return {0.0, camera.speedMmS * timeS, 0.0};
+  return {0.0, camera.startOffsetMm + camera.speedMmS * timeS, -camera.lookAtHeightMm};
+}
+
+Eigen::Vector3d cameraFromLookAt(const WalkCamera& camera, double orthographicDistanceMm) {
+  const double d = camera.model == CameraModel::Pinhole ? camera.distanceMm : orthographicDistanceMm;
+  const double a = degToRad(camera.alphaDeg), e = degToRad(camera.elevationDeg);
+  // The camera looks along the depth axis (−sin α, cos α, 0) tilted down by ε: it stands at
+  // depth −D cos ε and height D sin ε from the look-at point (docs/CAMERA.md).
+  const Eigen::Vector3d depth(-std::sin(a), std::cos(a), 0.0);
+  return -d * std::cos(e) * depth + Eigen::Vector3d(0.0, 0.0, d * std::sin(e));
+}
+
+}  // namespace ew

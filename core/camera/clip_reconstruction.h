@@ -1,0 +1,42 @@
+#pragma once
+// A pose estimator's clip to a 3D walker and the camera that filmed it: read and clean the
+// keypoints (core/keypoints/keypoint_trial.h), find the gait cycles in the image
+// (image_gait.h), fit walker and camera (camera_reconstruction.h), and draw the result back
+// through the camera. What `reconstruct --unknown-camera` writes and the viewer shows.
+
+#include <Eigen/Core>
+#include <array>
+#include <filesystem>
+
+#include "core/camera/camera_reconstruction.h"
+#include "core/keypoints/image_gait.h"
+#include "core/keypoints/keypoint_trial.h"
+
+namespace ew {
+
+struct ClipReconstruction {
+  KeypointTrial trial;
+  ImageGait gait;
+  CameraFit fit;
+  Eigen::VectorXd timesS;         // T: each input frame's time
+  Eigen::MatrixXd framesMm;       // T × 45: the walker at each input frame (SPEC §2 canonical frame)
+  Eigen::MatrixXd reprojectedPx;  // T × 30: the 3D walker through the camera, pixels, y down
+  // Per joint, RMS over the frames that see it of |reprojected − input| (px); NaN if never seen.
+  std::array<double, kJointCount> residualRmsPx{};
+};
+
+// The camera fit's options (file, stride hint) are completed here; `fitOptions.file` names
+// the input in errors when left empty. Throws what the reader, the gait finder and the fit
+// throw (typed errors naming the file).
+ClipReconstruction reconstructKeypointClip(const EigenwalkerModel& model, const std::filesystem::path& input,
+                                           const KeypointOptions& keypointOptions, CameraFitOptions fitOptions);
+
+// Where the walker's canonical origin stands at time t relative to the camera's look-at point
+// (docs/CAMERA.md): (0, y0 + v t, −h); orthography has no y0 or h (zero).
+Eigen::Vector3d walkerOriginFromLookAt(const WalkCamera& camera, double timeS);
+// The camera's centre relative to its look-at point, canonical axes, mm: distance D back along
+// the viewing direction (azimuth α), D sin ε up. Scaled orthography has no distance:
+// `orthographicDistanceMm` stands in for it.
+Eigen::Vector3d cameraFromLookAt(const WalkCamera& camera, double orthographicDistanceMm = 5000.0);
+
+}  // namespace ew
