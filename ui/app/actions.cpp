@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <string_view>
@@ -14,6 +16,8 @@
 #include "core/io/bvh_writer.h"
 #include "core/io/joint_csv.h"
 #include "core/io/load_trial.h"
+#include "core/keypoints/keypoint_frames.h"
+#include "core/keypoints/keypoint_layout.h"
 #include "ui/app/held_model.h"
 #include "ui/app/script.h"
 #include "ui/app/state_json.h"
@@ -282,6 +286,106 @@ void takeLoaded(AppState& s, const std::shared_ptr<const Population>& pop) {
   startModels(s);
 }
 
+// [SECTION] Keypoint clips
+
+// The model a clip is fitted with: the one walkers are inspected against (completionModel).
+ClipModel clipModel(AppState& s) {
+  ClipModel m;
+  m.model = completionModel(s);
+  if (!m.model) throw std::runtime_error("no model to fit the clip with");
+  m.name = s.doc.defaultModel && m.model.get() == &s.doc.defaultModel->model ? s.doc.defaultModel->name
+                                                                             : heldModelName(s.doc);
+  return m;
+}
+
+// Starts the fit the document asks for, unless it is shown, running, or failed already.
+void startClipFit(AppState& s) {
+  if (!s.doc.clip || s.jobs.clip.running()) return;
+  const ClipModel model = clipModel(s);
+  if (s.clip && s.clip->settings == *s.doc.clip && s.clip->model == model) return;
+  if (s.jobs.clipFailed == s.doc.clip) return;
+  s.jobs.clipRunning = *s.doc.clip;
+  const std::string title = "Fitting the camera of " + describePaths({s.doc.clip->path});
+  s.log.info(title);
+  s.jobs.clip.start(title, [settings = *s.doc.clip, model](JobProgress& progress) {
+    progress.set(0, 1, "reading and fitting");
+    return std::make_shared<const ClipResult>(fitClip(settings, model));
+  });
+}
+
+// A 3D view that takes in the walker's path and the camera: from the side of the walker's
+// path away from the camera, raised, far enough to hold both.
+void frameClipScene(AppState& s, const ClipResult& c) {
+  const Eigen::Vector3d eye = cameraFromLookAt(c.rec.fit.camera) - walkerOriginFromLookAt(c.rec.fit.camera, 0.5 * c.durationS());
+  OrbitCamera& cam = s.view.camera;
+  cam = OrbitCamera::preset(CameraPreset::ThreeQuarter);
+  cam.target = {static_cast<float>(0.5 * eye.x()), static_cast<float>(0.5 * eye.y()), 900.0f};
+  // From behind the walker's shoulder, 40° off the line to the camera: the walker near and
+  // large, the camera across the floor, both in view for any panel shape.
+  const double line = std::hypot(eye.x(), eye.y());
+  cam.distanceMm = static_cast<float>(std::clamp(0.9 * line + 4000.0, 4000.0, 20000.0));
+  cam.pitchDeg = 22.0f;
+  const double across = std::atan2(eye.x(), eye.y()) * 180.0 / std::numbers::pi + 140.0;
+  cam.yawDeg = static_cast<float>(std::remainder(across, 360.0));
+}
+
+void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& c) {
+  const bool newClip = !s.clip || s.clip->settings.path != c->settings.path;
+  s.clip = c;
+  s.jobs.clipFailed.reset();
+  s.jobs.clipError.clear();
+  const auto& cam = c->rec.fit.camera;
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "azimuth %.1f°, elevation %.1f°, reprojection RMS %.2f px, in %.0f ms",
+                cam.alphaDeg, cam.elevationDeg, c->rec.fit.reprojectionRmsPx, 1000.0 * c->seconds);
+  s.log.info("Fitted " + describePaths({c->settings.path}) + " (" + c->rec.trial.format + ", " +
+             c->rec.trial.layout->name + "): " + buf);
+  for (const auto& w : c->rec.trial.warnings) s.log.warning(w);
+  if (!newClip) return;
+  dismissNotice(s);
+  frameClipScene(s, *c);
+  std::erase(s.recentPaths, c->settings.path);
+  s.recentPaths.insert(s.recentPaths.begin(), c->settings.path);
+  if (s.recentPaths.size() > 10) s.recentPaths.resize(10);
+}
+
+// A fit that failed: at open, a failed open (the clip shown before, if any, stays); after a
+// change of settings, the controls say why and the last fit stays on screen.
+void clipFailed(AppState& s, const std::string& error) {
+  ++s.jobs.failures;
+  s.jobs.clipFailed = s.jobs.clipRunning;
+  s.jobs.clipError = error;
+  const bool atOpen = !s.clip || s.clip->settings.path != s.jobs.clipRunning.path;
+  if (!atOpen) {
+    s.log.error("Clip fit failed (" + heldCameraValues(s.jobs.clipRunning) + "): " + error);
+    return;
+  }
+  if (s.doc.clip == s.jobs.clipRunning) {
+    s.doc.clip = s.clip ? std::optional<ClipSettings>(s.clip->settings) : std::nullopt;
+    if (!s.doc.clip && s.doc.mode == Mode::Clip) s.doc.mode = Mode::Reconstruct;
+  }
+  reportOpenError(s, {s.jobs.clipRunning.path}, error);
+}
+
+// Opens the first keypoint clip among `paths` and returns the others; further clips are
+// refused (one clip at a time).
+std::vector<std::filesystem::path> openClips(AppState& s, std::vector<std::filesystem::path> paths,
+                                             std::vector<std::string>& refused) {
+  std::vector<std::filesystem::path> rest;
+  bool opened = false;
+  for (auto& p : paths) {
+    if (!isKeypointClip(p)) {
+      rest.push_back(std::move(p));
+    } else if (opened) {
+      refused.push_back(p.string() + ": one keypoint clip at a time");
+    } else {
+      openClip(s, p);
+      opened = true;
+    }
+  }
+  return rest;
+}
+
 }  // namespace
 
 std::string describePaths(const std::vector<std::filesystem::path>& paths) {
@@ -324,6 +428,14 @@ void open(AppState& s, std::vector<std::filesystem::path> paths) {
       !paths.empty() &&
       std::all_of(paths.begin(), paths.end(), [](const auto& p) { return isModelFile(p); });
   request.paths = openModelFiles(s, std::move(paths));
+  const bool hadPaths = !request.paths.empty();
+  request.paths = openClips(s, std::move(request.paths), request.refused);
+  for (const auto& r : request.refused) s.log.warning("skipped: " + r);
+  if (hadPaths && request.paths.empty()) {
+    // Only a clip: the synthetic walkers load too when nothing is, for the other modes.
+    if (!s.doc.population && !s.jobs.busy()) requestOpen(s, OpenRequest{});
+    return;
+  }
   if (onlyModels) {
     // A model alone, with nothing to inspect yet: the synthetic walkers, against it.
     if (s.doc.walkerCount() > 0 || s.jobs.busy() || s.doc.modelSource != ModelSource::File) return;
@@ -376,6 +488,19 @@ void pollJobs(AppState& s) {
       s.jobs.notice->canRetry = true;
     }
   }
+  if (auto outcome = s.jobs.clip.poll()) {
+    if (outcome->value) {
+      takeClip(s, *outcome->value);
+    } else {
+      clipFailed(s, outcome->error);
+    }
+  }
+  try {
+    startClipFit(s);
+  } catch (const std::exception& e) {
+    s.jobs.clipRunning = *s.doc.clip;
+    clipFailed(s, e.what());
+  }
   if (auto outcome = s.jobs.summary.poll()) {
     if (outcome->value) {
       s.dataSummary = *outcome->value;
@@ -420,6 +545,8 @@ void selectWalker(AppState& s, int index) {
     throw std::invalid_argument("walker index " + std::to_string(index) + " out of range");
   if (s.doc.walker != index) s.doc.editedSd.clear();
   s.doc.walker = index;
+  // A walker picked while a keypoint clip is shown: show that walker (the clip stays open).
+  if (s.doc.mode == Mode::Clip) s.doc.mode = Mode::Reconstruct;
 }
 
 void selectSubject(AppState& s, const std::string& subjectOrId) {
@@ -756,9 +883,10 @@ void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
     if (!std::filesystem::exists(p, ec)) {
       request.refused.push_back(p.string() + ": no such file or folder");
     } else if (!std::filesystem::is_directory(p, ec) && !isSupportedDataFile(p) &&
-               !isModelFile(p)) {
+               !isModelFile(p) && !isKeypointClip(p)) {
       request.refused.push_back(p.string() +
                                 ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv), a "
+                                "pose estimator's keypoints (.json, MediaPipe / DeepLabCut .csv), a "
                                 "model (.ewm) or a folder");
     } else {
       request.paths.push_back(p);
@@ -771,7 +899,8 @@ void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
   const bool onlyModels = std::all_of(request.paths.begin(), request.paths.end(),
                                       [](const auto& p) { return isModelFile(p); });
   request.paths = openModelFiles(s, std::move(request.paths));
-  if (onlyModels) {
+  request.paths = openClips(s, std::move(request.paths), request.refused);
+  if (onlyModels || request.paths.empty()) {
     for (const auto& r : request.refused) s.log.warning("skipped: " + r);
     return;
   }
@@ -921,6 +1050,7 @@ void showPanel(AppState& s, const std::string& name, bool shown) {
 }
 
 double playbackStrideHz(const AppState& s) {
+  if (s.doc.mode == Mode::Clip) return s.clip ? s.clip->rec.fit.strideHz : 0.9;
   if (s.doc.mode == Mode::Explore) {
     const auto* e = s.derived.explore();
     return e ? e->strideHz : 0.9;
@@ -964,6 +1094,94 @@ void setModelSource(AppState& s, const std::string& which) {
   s.doc.editedSd.clear();
   ++s.doc.generation;
   s.log.info("Model: " + heldModelName(s.doc));
+}
+
+}  // namespace ew::ui::actions
+
+namespace ew::ui::actions {
+
+// [SECTION] Keypoint clips
+
+namespace {
+
+ClipSettings& clipSettings(AppState& s) {
+  if (!s.doc.clip) throw std::invalid_argument("no keypoint clip is open");
+  return *s.doc.clip;
+}
+
+}  // namespace
+
+bool isKeypointClip(const std::filesystem::path& path) {
+  try {
+    return looksLikeKeypointInput(path) && !isModelFile(path);
+  } catch (const std::exception&) {
+    return false;  // unreadable: the motion-capture loader says why
+  }
+}
+
+void openClip(AppState& s, const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw std::invalid_argument(path.string() + ": no such file or folder");
+  ClipSettings settings;
+  settings.path = path;
+  // A clip opened again keeps what the user chose for it.
+  if (s.doc.clip && s.doc.clip->path == path) settings = *s.doc.clip;
+  s.doc.clip = settings;
+  s.doc.mode = Mode::Clip;
+  s.jobs.clipFailed.reset();
+  s.log.info("Opening the keypoint clip " + path.string());
+}
+
+void setClipFocal(AppState& s, std::optional<double> focalPx) {
+  if (focalPx && !(std::isfinite(*focalPx) && *focalPx >= 50.0 && *focalPx <= 100000.0))
+    throw std::invalid_argument("focal length must lie in [50, 100000] px");
+  clipSettings(s).focalPx = focalPx;
+}
+
+void setClipAzimuth(AppState& s, std::optional<double> alphaDeg) {
+  if (alphaDeg && !(std::isfinite(*alphaDeg) && *alphaDeg >= -180.0 && *alphaDeg <= 180.0))
+    throw std::invalid_argument("azimuth must lie in [-180, 180] degrees");
+  clipSettings(s).alphaDeg = alphaDeg;
+}
+
+void setClipElevation(AppState& s, std::optional<double> elevationDeg) {
+  if (elevationDeg && !(std::isfinite(*elevationDeg) && *elevationDeg >= -30.0 && *elevationDeg <= 80.0))
+    throw std::invalid_argument("elevation must lie in [-30, 80] degrees");
+  clipSettings(s).elevationDeg = elevationDeg;
+}
+
+void setClipLayout(AppState& s, const std::string& layout) {
+  std::string name;
+  if (!layout.empty()) {
+    try {
+      name = keypointLayoutNamed(layout).name;
+    } catch (const std::exception& e) {
+      throw std::invalid_argument(e.what());
+    }
+  }
+  clipSettings(s).layout = name;
+}
+
+void setClipFps(AppState& s, double fps) {
+  if (!(std::isfinite(fps) && fps >= 0.0 && fps <= 10000.0))
+    throw std::invalid_argument("frame rate must lie in [0, 10000] fps (0 = the file's, else 30)");
+  clipSettings(s).fps = fps;
+}
+
+void setClipPerson(AppState& s, int person) {
+  if (person < -1) throw std::invalid_argument("person must be -1 (the walker) or a track index");
+  if (s.clip && person >= static_cast<int>(s.clip->rec.trial.people.size()))
+    throw std::invalid_argument("person " + std::to_string(person) + " out of range (" +
+                                std::to_string(s.clip->rec.trial.people.size()) + " tracks)");
+  clipSettings(s).person = person;
+}
+
+void closeClip(AppState& s) {
+  s.doc.clip.reset();
+  s.clip.reset();
+  s.jobs.clipFailed.reset();
+  s.jobs.clipError.clear();
+  if (s.doc.mode == Mode::Clip) s.doc.mode = Mode::Reconstruct;
 }
 
 }  // namespace ew::ui::actions

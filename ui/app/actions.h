@@ -126,6 +126,22 @@ void showPanel(AppState& s, const std::string& name, bool shown);
 // Every walker is then inspected against it. Throws std::invalid_argument with the reason.
 void setModelSource(AppState& s, const std::string& which);
 
+// [SECTION] Keypoint clips (ui/app/clip.h, docs/VIEWER.md "Keypoint clips")
+// True for what openClip takes: an OpenPose folder, a keypoint JSON, a MediaPipe / DLC CSV.
+bool isKeypointClip(const std::filesystem::path& path);
+// Opens a pose estimator's clip in Mode::Clip; its camera fit runs in the background. A clip
+// that cannot be read or fitted is reported as a failed open, and what was shown stays.
+void openClip(AppState& s, const std::filesystem::path& path);
+// The clip fit's choices, each refitting in the background; nullopt / "" / 0 / -1: estimated,
+// guessed, the file's or 30 fps, the walker. Throw std::invalid_argument for values out of range.
+void setClipFocal(AppState& s, std::optional<double> focalPx);
+void setClipAzimuth(AppState& s, std::optional<double> alphaDeg);
+void setClipElevation(AppState& s, std::optional<double> elevationDeg);
+void setClipLayout(AppState& s, const std::string& layout);
+void setClipFps(AppState& s, double fps);
+void setClipPerson(AppState& s, int person);
+void closeClip(AppState& s);
+
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).
 int coefficientCount(const AppState& s);
 // The stride frequency driving playback (selected walker, or the population mean).

@@ -83,6 +83,10 @@ struct Jobs {
   BackgroundJob<std::shared_ptr<const ModelSet>> models;
   BackgroundJob<std::shared_ptr<const AnalysisResult>> analysis;  // the analysis panel's curves
   BackgroundJob<std::shared_ptr<const DataSummary>> summary;      // the Data window's table
+  BackgroundJob<std::shared_ptr<const ClipResult>> clip;           // a keypoint clip's camera fit
+  ClipSettings clipRunning;                  // the settings of the running clip fit
+  std::optional<ClipSettings> clipFailed;    // not retried until the settings change
+  std::string clipError;                     // why that fit failed (the controls show it)
   AnalysisKey analysisRunning;            // the key of the running analysis job
   std::optional<AnalysisKey> analysisFailed;  // not retried until the inputs change
   std::string analysisError;
@@ -97,7 +101,7 @@ struct Jobs {
 
   bool busy() const {
     return load.running() || models.running() || analysis.running() || summary.running() ||
-           pendingOpen.has_value();
+           clip.running() || pendingOpen.has_value();
   }
 };
 
@@ -138,6 +142,7 @@ struct AppState {
   Exports exports;
   AnalysisCache analysis;
   std::shared_ptr<const DataSummary> dataSummary;  // of the current generation, once computed
+  std::shared_ptr<const ClipResult> clip;          // the last clip fit that succeeded
   Log log;
   Fonts fonts;
   Panels panels;

@@ -8,17 +8,20 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/engine/reconstruction.h"
+#include "ui/app/clip.h"
 #include "ui/app/model_set.h"
 #include "ui/app/population.h"
 #include "ui/render/camera.h"
 
 namespace ew::ui {
 
-enum class Mode { Reconstruct, Explore };
+// Clip: a pose estimator's keypoint clip, reconstructed through its unknown camera.
+enum class Mode { Reconstruct, Explore, Clip };
 
 struct ReconstructionSettings {
   double alphaDeg = 30.0;        // true view angle of the 2D input (SPEC §5)
@@ -58,6 +61,8 @@ struct Document {
   std::shared_ptr<const Population> inspected;
 
   Mode mode = Mode::Reconstruct;
+  // The keypoint clip opened (Mode::Clip shows it) and the user's choices for its fit.
+  std::optional<ClipSettings> clip;
   // Index into the walkers: the population's first, then the inspected ones.
   int walker = 0;
   ReconstructionSettings recon;

@@ -15,6 +15,7 @@
 #include "core/engine/fourier.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/panels/clip_view.h"
 #include "ui/panels/input_view_panel.h"
 #include "ui/panels/reconstruction_view_panel.h"
 #include "ui/render/renderer.h"
@@ -28,7 +29,16 @@ WalkerMotion displayedWalkerMotion(const AppState& s, std::optional<double> cycl
   double strideHz = 0.0;
   double defaultCycles = 4.0;
   WalkerMotion m;
-  if (s.doc.mode == Mode::Reconstruct) {
+  if (s.doc.mode == Mode::Clip) {
+    if (!s.clip) throw std::invalid_argument("no keypoint clip fitted yet");
+    const CameraFit& fit = s.clip->rec.fit;
+    w = &fit.w;
+    strideHz = fit.strideHz;
+    defaultCycles = std::max(1.0, s.clip->rec.gait.cycles);
+    m.description = "reconstruction of the keypoint clip " + s.clip->settings.path.string() + " through its camera (azimuth " +
+                    std::to_string(fit.camera.alphaDeg) + " deg, elevation " + std::to_string(fit.camera.elevationDeg) +
+                    " deg), model " + s.clip->model.name;
+  } else if (s.doc.mode == Mode::Reconstruct) {
     const auto* r = s.derived.recon();
     const auto* d = s.derived.display();
     if (!r || !d) throw std::invalid_argument("no reconstruction to export yet");
@@ -155,10 +165,19 @@ bool VideoExport::step(const AppState& s, Renderer& renderer, double budgetMs) {
   m.right.ensure(wr, h, renderer.samples());
   while (m.done < m.total) {
     const double cycles = static_cast<double>(m.done) * m.strideHz / m.settings.fps;
-    buildInputScene(s, m.scene, lineScale, cycles - std::floor(cycles));
-    renderer.render(m.left, m.scene, inputViewCamera(static_cast<float>(wl) / static_cast<float>(h)));
-    float errorScale = 1.0f;
-    buildReconstructionScene(s, m.scene, lineScale, cycles, &errorScale);
+    const float aspectLeft = static_cast<float>(wl) / static_cast<float>(h);
+    if (s.doc.mode == Mode::Clip && s.clip) {
+      // A keypoint clip: its input frames in image pixels, the walker where the camera saw it.
+      const int frame = clipFrameAt(*s.clip, cycles);
+      buildClipInputScene(s, m.scene, lineScale, frame);
+      renderer.render(m.left, m.scene, clipInputCamera(clipImageFrame(*s.clip, aspectLeft), aspectLeft));
+      buildClipReconstructionScene(s, m.scene, lineScale, frame);
+    } else {
+      buildInputScene(s, m.scene, lineScale, cycles - std::floor(cycles));
+      renderer.render(m.left, m.scene, inputViewCamera(aspectLeft));
+      float errorScale = 1.0f;
+      buildReconstructionScene(s, m.scene, lineScale, cycles, &errorScale);
+    }
     renderer.render(m.right, m.scene, s.view.camera.matrices(static_cast<float>(wr) / static_cast<float>(h)));
     blitRgb(m.left.readPixelsRgb(), wl, h, m.frame, 0);
     blitRgb(m.right.readPixelsRgb(), wr, h, m.frame, wl);

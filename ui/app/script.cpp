@@ -24,7 +24,7 @@ const std::set<std::string>& knownActions() {
       "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
       "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour",
       "drop",         "set_file_override", "reload", "export_data_summary", "export_state",
-      "expect_failure", "set_model", "write_joint_mapping"};
+      "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip"};
   // clang-format on
   return names;
 }
@@ -97,6 +97,39 @@ std::vector<std::filesystem::path> pathList(const ScriptAction& a) {
   return paths;
 }
 
+// {"set_clip": {"focal_px": F | null, "azimuth_deg": A | null, "elevation_deg": E | null,
+//  "layout": "BODY_25B" | "", "fps": 30 | 0, "person": 1 | -1}}: null / "" / 0 / -1 estimate,
+// guess or take the default again.
+void applyClipSettings(AppState& s, const ScriptAction& a) {
+  if (!a.argument.is_object() || a.argument.empty())
+    throw std::invalid_argument("expects an object of clip settings");
+  auto optionalNumber = [](const nlohmann::json& v, const std::string& key) -> std::optional<double> {
+    if (v.is_null()) return std::nullopt;
+    if (!v.is_number()) throw std::invalid_argument(key + " must be a number or null");
+    return v.get<double>();
+  };
+  for (const auto& [key, v] : a.argument.items()) {
+    if (key == "focal_px") {
+      actions::setClipFocal(s, optionalNumber(v, key));
+    } else if (key == "azimuth_deg") {
+      actions::setClipAzimuth(s, optionalNumber(v, key));
+    } else if (key == "elevation_deg") {
+      actions::setClipElevation(s, optionalNumber(v, key));
+    } else if (key == "layout") {
+      if (!v.is_string()) throw std::invalid_argument("layout must be a string");
+      actions::setClipLayout(s, v.get<std::string>());
+    } else if (key == "fps") {
+      actions::setClipFps(s, optionalNumber(v, key).value_or(0.0));
+    } else if (key == "person") {
+      if (!v.is_number_integer()) throw std::invalid_argument("person must be a whole number");
+      actions::setClipPerson(s, v.get<int>());
+    } else {
+      throw std::invalid_argument("unknown clip setting \"" + key +
+                                  "\" (known: focal_px, azimuth_deg, elevation_deg, layout, fps, person)");
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<ScriptAction> parseScript(const nlohmann::json& script, const std::string& name) {
@@ -164,9 +197,16 @@ void applyAction(AppState& s, const ScriptAction& a) {
       actions::setMode(s, Mode::Reconstruct);
     } else if (m == "explore") {
       actions::setMode(s, Mode::Explore);
+    } else if (m == "clip") {
+      if (!s.doc.clip) throw std::invalid_argument("no keypoint clip is open");
+      actions::setMode(s, Mode::Clip);
     } else {
-      throw std::invalid_argument("mode must be \"reconstruct\" or \"explore\"");
+      throw std::invalid_argument("mode must be \"reconstruct\", \"explore\" or \"clip\"");
     }
+  } else if (n == "set_clip") {
+    applyClipSettings(s, a);
+  } else if (n == "close_clip") {
+    actions::closeClip(s);
   } else if (n == "set_angle") {
     actions::setAngle(s, number(a));
   } else if (n == "set_method") {

@@ -1,6 +1,9 @@
 #include "ui/app/state_json.h"
 
+#include <cmath>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "ui/app/app_state.h"
 #include "ui/app/held_model.h"
@@ -85,6 +88,53 @@ nlohmann::json reconstructionJson(const Derived& derived) {
   return j;
 }
 
+nlohmann::json optionalJson(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+// The keypoint clip: what the user chose, and the last fit (camera, walk, residuals).
+nlohmann::json clipJson(const AppState& s) {
+  if (!s.doc.clip) return nullptr;
+  const ClipSettings& c = *s.doc.clip;
+  nlohmann::json j = {{"path", c.path.string()},
+                      {"layout_chosen", c.layout},
+                      {"fps_chosen", c.fps},
+                      {"person_chosen", c.person},
+                      {"focal_px_fixed", optionalJson(c.focalPx)},
+                      {"azimuth_deg_fixed", optionalJson(c.alphaDeg)},
+                      {"elevation_deg_fixed", optionalJson(c.elevationDeg)},
+                      {"fit_error", s.jobs.clipError}};
+  if (!s.clip) return j;
+  const ClipResult& r = *s.clip;
+  const CameraFit& f = r.rec.fit;
+  const bool pinhole = f.camera.model == CameraModel::Pinhole;
+  std::vector<double> residuals(r.rec.residualRmsPx.begin(), r.rec.residualRmsPx.end());
+  for (double& v : residuals)
+    if (!std::isfinite(v)) v = -1.0;  // JSON has no NaN: never seen
+  j["fit"] = {{"current", r.settings == c},
+              {"model", r.model.name},
+              {"format", r.rec.trial.format},
+              {"layout", r.rec.trial.layout->name},
+              {"frames", r.rec.trial.frameCount},
+              {"rate_hz", r.rec.trial.rateHz},
+              {"people", r.rec.trial.people.size()},
+              {"person", r.rec.trial.chosen},
+              {"alpha_deg", f.camera.alphaDeg},
+              {"elevation_deg", f.camera.elevationDeg},
+              {"focal_px", pinhole ? nlohmann::json(f.camera.focalPx) : nlohmann::json(nullptr)},
+              {"distance_m", pinhole ? nlohmann::json(f.camera.distanceMm / 1000.0) : nlohmann::json(nullptr)},
+              {"reprojection_rms_px", f.reprojectionRmsPx},
+              {"residual_rms_px", residuals},
+              {"head_height_m", f.headHeightMm / 1000.0},
+              {"speed_mps", f.speedMps},
+              {"stride_hz", f.strideHz},
+              {"stride_length_m", f.strideLengthM},
+              {"seconds", r.seconds}};
+  return j;
+}
+
+const char* modeName(Mode m) {
+  return m == Mode::Reconstruct ? "reconstruct" : m == Mode::Explore ? "explore" : "clip";
+}
+
 const char* levelName(LogLevel level) {
   return level == LogLevel::Error ? "error" : level == LogLevel::Warning ? "warning" : "info";
 }
@@ -100,7 +150,8 @@ nlohmann::json stateJson(const AppState& s) {
   j["model"] = modelJson(d);
   j["reconstruction"] = reconstructionJson(s.derived);
   j["reconstruction_error"] = s.derived.error();
-  j["mode"] = d.mode == Mode::Reconstruct ? "reconstruct" : "explore";
+  j["mode"] = modeName(d.mode);
+  j["clip"] = clipJson(s);
   j["angle_deg"] = d.recon.alphaDeg;
   j["method"] = d.recon.estimator == Estimator::Lsq ? "lsq" : "map";
   j["sigma2_mm2"] = d.recon.sigma2Mm2;

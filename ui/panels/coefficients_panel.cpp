@@ -1,6 +1,7 @@
 #include "ui/panels/coefficients_panel.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "ui/app/actions.h"
@@ -8,12 +9,50 @@
 
 namespace ew::ui {
 
+namespace {
+
+// Mode::Clip: the fit's coefficients in SD units of the model it used (read only: the camera
+// and the walker are one fit).
+void drawClipCoefficients(const AppState& s, const FrameContext& ctx) {
+  if (!s.clip) {
+    ImGui::TextDisabled(s.jobs.clip.running() ? "fitting…" : "no fit");
+    return;
+  }
+  const EigenwalkerModel& m = *s.clip->model.model;
+  const Eigen::VectorXd& k = s.clip->rec.fit.k;
+  ImGui::TextDisabled("fitted with the camera (SD units)");
+  ImGui::Separator();
+  const float labelW = 88.0f * ctx.scale;
+  const double total = std::max(m.spectrum.sum(), 1e-12);
+  ImGui::BeginDisabled();
+  for (Eigen::Index i = 0; i < k.size(); ++i) {
+    float value = static_cast<float>(k[i] / std::sqrt(std::max(m.eigenvalues[i], 1e-12)));
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::AlignTextToFramePadding();
+    ImGui::Text("e%-2d", static_cast<int>(i) + 1);
+    ImGui::SameLine();
+    ImGui::TextDisabled("%4.1f%%", 100.0 * m.eigenvalues[i] / total);
+    ImGui::SameLine(labelW);
+    ImGui::SetNextItemWidth(-1.0f);
+    ImGui::SliderFloat("##k", &value, -3.0f, 3.0f, "%+.2f SD");
+    ImGui::PopID();
+  }
+  ImGui::EndDisabled();
+}
+
+}  // namespace
+
 void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   if (beginPanel(ctx.backdrop, "Eigenwalker coefficients", rect)) {
     const bool explore = s.doc.mode == Mode::Explore;
     const ReconBase* r = s.derived.recon();
     const ReconDisplay* d = s.derived.display();
     const ExploreResult* e = s.derived.explore();
+    if (s.doc.mode == Mode::Clip) {
+      drawClipCoefficients(s, ctx);
+      ImGui::End();
+      return;
+    }
     const int n = actions::coefficientCount(s);
     if (explore) {
       if (ImGui::Button("Reset")) actions::resetCoefficients(s);

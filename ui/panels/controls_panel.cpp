@@ -5,6 +5,7 @@
 #include "core/engine/model.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/panels/clip_controls.h"
 
 namespace ew::ui {
 
@@ -23,10 +24,19 @@ void sectionTitle(const char* text) {
 void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   if (beginPanel(ctx.backdrop, "Controls", rect)) {
     auto& doc = s.doc;
-    int mode = doc.mode == Mode::Reconstruct ? 0 : 1;
+    int mode = static_cast<int>(doc.mode);
     if (ImGui::RadioButton("Reconstruct", &mode, 0)) actions::setMode(s, Mode::Reconstruct);
     ImGui::SameLine();
     if (ImGui::RadioButton("Explore gait space", &mode, 1)) actions::setMode(s, Mode::Explore);
+    if (doc.clip) {
+      if (ImGui::RadioButton("Keypoint clip", &mode, 2)) actions::setMode(s, Mode::Clip);
+    }
+    if (doc.mode == Mode::Clip) {
+      drawClipControls(s, ctx);
+      drawViewControls(s, ctx);
+      ImGui::End();
+      return;
+    }
 
     sectionTitle("View angle");
     float alpha = static_cast<float>(doc.recon.alphaDeg);
@@ -72,6 +82,13 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     if (ImGui::SliderInt("##components", &n, 0, maxN, fmt, ImGuiSliderFlags_AlwaysClamp))
       actions::setComponents(s, n);
 
+    drawViewControls(s, ctx);
+  }
+  ImGui::End();
+}
+
+void ControlsPanel::drawViewControls(AppState& s, const FrameContext& ctx) {
+  {
     sectionTitle("3D camera");
     const float bw =
         (ImGui::GetContentRegionAvail().x - 3.0f * ImGui::GetStyle().ItemSpacing.x) / 4.0f;
@@ -122,7 +139,6 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       pendingUiScale = 0.0f;
     }
   }
-  ImGui::End();
 }
 
 }  // namespace ew::ui

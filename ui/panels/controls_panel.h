@@ -13,6 +13,8 @@ struct ControlsPanel {
   float pendingUiScale = 0.0f;  // while the scale slider is dragged (applied on release)
 
   void draw(AppState& s, const FrameContext& ctx, const PanelRect& rect);
+  // The 3D camera presets, overlays and display settings (every mode).
+  void drawViewControls(AppState& s, const FrameContext& ctx);
 };
 
 }  // namespace ew::ui

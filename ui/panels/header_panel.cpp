@@ -41,11 +41,15 @@ float drawProgress(AppState& s, const FrameContext& ctx, float right) {
   }
   if (!s.jobs.busy()) return right;
   const bool loading = s.jobs.load.running();
-  const bool analysing = !loading && !s.jobs.models.running() && s.jobs.analysis.running();
+  const bool clipping = !loading && !s.jobs.models.running() && s.jobs.clip.running();
+  const bool analysing = !loading && !clipping && !s.jobs.models.running() && s.jobs.analysis.running();
+  // The camera fit reports no steps: the bar runs empty with its title.
   const float fraction = loading     ? s.jobs.load.fraction()
+                         : clipping  ? 0.0f
                          : analysing ? s.jobs.analysis.fraction()
                                      : s.jobs.models.fraction();
   const std::string what = loading     ? s.jobs.load.title() + ": " + s.jobs.load.what()
+                           : clipping  ? s.jobs.clip.title() + "…"
                            : analysing ? s.jobs.analysis.title()
                                        : s.jobs.models.title() + ": " + s.jobs.models.what();
   ImGui::SameLine(right - w);
@@ -71,8 +75,36 @@ void modelChoice(AppState& s, const char* label, bool selected, bool enabled,
 
 }  // namespace
 
+std::vector<std::string> clipLines(const ClipResult& c) {
+  const CameraFit& f = c.rec.fit;
+  const WalkCamera& cam = f.camera;
+  char camera[200], brief[120];
+  if (cam.model == CameraModel::Pinhole) {
+    std::snprintf(camera, sizeof camera, "camera: azimuth %.1f° · %.1f° down · focal %.0f px%s · %.2f m away · reprojection %.1f px RMS",
+                  cam.alphaDeg, cam.elevationDeg, cam.focalPx, c.settings.focalPx ? "" : " (est.)",
+                  cam.distanceMm / 1000.0, f.reprojectionRmsPx);
+    std::snprintf(brief, sizeof brief, "az %.1f° · %.1f° down · f %.0f px · %.1f m · %.1f px", cam.alphaDeg,
+                  cam.elevationDeg, cam.focalPx, cam.distanceMm / 1000.0, f.reprojectionRmsPx);
+  } else {
+    std::snprintf(camera, sizeof camera, "camera (scaled orthography): azimuth %.1f° · %.1f° down · %.3f px/mm · reprojection %.1f px RMS",
+                  cam.alphaDeg, cam.elevationDeg, cam.pxPerMm, f.reprojectionRmsPx);
+    std::snprintf(brief, sizeof brief, "az %.1f° · %.1f° down · %.1f px", cam.alphaDeg, cam.elevationDeg,
+                  f.reprojectionRmsPx);
+  }
+  const std::string held = heldCameraValues(c.settings);
+  const std::string withHeld = std::string(camera) + (held.empty() ? "" : "  ·  held: " + held);
+  const std::string model = "model: " + c.model.name;
+  const std::string clip = "clip: " + c.settings.path.filename().string() + " (" + c.rec.trial.format + ", " +
+                           c.rec.trial.layout->name + ", " + std::to_string(c.rec.trial.frameCount) + " frames)";
+  return {withHeld + "  ·  " + model + "  ·  " + clip, withHeld + "  ·  " + model, camera, brief};
+}
+
 std::vector<std::string> modelLines(const AppState& s) {
   std::string full, medium, brief;
+  if (s.doc.mode == Mode::Clip) {
+    if (s.clip) return clipLines(*s.clip);
+    return {"", "", "", ""};
+  }
   if (s.doc.mode == Mode::Reconstruct) {
     if (const auto* r = s.derived.recon()) {
       const std::string n =

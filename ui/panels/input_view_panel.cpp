@@ -1,10 +1,12 @@
 #include "ui/panels/input_view_panel.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <vector>
 
 #include "ui/app/app_state.h"
+#include "ui/panels/clip_view.h"
 #include "ui/convert.h"
 #include "ui/panels/view_overlay.h"
 #include "ui/render/camera.h"
@@ -86,7 +88,72 @@ CameraMatrices inputViewCamera(float aspect) {
   return imageCamera(aspect, {0.0f, kViewCentreVMm}, kViewHeightMm);
 }
 
+namespace {
+
+// A round number of pixels about a fifth of the view's width, for the scale bar.
+float roundPixels(float px) {
+  for (float step : {10.0f, 20.0f, 50.0f, 100.0f, 200.0f, 500.0f, 1000.0f})
+    if (step >= px) return step;
+  return 2000.0f;
+}
+
+// The clip's view: its input in image pixels, the reprojection, the residuals named.
+void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size, const ClipImageFrame& frame,
+                         int shown) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 p1{p0.x + size.x, p0.y + size.y};
+  const float pad = 10.0f * ctx.scale;
+  const ClipReconstruction& rec = s.clip->rec;
+  char sub[220];
+  std::snprintf(sub, sizeof sub, "%s · %s · frame %d / %d (%.2f s) · pixels, y down",
+                rec.trial.format.c_str(), rec.trial.layout->name.c_str(), shown + 1, rec.trial.frameCount,
+                shown / rec.trial.rateHz);
+  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input (keypoints)", sub, s.fonts.large, ctx.scale);
+  // The largest residual of this frame, named.
+  int worst = -1;
+  double worstPx = 0.0;
+  for (int j = 0; j < kJointCount; ++j) {
+    const double du = rec.reprojectedPx(shown, 2 * j) - rec.trial.jointsPx(shown, 2 * j);
+    const double dv = rec.reprojectedPx(shown, 2 * j + 1) - rec.trial.jointsPx(shown, 2 * j + 1);
+    const double d = std::hypot(du, dv);
+    if (std::isfinite(d) && d > worstPx) worst = j, worstPx = d;
+  }
+  const float screenPerPx = size.y / frame.heightPx;
+  const float bar = roundPixels(0.18f * size.x / screenPerPx);
+  char label[32];
+  std::snprintf(label, sizeof label, "%.0f px", static_cast<double>(bar));
+  const float len = bar * screenPerPx;
+  const ImVec2 left(p1.x - pad - len - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale);
+  const ImU32 c = IM_COL32(170, 178, 190, 220);
+  dl->AddLine(left, ImVec2(left.x + len, left.y), c, 2.0f * ctx.scale);
+  dl->AddLine(ImVec2(left.x, left.y - 5 * ctx.scale), ImVec2(left.x, left.y + 5 * ctx.scale), c, 2.0f * ctx.scale);
+  dl->AddLine(ImVec2(left.x + len, left.y - 5 * ctx.scale), ImVec2(left.x + len, left.y + 5 * ctx.scale), c,
+              2.0f * ctx.scale);
+  const ImVec2 ts = ImGui::CalcTextSize(label);
+  dl->AddText(ImVec2(left.x + 0.5f * (len - ts.x), left.y - ts.y - 6.0f * ctx.scale), c, label);
+  std::vector<LegendItem> legend{{palette::kInputPoint, "keypoints (u, v px)", false},
+                                 {palette::kCamera, "principal point (est.)", true}};
+  if (s.view.overlays.reprojection && !s.view.overlays.pointLights) {
+    legend.push_back({palette::kReconRight, "3D walker through the est. camera", true});
+    char residual[96];
+    if (worst >= 0) {
+      const std::string name(jointName(static_cast<Joint>(worst)));
+      std::snprintf(residual, sizeof residual, "residual (largest: %s %.1f px)", name.c_str(), worstPx);
+    } else {
+      std::snprintf(residual, sizeof residual, "residual");
+    }
+    legend.push_back({palette::kError, residual, true});
+  }
+  drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale);
+}
+
+}  // namespace
+
 void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  if (s.doc.mode == Mode::Clip) {
+    drawClip(s, ctx, rect);
+    return;
+  }
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   if (beginPanel(ctx.backdrop, "2D input", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
                                         ImGuiWindowFlags_NoBackground)) {
@@ -135,6 +202,38 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
         const char* msg = s.jobs.busy() ? "loading…" : "nothing loaded";
         const ImVec2 ts = ImGui::CalcTextSize(msg);
         dl->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y), IM_COL32(160, 168, 180, 255), msg);
+      }
+    }
+  }
+  ImGui::End();
+  ImGui::PopStyleVar();
+}
+
+void InputViewPanel::drawClip(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
+  if (beginPanel(ctx.backdrop, "2D input", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
+                                        ImGuiWindowFlags_NoBackground)) {
+    const ImVec2 p0 = ImGui::GetCursorScreenPos();
+    const ImVec2 size = ImGui::GetContentRegionAvail();
+    const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
+    if (size.x > 4.0f && size.y > 4.0f) {
+      target.ensure(static_cast<int>(size.x * fbScale.x), static_cast<int>(size.y * fbScale.y),
+                    ctx.renderer.samples());
+      const float aspect = size.x / size.y;
+      const int frame = s.clip ? clipFrameAt(*s.clip, s.view.playback.cycles) : 0;
+      const bool drawn = buildClipInputScene(s, scene, ctx.scale, frame);
+      const ClipImageFrame image = s.clip ? clipImageFrame(*s.clip, aspect) : ClipImageFrame{};
+      ctx.renderer.render(target, scene, clipInputCamera(image, aspect));
+      lastImage = {p0, size};
+      ctx.backdrop.image(target, {p0.x, p0.y});
+      if (drawn) {
+        drawClipAnnotations(s, ctx, p0, size, image, frame);
+      } else {
+        const char* msg = s.jobs.clip.running() ? "reading the keypoints and fitting the camera…"
+                                                : "the clip could not be fitted";
+        const ImVec2 ts = ImGui::CalcTextSize(msg);
+        ImGui::GetWindowDrawList()->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y),
+                                            IM_COL32(160, 168, 180, 255), msg);
       }
     }
   }

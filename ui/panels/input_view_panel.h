@@ -26,6 +26,8 @@ struct InputViewPanel {
   PanelRect lastImage;  // where the view was drawn last frame (screen pixels), for PNG export
 
   void draw(AppState& s, const FrameContext& ctx, const PanelRect& rect);
+  // Mode::Clip: the keypoint clip in image pixels (ui/panels/clip_view.h).
+  void drawClip(AppState& s, const FrameContext& ctx, const PanelRect& rect);
 };
 
 }  // namespace ew::ui

@@ -26,6 +26,26 @@ void metric(const AppState& s, const char* label, const char* value, const char*
   ImGui::SameLine();
 }
 
+// A keypoint clip: the walk in metres and seconds (the prior knows how big people are) and
+// how well the walker drawn back through the camera meets the keypoints.
+void clipMetrics(const AppState& s, float width) {
+  const ClipReconstruction& rec = s.clip->rec;
+  const CameraFit& f = rec.fit;
+  char v[64], n[96];
+  std::snprintf(v, sizeof v, "%.2f m", f.headHeightMm / 1000.0);
+  metric(s, "height  head above ankles", v, "", width);
+  std::snprintf(v, sizeof v, "%.2f m/s", f.speedMps);
+  metric(s, "speed", v, rec.trial.rateAssumed ? "(30 fps?)" : "", width);
+  std::snprintf(v, sizeof v, "%.2f m", f.strideLengthM);
+  std::snprintf(n, sizeof n, "%.2f Hz", f.strideHz);
+  metric(s, "stride length", v, n, width);
+  std::snprintf(v, sizeof v, "%.0f /min", f.cadenceStepsPerMin);
+  metric(s, "cadence  steps", v, "", width);
+  std::snprintf(v, sizeof v, "%.1f px", f.reprojectionRmsPx);
+  metric(s, "reprojection  RMS", v, "", width);
+  ImGui::NewLine();
+}
+
 }  // namespace
 
 void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
@@ -36,6 +56,12 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
       ImGui::TextDisabled("Gait-space explorer");
       ImGui::TextWrapped("Drag the eigenwalker sliders: the walker is the mean walker plus Σ k_n e_n, animated in 3D and "
                          "projected at α on the left. Errors are shown in reconstruct mode.");
+    } else if (s.doc.mode == Mode::Clip && s.view.overlays.metrics) {
+      if (s.clip) {
+        clipMetrics(s, std::max(150.0f * ctx.scale, (ImGui::GetContentRegionAvail().x - 8.0f) / 5.0f));
+      } else {
+        ImGui::TextDisabled(s.jobs.clip.running() ? "fitting the camera…" : "no fit");
+      }
     } else if (!s.view.overlays.metrics) {
       ImGui::TextDisabled("metrics hidden (overlay \"metrics\")");
     } else if (r && d) {

@@ -1,5 +1,7 @@
 #include "ui/panels/playback_panel.h"
 
+#include <cstdio>
+
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 
@@ -23,11 +25,25 @@ void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     ImGui::SetNextItemWidth(150.0f * ctx.scale);
     ImGui::SliderFloat("##speed", &p.speed, 0.1f, 2.0f, "speed %.2f×", ImGuiSliderFlags_AlwaysClamp);
     ImGui::SameLine();
-    float phase = static_cast<float>(p.phase());
     ImGui::SetNextItemWidth(-1.0f);
-    if (ImGui::SliderFloat("##phase", &phase, 0.0f, 1.0f, "gait phase %.3f", ImGuiSliderFlags_AlwaysClamp)) {
-      p.setPhase(phase);
-      p.playing = false;
+    if (s.doc.mode == Mode::Clip && s.clip && strideHz > 0.0) {
+      // A keypoint clip plays its frames: the slider picks one (the 3D view follows).
+      const ClipResult& c = *s.clip;
+      const int shown = clipFrameAt(c, p.cycles);
+      int frame = shown + 1;  // counted from 1, as the 2D view's caption says
+      char format[64];
+      std::snprintf(format, sizeof format, "frame %%d / %d (%.2f s)", c.rec.trial.frameCount, shown / c.rec.trial.rateHz);
+      if (ImGui::SliderInt("##frame", &frame, 1, c.rec.trial.frameCount, format, ImGuiSliderFlags_AlwaysClamp)) {
+        // Half a frame in, so that the frame shown is this one however the time rounds.
+        p.cycles = (frame - 0.5) / c.rec.trial.rateHz * strideHz;
+        p.playing = false;
+      }
+    } else {
+      float phase = static_cast<float>(p.phase());
+      if (ImGui::SliderFloat("##phase", &phase, 0.0f, 1.0f, "gait phase %.3f", ImGuiSliderFlags_AlwaysClamp)) {
+        p.setPhase(phase);
+        p.playing = false;
+      }
     }
   }
   ImGui::End();

@@ -9,13 +9,50 @@
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
 #include "ui/render/palette.h"
+#include "ui/widgets/plot.h"
 
 namespace ew::ui {
 
+namespace {
+
+// Mode::Clip: where each start of the camera fit ended (azimuth, reprojection RMS): the
+// image's ambiguities (depth reversal, mirror, facing) as separate minima, the best marked.
+void drawClipStarts(const AppState& s, const FrameContext& ctx) {
+  if (!s.clip) {
+    ImGui::TextDisabled(s.jobs.clip.running() ? "fitting…" : "no fit");
+    return;
+  }
+  const auto& starts = s.clip->rec.fit.starts;
+  std::vector<double> alpha, rms, bestAlpha, bestRms;
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    auto& xs = i == 0 ? bestAlpha : alpha;
+    auto& ys = i == 0 ? bestRms : rms;
+    xs.push_back(starts[i].alphaDeg);
+    ys.push_back(std::max(starts[i].reprojectionRmsPx, 1e-3));
+  }
+  const PlotSeries series[] = {
+      {"where a start ended", alpha, rms, IM_COL32(250, 200, 90, 255), 0.0f, false, true},
+      {"the fit", bestAlpha, bestRms, toImU32(palette::kCameraEstimate), 0.0f, false, true}};
+  PlotSpec spec;
+  spec.xLabel = "camera azimuth α (°)";
+  spec.yLabel = "reprojection RMS (px)";
+  spec.xUnit = "°";
+  spec.yLog = true;
+  spec.yFromZero = false;
+  spec.valueFormat = "%.2f";
+  drawPlot("##starts", ImGui::GetContentRegionAvail(), spec, series, ctx.scale);
+}
+
+}  // namespace
+
 void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  if (beginPanel(ctx.backdrop, "View-angle profile J(α)", rect, ImGuiWindowFlags_NoScrollbar)) {
+  const char* title = s.doc.mode == Mode::Clip ? "Camera fit: where each start ended###profile"
+                                               : "View-angle profile J(α)###profile";
+  if (beginPanel(ctx.backdrop, title, rect, ImGuiWindowFlags_NoScrollbar)) {
     const ReconBase* r = s.derived.recon();
-    if (s.doc.mode == Mode::Explore) {
+    if (s.doc.mode == Mode::Clip) {
+      drawClipStarts(s, ctx);
+    } else if (s.doc.mode == Mode::Explore) {
       ImGui::TextDisabled("reconstruct mode only");
     } else if (!s.doc.recon.unknownAngle) {
       ImGui::TextDisabled("The view angle is known.");

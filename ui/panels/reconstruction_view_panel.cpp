@@ -10,6 +10,7 @@
 #include "core/engine/reconstruction.h"
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
+#include "ui/panels/clip_view.h"
 #include "ui/panels/view_overlay.h"
 #include "ui/render/camera.h"
 #include "ui/render/figures.h"
@@ -40,6 +41,31 @@ float strideLengthMm(const AppState& s) {
   if (s.doc.mode == Mode::Reconstruct && f && f->speedMps && f->strideHz > 0.0)
     return static_cast<float>(*f->speedMps * 1000.0 / f->strideHz);
   return 1400.0f;
+}
+
+// The clip's 3D view: where the estimated camera stands, and what is estimated.
+void drawClipAnnotations(const AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const float pad = 10.0f * ctx.scale;
+  const CameraFit& fit = s.clip->rec.fit;
+  const WalkCamera& c = fit.camera;
+  char sub[240];
+  if (c.model == CameraModel::Pinhole) {
+    const ClipWorld w = clipWorld(*s.clip, 0);
+    // The camera's distance to the walker's path (the line x = 0 of the walk).
+    std::snprintf(sub, sizeof sub, "camera %.2f m high, %.1f m from the walking line, azimuth %.1f°, %.1f° down",
+                  w.eye.z / 1000.0, std::abs(w.eye.x) / 1000.0, c.alphaDeg, c.elevationDeg);
+  } else {
+    std::snprintf(sub, sizeof sub, "scaled orthography: azimuth %.1f°, %.1f° down (distance not estimated; drawn at 5 m)",
+                  c.alphaDeg, c.elevationDeg);
+  }
+  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "3D reconstruction and the estimated camera", sub, s.fonts.large,
+              ctx.scale);
+  std::vector<LegendItem> legend{{palette::kReconRight, "reconstruction (right side darker)", false},
+                                 {palette::kCamera, "estimated camera, its view of the walk", true},
+                                 {palette::kReconMid, "walking line over the clip", true}};
+  if (!fit.unseenJoints.empty()) legend.push_back({palette::kModelEstimated, "never seen: from the model", false});
+  drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), legend, ctx.scale);
 }
 
 }  // namespace
@@ -124,7 +150,10 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       const ReconBase* r = s.derived.recon();
       const ReconDisplay* d = s.derived.display();
       float errorScale = 1.0f;
-      const bool drawn = buildReconstructionScene(s, scene, ctx.scale, s.view.playback.cycles, &errorScale);
+      const bool clipMode = s.doc.mode == Mode::Clip;
+      const bool drawn =
+          clipMode ? buildClipReconstructionScene(s, scene, ctx.scale, s.clip ? clipFrameAt(*s.clip, s.view.playback.cycles) : 0)
+                   : buildReconstructionScene(s, scene, ctx.scale, s.view.playback.cycles, &errorScale);
       const float aspect = size.x / size.y;
       ctx.renderer.render(target, scene, s.view.camera.matrices(aspect));
       lastImage = {p0, size};
@@ -133,6 +162,9 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       const ImVec2 p1{p0.x + size.x, p0.y + size.y};
       ctx.backdrop.image(target, {p0.x, p0.y});
       const float pad = 10.0f * ctx.scale;
+      if (clipMode) {
+        if (drawn) drawClipAnnotations(s, ctx, p0, size);
+      } else {
       char sub[200];
       if (reconstruct && r) {
         const char* est = s.doc.recon.estimator == Estimator::Lsq ? "LSQ" : "MAP";
@@ -175,8 +207,10 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       if (reconstruct && d && o.depthErrorColour && !o.pointLights)
         drawErrorColourBar(dl, ImVec2(p1.x - pad, p0.y + 78.0f * ctx.scale), std::min(200.0f * ctx.scale, size.y * 0.35f),
                            errorScale, "depth error (RMS)", ctx.scale);
+      }
       if (!drawn) {
-        const char* msg = s.jobs.busy() ? "building models…" : "nothing to show";
+        const char* msg = clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : "the clip could not be fitted")
+                          : s.jobs.busy() ? "building models…" : "nothing to show";
         const ImVec2 ts = ImGui::CalcTextSize(msg);
         dl->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y), IM_COL32(160, 168, 180, 255), msg);
       }

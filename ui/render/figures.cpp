@@ -1,5 +1,6 @@
 #include "ui/render/figures.h"
 
+#include <array>
 #include <cmath>
 
 #include "ui/render/palette.h"
@@ -147,6 +148,32 @@ void addCameraGlyph(Scene& scene, double alphaDeg, float radiusMm, const glm::ve
   line(front[0], front[0] + right * 50.0f, 3.0f, 0.0f);
   // Sight line along the floor to the walker.
   line(pos + look * 80.0f, glm::vec3(0.0f, 0.0f, 5.0f), 1.5f, dashed ? 6.0f : 10.0f);
+}
+
+void addRealCameraGlyph(Scene& scene, const CameraPose& pose, std::span<const glm::vec3> rays,
+                        const glm::vec4& colour, float lineScale) {
+  auto line = [&](glm::vec3 p, glm::vec3 q, float width, float dash, glm::vec4 c) {
+    scene.lines.push_back({p, width * lineScale, q, dash, c});
+  };
+  const glm::vec3 up = -pose.down;
+  const float w = 190.0f, h = 130.0f, len = 260.0f;
+  // Body behind the eye, lens in front of it.
+  const glm::vec3 c = pose.eye - pose.forward * 40.0f;
+  const glm::vec3 back = c - pose.forward * len;
+  const std::array<glm::vec3, 4> corner{pose.right * w * 0.5f + up * h * 0.5f, -pose.right * w * 0.5f + up * h * 0.5f,
+                                        -pose.right * w * 0.5f - up * h * 0.5f, pose.right * w * 0.5f - up * h * 0.5f};
+  for (std::size_t i = 0; i < 4; ++i) {
+    line(c + corner[i], c + corner[(i + 1) % 4], 2.0f, 0.0f, colour);
+    line(back + corner[i], back + corner[(i + 1) % 4], 2.0f, 0.0f, colour);
+    line(c + corner[i], back + corner[i], 2.0f, 0.0f, colour);
+    line(c + corner[i] * 0.45f, pose.eye + pose.forward * 120.0f + corner[i] * 0.8f, 2.0f, 0.0f, colour);
+  }
+  // "Up" tick on the image's top edge, so that a mirrored or rolled image would show.
+  line(c + corner[0], c + corner[0] + up * 60.0f, 3.0f, 0.0f, colour);
+  const glm::vec4 faint(glm::vec3(colour), 0.45f);
+  for (const glm::vec3& r : rays) line(pose.eye, pose.eye + r, 1.5f, 0.0f, faint);
+  // Height above the floor.
+  line(pose.eye, glm::vec3(pose.eye.x, pose.eye.y, 0.0f), 1.5f, 8.0f, faint);
 }
 
 }  // namespace ew::ui

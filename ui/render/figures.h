@@ -45,4 +45,14 @@ void addErrorLines(Scene& scene, const Pose3& from, const Pose3& to, const glm::
 void addCameraGlyph(Scene& scene, double alphaDeg, float radiusMm, const glm::vec4& colour,
                     bool dashed);
 
+// A real camera standing at `eye` (mm), its axes right / down / forward (unit, the image's
+// u, v and optical axis), drawn as a body with a lens; `rays` (direction vectors, each
+// reaching as far as it should) are drawn from the eye as its field of view, and a dashed
+// line drops from the eye to the floor to show its height.
+struct CameraPose {
+  glm::vec3 eye{0.0f}, right{1.0f, 0.0f, 0.0f}, down{0.0f, 0.0f, -1.0f}, forward{0.0f, 1.0f, 0.0f};
+};
+void addRealCameraGlyph(Scene& scene, const CameraPose& pose, std::span<const glm::vec3> rays,
+                        const glm::vec4& colour, float lineScale);
+
 }  // namespace ew::ui

@@ -149,7 +149,7 @@ void drawPlot(const char* id, const ImVec2& size, const PlotSpec& spec, std::spa
   for (const auto& s : series) {
     const std::size_t n = std::min(s.x.size(), s.y.size());
     auto flush = [&] {
-      if (run.size() >= 2) {
+      if (run.size() >= 2 && s.thickness > 0.0f) {
         if (s.dashed) {
           for (std::size_t i = 0; i + 1 < run.size(); ++i)
             dashedLine(dl, run[i], run[i + 1], s.colour, s.thickness * scale, 6.0f * scale);

@@ -16,7 +16,7 @@ struct PlotSeries {
   std::string label;
   std::span<const double> x, y;  // same length; NaN values break the line
   ImU32 colour = IM_COL32(255, 255, 255, 255);
-  float thickness = 2.0f;        // × the UI scale
+  float thickness = 2.0f;        // × the UI scale; 0: no line (points only)
   bool dashed = false;
   bool points = false;           // a dot at each sample
 };

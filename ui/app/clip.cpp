@@ -1,0 +1,58 @@
+#include "ui/app/clip.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "core/engine/model.h"
+
+namespace ew::ui {
+
+ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
+  const auto start = std::chrono::steady_clock::now();
+  KeypointOptions k;
+  if (!settings.layout.empty()) k.layout = settings.layout;
+  if (settings.fps > 0.0) k.fps = settings.fps;
+  if (settings.person >= 0) k.person = settings.person;
+  CameraFitOptions o;
+  // The σ² the model stores as its optimum, as `reconstruct --unknown-camera` uses.
+  o.estimator = {Estimator::Map, defaultSigma2Mm2(*model.model)};
+  o.focalPx = settings.focalPx;
+  o.alphaDeg = settings.alphaDeg;
+  o.elevationDeg = settings.elevationDeg;
+  ClipResult r{settings, model, reconstructKeypointClip(*model.model, settings.path, k, o), 0.0};
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+int clipFrameAt(const ClipResult& clip, double cycles) {
+  const int frames = clip.rec.trial.frameCount;
+  const double strideHz = clip.rec.fit.strideHz;
+  if (frames <= 0 || !(strideHz > 0.0)) return 0;
+  const double t = std::fmod(std::max(cycles, 0.0) / strideHz, clip.durationS());
+  return std::clamp(static_cast<int>(t * clip.rec.trial.rateHz), 0, frames - 1);
+}
+
+std::string heldCameraValues(const ClipSettings& settings) {
+  std::vector<std::string> parts;
+  char buf[64];
+  if (settings.focalPx) {
+    std::snprintf(buf, sizeof buf, "focal %.0f px", *settings.focalPx);
+    parts.emplace_back(buf);
+  }
+  if (settings.alphaDeg) {
+    std::snprintf(buf, sizeof buf, "azimuth %.1f°", *settings.alphaDeg);
+    parts.emplace_back(buf);
+  }
+  if (settings.elevationDeg) {
+    std::snprintf(buf, sizeof buf, "elevation %.1f°", *settings.elevationDeg);
+    parts.emplace_back(buf);
+  }
+  std::string out;
+  for (const auto& p : parts) out += (out.empty() ? "" : ", ") + p;
+  return out;
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,52 @@
+#pragma once
+// A pose estimator's keypoint clip in the viewer (docs/VIEWER.md, "Keypoint clips"): what the
+// user chose for it (the Document's part) and the reconstruction through the unknown camera
+// (core/camera/clip_reconstruction.h), computed in the background whenever the choice changes.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/camera/clip_reconstruction.h"
+#include "core/engine/model.h"
+
+namespace ew::ui {
+
+struct ClipSettings {
+  std::filesystem::path path;      // OpenPose folder or file, AlphaPose / MMPose JSON, MediaPipe / DLC CSV
+  std::string layout;              // "" = guessed
+  double fps = 0.0;                // 0 = the file's, else 30 (JSON stores none)
+  int person = -1;                 // -1 = the one who walks
+  std::optional<double> focalPx;   // known focal length (else estimated)
+  std::optional<double> alphaDeg;  // azimuth held at this value (else estimated)
+  std::optional<double> elevationDeg;
+  bool operator==(const ClipSettings&) const = default;
+};
+
+// The model a clip is fitted with and what the header calls it.
+struct ClipModel {
+  std::shared_ptr<const EigenwalkerModel> model;
+  std::string name;
+  bool operator==(const ClipModel& o) const { return model == o.model; }
+};
+
+struct ClipResult {
+  ClipSettings settings;
+  ClipModel model;
+  ClipReconstruction rec;
+  double seconds = 0.0;  // how long reading and fitting took
+  double durationS() const { return rec.timesS.size() > 0 ? rec.trial.frameCount / rec.trial.rateHz : 0.0; }
+};
+
+// Reads and fits the clip (blocking; the viewer runs it as a background job). Throws what
+// core throws: typed errors naming the file.
+ClipResult fitClip(const ClipSettings& settings, const ClipModel& model);
+
+// The clip's frame shown at playback position `cycles` (gait cycles since the start, wrapped
+// to the clip's length): the 2D input and the 3D walker are drawn at this same frame.
+int clipFrameAt(const ClipResult& clip, double cycles);
+// Fixed values the fit held, for captions: "focal 1400 px, elevation 12°" ("" when none).
+std::string heldCameraValues(const ClipSettings& settings);
+
+}  // namespace ew::ui

@@ -1,0 +1,142 @@
+#include "ui/panels/clip_controls.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+#include <exception>
+#include <optional>
+#include <string>
+
+#include "core/keypoints/keypoint_layout.h"
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+
+namespace ew::ui {
+
+namespace {
+
+void sectionTitle(const char* text) {
+  ImGui::Spacing();
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.62f, 0.72f, 1.0f));
+  ImGui::TextUnformatted(text);
+  ImGui::PopStyleColor();
+  ImGui::Separator();
+}
+
+// Runs an action; a value it refuses goes to the log (the widgets keep values in range).
+template <class F>
+void apply(AppState& s, F&& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    s.log.error(e.what());
+  }
+}
+
+void layoutCombo(AppState& s, const ClipSettings& c, const ClipResult* r) {
+  const std::string guessed = r ? "guess (" + r->rec.trial.layout->name + ")" : std::string("guess");
+  const std::string preview = c.layout.empty() ? guessed : c.layout;
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::BeginCombo("##layout", preview.c_str())) {
+    if (ImGui::Selectable(guessed.c_str(), c.layout.empty())) apply(s, [&] { actions::setClipLayout(s, ""); });
+    for (const auto& l : keypointLayouts()) {
+      // Only layouts with the file's point count can read it.
+      const bool fits = !r || static_cast<int>(l.points.size()) == static_cast<int>(r->rec.trial.layout->points.size());
+      if (!fits) continue;
+      if (ImGui::Selectable(l.name.c_str(), c.layout == l.name)) apply(s, [&] { actions::setClipLayout(s, l.name); });
+    }
+    ImGui::EndCombo();
+  }
+}
+
+void personCombo(AppState& s, const ClipSettings& c, const ClipResult& r) {
+  const auto& people = r.rec.trial.people;
+  if (people.size() < 2) return;
+  char preview[64];
+  std::snprintf(preview, sizeof preview, c.person < 0 ? "the walker (track %d)" : "track %d", r.rec.trial.chosen + 1);
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::BeginCombo("##person", preview)) {
+    if (ImGui::Selectable("the walker (who crosses the image)", c.person < 0))
+      apply(s, [&] { actions::setClipPerson(s, -1); });
+    for (std::size_t i = 0; i < people.size(); ++i) {
+      char label[96];
+      std::snprintf(label, sizeof label, "track %zu: %zu frames, moves %.0f px", i + 1, people[i].frames.size(),
+                    people[i].travelPx);
+      if (ImGui::Selectable(label, c.person == static_cast<int>(i)))
+        apply(s, [&] { actions::setClipPerson(s, static_cast<int>(i)); });
+    }
+    ImGui::EndCombo();
+  }
+}
+
+// A camera value: "fix" holds it (starting from the estimate); unfixed, the estimate shows.
+template <class Setter>
+void heldValue(AppState& s, const char* id, const char* label, std::optional<double> held, double estimate,
+               float lo, float hi, const char* format, bool typed, Setter set) {
+  ImGui::PushID(id);
+  bool fixed = held.has_value();
+  if (ImGui::Checkbox("##fix", &fixed)) apply(s, [&] { set(fixed ? std::optional<double>(estimate) : std::nullopt); });
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Hold %s at the value you set (unticked: estimated)", label);
+  ImGui::SameLine();
+  float v = static_cast<float>(held.value_or(estimate));
+  ImGui::BeginDisabled(!fixed);
+  ImGui::SetNextItemWidth(-1.0f);
+  const bool changed = typed ? ImGui::InputFloat("##v", &v, 0.0f, 0.0f, format, ImGuiInputTextFlags_EnterReturnsTrue)
+                             : ImGui::SliderFloat("##v", &v, lo, hi, format, ImGuiSliderFlags_AlwaysClamp);
+  if (changed && fixed) apply(s, [&] { set(std::optional<double>(v)); });
+  ImGui::EndDisabled();
+  ImGui::PopID();
+}
+
+}  // namespace
+
+void drawClipControls(AppState& s, const FrameContext& ctx) {
+  (void)ctx;
+  if (!s.doc.clip) return;
+  const ClipSettings c = *s.doc.clip;
+  const ClipResult* r = s.clip.get();
+  sectionTitle("Keypoint clip");
+  ImGui::TextUnformatted(c.path.filename().string().c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.path.string().c_str());
+  if (r) {
+    const auto& t = r->rec.trial;
+    ImGui::TextDisabled("%s · %d frames · %d %s", t.format.c_str(), t.frameCount, t.maxPeople,
+                        t.maxPeople == 1 ? "person" : "people at most");
+  }
+  ImGui::TextDisabled("layout");
+  layoutCombo(s, c, r);
+  float fps = static_cast<float>(c.fps);
+  ImGui::SetNextItemWidth(-1.0f);
+  const char* fpsFormat = c.fps > 0.0 ? "%.2f fps" : (r && !r->rec.trial.rateAssumed ? "the file's rate" : "30 fps (assumed)");
+  if (ImGui::InputFloat("##fps", &fps, 0.0f, 0.0f, fpsFormat, ImGuiInputTextFlags_EnterReturnsTrue))
+    apply(s, [&] { actions::setClipFps(s, fps); });
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The video's frame rate (JSON stores none; 0 = the file's, else 30)");
+  if (r) personCombo(s, c, *r);
+
+  sectionTitle("Camera (tick to hold a value)");
+  const WalkCamera* cam = r ? &r->rec.fit.camera : nullptr;
+  if (!cam || cam->model == CameraModel::Pinhole) {
+    ImGui::TextDisabled("focal length (type, Enter)");
+    heldValue(s, "focal", "the focal length", c.focalPx, cam ? cam->focalPx : 1500.0, 50.0f, 100000.0f, "%.0f px", true,
+              [&](std::optional<double> v) { actions::setClipFocal(s, v); });
+  }
+  ImGui::TextDisabled("elevation (looking down)");
+  heldValue(s, "elevation", "the elevation", c.elevationDeg, cam ? cam->elevationDeg : 10.0, -10.0f, 60.0f, "%.1f°",
+            false, [&](std::optional<double> v) { actions::setClipElevation(s, v); });
+  ImGui::TextDisabled("azimuth α");
+  heldValue(s, "azimuth", "the azimuth", c.alphaDeg, cam ? cam->alphaDeg : 0.0, -180.0f, 180.0f, "%.1f°", false,
+            [&](std::optional<double> v) { actions::setClipAzimuth(s, v); });
+
+  if (s.jobs.clip.running()) {
+    ImGui::TextDisabled("fitting…");
+  } else if (!s.jobs.clipError.empty() && s.jobs.clipFailed == s.doc.clip) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.55f, 1.0f));
+    ImGui::TextWrapped("These settings do not fit: %s", s.jobs.clipError.c_str());
+    ImGui::PopStyleColor();
+  } else if (r) {
+    ImGui::TextDisabled("fitted in %.0f ms", 1000.0 * r->seconds);
+  }
+  if (ImGui::Button("Close the clip")) actions::closeClip(s);
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,225 @@
+#include "ui/panels/clip_view.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "core/engine/projection.h"
+#include "ui/app/app_state.h"
+#include "ui/convert.h"
+#include "ui/render/figures.h"
+#include "ui/render/palette.h"
+
+namespace ew::ui {
+
+namespace {
+
+// A pixel (u, v) as a scene point of the 2D view (y up on screen: −v).
+glm::vec2 scenePoint(double u, double v) { return {static_cast<float>(u), static_cast<float>(-v)}; }
+
+bool seen(const Eigen::MatrixXd& px, int frame, int joint) {
+  return std::isfinite(px(frame, 2 * joint)) && std::isfinite(px(frame, 2 * joint + 1));
+}
+
+glm::vec2 pointAt(const Eigen::MatrixXd& px, int frame, int joint) {
+  return scenePoint(px(frame, 2 * joint), px(frame, 2 * joint + 1));
+}
+
+// Each seen joint's path over the last stride before `frame`, fading with age (the whole
+// clip's paths would bury the walker of a long clip), broken where it is not seen.
+void addInputTrails(Scene& scene, const Eigen::MatrixXd& px, int frame, int span, float width) {
+  const int first = std::max(1, frame - span);
+  for (int j = 0; j < kJointCount; ++j) {
+    for (int b = first; b <= frame; ++b) {
+      const int a = b - 1;
+      if (!seen(px, a, j) || !seen(px, b, j)) continue;
+      const float age = static_cast<float>(frame - b) / static_cast<float>(std::max(span, 1));
+      glm::vec4 colour = palette::kTrail;
+      colour.a *= 1.6f * (1.0f - age);
+      scene.lines.push_back({glm::vec3(pointAt(px, a, j), -1.0f), width, glm::vec3(pointAt(px, b, j), -1.0f), 0.0f,
+                             colour});
+    }
+  }
+}
+
+// The input joints at `frame` (bones between seen joints), as point-lights.
+void addInputPose(Scene& scene, const Eigen::MatrixXd& px, int frame, float radiusPx, bool bones, float width) {
+  if (bones) {
+    for (const auto& [ja, jb] : kBones) {
+      if (!seen(px, frame, index(ja)) || !seen(px, frame, index(jb))) continue;
+      const bool left = ja == Joint::LShoulder || ja == Joint::LElbow || ja == Joint::LHip || ja == Joint::LKnee ||
+                        jb == Joint::LShoulder || jb == Joint::LElbow || jb == Joint::LWrist || jb == Joint::LHip ||
+                        jb == Joint::LKnee || jb == Joint::LAnkle;
+      scene.lines.push_back({glm::vec3(pointAt(px, frame, index(ja)), 0.0f), width,
+                             glm::vec3(pointAt(px, frame, index(jb)), 0.0f), 0.0f,
+                             left ? palette::kInputBoneLeft : palette::kInputBoneRight});
+    }
+  }
+  for (int j = 0; j < kJointCount; ++j)
+    if (seen(px, frame, j)) scene.glows.push_back({glm::vec3(pointAt(px, frame, j), 0.0f), radiusPx, palette::kInputPoint});
+}
+
+// The reprojected walker's bones and, for each seen joint, the residual to the input.
+void addReprojection(Scene& scene, const ClipReconstruction& rec, int frame, float lineScale) {
+  const Eigen::MatrixXd& re = rec.reprojectedPx;
+  for (const auto& [ja, jb] : kBones) {
+    if (!seen(re, frame, index(ja)) || !seen(re, frame, index(jb))) continue;
+    scene.overlayLines.push_back({glm::vec3(pointAt(re, frame, index(ja)), 1.0f), 2.0f * lineScale,
+                                  glm::vec3(pointAt(re, frame, index(jb)), 1.0f), 0.0f,
+                                  glm::vec4(glm::vec3(palette::kReconRight), 0.9f)});
+  }
+  for (int j = 0; j < kJointCount; ++j) {
+    if (!seen(rec.trial.jointsPx, frame, j) || !seen(re, frame, j)) continue;
+    scene.overlayLines.push_back({glm::vec3(pointAt(rec.trial.jointsPx, frame, j), 1.0f), 2.0f * lineScale,
+                                  glm::vec3(pointAt(re, frame, j), 1.0f), 0.0f, palette::kError});
+  }
+}
+
+// Rays from the camera through the corners of the image region the walker crosses, reaching
+// the look-at point's depth: the part of the field of view the clip uses.
+std::vector<glm::vec3> viewRays(const ClipResult& clip, const ClipWorld& w) {
+  const WalkCamera& c = clip.rec.fit.camera;
+  const Eigen::MatrixXd& px = clip.rec.trial.jointsPx;
+  double u0 = std::numeric_limits<double>::infinity(), u1 = -u0, v0 = u0, v1 = -u0;
+  for (Eigen::Index f = 0; f < px.rows(); ++f) {
+    for (int j = 0; j < kJointCount; ++j) {
+      if (!seen(px, static_cast<int>(f), j)) continue;
+      u0 = std::min(u0, px(f, 2 * j)), u1 = std::max(u1, px(f, 2 * j));
+      v0 = std::min(v0, px(f, 2 * j + 1)), v1 = std::max(v1, px(f, 2 * j + 1));
+    }
+  }
+  if (!std::isfinite(u0)) return {};
+  const float depth = static_cast<float>(c.distanceMm);
+  std::vector<glm::vec3> rays;
+  for (const double u : {u0, u1}) {
+    for (const double v : {v0, v1}) {
+      const float x = static_cast<float>((u - c.cxPx) / c.focalPx), y = static_cast<float>((v - c.cyPx) / c.focalPx);
+      rays.push_back(depth * (w.forward + x * w.right + y * w.down));
+    }
+  }
+  return rays;
+}
+
+}  // namespace
+
+ClipWorld clipWorld(const ClipResult& clip, int frame) {
+  const WalkCamera& c = clip.rec.fit.camera;
+  const double mid = 0.5 * clip.durationS();
+  const double t = clip.rec.timesS.size() > frame ? clip.rec.timesS[frame] : 0.0;
+  // Origin: where the walker's canonical origin stands mid-clip.
+  const Eigen::Vector3d lookAt = -walkerOriginFromLookAt(c, mid);
+  ClipWorld w;
+  w.pinhole = c.model == CameraModel::Pinhole;
+  w.lookAt = toGlm(lookAt);
+  w.eye = toGlm(Eigen::Vector3d(lookAt + cameraFromLookAt(c)));
+  w.walkerOffset = toGlm(Eigen::Vector3d(walkerOriginFromLookAt(c, t) - walkerOriginFromLookAt(c, mid)));
+  const double a = degToRad(c.alphaDeg), e = degToRad(c.elevationDeg);
+  const glm::vec3 depth(static_cast<float>(-std::sin(a)), static_cast<float>(std::cos(a)), 0.0f);
+  const glm::vec3 up(0.0f, 0.0f, 1.0f);
+  const float se = static_cast<float>(std::sin(e)), ce = static_cast<float>(std::cos(e));
+  w.right = {static_cast<float>(std::cos(a)), static_cast<float>(std::sin(a)), 0.0f};
+  w.down = -(se * depth + ce * up);   // Y_c (docs/CAMERA.md)
+  w.forward = ce * depth - se * up;   // Z_c
+  return w;
+}
+
+ClipImageFrame clipImageFrame(const ClipResult& clip, float aspect) {
+  glm::vec2 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
+  for (const Eigen::MatrixXd* px : {&clip.rec.trial.jointsPx, &clip.rec.reprojectedPx}) {
+    for (Eigen::Index f = 0; f < px->rows(); ++f) {
+      for (int j = 0; j < kJointCount; ++j) {
+        if (!seen(*px, static_cast<int>(f), j)) continue;
+        const glm::vec2 p = pointAt(*px, static_cast<int>(f), j);
+        lo = glm::min(lo, p), hi = glm::max(hi, p);
+      }
+    }
+  }
+  if (!std::isfinite(lo.x)) return {};
+  ClipImageFrame frame;
+  frame.centre = 0.5f * (lo + hi);
+  const glm::vec2 size = hi - lo;
+  // Room for the caption above and the legend below.
+  frame.heightPx = std::max({size.y * 1.45f, size.x * 1.12f / std::max(aspect, 0.1f), 50.0f});
+  frame.centre.y -= 0.04f * frame.heightPx;
+  return frame;
+}
+
+CameraMatrices clipInputCamera(const ClipImageFrame& frame, float aspect) {
+  return imageCamera(aspect, frame.centre, frame.heightPx);
+}
+
+bool buildClipInputScene(const AppState& s, Scene& scene, float lineScale, int frame) {
+  scene.clearItems();
+  scene.floor.visible = false;
+  scene.backgroundTop = {0.085f, 0.09f, 0.105f, 1.0f};
+  scene.backgroundBottom = {0.04f, 0.045f, 0.055f, 1.0f};
+  if (!s.clip) return false;
+  const ClipReconstruction& rec = s.clip->rec;
+  const auto& o = s.view.overlays;
+  // Point size: a share of the walker's height in the image.
+  const float radius = static_cast<float>(std::max(3.0, 0.022 * rec.fit.headHeightMm * rec.fit.camera.focalPx /
+                                                             std::max(rec.fit.camera.distanceMm, 1.0)));
+  const float glow = rec.fit.camera.model == CameraModel::Pinhole
+                         ? radius
+                         : static_cast<float>(std::max(3.0, 0.022 * rec.fit.headHeightMm * rec.fit.camera.pxPerMm));
+  if (o.trails && !o.pointLights) {
+    const int stride = static_cast<int>(rec.trial.rateHz / std::max(rec.fit.strideHz, 0.1));
+    addInputTrails(scene, rec.trial.jointsPx, frame, stride, 1.5f * lineScale);
+  }
+  addInputPose(scene, rec.trial.jointsPx, frame, glow, o.stickFigure && !o.pointLights, 2.5f * lineScale);
+  if (o.reprojection && !o.pointLights) addReprojection(scene, rec, frame, lineScale);
+  // The estimated principal point (where the optical axis meets the image).
+  const glm::vec2 c = scenePoint(rec.fit.camera.cxPx, rec.fit.camera.cyPx);
+  const float arm = 2.0f * glow;
+  const glm::vec4 cross(glm::vec3(palette::kCamera), 0.7f);
+  scene.lines.push_back({glm::vec3(c - glm::vec2(arm, 0.0f), -1.5f), 1.5f * lineScale,
+                         glm::vec3(c + glm::vec2(arm, 0.0f), -1.5f), 0.0f, cross});
+  scene.lines.push_back({glm::vec3(c - glm::vec2(0.0f, arm), -1.5f), 1.5f * lineScale,
+                         glm::vec3(c + glm::vec2(0.0f, arm), -1.5f), 0.0f, cross});
+  return true;
+}
+
+bool buildClipReconstructionScene(const AppState& s, Scene& scene, float lineScale, int frame) {
+  scene.clearItems();
+  if (!s.clip) return false;
+  const ClipResult& clip = *s.clip;
+  const ClipReconstruction& rec = clip.rec;
+  const auto& o = s.view.overlays;
+  const ClipWorld w = clipWorld(clip, frame);
+  Pose3 pose = toPose3(rec.framesMm.row(frame));
+  for (auto& p : pose) p += w.walkerOffset;
+  const glm::vec3 pelvis = pose[static_cast<std::size_t>(index(Joint::Pelvis))];
+  scene.floor.visible = o.grid;
+  scene.floor.scrollMm = 0.0f;  // the walker crosses a fixed floor
+  scene.floor.shadowCentre = {pelvis.x, pelvis.y};
+  scene.floor.extentMm = std::clamp(std::max(std::abs(w.eye.x), std::abs(w.eye.y)) + 1000.0f, 3200.0f, 12000.0f);
+  std::array<glm::vec4, kJointCount> colours{};
+  for (int j = 0; j < kJointCount; ++j) {
+    const bool unseen = std::find(rec.fit.unseenJoints.begin(), rec.fit.unseenJoints.end(), j) != rec.fit.unseenJoints.end();
+    colours[static_cast<std::size_t>(j)] = unseen ? palette::kModelEstimated : palette::kReconMid;
+  }
+  if (o.pointLights) {
+    for (const auto& p : pose) scene.glows.push_back({p, 34.0f, palette::kInputPoint});
+  } else if (rec.fit.unseenJoints.empty()) {
+    addFigure(scene, pose, reconstructionStyle());
+  } else {
+    addFigure(scene, pose, reconstructionStyle(), std::span<const glm::vec4, kJointCount>(colours));
+  }
+  // The walker's path over the clip, on the floor.
+  const ClipWorld first = clipWorld(clip, 0), last = clipWorld(clip, rec.trial.frameCount - 1);
+  scene.lines.push_back({glm::vec3(first.walkerOffset.x, first.walkerOffset.y, 3.0f), 2.0f * lineScale,
+                         glm::vec3(last.walkerOffset.x, last.walkerOffset.y, 3.0f), 10.0f * lineScale,
+                         glm::vec4(glm::vec3(palette::kReconMid), 0.6f)});
+  if (o.cameraGlyph) {
+    const std::vector<glm::vec3> rays = w.pinhole ? viewRays(clip, w) : std::vector<glm::vec3>{};
+    addRealCameraGlyph(scene, {w.eye, w.right, w.down, w.forward}, rays, palette::kCamera, lineScale);
+    // Sight line to the look-at point.
+    scene.lines.push_back({w.eye, 1.5f * lineScale, w.lookAt, 6.0f * lineScale,
+                           glm::vec4(glm::vec3(palette::kCamera), 0.6f)});
+  }
+  return true;
+}
+
+}  // namespace ew::ui
