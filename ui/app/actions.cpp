@@ -341,6 +341,7 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& c) {
   s.log.info("Fitted " + describePaths({c->settings.path}) + " (" + c->rec.trial.format + ", " +
              c->rec.trial.layout->name + "): " + buf);
   for (const auto& w : c->rec.trial.warnings) s.log.warning(w);
+  if (s.jobs.lastError.starts_with("Clip fit failed")) s.jobs.lastError.clear();
   if (!newClip) return;
   dismissNotice(s);
   frameClipScene(s, *c);
@@ -357,7 +358,8 @@ void clipFailed(AppState& s, const std::string& error) {
   s.jobs.clipError = error;
   const bool atOpen = !s.clip || s.clip->settings.path != s.jobs.clipRunning.path;
   if (!atOpen) {
-    s.log.error("Clip fit failed (" + heldCameraValues(s.jobs.clipRunning) + "): " + error);
+    s.jobs.lastError = "Clip fit failed (" + heldCameraValues(s.jobs.clipRunning) + "): " + error;
+    s.log.error(s.jobs.lastError);
     return;
   }
   if (s.doc.clip == s.jobs.clipRunning) {

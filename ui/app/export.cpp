@@ -169,8 +169,9 @@ bool VideoExport::step(const AppState& s, Renderer& renderer, double budgetMs) {
     if (s.doc.mode == Mode::Clip && s.clip) {
       // A keypoint clip: its input frames in image pixels, the walker where the camera saw it.
       const int frame = clipFrameAt(*s.clip, cycles);
-      buildClipInputScene(s, m.scene, lineScale, frame);
-      renderer.render(m.left, m.scene, clipInputCamera(clipImageFrame(*s.clip, aspectLeft), aspectLeft));
+      const ClipImageFrame image = clipImageFrame(*s.clip, aspectLeft);
+      buildClipInputScene(s, m.scene, lineScale, frame, image);
+      renderer.render(m.left, m.scene, clipInputCamera(image, aspectLeft));
       buildClipReconstructionScene(s, m.scene, lineScale, frame);
     } else {
       buildInputScene(s, m.scene, lineScale, cycles - std::floor(cycles));

@@ -311,6 +311,11 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   const auto& n = a.name;
   if (n == "expect_failure") {
     applyExpectingFailure(s, a);
+  } else if (n == "set_clip") {
+    // The refit runs in the background: its failure fails the script like a failed open.
+    applyAction(s, a);
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = true;
   } else if (n == "open" || n == "drop") {
     const auto paths = pathList(a);
     failuresBefore_ = s.jobs.failures;
@@ -449,7 +454,7 @@ void ScriptRunner::step(AppState& s) {
     }
     s.log.info("script: " + a.name + " " + a.argument.dump());
     if (a.name == "open" || a.name == "drop" || a.name == "reload" || a.name == "expect_failure" ||
-        a.name == "write_joint_mapping" || a.name == "wait_frames" || a.name == "screenshot" ||
+        a.name == "write_joint_mapping" || a.name == "wait_frames" || a.name == "screenshot" || a.name == "set_clip" ||
         a.name == "export_png" || a.name == "export_video")
       return;
   }

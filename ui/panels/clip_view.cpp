@@ -150,7 +150,7 @@ CameraMatrices clipInputCamera(const ClipImageFrame& frame, float aspect) {
   return imageCamera(aspect, frame.centre, frame.heightPx);
 }
 
-bool buildClipInputScene(const AppState& s, Scene& scene, float lineScale, int frame) {
+bool buildClipInputScene(const AppState& s, Scene& scene, float lineScale, int frame, const ClipImageFrame& view) {
   scene.clearItems();
   scene.floor.visible = false;
   scene.backgroundTop = {0.085f, 0.09f, 0.105f, 1.0f};
@@ -158,12 +158,8 @@ bool buildClipInputScene(const AppState& s, Scene& scene, float lineScale, int f
   if (!s.clip) return false;
   const ClipReconstruction& rec = s.clip->rec;
   const auto& o = s.view.overlays;
-  // Point size: a share of the walker's height in the image.
-  const float radius = static_cast<float>(std::max(3.0, 0.022 * rec.fit.headHeightMm * rec.fit.camera.focalPx /
-                                                             std::max(rec.fit.camera.distanceMm, 1.0)));
-  const float glow = rec.fit.camera.model == CameraModel::Pinhole
-                         ? radius
-                         : static_cast<float>(std::max(3.0, 0.022 * rec.fit.headHeightMm * rec.fit.camera.pxPerMm));
+  // Point-lights a fixed share of the view, whatever the image's resolution.
+  const float glow = 0.012f * view.heightPx;
   if (o.trails && !o.pointLights) {
     const int stride = static_cast<int>(rec.trial.rateHz / std::max(rec.fit.strideHz, 0.1));
     addInputTrails(scene, rec.trial.jointsPx, frame, stride, 1.5f * lineScale);

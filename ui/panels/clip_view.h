@@ -23,8 +23,9 @@ struct ClipImageFrame {
 ClipImageFrame clipImageFrame(const ClipResult& clip, float aspect);
 CameraMatrices clipInputCamera(const ClipImageFrame& frame, float aspect);
 
-// `frame`: the input frame shown. Return false when there is no fit to show.
-bool buildClipInputScene(const AppState& s, Scene& scene, float lineScale, int frame);
+// `frame`: the input frame shown; `view`: the image region shown (points are sized to it).
+// Return false when there is no fit to show.
+bool buildClipInputScene(const AppState& s, Scene& scene, float lineScale, int frame, const ClipImageFrame& view);
 bool buildClipReconstructionScene(const AppState& s, Scene& scene, float lineScale, int frame);
 
 // The camera in the 3D view's coordinates (the walker's canonical frame with its origin where

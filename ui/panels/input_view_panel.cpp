@@ -221,8 +221,8 @@ void InputViewPanel::drawClip(AppState& s, const FrameContext& ctx, const PanelR
                     ctx.renderer.samples());
       const float aspect = size.x / size.y;
       const int frame = s.clip ? clipFrameAt(*s.clip, s.view.playback.cycles) : 0;
-      const bool drawn = buildClipInputScene(s, scene, ctx.scale, frame);
       const ClipImageFrame image = s.clip ? clipImageFrame(*s.clip, aspect) : ClipImageFrame{};
+      const bool drawn = buildClipInputScene(s, scene, ctx.scale, frame, image);
       ctx.renderer.render(target, scene, clipInputCamera(image, aspect));
       lastImage = {p0, size};
       ctx.backdrop.image(target, {p0.x, p0.y});

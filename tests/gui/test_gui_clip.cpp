@@ -1,0 +1,148 @@
+// Keypoint clips in the viewer (issue 13): an OpenPose folder opens like any data; the 2D
+// view shows the keypoints in image pixels with the 3D walker drawn back through the
+// estimated camera (the reprojection overlay), the 3D view the walker and the camera glyph
+// where the camera stands; the camera estimates are those `reconstruct --unknown-camera`
+// finds, and holding the elevation or the focal length refits with that value.
+//
+// The clip: the model's mean walker crossing 6 m from a 1400 px camera 12° above at 40°
+// (tests/camera/filmed_walk.h), with a second person standing beside the path the whole
+// time (the tracker must follow the one who walks).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <string>
+
+#include "tests/camera/filmed_walk.h"
+#include "tests/gui/gui_run.h"
+
+namespace ew::test::gui {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// The estimated camera's teal (palette::kCamera).
+bool isTeal(int r, int g, int b) { return g > 170 && b > 140 && r < 150 && g - r > 80; }
+
+fs::path writeClip(const fs::path& dir) {
+  const fs::path folder = dir / "clip_json";
+  const Eigen::VectorXd t = frameTimes(150, 30.0);
+  const Eigen::MatrixXd walk = synthesizeFrames(defaultRealModel().mean, 2 * std::numbers::pi * kFilmedStrideHz, 0.2, t);
+  const Eigen::MatrixXd walker = projectWalk(walk, t, crossingPinhole(1400, 5.0));
+  // Standing 500 px to the right of where the walker starts, still for the whole clip.
+  Eigen::MatrixXd standing = walker.row(0).replicate(walker.rows(), 1);
+  for (int j = 0; j < 15; ++j) standing.col(2 * j).array() += 500.0;
+  writeOpenPoseBody25(folder, {{walker, Eigen::MatrixXd()}, {standing, Eigen::MatrixXd()}});
+  return folder;
+}
+
+class GuiClip : public GuiTest {
+ protected:
+  json state(const std::string& name) const { return json::parse(readAll(dir / name)); }
+  std::string path(const std::string& name) const { return (dir / name).string(); }
+};
+
+TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
+  const fs::path clip = writeClip(dir);
+  const json script = json::array({
+      {{"open", clip.string()}},
+      {{"play", false}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("opened.json")}},
+      {{"export_png", {{"path", path("input.png")}, {"view", "input"}}}},
+      {{"export_png", {{"path", path("recon.png")}, {"view", "reconstruction"}}}},
+      {{"screenshot", path("window.png")}},
+      {{"overlay", {"reprojection", false}}},
+      {{"overlay", {"camera", false}}},
+      {{"wait_frames", 2}},
+      {{"export_png", {{"path", path("input_off.png")}, {"view", "input"}}}},
+      {{"export_png", {{"path", path("recon_off.png")}, {"view", "reconstruction"}}}},
+      {{"overlay", {"reprojection", true}}},
+      {{"overlay", {"camera", true}}},
+      // Hold the elevation 13° above the truth, then the true focal length.
+      {{"set_clip", {{"elevation_deg", 25.0}}}},
+      {{"export_state", path("elevation.json")}},
+      {{"set_clip", {{"elevation_deg", nullptr}, {"focal_px", 1400.0}}}},
+      {{"export_state", path("focal.json")}},
+      // The standing person does not walk: fitting it fails, and the walker's fit stays.
+      {{"expect_failure", {{"set_clip", {{"person", 1}}}}}},
+      {{"export_state", path("standing.json")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1600x900 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+
+  const json opened = state("opened.json");
+  EXPECT_EQ(opened["mode"], "clip");
+  const json& fit = opened["clip"]["fit"];
+  ASSERT_TRUE(fit.is_object()) << opened["clip"].dump(1);
+  EXPECT_EQ(fit["format"], "OpenPose JSON");
+  EXPECT_EQ(fit["frames"], 150);
+  EXPECT_EQ(fit["people"], 2u);
+  // What `reconstruct --unknown-camera` measures on this walk (tests/camera): 1e-3-exact
+  // is not expected, the detector's sternum is the shoulders' midpoint.
+  EXPECT_NEAR(fit["alpha_deg"].get<double>(), 40.0, 2.0);
+  EXPECT_NEAR(fit["elevation_deg"].get<double>(), 12.0, 2.0);
+  EXPECT_NEAR(fit["focal_px"].get<double>(), 1400.0, 0.05 * 1400);
+  EXPECT_NEAR(fit["distance_m"].get<double>(), 6.0, 0.05 * 6.0);
+  EXPECT_NEAR(fit["speed_mps"].get<double>(), 1.3, 0.05 * 1.3);
+  EXPECT_LT(fit["reprojection_rms_px"].get<double>(), 6.0);
+  EXPECT_EQ(fit["residual_rms_px"].size(), 15u);
+
+  // The reprojection (amber bones, magenta residuals) is drawn over the keypoints, and only
+  // while its overlay is on; the camera glyph (teal) likewise in the 3D view.
+  const cv::Mat input = load("input.png"), inputOff = load("input_off.png");
+  const cv::Mat recon = load("recon.png"), reconOff = load("recon_off.png");
+  EXPECT_GT(countPixels(input, isPointLight), 40);
+  const int amber = countPixels(input, isAmber), amberOff = countPixels(inputOff, isAmber);
+  EXPECT_GT(amber, 200);
+  EXPECT_LT(amberOff, amber / 10) << amber;
+  EXPECT_GT(countPixels(input, isMagenta), 10);
+  const int teal = countPixels(recon, isTeal), tealOff = countPixels(reconOff, isTeal);
+  EXPECT_GT(teal, 300);
+  EXPECT_LT(tealOff, teal / 4) << teal;
+  EXPECT_GT(countPixels(recon, isAmber), 300);  // the 3D walker
+
+  // Held values stay exactly where they were put; the wrong elevation fits worse.
+  const json elevation = state("elevation.json");
+  EXPECT_EQ(elevation["clip"]["elevation_deg_fixed"].get<double>(), 25.0);
+  EXPECT_EQ(elevation["clip"]["fit"]["elevation_deg"].get<double>(), 25.0);
+  EXPECT_TRUE(elevation["clip"]["fit"]["current"].get<bool>());
+  EXPECT_GT(elevation["clip"]["fit"]["reprojection_rms_px"].get<double>(),
+            fit["reprojection_rms_px"].get<double>());
+  const json focal = state("focal.json");
+  EXPECT_EQ(focal["clip"]["fit"]["focal_px"].get<double>(), 1400.0);
+  EXPECT_NEAR(focal["clip"]["fit"]["elevation_deg"].get<double>(), 12.0, 2.0);
+  EXPECT_NEAR(focal["clip"]["fit"]["distance_m"].get<double>(), 6.0, 0.05 * 6.0);
+
+  const json standing = state("standing.json");
+  EXPECT_NE(standing["clip"]["fit_error"].get<std::string>().find("not walking"), std::string::npos)
+      << standing["clip"].dump(1);
+  EXPECT_EQ(standing["clip"]["fit"]["person"], fit["person"]);
+  EXPECT_FALSE(standing["clip"]["fit"]["current"].get<bool>());
+}
+
+// A keypoint file that cannot be read is a failed open naming the file, and what was shown
+// stays (the synthetic walkers).
+TEST_F(GuiClip, BrokenKeypointFileIsAFailedOpen) {
+  const fs::path bad = dir / "broken.json";
+  std::ofstream(bad) << R"({"people": [{"pose_keypoints_2d": [1, 2)";
+  const json script = json::array({{{"open", nullptr}},
+                                   {{"expect_failure", {{"open", bad.string()}}}},
+                                   {{"export_state", path("state.json")}}});
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x800 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const json s = state("state.json");
+  EXPECT_NE(s["mode"], "clip");
+  EXPECT_TRUE(s["clip"].is_null());
+  ASSERT_TRUE(s["notice"].is_object());
+  EXPECT_NE(s["notice"]["detail"].get<std::string>().find("broken.json"), std::string::npos) << s["notice"].dump(1);
+  EXPECT_EQ(s["data"]["walkers"], 50);
+}
+
+}  // namespace
+}  // namespace ew::test::gui
