@@ -337,8 +337,11 @@ KeypointCsvKind keypointCsvKind(std::string_view text) {
     if (isBlankOrComment(line)) continue;
     const auto fields = splitFields(line, ',');
     if (toLower(fields[0]) == "scorer") return KeypointCsvKind::DeepLabCut;
-    const bool nose = std::any_of(fields.begin(), fields.end(), [](std::string_view f) { return toLower(f) == "nose_x"; });
-    return nose ? KeypointCsvKind::MediaPipe : KeypointCsvKind::NotKeypoints;
+    // Two of MediaPipe's own landmark names: a joint CSV with a "nose" column is not one.
+    auto has = [&fields](std::string_view name) {
+      return std::any_of(fields.begin(), fields.end(), [name](std::string_view f) { return toLower(f) == name; });
+    };
+    return has("nose_x") && has("left_eye_inner_x") ? KeypointCsvKind::MediaPipe : KeypointCsvKind::NotKeypoints;
   }
   return KeypointCsvKind::NotKeypoints;
 }

@@ -328,7 +328,9 @@ TEST(KeypointCsv, OnlyMediaPipeAndDeepLabCutCsvsAreKeypoints) {
   EXPECT_TRUE(looksLikeKeypointInput(writeText("mp_sniff", "pose.CSV", "# image_size=10x10\n\n" + mediaPipeCsv(2))));
   EXPECT_TRUE(looksLikeKeypointInput(writeText("dlc_sniff", "dlc.csv", "\xEF\xBB\xBF" + dlcCsv({{"", kDlcParts}}, 2, walking))));
   EXPECT_EQ(keypointCsvKind("frame,time_s,head_x,head_y,head_z\n"), KeypointCsvKind::NotKeypoints);
-  EXPECT_EQ(keypointCsvKind("# nose_x\nframe,nose_x,nose_y\n"), KeypointCsvKind::MediaPipe);
+  EXPECT_EQ(keypointCsvKind("# nose_x\nframe,nose_x,nose_y,left_eye_inner_x\n"), KeypointCsvKind::MediaPipe);
+  // A joint CSV whose columns are misnamed "nose" is not MediaPipe: its own reader says why.
+  EXPECT_EQ(keypointCsvKind("frame,time_s,nose_x,nose_y,nose_z\n"), KeypointCsvKind::NotKeypoints);
   EXPECT_EQ(keypointCsvKind("Scorer,a,a,a\n"), KeypointCsvKind::DeepLabCut);
   EXPECT_EQ(keypointCsvKind(""), KeypointCsvKind::NotKeypoints);
 }
