@@ -45,6 +45,7 @@ struct ReconstructArgs {
   std::optional<double> fps, focalPx, elevationDeg;
   bool orthographic = false;
   std::string imageSize;
+  std::string camera, cameraName;   // a calibration file (--camera) and which of its cameras
 };
 
 // The model the user named, or the default one; truncated to --components (the viewer's
@@ -218,10 +219,12 @@ int runReconstruct(const ReconstructArgs& a) {
     c.mapping = a.mapping, c.imageSize = a.imageSize, c.fps = a.fps, c.focalPx = a.focalPx;
     c.sigma2Mm2 = a.sigma2Mm2, c.json = a.json, c.orthographic = a.orthographic;
     c.alphaDeg = a.angleDeg, c.elevationDeg = a.elevationDeg;
+    c.camera = a.camera, c.cameraName = a.cameraName;
     return runReconstructCamera(chosen.model, c);
   }
-  if (a.elevationDeg)
-    throw Error(ErrorKind::BadArgument, "--elevation", "", "a camera elevation applies to --unknown-camera only");
+  if (a.elevationDeg || !a.camera.empty())
+    throw Error(ErrorKind::BadArgument, a.elevationDeg ? "--elevation" : "--camera", "",
+                "a camera elevation or calibration applies to --unknown-camera only");
   if (a.angleDeg.has_value() == a.unknownAngle) {
     throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
   }
@@ -326,6 +329,11 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
                   "With --unknown-camera: the camera's known elevation in degrees (looking down), held "
                   "instead of estimated; --angle likewise holds the azimuth")
       ->check(CLI::Range(-30.0, 80.0));
+  cmd->add_option("--camera", args->camera,
+                  "With --unknown-camera: a calibration file (Pose2Sim Calib_*.toml, Sports2D Calib_demo.toml) "
+                  "giving the focal length (and a MediaPipe CSV's image size)")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--camera-name", args->cameraName, "Which camera of a --camera file with several (its name)");
   cmd->add_option("--image-size", args->imageSize,
                   "WxH in pixels of the video behind a MediaPipe CSV keypoint input");
   cmd->add_flag("--orthographic", args->orthographic,

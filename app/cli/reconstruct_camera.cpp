@@ -1,11 +1,14 @@
 #include "app/cli/reconstruct_camera.h"
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/camera/calibration_file.h"
 #include "core/camera/clip_reconstruction.h"
+#include "core/common/errors.h"
 #include "core/engine/model_file.h"
 #include "core/io/joint_csv.h"
 
@@ -69,6 +72,26 @@ void printSummary(const json& r) {
 
 }  // namespace
 
+// The focal length the user knows: --focal-px, or a calibration file's camera (which also
+// gives a MediaPipe CSV's image size). Says what it took, and warns about lens distortion,
+// which the camera model leaves out.
+std::optional<double> knownFocal(const CameraArgs& a, KeypointOptions& k, std::string& source) {
+  if (a.camera.empty()) {
+    source = a.focalPx ? "given (--focal-px)" : "estimated";
+    return a.focalPx;
+  }
+  if (a.focalPx) throw Error(ErrorKind::BadArgument, "--camera", "", "give --focal-px or --camera, not both");
+  const CalibratedCamera c =
+      readCalibratedCamera(a.camera, a.cameraName.empty() ? std::nullopt : std::optional<std::string>(a.cameraName));
+  source = "calibration file (" + c.name + ")";
+  if (!k.imageSize && c.widthPx > 0) k.imageSize = KeypointImageSize{static_cast<int>(c.widthPx), static_cast<int>(c.heightPx)};
+  if (std::abs(c.distortions[0]) > 0.05 || std::abs(c.distortions[1]) > 0.05)
+    std::cerr << "warning: " << a.camera << " [" << c.table << "]: lens distortion (k1 " << c.distortions[0] << ", k2 "
+              << c.distortions[1] << ") is not modelled (docs/CAMERA.md)\n";
+  std::cerr << "camera " << c.name << " of " << a.camera << ": focal " << c.focalPx() << " px\n";
+  return c.focalPx();
+}
+
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   KeypointOptions k;
   if (!a.layout.empty()) k.layout = a.layout;
@@ -77,7 +100,8 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   k.fps = a.fps;
   CameraFitOptions o;
   o.estimator = {a.method == "map" ? Estimator::Map : Estimator::Lsq, a.sigma2Mm2.value_or(defaultSigma2Mm2(model))};
-  o.focalPx = a.focalPx;
+  std::string focalSource;
+  o.focalPx = knownFocal(a, k, focalSource);
   o.estimateFocal = !a.orthographic;
   o.alphaDeg = a.alphaDeg;
   o.elevationDeg = a.elevationDeg;
@@ -89,7 +113,8 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   what << "eigenwalker reconstruction of " << a.input << " through an unknown camera (azimuth " << fit.camera.alphaDeg
        << " deg, elevation " << fit.camera.elevationDeg << " deg), model " << a.modelName;
   writeJointCsv(a.out, frames, t.rateHz, {what.str()});
-  const json report = reportJson(a, t, fit);
+  json report = reportJson(a, t, fit);
+  if (report["focal_source"].is_string()) report["focal_source"] = focalSource;
   printSummary(report);
   if (a.json) std::cout << report.dump(2) << "\n";
   return 0;

@@ -14,6 +14,7 @@ struct CameraArgs {
   std::string input, out, layout, method = "map", modelName, mapping, imageSize;
   std::optional<double> fps, focalPx, sigma2Mm2;
   std::optional<double> alphaDeg, elevationDeg;  // known: held, not estimated
+  std::string camera, cameraName;                // a calibration file and its camera
   bool json = false;
   bool orthographic = false;  // scaled orthography instead of estimating the focal length
 };

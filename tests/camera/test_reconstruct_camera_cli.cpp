@@ -97,5 +97,39 @@ TEST(ReconstructCameraCli, KnownAzimuthAndElevationAreHeld) {
   EXPECT_LT(r["reprojection_rms_px"].get<double>(), 6.0);
 }
 
+// A calibration file gives the focal length (--camera, --camera-name): the fit is the one
+// with --focal-px, and the JSON says where the focal length came from.
+TEST(ReconstructCameraCli, CalibrationFileGivesTheFocalLength) {
+  const fs::path clip = filmedOpenPose("camera_cli_calib");
+  const fs::path calib = clip.parent_path() / "Calib_test.toml";
+  std::ofstream(calib) << "[cam_01]\nname = \"side\"\nsize = [1920, 1080]\n"
+                          "matrix = [[1400, 0, 960], [0, 1400, 540], [0, 0, 1]]\n"
+                          "[cam_02]\nmatrix = [[900, 0, 960], [0, 900, 540], [0, 0, 1]]\n[metadata]\nerror = 0.0\n";
+  const fs::path out = clip.parent_path() / "camera_cli_calib.csv";
+  const auto run = test::runProgram(EW_CLI_PATH,
+                                    {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
+                                     "--camera", calib.string(), "--camera-name", "side", "--out", out.string(), "--json"},
+                                    test::makeTempDir("camera_cli_calib_run"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const json r = json::parse(run.output.substr(run.output.find("{\n")));
+  EXPECT_EQ(r["focal_px"].get<double>(), 1400.0);
+  EXPECT_EQ(r["focal_source"], "calibration file (side)");
+  EXPECT_NEAR(r["distance_m"].get<double>(), 6.0, 0.05 * 6.0);
+  // Several cameras and no name, or a focal length twice: refused, naming the choice.
+  const auto which = test::runProgram(EW_CLI_PATH,
+                                      {"reconstruct", "--input", clip.string(), "--unknown-camera", "--camera",
+                                       calib.string(), "--out", out.string()},
+                                      test::makeTempDir("camera_cli_calib_which"));
+  EXPECT_NE(which.exitCode, 0);
+  EXPECT_NE(which.output.find("side, cam_02"), std::string::npos) << which.output;
+  const auto twice = test::runProgram(EW_CLI_PATH,
+                                      {"reconstruct", "--input", clip.string(), "--unknown-camera", "--camera",
+                                       calib.string(), "--camera-name", "side", "--focal-px", "1400", "--out",
+                                       out.string()},
+                                      test::makeTempDir("camera_cli_calib_twice"));
+  EXPECT_NE(twice.exitCode, 0);
+  EXPECT_NE(twice.output.find("not both"), std::string::npos) << twice.output;
+}
+
 }  // namespace
 }  // namespace ew

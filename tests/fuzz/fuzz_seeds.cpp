@@ -42,6 +42,8 @@
 #include "core/io/bvh_writer.h"
 #include "core/io/file_bytes.h"
 #include "core/io/joint_csv.h"
+#include "core/keypoints/keypoint_layout.h"
+#include "core/keypoints/openpose_writer.h"
 #include "core/synth/population.h"
 #include "tests/fuzz/fuzz_common.h"
 
@@ -578,6 +580,10 @@ void sharedDataSeeds(SeedWriter& out, const fs::path& data) {
     copy("c3d", Format::C3d, f, false);
   copy("c3d", Format::C3d, "schreiber-moissenet-2019/2014025/2014025_C4_04.c3d", true);
   copy("bvh", Format::Bvh, "cmu-mocap-bvh/08/08_01.bvh", true);
+  copy("calibration", Format::Csv, "pose2sim-balancing/Calib_qualisys.toml", false);
+  copy("calibration", Format::Csv, "video/sports2d-demo/Calib_demo.toml", false);
+  const fs::path pose2sim = data / "pose2sim-balancing/pose/cam01_json/cam01.0000.json";
+  if (fs::is_regular_file(pose2sim)) out.write("keypoints", "shared_cam01.0000.json", std::string(1, '\0') + readText(pose2sim));
   copy("trc", Format::Trc, "pose2sim-balancing/pose-3d/S00_P00_T01_BalancingTrial_0-100.trc",
        false);
   const fs::path asf = data / "cmu-mocap-asfamc/35/35.asf",
@@ -586,6 +592,55 @@ void sharedDataSeeds(SeedWriter& out, const fs::path& data) {
     out.writeBoth("asf_amc", Format::AsfAmc, "shared_35_01.asfamc",
                   asfAmc(readText(asf), readText(amc)));
   }
+}
+
+// Keypoint files behind the harness's reader byte (fuzz_keypoints.cpp): an OpenPose frame of
+// a walker (core's writer), AlphaPose, MMPose, MediaPipe and DeepLabCut files written here.
+void keypointSeeds(SeedWriter& out, const fs::path& tmp) {
+  auto put = [&](int reader, const std::string& name, const std::string& text) {
+    out.write("keypoints", name, std::string(1, static_cast<char>(reader)) + text);
+  };
+  Eigen::MatrixXd px(2, 30);
+  for (int f = 0; f < 2; ++f)
+    for (int j = 0; j < 15; ++j) px(f, 2 * j) = 500 + 10 * j + 40 * f, px(f, 2 * j + 1) = 200 + 40 * j;
+  ew::writeOpenPoseBody25(tmp / "openpose", {{px, Eigen::MatrixXd()}});
+  for (const auto& e : fs::directory_iterator(tmp / "openpose")) {
+    put(0, "openpose_" + e.path().filename().string(), readText(e.path()));
+    break;
+  }
+  std::string coco;
+  for (int k = 0; k < 17; ++k) coco += (k ? "," : "") + std::to_string(300 + 5 * k) + "," + std::to_string(100 + 20 * k) + ",0.9";
+  put(1, "alphapose.json", "[{\"image_id\": \"0.jpg\", \"category_id\": 1, \"keypoints\": [" + coco +
+                               "], \"score\": 2.5}, {\"image_id\": \"1.jpg\", \"keypoints\": [" + coco + "], \"score\": 2.4}]");
+  std::string xy, scores;
+  for (int k = 0; k < 17; ++k) {
+    xy += std::string(k ? "," : "") + "[" + std::to_string(300 + 5 * k) + "," + std::to_string(100 + 20 * k) + "]";
+    scores += std::string(k ? "," : "") + "0.9";
+  }
+  put(2, "mmpose.json", "{\"meta_info\": {\"dataset_name\": \"coco\"}, \"instance_info\": [{\"frame_id\": 1, \"instances\": "
+                            "[{\"keypoints\": [" + xy + "], \"keypoint_scores\": [" + scores + "]}]}]}");
+  std::string header = "frame,time_s", row0 = "0,0", row1 = "1,0.033";
+  for (const auto& p : ew::keypointLayoutNamed("MediaPipe-33").points) {
+    header += "," + p + "_x," + p + "_y," + p + "_visibility";
+    row0 += ",0.5,0.4,0.9";
+    row1 += ",0.51,0.41,0.8";
+  }
+  put(3, "mediapipe.csv", header + "\n" + row0 + "\n" + row1 + "\n");
+  put(4, "deeplabcut.csv",
+      "scorer,DLC,DLC,DLC,DLC,DLC,DLC\nbodyparts,hip,hip,hip,ankle,ankle,ankle\n"
+      "coords,x,y,likelihood,x,y,likelihood\n0,10,20,0.9,12,80,0.95\n1,11,20,0.9,13,80,0.2\n");
+}
+
+// Calibration files (fuzz_calibration.cpp): one camera, and two with a metadata table.
+void calibrationSeeds(SeedWriter& out) {
+  out.write("calibration", "one_camera.toml",
+            "[demo]\nname = \"demo\"\nsize = [ 1768, 994]\n"
+            "matrix = [ [ 2520.0, 0.0, 884.0], [ 0.0, 2520.0, 497.0], [ 0.0, 0.0, 1.0]]\n"
+            "distortions = [ 0.0, 0.0, 0.0, 0.0]\nrotation = [ 1.2, 1.2, -1.2]\ntranslation = [ -3.5, 1.7, 10.0]\n"
+            "fisheye = false\n\n[metadata]\nadjusted = false\nerror = 0.0\n");
+  out.write("calibration", "two_cameras.toml",
+            "[cam_01] # left\nmatrix = [[1000, 0, 500], [0, 1000, 400], [0, 0, 1]]\n"
+            "[cam_02]\nname = \"right\"\nmatrix = [[1500, 0, 500], [0, 1500, 400], [0, 0, 1]]\n");
 }
 
 fs::path sharedData(int argc, char** argv) {
@@ -607,7 +662,8 @@ int main(int argc, char** argv) {
     const fs::path root = argv[1];
     SeedWriter out(root);
     for (const char* h :
-         {"c3d", "bvh", "asf_amc", "trc", "joint_csv", "model_file", "mapping_file", "pipeline"})
+         {"c3d", "bvh", "asf_amc", "trc", "joint_csv", "model_file", "mapping_file", "pipeline", "keypoints",
+          "calibration"})
       out.reset(h);
     const fs::path tmp = root / ".tmp";
     fs::create_directories(tmp);
@@ -615,6 +671,8 @@ int main(int argc, char** argv) {
     gaitEdgeSeeds(out, tmp);
     handMadeSeeds(out);
     modelSeeds(out, tmp);
+    keypointSeeds(out, tmp);
+    calibrationSeeds(out);
     const fs::path data = sharedData(argc, argv);
     if (!data.empty() && fs::is_directory(data)) {
       sharedDataSeeds(out, data);

@@ -87,7 +87,7 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
   ImGui::End();
 }
 
-void ControlsPanel::drawViewControls(AppState& s, const FrameContext& ctx) {
+void ControlsPanel::drawViewControls(AppState& s, const FrameContext& /*ctx*/) {
   {
     sectionTitle("3D camera");
     const float bw =
