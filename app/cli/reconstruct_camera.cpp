@@ -45,6 +45,7 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
           {"distance_m", pinhole ? json(c.distanceMm / 1000.0) : json(nullptr)},
           {"px_per_mm", pinhole ? json(nullptr) : json(c.pxPerMm)},
           {"image_centre_px", {c.cxPx, c.cyPx}}, {"reprojection_rms_px", fit.reprojectionRmsPx},
+          {"outlier_samples", fit.outlierSamples},
           {"stride_hz", fit.strideHz}, {"cadence_steps_per_min", fit.cadenceStepsPerMin},
           {"speed_mps", fit.speedMps}, {"stride_length_m", fit.strideLengthM},
           {"head_height_m", fit.headHeightMm / 1000.0}, {"k", std::vector<double>(fit.k.data(), fit.k.data() + fit.k.size())},
@@ -61,7 +62,10 @@ void printSummary(const json& r) {
     std::cerr << ", distance " << std::setprecision(2) << r["distance_m"].get<double>() << " m, focal "
               << std::setprecision(0) << r["focal_px"].get<double>() << " px (" << r["focal_source"].get<std::string>()
               << ")";
-  std::cerr << "; reprojection RMS " << std::setprecision(2) << r["reprojection_rms_px"].get<double>() << " px\n";
+  std::cerr << "; reprojection RMS " << std::setprecision(2) << r["reprojection_rms_px"].get<double>() << " px";
+  if (r["outlier_samples"].get<int>() > 0)
+    std::cerr << " (" << r["outlier_samples"].get<int>() << " samples rejected as detector glitches)";
+  std::cerr << "\n";
   std::cerr << "walk: stride " << std::setprecision(3) << r["stride_hz"].get<double>() << " Hz ("
             << std::setprecision(0) << r["cadence_steps_per_min"].get<double>() << " steps/min), speed "
             << std::setprecision(2) << r["speed_mps"].get<double>() << " m/s, stride length "

@@ -41,7 +41,8 @@ struct CameraFit {
   Eigen::VectorXd k, w;           // coefficients and the 3D walker (225, canonical frame)
   double omegaRadS = 0.0, phaseRad = 0.0;
   double objective = 0.0;         // mean squared reprojection error in mm (+ prior)
-  double reprojectionRmsPx = 0.0; // over every seen joint sample
+  double reprojectionRmsPx = 0.0; // over every seen joint sample the fit kept
+  int outlierSamples = 0;         // seen samples rejected as detector glitches (far off the fit)
   double headHeightMm = 0.0;      // head centre above the ankles' lowest level, cycle mean
   double strideHz = 0.0, speedMps = 0.0, strideLengthM = 0.0, cadenceStepsPerMin = 0.0;
   std::vector<CameraStart> starts;  // every start, best first

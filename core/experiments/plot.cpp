@@ -226,6 +226,35 @@ BarPlot lowerBodyFigure(const EvaluationResults& r) {
   return p;
 }
 
+// The camera experiment: for each noise level, the share of clips reconstructed within a
+// given MPJPE (a failure never counts as within), so the whole distribution and the
+// failures show in one figure.
+LinePlot cameraFigure(const EvaluationResults& r) {
+  LinePlot p{"Keypoints through an unknown camera: clips within a given MPJPE", "MPJPE (mm, mean translation removed)",
+             "share of clips (%)", {}, false, 0.0, {}, 0.0, 100.0, {}, {}};
+  std::map<double, std::vector<double>> byNoise;
+  std::map<double, int> clips;
+  for (const auto& row : r.camera) {
+    ++clips[row.noisePx];
+    if (row.error.empty()) byNoise[row.noisePx].push_back(row.mpjpeMm);
+  }
+  const std::array<Rgb, 4> colors{Rgb{40, 110, 200}, Rgb{220, 120, 30}, Rgb{190, 40, 90}, Rgb{60, 150, 80}};
+  std::size_t k = 0;
+  for (auto& [noise, values] : byNoise) {
+    std::sort(values.begin(), values.end());
+    PlotSeries s{fmt(noise) + " px noise", {}, {}, {}, colors[k++ % colors.size()], false, false};
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      s.x.push_back(values[i]);
+      s.y.push_back(100.0 * static_cast<double>(i + 1) / clips[noise]);
+    }
+    p.series.push_back(s);
+  }
+  for (const auto& c : summarizeCamera(r.camera))
+    p.notes.push_back(fmt(c.noisePx) + " px: mean " + fmt(c.meanMpjpeMm, 1) + " mm, " + std::to_string(c.failures) +
+                      " of " + std::to_string(c.clips) + " failed");
+  return p;
+}
+
 }  // namespace
 
 std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir, const EvaluationResults& r) {
@@ -248,6 +277,7 @@ std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir, 
     saveBarPlot(dir / "missing_joints.png", missingFigure(r));
     names.push_back("missing_joints.png");
   }
+  if (r.ran.count(Experiment::Camera) && !r.camera.empty()) line("camera.png", cameraFigure(r));
   if (r.ran.count(Experiment::LowerBody) && !r.lowerBody.empty()) {
     saveBarPlot(dir / "lower_body.png", lowerBodyFigure(r));
     names.push_back("lower_body.png");

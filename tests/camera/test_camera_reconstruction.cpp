@@ -172,6 +172,35 @@ TEST(CameraReconstruction, FixedValuesOutOfRangeAreRefused) {
   EXPECT_THROW(reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o), Error);
 }
 
+// Detector glitches (here 3 % of the joint samples thrown 80-200 px away, as a swapped limb
+// or a jump to another person would be) are rejected, not averaged in: the camera and the
+// walker come back as without them, and the rejected samples are counted.
+TEST(CameraReconstruction, DetectorGlitchesAreRejected) {
+  const Scene s = filmed(test::crossingPinhole(1500, 5.0));
+  MatrixXd glitched = s.px;
+  int thrown = 0;
+  for (Eigen::Index f = 0; f < glitched.rows(); ++f) {
+    for (int j = 0; j < kJointCount; ++j) {
+      if ((f * 7 + j * 13) % 33 != 0) continue;  // ~3 %, spread over joints and frames
+      const double angle = 0.7 * static_cast<double>(f + j);
+      const double far = 80.0 + 120.0 * static_cast<double>((f + 3 * j) % 5) / 4.0;
+      glitched(f, 2 * j) += far * std::cos(angle);
+      glitched(f, 2 * j + 1) += far * std::sin(angle);
+      ++thrown;
+    }
+  }
+  CameraFitOptions o = lsq();
+  o.focalPx = 1500;
+  const CameraFit fit = reconstructUnknownCamera(defaultRealModel(), glitched, 30.0, o);
+  EXPECT_EQ(fit.outlierSamples, thrown);
+  EXPECT_NEAR(fit.camera.alphaDeg, 40, 1e-3 * 40);
+  EXPECT_NEAR(fit.camera.elevationDeg, 12, 1e-3 * 12);
+  EXPECT_NEAR(fit.camera.distanceMm, 6000, 1e-3 * 6000);
+  expectSameWalk(fit, s);
+  // Clean data: nothing rejected.
+  EXPECT_EQ(reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o).outlierSamples, 0);
+}
+
 // The camera's centre (what the viewer draws): every point on the line from it through the
 // look-at point is imaged at the look-at point's pixel, for any azimuth and elevation.
 TEST(WalkCamera, CentreLiesOnTheOpticalAxis) {

@@ -122,6 +122,7 @@ nlohmann::json clipJson(const AppState& s) {
               {"focal_px", pinhole ? nlohmann::json(f.camera.focalPx) : nlohmann::json(nullptr)},
               {"distance_m", pinhole ? nlohmann::json(f.camera.distanceMm / 1000.0) : nlohmann::json(nullptr)},
               {"reprojection_rms_px", f.reprojectionRmsPx},
+              {"outlier_samples", f.outlierSamples},
               {"residual_rms_px", residuals},
               {"head_height_m", f.headHeightMm / 1000.0},
               {"speed_mps", f.speedMps},

@@ -42,7 +42,8 @@ void clipMetrics(const AppState& s, float width) {
   std::snprintf(v, sizeof v, "%.0f /min", f.cadenceStepsPerMin);
   metric(s, "cadence  steps", v, "", width);
   std::snprintf(v, sizeof v, "%.1f px", f.reprojectionRmsPx);
-  metric(s, "reprojection  RMS", v, "", width);
+  std::snprintf(n, sizeof n, f.outlierSamples > 0 ? "%d glitches out" : "", f.outlierSamples);
+  metric(s, "reprojection  RMS", v, n, width);
   ImGui::NewLine();
 }
 
