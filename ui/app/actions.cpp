@@ -319,12 +319,13 @@ void frameClipScene(AppState& s, const ClipResult& c) {
   const Eigen::Vector3d eye = cameraFromLookAt(c.rec.fit.camera) - walkerOriginFromLookAt(c.rec.fit.camera, 0.5 * c.durationS());
   OrbitCamera& cam = s.view.camera;
   cam = OrbitCamera::preset(CameraPreset::ThreeQuarter);
-  cam.target = {static_cast<float>(0.5 * eye.x()), static_cast<float>(0.5 * eye.y()), 900.0f};
-  // From behind the walker's shoulder, 40° off the line to the camera: the walker near and
-  // large, the camera across the floor, both in view for any panel shape.
+  // The target follows the walker (clipViewCamera): the view is a tracking shot from behind
+  // the walker's shoulder, 40° off the line to the camera: the walker near and large in every
+  // frame, the camera across the floor.
+  cam.target = {0.0f, 0.0f, 1100.0f};
   const double line = std::hypot(eye.x(), eye.y());
-  cam.distanceMm = static_cast<float>(std::clamp(0.9 * line + 4000.0, 4000.0, 20000.0));
-  cam.pitchDeg = 22.0f;
+  cam.distanceMm = static_cast<float>(std::clamp(0.8 * line + 3500.0, 4000.0, 20000.0));
+  cam.pitchDeg = 12.0f;
   const double across = std::atan2(eye.x(), eye.y()) * 180.0 / std::numbers::pi + 140.0;
   cam.yawDeg = static_cast<float>(std::remainder(across, 360.0));
 }
@@ -1176,6 +1177,16 @@ void setClipPerson(AppState& s, int person) {
     throw std::invalid_argument("person " + std::to_string(person) + " out of range (" +
                                 std::to_string(s.clip->rec.trial.people.size()) + " tracks)");
   clipSettings(s).person = person;
+}
+
+void setClipFrame(AppState& s, int frame) {
+  if (s.doc.mode != Mode::Clip || !s.clip) throw std::invalid_argument("no keypoint clip is shown");
+  const ClipResult& c = *s.clip;
+  if (frame < 1 || frame > c.rec.trial.frameCount)
+    throw std::invalid_argument("frame must lie in [1, " + std::to_string(c.rec.trial.frameCount) + "]");
+  // Half a frame in, so that the frame shown is this one however the time rounds.
+  s.view.playback.cycles = (frame - 0.5) / c.rec.trial.rateHz * c.rec.fit.strideHz;
+  s.view.playback.playing = false;
 }
 
 void closeClip(AppState& s) {

@@ -141,6 +141,8 @@ void setClipLayout(AppState& s, const std::string& layout);
 void setClipFps(AppState& s, double fps);
 void setClipPerson(AppState& s, int person);
 void closeClip(AppState& s);
+// Shows the clip's frame `frame` (from 1, as the 2D view's caption counts) and pauses.
+void setClipFrame(AppState& s, int frame);
 
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).
 int coefficientCount(const AppState& s);

@@ -173,13 +173,15 @@ bool VideoExport::step(const AppState& s, Renderer& renderer, double budgetMs) {
       buildClipInputScene(s, m.scene, lineScale, frame, image);
       renderer.render(m.left, m.scene, clipInputCamera(image, aspectLeft));
       buildClipReconstructionScene(s, m.scene, lineScale, frame);
+      renderer.render(m.right, m.scene,
+                      clipViewCamera(s.view.camera, *s.clip, frame).matrices(static_cast<float>(wr) / static_cast<float>(h)));
     } else {
       buildInputScene(s, m.scene, lineScale, cycles - std::floor(cycles));
       renderer.render(m.left, m.scene, inputViewCamera(aspectLeft));
       float errorScale = 1.0f;
       buildReconstructionScene(s, m.scene, lineScale, cycles, &errorScale);
+      renderer.render(m.right, m.scene, s.view.camera.matrices(static_cast<float>(wr) / static_cast<float>(h)));
     }
-    renderer.render(m.right, m.scene, s.view.camera.matrices(static_cast<float>(wr) / static_cast<float>(h)));
     blitRgb(m.left.readPixelsRgb(), wl, h, m.frame, 0);
     blitRgb(m.right.readPixelsRgb(), wr, h, m.frame, wl);
     try {

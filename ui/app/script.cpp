@@ -24,7 +24,7 @@ const std::set<std::string>& knownActions() {
       "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
       "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour",
       "drop",         "set_file_override", "reload", "export_data_summary", "export_state",
-      "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip"};
+      "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame"};
   // clang-format on
   return names;
 }
@@ -207,6 +207,10 @@ void applyAction(AppState& s, const ScriptAction& a) {
     applyClipSettings(s, a);
   } else if (n == "close_clip") {
     actions::closeClip(s);
+  } else if (n == "set_frame") {
+    const double v = number(a);
+    if (v != std::floor(v)) throw std::invalid_argument("expects a whole frame number (from 1)");
+    actions::setClipFrame(s, static_cast<int>(v));
   } else if (n == "set_angle") {
     actions::setAngle(s, number(a));
   } else if (n == "set_method") {

@@ -125,6 +125,13 @@ ClipWorld clipWorld(const ClipResult& clip, int frame) {
   return w;
 }
 
+OrbitCamera clipViewCamera(const OrbitCamera& camera, const ClipResult& clip, int frame) {
+  OrbitCamera c = camera;
+  const glm::vec3 walker = clipWorld(clip, frame).walkerOffset;
+  c.target += glm::vec3(walker.x, walker.y, 0.0f);
+  return c;
+}
+
 ClipImageFrame clipImageFrame(const ClipResult& clip, float aspect) {
   glm::vec2 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
   for (const Eigen::MatrixXd* px : {&clip.rec.trial.jointsPx, &clip.rec.reprojectedPx}) {

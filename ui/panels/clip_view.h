@@ -37,4 +37,8 @@ struct ClipWorld {
 };
 ClipWorld clipWorld(const ClipResult& clip, int frame);
 
+// The 3D view's camera for a clip at `frame`: the user's orbit camera, its target taken
+// relative to where the walker stands (the view follows the walker across the floor).
+OrbitCamera clipViewCamera(const OrbitCamera& camera, const ClipResult& clip, int frame);
+
 }  // namespace ew::ui

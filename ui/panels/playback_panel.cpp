@@ -34,9 +34,7 @@ void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       char format[64];
       std::snprintf(format, sizeof format, "frame %%d / %d (%.2f s)", c.rec.trial.frameCount, shown / c.rec.trial.rateHz);
       if (ImGui::SliderInt("##frame", &frame, 1, c.rec.trial.frameCount, format, ImGuiSliderFlags_AlwaysClamp)) {
-        // Half a frame in, so that the frame shown is this one however the time rounds.
-        p.cycles = (frame - 0.5) / c.rec.trial.rateHz * strideHz;
-        p.playing = false;
+        actions::setClipFrame(s, frame);
       }
     } else {
       float phase = static_cast<float>(p.phase());

@@ -155,7 +155,9 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
           clipMode ? buildClipReconstructionScene(s, scene, ctx.scale, s.clip ? clipFrameAt(*s.clip, s.view.playback.cycles) : 0)
                    : buildReconstructionScene(s, scene, ctx.scale, s.view.playback.cycles, &errorScale);
       const float aspect = size.x / size.y;
-      ctx.renderer.render(target, scene, s.view.camera.matrices(aspect));
+      const OrbitCamera view = clipMode && s.clip ? clipViewCamera(s.view.camera, *s.clip, clipFrameAt(*s.clip, s.view.playback.cycles))
+                                                  : s.view.camera;
+      ctx.renderer.render(target, scene, view.matrices(aspect));
       lastImage = {p0, size};
 
       ImDrawList* dl = ImGui::GetWindowDrawList();
