@@ -7,6 +7,7 @@
 
 #include "core/common/errors.h"
 #include "core/io/file_bytes.h"
+#include "core/io/text_table.h"
 
 namespace ew {
 
@@ -17,19 +18,8 @@ constexpr std::size_t kMaxCameras = 64;
 constexpr std::size_t kMaxNumbersPerValue = 64;
 constexpr int kMaxArrayDepth = 4;
 
-struct Line {
-  std::string_view text;
-  int number = 0;
-};
-
 [[noreturn]] void malformed(const std::string& file, int line, const std::string& problem) {
-  throw Error(ErrorKind::Malformed, file, "line " + std::to_string(line), problem);
-}
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);
-  return s;
+  throw Error(ErrorKind::Malformed, file, linePosition(line), problem);
 }
 
 // A value's text without a trailing comment (a '#' outside a string).
@@ -92,12 +82,9 @@ struct Table {
 
 std::vector<Table> parseTables(std::string_view text, const std::string& file) {
   std::vector<Table> tables;
-  int number = 0;
-  for (std::size_t start = 0; start <= text.size();) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    const std::string_view raw = trim(withoutComment(text.substr(start, end - start)));
-    ++number;
-    start = end + 1;
+  for (const TextLine& line : splitLines(text)) {
+    const std::string_view raw = trim(withoutComment(line.text));
+    const int number = line.number;
     if (raw.empty()) continue;
     if (raw.front() == '[') {
       if (raw.size() < 3 || raw.back() != ']') malformed(file, number, "a table header is [name]");

@@ -10,6 +10,22 @@
 
 namespace ew::ui {
 
+namespace {
+
+void extend(PixelBounds& b, const Eigen::MatrixXd& px) {
+  for (Eigen::Index f = 0; f < px.rows(); ++f) {
+    for (Eigen::Index j = 0; j + 1 < px.cols(); j += 2) {
+      const Eigen::Vector2d p(px(f, j), px(f, j + 1));
+      if (!p.allFinite()) continue;
+      b.low = b.empty ? p : Eigen::Vector2d(b.low.cwiseMin(p));
+      b.high = b.empty ? p : Eigen::Vector2d(b.high.cwiseMax(p));
+      b.empty = false;
+    }
+  }
+}
+
+}  // namespace
+
 ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   const auto start = std::chrono::steady_clock::now();
   KeypointOptions k;
@@ -22,7 +38,10 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   o.focalPx = settings.focalPx;
   o.alphaDeg = settings.alphaDeg;
   o.elevationDeg = settings.elevationDeg;
-  ClipResult r{settings, model, reconstructKeypointClip(*model.model, settings.path, k, o), 0.0};
+  ClipResult r{settings, model, reconstructKeypointClip(*model.model, settings.path, k, o), 0.0, {}, {}};
+  extend(r.keypointBounds, r.rec.trial.jointsPx);
+  r.shownBounds = r.keypointBounds;
+  extend(r.shownBounds, r.rec.reprojectedPx);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

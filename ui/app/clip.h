@@ -31,11 +31,20 @@ struct ClipModel {
   bool operator==(const ClipModel& o) const { return model == o.model; }
 };
 
+// The pixels a clip's points cover (u, v; empty when none is finite).
+struct PixelBounds {
+  Eigen::Vector2d low{0.0, 0.0}, high{0.0, 0.0};
+  bool empty = true;
+};
+
 struct ClipResult {
   ClipSettings settings;
   ClipModel model;
   ClipReconstruction rec;
   double seconds = 0.0;  // how long reading and fitting took
+  // Computed once with the fit, for the views: the keypoints' extent (the camera glyph's
+  // view rays) and the keypoints' and reprojection's together (the 2D view's frame).
+  PixelBounds keypointBounds, shownBounds;
   double durationS() const { return rec.timesS.size() > 0 ? rec.trial.frameCount / rec.trial.rateHz : 0.0; }
 };
 

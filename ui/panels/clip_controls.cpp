@@ -10,18 +10,11 @@
 #include "core/keypoints/keypoint_layout.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/widgets/section_title.h"
 
 namespace ew::ui {
 
 namespace {
-
-void sectionTitle(const char* text) {
-  ImGui::Spacing();
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.62f, 0.72f, 1.0f));
-  ImGui::TextUnformatted(text);
-  ImGui::PopStyleColor();
-  ImGui::Separator();
-}
 
 // Runs an action; a value it refuses goes to the log (the widgets keep values in range).
 template <class F>
@@ -90,8 +83,7 @@ void heldValue(AppState& s, const char* id, const char* label, std::optional<dou
 
 }  // namespace
 
-void drawClipControls(AppState& s, const FrameContext& ctx) {
-  (void)ctx;
+void drawClipControls(AppState& s) {
   if (!s.doc.clip) return;
   const ClipSettings c = *s.doc.clip;
   const ClipResult* r = s.clip.get();

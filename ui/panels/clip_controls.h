@@ -6,8 +6,7 @@
 namespace ew::ui {
 
 struct AppState;
-struct FrameContext;
 
-void drawClipControls(AppState& s, const FrameContext& ctx);
+void drawClipControls(AppState& s);
 
 }  // namespace ew::ui

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "core/engine/projection.h"
@@ -81,16 +80,9 @@ void addReprojection(Scene& scene, const ClipReconstruction& rec, int frame, flo
 // the look-at point's depth: the part of the field of view the clip uses.
 std::vector<glm::vec3> viewRays(const ClipResult& clip, const ClipWorld& w) {
   const WalkCamera& c = clip.rec.fit.camera;
-  const Eigen::MatrixXd& px = clip.rec.trial.jointsPx;
-  double u0 = std::numeric_limits<double>::infinity(), u1 = -u0, v0 = u0, v1 = -u0;
-  for (Eigen::Index f = 0; f < px.rows(); ++f) {
-    for (int j = 0; j < kJointCount; ++j) {
-      if (!seen(px, static_cast<int>(f), j)) continue;
-      u0 = std::min(u0, px(f, 2 * j)), u1 = std::max(u1, px(f, 2 * j));
-      v0 = std::min(v0, px(f, 2 * j + 1)), v1 = std::max(v1, px(f, 2 * j + 1));
-    }
-  }
-  if (!std::isfinite(u0)) return {};
+  const PixelBounds& b = clip.keypointBounds;
+  if (b.empty) return {};
+  const double u0 = b.low.x(), u1 = b.high.x(), v0 = b.low.y(), v1 = b.high.y();
   const float depth = static_cast<float>(c.distanceMm);
   std::vector<glm::vec3> rays;
   for (const double u : {u0, u1}) {
@@ -133,17 +125,10 @@ OrbitCamera clipViewCamera(const OrbitCamera& camera, const ClipResult& clip, in
 }
 
 ClipImageFrame clipImageFrame(const ClipResult& clip, float aspect) {
-  glm::vec2 lo(std::numeric_limits<float>::infinity()), hi(-std::numeric_limits<float>::infinity());
-  for (const Eigen::MatrixXd* px : {&clip.rec.trial.jointsPx, &clip.rec.reprojectedPx}) {
-    for (Eigen::Index f = 0; f < px->rows(); ++f) {
-      for (int j = 0; j < kJointCount; ++j) {
-        if (!seen(*px, static_cast<int>(f), j)) continue;
-        const glm::vec2 p = pointAt(*px, static_cast<int>(f), j);
-        lo = glm::min(lo, p), hi = glm::max(hi, p);
-      }
-    }
-  }
-  if (!std::isfinite(lo.x)) return {};
+  const PixelBounds& b = clip.shownBounds;
+  if (b.empty) return {};
+  // Scene coordinates run up the screen: v is negated.
+  const glm::vec2 lo = scenePoint(b.low.x(), b.high.y()), hi = scenePoint(b.high.x(), b.low.y());
   ClipImageFrame frame;
   frame.centre = 0.5f * (lo + hi);
   const glm::vec2 size = hi - lo;

@@ -6,20 +6,9 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/panels/clip_controls.h"
+#include "ui/widgets/section_title.h"
 
 namespace ew::ui {
-
-namespace {
-
-void sectionTitle(const char* text) {
-  ImGui::Spacing();
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.55f, 0.62f, 0.72f, 1.0f));
-  ImGui::TextUnformatted(text);
-  ImGui::PopStyleColor();
-  ImGui::Separator();
-}
-
-}  // namespace
 
 void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   if (beginPanel(ctx.backdrop, "Controls", rect)) {
@@ -32,7 +21,7 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       if (ImGui::RadioButton("Keypoint clip", &mode, 2)) actions::setMode(s, Mode::Clip);
     }
     if (doc.mode == Mode::Clip) {
-      drawClipControls(s, ctx);
+      drawClipControls(s);
       drawViewControls(s, ctx);
       ImGui::End();
       return;

@@ -90,6 +90,11 @@ CameraMatrices inputViewCamera(float aspect) {
 
 namespace {
 
+void drawCentredMessage(ImDrawList* dl, ImVec2 p0, ImVec2 size, const char* msg) {
+  const ImVec2 ts = ImGui::CalcTextSize(msg);
+  dl->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y), IM_COL32(160, 168, 180, 255), msg);
+}
+
 // A round number of pixels about a fifth of the view's width, for the scale bar.
 float roundPixels(float px) {
   for (float step : {10.0f, 20.0f, 50.0f, 100.0f, 200.0f, 500.0f, 1000.0f})
@@ -123,14 +128,7 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
   char label[32];
   std::snprintf(label, sizeof label, "%.0f px", static_cast<double>(bar));
   const float len = bar * screenPerPx;
-  const ImVec2 left(p1.x - pad - len - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale);
-  const ImU32 c = IM_COL32(170, 178, 190, 220);
-  dl->AddLine(left, ImVec2(left.x + len, left.y), c, 2.0f * ctx.scale);
-  dl->AddLine(ImVec2(left.x, left.y - 5 * ctx.scale), ImVec2(left.x, left.y + 5 * ctx.scale), c, 2.0f * ctx.scale);
-  dl->AddLine(ImVec2(left.x + len, left.y - 5 * ctx.scale), ImVec2(left.x + len, left.y + 5 * ctx.scale), c,
-              2.0f * ctx.scale);
-  const ImVec2 ts = ImGui::CalcTextSize(label);
-  dl->AddText(ImVec2(left.x + 0.5f * (len - ts.x), left.y - ts.y - 6.0f * ctx.scale), c, label);
+  drawScaleBar(dl, ImVec2(p1.x - pad - len - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale), len, label, ctx.scale);
   std::vector<LegendItem> legend{{palette::kInputPoint, "keypoints (u, v px)", false},
                                  {palette::kCamera, "principal point (est.)", true}};
   if (s.view.overlays.reprojection && !s.view.overlays.pointLights) {
@@ -150,10 +148,6 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
 }  // namespace
 
 void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  if (s.doc.mode == Mode::Clip) {
-    drawClip(s, ctx, rect);
-    return;
-  }
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   if (beginPanel(ctx.backdrop, "2D input", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
                                         ImGuiWindowFlags_NoBackground)) {
@@ -163,45 +157,11 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
     if (size.x > 4.0f && size.y > 4.0f) {
       target.ensure(static_cast<int>(size.x * fbScale.x), static_cast<int>(size.y * fbScale.y),
                     ctx.renderer.samples());
-      const bool reconstruct = s.doc.mode == Mode::Reconstruct;
-      const bool drawn = buildInputScene(s, scene, ctx.scale, s.view.playback.phase());
-      const auto& o = s.view.overlays;
-      const float aspect = size.x / size.y;
-      ctx.renderer.render(target, scene, inputViewCamera(aspect));
       lastImage = {p0, size};
-
-      ImDrawList* dl = ImGui::GetWindowDrawList();
-      const ImVec2 p1{p0.x + size.x, p0.y + size.y};
-      ctx.backdrop.image(target, {p0.x, p0.y});
-      const float pad = 10.0f * ctx.scale;
-      char sub[160];
-      if (reconstruct) {
-        std::snprintf(sub, sizeof sub, "orthographic view at α = %.1f°, as the reconstruction sees it",
-                      s.doc.recon.alphaDeg);
+      if (s.doc.mode == Mode::Clip) {
+        drawClipView(s, ctx, p0, size);
       } else {
-        std::snprintf(sub, sizeof sub, "the synthesised walker projected at α = %.1f°", s.doc.recon.alphaDeg);
-      }
-      drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input", sub, s.fonts.large, ctx.scale);
-      const float pxPerMm = size.y / kViewHeightMm;
-      drawScaleBar(dl, ImVec2(p1.x - pad - 500.0f * pxPerMm - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale),
-                   pxPerMm, 500.0f, ctx.scale);
-      std::vector<LegendItem> legend{{palette::kInputPoint, "input joints (u, v)", false}};
-      const ReconBase* r = s.derived.recon();
-      const bool anyEstimated =
-          reconstruct && r &&
-          std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(), [](bool b) { return b; });
-      if (anyEstimated)
-        legend.push_back({palette::kModelEstimated, "model-estimated (not measured)", false});
-      if (reconstruct && o.reprojection && !o.pointLights) {
-        legend.push_back({palette::kReconRight,
-                          s.doc.recon.unknownAngle ? "reconstruction seen at est. α" : "reconstruction seen at α", true});
-        legend.push_back({palette::kError, "2D residual", true});
-      }
-      drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale);
-      if (!drawn) {
-        const char* msg = s.jobs.busy() ? "loading…" : "nothing loaded";
-        const ImVec2 ts = ImGui::CalcTextSize(msg);
-        dl->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y), IM_COL32(160, 168, 180, 255), msg);
+        drawWalkerView(s, ctx, p0, size);
       }
     }
   }
@@ -209,36 +169,56 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
   ImGui::PopStyleVar();
 }
 
-void InputViewPanel::drawClip(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
-  if (beginPanel(ctx.backdrop, "2D input", rect, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoTitleBar |
-                                        ImGuiWindowFlags_NoBackground)) {
-    const ImVec2 p0 = ImGui::GetCursorScreenPos();
-    const ImVec2 size = ImGui::GetContentRegionAvail();
-    const ImVec2 fbScale = ImGui::GetIO().DisplayFramebufferScale;
-    if (size.x > 4.0f && size.y > 4.0f) {
-      target.ensure(static_cast<int>(size.x * fbScale.x), static_cast<int>(size.y * fbScale.y),
-                    ctx.renderer.samples());
-      const float aspect = size.x / size.y;
-      const int frame = s.clip ? clipFrameAt(*s.clip, s.view.playback.cycles) : 0;
-      const ClipImageFrame image = s.clip ? clipImageFrame(*s.clip, aspect) : ClipImageFrame{};
-      const bool drawn = buildClipInputScene(s, scene, ctx.scale, frame, image);
-      ctx.renderer.render(target, scene, clipInputCamera(image, aspect));
-      lastImage = {p0, size};
-      ctx.backdrop.image(target, {p0.x, p0.y});
-      if (drawn) {
-        drawClipAnnotations(s, ctx, p0, size, image, frame);
-      } else {
-        const char* msg = s.jobs.clip.running() ? "reading the keypoints and fitting the camera…"
-                                                : "the clip could not be fitted";
-        const ImVec2 ts = ImGui::CalcTextSize(msg);
-        ImGui::GetWindowDrawList()->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y),
-                                            IM_COL32(160, 168, 180, 255), msg);
-      }
-    }
+void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
+  const bool reconstruct = s.doc.mode == Mode::Reconstruct;
+  const bool drawn = buildInputScene(s, scene, ctx.scale, s.view.playback.phase());
+  const auto& o = s.view.overlays;
+  const float aspect = size.x / size.y;
+  ctx.renderer.render(target, scene, inputViewCamera(aspect));
+
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 p1{p0.x + size.x, p0.y + size.y};
+  ctx.backdrop.image(target, {p0.x, p0.y});
+  const float pad = 10.0f * ctx.scale;
+  char sub[160];
+  if (reconstruct) {
+    std::snprintf(sub, sizeof sub, "orthographic view at α = %.1f°, as the reconstruction sees it",
+                  s.doc.recon.alphaDeg);
+  } else {
+    std::snprintf(sub, sizeof sub, "the synthesised walker projected at α = %.1f°", s.doc.recon.alphaDeg);
   }
-  ImGui::End();
-  ImGui::PopStyleVar();
+  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input", sub, s.fonts.large, ctx.scale);
+  const float halfMetre = 500.0f * size.y / kViewHeightMm;
+  drawScaleBar(dl, ImVec2(p1.x - pad - halfMetre - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale), halfMetre,
+               "50 cm", ctx.scale);
+  std::vector<LegendItem> legend{{palette::kInputPoint, "input joints (u, v)", false}};
+  const ReconBase* r = s.derived.recon();
+  const bool anyEstimated =
+      reconstruct && r && std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(), [](bool b) { return b; });
+  if (anyEstimated) legend.push_back({palette::kModelEstimated, "model-estimated (not measured)", false});
+  if (reconstruct && o.reprojection && !o.pointLights) {
+    legend.push_back({palette::kReconRight,
+                      s.doc.recon.unknownAngle ? "reconstruction seen at est. α" : "reconstruction seen at α", true});
+    legend.push_back({palette::kError, "2D residual", true});
+  }
+  drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale);
+  if (!drawn) drawCentredMessage(dl, p0, size, s.jobs.busy() ? "loading…" : "nothing loaded");
+}
+
+void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
+  const float aspect = size.x / size.y;
+  const int frame = s.clip ? clipFrameAt(*s.clip, s.view.playback.cycles) : 0;
+  const ClipImageFrame image = s.clip ? clipImageFrame(*s.clip, aspect) : ClipImageFrame{};
+  const bool drawn = buildClipInputScene(s, scene, ctx.scale, frame, image);
+  ctx.renderer.render(target, scene, clipInputCamera(image, aspect));
+  ctx.backdrop.image(target, {p0.x, p0.y});
+  if (drawn) {
+    drawClipAnnotations(s, ctx, p0, size, image, frame);
+  } else {
+    drawCentredMessage(ImGui::GetWindowDrawList(), p0, size,
+                       s.jobs.clip.running() ? "reading the keypoints and fitting the camera…"
+                                             : "the clip could not be fitted");
+  }
 }
 
 }  // namespace ew::ui

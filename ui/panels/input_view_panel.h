@@ -26,8 +26,12 @@ struct InputViewPanel {
   PanelRect lastImage;  // where the view was drawn last frame (screen pixels), for PNG export
 
   void draw(AppState& s, const FrameContext& ctx, const PanelRect& rect);
+
+ private:
+  // The walker's orthographic view at α (reconstruct and explore modes), at p0, size.
+  void drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size);
   // Mode::Clip: the keypoint clip in image pixels (ui/panels/clip_view.h).
-  void drawClip(AppState& s, const FrameContext& ctx, const PanelRect& rect);
+  void drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size);
 };
 
 }  // namespace ew::ui

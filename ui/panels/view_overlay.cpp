@@ -80,17 +80,15 @@ void drawErrorColourBar(ImDrawList* dl, ImVec2 topRight, float heightPx, float m
   }
 }
 
-void drawScaleBar(ImDrawList* dl, ImVec2 left, float pxPerMm, float lengthMm, float scale) {
-  const float len = pxPerMm * lengthMm;
+void drawScaleBar(ImDrawList* dl, ImVec2 left, float lengthPx, const char* label, float scale) {
+  const float len = lengthPx;
   const ImU32 c = IM_COL32(170, 178, 190, 220);
   dl->AddLine(left, ImVec2(left.x + len, left.y), c, 2.0f * scale);
   dl->AddLine(ImVec2(left.x, left.y - 5 * scale), ImVec2(left.x, left.y + 5 * scale), c, 2.0f * scale);
   dl->AddLine(ImVec2(left.x + len, left.y - 5 * scale), ImVec2(left.x + len, left.y + 5 * scale), c,
               2.0f * scale);
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.0f cm", static_cast<double>(lengthMm / 10.0f));
-  const ImVec2 ts = ImGui::CalcTextSize(buf);
-  dl->AddText(ImVec2(left.x + 0.5f * (len - ts.x), left.y - ts.y - 6.0f * scale), c, buf);
+  const ImVec2 ts = ImGui::CalcTextSize(label);
+  dl->AddText(ImVec2(left.x + 0.5f * (len - ts.x), left.y - ts.y - 6.0f * scale), c, label);
 }
 
 }  // namespace ew::ui

@@ -26,7 +26,8 @@ void drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> i
 // Vertical colour bar of the error map, 0 … maxMm, at the right edge.
 void drawErrorColourBar(ImDrawList* dl, ImVec2 topRight, float heightPx, float maxMm,
                         const char* title, float scale);
-// Horizontal scale bar of `lengthMm` drawn `pxPerMm` long.
-void drawScaleBar(ImDrawList* dl, ImVec2 left, float pxPerMm, float lengthMm, float scale);
+// Horizontal scale bar `lengthPx` screen pixels long from `left`, `label` ("50 cm",
+// "200 px") centred above it.
+void drawScaleBar(ImDrawList* dl, ImVec2 left, float lengthPx, const char* label, float scale);
 
 }  // namespace ew::ui
