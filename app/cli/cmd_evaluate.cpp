@@ -112,6 +112,31 @@ void printHeadline(const EvaluationResults& r, const fs::path& out) {
   std::cerr << "wrote " << out.string() << "\n";
 }
 
+// The snippet engine's experiments (snippet_experiment.h) learn from the dataset's trials.
+void runSnippetExperiments(const Dataset& dataset, const std::vector<Walker>& walkers,
+                           const std::set<Experiment>& experiments, const EvaluateArgs& a, EvaluationResults& results) {
+  const int threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (experiments.count(Experiment::Snippet)) {
+    const auto t0 = std::chrono::steady_clock::now();
+    SnippetExperimentOptions o;
+    o.threads = threads;
+    if (a.sigma2Mm2 > 0) o.sigma2Mm2 = a.sigma2Mm2;
+    if (a.components > 0) o.model.components = a.components;
+    std::cerr << "snippet: " << dataset.subjects().size() << " folds on " << threads << " threads\n";
+    results.snippet = snippetComparison(dataset, walkers, o);
+    results.warnings.insert(results.warnings.end(), results.snippet.warnings.begin(), results.snippet.warnings.end());
+    results.ran.insert(Experiment::Snippet);
+    results.timingsS.emplace_back("snippet", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+  if (experiments.count(Experiment::SnippetClusters)) {
+    const auto t0 = std::chrono::steady_clock::now();
+    results.snippetClusters = chooseSnippetClusters(dataset, {1, 2, 4, 8, 16, 32}, SnippetPriorOptions{}, 5, threads);
+    results.ran.insert(Experiment::SnippetClusters);
+    results.timingsS.emplace_back("snippet-clusters",
+                                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+}
+
 int runEvaluate(const EvaluateArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   const fs::path out = folderPathWithoutTrailingSeparator(a.out);  // "results/" is "results"
@@ -136,7 +161,11 @@ int runEvaluate(const EvaluateArgs& a) {
   if (walkers.empty()) throwBadData(a.data.front(), "", "no usable walker in the data");
   const double loadS = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  EvaluationResults results = runEvaluation(experimentWalkers(walkers, dataset), experiments, options);
+  std::set<Experiment> eigenwalkerExperiments = experiments;
+  eigenwalkerExperiments.erase(Experiment::Snippet);
+  eigenwalkerExperiments.erase(Experiment::SnippetClusters);
+  EvaluationResults results = runEvaluation(experimentWalkers(walkers, dataset), eigenwalkerExperiments, options);
+  runSnippetExperiments(dataset, walkers, experiments, a, results);
   results.timingsS.insert(results.timingsS.begin(), {"load", loadS});
   EvaluationProvenance provenance{commandLine(), {}};
   for (const auto& t : dataset.trials) provenance.dataFiles.push_back(t.info.file);
@@ -168,14 +197,22 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "  camera.csv         one row per held-out walker x random camera x pixel noise: the clip written as\n"
       "                     OpenPose JSON, read back and reconstructed with everything unknown (--experiment\n"
       "                     camera only, not in all; docs/CAMERA.md)\n"
+      "  snippet_engines.csv subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error: the snippet engine\n"
+      "                     (Howe, Leventon & Freeman 1999) beside the eigenwalker on the same 2D frames; clip is\n"
+      "                     trial, 0.5 s or whole trial (--experiment snippet only; docs/SNIPPETS.md)\n"
+      "  snippet_phase.csv  angle_deg,engine,phase_bin,mpjpe_mm,frames: per-frame error over the gait cycle\n"
+      "  snippet_theta.csv  subject,angle_deg,snippet,true_deg,estimated_deg,error_deg,clip_estimate_deg: unknown view\n"
+      "  snippet_clusters.csv clusters,held_out_log_likelihood,em_held_out_log_likelihood (--experiment\n"
+      "                     snippet-clusters only)\n"
       "  summary.json, fig*.png. DIR is written to a temporary sibling and renamed into place.");
   cmd->add_option("--data", args->data, "Trial files, folders (recursive) or manifest CSVs")->required();
   cmd->add_option("--out", args->out, "Output folder (replaced only after success)")->required();
   cmd->add_option("--experiment", args->experiments,
-                  "variance, sigma-sweep, known-view, unknown-view, noise, missing-joints, lower-body, camera or all "
+                  "variance, sigma-sweep, known-view, unknown-view, noise, missing-joints, lower-body, camera, snippet, "
+                  "snippet-clusters or all "
                   "(repeat or comma-separate)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "lower-body", "camera", "all"}))
+      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "lower-body", "camera", "snippet", "snippet-clusters", "all"}))
       ->capture_default_str();
   cmd->add_option("--angles", args->angles, "View angles in degrees: FROM:TO:STEP or a list a,b,c")->capture_default_str();
   cmd->add_option("--method", args->method, "lsq, map or both")

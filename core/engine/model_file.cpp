@@ -1,9 +1,7 @@
 #include "core/engine/model_file.h"
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -12,6 +10,7 @@
 #include "core/common/errors.h"
 #include "core/engine/fourier.h"
 #include "core/io/atomic_write.h"
+#include "core/io/binary_arrays.h"
 
 namespace ew {
 namespace {
@@ -20,49 +19,7 @@ using nlohmann::json;
 
 constexpr std::string_view kMagic = "EIGENWALKER-MODEL";
 
-// [SECTION] Arrays and checksums
-
-struct ArraySpec {
-  std::string name;
-  Eigen::Index rows = 0, cols = 0;
-  std::uint64_t checksum = 0;
-  Eigen::Index count() const { return rows * cols; }
-};
-
-std::uint64_t fnv1a64(const char* data, size_t size) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (size_t i = 0; i < size; ++i) {
-    h ^= static_cast<unsigned char>(data[i]);
-    h *= 1099511628211ull;
-  }
-  return h;
-}
-
-std::string hex64(std::uint64_t v) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
-
-// Little-endian bytes of the values, whatever the host's byte order.
-std::string encode(const double* values, Eigen::Index count) {
-  std::string out(static_cast<size_t>(count) * 8, '\0');
-  for (Eigen::Index i = 0; i < count; ++i) {
-    const auto bits = std::bit_cast<std::uint64_t>(values[i]);
-    for (int b = 0; b < 8; ++b)
-      out[static_cast<size_t>(i) * 8 + static_cast<size_t>(b)] = static_cast<char>((bits >> (8 * b)) & 0xff);
-  }
-  return out;
-}
-
-void decode(const char* bytes, Eigen::Index count, double* values) {
-  for (Eigen::Index i = 0; i < count; ++i) {
-    std::uint64_t bits = 0;
-    for (int b = 0; b < 8; ++b)
-      bits |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[i * 8 + b])) << (8 * b);
-    values[i] = std::bit_cast<double>(bits);
-  }
-}
+// [SECTION] Arrays
 
 // The model's arrays in file order.
 std::vector<std::pair<std::string, const Eigen::MatrixXd*>> arraysOf(const EigenwalkerModel& m,
@@ -78,26 +35,6 @@ std::vector<std::pair<std::string, const Eigen::MatrixXd*>> arraysOf(const Eigen
 [[noreturn]] void malformed(const std::string& file, const std::string& position,
                             const std::string& problem) {
   throwMalformed(file, position, problem);
-}
-
-std::string byteAt(size_t offset) { return "byte " + std::to_string(offset); }
-
-std::vector<std::string> stringList(const json& meta, const char* key,
-                                    const std::string& file) {
-  if (!meta.contains(key) || !meta[key].is_array())
-    malformed(file, "line 2", std::string("metadata has no list '") + key + "'");
-  std::vector<std::string> out;
-  for (const auto& v : meta[key]) {
-    if (!v.is_string()) malformed(file, "line 2", std::string("'") + key + "' holds a non-string");
-    out.push_back(v.get<std::string>());
-  }
-  return out;
-}
-
-long long integer(const json& meta, const char* key, const std::string& file) {
-  if (!meta.contains(key) || !meta[key].is_number_integer())
-    malformed(file, "line 2", std::string("metadata has no integer '") + key + "'");
-  return meta[key].get<long long>();
 }
 
 // [SECTION] σ² optimum (optional: files written before it was stored lack the key)
@@ -149,46 +86,14 @@ std::optional<Sigma2Optimum> sigma2FromJson(const json& meta, const std::string&
 // The shapes each array must have, from the declared sizes.
 void checkShapes(const std::vector<ArraySpec>& arrays, long long dims, long long walkers,
                  long long components, long long spectrum, const std::string& file) {
-  const std::vector<std::tuple<std::string, long long, long long>> expected = {
-      {"mean", dims, 1},           {"eigenwalkers", dims, components},
-      {"eigenvalues", components, 1}, {"spectrum", spectrum, 1},
-      {"coefficients", components, walkers}, {"omegas_rad_s", walkers, 1}};
-  if (arrays.size() != expected.size())
-    malformed(file, "line 2", "expected 6 arrays, metadata lists " + std::to_string(arrays.size()));
-  for (size_t i = 0; i < arrays.size(); ++i) {
-    const auto& [name, rows, cols] = expected[i];
-    if (arrays[i].name != name || arrays[i].rows != rows || arrays[i].cols != cols) {
-      malformed(file, "line 2",
-                "array " + std::to_string(i) + " should be '" + name + "' " + std::to_string(rows) +
-                    " x " + std::to_string(cols) + ", metadata says '" + arrays[i].name + "' " +
-                    std::to_string(arrays[i].rows) + " x " + std::to_string(arrays[i].cols));
-    }
-  }
-}
-
-std::vector<ArraySpec> arraySpecs(const json& meta, const std::string& file) {
-  if (!meta.contains("arrays") || !meta["arrays"].is_array())
-    malformed(file, "line 2", "metadata has no 'arrays' list");
-  std::vector<ArraySpec> specs;
-  for (const auto& a : meta["arrays"]) {
-    if (!a.is_object() || !a.contains("name") || !a["name"].is_string() ||
-        !a.contains("rows") || !a["rows"].is_number_integer() || !a.contains("cols") ||
-        !a["cols"].is_number_integer() || !a.contains("fnv1a64") || !a["fnv1a64"].is_string())
-      malformed(file, "line 2", "an 'arrays' entry lacks name, rows, cols or fnv1a64");
-    ArraySpec s;
-    s.name = a["name"].get<std::string>();
-    s.rows = a["rows"].get<Eigen::Index>();
-    s.cols = a["cols"].get<Eigen::Index>();
-    const auto hex = a["fnv1a64"].get<std::string>();
-    char* end = nullptr;
-    s.checksum = std::strtoull(hex.c_str(), &end, 16);
-    if (hex.size() != 16 || end != hex.c_str() + hex.size())
-      malformed(file, "line 2", "bad checksum text for array '" + s.name + "'");
-    if (s.rows < 0 || s.cols < 0 || s.rows > 1'000'000 || s.cols > 1'000'000)
-      malformed(file, "line 2", "absurd size for array '" + s.name + "'");
-    specs.push_back(s);
-  }
-  return specs;
+  const auto spec = [](const char* name, long long rows, long long cols) {
+    return ArraySpec{name, static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols), 0};
+  };
+  checkArrayShapes(arrays,
+                   {spec("mean", dims, 1), spec("eigenwalkers", dims, components),
+                    spec("eigenvalues", components, 1), spec("spectrum", spectrum, 1),
+                    spec("coefficients", components, walkers), spec("omegas_rad_s", walkers, 1)},
+                   "metadata", file);
 }
 
 std::string readAll(const std::filesystem::path& file) {
@@ -198,25 +103,6 @@ std::string readAll(const std::filesystem::path& file) {
   buffer << in.rdbuf();
   if (in.bad()) throw Error(ErrorKind::Io, file.string(), "", "read failed");
   return std::move(buffer).str();
-}
-
-// Returns the end of the line starting at `begin` (the '\n'), or throws.
-size_t lineEnd(std::string_view bytes, size_t begin, int line, const std::string& file) {
-  const size_t end = bytes.find('\n', begin);
-  if (end == std::string::npos)
-    malformed(file, "line " + std::to_string(line),
-              "truncated: the header line has no end (" + std::to_string(bytes.size()) + " bytes in file)");
-  return end;
-}
-
-int parseVersion(std::string_view first, const std::string& file) {
-  const std::string prefix = std::string(kMagic) + " ";
-  if (first.rfind(prefix, 0) != 0)
-    malformed(file, "byte 0", "not an eigenwalker model file (expected \"" + std::string(kMagic) + " <version>\")");
-  const std::string v(first.substr(prefix.size()));
-  if (v.empty() || v.find_first_not_of("0123456789") != std::string::npos || v.size() > 6)
-    malformed(file, "line 1", "bad version \"" + v + "\"");
-  return std::stoi(v);
 }
 
 // [SECTION] Values
@@ -290,18 +176,10 @@ void saveModel(const EigenwalkerModel& model, const std::filesystem::path& file)
   if (model.sigma2Optimum) meta["sigma2_optimum"] = sigma2Json(*model.sigma2Optimum);
   std::string payload;
   json list = json::array();
-  for (const auto& [name, m] : arrays) {
-    const std::string bytes = encode(m->data(), m->size());
-    list.push_back({{"name", name}, {"rows", m->rows()}, {"cols", m->cols()},
-                    {"fnv1a64", hex64(fnv1a64(bytes.data(), bytes.size()))}});
-    payload += bytes;
-  }
+  for (const auto& [name, m] : arrays) appendArray(list, payload, name, *m);
   meta["arrays"] = list;
   meta["payload_bytes"] = payload.size();
-  const std::string metaLine = meta.dump();
-  const std::string header = std::string(kMagic) + " " + std::to_string(kModelFileVersion) + "\n" +
-                             metaLine + "\n" + "fnv1a64 " +
-                             hex64(fnv1a64(metaLine.data(), metaLine.size())) + "\n";
+  const std::string header = headerText(kMagic, kModelFileVersion, meta.dump());
   writeFileAtomically(file, [&](std::ostream& out) {
     out.write(header.data(), static_cast<std::streamsize>(header.size()));
     out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
@@ -315,71 +193,46 @@ EigenwalkerModel loadModel(const std::filesystem::path& file) {
 }
 
 EigenwalkerModel parseModel(std::string_view bytes, const std::string& file) {
-  const size_t end1 = lineEnd(bytes, 0, 1, file);
-  const int version = parseVersion(bytes.substr(0, end1), file);
+  const int version = parseHeaderVersion(bytes, kMagic, "eigenwalker model file", file);
   if (version != kModelFileVersion)
     throw Error(ErrorKind::Unsupported, file, "line 1",
                 "model file version " + std::to_string(version) + " (this build reads version " +
                     std::to_string(kModelFileVersion) + ")");
-  const size_t end2 = lineEnd(bytes, end1 + 1, 2, file);
-  const size_t end3 = lineEnd(bytes, end2 + 1, 3, file);
-  const std::string_view sumLine = bytes.substr(end2 + 1, end3 - end2 - 1);
-  if (sumLine.rfind("fnv1a64 ", 0) != 0 || sumLine.size() != 8 + 16)
-    malformed(file, "line 3", "expected \"fnv1a64 <16 hex digits>\"");
-  if (sumLine.substr(8) != hex64(fnv1a64(bytes.data() + end1 + 1, end2 - end1 - 1)))
-    malformed(file, "line 2", "metadata checksum mismatch: the file is damaged");
-  json meta;
-  try {
-    meta = json::parse(bytes.begin() + static_cast<std::ptrdiff_t>(end1 + 1),
-                       bytes.begin() + static_cast<std::ptrdiff_t>(end2));
-  } catch (const json::exception& e) {
-    malformed(file, "line 2", std::string("bad metadata JSON: ") + e.what());
-  }
-  if (!meta.is_object()) malformed(file, "line 2", "metadata is not a JSON object");
-  const long long dims = integer(meta, "dims", file), walkers = integer(meta, "walkers", file);
-  const long long components = integer(meta, "components", file);
-  const long long spectrum = integer(meta, "spectrum_size", file);
+  const HeaderMetadata header = readHeaderMetadata(bytes, file);
+  const json meta = parseMetadataJson(header.line, file);
+  const long long dims = metadataInteger(meta, "dims", "metadata", file);
+  const long long walkers = metadataInteger(meta, "walkers", "metadata", file);
+  const long long components = metadataInteger(meta, "components", "metadata", file);
+  const long long spectrum = metadataInteger(meta, "spectrum_size", "metadata", file);
   if (dims != kFourierDims3) malformed(file, "line 2", "dims must be 225, got " + std::to_string(dims));
   if (walkers < 2 || components < 1 || components >= walkers || spectrum < components ||
       spectrum >= walkers)
     malformed(file, "line 2", "inconsistent sizes: walkers " + std::to_string(walkers) +
                                   ", components " + std::to_string(components) + ", spectrum " +
                                   std::to_string(spectrum));
-  const auto specs = arraySpecs(meta, file);
+  const auto specs = metadataArraySpecs(meta, "metadata", file);
   checkShapes(specs, dims, walkers, components, spectrum, file);
 
   EigenwalkerModel model;
-  model.walkerIds = stringList(meta, "walker_ids", file);
-  model.subjects = stringList(meta, "subjects", file);
-  model.provenance = stringList(meta, "provenance", file);
+  model.walkerIds = metadataStrings(meta, "walker_ids", "metadata", file);
+  model.subjects = metadataStrings(meta, "subjects", "metadata", file);
+  model.provenance = metadataStrings(meta, "provenance", "metadata", file);
   model.sigma2Optimum = sigma2FromJson(meta, file);
   if (static_cast<long long>(model.walkerIds.size()) != walkers ||
       static_cast<long long>(model.subjects.size()) != walkers)
     malformed(file, "line 2", "walker_ids and subjects must list " + std::to_string(walkers) + " walkers");
 
   size_t expectedBytes = 0;
-  for (const auto& s : specs) expectedBytes += static_cast<size_t>(s.count()) * 8;
-  const size_t payloadStart = end3 + 1, available = bytes.size() - payloadStart;
-  if (available < expectedBytes)
-    malformed(file, byteAt(bytes.size()),
-              "truncated: payload has " + std::to_string(available) + " of " +
-                  std::to_string(expectedBytes) + " bytes");
-  if (available > expectedBytes)
-    malformed(file, byteAt(payloadStart + expectedBytes),
-              std::to_string(available - expectedBytes) + " unexpected bytes after the payload");
+  for (const auto& s : specs) expectedBytes += s.byteCount();
+  checkPayloadSize(bytes, header.payloadStart, expectedBytes, file);
 
   std::vector<Eigen::MatrixXd> values;
-  size_t offset = payloadStart;
+  size_t offset = header.payloadStart;
   for (const auto& s : specs) {
-    const size_t size = static_cast<size_t>(s.count()) * 8;
-    if (fnv1a64(bytes.data() + offset, size) != s.checksum)
-      malformed(file, "bytes " + std::to_string(offset) + "-" + std::to_string(offset + size),
-                "checksum mismatch in array '" + s.name + "': the file is damaged");
-    Eigen::MatrixXd m(s.rows, s.cols);
-    decode(bytes.data() + offset, s.count(), m.data());
+    Eigen::MatrixXd m = readFloat64Array(bytes, offset, s, "array '" + s.name + "'", file);
     checkValues(m, s.name, offset, file);
     values.push_back(std::move(m));
-    offset += size;
+    offset += s.byteCount();
   }
   model.mean = values[0];
   model.eigenwalkers = std::move(values[1]);

@@ -148,6 +148,8 @@ std::string experimentName(Experiment e) {
     case Experiment::MissingJoints: return "missing-joints";
     case Experiment::LowerBody: return "lower-body";
     case Experiment::Camera: return "camera";
+    case Experiment::Snippet: return "snippet";
+    case Experiment::SnippetClusters: return "snippet-clusters";
   }
   return "";
 }
@@ -164,7 +166,8 @@ std::optional<Experiment> experimentFromName(const std::string& name) {
   for (Experiment e : allExperiments()) {
     if (experimentName(e) == name) return e;
   }
-  if (name == experimentName(Experiment::Camera)) return Experiment::Camera;
+  for (Experiment e : {Experiment::Camera, Experiment::Snippet, Experiment::SnippetClusters})
+    if (name == experimentName(e)) return e;
   return std::nullopt;
 }
 
@@ -459,8 +462,12 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The eigenwalker folds: every experiment but the variance table and the snippet ones
+// (which build their own folds from the dataset's trials).
 bool needsFolds(const std::set<Experiment>& e) {
-  return e.size() > (e.count(Experiment::Variance) ? 1u : 0u);
+  for (Experiment x : e)
+    if (x != Experiment::Variance && x != Experiment::Snippet && x != Experiment::SnippetClusters) return true;
+  return false;
 }
 
 // σ² for MAP: the user's, else the sweep's optimum (the sweep then runs and is reported).

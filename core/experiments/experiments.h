@@ -17,10 +17,15 @@
 #include "core/experiments/camera_experiment.h"
 #include "core/experiments/leave_one_out.h"
 #include "core/experiments/lower_body.h"
+#include "core/experiments/snippet_experiment.h"
 
 namespace ew {
 
-enum class Experiment { Variance, SigmaSweep, KnownView, UnknownView, Noise, MissingJoints, LowerBody, Camera };
+enum class Experiment {
+  Variance, SigmaSweep, KnownView, UnknownView, Noise, MissingJoints, LowerBody, Camera,
+  Snippet,          // snippet engine beside the eigenwalker (snippet_experiment.h); by name only
+  SnippetClusters,  // the snippet prior's cluster count by held-out likelihood; by name only
+};
 
 std::string experimentName(Experiment e);  // "variance", "sigma-sweep", …
 std::optional<Experiment> experimentFromName(const std::string& name);
@@ -107,6 +112,10 @@ struct EvaluationResults {
   std::vector<UnknownViewRow> unknownView;
   std::vector<LowerBodyRow> lowerBody;  // experiment "lower-body" (lower_body.h)
   std::vector<CameraRow> camera;        // experiment "camera" (camera_experiment.h)
+  // Experiments "snippet" and "snippet-clusters" (snippet_experiment.h): they need the
+  // dataset's trials, so the caller runs them (snippetComparison, chooseSnippetClusters).
+  SnippetExperimentResults snippet;
+  std::vector<ClusterChoiceRow> snippetClusters;
   std::vector<std::pair<std::string, double>> timingsS;  // per experiment, wall seconds
   std::vector<std::string> warnings;
 };

@@ -95,16 +95,51 @@ std::string lowerBodyCsv(const std::vector<LowerBodyRow>& rows) {
   });
 }
 
+namespace {
+
+// The error text may hold commas: quoted, inner quotes doubled (RFC 4180).
+std::string quotedError(std::string error) {
+  for (std::size_t i = 0; (i = error.find('"', i)) != std::string::npos; i += 2) error.insert(i, "\"");
+  return error.empty() ? "" : "\"" + error + "\"";
+}
+
+}  // namespace
+
+std::string snippetEnginesCsv(const std::vector<EngineRow>& rows) {
+  return csv(kSnippetEnginesHeader, rows, [](const EngineRow& r) {
+    return join({r.subject, r.clip, num(r.angleDeg), r.engine, std::to_string(r.frames),
+                 r.error.empty() ? num(r.mpjpeMm) : "", r.error.empty() ? num(r.depthErrorMm2) : "",
+                 quotedError(r.error)});
+  });
+}
+
+std::string snippetPhaseCsv(const std::vector<PhaseRow>& rows) {
+  return csv(kSnippetPhaseHeader, rows, [](const PhaseRow& r) {
+    return join({num(r.angleDeg), r.engine, std::to_string(r.bin), num(r.mpjpeMm), std::to_string(r.frames)});
+  });
+}
+
+std::string snippetThetaCsv(const std::vector<ThetaRow>& rows) {
+  return csv(kSnippetThetaHeader, rows, [](const ThetaRow& r) {
+    return join({r.subject, num(r.angleDeg), std::to_string(r.snippet), num(r.trueDeg), num(r.estimatedDeg),
+                 num(r.errorDeg), num(r.clipEstimateDeg)});
+  });
+}
+
+std::string snippetClustersCsv(const std::vector<ClusterChoiceRow>& rows) {
+  return csv(kSnippetClustersHeader, rows, [](const ClusterChoiceRow& r) {
+    return join({std::to_string(r.clusters), num(r.heldOutLogLikelihood), num(r.emHeldOutLogLikelihood)});
+  });
+}
+
 std::string cameraCsv(const std::vector<CameraRow>& rows) {
   return csv(kCameraHeader, rows, [](const CameraRow& r) {
-    // The error text may hold commas: quoted, inner quotes doubled (RFC 4180).
-    std::string error = r.error;
-    for (std::size_t i = 0; (i = error.find('"', i)) != std::string::npos; i += 2) error.insert(i, "\"");
+    const std::string error = r.error;
     return join({r.subject, r.walker, std::to_string(r.camera), num(r.noisePx), r.bystander ? "1" : "0",
                  std::to_string(r.frames), num(r.trueAlphaDeg), num(r.trueElevationDeg), num(r.trueFocalPx),
                  num(r.trueDistanceM), num(r.alphaDeg), num(r.elevationDeg), num(r.focalPx), num(r.distanceM),
                  num(r.alphaErrorDeg), num(r.elevationErrorDeg), num(r.focalRelError), num(r.heightRelError),
-                 num(r.mpjpeMm), num(r.reprojectionRmsPx), error.empty() ? "" : "\"" + error + "\""});
+                 num(r.mpjpeMm), num(r.reprojectionRmsPx), quotedError(error)});
   });
 }
 
@@ -113,6 +148,50 @@ std::string cameraCsv(const std::vector<CameraRow>& rows) {
 namespace {
 
 using nlohmann::json;
+
+// Per clip kind, engine and angle: mean MPJPE and depth error over the subjects the engine
+// answered, and how many it refused; θ per angle: median error, share within 10°, and the
+// share of subjects whose median snippet is within 10°.
+json snippetSummary(const SnippetExperimentResults& r) {
+  json engines = json::array();
+  std::map<std::tuple<std::string, std::string, double>, std::tuple<double, double, int, int>> cells;
+  for (const auto& row : r.rows) {
+    auto& [mpjpe, depth, n, refused] = cells[{row.clip, row.engine, row.angleDeg}];
+    if (!row.error.empty()) { ++refused; continue; }
+    mpjpe += row.mpjpeMm;
+    depth += row.depthErrorMm2;
+    ++n;
+  }
+  for (const auto& [key, v] : cells) {
+    const auto& [mpjpe, depth, n, refused] = v;
+    engines.push_back({{"clip", std::get<0>(key)}, {"engine", std::get<1>(key)}, {"angle_deg", std::get<2>(key)},
+                       {"mean_mpjpe_mm", n ? json(mpjpe / n) : json(nullptr)},
+                       {"mean_depth_error_mm2", n ? json(depth / n) : json(nullptr)},
+                       {"clips", n}, {"refused", refused}});
+  }
+  json theta = json::array();
+  std::map<double, std::map<std::string, std::vector<double>>> byAngle;
+  for (const auto& t : r.theta) byAngle[t.angleDeg][t.subject].push_back(t.errorDeg);
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  for (const auto& [angle, subjects] : byAngle) {
+    std::vector<double> all;
+    int subjectsWithin = 0;
+    for (const auto& [subject, errors] : subjects) {
+      all.insert(all.end(), errors.begin(), errors.end());
+      if (median(errors) <= 10.0) ++subjectsWithin;
+    }
+    const double within = static_cast<double>(std::count_if(all.begin(), all.end(), [](double e) { return e <= 10.0; }));
+    theta.push_back({{"angle_deg", angle}, {"snippets", all.size()}, {"median_error_deg", median(all)},
+                     {"snippets_within_10_deg_share", within / static_cast<double>(std::max<size_t>(1, all.size()))},
+                     {"subjects_median_within_10_deg_share",
+                      static_cast<double>(subjectsWithin) / static_cast<double>(std::max<size_t>(1, subjects.size()))}});
+  }
+  return {{"engines", engines}, {"theta", theta}, {"train_seconds_mean", r.trainSecondsMean},
+          {"training_snippets_mean", r.snippetsMean}};
+}
 
 json knownViewSummary(const std::vector<ViewErrorRow>& rows) {
   std::map<std::string, std::array<double, 4>> sums;  // abs, rel, mpjpe, count
@@ -208,6 +287,14 @@ std::string summaryJson(const EvaluationResults& r, const EvaluationProvenance& 
     }
     s["camera"] = camera;
   }
+  if (r.ran.count(Experiment::Snippet)) s["snippet"] = snippetSummary(r.snippet);
+  if (r.ran.count(Experiment::SnippetClusters)) {
+    json clusters = json::array();
+    for (const auto& c : r.snippetClusters)
+      clusters.push_back({{"clusters", c.clusters}, {"held_out_log_likelihood", c.heldOutLogLikelihood},
+                          {"em_held_out_log_likelihood", c.emHeldOutLogLikelihood}});
+    s["snippet_clusters"] = clusters;
+  }
   json timings = json::object();
   for (const auto& [name, seconds] : r.timingsS) timings[name] = seconds;
   s["timings_s"] = timings;
@@ -265,6 +352,12 @@ std::vector<std::string> writeResultsFolder(const fs::path& dir, const Evaluatio
     if (r.ran.count(Experiment::MissingJoints)) add("missing_joints.csv", missingJointsCsv(r.missingJoints));
     if (r.ran.count(Experiment::LowerBody)) add("lower_body.csv", lowerBodyCsv(r.lowerBody));
     if (r.ran.count(Experiment::Camera)) add("camera.csv", cameraCsv(r.camera));
+    if (r.ran.count(Experiment::Snippet)) {
+      add("snippet_engines.csv", snippetEnginesCsv(r.snippet.rows));
+      add("snippet_phase.csv", snippetPhaseCsv(r.snippet.phase));
+      add("snippet_theta.csv", snippetThetaCsv(r.snippet.theta));
+    }
+    if (r.ran.count(Experiment::SnippetClusters)) add("snippet_clusters.csv", snippetClustersCsv(r.snippetClusters));
     if (options.plots) {
       for (const auto& name : writeEvaluationPlots(partial, r)) {
         written.push_back(name);

@@ -26,6 +26,18 @@ inline constexpr const char* kCameraHeader =
     "true_distance_m,alpha_deg,elevation_deg,focal_px,distance_m,alpha_error_deg,elevation_error_deg,"
     "focal_rel_error,height_rel_error,mpjpe_mm,reprojection_rms_px,error";
 
+inline constexpr const char* kSnippetEnginesHeader =
+    "subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error";
+inline constexpr const char* kSnippetPhaseHeader = "angle_deg,engine,phase_bin,mpjpe_mm,frames";
+inline constexpr const char* kSnippetThetaHeader =
+    "subject,angle_deg,snippet,true_deg,estimated_deg,error_deg,clip_estimate_deg";
+inline constexpr const char* kSnippetClustersHeader = "clusters,held_out_log_likelihood,em_held_out_log_likelihood";
+
+std::string snippetEnginesCsv(const std::vector<EngineRow>& rows);
+std::string snippetPhaseCsv(const std::vector<PhaseRow>& rows);
+std::string snippetThetaCsv(const std::vector<ThetaRow>& rows);
+std::string snippetClustersCsv(const std::vector<ClusterChoiceRow>& rows);
+
 std::string harmonicsCsv(const std::vector<HarmonicsRow>& rows);
 std::string varianceCsv(const std::vector<VarianceRow>& rows);
 std::string sigmaSweepCsv(const std::vector<SigmaSweepRow>& rows);

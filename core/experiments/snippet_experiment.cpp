@@ -1,0 +1,305 @@
+#include "core/experiments/snippet_experiment.h"
+
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numbers>
+
+#include "core/common/errors.h"
+#include "core/engine/fourier.h"
+#include "core/engine/projection.h"
+#include "core/engine/reconstruction.h"
+#include "core/experiments/leave_one_out.h"
+#include "core/snippet/snippet_data.h"
+
+namespace ew {
+
+namespace {
+
+constexpr double kClipRateHz = 30.0;
+
+struct FrameErrors {
+  Eigen::VectorXd perFrameMm;  // T: mean over joints of the 3D error
+  double mpjpeMm = 0.0, depthErrorMm2 = 0.0;
+};
+
+// Errors after removing the clip's mean translation (the engines differ in what they know
+// of the walker's absolute position; the shape and motion are what is compared).
+FrameErrors frameErrors(const Eigen::MatrixXd& rec, const Eigen::MatrixXd& truth, double alphaDeg) {
+  Eigen::MatrixXd diff = rec - truth;
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  for (int j = 0; j < 15; ++j) offset += diff.middleCols(3 * j, 3).colwise().mean().transpose() / 15.0;
+  const double a = degToRad(alphaDeg);
+  FrameErrors e;
+  e.perFrameMm = Eigen::VectorXd::Zero(diff.rows());
+  double depth = 0.0;
+  for (Eigen::Index f = 0; f < diff.rows(); ++f) {
+    for (int j = 0; j < 15; ++j) {
+      const Eigen::Vector3d d = diff.block<1, 3>(f, 3 * j).transpose() - offset;
+      e.perFrameMm(f) += d.norm() / 15.0;
+      const double dd = -d.x() * std::sin(a) + d.y() * std::cos(a);
+      depth += dd * dd;
+    }
+  }
+  e.mpjpeMm = e.perFrameMm.mean();
+  e.depthErrorMm2 = depth / static_cast<double>(diff.rows() * 15);
+  return e;
+}
+
+const DatasetTrial* firstTrialOf(const Dataset& dataset, const std::string& subject) {
+  for (const auto& t : dataset.trials)
+    if (t.info.subject == subject) return &t;
+  return nullptr;
+}
+
+struct SnippetFold {
+  std::string subject;
+  PreparedSnippetPrior prior;
+  EigenwalkerModel model;
+  ModelGram gram;
+  double trainS = 0.0;
+};
+
+// The eigenwalker on 2D frames (no progression): Fourier fit, MAP at the known view,
+// synthesised at every frame.
+Eigen::MatrixXd eigenwalkerFrames(const SnippetFold& fold, const Eigen::MatrixXd& framesNoProgression, double alphaDeg,
+                                  double strideHz, double sigma2) {
+  FourierFitOptions fo;
+  if (strideHz > 0) fo.omegaHintRadS = 2.0 * std::numbers::pi * strideHz;
+  fo.file = fold.subject;
+  const FourierFit fit2d = fitFourier(projectFramesToView(framesNoProgression, alphaDeg), kClipRateHz, fo);
+  EstimatorOptions est;
+  est.estimator = Estimator::Map;
+  est.sigma2Mm2 = sigma2;
+  const Reconstruction rec = reconstructKnownView(fold.gram, fit2d.w, alphaDeg, est);
+  return synthesizeFrames(rec.w, fit2d.omegaRadS, fit2d.phaseRad,
+                          frameTimes(static_cast<int>(framesNoProgression.rows()), kClipRateHz));
+}
+
+struct Clip {
+  Eigen::MatrixXd withProgression, withoutProgression;  // T × 45 at 30 Hz
+  double strideHz = 0.0;
+};
+
+Clip clipOf(const WalkingTrial& trial) {
+  Clip c;
+  c.withProgression = resampleFrames(framesWithProgression(trial), trial.joints.rateHz, kClipRateHz);
+  c.withoutProgression = resampleFrames(trial.joints.positionsMm, trial.joints.rateHz, kClipRateHz);
+  c.strideHz = trial.cycles.strideHz;
+  return c;
+}
+
+Clip middleOf(const Clip& clip, int frames) {
+  const int start = std::max(0, static_cast<int>(clip.withProgression.rows() - frames) / 2);
+  Clip c = clip;
+  c.withProgression = clip.withProgression.middleRows(start, std::min<Eigen::Index>(frames, clip.withProgression.rows()));
+  c.withoutProgression = clip.withoutProgression.middleRows(start, c.withProgression.rows());
+  return c;
+}
+
+struct FoldOutput {
+  std::vector<EngineRow> rows;
+  std::vector<ThetaRow> theta;
+  std::vector<std::string> warnings;
+  // per engine, angle, bin: sum of per-frame errors and counts
+  std::vector<std::tuple<std::string, double, int, double>> phaseSamples;
+};
+
+void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& clipName, const SnippetExperimentOptions& o,
+               FoldOutput& out, const FourierFit* phaseFit) {
+  for (double alpha : o.anglesDeg) {
+    EngineRow snip{fold.subject, "snippet MAP", clipName, alpha, static_cast<int>(clip.withProgression.rows()), 0.0, 0.0, ""};
+    try {
+      SnippetSequenceOptions so = o.sequence;
+      so.fit.alphaDeg = alpha;
+      so.fit.scale = 1.0;
+      const SnippetSequence seq = reconstructSnippetSequence(
+          fold.prior, projectFramesToView(clip.withProgression, alpha), kClipRateHz, so);
+      const FrameErrors e = frameErrors(seq.framesMm, clip.withProgression, alpha);
+      snip.mpjpeMm = e.mpjpeMm;
+      snip.depthErrorMm2 = e.depthErrorMm2;
+      if (phaseFit)
+        for (Eigen::Index f = 0; f < e.perFrameMm.size(); ++f)
+          out.phaseSamples.emplace_back("snippet MAP", alpha, static_cast<int>(f), e.perFrameMm(f));
+    } catch (const Error& err) {
+      snip.error = err.what();
+    }
+    out.rows.push_back(snip);
+    EngineRow eig{fold.subject, "eigenwalker MAP", clipName, alpha, snip.frames, 0.0, 0.0, ""};
+    try {
+      const Eigen::MatrixXd rec = eigenwalkerFrames(fold, clip.withoutProgression, alpha, clip.strideHz, o.sigma2Mm2);
+      const FrameErrors e = frameErrors(rec, clip.withoutProgression, alpha);
+      eig.mpjpeMm = e.mpjpeMm;
+      eig.depthErrorMm2 = e.depthErrorMm2;
+      if (phaseFit)
+        for (Eigen::Index f = 0; f < e.perFrameMm.size(); ++f)
+          out.phaseSamples.emplace_back("eigenwalker MAP", alpha, static_cast<int>(f), e.perFrameMm(f));
+    } catch (const Error& err) {
+      eig.error = err.what();
+    }
+    out.rows.push_back(eig);
+  }
+}
+
+void unknownView(const SnippetFold& fold, const Clip& clip, const SnippetExperimentOptions& o, FoldOutput& out) {
+  const int length = fold.prior.prior.frames;
+  for (double alpha : o.unknownAnglesDeg) {
+    SnippetSequenceOptions so = o.sequence;
+    so.fit.alphaDeg.reset();
+    so.fit.scale = 1.0;
+    try {
+      const SnippetSequence seq = reconstructSnippetSequence(
+          fold.prior, projectFramesToView(clip.withProgression, alpha), kClipRateHz, so);
+      for (size_t k = 0; k < seq.starts.size(); ++k) {
+        const SnippetPlacement place = snippetPlacement(clip.withProgression, seq.starts[k], length);
+        ThetaRow row;
+        row.subject = fold.subject;
+        row.angleDeg = alpha;
+        row.snippet = static_cast<int>(k);
+        row.trueDeg = wrapDeg(alpha - place.headingRad * 180.0 / std::numbers::pi);
+        row.estimatedDeg = seq.freeAlphaDeg[k];
+        row.errorDeg = std::abs(wrapDeg(row.estimatedDeg - row.trueDeg));
+        row.clipEstimateDeg = seq.alphaDeg;
+        out.theta.push_back(row);
+      }
+    } catch (const Error& err) {
+      out.warnings.push_back("snippet: unknown view " + fold.subject + ": " + err.what());
+    }
+  }
+}
+
+}  // namespace
+
+Eigen::MatrixXd framesWithProgression(const WalkingTrial& trial) {
+  Eigen::MatrixXd frames = trial.joints.positionsMm;
+  for (Eigen::Index f = 0; f < frames.rows(); ++f) {
+    const double forward = trial.speedMps * 1000.0 * static_cast<double>(f) / trial.joints.rateHz;
+    for (int j = 0; j < 15; ++j) frames(f, 3 * j + 1) += forward;
+  }
+  return frames;
+}
+
+std::vector<SnippetTrainingTrial> snippetTrainingTrials(const Dataset& dataset, const std::string& without) {
+  std::vector<SnippetTrainingTrial> trials;
+  for (const auto& t : dataset.trials) {
+    if (t.info.subject == without) continue;
+    trials.push_back({t.info.subject, t.info.file, framesWithProgression(t.trial), t.trial.joints.rateHz});
+  }
+  return trials;
+}
+
+SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::vector<Walker>& walkers,
+                                           const SnippetExperimentOptions& o) {
+  const std::vector<std::string> subjects = dataset.subjects();
+  if (subjects.size() < 3) throwBadData("snippet", "", "leave-one-subject-out needs at least 3 subjects");
+  std::vector<FoldOutput> outputs(subjects.size());
+  std::vector<double> trainS(subjects.size(), 0.0);
+  std::vector<int> snippets(subjects.size(), 0);
+  parallelFor(static_cast<int>(subjects.size()), o.threads, [&](int i) {
+    SnippetFold fold;
+    fold.subject = subjects[static_cast<size_t>(i)];
+    const auto t0 = std::chrono::steady_clock::now();
+    const SnippetPrior prior = trainSnippetPrior(snippetTrainingTrials(dataset, fold.subject), o.prior);
+    trainS[static_cast<size_t>(i)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    snippets[static_cast<size_t>(i)] = prior.trainingSnippets;
+    fold.prior = prepareSnippetPrior(prior);
+    fold.model = buildModelWithoutSubject(walkers, fold.subject, o.model);
+    fold.gram = precomputeModelGram(fold.model);
+    FoldOutput& out = outputs[static_cast<size_t>(i)];
+    const DatasetTrial* trial = firstTrialOf(dataset, fold.subject);
+    if (!trial) return;
+    const Clip clip = clipOf(trial->trial);
+    FourierFitOptions fo;
+    fo.omegaHintRadS = 2.0 * std::numbers::pi * clip.strideHz;
+    FourierFit phase3d;
+    const FourierFit* phaseFit = nullptr;
+    try {
+      phase3d = fitFourier(clip.withoutProgression, kClipRateHz, fo);
+      phaseFit = &phase3d;
+    } catch (const Error& e) {
+      out.warnings.push_back("snippet: " + fold.subject + ": no gait phase (" + e.what() + ")");
+    }
+    const size_t before = out.phaseSamples.size();
+    scoreClip(fold, clip, "trial", o, out, phaseFit);
+    if (phaseFit) {  // frame index → phase bin
+      for (size_t k = before; k < out.phaseSamples.size(); ++k) {
+        auto& [engine, alpha, frame, err] = out.phaseSamples[k];
+        const double ph = std::fmod(phaseFit->omegaRadS * frame / kClipRateHz + phaseFit->phaseRad +
+                                        8.0 * std::numbers::pi, 2.0 * std::numbers::pi);
+        frame = std::min(o.phaseBins - 1, static_cast<int>(ph / (2.0 * std::numbers::pi) * o.phaseBins));
+      }
+    }
+    const int shortFrames = static_cast<int>(std::lround(o.shortClipS * kClipRateHz)) + 1;
+    FoldOutput shortOut;
+    scoreClip(fold, middleOf(clip, shortFrames), "0.5 s", o, shortOut, nullptr);
+    out.rows.insert(out.rows.end(), shortOut.rows.begin(), shortOut.rows.end());
+    unknownView(fold, clip, o, out);
+    if (!o.wholeTrialSuffix.empty()) {
+      for (const auto& t : dataset.trials) {
+        const std::string& f = t.info.file;
+        if (t.info.subject != fold.subject || f.size() < o.wholeTrialSuffix.size() ||
+            f.compare(f.size() - o.wholeTrialSuffix.size(), o.wholeTrialSuffix.size(), o.wholeTrialSuffix) != 0)
+          continue;
+        PrepareOptions whole;
+        whole.cropToSteadyWindow = false;
+        FoldOutput wholeOut;
+        scoreClip(fold, clipOf(loadWalkingTrial(f, {}, whole)), "whole trial", o, wholeOut, nullptr);
+        out.rows.insert(out.rows.end(), wholeOut.rows.begin(), wholeOut.rows.end());
+      }
+    }
+  });
+  SnippetExperimentResults res;
+  std::map<std::tuple<std::string, double, int>, std::pair<double, int>> bins;
+  for (auto& out : outputs) {
+    res.rows.insert(res.rows.end(), out.rows.begin(), out.rows.end());
+    res.theta.insert(res.theta.end(), out.theta.begin(), out.theta.end());
+    res.warnings.insert(res.warnings.end(), out.warnings.begin(), out.warnings.end());
+    for (const auto& [engine, alpha, bin, err] : out.phaseSamples) {
+      auto& b = bins[{engine, alpha, bin}];
+      b.first += err;
+      ++b.second;
+    }
+  }
+  for (const auto& [key, value] : bins)
+    res.phase.push_back({std::get<0>(key), std::get<1>(key), std::get<2>(key), value.first / value.second, value.second});
+  for (size_t i = 0; i < subjects.size(); ++i) {
+    res.trainSecondsMean += trainS[i] / static_cast<double>(subjects.size());
+    res.snippetsMean += snippets[i] / static_cast<int>(subjects.size());
+  }
+  return res;
+}
+
+std::vector<ClusterChoiceRow> chooseSnippetClusters(const Dataset& dataset, const std::vector<int>& clusters,
+                                                    const SnippetPriorOptions& base, int emIterations,
+                                                    int threads) {
+  const std::vector<std::string> subjects = dataset.subjects();
+  std::vector<ClusterChoiceRow> rows;
+  for (int m : clusters) {
+    std::vector<double> sum(subjects.size(), 0.0), sumEm(subjects.size(), 0.0);
+    std::vector<int> count(subjects.size(), 0);
+    parallelFor(static_cast<int>(subjects.size()), threads, [&](int i) {
+      const std::string& s = subjects[static_cast<size_t>(i)];
+      SnippetPriorOptions o = base;
+      o.clusters = m;
+      std::vector<SnippetTrainingTrial> held;
+      for (const auto& t : snippetTrainingTrials(dataset))
+        if (t.subject == s) held.push_back(t);
+      const Eigen::MatrixXd test = cutTrainingSnippets(held, o.frames, o.hop, o.rateHz);
+      if (test.cols() == 0) return;
+      const auto train = snippetTrainingTrials(dataset, s);
+      sum[static_cast<size_t>(i)] = meanLogDensity(trainSnippetPrior(train, o), test) * static_cast<double>(test.cols());
+      o.emIterations = emIterations;
+      sumEm[static_cast<size_t>(i)] = emIterations > 0
+          ? meanLogDensity(trainSnippetPrior(train, o), test) * static_cast<double>(test.cols())
+          : sum[static_cast<size_t>(i)];
+      count[static_cast<size_t>(i)] = static_cast<int>(test.cols());
+    });
+    double total = 0.0, totalEm = 0.0;
+    int n = 0;
+    for (size_t i = 0; i < subjects.size(); ++i) { total += sum[i]; totalEm += sumEm[i]; n += count[i]; }
+    rows.push_back({m, total / n, totalEm / n});
+  }
+  return rows;
+}
+
+}  // namespace ew

@@ -1,0 +1,99 @@
+#pragma once
+// Experiment "snippet" (issue 15): the snippet engine (Howe, Leventon & Freeman 1999;
+// core/snippet) beside the eigenwalker, leave-one-subject-out, on the same 2D frames.
+//
+// Each held-out walker's first trial, resampled to 30 Hz, with its overground progression
+// (the canonical frame's removed trend put back: speed × time along +y), is seen
+// orthographically at each angle (mm, scale known):
+//   snippet engine   the prior learnt from every trial of the other subjects, the clip cut
+//                    into 11-frame snippets every 4 frames, MAP per snippet, stitched, depth
+//                    slip removed by ground contact;
+//   eigenwalker MAP  the 2D Fourier fit of the same frames without progression (as the
+//                    eigenwalker's experiments feed it) at the walker's ω, MAP at the known
+//                    view with the fold's model, synthesised at every frame.
+// Both are scored on every frame against the mocap frames after removing the clip's mean
+// translation: MPJPE (mm) and E_a (mean squared depth error, mm²), and per phase bin of the
+// gait cycle (phase from the walker's own 3D fit: ωt + φ).
+// Beyond a cycle: 0.5 s clips cut from the middle of each held-out trial (the snippet engine
+// reconstructs them; the eigenwalker's Fourier fit refuses them — its message is recorded),
+// CMU 05_01's whole trial (speeding up and slowing down; `wholeTrial`), and an unknown view:
+// every snippet's own α̂ against its true view (α minus the heading of its middle frame).
+
+#include <string>
+#include <vector>
+
+#include "core/engine/model.h"
+#include "core/engine/walker_set.h"
+#include "core/gait/dataset.h"
+#include "core/snippet/snippet_prior.h"
+#include "core/snippet/snippet_sequence.h"
+
+namespace ew {
+
+struct SnippetExperimentOptions {
+  std::vector<double> anglesDeg{0.0, 30.0, 60.0, 90.0};
+  std::vector<double> unknownAnglesDeg{-60.0, -30.0, 0.0, 30.0, 60.0};
+  SnippetPriorOptions prior;
+  SnippetSequenceOptions sequence;
+  ModelOptions model;
+  double sigma2Mm2 = 1000.0;   // the eigenwalker's MAP σ² (the project's sweep optimum)
+  double shortClipS = 0.5;
+  int phaseBins = 20;
+  std::string wholeTrialSuffix = "05_01.bvh";  // a trial loaded uncropped ("" = none)
+  int threads = 1;
+};
+
+struct EngineRow {
+  std::string subject, engine, clip;  // clip: "trial", "0.5 s", "whole trial"
+  double angleDeg = 0.0;
+  int frames = 0;
+  double mpjpeMm = 0.0, depthErrorMm2 = 0.0;
+  std::string error;                   // why the engine gave no answer (empty: it did)
+};
+
+struct PhaseRow {
+  std::string engine;
+  double angleDeg = 0.0;
+  int bin = 0;                         // phase [bin, bin + 1) / bins of the cycle
+  double mpjpeMm = 0.0;
+  int frames = 0;
+};
+
+struct ThetaRow {
+  std::string subject;
+  double angleDeg = 0.0;
+  int snippet = 0;
+  double trueDeg = 0.0, estimatedDeg = 0.0, errorDeg = 0.0;  // error wrapped to [0, 180]
+  double clipEstimateDeg = 0.0;       // the clip's α̂ (circular median)
+};
+
+struct SnippetExperimentResults {
+  std::vector<EngineRow> rows;
+  std::vector<PhaseRow> phase;
+  std::vector<ThetaRow> theta;
+  std::vector<std::string> warnings;
+  double trainSecondsMean = 0.0;       // one fold's prior
+  int snippetsMean = 0;                // training snippets per fold
+};
+
+SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::vector<Walker>& walkers,
+                                           const SnippetExperimentOptions& options);
+
+// The prior's training trials from a dataset: every trial's canonical frames with its
+// progression put back (speed × time along +y), subjects other than `without`.
+std::vector<SnippetTrainingTrial> snippetTrainingTrials(const Dataset& dataset, const std::string& without = "");
+
+// Frames with progression: canonical frames + speed·t along +y.
+Eigen::MatrixXd framesWithProgression(const WalkingTrial& trial);
+
+// Held-out likelihood per snippet for m clusters (LOSO over subjects): choosing m.
+struct ClusterChoiceRow {
+  int clusters = 0;
+  double heldOutLogLikelihood = 0.0;   // mean over held-out snippets (nats per snippet)
+  double emHeldOutLogLikelihood = 0.0; // the same after `emIterations` EM steps
+};
+std::vector<ClusterChoiceRow> chooseSnippetClusters(const Dataset& dataset, const std::vector<int>& clusters,
+                                                    const SnippetPriorOptions& base, int emIterations,
+                                                    int threads);
+
+}  // namespace ew
