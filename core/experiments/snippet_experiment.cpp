@@ -105,39 +105,38 @@ struct FoldOutput {
   std::vector<std::tuple<std::string, double, int, double>> phaseSamples;
 };
 
+// One engine's row for a clip at one view: its frames scored, or the reason it gave none.
+// `reconstruct` returns the engine's frames; `truth` is what they are scored against.
+template <class Reconstruct>
+EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const std::string& clipName, double alpha,
+                    const Eigen::MatrixXd& truth, const Reconstruct& reconstruct, FoldOutput& out, bool phase) {
+  EngineRow row{fold.subject, engine, clipName, alpha, static_cast<int>(truth.rows()), 0.0, 0.0, ""};
+  try {
+    const FrameErrors e = frameErrors(reconstruct(), truth, alpha);
+    row.mpjpeMm = e.mpjpeMm;
+    row.depthErrorMm2 = e.depthErrorMm2;
+    if (phase)
+      for (Eigen::Index f = 0; f < e.perFrameMm.size(); ++f)
+        out.phaseSamples.emplace_back(engine, alpha, static_cast<int>(f), e.perFrameMm(f));
+  } catch (const Error& err) {
+    row.error = err.what();
+  }
+  return row;
+}
+
 void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& clipName, const SnippetExperimentOptions& o,
                FoldOutput& out, const FourierFit* phaseFit) {
   for (double alpha : o.anglesDeg) {
-    EngineRow snip{fold.subject, "snippet MAP", clipName, alpha, static_cast<int>(clip.withProgression.rows()), 0.0, 0.0, ""};
-    try {
+    out.rows.push_back(engineRow(fold, "snippet MAP", clipName, alpha, clip.withProgression, [&] {
       SnippetSequenceOptions so = o.sequence;
       so.fit.alphaDeg = alpha;
       so.fit.scale = 1.0;
-      const SnippetSequence seq = reconstructSnippetSequence(
-          fold.prior, projectFramesToView(clip.withProgression, alpha), kClipRateHz, so);
-      const FrameErrors e = frameErrors(seq.framesMm, clip.withProgression, alpha);
-      snip.mpjpeMm = e.mpjpeMm;
-      snip.depthErrorMm2 = e.depthErrorMm2;
-      if (phaseFit)
-        for (Eigen::Index f = 0; f < e.perFrameMm.size(); ++f)
-          out.phaseSamples.emplace_back("snippet MAP", alpha, static_cast<int>(f), e.perFrameMm(f));
-    } catch (const Error& err) {
-      snip.error = err.what();
-    }
-    out.rows.push_back(snip);
-    EngineRow eig{fold.subject, "eigenwalker MAP", clipName, alpha, snip.frames, 0.0, 0.0, ""};
-    try {
-      const Eigen::MatrixXd rec = eigenwalkerFrames(fold, clip.withoutProgression, alpha, clip.strideHz, o.sigma2Mm2);
-      const FrameErrors e = frameErrors(rec, clip.withoutProgression, alpha);
-      eig.mpjpeMm = e.mpjpeMm;
-      eig.depthErrorMm2 = e.depthErrorMm2;
-      if (phaseFit)
-        for (Eigen::Index f = 0; f < e.perFrameMm.size(); ++f)
-          out.phaseSamples.emplace_back("eigenwalker MAP", alpha, static_cast<int>(f), e.perFrameMm(f));
-    } catch (const Error& err) {
-      eig.error = err.what();
-    }
-    out.rows.push_back(eig);
+      return reconstructSnippetSequence(fold.prior, projectFramesToView(clip.withProgression, alpha), kClipRateHz, so)
+          .framesMm;
+    }, out, phaseFit != nullptr));
+    out.rows.push_back(engineRow(fold, "eigenwalker MAP", clipName, alpha, clip.withoutProgression, [&] {
+      return eigenwalkerFrames(fold, clip.withoutProgression, alpha, clip.strideHz, o.sigma2Mm2);
+    }, out, phaseFit != nullptr));
   }
 }
 

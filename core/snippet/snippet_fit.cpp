@@ -351,12 +351,15 @@ std::vector<Start> rankedStarts(const PreparedSnippetPrior& prep, const Points& 
     const double step = std::clamp(o.alphaStepDeg, 1.0, 180.0);
     for (double a = -180.0 + step; a <= 180.0 + 1e-9; a += step) angles.push_back(a);
   }
+  // Each cluster mean's points once, not once per start angle.
+  std::vector<PointCoords> means;
+  for (const auto& comp : prep.prior.components) means.push_back(pointCoords(comp.mean));
   std::vector<Start> best;  // the best cluster per angle
   for (double alpha : angles) {
     Start top;
     for (size_t j = 0; j < prep.prior.components.size(); ++j) {
       const PpcaComponent& comp = prep.prior.components[j];
-      const SnippetCamera cam = cameraAtAngle(p, pointCoords(comp.mean), alpha, o.scale);
+      const SnippetCamera cam = cameraAtAngle(p, means[j], alpha, o.scale);
       const double nu = nuPerScale2 * cam.scale * cam.scale;
       ClusterPosterior post = clusterPosterior(comp, prep.factors[j], p, cam, nu);
       const double score = std::log(comp.weight) + post.logMarginal;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -44,7 +45,13 @@ struct ShellRun {
 ShellRun runShell(const std::string& commandLine, const std::filesystem::path& dir);
 
 // A whole text file ("" when it cannot be read).
-std::string readTextFile(const std::filesystem::path& file);
+std::string readTextFile(const std::filesystem::path& file);  // byte for byte
+
+// Writes `bytes` as they are (truncating the file).
+void writeBinaryFile(const std::filesystem::path& file, const std::string& bytes);
+
+// Same shape and the same doubles bit for bit (a saved file's round trip).
+bool bitwiseEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
 
 }  // namespace ew::test
 

@@ -26,23 +26,6 @@ EigenwalkerModel sampleModel() {
   return m;
 }
 
-std::string readBytes(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void writeBytes(const std::filesystem::path& p, const std::string& bytes) {
-  std::ofstream out(p, std::ios::binary | std::ios::trunc);
-  out << bytes;
-}
-
-bool bitwiseEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  return a.rows() == b.rows() && a.cols() == b.cols() &&
-         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0;
-}
-
 // The error's message, or "" if loading succeeded.
 std::string loadError(const std::filesystem::path& p, ErrorKind* kind = nullptr) {
   try {
@@ -71,29 +54,29 @@ TEST_F(ModelFile, RoundTripIsBitwiseExact) {
   const auto m = sampleModel();
   saveModel(m, file);
   const auto back = loadModel(file);
-  EXPECT_TRUE(bitwiseEqual(back.mean, m.mean));
-  EXPECT_TRUE(bitwiseEqual(back.eigenwalkers, m.eigenwalkers));
-  EXPECT_TRUE(bitwiseEqual(back.eigenvalues, m.eigenvalues));
-  EXPECT_TRUE(bitwiseEqual(back.spectrum, m.spectrum));
-  EXPECT_TRUE(bitwiseEqual(back.coefficients, m.coefficients));
-  EXPECT_TRUE(bitwiseEqual(back.omegasRadS, m.omegasRadS));
+  EXPECT_TRUE(test::bitwiseEqual(back.mean, m.mean));
+  EXPECT_TRUE(test::bitwiseEqual(back.eigenwalkers, m.eigenwalkers));
+  EXPECT_TRUE(test::bitwiseEqual(back.eigenvalues, m.eigenvalues));
+  EXPECT_TRUE(test::bitwiseEqual(back.spectrum, m.spectrum));
+  EXPECT_TRUE(test::bitwiseEqual(back.coefficients, m.coefficients));
+  EXPECT_TRUE(test::bitwiseEqual(back.omegasRadS, m.omegasRadS));
   EXPECT_EQ(back.walkerIds, m.walkerIds);
   EXPECT_EQ(back.subjects, m.subjects);
   EXPECT_EQ(back.provenance, m.provenance);
   // Saving the loaded model gives the same bytes.
   saveModel(back, dir / "again.ewm");
-  EXPECT_EQ(readBytes(file), readBytes(dir / "again.ewm"));
+  EXPECT_EQ(test::readTextFile(file), test::readTextFile(dir / "again.ewm"));
   // Only the target is left in the folder (no temporary files).
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 2);
 }
 
 TEST_F(ModelFile, EveryTruncationIsAnErrorNamingTheFile) {
   saveModel(sampleModel(), file);
-  const std::string bytes = readBytes(file);
+  const std::string bytes = test::readTextFile(file);
   const auto cut = dir / "cut.ewm";
   for (size_t size : {size_t{0}, size_t{10}, size_t{25}, bytes.find('\n', 20) + 1,
                       bytes.size() / 2, bytes.size() - 8, bytes.size() - 1}) {
-    writeBytes(cut, bytes.substr(0, size));
+    test::writeBinaryFile(cut, bytes.substr(0, size));
     ErrorKind kind = ErrorKind::Io;
     const std::string message = loadError(cut, &kind);
     EXPECT_EQ(kind, ErrorKind::Malformed) << "size " << size << ": " << message;
@@ -101,39 +84,39 @@ TEST_F(ModelFile, EveryTruncationIsAnErrorNamingTheFile) {
     EXPECT_TRUE(message.find("byte") != std::string::npos || message.find("line") != std::string::npos)
         << message;
   }
-  writeBytes(cut, bytes.substr(0, bytes.size() - 8));
+  test::writeBinaryFile(cut, bytes.substr(0, bytes.size() - 8));
   EXPECT_NE(loadError(cut).find("truncated"), std::string::npos);
 }
 
 TEST_F(ModelFile, EveryFlippedBitIsDetected) {
   saveModel(sampleModel(), file);
-  const std::string bytes = readBytes(file);
+  const std::string bytes = test::readTextFile(file);
   const auto bad = dir / "flipped.ewm";
   // A flip anywhere: magic, metadata, checksum line, every array of the payload.
   for (size_t at = 0; at < bytes.size(); at += 97) {
     std::string damaged = bytes;
     damaged[at] = static_cast<char>(damaged[at] ^ 0x10);
-    writeBytes(bad, damaged);
+    test::writeBinaryFile(bad, damaged);
     const std::string message = loadError(bad);
     EXPECT_FALSE(message.empty()) << "flip at byte " << at << " went unnoticed";
     EXPECT_NE(message.find("flipped.ewm"), std::string::npos) << message;
   }
   std::string damaged = bytes;
   damaged[bytes.size() - 3] = static_cast<char>(damaged[bytes.size() - 3] ^ 1);
-  writeBytes(bad, damaged);
+  test::writeBinaryFile(bad, damaged);
   const std::string message = loadError(bad);
   EXPECT_NE(message.find("checksum mismatch in array 'omegas_rad_s'"), std::string::npos) << message;
 }
 
 TEST_F(ModelFile, WrongMagicVersionAndTrailingBytes) {
-  writeBytes(file, "PLY\nformat ascii\n");
+  test::writeBinaryFile(file, "PLY\nformat ascii\n");
   EXPECT_NE(loadError(file).find("not an eigenwalker model file"), std::string::npos);
   saveModel(sampleModel(), file);
-  std::string bytes = readBytes(file);
-  writeBytes(file, bytes + "x");
+  std::string bytes = test::readTextFile(file);
+  test::writeBinaryFile(file, bytes + "x");
   EXPECT_NE(loadError(file).find("unexpected bytes"), std::string::npos);
   bytes.replace(bytes.find(" 1\n"), 3, " 7\n");
-  writeBytes(file, bytes);
+  test::writeBinaryFile(file, bytes);
   ErrorKind kind = ErrorKind::Io;
   EXPECT_NE(loadError(file, &kind).find("version 7"), std::string::npos);
   EXPECT_EQ(kind, ErrorKind::Unsupported);
@@ -141,7 +124,7 @@ TEST_F(ModelFile, WrongMagicVersionAndTrailingBytes) {
 
 TEST_F(ModelFile, MismatchedSizesAreReported) {
   saveModel(sampleModel(), file);
-  const std::string bytes = readBytes(file);
+  const std::string bytes = test::readTextFile(file);
   const size_t l1 = bytes.find('\n'), l2 = bytes.find('\n', l1 + 1), l3 = bytes.find('\n', l2 + 1);
   // Edit the metadata consistently (valid checksum), so the size checks must catch it.
   const auto rewrite = [&](const std::string& from, const std::string& to) {
@@ -151,7 +134,7 @@ TEST_F(ModelFile, MismatchedSizesAreReported) {
     meta.replace(at, from.size(), to);
     char sum[17];
     std::snprintf(sum, sizeof sum, "%016llx", static_cast<unsigned long long>(fnv(meta)));
-    writeBytes(file, bytes.substr(0, l1 + 1) + meta + "\nfnv1a64 " + sum + "\n" + bytes.substr(l3 + 1));
+    test::writeBinaryFile(file, bytes.substr(0, l1 + 1) + meta + "\nfnv1a64 " + sum + "\n" + bytes.substr(l3 + 1));
     return loadError(file);
   };
   EXPECT_NE(rewrite("\"dims\":225", "\"dims\":224").find("dims must be 225"), std::string::npos);

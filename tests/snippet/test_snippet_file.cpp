@@ -41,24 +41,7 @@ SnippetPrior samplePrior() {
   return prior;
 }
 
-std::string readBytes(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void writeBytes(const std::filesystem::path& p, const std::string& bytes) {
-  std::ofstream out(p, std::ios::binary | std::ios::trunc);
-  out << bytes;
-}
-
-bool bitwiseEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-  return a.rows() == b.rows() && a.cols() == b.cols() &&
-         std::memcmp(a.data(), b.data(), sizeof(double) * static_cast<size_t>(a.size())) == 0;
-}
-
-bool bitwiseEqual(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 // FNV-1a 64 as docs/SNIPPET_FORMAT.md defines it, written independently of core.
 std::string fnvHex(std::string_view s) {
@@ -110,6 +93,13 @@ struct FileParts {
   }
 };
 
+// The file's bytes after `edit` changed a copy of its parts.
+std::string edited(const FileParts& clean, const std::function<void(FileParts&)>& edit) {
+  FileParts parts = clean;
+  edit(parts);
+  return parts.bytes();
+}
+
 class SnippetFile : public ::testing::Test {
  protected:
   std::filesystem::path dir = test::makeTempDir("snippet_file");
@@ -121,7 +111,7 @@ class SnippetFile : public ::testing::Test {
   ::testing::AssertionResult refuses(const std::string& bytes, ErrorKind kind,
                                      std::initializer_list<std::string_view> parts,
                                      const std::string& name = "bad.ewsp") {
-    writeBytes(dir / name, bytes);
+    test::writeBinaryFile(dir / name, bytes);
     const auto result = test::throwsError([&] { loadSnippetPrior(dir / name); }, kind, parts);
     if (!result) return result;
     return test::throwsError([&] { loadSnippetPrior(dir / name); }, kind, {name});
@@ -138,32 +128,32 @@ TEST_F(SnippetFile, RoundTripIsBitwiseExact) {
   saveSnippetPrior(prior, file);
   const SnippetPrior back = loadSnippetPrior(file);
   EXPECT_EQ(back.frames, prior.frames);
-  EXPECT_TRUE(bitwiseEqual(back.rateHz, prior.rateHz));
+  EXPECT_TRUE(sameBits(back.rateHz, prior.rateHz));
   EXPECT_EQ(back.subjects, prior.subjects);
   EXPECT_EQ(back.trainingSnippets, 200);
   EXPECT_EQ(back.emIterations, prior.emIterations);
   ASSERT_EQ(back.components.size(), prior.components.size());
   for (size_t j = 0; j < prior.components.size(); ++j) {
     const PpcaComponent &a = prior.components[j], &b = back.components[j];
-    EXPECT_TRUE(bitwiseEqual(b.weight, a.weight)) << j;
+    EXPECT_TRUE(sameBits(b.weight, a.weight)) << j;
     EXPECT_EQ(b.members, a.members);
-    EXPECT_TRUE(bitwiseEqual(b.noiseVariance, a.noiseVariance)) << j;
-    EXPECT_TRUE(bitwiseEqual(b.mean, a.mean)) << j;
-    EXPECT_TRUE(bitwiseEqual(b.basis, a.basis)) << j;
-    EXPECT_TRUE(bitwiseEqual(b.variances, a.variances)) << j;
+    EXPECT_TRUE(sameBits(b.noiseVariance, a.noiseVariance)) << j;
+    EXPECT_TRUE(test::bitwiseEqual(b.mean, a.mean)) << j;
+    EXPECT_TRUE(test::bitwiseEqual(b.basis, a.basis)) << j;
+    EXPECT_TRUE(test::bitwiseEqual(b.variances, a.variances)) << j;
   }
   const Eigen::VectorXd x = prior.components[1].mean + Eigen::VectorXd::Constant(45, 3.0);
   EXPECT_EQ(logDensity(back, x), logDensity(prior, x));
   // Saving the loaded prior gives the same bytes; no temporary file is left behind.
   saveSnippetPrior(back, dir / "again.ewsp");
-  EXPECT_EQ(readBytes(file), readBytes(dir / "again.ewsp"));
+  EXPECT_EQ(test::readTextFile(file), test::readTextFile(dir / "again.ewsp"));
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 2);
 }
 
 TEST_F(SnippetFile, LayoutIsTheDocumentedOne) {
   const SnippetPrior prior = samplePrior();
   saveSnippetPrior(prior, file);
-  const std::string bytes = readBytes(file);
+  const std::string bytes = test::readTextFile(file);
   ASSERT_EQ(bytes.rfind("EIGENWALKER-SNIPPET-PRIOR 1\n", 0), 0u);
   const FileParts parts(bytes);
   EXPECT_EQ(parts.bytes(), bytes);  // line 3 is FNV-1a 64 of line 2, lower-case hex
@@ -182,7 +172,7 @@ TEST_F(SnippetFile, LayoutIsTheDocumentedOne) {
             << (8 * b);
   double value = 0.0;
   std::memcpy(&value, &bits, sizeof value);
-  EXPECT_TRUE(bitwiseEqual(value, prior.components[1].basis(2, 1)));
+  EXPECT_TRUE(sameBits(value, prior.components[1].basis(2, 1)));
 }
 
 TEST_F(SnippetFile, PriorOfAnyDimensionRoundTrips) {
@@ -199,7 +189,7 @@ TEST_F(SnippetFile, PriorOfAnyDimensionRoundTrips) {
   const SnippetPrior back = loadSnippetPrior(file);
   EXPECT_EQ(back.frames, 0);
   ASSERT_EQ(back.components.size(), prior.components.size());
-  EXPECT_TRUE(bitwiseEqual(back.components[1].basis, prior.components[1].basis));
+  EXPECT_TRUE(test::bitwiseEqual(back.components[1].basis, prior.components[1].basis));
   EXPECT_TRUE(back.subjects.empty());
 }
 
@@ -207,7 +197,7 @@ TEST_F(SnippetFile, ParseNamesTheGivenName) {
   EXPECT_TRUE(test::throwsError([] { parseSnippetPrior("", "memory:prior"); }, ErrorKind::Malformed,
                                 {"memory:prior", "line 1", "truncated"}));
   saveSnippetPrior(samplePrior(), file);
-  EXPECT_EQ(parseSnippetPrior(readBytes(file), "x").components.size(), 3u);
+  EXPECT_EQ(parseSnippetPrior(test::readTextFile(file), "x").components.size(), 3u);
 }
 
 // [SECTION] Damaged files
@@ -228,11 +218,11 @@ TEST_F(SnippetFile, WrongMagicIsMalformedAtByteZero) {
 
 TEST_F(SnippetFile, EveryTruncationIsMalformed) {
   saveSnippetPrior(samplePrior(), file);
-  const std::string bytes = readBytes(file);
+  const std::string bytes = test::readTextFile(file);
   const size_t l1 = bytes.find('\n'), l2 = bytes.find('\n', l1 + 1), l3 = bytes.find('\n', l2 + 1);
   for (const size_t size : {size_t{0}, size_t{10}, l1, l1 + 1, l1 + 40, l2 + 1, l2 + 10, l3 + 1,
                             l3 + 9, bytes.size() / 2, bytes.size() - 8, bytes.size() - 1}) {
-    writeBytes(dir / "cut.ewsp", bytes.substr(0, size));
+    test::writeBinaryFile(dir / "cut.ewsp", bytes.substr(0, size));
     std::string message;
     try {
       loadSnippetPrior(dir / "cut.ewsp");
@@ -252,7 +242,7 @@ TEST_F(SnippetFile, EveryTruncationIsMalformed) {
 
 TEST_F(SnippetFile, FlippedBytesFailTheChecksums) {
   saveSnippetPrior(samplePrior(), file);
-  const std::string bytes = readBytes(file);
+  const std::string bytes = test::readTextFile(file);
   const size_t l1 = bytes.find('\n');
   std::string damaged = bytes;
   damaged[l1 + 30] = static_cast<char>(damaged[l1 + 30] ^ 0x01);  // in the metadata
@@ -265,7 +255,7 @@ TEST_F(SnippetFile, FlippedBytesFailTheChecksums) {
   for (size_t at = 0; at < bytes.size(); at += 61) {
     damaged = bytes;
     damaged[at] = static_cast<char>(damaged[at] ^ 0x10);
-    writeBytes(dir / "flipped.ewsp", damaged);
+    test::writeBinaryFile(dir / "flipped.ewsp", damaged);
     try {
       loadSnippetPrior(dir / "flipped.ewsp");
       ADD_FAILURE() << "flip at byte " << at << " went unnoticed";
@@ -277,21 +267,21 @@ TEST_F(SnippetFile, FlippedBytesFailTheChecksums) {
 
 TEST_F(SnippetFile, NewerVersionIsUnsupported) {
   saveSnippetPrior(samplePrior(), file);
-  std::string bytes = readBytes(file);
+  std::string bytes = test::readTextFile(file);
   bytes.replace(0, bytes.find('\n'), "EIGENWALKER-SNIPPET-PRIOR 2");
   EXPECT_TRUE(refuses(bytes, ErrorKind::Unsupported, {"line 1", "version 2", "reads version 1"}));
 }
 
 TEST_F(SnippetFile, TrailingBytesAreMalformed) {
   saveSnippetPrior(samplePrior(), file);
-  const std::string bytes = readBytes(file);
+  const std::string bytes = test::readTextFile(file);
   EXPECT_TRUE(refuses(bytes + "xyz", ErrorKind::Malformed,
                       {"byte " + std::to_string(bytes.size()), "3 unexpected bytes"}));
 }
 
 TEST_F(SnippetFile, NonFiniteValuesAreMalformedEvenWithRightChecksums) {
   saveSnippetPrior(samplePrior(), file);
-  const FileParts clean(readBytes(file));
+  const FileParts clean(test::readTextFile(file));
   for (const double bad :
        {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     FileParts parts = clean;
@@ -315,31 +305,26 @@ TEST_F(SnippetFile, NonFiniteValuesAreMalformedEvenWithRightChecksums) {
 
 TEST_F(SnippetFile, InconsistentMetadataIsMalformed) {
   saveSnippetPrior(samplePrior(), file);
-  const FileParts clean(readBytes(file));
-  const auto edited = [&](const std::function<void(FileParts&)>& edit) {
-    FileParts parts = clean;
-    edit(parts);
-    return parts.bytes();
-  };
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta["dimension"] = 46; }), ErrorKind::Malformed,
+  const FileParts clean(test::readTextFile(file));
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta["dimension"] = 46; }), ErrorKind::Malformed,
                       {"line 2", "dimension 46 is not frames · 45"}));
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta["clusters"][1]["components"] = 4; }),
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta["clusters"][1]["components"] = 4; }),
                       ErrorKind::Malformed,
                       {"line 2", "should be 'basis' 45 x 4, cluster 1 says"}));
   EXPECT_TRUE(
-      refuses(edited([](FileParts& p) { p.meta["clusters"][0]["arrays"][0]["name"] = "mu"; }),
+      refuses(edited(clean, [](FileParts& p) { p.meta["clusters"][0]["arrays"][0]["name"] = "mu"; }),
               ErrorKind::Malformed, {"line 2", "should be 'mean'"}));
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta["payload_bytes"] = 8; }),
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta["payload_bytes"] = 8; }),
                       ErrorKind::Malformed, {"line 2", "payload_bytes says 8"}));
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta.erase("subjects"); }), ErrorKind::Malformed,
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta.erase("subjects"); }), ErrorKind::Malformed,
                       {"line 2", "no list 'subjects'"}));
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta["clusters"][2] = 7; }), ErrorKind::Malformed,
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta["clusters"][2] = 7; }), ErrorKind::Malformed,
                       {"line 2", "cluster 2 is not a JSON object"}));
   // Sound sizes and checksums, but a prior checkSnippetPrior refuses.
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta["clusters"][0]["weight"] = 0.5; }),
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta["clusters"][0]["weight"] = 0.5; }),
                       ErrorKind::Malformed, {"snippet prior: weights do not sum to 1"}));
   EXPECT_TRUE(
-      refuses(edited([](FileParts& p) { p.meta["clusters"][2]["noise_variance_mm2"] = 1e12; }),
+      refuses(edited(clean, [](FileParts& p) { p.meta["clusters"][2]["noise_variance_mm2"] = 1e12; }),
               ErrorKind::Malformed, {"cluster 2: a variance is not above σ²"}));
   // Not JSON at all (with a right checksum).
   const std::string junk = "{\"frames\": [";
@@ -351,31 +336,26 @@ TEST_F(SnippetFile, InconsistentMetadataIsMalformed) {
 
 TEST_F(SnippetFile, HostileSizesAreRefusedWithoutAllocating) {
   saveSnippetPrior(samplePrior(), file);
-  const FileParts clean(readBytes(file));
-  const auto edited = [&](const std::function<void(FileParts&)>& edit) {
-    FileParts parts = clean;
-    edit(parts);
-    return parts.bytes();
-  };
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta["frames"] = 1'000'000; }),
+  const FileParts clean(test::readTextFile(file));
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta["frames"] = 1'000'000; }),
                       ErrorKind::Malformed, {"line 2", "'frames' must be 0…301"}));
-  EXPECT_TRUE(refuses(edited([](FileParts& p) {
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) {
                         p.meta["frames"] = 0;
                         p.meta["dimension"] = 4'000'000'000'000LL;
                       }),
                       ErrorKind::Malformed, {"line 2", "'dimension' must be 1…13545"}));
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta["clusters"][0]["components"] = 46; }),
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta["clusters"][0]["components"] = 46; }),
                       ErrorKind::Malformed, {"line 2", "'components' must be 0…45"}));
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta["clusters"][0]["components"] = -1; }),
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta["clusters"][0]["components"] = -1; }),
                       ErrorKind::Malformed, {"line 2", "'components' must be 0…45"}));
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta["clusters"][0]["members"] = 1LL << 40; }),
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta["clusters"][0]["members"] = 1LL << 40; }),
                       ErrorKind::Malformed, {"line 2", "'members'"}));
-  EXPECT_TRUE(refuses(edited([](FileParts& p) { p.meta["training_snippets"] = -3; }),
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) { p.meta["training_snippets"] = -3; }),
                       ErrorKind::Malformed, {"line 2", "'training_snippets'"}));
   EXPECT_TRUE(
-      refuses(edited([](FileParts& p) { p.meta["clusters"][0]["arrays"][1]["rows"] = -45; }),
+      refuses(edited(clean, [](FileParts& p) { p.meta["clusters"][0]["arrays"][1]["rows"] = -45; }),
               ErrorKind::Malformed, {"line 2", "absurd size for array 'basis'"}));
-  EXPECT_TRUE(refuses(edited([](FileParts& p) {
+  EXPECT_TRUE(refuses(edited(clean, [](FileParts& p) {
                         json many = json::array();
                         for (int j = 0; j < 257; ++j) many.push_back(p.meta["clusters"][0]);
                         p.meta["clusters"] = many;
@@ -383,7 +363,7 @@ TEST_F(SnippetFile, HostileSizesAreRefusedWithoutAllocating) {
                       ErrorKind::Malformed, {"line 2", "1…256 'clusters'"}));
   // The largest prior the bounds allow, declared consistently: 256 clusters of D = q =
   // 13,545 (about 376 GB). The loader must find the payload missing before allocating.
-  const std::string huge = edited([](FileParts& p) {
+  const std::string huge = edited(clean, [](FileParts& p) {
     const long long d = 301 * 45;
     json cluster = p.meta["clusters"][0];
     cluster["components"] = d;
@@ -434,12 +414,12 @@ TEST_F(SnippetFile, InvalidPriorIsNotWritten) {
 
   // Over an existing file: the old file is left as it was.
   saveSnippetPrior(good, file);
-  const std::string before = readBytes(file);
+  const std::string before = test::readTextFile(file);
   p = good;
   p.components[2].noiseVariance = -1.0;
   EXPECT_TRUE(test::throwsError([&] { saveSnippetPrior(p, file); }, ErrorKind::BadArgument,
                                 {"prior.ewsp", "σ² must be positive"}));
-  EXPECT_EQ(readBytes(file), before);
+  EXPECT_EQ(test::readTextFile(file), before);
 }
 
 TEST_F(SnippetFile, UnwritableTargetIsAnIoError) {
