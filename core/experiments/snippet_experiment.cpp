@@ -9,6 +9,7 @@
 #include "core/engine/fourier.h"
 #include "core/engine/projection.h"
 #include "core/engine/reconstruction.h"
+#include "core/engines/engine.h"
 #include "core/experiments/leave_one_out.h"
 #include "core/snippet/snippet_data.h"
 
@@ -18,34 +19,6 @@ namespace {
 
 constexpr double kClipRateHz = 30.0;
 
-struct FrameErrors {
-  Eigen::VectorXd perFrameMm;  // T: mean over joints of the 3D error
-  double mpjpeMm = 0.0, depthErrorMm2 = 0.0;
-};
-
-// Errors after removing the clip's mean translation (the engines differ in what they know
-// of the walker's absolute position; the shape and motion are what is compared).
-FrameErrors frameErrors(const Eigen::MatrixXd& rec, const Eigen::MatrixXd& truth, double alphaDeg) {
-  Eigen::MatrixXd diff = rec - truth;
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
-  for (int j = 0; j < 15; ++j) offset += diff.middleCols(3 * j, 3).colwise().mean().transpose() / 15.0;
-  const double a = degToRad(alphaDeg);
-  FrameErrors e;
-  e.perFrameMm = Eigen::VectorXd::Zero(diff.rows());
-  double depth = 0.0;
-  for (Eigen::Index f = 0; f < diff.rows(); ++f) {
-    for (int j = 0; j < 15; ++j) {
-      const Eigen::Vector3d d = diff.block<1, 3>(f, 3 * j).transpose() - offset;
-      e.perFrameMm(f) += d.norm() / 15.0;
-      const double dd = -d.x() * std::sin(a) + d.y() * std::cos(a);
-      depth += dd * dd;
-    }
-  }
-  e.mpjpeMm = e.perFrameMm.mean();
-  e.depthErrorMm2 = depth / static_cast<double>(diff.rows() * 15);
-  return e;
-}
-
 const DatasetTrial* firstTrialOf(const Dataset& dataset, const std::string& subject) {
   for (const auto& t : dataset.trials)
     if (t.info.subject == subject) return &t;
@@ -54,26 +27,19 @@ const DatasetTrial* firstTrialOf(const Dataset& dataset, const std::string& subj
 
 struct SnippetFold {
   std::string subject;
-  PreparedSnippetPrior prior;
-  EigenwalkerModel model;
-  ModelGram gram;
-  double trainS = 0.0;
+  EigenwalkerEngine eigenwalker;
+  SnippetEngine snippet;
 };
 
-// The eigenwalker on 2D frames (no progression): Fourier fit, MAP at the known view,
-// synthesised at every frame.
-Eigen::MatrixXd eigenwalkerFrames(const SnippetFold& fold, const Eigen::MatrixXd& framesNoProgression, double alphaDeg,
-                                  double strideHz, double sigma2) {
-  FourierFitOptions fo;
-  if (strideHz > 0) fo.omegaHintRadS = 2.0 * std::numbers::pi * strideHz;
-  fo.file = fold.subject;
-  const FourierFit fit2d = fitFourier(projectFramesToView(framesNoProgression, alphaDeg), kClipRateHz, fo);
-  EstimatorOptions est;
-  est.estimator = Estimator::Map;
-  est.sigma2Mm2 = sigma2;
-  const Reconstruction rec = reconstructKnownView(fold.gram, fit2d.w, alphaDeg, est);
-  return synthesizeFrames(rec.w, fit2d.omegaRadS, fit2d.phaseRad,
-                          frameTimes(static_cast<int>(framesNoProgression.rows()), kClipRateHz));
+// A clip seen at a known view, as both engines are given it (mm, 30 Hz).
+ViewInput knownView(const SnippetFold& fold, const Eigen::MatrixXd& frames, double alphaDeg, double strideHz) {
+  ViewInput in;
+  in.uvMm = projectFramesToView(frames, alphaDeg);
+  in.rateHz = kClipRateHz;
+  in.alphaDeg = alphaDeg;
+  if (strideHz > 0) in.strideHzHint = strideHz;
+  in.name = fold.subject;
+  return in;
 }
 
 struct Clip {
@@ -112,7 +78,7 @@ EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const st
                     const Eigen::MatrixXd& truth, const Reconstruct& reconstruct, FoldOutput& out, bool phase) {
   EngineRow row{fold.subject, engine, clipName, alpha, static_cast<int>(truth.rows()), 0.0, 0.0, ""};
   try {
-    const FrameErrors e = frameErrors(reconstruct(), truth, alpha);
+    const ClipErrors e = clipErrors(reconstruct(), truth, alpha);
     row.mpjpeMm = e.mpjpeMm;
     row.depthErrorMm2 = e.depthErrorMm2;
     if (phase)
@@ -127,28 +93,26 @@ EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const st
 void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& clipName, const SnippetExperimentOptions& o,
                FoldOutput& out, const FourierFit* phaseFit) {
   for (double alpha : o.anglesDeg) {
+    // Each engine is given the image it is designed for: the snippet engine's prior was
+    // learnt overground, the eigenwalker's model in place (the pelvis's image drift is
+    // removed by the engine either way: tests/engines/test_engine.cpp).
     out.rows.push_back(engineRow(fold, "snippet MAP", clipName, alpha, clip.withProgression, [&] {
-      SnippetSequenceOptions so = o.sequence;
-      so.fit.alphaDeg = alpha;
-      so.fit.scale = 1.0;
-      return reconstructSnippetSequence(fold.prior, projectFramesToView(clip.withProgression, alpha), kClipRateHz, so)
-          .framesMm;
+      return reconstructWithEngine(fold.snippet, knownView(fold, clip.withProgression, alpha, clip.strideHz)).framesMm;
     }, out, phaseFit != nullptr));
     out.rows.push_back(engineRow(fold, "eigenwalker MAP", clipName, alpha, clip.withoutProgression, [&] {
-      return eigenwalkerFrames(fold, clip.withoutProgression, alpha, clip.strideHz, o.sigma2Mm2);
+      return reconstructWithEngine(fold.eigenwalker, knownView(fold, clip.withoutProgression, alpha, clip.strideHz))
+          .framesMm;
     }, out, phaseFit != nullptr));
   }
 }
 
 void unknownView(const SnippetFold& fold, const Clip& clip, const SnippetExperimentOptions& o, FoldOutput& out) {
-  const int length = fold.prior.prior.frames;
+  const int length = fold.snippet.prior.prior.frames;
   for (double alpha : o.unknownAnglesDeg) {
-    SnippetSequenceOptions so = o.sequence;
-    so.fit.alphaDeg.reset();
-    so.fit.scale = 1.0;
+    ViewInput in = knownView(fold, clip.withProgression, alpha, clip.strideHz);
+    in.alphaDeg.reset();
     try {
-      const SnippetSequence seq = reconstructSnippetSequence(
-          fold.prior, projectFramesToView(clip.withProgression, alpha), kClipRateHz, so);
+      const SnippetSequence seq = *reconstructWithEngine(fold.snippet, in).snippet;
       for (size_t k = 0; k < seq.starts.size(); ++k) {
         const SnippetPlacement place = snippetPlacement(clip.withProgression, seq.starts[k], length);
         ThetaRow row;
@@ -201,9 +165,9 @@ SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::ve
     const SnippetPrior prior = trainSnippetPrior(snippetTrainingTrials(dataset, fold.subject), o.prior);
     trainS[static_cast<size_t>(i)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     snippets[static_cast<size_t>(i)] = prior.trainingSnippets;
-    fold.prior = prepareSnippetPrior(prior);
-    fold.model = buildModelWithoutSubject(walkers, fold.subject, o.model);
-    fold.gram = precomputeModelGram(fold.model);
+    fold.snippet = {prepareSnippetPrior(prior), o.sequence};
+    fold.eigenwalker.model = buildModelWithoutSubject(walkers, fold.subject, o.model);
+    fold.eigenwalker.estimator = {Estimator::Map, o.sigma2Mm2};
     FoldOutput& out = outputs[static_cast<size_t>(i)];
     const DatasetTrial* trial = firstTrialOf(dataset, fold.subject);
     if (!trial) return;

@@ -1,0 +1,171 @@
+#include "core/engines/engine.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/common/errors.h"
+#include "core/common/skeleton.h"
+#include "core/engine/fourier.h"
+#include "core/engine/joint_completion.h"
+#include "core/engine/projection.h"
+#include "core/gait/missing_joints.h"
+
+namespace ew {
+namespace {
+
+void checkInput(const ViewInput& input) {
+  if (input.uvMm.cols() != 2 * kJointCount)
+    throw Error(ErrorKind::BadArgument, input.name, "",
+                "engine input: 2D frames need 30 columns (u, v of 15 joints), got " +
+                    std::to_string(input.uvMm.cols()));
+  if (!(input.rateHz > 0.0) || !std::isfinite(input.rateHz))
+    throw Error(ErrorKind::BadArgument, input.name, "", "engine input: the frame rate must be positive and finite");
+}
+
+// RMS over the seen points of |projected − observed|, mm.
+double reprojectionRms(const Eigen::MatrixXd& framesMm, double alphaDeg, const Eigen::MatrixXd& uvMm) {
+  const Eigen::MatrixXd projected = projectFramesToView(framesMm, alphaDeg);
+  double sum = 0.0;
+  int points = 0;
+  for (Eigen::Index f = 0; f < uvMm.rows(); ++f) {
+    for (int j = 0; j < kJointCount; ++j) {
+      const double u = uvMm(f, 2 * j), v = uvMm(f, 2 * j + 1);
+      if (!std::isfinite(u) || !std::isfinite(v)) continue;
+      sum += std::pow(projected(f, 2 * j) - u, 2) + std::pow(projected(f, 2 * j + 1) - v, 2);
+      ++points;
+    }
+  }
+  return points > 0 ? std::sqrt(sum / points) : 0.0;
+}
+
+EngineResult runEigenwalker(const EigenwalkerEngine& engine, const ViewInput& input) {
+  EngineResult out;
+  out.engine = EngineKind::Eigenwalker;
+  const Eigen::MatrixXd uv = removeImageDrift(input.uvMm, input.rateHz);
+  const JointMask missing = jointsMissingThroughout(uv);
+  FourierFitOptions fitOptions;
+  if (input.strideHzHint) fitOptions.omegaHintRadS = 2.0 * std::numbers::pi * *input.strideHzHint;
+  fitOptions.file = input.name;
+  EigenwalkerDiagnostics d;
+  d.fit2d = fitFourierMeasured(uv, input.rateHz, missing, fitOptions);
+  for (int j = 0; j < kJointCount; ++j)
+    if (missing[static_cast<size_t>(j)]) d.missingJoints.push_back(j);
+  const ModelGram gram = precomputeModelGram(engine.model, d.missingJoints);
+  if (input.alphaDeg) {
+    d.reconstruction = reconstructKnownView(gram, d.fit2d.w, *input.alphaDeg, engine.estimator);
+  } else {
+    d.search = searchViewAngle(gram, d.fit2d.w, engine.estimator, engine.search);
+    d.reconstruction = d.search->best;
+  }
+  out.framesMm = synthesizeFrames(d.reconstruction.w, d.fit2d.omegaRadS, d.fit2d.phaseRad,
+                                  frameTimes(static_cast<int>(uv.rows()), input.rateHz));
+  out.alphaDeg = d.reconstruction.alphaDeg;
+  out.alphaEstimated = !input.alphaDeg;
+  out.reprojectionRmsMm = reprojectionRms(out.framesMm, out.alphaDeg, uv);
+  out.warnings = d.fit2d.warnings;
+  out.eigenwalker = std::move(d);
+  return out;
+}
+
+EngineResult runSnippet(const SnippetEngine& engine, const ViewInput& input) {
+  EngineResult out;
+  out.engine = EngineKind::Snippet;
+  SnippetSequenceOptions options = engine.sequence;
+  options.fit.alphaDeg = input.alphaDeg;
+  options.fit.scale = 1.0;  // the input is in mm at the walker
+  SnippetSequence seq = [&] {
+    try {
+      return reconstructSnippetSequence(engine.prior, input.uvMm, input.rateHz, options);
+    } catch (const Error& e) {
+      // The snippet code names its stage ("snippets") where a reader names the file: the
+      // user needs to know which input.
+      if (!input.name.empty() && e.file() == "snippets")
+        throw Error(e.kind(), input.name, e.position(), "snippets: " + e.problem());
+      throw;
+    }
+  }();
+  out.framesMm = seq.framesMm;
+  out.alphaDeg = seq.alphaDeg;
+  out.alphaEstimated = !input.alphaDeg;
+  out.reprojectionRmsMm = seq.reprojectionRms;
+  out.snippet = std::move(seq);
+  return out;
+}
+
+}  // namespace
+
+const char* engineName(EngineKind kind) {
+  switch (kind) {
+    case EngineKind::Eigenwalker: return "eigenwalker";
+    case EngineKind::Snippet: return "snippet";
+  }
+  return "?";
+}
+
+EngineKind parseEngineKind(const std::string& name, const std::string& where) {
+  std::string known;
+  for (EngineKind k : kEngineKinds) {
+    if (name == engineName(k)) return k;
+    known += (known.empty() ? "" : ", ") + std::string(engineName(k));
+  }
+  throw Error(ErrorKind::BadArgument, where, "", "unknown engine '" + name + "' (known: " + known + ")");
+}
+
+EngineKind engineKind(const Engine& engine) {
+  return std::holds_alternative<EigenwalkerEngine>(engine) ? EngineKind::Eigenwalker : EngineKind::Snippet;
+}
+
+Eigen::MatrixXd removeImageDrift(const Eigen::Ref<const Eigen::MatrixXd>& uvMm, double rateHz) {
+  Eigen::MatrixXd out = uvMm;
+  const int pelvisU = 2 * static_cast<int>(Joint::Pelvis);
+  double n = 0, st = 0, su = 0, stt = 0, stu = 0;
+  for (Eigen::Index f = 0; f < uvMm.rows(); ++f) {
+    const double u = uvMm(f, pelvisU);
+    if (!std::isfinite(u)) continue;
+    const double t = static_cast<double>(f) / rateHz;
+    n += 1, st += t, su += u, stt += t * t, stu += t * u;
+  }
+  const double det = n * stt - st * st;
+  if (n < 2 || !(det > 0.0)) return out;
+  const double slope = (n * stu - st * su) / det;
+  const double intercept = (su - slope * st) / n;
+  for (Eigen::Index f = 0; f < out.rows(); ++f) {
+    const double drift = intercept + slope * static_cast<double>(f) / rateHz;
+    for (int j = 0; j < kJointCount; ++j) out(f, 2 * j) -= drift;
+  }
+  return out;
+}
+
+ClipErrors clipErrors(const Eigen::Ref<const Eigen::MatrixXd>& reconstructedMm,
+                      const Eigen::Ref<const Eigen::MatrixXd>& truthMm, double alphaDeg) {
+  if (reconstructedMm.rows() != truthMm.rows() || reconstructedMm.cols() != 3 * kJointCount ||
+      truthMm.cols() != 3 * kJointCount || truthMm.rows() == 0)
+    throw Error(ErrorKind::BadArgument, "", "", "clip errors: the reconstruction and the truth need the same T × 45 shape");
+  const Eigen::MatrixXd diff = reconstructedMm - truthMm;
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  for (int j = 0; j < kJointCount; ++j)
+    offset += diff.middleCols(3 * j, 3).colwise().mean().transpose() / static_cast<double>(kJointCount);
+  const double a = alphaDeg * std::numbers::pi / 180.0;
+  ClipErrors e;
+  e.perFrameMm = Eigen::VectorXd::Zero(diff.rows());
+  double depth = 0.0;
+  for (Eigen::Index f = 0; f < diff.rows(); ++f) {
+    for (int j = 0; j < kJointCount; ++j) {
+      const Eigen::Vector3d d = diff.block<1, 3>(f, 3 * j).transpose() - offset;
+      e.perFrameMm(f) += d.norm() / static_cast<double>(kJointCount);
+      const double alongSight = -d.x() * std::sin(a) + d.y() * std::cos(a);
+      depth += alongSight * alongSight;
+    }
+  }
+  e.mpjpeMm = e.perFrameMm.mean();
+  e.depthErrorMm2 = depth / static_cast<double>(diff.rows() * kJointCount);
+  return e;
+}
+
+EngineResult reconstructWithEngine(const Engine& engine, const ViewInput& input) {
+  checkInput(input);
+  if (const auto* e = std::get_if<EigenwalkerEngine>(&engine)) return runEigenwalker(*e, input);
+  return runSnippet(std::get<SnippetEngine>(engine), input);
+}
+
+}  // namespace ew

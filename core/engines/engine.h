@@ -1,0 +1,114 @@
+#pragma once
+// One interface over the reconstruction engines (STYLE §17): each takes the same input — a
+// 2D sequence and what is known of the orthographic view — and gives the same output — the
+// 3D walker at every input frame, the view angle, and how well the result reprojects —
+// plus its own diagnostics. The GUI, the CLI and the experiments pick an engine by name.
+//
+//   eigenwalker  core/engine/   Zhang & Troje 2007: the 2D Fourier fit of the whole clip
+//                                (at least one gait cycle), MAP or LSQ coefficients of the
+//                                eigenwalker model at the known view or over the circle
+//   snippet      core/snippet/  Howe, Leventon & Freeman 1999: overlapping 11-frame
+//                                snippets, MAP under a mixture-of-PPCA prior, stitched
+//
+// Input: u, v in mm at the walker (v up), as SPEC §5's orthographic view C(α) renders the
+// walker's frame. The image may show the walker moving across it (overground) or walking
+// in place; the eigenwalker removes the pelvis's straight-line image drift before its
+// Fourier fit (a no-op for a view of SPEC §2's canonical frames, whose pelvis has no trend),
+// the snippet engine keeps it (its prior was learnt with the progression).
+// Output frames are in the walker's frame (x right, y forward, z up; mm): the eigenwalker's
+// walk in place (canonical frame), the snippet engine's with whatever progression the image
+// and its prior imply. Compare them after removing each clip's mean translation or the
+// pelvis's trend (metrics.h, removeProgression).
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/engine/fourier.h"
+#include "core/engine/model.h"
+#include "core/engine/reconstruction.h"
+#include "core/snippet/snippet_fit.h"
+#include "core/snippet/snippet_sequence.h"
+
+namespace ew {
+
+enum class EngineKind { Eigenwalker, Snippet };
+
+inline constexpr EngineKind kEngineKinds[] = {EngineKind::Eigenwalker, EngineKind::Snippet};
+
+// "eigenwalker", "snippet": the names the CLI's --engine and the viewer use.
+const char* engineName(EngineKind kind);
+// Throws Error(BadArgument) naming `where` (e.g. "--engine") and the known names.
+EngineKind parseEngineKind(const std::string& name, const std::string& where);
+
+struct EigenwalkerEngine {
+  EigenwalkerModel model;
+  EstimatorOptions estimator{Estimator::Map, 1000.0};
+  ViewSearchOptions search;
+};
+
+struct SnippetEngine {
+  PreparedSnippetPrior prior;
+  SnippetSequenceOptions sequence;
+};
+
+using Engine = std::variant<EigenwalkerEngine, SnippetEngine>;
+
+EngineKind engineKind(const Engine& engine);
+
+struct ViewInput {
+  Eigen::MatrixXd uvMm;                 // T × 30: u, v per joint (SPEC §1 order), NaN = not seen
+  double rateHz = 0.0;
+  std::optional<double> alphaDeg;       // the known view; unset: each engine finds it
+  std::optional<double> strideHzHint;   // e.g. from gait events (the eigenwalker's ω scan)
+  std::string name;                     // names the input in errors and warnings
+};
+
+// The eigenwalker's own results, for the panels and reports that show them.
+struct EigenwalkerDiagnostics {
+  FourierFit fit2d;                     // the 2D Fourier fit of the (detrended) input
+  Reconstruction reconstruction;
+  std::optional<ViewSearch> search;     // unknown view: J(α) and its minima
+  std::vector<int> missingJoints;       // never seen: estimated by the model
+};
+
+struct EngineResult {
+  EngineKind engine = EngineKind::Eigenwalker;
+  Eigen::MatrixXd framesMm;             // T × 45 at the input's frames (walker's frame, mm)
+  double alphaDeg = 0.0;                // the view: given, or the engine's estimate
+  bool alphaEstimated = false;
+  // RMS over the seen points of every frame of |C(α) x − y| (mm), after the engine's own
+  // image alignment (the eigenwalker: the input's detrending; the snippet engine: each
+  // snippet's shift). What "the 3D walker explains the 2D input" means, per engine.
+  double reprojectionRmsMm = 0.0;
+  std::vector<std::string> warnings;
+  std::optional<EigenwalkerDiagnostics> eigenwalker;
+  std::optional<SnippetSequence> snippet;
+};
+
+// Throws what the engine throws — typed errors naming input.name: the eigenwalker's
+// "Fourier fit: less than one gait cycle: …" for a clip shorter than a cycle, the snippet
+// engine's for a clip shorter than one snippet — and Error(BadArgument) for an input that
+// is not T × 30 or has a rate that is not positive and finite.
+EngineResult reconstructWithEngine(const Engine& engine, const ViewInput& input);
+
+// A reconstruction against the 3D truth at the same frames (both T × 45, walker's frame),
+// after removing the clip's mean translation (engines differ in what they know of where
+// the walker stands; shape and motion are compared): per frame the mean over joints of
+// the 3D error, its mean (MPJPE, mm) and E_a, the mean squared error along the line of
+// sight of view α (mm²; SPEC §7 on frames). Throws Error(BadArgument) for unequal shapes.
+struct ClipErrors {
+  Eigen::VectorXd perFrameMm;
+  double mpjpeMm = 0.0;
+  double depthErrorMm2 = 0.0;
+};
+ClipErrors clipErrors(const Eigen::Ref<const Eigen::MatrixXd>& reconstructedMm,
+                      const Eigen::Ref<const Eigen::MatrixXd>& truthMm, double alphaDeg);
+
+// The eigenwalker engine's image detrending: subtracts from every u the least-squares line
+// through the pelvis's u over the frames that see it (nothing when fewer than 2 do).
+Eigen::MatrixXd removeImageDrift(const Eigen::Ref<const Eigen::MatrixXd>& uvMm, double rateHz);
+
+}  // namespace ew
