@@ -5,6 +5,10 @@
 // --sigma2 the σ² optimum stored in the model (else the paper's 70 mm²). FILE is a 2D CSV
 // (docs/EXPERIMENTS.md) or any 3D trial the loaders read, projected at --project-angle (ground
 // truth known: errors of SPEC §7 are reported).
+// `--engine snippet [--prior PRIOR.ewsp]`: the snippet engine (core/snippet) instead, through
+// the engines' interface (core/engines/engine.h); without --prior its prior is learnt from
+// the embedded synthetic population. A 3D input is then viewed overground (its progression
+// put back), as the snippet prior was learnt.
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -23,7 +27,11 @@
 #include "core/engine/model_file.h"
 #include "core/engine/projection.h"
 #include "core/engine/reconstruction.h"
+#include "core/engines/engine.h"
+#include "core/experiments/snippet_experiment.h"
 #include "core/experiments/view_csv.h"
+#include "core/snippet/snippet_file.h"
+#include "core/synth/population.h"
 #include "core/gait/dataset.h"
 #include "core/io/joint_csv.h"
 
@@ -46,6 +54,8 @@ struct ReconstructArgs {
   bool orthographic = false;
   std::string imageSize;
   std::string camera, cameraName;   // a calibration file (--camera) and which of its cameras
+  std::string engine = "eigenwalker";
+  std::string prior;                // the snippet engine's prior (--prior)
 };
 
 // The model the user named, or the default one; truncated to --components (the viewer's
@@ -80,6 +90,7 @@ struct Input {
   ViewSequence view;
   std::optional<double> omegaHintRadS;
   Eigen::MatrixXd frames3d;  // empty for a 2D file
+  Eigen::MatrixXd frames3dOverground;  // frames3d with the trial's progression put back
   // Joints not measured in any frame (a lower-body marker set, a 2D column left empty):
   // dropped from the likelihood (their rows of Ê), estimated by the model, flagged.
   JointMask missing{};
@@ -110,6 +121,7 @@ Input readInput(const ReconstructArgs& a) {
   if (!a.mapping.empty()) load.mappingFile = a.mapping;
   const WalkingTrial trial = loadWalkingTrial(a.input, load);
   in.frames3d = trial.joints.positionsMm;
+  in.frames3dOverground = framesWithProgression(trial);
   in.missing = trial.joints.missing;
   in.view = {projectFramesToView(in.frames3d, *a.projectAngleDeg), trial.joints.rateHz};
   if (trial.cycles.strideHz > 0 && std::isfinite(trial.cycles.strideHz)) in.omegaHintRadS = 2.0 * std::numbers::pi * trial.cycles.strideHz;
@@ -207,7 +219,80 @@ void printReport(const json& r) {
   std::cerr << "wrote " << r["output"].get<std::string>() << "\n";
 }
 
+// [SECTION] The snippet engine
+
+// Options that belong to the eigenwalker: an error with the snippet engine, not ignored.
+void refuseEigenwalkerOptions(const ReconstructArgs& a) {
+  const auto refuse = [](const std::string& option, const std::string& why) {
+    throw Error(ErrorKind::BadArgument, option, "", why + " (--engine snippet)");
+  };
+  if (a.unknownCamera) refuse("--unknown-camera", "the real-camera fit is the eigenwalker's; the snippet engine takes 2D views in mm");
+  if (!a.model.empty()) refuse("--model", "an eigenwalker model does not apply: give the snippet prior with --prior");
+  if (a.components) refuse("--components", "eigenwalkers do not apply");
+  if (a.sigma2Mm2) refuse("--sigma2", "the eigenwalker's MAP noise does not apply");
+  if (a.method != "map") refuse("--method", "the snippet engine is MAP only");
+  if (a.dataPreserving) refuse("--data-preserving", "eq. 3.16 is the eigenwalker's");
+}
+
+SnippetPrior chooseSnippetPrior(const ReconstructArgs& a) {
+  if (!a.prior.empty()) {
+    std::cerr << "snippet prior: " << a.prior << "\n";
+    return loadSnippetPrior(a.prior);
+  }
+  const Dataset synthetic = syntheticDataset();
+  std::cerr << "snippet prior: learnt from the embedded synthetic population (" << synthetic.trials.size()
+            << " walkers); give --prior (from `build --engine snippet`) for real walkers\n";
+  return trainSnippetPrior(snippetTrainingTrials(synthetic), {});
+}
+
+int runReconstructSnippet(const ReconstructArgs& a) {
+  refuseEigenwalkerOptions(a);
+  if (a.angleDeg.has_value() == a.unknownAngle)
+    throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
+  const SnippetEngine engine{prepareSnippetPrior(chooseSnippetPrior(a)), {}};
+  const Input in = readInput(a);
+  ViewInput view;
+  view.uvMm = in.frames3d.rows() > 0 ? projectFramesToView(in.frames3dOverground, *a.projectAngleDeg)
+                                     : in.view.framesMm;
+  view.rateHz = in.view.rateHz;
+  view.alphaDeg = a.angleDeg;
+  view.name = a.input;
+  if (!a.save2d.empty()) writeViewCsv(a.save2d, {view.uvMm, view.rateHz}, {"2D view of " + a.input + " (overground)"});
+  const EngineResult r = reconstructWithEngine(engine, view);
+  const SnippetSequence& seq = *r.snippet;
+  json report = {{"input", a.input}, {"engine", "snippet"}, {"prior", a.prior.empty() ? "synthetic population" : a.prior},
+                 {"frames", view.uvMm.rows()}, {"rate_hz", view.rateHz}, {"angle_deg", r.alphaDeg},
+                 {"angle_source", a.angleDeg ? "given" : "estimated"}, {"snippets", seq.starts.size()},
+                 {"snippet_rate_hz", seq.rateHz}, {"reprojection_rms_mm", r.reprojectionRmsMm},
+                 {"output", a.out}};
+  if (!a.angleDeg) report["snippet_angles_deg"] = seq.freeAlphaDeg;
+  std::cerr << std::fixed << std::setprecision(2) << "snippet engine: view " << r.alphaDeg << " deg ("
+            << report["angle_source"].get<std::string>() << "), " << seq.starts.size() << " snippets, reprojection RMS "
+            << r.reprojectionRmsMm << " mm\n";
+  if (in.frames3d.rows() > 0) {
+    const ClipErrors e = clipErrors(r.framesMm, in.frames3dOverground, *a.projectAngleDeg);
+    report["true_angle_deg"] = *a.projectAngleDeg;
+    report["angle_error_deg"] = viewAngleErrorDeg(r.alphaDeg, *a.projectAngleDeg);
+    report["errors"] = {{"mpjpe_frames_mm", e.mpjpeMm}, {"abs_error_frames_mm2", e.depthErrorMm2}};
+    std::cerr << std::setprecision(1) << "vs the trial's frames (mean translation removed): MPJPE " << e.mpjpeMm
+              << " mm, E_a " << e.depthErrorMm2 << " mm2\n";
+  }
+  std::ostringstream angle;
+  angle << r.alphaDeg;
+  writeJointCsv(a.out, r.framesMm, view.rateHz,
+                {"snippet-engine reconstruction of " + a.input + " (MAP, view " + angle.str() + " deg)",
+                 "prior " + report["prior"].get<std::string>()});
+  std::cerr << "wrote " << a.out << "\n";
+  if (a.json) std::cout << report.dump(2) << "\n";
+  return 0;
+}
+
+// [SECTION] The eigenwalker
+
 int runReconstruct(const ReconstructArgs& a) {
+  if (parseEngineKind(a.engine, "--engine") == EngineKind::Snippet) return runReconstructSnippet(a);
+  if (!a.prior.empty())
+    throw Error(ErrorKind::BadArgument, "--prior", "", "a snippet prior applies to --engine snippet only");
   if (a.unknownCamera) {
     if (a.unknownAngle || a.projectAngleDeg)
       throw Error(ErrorKind::BadArgument, "--unknown-camera", "",
@@ -304,6 +389,14 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
       "3D walker from a 2D sequence (SPEC §6). --input is a 2D CSV frame,time_s,head_u,head_v,...,l_ankle_v "
       "(mm; docs/EXPERIMENTS.md) or a 3D trial viewed at --project-angle (errors against it reported). "
       "Writes the 15-joint 3D CSV over the input's duration.");
+  cmd->add_option("--engine", args->engine,
+                  "eigenwalker (Zhang & Troje 2007) or snippet (Howe, Leventon & Freeman 1999; docs/SNIPPETS.md)")
+      ->check(CLI::IsMember({"eigenwalker", "snippet"}))
+      ->capture_default_str();
+  cmd->add_option("--prior", args->prior,
+                  "Snippet prior from `build --engine snippet` (default: learnt from the embedded synthetic "
+                  "population)")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--model", args->model,
                   "Model file from `build` (default: the built-in model of 24 real walkers)")
       ->check(CLI::ExistingFile);
