@@ -14,6 +14,7 @@
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
 #include "core/engine/walker_set.h"
+#include "core/engines/engine.h"
 #include "core/experiments/experiments.h"
 #include "core/experiments/results_folder.h"
 #include "core/gait/dataset.h"
@@ -34,6 +35,7 @@ struct EvaluateArgs {
   int components = 0;      // 0 = 95 % of the variance
   int threads = 0;         // 0 = hardware concurrency
   bool noPlots = false;
+  std::vector<std::string> engines;  // --engine: empty = every engine
 };
 
 // Progress on stderr: a bar with ETA on a terminal, a few plain lines otherwise.
@@ -90,6 +92,35 @@ std::set<Experiment> chosenExperiments(const std::vector<std::string>& names) {
   return out;
 }
 
+bool asksFor(const EvaluateArgs& a, EngineKind kind) {
+  if (a.engines.empty()) return true;
+  for (const auto& e : a.engines)
+    if (parseEngineKind(e, "--engine") == kind) return true;
+  return false;
+}
+
+// --engine narrows the experiments: the paper's (Zhang & Troje's figures, the camera study)
+// are the eigenwalker's own; "snippet" compares the engines asked for; "snippet-clusters"
+// is the snippet prior's. Without --experiment, --engine snippet means "snippet".
+std::vector<std::string> experimentsForEngines(const EvaluateArgs& a) {
+  if (asksFor(a, EngineKind::Eigenwalker)) {
+    if (!asksFor(a, EngineKind::Snippet))
+      for (const auto& n : a.experiments)
+        if (n == experimentName(Experiment::SnippetClusters))
+          throw Error(ErrorKind::BadArgument, "--engine", "", "experiment 'snippet-clusters' is the snippet prior's");
+    return a.experiments;
+  }
+  if (a.experiments == std::vector<std::string>{"all"}) return {experimentName(Experiment::Snippet)};
+  for (const auto& n : a.experiments) {
+    const auto e = experimentFromName(n);
+    if (e && *e != Experiment::Snippet && *e != Experiment::SnippetClusters)
+      throw Error(ErrorKind::BadArgument, "--engine", "",
+                  "experiment '" + n + "' is the eigenwalker's (Zhang & Troje 2007); the snippet engine's are "
+                  "'snippet' and 'snippet-clusters'");
+  }
+  return a.experiments;
+}
+
 EvaluationOptions evaluationOptions(const EvaluateArgs& a, ProgressPrinter& printer) {
   EvaluationOptions o;
   o.anglesDeg = parseAngleSpec(a.angles);
@@ -120,6 +151,10 @@ void runSnippetExperiments(const Dataset& dataset, const std::vector<Walker>& wa
     const auto t0 = std::chrono::steady_clock::now();
     SnippetExperimentOptions o;
     o.threads = threads;
+    if (!a.engines.empty()) {
+      o.engines.clear();
+      for (const auto& e : a.engines) o.engines.push_back(parseEngineKind(e, "--engine"));
+    }
     if (a.sigma2Mm2 > 0) o.sigma2Mm2 = a.sigma2Mm2;
     if (a.components > 0) o.model.components = a.components;
     std::cerr << "snippet: " << dataset.subjects().size() << " folds on " << threads << " threads\n";
@@ -147,7 +182,7 @@ int runEvaluate(const EvaluateArgs& a) {
   if (fs::exists(out, ec) && !fs::is_directory(out, ec)) {
     throw Error(ErrorKind::BadArgument, out.string(), "", "exists and is not a folder");
   }
-  const std::set<Experiment> experiments = chosenExperiments(a.experiments);
+  const std::set<Experiment> experiments = chosenExperiments(experimentsForEngines(a));
   ProgressPrinter printer;
   const EvaluationOptions options = evaluationOptions(a, printer);
 
@@ -223,6 +258,11 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_flag("--no-plots", args->noPlots, "Skip the PNG figures");
+  cmd->add_option("--engine", args->engines,
+                  "Engines to evaluate (repeatable; default all): eigenwalker runs the paper's experiments, "
+                  "snippet the snippet engine's ('snippet', 'snippet-clusters'); experiment 'snippet' scores "
+                  "each engine asked for")
+      ->check(CLI::IsMember({"eigenwalker", "snippet"}));
   cmd->callback([args, &exitCode] {
     try {
       exitCode = runEvaluate(*args);

@@ -1,5 +1,6 @@
 #include "core/experiments/snippet_experiment.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -90,19 +91,25 @@ EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const st
   return row;
 }
 
+bool uses(const SnippetExperimentOptions& o, EngineKind kind) {
+  return std::find(o.engines.begin(), o.engines.end(), kind) != o.engines.end();
+}
+
 void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& clipName, const SnippetExperimentOptions& o,
                FoldOutput& out, const FourierFit* phaseFit) {
   for (double alpha : o.anglesDeg) {
     // Each engine is given the image it is designed for: the snippet engine's prior was
     // learnt overground, the eigenwalker's model in place (the pelvis's image drift is
     // removed by the engine either way: tests/engines/test_engine.cpp).
-    out.rows.push_back(engineRow(fold, "snippet MAP", clipName, alpha, clip.withProgression, [&] {
-      return reconstructWithEngine(fold.snippet, knownView(fold, clip.withProgression, alpha, clip.strideHz)).framesMm;
-    }, out, phaseFit != nullptr));
-    out.rows.push_back(engineRow(fold, "eigenwalker MAP", clipName, alpha, clip.withoutProgression, [&] {
-      return reconstructWithEngine(fold.eigenwalker, knownView(fold, clip.withoutProgression, alpha, clip.strideHz))
-          .framesMm;
-    }, out, phaseFit != nullptr));
+    if (uses(o, EngineKind::Snippet))
+      out.rows.push_back(engineRow(fold, "snippet MAP", clipName, alpha, clip.withProgression, [&] {
+        return reconstructWithEngine(fold.snippet, knownView(fold, clip.withProgression, alpha, clip.strideHz)).framesMm;
+      }, out, phaseFit != nullptr));
+    if (uses(o, EngineKind::Eigenwalker))
+      out.rows.push_back(engineRow(fold, "eigenwalker MAP", clipName, alpha, clip.withoutProgression, [&] {
+        return reconstructWithEngine(fold.eigenwalker, knownView(fold, clip.withoutProgression, alpha, clip.strideHz))
+            .framesMm;
+      }, out, phaseFit != nullptr));
   }
 }
 
@@ -161,13 +168,17 @@ SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::ve
   parallelFor(static_cast<int>(subjects.size()), o.threads, [&](int i) {
     SnippetFold fold;
     fold.subject = subjects[static_cast<size_t>(i)];
-    const auto t0 = std::chrono::steady_clock::now();
-    const SnippetPrior prior = trainSnippetPrior(snippetTrainingTrials(dataset, fold.subject), o.prior);
-    trainS[static_cast<size_t>(i)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    snippets[static_cast<size_t>(i)] = prior.trainingSnippets;
-    fold.snippet = {prepareSnippetPrior(prior), o.sequence};
-    fold.eigenwalker.model = buildModelWithoutSubject(walkers, fold.subject, o.model);
-    fold.eigenwalker.estimator = {Estimator::Map, o.sigma2Mm2};
+    if (uses(o, EngineKind::Snippet)) {
+      const auto t0 = std::chrono::steady_clock::now();
+      const SnippetPrior prior = trainSnippetPrior(snippetTrainingTrials(dataset, fold.subject), o.prior);
+      trainS[static_cast<size_t>(i)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      snippets[static_cast<size_t>(i)] = prior.trainingSnippets;
+      fold.snippet = {prepareSnippetPrior(prior), o.sequence};
+    }
+    if (uses(o, EngineKind::Eigenwalker)) {
+      fold.eigenwalker.model = buildModelWithoutSubject(walkers, fold.subject, o.model);
+      fold.eigenwalker.estimator = {Estimator::Map, o.sigma2Mm2};
+    }
     FoldOutput& out = outputs[static_cast<size_t>(i)];
     const DatasetTrial* trial = firstTrialOf(dataset, fold.subject);
     if (!trial) return;
@@ -196,7 +207,7 @@ SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::ve
     FoldOutput shortOut;
     scoreClip(fold, middleOf(clip, shortFrames), "0.5 s", o, shortOut, nullptr);
     out.rows.insert(out.rows.end(), shortOut.rows.begin(), shortOut.rows.end());
-    unknownView(fold, clip, o, out);
+    if (uses(o, EngineKind::Snippet)) unknownView(fold, clip, o, out);
     if (!o.wholeTrialSuffix.empty()) {
       for (const auto& t : dataset.trials) {
         const std::string& f = t.info.file;

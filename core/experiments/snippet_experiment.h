@@ -24,6 +24,7 @@
 
 #include "core/engine/model.h"
 #include "core/engine/walker_set.h"
+#include "core/engines/engine.h"
 #include "core/gait/dataset.h"
 #include "core/snippet/snippet_prior.h"
 #include "core/snippet/snippet_sequence.h"
@@ -41,6 +42,9 @@ struct SnippetExperimentOptions {
   int phaseBins = 20;
   std::string wholeTrialSuffix = "05_01.bvh";  // a trial loaded uncropped ("" = none)
   int threads = 1;
+  // The engines scored (evaluate --engine): both by default; the unknown-view part is the
+  // snippet engine's (the eigenwalker's is experiment unknown-view).
+  std::vector<EngineKind> engines{EngineKind::Eigenwalker, EngineKind::Snippet};
 };
 
 struct EngineRow {

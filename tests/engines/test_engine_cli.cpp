@@ -99,5 +99,25 @@ TEST_F(EngineCli, WithoutAPriorTheSyntheticPopulationIsLearntAndSaidSo) {
   EXPECT_LT(nlohmann::json::parse(r.out)["errors"]["mpjpe_frames_mm"].get<double>(), 50.0);
 }
 
+// evaluate --engine: experiment "snippet" scores only the engines asked for; the paper's
+// experiments are the eigenwalker's and say so. 4 walkers keep it short.
+TEST_F(EngineCli, EvaluateScoresTheEnginesAskedFor) {
+  ASSERT_EQ(runCli("synth --count 4 --seed 5 --cycles 2 --out four/", root_).exitCode, 0);
+  const std::pair<std::string, std::string> runs[] = {{"--engine snippet", "snippet MAP"},
+                                                      {"--engine eigenwalker --experiment snippet", "eigenwalker MAP"}};
+  for (const auto& [args, engine] : runs) {
+    const test::ShellRun r = runCli("evaluate --data four/walkers.csv --no-plots --out ev " + args, root_);
+    ASSERT_EQ(r.exitCode, 0) << args << "\n" << r.err;
+    const std::string csv = test::readTextFile(root_ / "ev" / "snippet_engines.csv");
+    EXPECT_NE(csv.find(engine), std::string::npos) << args;
+    EXPECT_EQ(csv.find(engine == "snippet MAP" ? "eigenwalker MAP" : "snippet MAP"), std::string::npos) << args;
+  }
+  const test::ShellRun paper =
+      runCli("evaluate --data four/walkers.csv --engine snippet --experiment known-view --out ev2", root_);
+  EXPECT_EQ(paper.exitCode, 2);
+  EXPECT_NE(paper.err.find("is the eigenwalker's"), std::string::npos) << paper.err;
+  EXPECT_FALSE(fs::exists(root_ / "ev2"));
+}
+
 }  // namespace
 }  // namespace ew
