@@ -8,6 +8,7 @@
 #include "core/engine/fourier.h"
 #include "core/engine/joint_completion.h"
 #include "core/engine/projection.h"
+#include "core/gait/canonical_frame.h"
 #include "core/gait/missing_joints.h"
 
 namespace ew {
@@ -166,6 +167,41 @@ EngineResult reconstructWithEngine(const Engine& engine, const ViewInput& input)
   checkInput(input);
   if (const auto* e = std::get_if<EigenwalkerEngine>(&engine)) return runEigenwalker(*e, input);
   return runSnippet(std::get<SnippetEngine>(engine), input);
+}
+
+// [SECTION] Walkers known only as a Fourier vector
+
+Eigen::MatrixXd overgroundFrames(const Eigen::Ref<const Eigen::VectorXd>& w, double omegaRadS, double speedMps,
+                                 double cycles, double rateHz) {
+  const auto finitePositive = [](double v) { return v > 0.0 && std::isfinite(v); };
+  if (w.size() != kFourierDims3)
+    throw Error(ErrorKind::BadArgument, "", "", "overground frames: w needs 225 values");
+  if (!finitePositive(omegaRadS) || !finitePositive(cycles) || !finitePositive(rateHz) || !(speedMps >= 0.0) ||
+      !std::isfinite(speedMps) || cycles * 2.0 * std::numbers::pi / omegaRadS * rateHz > 1e6)
+    throw Error(ErrorKind::BadArgument, "", "", "overground frames: ω, cycles and rate must be positive and finite, "
+                                                "the speed finite and not negative, and at most 10⁶ frames");
+  const int count = static_cast<int>(std::ceil(cycles * 2.0 * std::numbers::pi / omegaRadS * rateHz));
+  const Eigen::VectorXd t = frameTimes(count, rateHz);
+  Eigen::MatrixXd frames = synthesizeFrames(w, omegaRadS, 0.0, t);
+  for (int j = 0; j < kJointCount; ++j) frames.col(3 * j + 1) += 1000.0 * speedMps * t;
+  return frames;
+}
+
+Eigen::VectorXd fourierSummary(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, double rateHz, double omegaRadS) {
+  Eigen::MatrixXd inPlace = framesMm;
+  removeProgression(inPlace, rateHz);
+  FourierFitOptions o;
+  o.omegaFixedRadS = omegaRadS;
+  const FourierFit fit = fitFourier(inPlace, rateHz, o);
+  return rephase(fit.w, fit.phaseRad, 0.0);
+}
+
+std::vector<SnippetTrainingTrial> snippetTrialsFromFourier(const std::vector<FourierWalkerTrial>& walkers,
+                                                           double cycles) {
+  std::vector<SnippetTrainingTrial> trials;
+  for (const auto& w : walkers)
+    trials.push_back({w.subject, w.name, overgroundFrames(w.w, w.omegaRadS, w.speedMps, cycles, 30.0), 30.0});
+  return trials;
 }
 
 }  // namespace ew

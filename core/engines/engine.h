@@ -29,6 +29,7 @@
 #include "core/engine/fourier.h"
 #include "core/engine/model.h"
 #include "core/engine/reconstruction.h"
+#include "core/snippet/snippet_data.h"
 #include "core/snippet/snippet_fit.h"
 #include "core/snippet/snippet_sequence.h"
 
@@ -110,5 +111,32 @@ ClipErrors clipErrors(const Eigen::Ref<const Eigen::MatrixXd>& reconstructedMm,
 // The eigenwalker engine's image detrending: subtracts from every u the least-squares line
 // through the pelvis's u over the frames that see it (nothing when fewer than 2 do).
 Eigen::MatrixXd removeImageDrift(const Eigen::Ref<const Eigen::MatrixXd>& uvMm, double rateHz);
+
+// [SECTION] Walkers known only as a Fourier vector (the viewer's population, a model)
+
+// The walker w (225, SPEC §3, phase origin 0) walked overground: `cycles` gait cycles at
+// `rateHz`, every joint carried forward along +y at `speedMps` (T × 45, mm). What an engine
+// is shown of a walker whose trials are not at hand; the snippet prior was learnt
+// overground, so it is shown the progression too. Throws Error(BadArgument) for a w that is
+// not 225 values, or ω, speed, cycles or rate that are not positive and finite (speed may
+// be 0: walking in place).
+Eigen::MatrixXd overgroundFrames(const Eigen::Ref<const Eigen::VectorXd>& w, double omegaRadS, double speedMps,
+                                 double cycles, double rateHz);
+
+// An engine's frames summarised as one gait cycle: progression removed (removeProgression),
+// the 3D Fourier fit at the known ω, turned to phase origin 0 (rephase), so it is compared
+// with the walker's own w and drawn by the same code (225). Throws the Fourier fit's errors.
+Eigen::VectorXd fourierSummary(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, double rateHz, double omegaRadS);
+
+// A snippet prior's training trials from walkers known as Fourier vectors: each walked
+// overground for `cycles` at 30 Hz (overgroundFrames) with its speed.
+struct FourierWalkerTrial {
+  std::string subject, name;
+  Eigen::VectorXd w;
+  double omegaRadS = 0.0;
+  double speedMps = 0.0;
+};
+std::vector<SnippetTrainingTrial> snippetTrialsFromFourier(const std::vector<FourierWalkerTrial>& walkers,
+                                                           double cycles = 4.0);
 
 }  // namespace ew

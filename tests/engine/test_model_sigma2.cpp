@@ -102,7 +102,10 @@ TEST_F(ModelSigma2, ADamagedEntryIsAnErrorNamingTheFileAndTheKey) {
       {"\"grid_mm2\":[1.0,10.0,350.0,5000.0]", "\"grid_mm2\":[1.0,\"x\"]"},
       {"\"criterion\":\"smallest mean E_a\"", "\"criterion\":3"},
   };
-  for (const auto& [from, to] : cases) {
+  for (const auto& fromTo : cases) {
+    // Named copies: clang 14 cannot capture structured bindings in a lambda.
+    const std::string& from = fromTo.first;
+    const std::string& to = fromTo.second;
     const std::string bad = withMetadata(good, [&](std::string& meta) {
       const size_t at = meta.find(from);
       ASSERT_NE(at, std::string::npos) << from << " not in " << meta;

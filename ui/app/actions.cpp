@@ -578,6 +578,11 @@ void setEstimator(AppState& s, Estimator estimator) {
   s.doc.recon.estimator = estimator;
 }
 
+void setEngine(AppState& s, EngineKind engine) {
+  if (s.doc.recon.engine != engine) s.doc.editedSd.clear();
+  s.doc.recon.engine = engine;
+}
+
 void setSigma2(AppState& s, double sigma2Mm2) {
   if (!std::isfinite(sigma2Mm2) || sigma2Mm2 <= 0.0)
     throw std::invalid_argument("sigma2 must be a positive number of mm^2");

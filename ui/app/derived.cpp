@@ -3,11 +3,14 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "core/engine/fourier.h"
 #include "core/engine/model.h"
 #include "core/engine/projection.h"
+#include "core/engines/engine.h"
+#include "core/snippet/snippet_prior.h"
 #include "ui/app/held_model.h"
 
 namespace ew::ui {
@@ -24,9 +27,66 @@ Eigen::MatrixXd trailOverCycle(const Eigen::VectorXd& w, int samples) {
   return synthesizeFrames(w, 1.0, 0.0, t);
 }
 
+std::pair<double, std::string> walkerSpeedMps(const Document& doc, int walker) {
+  if (const WalkerFacts* f = doc.factsAt(walker); f && f->speedMps && *f->speedMps > 0.0)
+    return {*f->speedMps, "measured"};
+  double sum = 0.0;
+  int n = 0;
+  if (doc.population)
+    for (const auto& f : doc.population->facts)
+      if (f.speedMps && *f.speedMps > 0.0 && std::isfinite(*f.speedMps)) sum += *f.speedMps, ++n;
+  if (n > 0) return {sum / n, "population mean"};
+  return {1.3, "typical adult"};
+}
+
+SnippetPriorCache::Entry SnippetPriorCache::get(const Document& doc, const std::string& withoutSubject) {
+  if (generation_ != doc.generation || population_ != doc.population.get()) {
+    entries_.clear();
+    generation_ = doc.generation;
+    population_ = doc.population.get();
+  }
+  if (auto it = entries_.find(withoutSubject); it != entries_.end()) return it->second;
+  if (!doc.population) throw std::runtime_error("snippet engine: no population to learn a prior from");
+  std::vector<FourierWalkerTrial> walkers;
+  for (int i = 0; i < doc.population->walkerCount(); ++i) {
+    const Walker& w = doc.population->walkers[static_cast<std::size_t>(i)];
+    if (w.subject == withoutSubject) continue;
+    walkers.push_back({w.subject, w.id, w.fit.w, w.fit.omegaRadS, walkerSpeedMps(doc, i).first});
+  }
+  Entry e;
+  e.walkers = static_cast<int>(walkers.size());
+  e.prior = std::make_shared<const PreparedSnippetPrior>(
+      prepareSnippetPrior(trainSnippetPrior(snippetTrialsFromFourier(walkers), {})));
+  ++trainings_;
+  return entries_[withoutSubject] = e;
+}
+
 namespace {
 
-std::unique_ptr<ReconBase> computeRecon(const Document& doc, const ReconKey& key) {
+// The snippet engine on the walker, walked overground and seen at the true α: its frames
+// summarised as one cycle into r.estimate (w, and k as that w's nearest model coefficients).
+void reconstructWithSnippets(const Document& doc, const ReconKey& key, const Walker& walker,
+                             SnippetPriorCache& priors, ReconBase& r) {
+  const SnippetPriorCache::Entry prior = priors.get(doc, walker.subject);
+  r.priorWalkers = prior.walkers;
+  std::tie(r.speedMps, r.speedSource) = walkerSpeedMps(doc, key.walker);
+  const double omega = walker.fit.omegaRadS;
+  ViewInput in;
+  in.uvMm = projectFramesToView(overgroundFrames(r.wTrue, omega, r.speedMps, kSnippetCycles, 30.0),
+                                key.settings.alphaDeg);
+  in.rateHz = 30.0;
+  if (!key.settings.unknownAngle) in.alphaDeg = key.settings.alphaDeg;
+  in.name = walker.id;
+  const EngineResult e = reconstructWithEngine(SnippetEngine{*prior.prior, {}}, in);
+  r.estimate = Reconstruction{};
+  r.estimate.alphaDeg = e.alphaDeg;
+  r.estimate.w = fourierSummary(e.framesMm, 30.0, omega);
+  r.estimate.k = projectOntoModel(r.model, r.estimate.w);
+  r.estimate.wDataPreserving = r.estimate.w;
+  r.snippets = e.snippet;
+}
+
+std::unique_ptr<ReconBase> computeRecon(const Document& doc, const ReconKey& key, SnippetPriorCache& priors) {
   const Walker& walker = *doc.walkerAt(key.walker);
   const WalkerModel chosen = modelForWalker(doc, key.walker);
   const EigenwalkerModel& loo = chosen.model;
@@ -54,6 +114,12 @@ std::unique_ptr<ReconBase> computeRecon(const Document& doc, const ReconKey& key
   r->observed = projectToView(r->wTrue, key.settings.alphaDeg);
   r->observedTrail = trailOverCycle(r->observed, kTrailSamples);
   r->strideHz = walker.fit.omegaRadS / (2.0 * std::numbers::pi);
+  r->engine = key.settings.engine;
+  if (r->engine == EngineKind::Snippet) {
+    reconstructWithSnippets(doc, key, walker, priors, *r);
+    r->alphaUsedDeg = r->estimate.alphaDeg;
+    return r;
+  }
   EstimatorOptions est;
   est.estimator = key.settings.estimator;
   est.sigma2Mm2 = key.settings.sigma2Mm2;
@@ -72,7 +138,8 @@ std::unique_ptr<ReconDisplay> computeDisplay(const ReconBase& base,
   auto d = std::make_unique<ReconDisplay>();
   const auto n = base.sd.size();
   Eigen::VectorXd k = base.estimate.k;
-  if (static_cast<Eigen::Index>(editedSd.size()) == n) {
+  // The snippet engine's k only describes its result: edits do not apply to it.
+  if (base.engine == EngineKind::Eigenwalker && static_cast<Eigen::Index>(editedSd.size()) == n) {
     for (Eigen::Index i = 0; i < n; ++i) k(i) = editedSd[static_cast<std::size_t>(i)] * base.sd(i);
     d->edited = true;
   }
@@ -146,7 +213,7 @@ void Derived::update(const Document& doc) {
       reconKey_ = rk;
       ++reconComputations_;
       error_.clear();
-      recon_ = computeRecon(doc, rk);
+      recon_ = computeRecon(doc, rk, snippetPriors_);
     }
     if (recon_) {
       const DisplayKey dk{rk, doc.editedSd};

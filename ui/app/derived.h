@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -49,7 +50,18 @@ struct ReconBase {
   double alphaTrueDeg = 0.0;
   double alphaUsedDeg = 0.0;     // α, or α̂
   double strideHz = 0.0;
+  // The snippet engine (settings.engine): it is shown the walker walked overground for
+  // kSnippetCycles at 30 Hz and at `speedMps`, learns its prior from the population's other
+  // subjects, and its frames are summarised as one cycle (fourierSummary) into estimate.w;
+  // estimate.k is then that summary's least-squares coefficients (read only).
+  EngineKind engine = EngineKind::Eigenwalker;
+  std::optional<SnippetSequence> snippets;
+  double speedMps = 0.0;
+  std::string speedSource;       // "measured", "population mean", "typical adult"
+  int priorWalkers = 0;          // walkers the snippet prior learnt from
 };
+
+inline constexpr double kSnippetCycles = 2.0;
 
 struct DisplayKey {
   ReconKey base;
@@ -103,6 +115,28 @@ struct ExploreResult {
 
 inline constexpr int kTrailSamples = 64;
 
+// Snippet priors learnt from the population, one per held-out subject, kept while the
+// population stays (a new load clears them): switching walkers costs one training each.
+class SnippetPriorCache {
+ public:
+  struct Entry {
+    std::shared_ptr<const PreparedSnippetPrior> prior;
+    int walkers = 0;
+  };
+  Entry get(const Document& doc, const std::string& withoutSubject);
+  int trainings() const { return trainings_; }
+
+ private:
+  std::uint64_t generation_ = 0;
+  const Population* population_ = nullptr;
+  std::map<std::string, Entry> entries_;
+  int trainings_ = 0;
+};
+
+// The speed a population walker is shown walking at: its measured speed, else the mean of
+// the population's measured speeds, else 1.3 m/s (a typical adult's self-selected speed).
+std::pair<double, std::string> walkerSpeedMps(const Document& doc, int walker);
+
 class Derived {
  public:
   // Brings every cache up to date with the document (cheap when nothing changed).
@@ -125,6 +159,7 @@ class Derived {
   std::unique_ptr<ExploreResult> explore_;
   std::string error_;
   int reconComputations_ = 0;
+  SnippetPriorCache snippetPriors_;
 };
 
 // Pose helpers: w (225 or 150) evaluated at a gait phase (0 … 1); all walkers share the

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/engine/reconstruction.h"
+#include "core/engines/engine.h"
 #include "ui/app/clip.h"
 #include "ui/app/model_set.h"
 #include "ui/app/population.h"
@@ -29,6 +30,9 @@ struct ReconstructionSettings {
   double sigma2Mm2 = 70.0;       // MAP σ²
   int components = 0;            // N; 0 = the smallest N reaching 95 % of the variance
   bool unknownAngle = false;     // estimate α instead of using it (SPEC §6)
+  // Which engine reconstructs (core/engines/engine.h); the estimator, σ² and N are the
+  // eigenwalker's own settings.
+  EngineKind engine = EngineKind::Eigenwalker;
   bool operator==(const ReconstructionSettings&) const = default;
 };
 

@@ -24,7 +24,8 @@ const std::set<std::string>& knownActions() {
       "export_png",   "export_video",   "export_csv",    "export_bvh",  "export_model",
       "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour",
       "drop",         "set_file_override", "reload", "export_data_summary", "export_state",
-      "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame"};
+      "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame",
+      "set_engine"};
   // clang-format on
   return names;
 }
@@ -222,6 +223,8 @@ void applyAction(AppState& s, const ScriptAction& a) {
     } else {
       throw std::invalid_argument("method must be \"lsq\" or \"map\"");
     }
+  } else if (n == "set_engine") {
+    actions::setEngine(s, parseEngineKind(text(a), "set_engine"));
   } else if (n == "set_sigma2") {
     actions::setSigma2(s, number(a));
   } else if (n == "set_components") {

@@ -73,7 +73,16 @@ nlohmann::json reconstructionJson(const Derived& derived) {
                       {"rel_error", d->relScored},
                       {"mpjpe_mm", d->mpjpeMm},
                       {"joints_scored", d->jointsScored},
-                      {"residual_rms_mm", d->residualRmsMm}};
+                      {"residual_rms_mm", d->residualRmsMm},
+                      {"engine", engineName(r->engine)}};
+  if (r->snippets) {
+    j["snippets"] = r->snippets->starts.size();
+    j["snippet_angles_deg"] = r->snippets->freeAlphaDeg;
+    j["snippet_reprojection_rms_mm"] = r->snippets->reprojectionRms;
+    j["prior_walkers"] = r->priorWalkers;
+    j["speed_mps"] = r->speedMps;
+    j["speed_source"] = r->speedSource;
+  }
   std::vector<double> perJoint(d->depthRmsMm.data(), d->depthRmsMm.data() + d->depthRmsMm.size());
   j["depth_rms_mm"] = perJoint;
   // Joints the marker set lacked, estimated from a model: their errors apart.
@@ -155,6 +164,7 @@ nlohmann::json stateJson(const AppState& s) {
   j["clip"] = clipJson(s);
   j["angle_deg"] = d.recon.alphaDeg;
   j["method"] = d.recon.estimator == Estimator::Lsq ? "lsq" : "map";
+  j["engine"] = engineName(d.recon.engine);
   j["sigma2_mm2"] = d.recon.sigma2Mm2;
   j["components"] = d.recon.components;
   j["unknown_angle"] = d.recon.unknownAngle;

@@ -63,6 +63,9 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
         actions::coefficientsFromWalker(s);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected walker's coefficients in the full model");
       ImGui::TextDisabled("units: SD of each component (√λ)");
+    } else if (r && r->engine == EngineKind::Snippet) {
+      ImGui::TextWrapped("The snippet engine has no eigenwalker coefficients. Its result, summarised "
+                         "as one cycle, lies here in gait space (read only):");
     } else {
       ImGui::BeginDisabled(s.doc.editedSd.empty());
       if (ImGui::Button("Back to the estimate")) actions::resetCoefficients(s);
@@ -75,6 +78,8 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
     }
     ImGui::Separator();
     const float labelW = 88.0f * ctx.scale;
+    const bool readOnly = !explore && r && r->engine == EngineKind::Snippet;
+    ImGui::BeginDisabled(readOnly);
     for (int i = 0; i < n; ++i) {
       float value = 0.0f;
       double share = 0.0;
@@ -96,6 +101,7 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
       if (ImGui::SliderFloat("##k", &value, -3.0f, 3.0f, "%+.2f SD")) actions::setCoefficient(s, i, value);
       ImGui::PopID();
     }
+    ImGui::EndDisabled();
     if (n == 0) ImGui::TextDisabled(s.jobs.busy() ? "building models…" : "no model");
   }
   ImGui::End();

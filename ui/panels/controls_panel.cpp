@@ -27,6 +27,19 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       return;
     }
 
+    if (doc.mode == Mode::Reconstruct) {
+      sectionTitle("Engine");
+      int engine = doc.recon.engine == EngineKind::Snippet ? 1 : 0;
+      if (ImGui::RadioButton("Eigenwalker", &engine, 0)) actions::setEngine(s, EngineKind::Eigenwalker);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Zhang & Troje 2007: one gait cycle, PCA of walkers");
+      ImGui::SameLine();
+      if (ImGui::RadioButton("Snippets", &engine, 1)) actions::setEngine(s, EngineKind::Snippet);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Howe, Leventon & Freeman 1999: 11-frame snippets, mixture prior,\n"
+                          "learnt from the population's other subjects walked overground");
+    }
+    const bool eigenwalkerSettings = doc.mode != Mode::Reconstruct || doc.recon.engine == EngineKind::Eigenwalker;
+
     sectionTitle("View angle");
     float alpha = static_cast<float>(doc.recon.alphaDeg);
     ImGui::SetNextItemWidth(-1.0f);
@@ -42,6 +55,7 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     if (ImGui::Checkbox("Unknown view angle (estimate α)", &unknown))
       actions::setUnknownAngle(s, unknown);
 
+    ImGui::BeginDisabled(!eigenwalkerSettings);
     sectionTitle("Estimator");
     int est = doc.recon.estimator == Estimator::Lsq ? 0 : 1;
     if (ImGui::RadioButton("LSQ", &est, 0)) actions::setEstimator(s, Estimator::Lsq);
@@ -70,6 +84,12 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderInt("##components", &n, 0, maxN, fmt, ImGuiSliderFlags_AlwaysClamp))
       actions::setComponents(s, n);
+    ImGui::EndDisabled();
+    if (!eigenwalkerSettings) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      ImGui::TextWrapped("Estimator and N are the eigenwalker's: the snippet engine is MAP with its own prior.");
+      ImGui::PopStyleColor();
+    }
 
     drawViewControls(s, ctx);
   }

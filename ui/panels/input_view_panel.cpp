@@ -182,8 +182,13 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
   const float pad = 10.0f * ctx.scale;
   char sub[160];
   if (reconstruct) {
-    std::snprintf(sub, sizeof sub, "orthographic view at α = %.1f°, as the reconstruction sees it",
-                  s.doc.recon.alphaDeg);
+    const ReconBase* r = s.derived.recon();
+    if (r && r->engine == EngineKind::Snippet)
+      std::snprintf(sub, sizeof sub, "orthographic, α = %.1f°, walking across at %.2f m/s",
+                    s.doc.recon.alphaDeg, r->speedMps);
+    else
+      std::snprintf(sub, sizeof sub, "orthographic view at α = %.1f°, as the reconstruction sees it",
+                    s.doc.recon.alphaDeg);
   } else {
     std::snprintf(sub, sizeof sub, "the synthesised walker projected at α = %.1f°", s.doc.recon.alphaDeg);
   }

@@ -42,7 +42,8 @@ void clipMetrics(const AppState& s, float width) {
   std::snprintf(v, sizeof v, "%.0f /min", f.cadenceStepsPerMin);
   metric(s, "cadence  steps", v, "", width);
   std::snprintf(v, sizeof v, "%.1f px", f.reprojectionRmsPx);
-  std::snprintf(n, sizeof n, f.outlierSamples > 0 ? "%d glitches out" : "", f.outlierSamples);
+  n[0] = '\0';
+  if (f.outlierSamples > 0) std::snprintf(n, sizeof n, "%d glitches out", f.outlierSamples);
   metric(s, "reprojection  RMS", v, n, width);
   ImGui::NewLine();
 }

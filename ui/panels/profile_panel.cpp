@@ -43,11 +43,51 @@ void drawClipStarts(const AppState& s, const FrameContext& ctx) {
   drawPlot("##starts", ImGui::GetContentRegionAvail(), spec, series, ctx.scale);
 }
 
+// The snippet engine over the circle: each snippet's own estimated α (a dot per snippet, in time
+// order top to bottom), the clip's (their circular median) and the true α.
+void drawSnippetAngles(const ReconBase& r, const FrameContext& ctx) {
+  const SnippetSequence& seq = *r.snippets;
+  ImGui::TextDisabled("each snippet's own est. α (dots, first at the top); the clip's: %.1f° (their median)",
+                      r.alphaUsedDeg);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const float textH = ImGui::GetTextLineHeight();
+  const ImVec2 a{p0.x + 6.0f * ctx.scale, p0.y + 4.0f * ctx.scale};
+  const ImVec2 b{p0.x + avail.x - 6.0f * ctx.scale, p0.y + avail.y - textH - 6.0f * ctx.scale};
+  auto X = [&](double deg) { return a.x + static_cast<float>((deg + 180.0) / 360.0) * (b.x - a.x); };
+  dl->AddRectFilled(a, b, IM_COL32(255, 255, 255, 8));
+  const ImU32 gridC = IM_COL32(255, 255, 255, 28), labelC = IM_COL32(150, 160, 175, 255);
+  for (int deg = -180; deg <= 180; deg += 90) {
+    dl->AddLine(ImVec2(X(deg), a.y), ImVec2(X(deg), b.y), gridC);
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%d°", deg);
+    const float tw = ImGui::CalcTextSize(buf).x;
+    dl->AddText(ImVec2(std::clamp(X(deg) - tw * 0.5f, p0.x, b.x - tw), b.y + 2.0f * ctx.scale), labelC, buf);
+  }
+  dl->AddLine(ImVec2(X(r.alphaTrueDeg), a.y), ImVec2(X(r.alphaTrueDeg), b.y), toImU32(palette::kCamera),
+              1.5f * ctx.scale);
+  dl->AddLine(ImVec2(X(r.alphaUsedDeg), a.y), ImVec2(X(r.alphaUsedDeg), b.y), toImU32(palette::kCameraEstimate),
+              1.5f * ctx.scale);
+  const std::size_t n = seq.freeAlphaDeg.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const float y = a.y + (b.y - a.y) * (static_cast<float>(k) + 0.5f) / static_cast<float>(std::max<std::size_t>(n, 1));
+    dl->AddCircleFilled(ImVec2(X(seq.freeAlphaDeg[k]), y), 3.5f * ctx.scale, IM_COL32(230, 234, 240, 230));
+  }
+  ImGui::Dummy(avail);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("%zu snippets of %d frames; true α %.1f°, clip's est. α %.1f°", n,
+                      seq.snippets.empty() ? 0 : static_cast<int>(seq.snippets.front().snippet.size() / 45),
+                      r.alphaTrueDeg, r.alphaUsedDeg);
+}
+
 }  // namespace
 
 void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  const bool snippets = s.derived.recon() && s.derived.recon()->engine == EngineKind::Snippet;
   const char* title = s.doc.mode == Mode::Clip ? "Camera fit: where each start ended###profile"
-                                               : "View-angle profile J(α)###profile";
+                      : snippets             ? "View angle of each snippet###profile"
+                                             : "View-angle profile J(α)###profile";
   if (beginPanel(ctx.backdrop, title, rect, ImGuiWindowFlags_NoScrollbar)) {
     const ReconBase* r = s.derived.recon();
     if (s.doc.mode == Mode::Clip) {
@@ -57,6 +97,8 @@ void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
     } else if (!s.doc.recon.unknownAngle) {
       ImGui::TextDisabled("The view angle is known.");
       if (ImGui::Button("Estimate it (unknown view angle)")) actions::setUnknownAngle(s, true);
+    } else if (r && r->snippets) {
+      drawSnippetAngles(*r, ctx);
     } else if (r && r->search) {
       const ViewSearch& vs = *r->search;
       ImDrawList* dl = ImGui::GetWindowDrawList();

@@ -176,7 +176,15 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
         } else {
           std::snprintf(sub, sizeof sub, "%s at the known view angle α = %.1f°", est, r->alphaTrueDeg);
         }
-        if (s.doc.recon.estimator == Estimator::Map) {
+        if (r->engine == EngineKind::Snippet) {
+          const std::size_t n = r->snippets ? r->snippets->starts.size() : 0;
+          if (s.doc.recon.unknownAngle)
+            std::snprintf(sub, sizeof sub, "snippets, α unknown: est. %.1f° (true %.1f°), %zu snippets",
+                          r->alphaUsedDeg, r->alphaTrueDeg, n);
+          else
+            std::snprintf(sub, sizeof sub, "snippets at the known α = %.1f°, %zu snippets",
+                          r->alphaTrueDeg, n);
+        } else if (s.doc.recon.estimator == Estimator::Map) {
           const std::size_t len = std::strlen(sub);
           std::snprintf(sub + len, sizeof sub - len, ", σ² = %.0f mm²", s.doc.recon.sigma2Mm2);
         }
