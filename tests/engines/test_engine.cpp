@@ -15,6 +15,7 @@
 #include "core/engines/engine.h"
 #include "core/experiments/snippet_experiment.h"
 #include "core/gait/missing_joints.h"
+#include "tests/common/synthetic_gait.h"
 #include "tests/common/test_support.h"
 
 namespace ew {
@@ -85,6 +86,29 @@ TEST(ClipErrors, TranslationIsForgivenDepthIsAlongTheLineOfSight) {
   EXPECT_NEAR(front.depthErrorMm2, 0.0, 1e-9);
   EXPECT_NEAR(front.mpjpeMm, side.mpjpeMm, 1e-12);
   EXPECT_THROW(clipErrors(off.topRows(5), truth, 0.0), Error);
+}
+
+// A walker walked overground and summarised back is itself: the progression is a straight
+// line (removed exactly), the Fourier fit at the known ω recovers w up to the sway's share
+// in the removed trend over a whole number of frames (sub-millimetre here).
+TEST(FourierWalkers, OvergroundFramesSummariseBackToTheWalker) {
+  test::AnalyticGait g;
+  g.speedMps = 0.0;  // in place: the walker's own w
+  FourierFitOptions fo;
+  fo.omegaFixedRadS = 2.0 * std::numbers::pi * g.strideHz;
+  const FourierFit fit = fitFourier(test::analyticWalkFrames(g), g.rateHz, fo);
+  const Eigen::VectorXd w = rephase(fit.w, fit.phaseRad, 0.0);
+  const Eigen::MatrixXd walked = overgroundFrames(w, *fo.omegaFixedRadS, 1.4, 3.0, 30.0);
+  EXPECT_EQ(walked.rows(), static_cast<Eigen::Index>(std::ceil(3.0 / 0.9 * 30.0)));
+  // The pelvis moves 1.4 m/s forward.
+  const int pelvisY = 3 * static_cast<int>(Joint::Pelvis) + 1;
+  const double rise = (walked(walked.rows() - 1, pelvisY) - walked(0, pelvisY)) / (static_cast<double>(walked.rows() - 1) / 30.0);
+  EXPECT_NEAR(rise, 1400.0, 60.0);  // ± the sway's swing between the two frames
+  const Eigen::VectorXd back = fourierSummary(walked, 30.0, *fo.omegaFixedRadS);
+  EXPECT_LT((back - w).cwiseAbs().maxCoeff(), 1.0);
+  EXPECT_THROW(overgroundFrames(w.head(150), 5.0, 1.0, 2.0, 30.0), Error);
+  EXPECT_THROW(overgroundFrames(w, 5.0, -1.0, 2.0, 30.0), Error);
+  EXPECT_THROW(overgroundFrames(w, 5.0, 1.0, 1e9, 30.0), Error);
 }
 
 TEST(ImageDrift, AStraightLineOfThePelvisIsRemovedFromEveryU) {
