@@ -249,7 +249,7 @@ int runReconstructSnippet(const ReconstructArgs& a) {
   refuseEigenwalkerOptions(a);
   if (a.angleDeg.has_value() == a.unknownAngle)
     throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
-  const SnippetEngine engine{prepareSnippetPrior(chooseSnippetPrior(a)), {}};
+  const SnippetEngine engine{std::make_shared<const PreparedSnippetPrior>(prepareSnippetPrior(chooseSnippetPrior(a))), {}};
   const Input in = readInput(a);
   ViewInput view;
   view.uvMm = in.frames3d.rows() > 0 ? projectFramesToView(in.frames3dOverground, *a.projectAngleDeg)

@@ -76,7 +76,7 @@ EngineResult runSnippet(const SnippetEngine& engine, const ViewInput& input) {
   options.fit.scale = 1.0;  // the input is in mm at the walker
   SnippetSequence seq = [&] {
     try {
-      return reconstructSnippetSequence(engine.prior, input.uvMm, input.rateHz, options);
+      return reconstructSnippetSequence(*engine.prior, input.uvMm, input.rateHz, options);
     } catch (const Error& e) {
       // The snippet code names its stage ("snippets") where a reader names the file: the
       // user needs to know which input.
@@ -146,7 +146,7 @@ ClipErrors clipErrors(const Eigen::Ref<const Eigen::MatrixXd>& reconstructedMm,
   Eigen::Vector3d offset = Eigen::Vector3d::Zero();
   for (int j = 0; j < kJointCount; ++j)
     offset += diff.middleCols(3 * j, 3).colwise().mean().transpose() / static_cast<double>(kJointCount);
-  const double a = alphaDeg * std::numbers::pi / 180.0;
+  const double a = degToRad(alphaDeg);
   ClipErrors e;
   e.perFrameMm = Eigen::VectorXd::Zero(diff.rows());
   double depth = 0.0;

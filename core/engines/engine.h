@@ -21,6 +21,7 @@
 // pelvis's trend (metrics.h, removeProgression).
 
 #include <Eigen/Core>
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -50,8 +51,10 @@ struct EigenwalkerEngine {
   ViewSearchOptions search;
 };
 
+// The prior is shared, not copied: the viewer reconstructs again on every change of α with
+// the same prior (several MB with its factors).
 struct SnippetEngine {
-  PreparedSnippetPrior prior;
+  std::shared_ptr<const PreparedSnippetPrior> prior;
   SnippetSequenceOptions sequence;
 };
 

@@ -114,7 +114,7 @@ void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& cli
 }
 
 void unknownView(const SnippetFold& fold, const Clip& clip, const SnippetExperimentOptions& o, FoldOutput& out) {
-  const int length = fold.snippet.prior.prior.frames;
+  const int length = fold.snippet.prior->prior.frames;
   for (double alpha : o.unknownAnglesDeg) {
     ViewInput in = knownView(fold, clip.withProgression, alpha, clip.strideHz);
     in.alphaDeg.reset();
@@ -173,7 +173,7 @@ SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::ve
       const SnippetPrior prior = trainSnippetPrior(snippetTrainingTrials(dataset, fold.subject), o.prior);
       trainS[static_cast<size_t>(i)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       snippets[static_cast<size_t>(i)] = prior.trainingSnippets;
-      fold.snippet = {prepareSnippetPrior(prior), o.sequence};
+      fold.snippet = {std::make_shared<const PreparedSnippetPrior>(prepareSnippetPrior(prior)), o.sequence};
     }
     if (uses(o, EngineKind::Eigenwalker)) {
       fold.eigenwalker.model = buildModelWithoutSubject(walkers, fold.subject, o.model);

@@ -35,7 +35,8 @@ const Fold& fold() {
     const DatasetTrial& trial = ds.trials.front();
     Fold out;
     out.eigenwalker.model = buildModelWithoutSubject(makeWalkers(ds), trial.info.subject);
-    out.snippet.prior = prepareSnippetPrior(trainSnippetPrior(snippetTrainingTrials(ds, trial.info.subject), {}));
+    out.snippet.prior = std::make_shared<const PreparedSnippetPrior>(
+        prepareSnippetPrior(trainSnippetPrior(snippetTrainingTrials(ds, trial.info.subject), {})));
     const double rate = trial.trial.joints.rateHz;
     out.inPlace30 = resampleFrames(trial.trial.joints.positionsMm, rate, 30.0);
     out.overground30 = resampleFrames(framesWithProgression(trial.trial), rate, 30.0);

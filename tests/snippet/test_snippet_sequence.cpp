@@ -7,6 +7,7 @@
 #include "core/common/errors.h"
 #include "core/engine/fourier.h"
 #include "core/engine/projection.h"
+#include "core/engines/engine.h"
 #include "core/experiments/snippet_experiment.h"
 #include "tests/common/test_support.h"
 
@@ -31,13 +32,7 @@ const HeldOut& heldOut() {
 }
 
 double clipMpjpe(const Eigen::MatrixXd& rec, const Eigen::MatrixXd& truth) {
-  const Eigen::MatrixXd d = rec - truth;
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
-  for (int j = 0; j < 15; ++j) offset += d.middleCols(3 * j, 3).colwise().mean().transpose() / 15.0;
-  double sum = 0.0;
-  for (Eigen::Index f = 0; f < d.rows(); ++f)
-    for (int j = 0; j < 15; ++j) sum += (d.block<1, 3>(f, 3 * j).transpose() - offset).norm();
-  return sum / static_cast<double>(d.rows() * 15);
+  return clipErrors(rec, truth, 0.0).mpjpeMm;
 }
 
 TEST(SnippetSequence, HalfSecondClipOfAHeldOutWalkerIsReconstructed) {

@@ -77,7 +77,7 @@ void reconstructWithSnippets(const Document& doc, const ReconKey& key, const Wal
   in.rateHz = 30.0;
   if (!key.settings.unknownAngle) in.alphaDeg = key.settings.alphaDeg;
   in.name = walker.id;
-  const EngineResult e = reconstructWithEngine(SnippetEngine{*prior.prior, {}}, in);
+  const EngineResult e = reconstructWithEngine(SnippetEngine{prior.prior, {}}, in);
   r.estimate = Reconstruction{};
   r.estimate.alphaDeg = e.alphaDeg;
   r.estimate.w = fourierSummary(e.framesMm, 30.0, omega);

@@ -43,6 +43,21 @@ void drawClipStarts(const AppState& s, const FrameContext& ctx) {
   drawPlot("##starts", ImGui::GetContentRegionAvail(), spec, series, ctx.scale);
 }
 
+// The view-angle axis both plots share: a faint frame from a to b, a line every 90° from
+// −180° to 180° and its label under b (the labels kept inside [labelLeft, b.x]).
+void drawCircleAxis(ImDrawList* dl, ImVec2 a, ImVec2 b, float labelLeft, float scale) {
+  const auto X = [&](double deg) { return a.x + static_cast<float>((deg + 180.0) / 360.0) * (b.x - a.x); };
+  dl->AddRectFilled(a, b, IM_COL32(255, 255, 255, 8));
+  for (int deg = -180; deg <= 180; deg += 90) {
+    dl->AddLine(ImVec2(X(deg), a.y), ImVec2(X(deg), b.y), IM_COL32(255, 255, 255, 28));
+    char buf[16];
+    std::snprintf(buf, sizeof buf, "%d°", deg);
+    const float tw = ImGui::CalcTextSize(buf).x;
+    dl->AddText(ImVec2(std::clamp(X(deg) - tw * 0.5f, labelLeft, b.x - tw), b.y + 2.0f * scale),
+                IM_COL32(150, 160, 175, 255), buf);
+  }
+}
+
 // The snippet engine over the circle: each snippet's own estimated α (a dot per snippet, in time
 // order top to bottom), the clip's (their circular median) and the true α.
 void drawSnippetAngles(const ReconBase& r, const FrameContext& ctx) {
@@ -56,15 +71,7 @@ void drawSnippetAngles(const ReconBase& r, const FrameContext& ctx) {
   const ImVec2 a{p0.x + 6.0f * ctx.scale, p0.y + 4.0f * ctx.scale};
   const ImVec2 b{p0.x + avail.x - 6.0f * ctx.scale, p0.y + avail.y - textH - 6.0f * ctx.scale};
   auto X = [&](double deg) { return a.x + static_cast<float>((deg + 180.0) / 360.0) * (b.x - a.x); };
-  dl->AddRectFilled(a, b, IM_COL32(255, 255, 255, 8));
-  const ImU32 gridC = IM_COL32(255, 255, 255, 28), labelC = IM_COL32(150, 160, 175, 255);
-  for (int deg = -180; deg <= 180; deg += 90) {
-    dl->AddLine(ImVec2(X(deg), a.y), ImVec2(X(deg), b.y), gridC);
-    char buf[16];
-    std::snprintf(buf, sizeof buf, "%d°", deg);
-    const float tw = ImGui::CalcTextSize(buf).x;
-    dl->AddText(ImVec2(std::clamp(X(deg) - tw * 0.5f, p0.x, b.x - tw), b.y + 2.0f * ctx.scale), labelC, buf);
-  }
+  drawCircleAxis(dl, a, b, p0.x, ctx.scale);
   dl->AddLine(ImVec2(X(r.alphaTrueDeg), a.y), ImVec2(X(r.alphaTrueDeg), b.y), toImU32(palette::kCamera),
               1.5f * ctx.scale);
   dl->AddLine(ImVec2(X(r.alphaUsedDeg), a.y), ImVec2(X(r.alphaUsedDeg), b.y), toImU32(palette::kCameraEstimate),
@@ -120,16 +127,9 @@ void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
         const double t = (std::log10(std::max(j, 1e-3)) - lo) / (hi - lo);
         return b.y - static_cast<float>(t) * (b.y - a.y);
       };
-      dl->AddRectFilled(a, b, IM_COL32(255, 255, 255, 8));
+      drawCircleAxis(dl, a, b, p0.x, ctx.scale);
       const ImU32 gridC = IM_COL32(255, 255, 255, 28);
       const ImU32 labelC = IM_COL32(150, 160, 175, 255);
-      for (int deg = -180; deg <= 180; deg += 90) {
-        dl->AddLine(ImVec2(X(deg), a.y), ImVec2(X(deg), b.y), gridC);
-        char buf[16];
-        std::snprintf(buf, sizeof buf, "%d°", deg);
-        const float tw = ImGui::CalcTextSize(buf).x;
-        dl->AddText(ImVec2(std::clamp(X(deg) - tw * 0.5f, p0.x, b.x - tw), b.y + 2.0f * ctx.scale), labelC, buf);
-      }
       for (int e = static_cast<int>(lo); e <= static_cast<int>(hi); ++e) {
         const float y = Y(std::pow(10.0, e));
         dl->AddLine(ImVec2(a.x, y), ImVec2(b.x, y), gridC);
