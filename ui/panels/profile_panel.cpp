@@ -44,12 +44,15 @@ void drawClipStarts(const AppState& s, const FrameContext& ctx) {
 }
 
 // The view-angle axis both plots share: a faint frame from a to b, a line every 90° from
-// −180° to 180° and its label under b (the labels kept inside [labelLeft, b.x]).
+// −180° to 180° and labels under b (the labels kept inside [labelLeft, b.x]).
 void drawCircleAxis(ImDrawList* dl, ImVec2 a, ImVec2 b, float labelLeft, float scale) {
   const auto X = [&](double deg) { return a.x + static_cast<float>((deg + 180.0) / 360.0) * (b.x - a.x); };
   dl->AddRectFilled(a, b, IM_COL32(255, 255, 255, 8));
+  // A narrow panel labels every 180° only: five labels would run into each other.
+  const bool everyQuarter = b.x - a.x > 6.0f * ImGui::CalcTextSize("-180°").x;
   for (int deg = -180; deg <= 180; deg += 90) {
     dl->AddLine(ImVec2(X(deg), a.y), ImVec2(X(deg), b.y), IM_COL32(255, 255, 255, 28));
+    if (!everyQuarter && deg % 180 != 0) continue;
     char buf[16];
     std::snprintf(buf, sizeof buf, "%d°", deg);
     const float tw = ImGui::CalcTextSize(buf).x;
