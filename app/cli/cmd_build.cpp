@@ -69,7 +69,11 @@ int runBuildSnippetPrior(const BuildArgs& a) {
 }
 
 int runBuild(const BuildArgs& a) {
-  if (parseEngineKind(a.engine, "--engine") == EngineKind::Snippet) return runBuildSnippetPrior(a);
+  const EngineKind engine = parseEngineKind(a.engine, "--engine");
+  if (engine == EngineKind::Snippet) return runBuildSnippetPrior(a);
+  if (engine == EngineKind::Skeleton)
+    throw Error(ErrorKind::BadArgument, "--engine", "",
+                "the skeleton engine learns nothing from data (geometry and bone lengths only): there is nothing to build");
   if (a.clusters > 0 || a.emIterations > 0)
     throw Error(ErrorKind::BadArgument, a.clusters > 0 ? "--clusters" : "--em-iterations", "",
                 "applies to the snippet prior only (--engine snippet)");
@@ -99,7 +103,7 @@ void addBuildCommand(CLI::App& app, int& exitCode) {
                                  "Build an eigenwalker model (SPEC §4) or, with --engine snippet, a snippet prior "
                                  "(docs/SNIPPETS.md) from walking trials and save it");
   cmd->add_option("--engine", args->engine, "eigenwalker (a .ewm model) or snippet (a .ewsp prior)")
-      ->check(CLI::IsMember({"eigenwalker", "snippet"}))
+      ->check(CLI::IsMember({"eigenwalker", "snippet", "skeleton"}))
       ->capture_default_str();
   cmd->add_option("--data", args->data, "Trial files, folders (recursive) or manifest CSVs")->required();
   cmd->add_option("--mapping", args->mapping,

@@ -115,8 +115,10 @@ std::vector<std::string> experimentsForEngines(const EvaluateArgs& a) {
     const auto e = experimentFromName(n);
     if (e && *e != Experiment::Snippet && *e != Experiment::SnippetClusters)
       throw Error(ErrorKind::BadArgument, "--engine", "",
-                  "experiment '" + n + "' is the eigenwalker's (Zhang & Troje 2007); the snippet engine's are "
-                  "'snippet' and 'snippet-clusters'");
+                  "experiment '" + n + "' is the eigenwalker's (Zhang & Troje 2007); the other engines' are "
+                  "'snippet' (every engine) and 'snippet-clusters' (the snippet prior)");
+    if (e && *e == Experiment::SnippetClusters && !asksFor(a, EngineKind::Snippet))
+      throw Error(ErrorKind::BadArgument, "--engine", "", "experiment 'snippet-clusters' is the snippet prior's");
   }
   return a.experiments;
 }
@@ -259,10 +261,11 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_flag("--no-plots", args->noPlots, "Skip the PNG figures");
   cmd->add_option("--engine", args->engines,
-                  "Engines to evaluate (repeatable; default all): eigenwalker runs the paper's experiments, "
-                  "snippet the snippet engine's ('snippet', 'snippet-clusters'); experiment 'snippet' scores "
-                  "each engine asked for")
-      ->check(CLI::IsMember({"eigenwalker", "snippet"}));
+                  "Engines to evaluate (repeatable; default eigenwalker and snippet): eigenwalker runs the "
+                  "paper's experiments, snippet the snippet engine's ('snippet', 'snippet-clusters'), skeleton "
+                  "(Zou et al. 2009, with each walker's own bone lengths) experiment 'snippet'; experiment "
+                  "'snippet' scores each engine asked for")
+      ->check(CLI::IsMember({"eigenwalker", "snippet", "skeleton"}));
   cmd->callback([args, &exitCode] {
     try {
       exitCode = runEvaluate(*args);

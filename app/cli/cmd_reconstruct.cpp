@@ -290,7 +290,12 @@ int runReconstructSnippet(const ReconstructArgs& a) {
 // [SECTION] The eigenwalker
 
 int runReconstruct(const ReconstructArgs& a) {
-  if (parseEngineKind(a.engine, "--engine") == EngineKind::Snippet) return runReconstructSnippet(a);
+  const EngineKind engine = parseEngineKind(a.engine, "--engine");
+  if (engine == EngineKind::Snippet) return runReconstructSnippet(a);
+  if (engine == EngineKind::Skeleton)
+    throw Error(ErrorKind::BadArgument, "--engine", "",
+                "the skeleton engine is not in 'reconstruct' yet; it is scored by 'evaluate --experiment snippet "
+                "--engine skeleton'");
   if (!a.prior.empty())
     throw Error(ErrorKind::BadArgument, "--prior", "", "a snippet prior applies to --engine snippet only");
   if (a.unknownCamera) {
@@ -391,7 +396,7 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
       "Writes the 15-joint 3D CSV over the input's duration.");
   cmd->add_option("--engine", args->engine,
                   "eigenwalker (Zhang & Troje 2007) or snippet (Howe, Leventon & Freeman 1999; docs/SNIPPETS.md)")
-      ->check(CLI::IsMember({"eigenwalker", "snippet"}))
+      ->check(CLI::IsMember({"eigenwalker", "snippet", "skeleton"}))
       ->capture_default_str();
   cmd->add_option("--prior", args->prior,
                   "Snippet prior from `build --engine snippet` (default: learnt from the embedded synthetic "

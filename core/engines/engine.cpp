@@ -1,7 +1,10 @@
 #include "core/engines/engine.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+
+#include <Eigen/Geometry>
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
@@ -93,12 +96,117 @@ EngineResult runSnippet(const SnippetEngine& engine, const ViewInput& input) {
   return out;
 }
 
+EngineResult runSkeleton(const SkeletonEngine& engine, const ViewInput& input) {
+  EngineResult out;
+  out.engine = EngineKind::Skeleton;
+  const BoneLengths bones = engine.bones ? *engine.bones : estimateBoneLengthsFromView(input.uvMm, input.name);
+  std::vector<JointRays> rays;
+  std::vector<Eigen::Vector3d> roots;
+  const int pelvis = index(Joint::Pelvis);
+  for (Eigen::Index f = 0; f < input.uvMm.rows(); ++f) {
+    rays.push_back(orthographicRays(input.uvMm.row(f)));
+    roots.push_back(rays.back().origin.col(pelvis));
+  }
+  SkeletonSequence seq = [&] {
+    try {
+      return solveSkeletonSequence(rays, roots, bones, input.rateHz, engine.solve);
+    } catch (const Error& e) {
+      if (!input.name.empty() && e.file() == "skeleton")
+        throw Error(e.kind(), input.name, e.position(), "skeleton: " + e.problem());
+      throw;
+    }
+  }();
+  out.alphaDeg = input.alphaDeg ? *input.alphaDeg : viewAngleFromPoses(seq.framesMm);
+  out.alphaEstimated = !input.alphaDeg;
+  out.framesMm = viewFrameToWalker(seq.framesMm, out.alphaDeg);
+  out.reprojectionRmsMm = reprojectionRms(out.framesMm, out.alphaDeg, input.uvMm);
+  if (seq.clampedBoneFrames > 0) {
+    const auto worst = std::max_element(seq.clampedFrames.begin(), seq.clampedFrames.end()) - seq.clampedFrames.begin();
+    const auto [a, b] = kBones[static_cast<size_t>(worst)];
+    out.warnings.push_back("skeleton: " + std::to_string(seq.clampedBoneFrames) + " of " +
+                           std::to_string(kBoneCount * input.uvMm.rows()) +
+                           " bone-frames looked longer than their bone and were clamped (most: " +
+                           std::string(jointName(a)) + "–" + std::string(jointName(b)) + ", " +
+                           std::to_string(seq.clampedFrames[static_cast<size_t>(worst)]) + " frames)");
+  }
+  out.skeleton = std::move(seq);
+  return out;
+}
+
+double percentile(std::vector<double> v, double p) {
+  std::sort(v.begin(), v.end());
+  const double at = p * static_cast<double>(v.size() - 1);
+  const auto lo = static_cast<size_t>(std::floor(at));
+  const size_t hi = std::min(lo + 1, v.size() - 1);
+  return v[lo] + (at - static_cast<double>(lo)) * (v[hi] - v[lo]);
+}
+
 }  // namespace
+
+BoneLengths estimateBoneLengthsFromView(const Eigen::Ref<const Eigen::MatrixXd>& uvMm, const std::string& name) {
+  if (uvMm.cols() != kDims2)
+    throw Error(ErrorKind::BadArgument, name, "", "bone lengths from a view need T × 30 frames");
+  BoneLengths bones;
+  for (int b = 0; b < kBoneCount; ++b) {
+    const auto [a, c] = kBones[static_cast<size_t>(b)];
+    std::vector<double> lengths;
+    for (Eigen::Index f = 0; f < uvMm.rows(); ++f) {
+      const double l = std::hypot(uvMm(f, 2 * index(a)) - uvMm(f, 2 * index(c)),
+                                  uvMm(f, 2 * index(a) + 1) - uvMm(f, 2 * index(c) + 1));
+      if (std::isfinite(l)) lengths.push_back(l);
+    }
+    if (lengths.empty())
+      throw Error(ErrorKind::BadData, name, "",
+                  "skeleton: the bone " + std::string(jointName(a)) + "–" + std::string(jointName(c)) +
+                      " is never seen, so its length cannot be estimated from the view");
+    bones.mm[static_cast<size_t>(b)] = percentile(std::move(lengths), 0.95);
+  }
+  for (int b = 0; b < kBoneCount; ++b) {  // left/right pairs: the larger for both
+    const auto [a, c] = kBones[static_cast<size_t>(b)];
+    for (int o = 0; o < kBoneCount; ++o) {
+      const auto [ma, mc] = kBones[static_cast<size_t>(o)];
+      if (o != b && ma == mirrorJoint(a) && mc == mirrorJoint(c))
+        bones.mm[static_cast<size_t>(b)] = std::max(bones.mm[static_cast<size_t>(b)], bones.mm[static_cast<size_t>(o)]);
+    }
+  }
+  return bones;
+}
+
+Eigen::MatrixXd viewFrameToWalker(const Eigen::Ref<const Eigen::MatrixXd>& viewFramesMm, double alphaDeg) {
+  const double a = degToRad(alphaDeg), c = std::cos(a), s = std::sin(a);
+  Eigen::MatrixXd out = viewFramesMm;
+  for (Eigen::Index f = 0; f < out.rows(); ++f) {
+    for (int j = 0; j < kJointCount; ++j) {
+      const double u = viewFramesMm(f, 3 * j), d = viewFramesMm(f, 3 * j + 1);
+      out(f, 3 * j) = u * c - d * s;
+      out(f, 3 * j + 1) = u * s + d * c;
+    }
+  }
+  return out;
+}
+
+double viewAngleFromPoses(const Eigen::Ref<const Eigen::MatrixXd>& viewFramesMm) {
+  double sumSin = 0.0, sumCos = 0.0;
+  const auto at = [&](Eigen::Index f, Joint j) {
+    return Eigen::Vector3d(viewFramesMm.row(f).segment<3>(3 * index(j)).transpose());
+  };
+  for (Eigen::Index f = 0; f < viewFramesMm.rows(); ++f) {
+    const Eigen::Vector3d up = at(f, Joint::Sternum) - at(f, Joint::Pelvis);
+    const Eigen::Vector3d right = at(f, Joint::RHip) - at(f, Joint::LHip);
+    const Eigen::Vector3d forward = up.cross(right);
+    const double n = std::hypot(forward(0), forward(1));
+    if (!(n > 0.0)) continue;
+    sumSin += forward(0) / n;
+    sumCos += forward(1) / n;
+  }
+  return std::atan2(sumSin, sumCos) * 180.0 / std::numbers::pi;
+}
 
 const char* engineName(EngineKind kind) {
   switch (kind) {
     case EngineKind::Eigenwalker: return "eigenwalker";
     case EngineKind::Snippet: return "snippet";
+    case EngineKind::Skeleton: return "skeleton";
   }
   return "?";
 }
@@ -113,7 +221,8 @@ EngineKind parseEngineKind(const std::string& name, const std::string& where) {
 }
 
 EngineKind engineKind(const Engine& engine) {
-  return std::holds_alternative<EigenwalkerEngine>(engine) ? EngineKind::Eigenwalker : EngineKind::Snippet;
+  if (std::holds_alternative<EigenwalkerEngine>(engine)) return EngineKind::Eigenwalker;
+  return std::holds_alternative<SnippetEngine>(engine) ? EngineKind::Snippet : EngineKind::Skeleton;
 }
 
 Eigen::MatrixXd removeImageDrift(const Eigen::Ref<const Eigen::MatrixXd>& uvMm, double rateHz) {
@@ -166,6 +275,7 @@ ClipErrors clipErrors(const Eigen::Ref<const Eigen::MatrixXd>& reconstructedMm,
 EngineResult reconstructWithEngine(const Engine& engine, const ViewInput& input) {
   checkInput(input);
   if (const auto* e = std::get_if<EigenwalkerEngine>(&engine)) return runEigenwalker(*e, input);
+  if (const auto* e = std::get_if<SkeletonEngine>(&engine)) return runSkeleton(*e, input);
   return runSnippet(std::get<SnippetEngine>(engine), input);
 }
 

@@ -9,12 +9,18 @@
 //                                eigenwalker model at the known view or over the circle
 //   snippet      core/snippet/  Howe, Leventon & Freeman 1999: overlapping 11-frame
 //                                snippets, MAP under a mixture-of-PPCA prior, stitched
+//   skeleton     core/skeleton/ Zou et al. 2009: every frame from geometry alone — each
+//                                joint on its ray, every bone its length, depth-first from
+//                                the pelvis; each bone's two depths chosen by the most
+//                                plausible pose and by continuity (skeleton_solve.h)
 //
 // Input: u, v in mm at the walker (v up), as SPEC §5's orthographic view C(α) renders the
 // walker's frame. The image may show the walker moving across it (overground) or walking
 // in place; the eigenwalker removes the pelvis's straight-line image drift before its
 // Fourier fit (a no-op for a view of SPEC §2's canonical frames, whose pelvis has no trend),
-// the snippet engine keeps it (its prior was learnt with the progression).
+// the snippet engine keeps it (its prior was learnt with the progression); the skeleton
+// engine places each frame's pelvis where the image shows it, at depth 0 (an orthographic
+// view says nothing of depth: its walker never moves along the line of sight).
 // Output frames are in the walker's frame (x right, y forward, z up; mm): the eigenwalker's
 // walk in place (canonical frame), the snippet engine's with whatever progression the image
 // and its prior imply. Compare them after removing each clip's mean translation or the
@@ -32,15 +38,16 @@
 #include "core/engine/reconstruction.h"
 #include "core/snippet/snippet_data.h"
 #include "core/snippet/snippet_fit.h"
+#include "core/skeleton/skeleton_solve.h"
 #include "core/snippet/snippet_sequence.h"
 
 namespace ew {
 
-enum class EngineKind { Eigenwalker, Snippet };
+enum class EngineKind { Eigenwalker, Snippet, Skeleton };
 
-inline constexpr EngineKind kEngineKinds[] = {EngineKind::Eigenwalker, EngineKind::Snippet};
+inline constexpr EngineKind kEngineKinds[] = {EngineKind::Eigenwalker, EngineKind::Snippet, EngineKind::Skeleton};
 
-// "eigenwalker", "snippet": the names the CLI's --engine and the viewer use.
+// "eigenwalker", "snippet", "skeleton": the names the CLI's --engine and the viewer use.
 const char* engineName(EngineKind kind);
 // Throws Error(BadArgument) naming `where` (e.g. "--engine") and the known names.
 EngineKind parseEngineKind(const std::string& name, const std::string& where);
@@ -58,7 +65,14 @@ struct SnippetEngine {
   SnippetSequenceOptions sequence;
 };
 
-using Engine = std::variant<EigenwalkerEngine, SnippetEngine>;
+// Needs no training. The bone lengths are the walker's own when known (the paper measures
+// the performer); unset, each is estimated from the view itself (estimateBoneLengthsFromView).
+struct SkeletonEngine {
+  std::optional<BoneLengths> bones;
+  SkeletonSolveOptions solve;
+};
+
+using Engine = std::variant<EigenwalkerEngine, SnippetEngine, SkeletonEngine>;
 
 EngineKind engineKind(const Engine& engine);
 
@@ -90,6 +104,7 @@ struct EngineResult {
   std::vector<std::string> warnings;
   std::optional<EigenwalkerDiagnostics> eigenwalker;
   std::optional<SnippetSequence> snippet;
+  std::optional<SkeletonSequence> skeleton;   // in the view's frame (U, D, V; skeleton_tree.h)
 };
 
 // Throws what the engine throws — typed errors naming input.name: the eigenwalker's
@@ -114,6 +129,24 @@ ClipErrors clipErrors(const Eigen::Ref<const Eigen::MatrixXd>& reconstructedMm,
 // The eigenwalker engine's image detrending: subtracts from every u the least-squares line
 // through the pelvis's u over the frames that see it (nothing when fewer than 2 do).
 Eigen::MatrixXd removeImageDrift(const Eigen::Ref<const Eigen::MatrixXd>& uvMm, double rateHz);
+
+// Bone lengths from an orthographic view alone (T × 30, mm): a bone's image is never
+// longer than the bone, and walking turns every limb and the trunk parallel to the image
+// at some point of the cycle, so each is the 95th percentile of its image length over the
+// frames, the larger of a left/right pair for both. A bone along the line of sight the
+// whole time (the hips and shoulders seen from the side) comes out short: its joints are
+// then clamped to their parent's depth. Throws Error(BadData) naming `name` when a bone is
+// never seen.
+BoneLengths estimateBoneLengthsFromView(const Eigen::Ref<const Eigen::MatrixXd>& uvMm, const std::string& name);
+
+// The view's frame (U along the image's horizontal, D away from the camera, V up) turned
+// into the walker's frame of SPEC §2 by the view angle α (inverse of SPEC §5): T × 45.
+Eigen::MatrixXd viewFrameToWalker(const Eigen::Ref<const Eigen::MatrixXd>& viewFramesMm, double alphaDeg);
+
+// The view angle at which a pose seen in the view's frame walks forward: the body's forward
+// axis (up × right, from the pelvis→sternum and left→right hip axes) is the walker's +y,
+// seen at α = atan2(forward_U, forward_D); the circular mean over the frames, degrees.
+double viewAngleFromPoses(const Eigen::Ref<const Eigen::MatrixXd>& viewFramesMm);
 
 // [SECTION] Walkers known only as a Fourier vector (the viewer's population, a model)
 

@@ -105,6 +105,15 @@ void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& cli
       out.rows.push_back(engineRow(fold, "snippet MAP", clipName, alpha, clip.withProgression, [&] {
         return reconstructWithEngine(fold.snippet, knownView(fold, clip.withProgression, alpha, clip.strideHz)).framesMm;
       }, out, phaseFit != nullptr));
+    // The skeleton engine is given the walker's own bone lengths (the paper measures its
+    // performer) and the frames in place: an orthographic view says nothing of depth, so
+    // its walker never moves along the line of sight.
+    if (uses(o, EngineKind::Skeleton))
+      out.rows.push_back(engineRow(fold, "skeleton", clipName, alpha, clip.withoutProgression, [&] {
+        SkeletonEngine skeleton;
+        skeleton.bones = boneLengthsFromFrames(clip.withoutProgression, fold.subject);
+        return reconstructWithEngine(skeleton, knownView(fold, clip.withoutProgression, alpha, clip.strideHz)).framesMm;
+      }, out, phaseFit != nullptr));
     if (uses(o, EngineKind::Eigenwalker))
       out.rows.push_back(engineRow(fold, "eigenwalker MAP", clipName, alpha, clip.withoutProgression, [&] {
         return reconstructWithEngine(fold.eigenwalker, knownView(fold, clip.withoutProgression, alpha, clip.strideHz))

@@ -8,6 +8,8 @@
 //   snippet engine   the prior learnt from every trial of the other subjects, the clip cut
 //                    into 11-frame snippets every 4 frames, MAP per snippet, stitched, depth
 //                    slip removed by ground contact;
+//   skeleton         (evaluate --engine skeleton) every frame from geometry alone with the
+//                    walker's own bone lengths (core/skeleton, Zou et al. 2009);
 //   eigenwalker MAP  the 2D Fourier fit of the same frames without progression (as the
 //                    eigenwalker's experiments feed it) at the walker's ω, MAP at the known
 //                    view with the fold's model, synthesised at every frame.
@@ -42,7 +44,7 @@ struct SnippetExperimentOptions {
   int phaseBins = 20;
   std::string wholeTrialSuffix = "05_01.bvh";  // a trial loaded uncropped ("" = none)
   int threads = 1;
-  // The engines scored (evaluate --engine): both by default; the unknown-view part is the
+  // The engines scored (evaluate --engine): these two by default; the unknown-view part is the
   // snippet engine's (the eigenwalker's is experiment unknown-view).
   std::vector<EngineKind> engines{EngineKind::Eigenwalker, EngineKind::Snippet};
 };

@@ -119,5 +119,30 @@ TEST_F(EngineCli, EvaluateScoresTheEnginesAskedFor) {
   EXPECT_FALSE(fs::exists(root_ / "ev2"));
 }
 
+// The skeleton engine (core/skeleton): scored by experiment "snippet"; nothing to build;
+// not in reconstruct yet, and each says so instead of running another engine.
+TEST_F(EngineCli, TheSkeletonEngineIsScoredAndOtherwiseSaysWhereItIs) {
+  ASSERT_EQ(runCli("synth --count 3 --seed 5 --cycles 2 --out three/", root_).exitCode, 0);
+  const test::ShellRun r =
+      runCli("evaluate --data three/walkers.csv --no-plots --engine skeleton --experiment snippet --out sk", root_);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string csv = test::readTextFile(root_ / "sk" / "snippet_engines.csv");
+  EXPECT_NE(csv.find(",skeleton,"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("MAP"), std::string::npos) << csv;
+  const std::pair<std::string, std::string> refusals[] = {
+      {"build --engine skeleton --data three/walkers.csv --out s.ewm", "nothing to build"},
+      {"reconstruct --engine skeleton --input three/SYN001_T1.csv --out r.csv", "not in 'reconstruct' yet"},
+      {"evaluate --data three/walkers.csv --engine skeleton --experiment snippet-clusters --out sk2",
+       "snippet prior's"}};
+  for (const auto& [args, message] : refusals) {
+    const test::ShellRun no = runCli(args, root_);
+    EXPECT_NE(no.exitCode, 0) << args;
+    EXPECT_NE(no.err.find(message), std::string::npos) << args << "\n" << no.err;
+  }
+  EXPECT_FALSE(fs::exists(root_ / "s.ewm"));
+  EXPECT_FALSE(fs::exists(root_ / "sk2"));
+  EXPECT_FALSE(fs::exists(root_ / "r.csv"));
+}
+
 }  // namespace
 }  // namespace ew

@@ -1,0 +1,112 @@
+#include "core/skeleton/skeleton_tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/common/errors.h"
+
+namespace ew {
+
+namespace {
+
+Eigen::Vector3d jointOf(const Eigen::Ref<const Eigen::MatrixXd>& frames, Eigen::Index t, Joint j) {
+  return frames.row(t).segment<3>(3 * index(j)).transpose();
+}
+
+double median(std::vector<double> v) {
+  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
+  std::nth_element(v.begin(), mid, v.end());
+  if (v.size() % 2 == 1) return *mid;
+  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
+}
+
+}  // namespace
+
+BoneLengths boneLengthsFromFrames(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, const std::string& name) {
+  if (framesMm.cols() != kDims3) {
+    throw Error(ErrorKind::BadArgument, name, "", "bone lengths need T × 45 frames, got " +
+                                                      std::to_string(framesMm.cols()) + " columns");
+  }
+  BoneLengths bones;
+  for (int b = 0; b < kBoneCount; ++b) {
+    const auto [a, c] = kBones[static_cast<size_t>(b)];
+    std::vector<double> lengths;
+    for (Eigen::Index t = 0; t < framesMm.rows(); ++t) {
+      const double l = (jointOf(framesMm, t, a) - jointOf(framesMm, t, c)).norm();
+      if (std::isfinite(l)) lengths.push_back(l);
+    }
+    if (lengths.empty()) {
+      throw Error(ErrorKind::BadData, name, "",
+                  "no frame sees both ends of the bone " + std::string(jointName(a)) + "–" +
+                      std::string(jointName(c)) + ", so its length is unknown");
+    }
+    bones.mm[static_cast<size_t>(b)] = median(std::move(lengths));
+  }
+  return bones;
+}
+
+Eigen::MatrixXd withBoneLengths(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, const BoneLengths& bones) {
+  Eigen::MatrixXd out = framesMm;
+  for (Eigen::Index t = 0; t < out.rows(); ++t) {
+    for (const TreeBone& tb : kTreeOrder) {
+      const Eigen::Vector3d along = jointOf(framesMm, t, tb.child) - jointOf(framesMm, t, tb.parent);
+      const Eigen::Vector3d parent = out.row(t).segment<3>(3 * index(tb.parent)).transpose();
+      out.row(t).segment<3>(3 * index(tb.child)) =
+          (parent + along.normalized() * bones.mm[static_cast<size_t>(tb.bone)]).transpose();
+    }
+  }
+  return out;
+}
+
+JointRays pinholeRays(const Eigen::Ref<const Eigen::RowVectorXd>& uvPx, const PinholeIntrinsics& camera) {
+  JointRays rays;
+  rays.origin.setZero();
+  for (int j = 0; j < kJointCount; ++j) {
+    const Eigen::Vector3d d((uvPx(2 * j) - camera.cxPx) / camera.fxPx, (uvPx(2 * j + 1) - camera.cyPx) / camera.fyPx,
+                            1.0);
+    rays.direction.col(j) = d.normalized();
+  }
+  return rays;
+}
+
+JointRays orthographicRays(const Eigen::Ref<const Eigen::RowVectorXd>& uvMm) {
+  JointRays rays;
+  for (int j = 0; j < kJointCount; ++j) {
+    rays.origin.col(j) = Eigen::Vector3d(uvMm(2 * j), 0.0, uvMm(2 * j + 1));
+    rays.direction.col(j) = Eigen::Vector3d::UnitY();
+  }
+  return rays;
+}
+
+TreePlacement placeTree(const JointRays& rays, const Eigen::Vector3d& rootMm, const BoneLengths& bones,
+                        const std::array<int, kBoneCount>& signs) {
+  TreePlacement p;
+  p.joints.col(index(Joint::Pelvis)) = rootMm;
+  for (const TreeBone& tb : kTreeOrder) {
+    const int c = index(tb.child);
+    const auto b = static_cast<size_t>(tb.bone);
+    const Eigen::Vector3d toParent = p.joints.col(index(tb.parent)) - rays.origin.col(c);
+    const double t0 = rays.direction.col(c).dot(toParent);
+    const double rho2 = toParent.squaredNorm() - t0 * t0;
+    const double disc = bones.mm[b] * bones.mm[b] - rho2;
+    p.clamped[b] = disc < 0.0;
+    p.halfGapMm[b] = disc > 0.0 ? std::sqrt(disc) : 0.0;
+    p.joints.col(c) = rays.origin.col(c) + (t0 + signs[b] * p.halfGapMm[b]) * rays.direction.col(c);
+  }
+  return p;
+}
+
+std::array<int, kBoneCount> branchSigns(const JointRays& rays, const JointMatrix& joints) {
+  std::array<int, kBoneCount> signs{};
+  for (const TreeBone& tb : kTreeOrder) {
+    const int c = index(tb.child);
+    const Eigen::Vector3d d = rays.direction.col(c);
+    const double t0 = d.dot(joints.col(index(tb.parent)) - rays.origin.col(c));
+    const double t = d.dot(joints.col(c) - rays.origin.col(c));
+    signs[static_cast<size_t>(tb.bone)] = t >= t0 ? 1 : -1;
+  }
+  return signs;
+}
+
+}  // namespace ew
