@@ -91,7 +91,7 @@ struct Seen {
 Seen seenThrough(const Camera& c, double noisePx, unsigned seed) {
   const RigidWalk& w = rigidWalk();
   std::mt19937 rng(seed);
-  std::normal_distribution<double> noise(0.0, noisePx);
+  std::normal_distribution<double> noise(0.0, noisePx > 0.0 ? noisePx : 1.0);  // a zero σ is undefined
   Seen s;
   s.options.upMm = c.worldToCamera * Eigen::Vector3d::UnitZ();
   for (Eigen::Index f = 0; f < w.framesMm.rows(); ++f) {
