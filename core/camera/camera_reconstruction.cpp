@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/common/errors.h"
+#include "core/common/statistics.h"
 #include "core/engine/fourier.h"
 #include "core/engine/joint_completion.h"
 #include "core/engine/projection.h"
@@ -457,12 +458,6 @@ bool finishBest(const Problem& p, std::vector<Candidate>& results, const CameraF
   fillOutputs(p, best.theta, fit);
   results.front().second.reprojectionRmsPx = fit.reprojectionRmsPx;
   return true;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return kNaN;
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
 }
 
 // `px` with the detector's glitches set to NaN; `rejected` counts them. A glitch jumps: its

@@ -8,6 +8,7 @@
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
+#include "core/common/statistics.h"
 #include "core/engine/fourier.h"
 #include "core/engine/joint_completion.h"
 #include "core/engine/projection.h"
@@ -131,14 +132,6 @@ EngineResult runSkeleton(const SkeletonEngine& engine, const ViewInput& input) {
   }
   out.skeleton = std::move(seq);
   return out;
-}
-
-double percentile(std::vector<double> v, double p) {
-  std::sort(v.begin(), v.end());
-  const double at = p * static_cast<double>(v.size() - 1);
-  const auto lo = static_cast<size_t>(std::floor(at));
-  const size_t hi = std::min(lo + 1, v.size() - 1);
-  return v[lo] + (at - static_cast<double>(lo)) * (v[hi] - v[lo]);
 }
 
 }  // namespace

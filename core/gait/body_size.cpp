@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/common/errors.h"
+#include "core/common/statistics.h"
 #include "core/io/load_trial.h"
 
 namespace ew {
@@ -14,12 +15,6 @@ namespace {
 
 Eigen::Vector3d at(const Eigen::Ref<const Eigen::MatrixXd>& m, Eigen::Index frame, Joint j) {
   return m.block<1, 3>(frame, 3 * index(j)).transpose();
-}
-
-double median(std::vector<double> v) {
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
 }
 
 std::string metres(double mm) {

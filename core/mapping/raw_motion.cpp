@@ -5,14 +5,10 @@
 #include <cstdio>
 #include <vector>
 
+#include "core/common/statistics.h"
+
 namespace ew {
 namespace {
-
-double median(std::vector<double>& v) {
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 // Per-axis median of the markers seen in frame f; false when fewer than the minimum.
 bool frameCentre(const RawTrial& raw, int f, Eigen::Vector3d& centre) {

@@ -26,10 +26,8 @@ constexpr std::array<Limb, 4> kLimbs = {{{6, false}, {8, false}, {10, true}, {12
 int bitSign(int choice, int bit) { return (choice >> bit) & 1 ? -1 : 1; }
 
 Eigen::Vector3d placeChild(const JointRays& rays, const Eigen::Vector3d& parent, int child, double lengthMm, int sign) {
-  const Eigen::Vector3d toParent = parent - rays.origin.col(child);
-  const double t0 = rays.direction.col(child).dot(toParent);
-  const double disc = lengthMm * lengthMm - (toParent.squaredNorm() - t0 * t0);
-  return rays.origin.col(child) + (t0 + sign * (disc > 0.0 ? std::sqrt(disc) : 0.0)) * rays.direction.col(child);
+  const RayRoots r = rootsOnRay(rays, child, parent, lengthMm);
+  return rays.origin.col(child) + (r.t0 + sign * r.halfGap) * rays.direction.col(child);
 }
 
 // Places the tree entries [first, first + count) of one frame with their signs.
@@ -170,14 +168,12 @@ std::vector<int> relativeBranch(const std::vector<double>& gap) {
 std::vector<double> branchGaps(const std::vector<JointRays>& rays, const std::vector<Eigen::Vector3d>& roots,
                                const TreeBone& tb, double lengthMm) {
   std::vector<double> gap(rays.size());
-  const int p = index(tb.parent), c = index(tb.child);
+  const int p = index(tb.parent);
   for (size_t t = 0; t < rays.size(); ++t) {
     const JointRays& r = rays[t];
     const Eigen::Vector3d parent =
         r.origin.col(p) + r.direction.col(p).dot(roots[t] - r.origin.col(p)) * r.direction.col(p);
-    const Eigen::Vector3d toParent = parent - r.origin.col(c);
-    const double t0 = r.direction.col(c).dot(toParent);
-    gap[t] = std::sqrt(std::max(0.0, lengthMm * lengthMm - (toParent.squaredNorm() - t0 * t0)));
+    gap[t] = rootsOnRay(r, index(tb.child), parent, lengthMm).halfGap;
   }
   return gap;
 }

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/common/errors.h"
+#include "core/common/statistics.h"
 
 namespace ew {
 
@@ -12,13 +13,6 @@ namespace {
 
 Eigen::Vector3d jointOf(const Eigen::Ref<const Eigen::MatrixXd>& frames, Eigen::Index t, Joint j) {
   return frames.row(t).segment<3>(3 * index(j)).transpose();
-}
-
-double median(std::vector<double> v) {
-  const auto mid = v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  if (v.size() % 2 == 1) return *mid;
-  return 0.5 * (*mid + *std::max_element(v.begin(), mid));
 }
 
 }  // namespace
@@ -79,6 +73,16 @@ JointRays orthographicRays(const Eigen::Ref<const Eigen::RowVectorXd>& uvMm) {
   return rays;
 }
 
+RayRoots rootsOnRay(const JointRays& rays, int joint, const Eigen::Vector3d& parentMm, double lengthMm) {
+  const Eigen::Vector3d toParent = parentMm - rays.origin.col(joint);
+  RayRoots r;
+  r.t0 = rays.direction.col(joint).dot(toParent);
+  const double disc = lengthMm * lengthMm - (toParent.squaredNorm() - r.t0 * r.t0);
+  r.clamped = disc < 0.0;
+  r.halfGap = disc > 0.0 ? std::sqrt(disc) : 0.0;
+  return r;
+}
+
 TreePlacement placeTree(const JointRays& rays, const Eigen::Vector3d& rootMm, const BoneLengths& bones,
                         const std::array<int, kBoneCount>& signs) {
   TreePlacement p;
@@ -86,13 +90,10 @@ TreePlacement placeTree(const JointRays& rays, const Eigen::Vector3d& rootMm, co
   for (const TreeBone& tb : kTreeOrder) {
     const int c = index(tb.child);
     const auto b = static_cast<size_t>(tb.bone);
-    const Eigen::Vector3d toParent = p.joints.col(index(tb.parent)) - rays.origin.col(c);
-    const double t0 = rays.direction.col(c).dot(toParent);
-    const double rho2 = toParent.squaredNorm() - t0 * t0;
-    const double disc = bones.mm[b] * bones.mm[b] - rho2;
-    p.clamped[b] = disc < 0.0;
-    p.halfGapMm[b] = disc > 0.0 ? std::sqrt(disc) : 0.0;
-    p.joints.col(c) = rays.origin.col(c) + (t0 + signs[b] * p.halfGapMm[b]) * rays.direction.col(c);
+    const RayRoots r = rootsOnRay(rays, c, p.joints.col(index(tb.parent)), bones.mm[b]);
+    p.clamped[b] = r.clamped;
+    p.halfGapMm[b] = r.halfGap;
+    p.joints.col(c) = rays.origin.col(c) + (r.t0 + signs[b] * r.halfGap) * rays.direction.col(c);
   }
   return p;
 }
@@ -101,9 +102,8 @@ std::array<int, kBoneCount> branchSigns(const JointRays& rays, const JointMatrix
   std::array<int, kBoneCount> signs{};
   for (const TreeBone& tb : kTreeOrder) {
     const int c = index(tb.child);
-    const Eigen::Vector3d d = rays.direction.col(c);
-    const double t0 = d.dot(joints.col(index(tb.parent)) - rays.origin.col(c));
-    const double t = d.dot(joints.col(c) - rays.origin.col(c));
+    const double t0 = rootsOnRay(rays, c, joints.col(index(tb.parent)), 0.0).t0;
+    const double t = rays.direction.col(c).dot(joints.col(c) - rays.origin.col(c));
     signs[static_cast<size_t>(tb.bone)] = t >= t0 ? 1 : -1;
   }
   return signs;

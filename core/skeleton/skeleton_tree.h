@@ -81,6 +81,15 @@ JointRays pinholeRays(const Eigen::Ref<const Eigen::RowVectorXd>& uvPx, const Pi
 // (u, 0, v), direction (0, 1, 0).
 JointRays orthographicRays(const Eigen::Ref<const Eigen::RowVectorXd>& uvMm);
 
+// Eq. 5 for one bone: where along `joint`'s ray the points at `lengthMm` from `parentMm`
+// are, t₀ ± halfGap (halfGap 0 and `clamped` when the ray passes farther than the length).
+struct RayRoots {
+  double t0 = 0.0;
+  double halfGap = 0.0;
+  bool clamped = false;
+};
+RayRoots rootsOnRay(const JointRays& rays, int joint, const Eigen::Vector3d& parentMm, double lengthMm);
+
 // One frame placed depth-first with the root at `rootMm` and the sign of every bone's
 // root (signs[bone] = +1 or −1, indexed as kBones). Reports which bones were clamped and,
 // for each bone, half the distance between its two roots (√(L² − ρ²), 0 when clamped).
