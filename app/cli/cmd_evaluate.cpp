@@ -33,6 +33,8 @@ struct EvaluateArgs {
   std::string method = "both";
   double sigma2Mm2 = 0.0;  // 0 = the sweep's optimum
   int components = 0;      // 0 = 95 % of the variance
+  int clusters = 0;        // snippet prior m (0 = its default)
+  int clusterComponents = 0;  // snippet prior q per cluster (0 = its default)
   int threads = 0;         // 0 = hardware concurrency
   bool noPlots = false;
   std::vector<std::string> engines;  // --engine: empty = every engine
@@ -159,6 +161,8 @@ void runSnippetExperiments(const Dataset& dataset, const std::vector<Walker>& wa
     }
     if (a.sigma2Mm2 > 0) o.sigma2Mm2 = a.sigma2Mm2;
     if (a.components > 0) o.model.components = a.components;
+    if (a.clusters > 0) o.prior.clusters = a.clusters;
+    if (a.clusterComponents > 0) o.prior.components = a.clusterComponents;
     std::cerr << "snippet: " << dataset.subjects().size() << " folds on " << threads << " threads\n";
     results.snippet = snippetComparison(dataset, walkers, o);
     results.warnings.insert(results.warnings.end(), results.snippet.warnings.begin(), results.snippet.warnings.end());
@@ -167,7 +171,9 @@ void runSnippetExperiments(const Dataset& dataset, const std::vector<Walker>& wa
   }
   if (experiments.count(Experiment::SnippetClusters)) {
     const auto t0 = std::chrono::steady_clock::now();
-    results.snippetClusters = chooseSnippetClusters(dataset, {1, 2, 4, 8, 16, 32}, SnippetPriorOptions{}, 5, threads);
+    SnippetPriorOptions base;
+    if (a.clusterComponents > 0) base.components = a.clusterComponents;
+    results.snippetClusters = chooseSnippetClusters(dataset, {1, 2, 4, 8, 16, 32}, base, 5, threads);
     results.ran.insert(Experiment::SnippetClusters);
     results.timingsS.emplace_back("snippet-clusters",
                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
@@ -258,6 +264,12 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--components", args->components, "Eigenwalkers per model (default: 95 % of the variance)")
       ->check(CLI::Range(1, 100000));
+  cmd->add_option("--clusters", args->clusters,
+                  "Snippet prior: mixture components m for experiment 'snippet' (default 8, docs/SNIPPETS.md)")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--cluster-components", args->clusterComponents,
+                  "Snippet prior: principal components q per cluster (default 50, the paper's)")
+      ->check(CLI::Range(1, 10000));
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_flag("--no-plots", args->noPlots, "Skip the PNG figures");
   cmd->add_option("--engine", args->engines,

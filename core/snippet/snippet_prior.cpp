@@ -112,6 +112,21 @@ double logSumExp(const Eigen::Ref<const Eigen::VectorXd>& v) {
   return m + std::log((v.array() - m).exp().sum());
 }
 
+// The points that carry a cluster's weight, each column [x_i; w_i]. Responsibilities far
+// in the tail (down to denormals) change the moments by less than 1e-12 and, left in,
+// made the SVD return NaN (measured: m = 32, fold SM2014007, second EM step).
+Eigen::MatrixXd significantColumns(const Eigen::MatrixXd& x, const Eigen::VectorXd& w) {
+  const double cut = 1e-12 * w.sum() / static_cast<double>(w.size());
+  const Eigen::Index kept = (w.array() > cut).count();
+  Eigen::MatrixXd out(x.rows() + 1, kept);
+  for (Eigen::Index i = 0, k = 0; i < x.cols(); ++i)
+    if (w(i) > cut) {
+      out.col(k).head(x.rows()) = x.col(i);
+      out(x.rows(), k++) = w(i);
+    }
+  return out;
+}
+
 // A few EM steps on the whole mixture (responsibilities, then weighted PPCA per cluster).
 void refineByEm(SnippetPrior& prior, const Eigen::MatrixXd& x, const SnippetPriorOptions& o) {
   const Eigen::Index n = x.cols();
@@ -123,8 +138,11 @@ void refineByEm(SnippetPrior& prior, const Eigen::MatrixXd& x, const SnippetPrio
     for (int j = 0; j < m; ++j) {
       const Eigen::VectorXd w = resp.col(j);
       const double nj = w.sum();
-      if (nj < 2.0) continue;  // a cluster that lost its points keeps its last fit
-      PpcaComponent c = weightedPpca(x, w, o.components, o.minNoiseVarianceMm2);
+      if (!(nj >= 2.0)) continue;  // a cluster that lost its points keeps its last fit
+      const Eigen::MatrixXd mine = significantColumns(x, w);
+      PpcaComponent c = weightedPpca(mine.topRows(x.rows()), mine.bottomRows(1).transpose(), o.components,
+                                     o.minNoiseVarianceMm2);
+      if (!c.mean.allFinite() || !c.basis.allFinite() || !c.variances.allFinite()) continue;  // keeps its last fit
       c.weight = nj / static_cast<double>(n);
       c.members = static_cast<int>(std::lround(nj));
       prior.components[static_cast<size_t>(j)] = std::move(c);

@@ -77,6 +77,34 @@ TEST(SnippetPrior, DensityIsTheDenseGaussianMixture) {
   EXPECT_NEAR(logDensity(prior, p), std::log(dense), 1e-9);
 }
 
+// Two clusters so far apart that each point's responsibility for the other one lies in
+// the denormal range (log ratio ≈ −720): EM must leave such tail points out of the
+// weighted PCA (on the real walkers they made the SVD return NaN, m = 32) and give back
+// the clusters of the k-means fit.
+TEST(SnippetPrior, EmLeavesTheFarTailOut) {
+  Rng rng(11);
+  Eigen::MatrixXd x(3, 400);
+  int col = 0;
+  sampleCluster(x, col, 200, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1, 0), 3.0, 0.4, rng);
+  sampleCluster(x, col, 200, Eigen::Vector3d(24, 0, 0), Eigen::Vector3d(1, 0, 0), 2.0, 0.3, rng);
+  SnippetPriorOptions o;
+  o.clusters = 2;
+  o.components = 1;
+  o.minNoiseVarianceMm2 = 1e-6;
+  const SnippetPrior kmeansOnly = fitSnippetMixture(x, o);
+  o.emIterations = 3;
+  const SnippetPrior refined = fitSnippetMixture(x, o);
+  ASSERT_NO_THROW(checkSnippetPrior(refined));
+  ASSERT_EQ(refined.components.size(), 2u);
+  for (size_t j = 0; j < 2; ++j) {
+    // Tail weights below 1e-12 of the mean move the moments by less than 1e-9 relative.
+    EXPECT_LT((refined.components[j].mean - kmeansOnly.components[j].mean).norm(), 1e-9);
+    EXPECT_NEAR(refined.components[j].variances(0), kmeansOnly.components[j].variances(0),
+                1e-9 * kmeansOnly.components[j].variances(0));
+    EXPECT_NEAR(refined.components[j].weight, 0.5, 1e-12);
+  }
+}
+
 // A random PPCA cluster over one frame of 15 joints (D = 45).
 PpcaComponent randomComponent(Rng& rng, int q) {
   PpcaComponent c;
