@@ -19,6 +19,7 @@
 
 #include "app/cli/commands.h"
 #include "app/cli/reconstruct_camera.h"
+#include "app/cli/reconstruct_skeleton.h"
 #include "core/common/errors.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
@@ -56,6 +57,7 @@ struct ReconstructArgs {
   std::string camera, cameraName;   // a calibration file (--camera) and which of its cameras
   std::string engine = "eigenwalker";
   std::string prior;                // the snippet engine's prior (--prior)
+  std::string reference;            // the skeleton engine's 3D reference (--reference)
 };
 
 // The model the user named, or the default one; truncated to --components (the viewer's
@@ -287,15 +289,32 @@ int runReconstructSnippet(const ReconstructArgs& a) {
   return 0;
 }
 
+// [SECTION] The skeleton engine
+
+SkeletonArgs skeletonArgs(const ReconstructArgs& a) {
+  const auto refuse = [](bool given, const char* option) {
+    if (given) throw Error(ErrorKind::BadArgument, option, "", "does not apply to --engine skeleton");
+  };
+  refuse(!a.model.empty() || a.components.has_value(), "--model");
+  refuse(!a.prior.empty(), "--prior");
+  refuse(a.angleDeg.has_value() || a.unknownAngle, "--angle");
+  refuse(a.projectAngleDeg.has_value(), "--project-angle");
+  refuse(a.focalPx.has_value() || a.elevationDeg.has_value() || a.orthographic, "--focal-px");
+  refuse(!a.save2d.empty() || a.dataPreserving, "--save-2d");
+  SkeletonArgs s;
+  s.input = a.input, s.out = a.out, s.layout = a.layout, s.camera = a.camera, s.cameraName = a.cameraName;
+  s.reference = a.reference, s.fps = a.fps, s.json = a.json;
+  return s;
+}
+
 // [SECTION] The eigenwalker
 
 int runReconstruct(const ReconstructArgs& a) {
   const EngineKind engine = parseEngineKind(a.engine, "--engine");
   if (engine == EngineKind::Snippet) return runReconstructSnippet(a);
-  if (engine == EngineKind::Skeleton)
-    throw Error(ErrorKind::BadArgument, "--engine", "",
-                "the skeleton engine is not in 'reconstruct' yet; it is scored by 'evaluate --experiment snippet "
-                "--engine skeleton'");
+  if (engine == EngineKind::Skeleton) return runReconstructSkeleton(skeletonArgs(a));
+  if (!a.reference.empty())
+    throw Error(ErrorKind::BadArgument, "--reference", "", "a 3D reference applies to --engine skeleton only");
   if (!a.prior.empty())
     throw Error(ErrorKind::BadArgument, "--prior", "", "a snippet prior applies to --engine snippet only");
   if (a.unknownCamera) {
@@ -395,9 +414,14 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
       "(mm; docs/EXPERIMENTS.md) or a 3D trial viewed at --project-angle (errors against it reported). "
       "Writes the 15-joint 3D CSV over the input's duration.");
   cmd->add_option("--engine", args->engine,
-                  "eigenwalker (Zhang & Troje 2007) or snippet (Howe, Leventon & Freeman 1999; docs/SNIPPETS.md)")
+                  "eigenwalker (Zhang & Troje 2007), snippet (Howe, Leventon & Freeman 1999; docs/SNIPPETS.md) or "
+                  "skeleton (Zou et al. 2009: keypoints through a calibrated --camera with --reference bone lengths)")
       ->check(CLI::IsMember({"eigenwalker", "snippet", "skeleton"}))
       ->capture_default_str();
+  cmd->add_option("--reference", args->reference,
+                  "--engine skeleton: a 3D trial of the same person and frames (e.g. Pose2Sim's triangulated TRC): "
+                  "its bone lengths are used and the result is scored against it")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--prior", args->prior,
                   "Snippet prior from `build --engine snippet` (default: learnt from the embedded synthetic "
                   "population)")

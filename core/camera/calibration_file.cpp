@@ -111,6 +111,24 @@ std::optional<Numbers> numbers(const Table& t, std::string_view key, const std::
   return parseNumbers(it->second.first, file, it->second.second, key);
 }
 
+// `rotation` and `translation`: three numbers each, both or neither.
+void readExtrinsics(const Table& t, const std::string& file, CalibratedCamera& c) {
+  const auto r = numbers(t, "rotation", file);
+  const auto tr = numbers(t, "translation", file);
+  if (!r && !tr) return;
+  const char* key = !r ? "translation" : "rotation";
+  const int line = t.values.find(key)->second.second;
+  if (!r || !tr) malformed(file, line, "[" + t.name + "] " + key + " without its " + (r ? "translation" : "rotation"));
+  for (const auto& [name, values] : {std::pair{"rotation", &r->values}, std::pair{"translation", &tr->values}})
+    if (values->size() != 3)
+      malformed(file, t.values.find(name)->second.second, "[" + t.name + "] " + name + ": expected 3 numbers");
+  for (int i = 0; i < 3; ++i) {
+    c.rotation[static_cast<std::size_t>(i)] = r->values[static_cast<std::size_t>(i)];
+    c.translationMm[static_cast<std::size_t>(i)] = 1000.0 * tr->values[static_cast<std::size_t>(i)];
+  }
+  c.hasExtrinsics = true;
+}
+
 CalibratedCamera cameraOf(const Table& t, const std::string& file) {
   CalibratedCamera c;
   c.name = c.table = t.name;
@@ -132,6 +150,7 @@ CalibratedCamera cameraOf(const Table& t, const std::string& file) {
   if (const auto d = numbers(t, "distortions", file)) {
     for (std::size_t i = 0; i < std::min<std::size_t>(4, d->values.size()); ++i) c.distortions[i] = d->values[i];
   }
+  readExtrinsics(t, file, c);
   return c;
 }
 

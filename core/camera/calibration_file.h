@@ -4,7 +4,8 @@
 // `matrix` (the 3 × 3 intrinsics, focal lengths and principal point in px), `distortions`
 // [k1, k2, p1, p2], `rotation` (Rodrigues vector) and `translation` (m), plus `[metadata]`.
 // What the eigenwalker's camera uses of it: the focal length (a known focal length makes
-// the fit a pinhole with one unknown less) and the image size.
+// the fit a pinhole with one unknown less) and the image size. The skeleton engine also
+// uses the principal point and the extrinsics (its reconstruction back in the world frame).
 
 #include <array>
 #include <filesystem>
@@ -22,6 +23,10 @@ struct CalibratedCamera {
   double fxPx = 0.0, fyPx = 0.0;            // matrix[0][0], matrix[1][1]
   double cxPx = 0.0, cyPx = 0.0;            // matrix[0][2], matrix[1][2]
   std::array<double, 4> distortions{};      // k1, k2, p1, p2 (zero when absent)
+  // World to camera (OpenCV's convention): x_cam = R(rotation) x_world + translation.
+  bool hasExtrinsics = false;               // both `rotation` and `translation` given
+  std::array<double, 3> rotation{};         // Rodrigues vector (axis × angle, rad)
+  std::array<double, 3> translationMm{};    // `translation` (m in the file) in mm
   double focalPx() const { return 0.5 * (fxPx + fyPx); }
 };
 

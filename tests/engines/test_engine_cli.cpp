@@ -120,7 +120,8 @@ TEST_F(EngineCli, EvaluateScoresTheEnginesAskedFor) {
 }
 
 // The skeleton engine (core/skeleton): scored by experiment "snippet"; nothing to build;
-// not in reconstruct yet, and each says so instead of running another engine.
+// reconstruct needs a calibrated camera and a reference's bone lengths, and each says so
+// instead of running another engine.
 TEST_F(EngineCli, TheSkeletonEngineIsScoredAndOtherwiseSaysWhereItIs) {
   ASSERT_EQ(runCli("synth --count 3 --seed 5 --cycles 2 --out three/", root_).exitCode, 0);
   const test::ShellRun r =
@@ -131,7 +132,8 @@ TEST_F(EngineCli, TheSkeletonEngineIsScoredAndOtherwiseSaysWhereItIs) {
   EXPECT_EQ(csv.find("MAP"), std::string::npos) << csv;
   const std::pair<std::string, std::string> refusals[] = {
       {"build --engine skeleton --data three/walkers.csv --out s.ewm", "nothing to build"},
-      {"reconstruct --engine skeleton --input three/SYN001_T1.csv --out r.csv", "not in 'reconstruct' yet"},
+      {"reconstruct --engine skeleton --input three/SYN001_T1.csv --out r.csv", "give --camera FILE"},
+      {"reconstruct --engine skeleton --input three/SYN001_T1.csv --angle 30 --out r.csv", "--angle"},
       {"evaluate --data three/walkers.csv --engine skeleton --experiment snippet-clusters --out sk2",
        "snippet prior's"}};
   for (const auto& [args, message] : refusals) {
@@ -142,6 +144,25 @@ TEST_F(EngineCli, TheSkeletonEngineIsScoredAndOtherwiseSaysWhereItIs) {
   EXPECT_FALSE(fs::exists(root_ / "s.ewm"));
   EXPECT_FALSE(fs::exists(root_ / "sk2"));
   EXPECT_FALSE(fs::exists(root_ / "r.csv"));
+}
+
+// The balancing trial through camera 4: the 3D CSV written in the world frame, the JSON
+// report scored against the triangulated 3D (docs/RESULTS.md: 163 / 120 mm).
+TEST_F(EngineCli, TheSkeletonEngineReconstructsKeypointsThroughACalibratedCamera) {
+  EW_REQUIRE_SHARED_DATA();
+  const fs::path d = fs::absolute(test::sharedDataDir() / "pose2sim-balancing");
+  const test::ShellRun r = runCli("reconstruct --engine skeleton --input " + (d / "pose/cam04_json").string() +
+                                      " --camera " + (d / "Calib_qualisys.toml").string() + " --camera-name cam_04 --fps 60"
+                                      " --reference " + (d / "pose-3d/S00_P00_T01_BalancingTrial_0-100.trc").string() +
+                                      " --out bal.csv --json", root_);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  EXPECT_EQ(report["frame"], "world");
+  EXPECT_EQ(report["reference"]["frames"], 100);
+  EXPECT_LT(report["reference"]["mpjpe_procrustes_mm"].get<double>(), 200.0);
+  EXPECT_LT(report["reference"]["mpjpe_procrustes_mm"].get<double>(),
+            report["reference"]["mpjpe_mean_translation_mm"].get<double>());
+  EXPECT_EQ(readJointCsv(root_ / "bal.csv").positionsMm.rows(), 100);
 }
 
 }  // namespace

@@ -1,0 +1,221 @@
+#include "core/skeleton/skeleton_camera.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/common/errors.h"
+#include "core/common/statistics.h"
+
+namespace ew {
+
+namespace {
+
+// Linear interpolation over time of the frames a column misses (held at the ends).
+// Returns how many values were filled; nullopt-like -1 for a column with no value at all.
+int fillColumn(Eigen::Ref<Eigen::VectorXd> column) {
+  const Eigen::Index n = column.size();
+  Eigen::Index last = -1;
+  int filled = 0;
+  for (Eigen::Index i = 0; i <= n; ++i) {
+    if (i < n && !std::isfinite(column(i))) continue;
+    const Eigen::Index gapStart = last + 1;
+    for (Eigen::Index k = gapStart; k < i; ++k, ++filled) {
+      if (last < 0 && i == n) return -1;
+      if (last < 0) column(k) = column(i);
+      else if (i == n) column(k) = column(last);
+      else column(k) = column(last) + (column(i) - column(last)) * static_cast<double>(k - last) / static_cast<double>(i - last);
+    }
+    last = i;
+  }
+  return filled;
+}
+
+std::vector<double> runningMedian(const std::vector<double>& x, int window) {
+  const int half = std::max(0, window / 2);
+  const int n = static_cast<int>(x.size());
+  std::vector<double> out(x.size());
+  for (int i = 0; i < n; ++i) {
+    std::vector<double> w(x.begin() + std::max(0, i - half), x.begin() + std::min(n, i + half + 1));
+    out[static_cast<size_t>(i)] = median(w);
+  }
+  return out;
+}
+
+// The body's up in the camera frame: the median image direction from pelvis to sternum.
+Eigen::Vector3d imageUp(const Eigen::MatrixXd& px) {
+  std::vector<double> du, dv;
+  const Eigen::Index p = index(Joint::Pelvis), s = index(Joint::Sternum);
+  for (Eigen::Index t = 0; t < px.rows(); ++t) {
+    du.push_back(px(t, 2 * s) - px(t, 2 * p));
+    dv.push_back(px(t, 2 * s + 1) - px(t, 2 * p + 1));
+  }
+  const Eigen::Vector3d up(median(du), median(dv), 0.0);
+  return up.norm() > 0.0 ? up.normalized() : Eigen::Vector3d(0.0, -1.0, 0.0);
+}
+
+}  // namespace
+
+Eigen::Matrix3d rotationFromRodrigues(const std::array<double, 3>& rotation) {
+  const Eigen::Vector3d r(rotation[0], rotation[1], rotation[2]);
+  const double angle = r.norm();
+  if (angle < 1e-15) return Eigen::Matrix3d::Identity();
+  return Eigen::AngleAxisd(angle, r / angle).toRotationMatrix();
+}
+
+PinholeIntrinsics intrinsicsOf(const CalibratedCamera& c) { return {c.fxPx, c.fyPx, c.cxPx, c.cyPx}; }
+
+Eigen::RowVectorXd undistortPixels(const Eigen::Ref<const Eigen::RowVectorXd>& uvPx, const CalibratedCamera& c) {
+  const auto [k1, k2, p1, p2] = c.distortions;
+  Eigen::RowVectorXd out = uvPx;
+  for (Eigen::Index j = 0; j + 1 < uvPx.size(); j += 2) {
+    const double xd = (uvPx(j) - c.cxPx) / c.fxPx, yd = (uvPx(j + 1) - c.cyPx) / c.fyPx;
+    if (!std::isfinite(xd) || !std::isfinite(yd)) continue;
+    double x = xd, y = yd;
+    // Fixed point of x = (x_d − tangential(x, y)) / radial(x, y): converges for the small
+    // distortions of calibrated lenses (|k r²| ≪ 1) in a few steps.
+    for (int it = 0; it < 20; ++it) {
+      const double r2 = x * x + y * y;
+      const double radial = 1.0 + k1 * r2 + k2 * r2 * r2;
+      x = (xd - (2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x))) / radial;
+      y = (yd - (p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y)) / radial;
+    }
+    out(j) = c.fxPx * x + c.cxPx;
+    out(j + 1) = c.fyPx * y + c.cyPx;
+  }
+  return out;
+}
+
+std::vector<double> rootDistancesFromBones(const std::vector<JointRays>& rays, const BoneLengths& bones,
+                                           int windowFrames) {
+  std::vector<double> bound;
+  bound.reserve(rays.size());
+  for (const JointRays& r : rays) {
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t b = 0; b < kBones.size(); ++b) {
+      const double sine = r.direction.col(index(kBones[b].first)).cross(r.direction.col(index(kBones[b].second))).norm();
+      if (sine > 1e-12) best = std::min(best, bones.mm[b] / sine);
+    }
+    bound.push_back(best);
+  }
+  return runningMedian(bound, windowFrames);
+}
+
+SkeletonCameraResult reconstructThroughCamera(const Eigen::Ref<const Eigen::MatrixXd>& jointsPx,
+                                              const CalibratedCamera& camera, const BoneLengths& bones,
+                                              double rateHz, const std::string& name,
+                                              const SkeletonCameraOptions& options) {
+  if (jointsPx.rows() == 0 || jointsPx.cols() != 2 * kJointCount)
+    throw Error(ErrorKind::BadArgument, name, "", "expected frames of 15 joints in pixels");
+  if (!(rateHz > 0.0 && std::isfinite(rateHz))) throw Error(ErrorKind::BadArgument, name, "", "the rate must be positive");
+  SkeletonCameraResult result;
+  Eigen::MatrixXd px = jointsPx;
+  for (int j = 0; j < kJointCount; ++j)
+    for (int k = 0; k < 2; ++k) {
+      const int filled = fillColumn(px.col(2 * j + k));
+      if (filled < 0)
+        throw Error(ErrorKind::BadData, name, "", std::string(jointName(static_cast<Joint>(j))) + " is seen in no frame");
+      if (k == 0) result.filledPoints += filled;
+    }
+  std::vector<JointRays> rays;
+  for (Eigen::Index t = 0; t < px.rows(); ++t) rays.push_back(pinholeRays(undistortPixels(px.row(t), camera), intrinsicsOf(camera)));
+  const int window = std::max(1, static_cast<int>(std::lround(options.depthWindowS * rateHz)) | 1);
+  result.rootDistanceMm = rootDistancesFromBones(rays, bones, window);
+  std::vector<Eigen::Vector3d> roots;
+  for (size_t t = 0; t < rays.size(); ++t) {
+    const Eigen::Index p = index(Joint::Pelvis);
+    roots.push_back(rays[t].origin.col(p) + result.rootDistanceMm[t] * rays[t].direction.col(p));
+  }
+  SkeletonSolveOptions solve = options.solve;
+  solve.upMm = imageUp(px);
+  result.sequence = solveSkeletonSequence(rays, roots, bones, rateHz, solve);
+  if (camera.hasExtrinsics) {
+    const Eigen::Matrix3d r = rotationFromRodrigues(camera.rotation);
+    const Eigen::Vector3d tr(camera.translationMm[0], camera.translationMm[1], camera.translationMm[2]);
+    result.worldMm.resize(result.sequence.framesMm.rows(), 3 * kJointCount);
+    for (Eigen::Index t = 0; t < result.worldMm.rows(); ++t)
+      for (int j = 0; j < kJointCount; ++j)
+        result.worldMm.block<1, 3>(t, 3 * j) =
+            (r.transpose() * (result.sequence.framesMm.block<1, 3>(t, 3 * j).transpose() - tr)).transpose();
+  }
+  return result;
+}
+
+}  // namespace ew
+
+namespace ew {
+
+namespace {
+
+// The 24 rotations that permute and flip the axes.
+std::vector<Eigen::Matrix3d> signedPermutations() {
+  std::vector<Eigen::Matrix3d> out;
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto& p : perms)
+    for (int s = 0; s < 8; ++s) {
+      Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+      for (int r = 0; r < 3; ++r) m(r, p[r]) = (s >> r) & 1 ? -1.0 : 1.0;
+      if (m.determinant() > 0.0) out.push_back(m);
+    }
+  return out;
+}
+
+using FramePoints = Eigen::Matrix<double, 3, kJointCount>;
+
+FramePoints pointsOf(const Eigen::Ref<const Eigen::MatrixXd>& frames, Eigen::Index t) {
+  FramePoints p;
+  for (int j = 0; j < kJointCount; ++j) p.col(j) = frames.block<1, 3>(t, 3 * j).transpose();
+  return p;
+}
+
+// Mean joint error after the best rigid motion of `a` onto `b` (Kabsch, no scale).
+double procrustesError(const FramePoints& a, const FramePoints& b) {
+  const Eigen::Vector3d ca = a.rowwise().mean(), cb = b.rowwise().mean();
+  const FramePoints a0 = a.colwise() - ca, b0 = b.colwise() - cb;
+  const Eigen::JacobiSVD<Eigen::Matrix3d> svd(b0 * a0.transpose(), Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Eigen::Matrix3d d = Eigen::Matrix3d::Identity();
+  d(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+  const Eigen::Matrix3d r = svd.matrixU() * d * svd.matrixV().transpose();
+  return ((r * a0) - b0).colwise().norm().mean();
+}
+
+}  // namespace
+
+ReferenceComparison compareWithReference(const Eigen::Ref<const Eigen::MatrixXd>& worldMm,
+                                         const Eigen::Ref<const Eigen::MatrixXd>& referenceMm,
+                                         const std::string& name) {
+  std::vector<Eigen::Index> frames;
+  for (Eigen::Index t = 0; t < std::min(worldMm.rows(), referenceMm.rows()); ++t)
+    if (worldMm.row(t).allFinite() && referenceMm.row(t).allFinite()) frames.push_back(t);
+  if (frames.empty()) throw Error(ErrorKind::BadData, name, "", "no frame has every joint in both the reconstruction and the reference");
+  ReferenceComparison best;
+  best.meanTranslationMm = std::numeric_limits<double>::infinity();
+  for (const Eigen::Matrix3d& axes : signedPermutations()) {
+    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+    for (Eigen::Index t : frames) offset += (axes * pointsOf(referenceMm, t) - pointsOf(worldMm, t)).rowwise().sum();
+    offset /= static_cast<double>(frames.size() * kJointCount);
+    ReferenceComparison c;
+    c.referenceToWorld = axes;
+    c.frames = static_cast<int>(frames.size());
+    Eigen::Matrix<double, 1, kJointCount> perJoint = Eigen::Matrix<double, 1, kJointCount>::Zero();
+    for (Eigen::Index t : frames) {
+      const FramePoints ref = axes * pointsOf(referenceMm, t), rec = pointsOf(worldMm, t);
+      c.rawMm += (rec - ref).colwise().norm().mean();
+      perJoint += ((rec.colwise() + offset) - ref).colwise().norm();
+      c.procrustesMm += procrustesError(rec, ref);
+    }
+    const double n = static_cast<double>(frames.size());
+    c.rawMm /= n;
+    c.procrustesMm /= n;
+    perJoint /= n;
+    c.meanTranslationMm = perJoint.mean();
+    for (int j = 0; j < kJointCount; ++j) c.perJointMm[static_cast<size_t>(j)] = perJoint(j);
+    if (c.meanTranslationMm < best.meanTranslationMm) best = c;
+  }
+  return best;
+}
+
+}  // namespace ew
