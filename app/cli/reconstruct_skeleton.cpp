@@ -7,6 +7,7 @@
 
 #include "core/camera/calibration_file.h"
 #include "core/common/errors.h"
+#include "core/common/statistics.h"
 #include "core/io/joint_csv.h"
 #include "core/io/load_trial.h"
 #include "core/keypoints/keypoint_trial.h"
@@ -68,11 +69,10 @@ int runReconstructSkeleton(const SkeletonArgs& a) {
   json report = {{"engine", "skeleton"}, {"input", a.input}, {"camera", camera.name}, {"frames", r.sequence.framesMm.rows()},
                  {"rate_hz", keypoints.rateHz}, {"clamped_bone_frames", r.sequence.clampedBoneFrames},
                  {"filled_points", r.filledPoints}, {"frame", world ? "world" : "camera"}};
-  std::vector<double> depth = r.rootDistanceMm;
-  std::nth_element(depth.begin(), depth.begin() + static_cast<long>(depth.size() / 2), depth.end());
-  report["pelvis_distance_median_mm"] = depth[depth.size() / 2];
+  const double depthMm = median(r.rootDistanceMm);
+  report["pelvis_distance_median_mm"] = depthMm;
   std::cerr << std::fixed << std::setprecision(1) << "skeleton: " << r.sequence.framesMm.rows() << " frames through "
-            << camera.name << ", pelvis at " << depth[depth.size() / 2] << " mm (median), "
+            << camera.name << ", pelvis at " << depthMm << " mm (median), "
             << r.sequence.clampedBoneFrames << " clamped bone-frames, " << r.filledPoints << " joint-frames filled\n";
   if (world) {
     const ReferenceComparison c = compareWithReference(r.worldMm, reference.positionsMm, a.reference);

@@ -9,30 +9,11 @@
 
 #include "core/common/errors.h"
 #include "core/common/statistics.h"
+#include "core/gait/gaps.h"
 
 namespace ew {
 
 namespace {
-
-// Linear interpolation over time of the frames a column misses (held at the ends).
-// Returns how many values were filled; nullopt-like -1 for a column with no value at all.
-int fillColumn(Eigen::Ref<Eigen::VectorXd> column) {
-  const Eigen::Index n = column.size();
-  Eigen::Index last = -1;
-  int filled = 0;
-  for (Eigen::Index i = 0; i <= n; ++i) {
-    if (i < n && !std::isfinite(column(i))) continue;
-    const Eigen::Index gapStart = last + 1;
-    for (Eigen::Index k = gapStart; k < i; ++k, ++filled) {
-      if (last < 0 && i == n) return -1;
-      if (last < 0) column(k) = column(i);
-      else if (i == n) column(k) = column(last);
-      else column(k) = column(last) + (column(i) - column(last)) * static_cast<double>(k - last) / static_cast<double>(i - last);
-    }
-    last = i;
-  }
-  return filled;
-}
 
 std::vector<double> runningMedian(const std::vector<double>& x, int window) {
   const int half = std::max(0, window / 2);
@@ -113,13 +94,14 @@ SkeletonCameraResult reconstructThroughCamera(const Eigen::Ref<const Eigen::Matr
   if (!(rateHz > 0.0 && std::isfinite(rateHz))) throw Error(ErrorKind::BadArgument, name, "", "the rate must be positive");
   SkeletonCameraResult result;
   Eigen::MatrixXd px = jointsPx;
-  for (int j = 0; j < kJointCount; ++j)
-    for (int k = 0; k < 2; ++k) {
-      const int filled = fillColumn(px.col(2 * j + k));
-      if (filled < 0)
-        throw Error(ErrorKind::BadData, name, "", std::string(jointName(static_cast<Joint>(j))) + " is seen in no frame");
-      if (k == 0) result.filledPoints += filled;
-    }
+  for (int j = 0; j < kJointCount; ++j) {
+    const auto unseen = static_cast<int>(px.col(2 * j).array().isNaN().count());
+    if (unseen == px.rows())
+      throw Error(ErrorKind::BadData, name, "", std::string(jointName(static_cast<Joint>(j))) + " is seen in no frame");
+    result.filledPoints += unseen;
+    fillAllGapsLinearly(px.col(2 * j));
+    fillAllGapsLinearly(px.col(2 * j + 1));
+  }
   std::vector<JointRays> rays;
   for (Eigen::Index t = 0; t < px.rows(); ++t) rays.push_back(pinholeRays(undistortPixels(px.row(t), camera), intrinsicsOf(camera)));
   const int window = std::max(1, static_cast<int>(std::lround(options.depthWindowS * rateHz)) | 1);
@@ -191,29 +173,29 @@ ReferenceComparison compareWithReference(const Eigen::Ref<const Eigen::MatrixXd>
   for (Eigen::Index t = 0; t < std::min(worldMm.rows(), referenceMm.rows()); ++t)
     if (worldMm.row(t).allFinite() && referenceMm.row(t).allFinite()) frames.push_back(t);
   if (frames.empty()) throw Error(ErrorKind::BadData, name, "", "no frame has every joint in both the reconstruction and the reference");
+  // The axes are chosen by the mean-translation error alone; the raw and the Procrustes
+  // errors (the latter the same for any proper rotation of the reference) only for them.
+  const double n = static_cast<double>(frames.size());
   ReferenceComparison best;
+  best.frames = static_cast<int>(frames.size());
   best.meanTranslationMm = std::numeric_limits<double>::infinity();
   for (const Eigen::Matrix3d& axes : signedPermutations()) {
     Eigen::Vector3d offset = Eigen::Vector3d::Zero();
     for (Eigen::Index t : frames) offset += (axes * pointsOf(referenceMm, t) - pointsOf(worldMm, t)).rowwise().sum();
-    offset /= static_cast<double>(frames.size() * kJointCount);
-    ReferenceComparison c;
-    c.referenceToWorld = axes;
-    c.frames = static_cast<int>(frames.size());
+    offset /= n * kJointCount;
     Eigen::Matrix<double, 1, kJointCount> perJoint = Eigen::Matrix<double, 1, kJointCount>::Zero();
-    for (Eigen::Index t : frames) {
-      const FramePoints ref = axes * pointsOf(referenceMm, t), rec = pointsOf(worldMm, t);
-      c.rawMm += (rec - ref).colwise().norm().mean();
-      perJoint += ((rec.colwise() + offset) - ref).colwise().norm();
-      c.procrustesMm += procrustesError(rec, ref);
-    }
-    const double n = static_cast<double>(frames.size());
-    c.rawMm /= n;
-    c.procrustesMm /= n;
+    for (Eigen::Index t : frames)
+      perJoint += ((pointsOf(worldMm, t).colwise() + offset) - axes * pointsOf(referenceMm, t)).colwise().norm();
     perJoint /= n;
-    c.meanTranslationMm = perJoint.mean();
-    for (int j = 0; j < kJointCount; ++j) c.perJointMm[static_cast<size_t>(j)] = perJoint(j);
-    if (c.meanTranslationMm < best.meanTranslationMm) best = c;
+    if (perJoint.mean() >= best.meanTranslationMm) continue;
+    best.referenceToWorld = axes;
+    best.meanTranslationMm = perJoint.mean();
+    for (int j = 0; j < kJointCount; ++j) best.perJointMm[static_cast<size_t>(j)] = perJoint(j);
+  }
+  for (Eigen::Index t : frames) {
+    const FramePoints ref = best.referenceToWorld * pointsOf(referenceMm, t), rec = pointsOf(worldMm, t);
+    best.rawMm += (rec - ref).colwise().norm().mean() / n;
+    best.procrustesMm += procrustesError(rec, ref) / n;
   }
   return best;
 }

@@ -112,17 +112,18 @@ double logSumExp(const Eigen::Ref<const Eigen::VectorXd>& v) {
   return m + std::log((v.array() - m).exp().sum());
 }
 
-// The points that carry a cluster's weight, each column [x_i; w_i]. Responsibilities far
-// in the tail (down to denormals) change the moments by less than 1e-12 and, left in,
-// made the SVD return NaN (measured: m = 32, fold SM2014007, second EM step).
-Eigen::MatrixXd significantColumns(const Eigen::MatrixXd& x, const Eigen::VectorXd& w) {
-  const double cut = 1e-12 * w.sum() / static_cast<double>(w.size());
+// The columns of x whose weight is above `cut`, with their weights.
+struct WeightedColumns {
+  Eigen::MatrixXd x;
+  Eigen::VectorXd w;
+};
+WeightedColumns columnsAbove(const Eigen::MatrixXd& x, const Eigen::VectorXd& w, double cut) {
   const Eigen::Index kept = (w.array() > cut).count();
-  Eigen::MatrixXd out(x.rows() + 1, kept);
+  WeightedColumns out{Eigen::MatrixXd(x.rows(), kept), Eigen::VectorXd(kept)};
   for (Eigen::Index i = 0, k = 0; i < x.cols(); ++i)
     if (w(i) > cut) {
-      out.col(k).head(x.rows()) = x.col(i);
-      out(x.rows(), k++) = w(i);
+      out.x.col(k) = x.col(i);
+      out.w(k++) = w(i);
     }
   return out;
 }
@@ -139,9 +140,10 @@ void refineByEm(SnippetPrior& prior, const Eigen::MatrixXd& x, const SnippetPrio
       const Eigen::VectorXd w = resp.col(j);
       const double nj = w.sum();
       if (!(nj >= 2.0)) continue;  // a cluster that lost its points keeps its last fit
-      const Eigen::MatrixXd mine = significantColumns(x, w);
-      PpcaComponent c = weightedPpca(mine.topRows(x.rows()), mine.bottomRows(1).transpose(), o.components,
-                                     o.minNoiseVarianceMm2);
+      // Responsibilities far in the tail (down to denormals) move the moments by less than
+      // 1e-12 and, left in, made the SVD return NaN (m = 32, fold SM2014007, second step).
+      const WeightedColumns mine = columnsAbove(x, w, 1e-12 * nj / static_cast<double>(n));
+      PpcaComponent c = weightedPpca(mine.x, mine.w, o.components, o.minNoiseVarianceMm2);
       if (!c.mean.allFinite() || !c.basis.allFinite() || !c.variances.allFinite()) continue;  // keeps its last fit
       c.weight = nj / static_cast<double>(n);
       c.members = static_cast<int>(std::lround(nj));
@@ -178,11 +180,8 @@ SnippetPrior fitSnippetMixture(const Eigen::Ref<const Eigen::MatrixXd>& snippets
     const int members = static_cast<int>(w.sum());
     if (members < 2) continue;  // a single snippet has no spread: left to the others
     // Only the members enter the SVD (a D × n_j matrix, not D × n).
-    Eigen::MatrixXd mine(x.rows(), members);
-    for (Eigen::Index i = 0, k = 0; i < x.cols(); ++i)
-      if (w(i) > 0.0) mine.col(k++) = x.col(i);
-    PpcaComponent c = weightedPpca(mine, Eigen::VectorXd::Ones(members), options.components,
-                                   options.minNoiseVarianceMm2);
+    const WeightedColumns mine = columnsAbove(x, w, 0.0);
+    PpcaComponent c = weightedPpca(mine.x, mine.w, options.components, options.minNoiseVarianceMm2);
     c.members = members;
     prior.components.push_back(std::move(c));
   }

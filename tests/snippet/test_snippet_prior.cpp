@@ -54,17 +54,27 @@ TEST(SnippetPrior, KnownTwoComponentMixtureIsFittedBack) {
   EXPECT_NEAR(std::abs(b.basis.col(0).dot(uB)), 1.0, 1e-3);
 }
 
-TEST(SnippetPrior, DensityIsTheDenseGaussianMixture) {
-  Rng rng(3);
-  Eigen::MatrixXd x(3, 400);
+// 200 samples of a cluster at the origin and 200 of one at `secondMean`, and the options
+// that fit two one-component clusters to them.
+struct TwoClusters {
+  Eigen::MatrixXd x = Eigen::MatrixXd(3, 400);
+  SnippetPriorOptions options;
+};
+TwoClusters twoClusters(std::uint64_t seed, const Eigen::Vector3d& secondMean) {
+  Rng rng(seed);
+  TwoClusters t;
   int col = 0;
-  sampleCluster(x, col, 200, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1, 0), 3.0, 0.4, rng);
-  sampleCluster(x, col, 200, Eigen::Vector3d(8, 8, 0), Eigen::Vector3d(1, 0, 0), 2.0, 0.3, rng);
-  SnippetPriorOptions o;
-  o.clusters = 2;
-  o.components = 1;
-  o.minNoiseVarianceMm2 = 1e-6;
-  const SnippetPrior prior = fitSnippetMixture(x, o);
+  sampleCluster(t.x, col, 200, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1, 0), 3.0, 0.4, rng);
+  sampleCluster(t.x, col, 200, secondMean, Eigen::Vector3d(1, 0, 0), 2.0, 0.3, rng);
+  t.options.clusters = 2;
+  t.options.components = 1;
+  t.options.minNoiseVarianceMm2 = 1e-6;
+  return t;
+}
+
+TEST(SnippetPrior, DensityIsTheDenseGaussianMixture) {
+  const TwoClusters t = twoClusters(3, Eigen::Vector3d(8, 8, 0));
+  const SnippetPrior prior = fitSnippetMixture(t.x, t.options);
   const Eigen::Vector3d p(1.0, -0.5, 0.3);
   double dense = 0.0;
   for (const auto& c : prior.components) {
@@ -82,18 +92,10 @@ TEST(SnippetPrior, DensityIsTheDenseGaussianMixture) {
 // weighted PCA (on the real walkers they made the SVD return NaN, m = 32) and give back
 // the clusters of the k-means fit.
 TEST(SnippetPrior, EmLeavesTheFarTailOut) {
-  Rng rng(11);
-  Eigen::MatrixXd x(3, 400);
-  int col = 0;
-  sampleCluster(x, col, 200, Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(0, 1, 0), 3.0, 0.4, rng);
-  sampleCluster(x, col, 200, Eigen::Vector3d(24, 0, 0), Eigen::Vector3d(1, 0, 0), 2.0, 0.3, rng);
-  SnippetPriorOptions o;
-  o.clusters = 2;
-  o.components = 1;
-  o.minNoiseVarianceMm2 = 1e-6;
-  const SnippetPrior kmeansOnly = fitSnippetMixture(x, o);
-  o.emIterations = 3;
-  const SnippetPrior refined = fitSnippetMixture(x, o);
+  TwoClusters t = twoClusters(11, Eigen::Vector3d(24, 0, 0));
+  const SnippetPrior kmeansOnly = fitSnippetMixture(t.x, t.options);
+  t.options.emIterations = 3;
+  const SnippetPrior refined = fitSnippetMixture(t.x, t.options);
   ASSERT_NO_THROW(checkSnippetPrior(refined));
   ASSERT_EQ(refined.components.size(), 2u);
   for (size_t j = 0; j < 2; ++j) {
