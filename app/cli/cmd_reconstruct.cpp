@@ -58,6 +58,7 @@ struct ReconstructArgs {
   std::string engine = "eigenwalker";
   std::string prior;                // the snippet engine's prior (--prior)
   std::string reference;            // the skeleton engine's 3D reference (--reference)
+  std::string angles;               // the skeleton engine's joint angles out (--angles)
 };
 
 // The model the user named, or the default one; truncated to --components (the viewer's
@@ -303,7 +304,7 @@ SkeletonArgs skeletonArgs(const ReconstructArgs& a) {
   refuse(!a.save2d.empty() || a.dataPreserving, "--save-2d");
   SkeletonArgs s;
   s.input = a.input, s.out = a.out, s.layout = a.layout, s.camera = a.camera, s.cameraName = a.cameraName;
-  s.reference = a.reference, s.fps = a.fps, s.json = a.json;
+  s.reference = a.reference, s.fps = a.fps, s.json = a.json, s.angles = a.angles;
   return s;
 }
 
@@ -315,6 +316,9 @@ int runReconstruct(const ReconstructArgs& a) {
   if (engine == EngineKind::Skeleton) return runReconstructSkeleton(skeletonArgs(a));
   if (!a.reference.empty())
     throw Error(ErrorKind::BadArgument, "--reference", "", "a 3D reference applies to --engine skeleton only");
+  if (!a.angles.empty())
+    throw Error(ErrorKind::BadArgument, "--angles", "",
+                "--angles applies to --engine skeleton; for another engine run `angles` on the 3D CSV it writes");
   if (!a.prior.empty())
     throw Error(ErrorKind::BadArgument, "--prior", "", "a snippet prior applies to --engine snippet only");
   if (a.unknownCamera) {
@@ -422,6 +426,9 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
                   "--engine skeleton: a 3D trial of the same person and frames (e.g. Pose2Sim's triangulated TRC): "
                   "its bone lengths are used and the result is scored against it")
       ->check(CLI::ExistingFile);
+  cmd->add_option("--angles", args->angles,
+                  "--engine skeleton: also write the result's joint angles (.mot for OpenSim, or .csv; "
+                  "docs/ANGLES.md)");
   cmd->add_option("--prior", args->prior,
                   "Snippet prior from `build --engine snippet` (default: learnt from the embedded synthetic "
                   "population)")

@@ -3,11 +3,13 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 #include "core/camera/calibration_file.h"
 #include "core/common/errors.h"
 #include "core/common/statistics.h"
+#include "core/gait/joint_angles.h"
 #include "core/io/joint_csv.h"
 #include "core/io/load_trial.h"
 #include "core/keypoints/keypoint_trial.h"
@@ -39,6 +41,18 @@ json comparisonJson(const ReferenceComparison& c) {
   for (int r = 0; r < 3; ++r) axes.push_back({c.referenceToWorld(r, 0), c.referenceToWorld(r, 1), c.referenceToWorld(r, 2)});
   return {{"frames", c.frames}, {"mpjpe_raw_mm", c.rawMm}, {"mpjpe_mean_translation_mm", c.meanTranslationMm},
           {"mpjpe_procrustes_mm", c.procrustesMm}, {"per_joint_mm", perJoint}, {"reference_to_world", axes}};
+}
+
+// The result's up: in a calibration's world the axis nearest the body's head-above-ankles
+// direction (SPEC §2's rule); in a camera's frame that direction itself (the camera may be tilted).
+void writeAngles(const SkeletonArgs& a, const Eigen::MatrixXd& framesMm, double rateHz, bool world) {
+  const Eigen::Vector3d up = bodyUp(framesMm, world ? 90.0 : 0.0);
+  std::ostringstream upText;
+  upText << up.transpose();
+  writeJointAngles(a.angles, jointAngles(framesMm, up, a.out), rateHz,
+                   {"source=skeleton engine (Zou et al. 2009) of " + a.input, "angles=degrees",
+                    "up=" + upText.str() + " (the reconstruction's frame)"});
+  std::cerr << "wrote " << a.angles << "\n";
 }
 
 }  // namespace
@@ -84,6 +98,7 @@ int runReconstructSkeleton(const SkeletonArgs& a) {
     std::cerr << "no extrinsics in " << a.camera << ": the result stays in the camera's frame and is not scored\n";
   }
   std::cerr << "wrote " << a.out << "\n";
+  if (!a.angles.empty()) writeAngles(a, world ? r.worldMm : r.sequence.framesMm, keypoints.rateHz, world);
   if (a.json) std::cout << report.dump(2) << "\n";
   return 0;
 }

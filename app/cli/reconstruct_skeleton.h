@@ -11,6 +11,7 @@ namespace ew::cli {
 
 struct SkeletonArgs {
   std::string input, out, layout, camera, cameraName, reference;
+  std::string angles;  // joint angles (.mot or .csv) of the result, when given
   std::optional<double> fps;
   bool json = false;
 };

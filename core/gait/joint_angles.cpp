@@ -81,8 +81,12 @@ Vec hingeAxis(const Vec& toProximal, const Vec& toDistal, const Vec& parentZ, bo
   const double sine = cross.norm() / (toProximal.norm() * toDistal.norm());
   if (!(sine > 0.0) || !std::isfinite(sine)) return parentZ;
   Vec hinge = cross.normalized();
-  if (hinge.dot(parentZ) < 0.0) hinge = -hinge;  // a hyperextended joint: its hinge still points right
   const double w = smoothstep(sine, std::sin(5.0 / kDeg), std::sin(20.0 / kDeg));
+  // Nearly straight, a hinge pointing against the parent's Z is a hyperextended joint (its
+  // bend then reads negative). Bent further, the hinge is trusted as it is: an elbow with
+  // the arm raised sideways has a hinge across the parent's Z, and orienting it by that
+  // read a 100° bend as −100° in the Pose2Sim trial.
+  if (w < 1.0 && hinge.dot(parentZ) < 0.0) hinge = -hinge;
   return w * hinge + (1.0 - w) * parentZ;
 }
 

@@ -45,8 +45,8 @@ JointAngles jointAngles(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, const
 
 // The body's up: the mean over frames of the unit vector from the ankles' midpoint to the
 // head (frames where any of the three is missing are skipped); snapped to the nearest signed
-// axis when within `snapDegrees` of it (motion capture's up is an axis). Zero when no frame
-// has them.
+// axis when within `snapDegrees` of it (motion capture's up is an axis; 90 always snaps, SPEC
+// §2's rule; 0 never). Zero when no frame has them.
 Eigen::Vector3d bodyUp(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, double snapDegrees = 15.0);
 
 // Written atomically. CSV: "time_s,<names>" with `comments` as "# " lines first. .mot: OpenSim's

@@ -154,7 +154,7 @@ TEST_F(EngineCli, TheSkeletonEngineReconstructsKeypointsThroughACalibratedCamera
   const test::ShellRun r = runCli("reconstruct --engine skeleton --input " + (d / "pose/cam04_json").string() +
                                       " --camera " + (d / "Calib_qualisys.toml").string() + " --camera-name cam_04 --fps 60"
                                       " --reference " + (d / "pose-3d/S00_P00_T01_BalancingTrial_0-100.trc").string() +
-                                      " --out bal.csv --json", root_);
+                                      " --out bal.csv --angles bal.mot --json", root_);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const nlohmann::json report = nlohmann::json::parse(r.out);
   EXPECT_EQ(report["frame"], "world");
@@ -163,6 +163,26 @@ TEST_F(EngineCli, TheSkeletonEngineReconstructsKeypointsThroughACalibratedCamera
   EXPECT_LT(report["reference"]["mpjpe_procrustes_mm"].get<double>(),
             report["reference"]["mpjpe_mean_translation_mm"].get<double>());
   EXPECT_EQ(readJointCsv(root_ / "bal.csv").positionsMm.rows(), 100);
+  const std::string mot = test::readTextFile(root_ / "bal.mot");
+  EXPECT_NE(mot.find("nRows=100\nnColumns=27\ninDegrees=yes\n"), std::string::npos) << mot.substr(0, 200);
+  EXPECT_NE(mot.find("endheader\ntime\tpelvis_tilt\t"), std::string::npos);
+}
+
+TEST_F(EngineCli, AnglesOfAnyTrialAndWhereTheyDoNotApply) {
+  EW_REQUIRE_SHARED_DATA();
+  const fs::path trc = fs::absolute(test::sharedDataDir() / "pose2sim-balancing/pose-3d/S00_P00_T01_BalancingTrial_0-100.trc");
+  const test::ShellRun r = runCli("angles " + trc.string() + " --out ref.csv", root_);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("100 frames at 60 Hz, 23 angles"), std::string::npos) << r.err;
+  const std::string csv = test::readTextFile(root_ / "ref.csv");
+  EXPECT_NE(csv.find("# up=0 1 0 (file axes)\ntime_s,pelvis_tilt,"), std::string::npos) << csv.substr(0, 400);
+  const test::ShellRun txt = runCli("angles " + trc.string() + " --out ref.txt", root_);
+  EXPECT_EQ(txt.exitCode, 2) << txt.err;
+  EXPECT_NE(txt.err.find(".csv or .mot"), std::string::npos) << txt.err;
+  EXPECT_FALSE(fs::exists(root_ / "ref.txt"));
+  const test::ShellRun other = runCli("reconstruct --input " + trc.string() + " --project-angle 30 --out x.csv --angles x.mot", root_);
+  EXPECT_EQ(other.exitCode, 2) << other.err;
+  EXPECT_NE(other.err.find("run `angles` on the 3D CSV"), std::string::npos) << other.err;
 }
 
 }  // namespace
