@@ -2,6 +2,7 @@
 // A synthetic walker with exactly rigid bones seen through a known pinhole camera: the
 // skeleton engine's exact test cases (test_skeleton_solve.cpp, test_skeleton_camera.cpp).
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross()
 #include <cmath>
 
 #include "core/skeleton/skeleton_tree.h"
