@@ -1,6 +1,7 @@
 // The engine selector of reconstruct mode (issue 15): the same walker reconstructed by the
 // eigenwalker and by the snippet engine, the state saying which, the snippet engine's
-// per-snippet angles shown, and coefficient edits left to the eigenwalker.
+// per-snippet angles shown, and coefficient edits left to the eigenwalker; the skeleton
+// engine (issue 16) likewise, with its view read from its poses.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -62,6 +63,38 @@ TEST_F(GuiEngines, SnippetEngineReconstructsTheHeldOutWalkerAndSaysSo) {
   EXPECT_GT(countPixels(crop(shot, kReconView), isAmber), 200);
   const cv::Mat shotUnknown = load("snippet_unknown.png");
   EXPECT_GT(countPixels(crop(shotUnknown, kReconView), isAmber), 200);
+}
+
+TEST_F(GuiEngines, SkeletonEngineReconstructsTheHeldOutWalkerFromGeometryAlone) {
+  const auto d = dir.string();
+  const auto script = writeScript(dir, R"([
+    {"select_subject": "SYN005"}, {"set_angle": 60}, {"play": false}, {"set_phase": 0.25},
+    {"export_state": ")" + d + R"(/eigenwalker.json"},
+    {"set_engine": "skeleton"},
+    {"screenshot": ")" + d + R"(/skeleton.png"},
+    {"export_state": ")" + d + R"(/skeleton.json"},
+    {"set_coefficient": [1, 2.5]},
+    {"export_state": ")" + d + R"(/skeleton_edit.json"},
+    {"unknown_angle": true},
+    {"export_state": ")" + d + R"(/skeleton_unknown.json"}
+  ])");
+  const RunResult r = runViewer(dir, "--size 1280x800 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto eigen = readState(dir / "eigenwalker.json"), skel = readState(dir / "skeleton.json");
+  EXPECT_EQ(skel["engine"], "skeleton");
+  const auto& rec = skel["reconstruction"];
+  ASSERT_TRUE(rec.is_object()) << skel["reconstruction_error"];
+  EXPECT_EQ(rec["engine"], "skeleton");
+  EXPECT_EQ(rec["skeleton_frames"], 64);  // two cycles of SYN005's 0.94 Hz stride at 30 Hz
+  // Measured: 39.0 mm (one-cycle summary against the walker's own at the known 60°); the
+  // evaluate experiment's mean over the real subjects at 60° is 47 mm (docs/RESULTS.md).
+  // 100 mm is over twice both, where a mirrored walker or a wrong view lands far above.
+  EXPECT_LT(rec["mpjpe_mm"].get<double>(), 100.0);
+  EXPECT_NE(rec["mpjpe_mm"], eigen["reconstruction"]["mpjpe_mm"]);
+  EXPECT_EQ(readState(dir / "skeleton_edit.json")["reconstruction"]["mpjpe_mm"], rec["mpjpe_mm"]);
+  EXPECT_NEAR(readState(dir / "skeleton_unknown.json")["reconstruction"]["alpha_used_deg"].get<double>(), 60.0, 10.0);
+  const cv::Mat shot = load("skeleton.png");
+  EXPECT_GT(countPixels(crop(shot, kReconView), isAmber), 200);
 }
 
 }  // namespace

@@ -579,8 +579,6 @@ void setEstimator(AppState& s, Estimator estimator) {
 }
 
 void setEngine(AppState& s, EngineKind engine) {
-  if (engine == EngineKind::Skeleton)
-    throw std::invalid_argument("the viewer's engines are eigenwalker and snippet (skeleton: the CLI's evaluate, for now)");
   if (s.doc.recon.engine != engine) s.doc.editedSd.clear();
   s.doc.recon.engine = engine;
 }

@@ -86,6 +86,29 @@ void reconstructWithSnippets(const Document& doc, const ReconKey& key, const Wal
   r.snippets = e.snippet;
 }
 
+// The skeleton engine on the walker walking in place (an orthographic view shows no motion
+// along the line of sight, and the engine puts the pelvis at depth 0) for kSnippetCycles at
+// 30 Hz, with the walker's own bone lengths (the paper measures its performer); summarised
+// as one cycle like the snippet engine's.
+void reconstructWithSkeleton(const ReconKey& key, const Walker& walker, ReconBase& r) {
+  const double omega = walker.fit.omegaRadS;
+  const Eigen::MatrixXd frames = overgroundFrames(r.wTrue, omega, 0.0, kSnippetCycles, 30.0);
+  ViewInput in;
+  in.uvMm = projectFramesToView(frames, key.settings.alphaDeg);
+  in.rateHz = 30.0;
+  if (!key.settings.unknownAngle) in.alphaDeg = key.settings.alphaDeg;
+  in.name = walker.id;
+  SkeletonEngine engine;
+  engine.bones = boneLengthsFromFrames(frames, walker.id);
+  const EngineResult e = reconstructWithEngine(engine, in);
+  r.estimate = Reconstruction{};
+  r.estimate.alphaDeg = e.alphaDeg;
+  r.estimate.w = fourierSummary(e.framesMm, 30.0, omega);
+  r.estimate.k = projectOntoModel(r.model, r.estimate.w);
+  r.estimate.wDataPreserving = r.estimate.w;
+  r.skeleton = e.skeleton;
+}
+
 std::unique_ptr<ReconBase> computeRecon(const Document& doc, const ReconKey& key, SnippetPriorCache& priors) {
   const Walker& walker = *doc.walkerAt(key.walker);
   const WalkerModel chosen = modelForWalker(doc, key.walker);
@@ -115,8 +138,11 @@ std::unique_ptr<ReconBase> computeRecon(const Document& doc, const ReconKey& key
   r->observedTrail = trailOverCycle(r->observed, kTrailSamples);
   r->strideHz = walker.fit.omegaRadS / (2.0 * std::numbers::pi);
   r->engine = key.settings.engine;
-  if (r->engine == EngineKind::Snippet) {
-    reconstructWithSnippets(doc, key, walker, priors, *r);
+  if (r->engine == EngineKind::Snippet || r->engine == EngineKind::Skeleton) {
+    if (r->engine == EngineKind::Snippet)
+      reconstructWithSnippets(doc, key, walker, priors, *r);
+    else
+      reconstructWithSkeleton(key, walker, *r);
     r->alphaUsedDeg = r->estimate.alphaDeg;
     return r;
   }
@@ -138,7 +164,7 @@ std::unique_ptr<ReconDisplay> computeDisplay(const ReconBase& base,
   auto d = std::make_unique<ReconDisplay>();
   const auto n = base.sd.size();
   Eigen::VectorXd k = base.estimate.k;
-  // The snippet engine's k only describes its result: edits do not apply to it.
+  // The snippet and skeleton engines' k only describes their result: edits do not apply to it.
   if (base.engine == EngineKind::Eigenwalker && static_cast<Eigen::Index>(editedSd.size()) == n) {
     for (Eigen::Index i = 0; i < n; ++i) k(i) = editedSd[static_cast<std::size_t>(i)] * base.sd(i);
     d->edited = true;

@@ -59,6 +59,9 @@ struct ReconBase {
   double speedMps = 0.0;
   std::string speedSource;       // "measured", "population mean", "typical adult"
   int priorWalkers = 0;          // walkers the snippet prior learnt from
+  // The skeleton engine: the walker in place for kSnippetCycles at 30 Hz with its own bone
+  // lengths, summarised as one cycle into estimate.w like the snippet engine's.
+  std::optional<SkeletonSequence> skeleton;
 };
 
 inline constexpr double kSnippetCycles = 2.0;

@@ -83,6 +83,10 @@ nlohmann::json reconstructionJson(const Derived& derived) {
     j["speed_mps"] = r->speedMps;
     j["speed_source"] = r->speedSource;
   }
+  if (r->skeleton) {
+    j["skeleton_frames"] = r->skeleton->framesMm.rows();
+    j["skeleton_clamped_bone_frames"] = r->skeleton->clampedBoneFrames;
+  }
   std::vector<double> perJoint(d->depthRmsMm.data(), d->depthRmsMm.data() + d->depthRmsMm.size());
   j["depth_rms_mm"] = perJoint;
   // Joints the marker set lacked, estimated from a model: their errors apart.

@@ -63,9 +63,10 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
         actions::coefficientsFromWalker(s);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected walker's coefficients in the full model");
       ImGui::TextDisabled("units: SD of each component (√λ)");
-    } else if (r && r->engine == EngineKind::Snippet) {
-      ImGui::TextWrapped("The snippet engine has no eigenwalker coefficients. Its result, summarised "
-                         "as one cycle, lies here in gait space (read only):");
+    } else if (r && r->engine != EngineKind::Eigenwalker) {
+      ImGui::TextWrapped("The %s engine has no eigenwalker coefficients. Its result, summarised "
+                         "as one cycle, lies here in gait space (read only):",
+                         r->engine == EngineKind::Snippet ? "snippet" : "skeleton");
     } else {
       ImGui::BeginDisabled(s.doc.editedSd.empty());
       if (ImGui::Button("Back to the estimate")) actions::resetCoefficients(s);
@@ -78,7 +79,7 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
     }
     ImGui::Separator();
     const float labelW = 88.0f * ctx.scale;
-    const bool readOnly = !explore && r && r->engine == EngineKind::Snippet;
+    const bool readOnly = !explore && r && r->engine != EngineKind::Eigenwalker;
     ImGui::BeginDisabled(readOnly);
     for (int i = 0; i < n; ++i) {
       float value = 0.0f;

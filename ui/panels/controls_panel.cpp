@@ -29,7 +29,7 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
 
     if (doc.mode == Mode::Reconstruct) {
       sectionTitle("Engine");
-      int engine = doc.recon.engine == EngineKind::Snippet ? 1 : 0;
+      int engine = static_cast<int>(doc.recon.engine);
       if (ImGui::RadioButton("Eigenwalker", &engine, 0)) actions::setEngine(s, EngineKind::Eigenwalker);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("Zhang & Troje 2007: one gait cycle, PCA of walkers");
       ImGui::SameLine();
@@ -37,6 +37,15 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Howe, Leventon & Freeman 1999: 11-frame snippets, mixture prior,\n"
                           "learnt from the population's other subjects walked overground");
+      // Three radios fit one row only in a wide panel: the third wraps otherwise.
+      const ImGuiStyle& style = ImGui::GetStyle();
+      const float skeletonW = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize("Skeleton").x;
+      ImGui::SameLine();
+      if (ImGui::GetContentRegionAvail().x < skeletonW) ImGui::NewLine();
+      if (ImGui::RadioButton("Skeleton", &engine, 2)) actions::setEngine(s, EngineKind::Skeleton);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Zou et al. 2009: each frame from geometry alone, the walker's own\n"
+                          "bone lengths, no training; each bone's two depths chosen over the clip");
     }
     const bool eigenwalkerSettings = doc.mode != Mode::Reconstruct || doc.recon.engine == EngineKind::Eigenwalker;
 

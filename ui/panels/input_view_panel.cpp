@@ -186,6 +186,8 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
     if (r && r->engine == EngineKind::Snippet)
       std::snprintf(sub, sizeof sub, "orthographic, α = %.1f°, walking across at %.2f m/s",
                     s.doc.recon.alphaDeg, r->speedMps);
+    else if (r && r->engine == EngineKind::Skeleton)
+      std::snprintf(sub, sizeof sub, "orthographic, α = %.1f°, walking in place", s.doc.recon.alphaDeg);
     else
       std::snprintf(sub, sizeof sub, "orthographic view at α = %.1f°, as the reconstruction sees it",
                     s.doc.recon.alphaDeg);

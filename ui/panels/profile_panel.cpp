@@ -109,6 +109,11 @@ void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
       if (ImGui::Button("Estimate it (unknown view angle)")) actions::setUnknownAngle(s, true);
     } else if (r && r->snippets) {
       drawSnippetAngles(*r, ctx);
+    } else if (r && r->engine == EngineKind::Skeleton) {
+      ImGui::TextWrapped("The skeleton engine has no J(α) to scan: it reads the view from the poses it "
+                         "reconstructs (the body's forward, up × hip line, averaged over the clip's frames).");
+      ImGui::Text("est. α = %.1f°   true α = %.1f°   error %.1f°", r->alphaUsedDeg, r->alphaTrueDeg,
+                  viewAngleErrorDeg(r->alphaUsedDeg, r->alphaTrueDeg));
     } else if (r && r->search) {
       const ViewSearch& vs = *r->search;
       ImDrawList* dl = ImGui::GetWindowDrawList();

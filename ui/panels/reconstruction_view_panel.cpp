@@ -184,6 +184,12 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
           else
             std::snprintf(sub, sizeof sub, "snippets at the known α = %.1f°, %zu snippets",
                           r->alphaTrueDeg, n);
+        } else if (r->engine == EngineKind::Skeleton) {
+          if (s.doc.recon.unknownAngle)
+            std::snprintf(sub, sizeof sub, "geometry alone, α unknown: est. %.1f° (true %.1f°)", r->alphaUsedDeg,
+                          r->alphaTrueDeg);
+          else
+            std::snprintf(sub, sizeof sub, "geometry alone at the known α = %.1f°", r->alphaTrueDeg);
         } else if (s.doc.recon.estimator == Estimator::Map) {
           const std::size_t len = std::strlen(sub);
           std::snprintf(sub + len, sizeof sub - len, ", σ² = %.0f mm²", s.doc.recon.sigma2Mm2);
