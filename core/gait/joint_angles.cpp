@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <numbers>
 #include <optional>
+#include <utility>
 #include <sstream>
 #include <algorithm>
 #include <array>
@@ -29,32 +30,36 @@ std::optional<Vec> jointAt(const Eigen::Ref<const Eigen::MatrixXd>& frames, Eige
   return p;
 }
 
-// The frame whose Y is `y` and whose Z is `zHint` made perpendicular to it.
-std::optional<Rot> frameFromYZ(const Vec& y, const Vec& zHint) {
-  const double ny = y.norm();
-  if (!(ny > 1e-9)) return std::nullopt;
-  const Vec Y = y / ny;
-  const Vec zPerp = zHint - zHint.dot(Y) * Y;
-  const double nz = zPerp.norm();
-  if (!(nz > 1e-9)) return std::nullopt;
-  const Vec Z = zPerp / nz;
+// The unit `primary` and the unit part of `hint` perpendicular to it; nothing when either
+// vanishes.
+std::optional<std::pair<Vec, Vec>> orthonormalPair(const Vec& primary, const Vec& hint) {
+  const double np = primary.norm();
+  if (!(np > 1e-9)) return std::nullopt;
+  const Vec a = primary / np;
+  const Vec perp = hint - hint.dot(a) * a;
+  const double nh = perp.norm();
+  if (!(nh > 1e-9)) return std::nullopt;
+  return std::pair{a, Vec(perp / nh)};
+}
+
+Rot frameOf(const Vec& Y, const Vec& Z) {
   Rot r;
   r << Y.cross(Z), Y, Z;
   return r;
 }
 
+// The frame whose Y is `y` and whose Z is `zHint` made perpendicular to it.
+std::optional<Rot> frameFromYZ(const Vec& y, const Vec& zHint) {
+  const auto p = orthonormalPair(y, zHint);
+  if (!p) return std::nullopt;
+  return frameOf(p->first, p->second);
+}
+
 // The frame whose Z is `z` and whose Y is `yHint` made perpendicular to it.
 std::optional<Rot> frameFromZY(const Vec& z, const Vec& yHint) {
-  const double nz = z.norm();
-  if (!(nz > 1e-9)) return std::nullopt;
-  const Vec Z = z / nz;
-  const Vec yPerp = yHint - yHint.dot(Z) * Z;
-  const double ny = yPerp.norm();
-  if (!(ny > 1e-9)) return std::nullopt;
-  const Vec Y = yPerp / ny;
-  Rot r;
-  r << Y.cross(Z), Y, Z;
-  return r;
+  const auto p = orthonormalPair(z, yHint);
+  if (!p) return std::nullopt;
+  return frameOf(p->second, p->first);
 }
 
 // R = Rz(a)·Rx(b)·Ry(c): (a, b, c) in degrees.

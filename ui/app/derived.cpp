@@ -63,6 +63,16 @@ SnippetPriorCache::Entry SnippetPriorCache::get(const Document& doc, const std::
 
 namespace {
 
+// An engine's 30 Hz frames as r.estimate: one cycle (fourierSummary at the walker's ω), and
+// as k that cycle's nearest model coefficients (read only in the viewer).
+void summariseAsOneCycle(const EngineResult& e, double omegaRadS, ReconBase& r) {
+  r.estimate = Reconstruction{};
+  r.estimate.alphaDeg = e.alphaDeg;
+  r.estimate.w = fourierSummary(e.framesMm, 30.0, omegaRadS);
+  r.estimate.k = projectOntoModel(r.model, r.estimate.w);
+  r.estimate.wDataPreserving = r.estimate.w;
+}
+
 // The snippet engine on the walker, walked overground and seen at the true α: its frames
 // summarised as one cycle into r.estimate (w, and k as that w's nearest model coefficients).
 void reconstructWithSnippets(const Document& doc, const ReconKey& key, const Walker& walker,
@@ -78,11 +88,7 @@ void reconstructWithSnippets(const Document& doc, const ReconKey& key, const Wal
   if (!key.settings.unknownAngle) in.alphaDeg = key.settings.alphaDeg;
   in.name = walker.id;
   const EngineResult e = reconstructWithEngine(SnippetEngine{prior.prior, {}}, in);
-  r.estimate = Reconstruction{};
-  r.estimate.alphaDeg = e.alphaDeg;
-  r.estimate.w = fourierSummary(e.framesMm, 30.0, omega);
-  r.estimate.k = projectOntoModel(r.model, r.estimate.w);
-  r.estimate.wDataPreserving = r.estimate.w;
+  summariseAsOneCycle(e, omega, r);
   r.snippets = e.snippet;
 }
 
@@ -101,11 +107,7 @@ void reconstructWithSkeleton(const ReconKey& key, const Walker& walker, ReconBas
   SkeletonEngine engine;
   engine.bones = boneLengthsFromFrames(frames, walker.id);
   const EngineResult e = reconstructWithEngine(engine, in);
-  r.estimate = Reconstruction{};
-  r.estimate.alphaDeg = e.alphaDeg;
-  r.estimate.w = fourierSummary(e.framesMm, 30.0, omega);
-  r.estimate.k = projectOntoModel(r.model, r.estimate.w);
-  r.estimate.wDataPreserving = r.estimate.w;
+  summariseAsOneCycle(e, omega, r);
   r.skeleton = e.skeleton;
 }
 
