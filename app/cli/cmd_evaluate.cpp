@@ -132,6 +132,8 @@ EvaluationOptions evaluationOptions(const EvaluateArgs& a, ProgressPrinter& prin
   o.map = a.method != "lsq";
   if (a.sigma2Mm2 > 0) o.sigma2Mm2 = a.sigma2Mm2;
   if (a.components > 0) o.model.components = a.components;
+  o.cameraSkeleton = asksFor(a, EngineKind::Skeleton);
+  o.cameraSnippet = asksFor(a, EngineKind::Snippet);
   o.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   o.progress = [&printer](int done, int total, const std::string& what) { printer(done, total, what); };
   return o;
@@ -239,7 +241,8 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "                     3D; the other joints estimated from the model; method map, lsq or mean = baseline)\n"
       "  camera.csv         one row per held-out walker x random camera x pixel noise: the clip written as\n"
       "                     OpenPose JSON, read back and reconstructed with everything unknown (--experiment\n"
-      "                     camera only, not in all; docs/CAMERA.md)\n"
+      "                     camera only, not in all; docs/CAMERA.md); beside it the skeleton and snippet\n"
+      "                     engines given the true camera (skeleton_*, snippet_* columns; --engine narrows)\n"
       "  snippet_engines.csv subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error: the snippet engine\n"
       "                     (Howe, Leventon & Freeman 1999) beside the eigenwalker on the same 2D frames; clip is\n"
       "                     trial, 0.5 s or whole trial (--experiment snippet only; docs/SNIPPETS.md)\n"
@@ -275,8 +278,8 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--engine", args->engines,
                   "Engines to evaluate (repeatable; default eigenwalker and snippet): eigenwalker runs the "
                   "paper's experiments, snippet the snippet engine's ('snippet', 'snippet-clusters'), skeleton "
-                  "(Zou et al. 2009, with each walker's own bone lengths) experiment 'snippet'; experiment "
-                  "'snippet' scores each engine asked for")
+                  "(Zou et al. 2009, with each walker's own bone lengths) experiment 'snippet'; experiments "
+                  "'snippet' and 'camera' score each engine asked for ('camera' needs eigenwalker)")
       ->check(CLI::IsMember({"eigenwalker", "snippet", "skeleton"}));
   cmd->callback([args, &exitCode] {
     try {

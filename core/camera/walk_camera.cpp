@@ -3,6 +3,9 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Geometry>
+
+#include "core/common/errors.h"
 #include "core/common/skeleton.h"
 #include "core/engine/projection.h"
 
@@ -32,6 +35,31 @@ Eigen::MatrixXd projectWalk(const Eigen::Ref<const Eigen::MatrixXd>& frames,
       }
     }
   }
+  return out;
+}
+
+CalibratedCamera calibrationOf(const WalkCamera& c, double widthPx, double heightPx) {
+  if (c.model != CameraModel::Pinhole)
+    throw Error(ErrorKind::BadArgument, "", "", "a scaled orthographic camera has no pinhole calibration");
+  const double ca = std::cos(degToRad(c.alphaDeg)), sa = std::sin(degToRad(c.alphaDeg));
+  const double ce = std::cos(degToRad(c.elevationDeg)), se = std::sin(degToRad(c.elevationDeg));
+  Eigen::Matrix3d r;
+  r << ca, sa, 0.0,            //
+      se * sa, -se * ca, -ce,  //
+      -ce * sa, ce * ca, -se;
+  const Eigen::Vector3d t = Eigen::Vector3d(0.0, 0.0, c.distanceMm) - r * Eigen::Vector3d(0.0, 0.0, c.lookAtHeightMm);
+  const Eigen::AngleAxisd axisAngle(r);
+  const Eigen::Vector3d rodrigues = axisAngle.angle() * axisAngle.axis();
+  CalibratedCamera out;
+  out.name = out.table = "walk camera";
+  out.widthPx = widthPx;
+  out.heightPx = heightPx;
+  out.fxPx = out.fyPx = c.focalPx;
+  out.cxPx = c.cxPx;
+  out.cyPx = c.cyPx;
+  out.hasExtrinsics = true;
+  out.rotation = {rodrigues.x(), rodrigues.y(), rodrigues.z()};
+  out.translationMm = {t.x(), t.y(), t.z()};
   return out;
 }
 

@@ -13,6 +13,8 @@
 
 #include <Eigen/Core>
 
+#include "core/camera/calibration_file.h"
+
 namespace ew {
 
 enum class CameraModel { Pinhole, ScaledOrthographic };
@@ -35,5 +37,13 @@ struct WalkCamera {
 // the pinhole (Z_c ≤ 1 mm) is NaN.
 Eigen::MatrixXd projectWalk(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
                             const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& camera);
+
+// A pinhole WalkCamera as a calibration (OpenCV's x_cam = R x_world + t, no distortion,
+// `widthPx` × `heightPx`), the world being the walker's canonical frame with its progression
+// put back: W(t) = X(t) + (0, y0 + v·t, 0). Then R = E(ε) R₀(α) and t = (0, 0, D) − R (0, 0, h),
+// R₀'s rows (cos α, sin α, 0), (0, 0, −1), (−sin α, cos α, 0) (a level camera at azimuth α),
+// E(ε) the tilt about the camera's x axis. Throws Error(BadArgument) for a scaled
+// orthographic camera (it has no calibration of this kind).
+CalibratedCamera calibrationOf(const WalkCamera& camera, double widthPx, double heightPx);
 
 }  // namespace ew

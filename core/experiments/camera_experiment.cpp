@@ -12,10 +12,14 @@
 #include "core/camera/walk_camera.h"
 #include "core/common/errors.h"
 #include "core/engine/fourier.h"
+#include "core/engines/engine.h"
 #include "core/engine/projection.h"
 #include "core/keypoints/image_gait.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/keypoints/openpose_writer.h"
+#include "core/gait/body_size.h"
+#include "core/skeleton/bone_sources.h"
+#include "core/skeleton/skeleton_camera.h"
 
 namespace ew {
 namespace {
@@ -125,9 +129,137 @@ fs::path clipFolder(int index) {
          ("eigenwalker_camera_" + std::to_string(::getpid()) + "_" + std::to_string(index));
 }
 
+// The eigenwalker with everything unknown (the experiment's subject).
+// Returns the reconstructed walker (w, ω).
+std::pair<VectorXd, double> eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, const Clip& clip,
+                                              const KeypointTrial& t, const std::string& folder,
+                                              const CameraExperimentOptions& o, CameraRow& row) {
+  CameraFitOptions f;
+  f.estimator = {Estimator::Map, o.sigma2Mm2};
+  f.strideHzHint = imageGaitCycles(t).strideHz;
+  f.file = folder;
+  const CameraFit fit = reconstructUnknownCamera(fold.model, t.jointsPx, t.rateHz, f);
+  row.alphaDeg = fit.camera.alphaDeg;
+  row.elevationDeg = fit.camera.elevationDeg;
+  row.focalPx = fit.camera.focalPx;
+  row.distanceM = fit.camera.distanceMm / 1000;
+  row.alphaErrorDeg = std::abs(wrapDeg(fit.camera.alphaDeg - clip.camera.alphaDeg));
+  row.elevationErrorDeg = std::abs(fit.camera.elevationDeg - clip.camera.elevationDeg);
+  row.focalRelError = std::abs(fit.camera.focalPx - clip.camera.focalPx) / clip.camera.focalPx;
+  const double height = walkerHeadHeightMm(w.fit.w);
+  row.heightRelError = std::abs(fit.headHeightMm - height) / height;
+  const VectorXd times = frameTimes(static_cast<int>(clip.times.size()), o.fps);
+  row.mpjpeMm = mpjpeWithoutTranslation(synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, times), clip.truth);
+  row.reprojectionRmsPx = fit.reprojectionRmsPx;
+  return {fit.w, fit.omegaRadS};
+}
+
+// Frames in the walker's frame with the clip's progression added (sign +1) or taken out (−1).
+MatrixXd shiftedByProgression(MatrixXd frames, const Clip& clip, double sign) {
+  for (Eigen::Index f = 0; f < frames.rows(); ++f)
+    for (int j = 0; j < kJointCount; ++j)
+      frames(f, 3 * j + 1) += sign * (clip.camera.startOffsetMm + clip.camera.speedMmS * clip.times[f]);
+  return frames;
+}
+
+// The snippet engine's orthographic view of a pinhole image (weak perspective): each ray
+// turned level (the camera's tilt ε about its x axis taken out), met with the
+// fronto-parallel plane through the pelvis at `pelvisCameraMm`'s depth; u right, v up (mm).
+MatrixXd weakPerspectiveView(const MatrixXd& px, const WalkCamera& c, const MatrixXd& pelvisCameraMm) {
+  const double ce = std::cos(degToRad(c.elevationDeg)), se = std::sin(degToRad(c.elevationDeg));
+  Eigen::Matrix3d level;  // Eᵀ: camera frame → level camera frame
+  level << 1, 0, 0, 0, ce, se, 0, -se, ce;
+  MatrixXd uv(px.rows(), px.cols());
+  for (Eigen::Index f = 0; f < px.rows(); ++f) {
+    const double depth = (level * pelvisCameraMm.row(f).transpose()).z();
+    for (int j = 0; j < kJointCount; ++j) {
+      const Eigen::Vector3d ray =
+          level * Eigen::Vector3d((px(f, 2 * j) - c.cxPx) / c.focalPx, (px(f, 2 * j + 1) - c.cyPx) / c.focalPx, 1.0);
+      const bool seen = std::isfinite(ray.x()) && std::isfinite(ray.y()) && ray.z() > 1e-6;
+      uv(f, 2 * j) = seen ? ray.x() * depth / ray.z() : std::nan("");
+      uv(f, 2 * j + 1) = seen ? -ray.y() * depth / ray.z() : std::nan("");
+    }
+  }
+  return uv;
+}
+
+// The skeleton engine through the true camera with `bones`, scored; `keep` receives its result.
+EngineClipScore skeletonOnClip(const Clip& clip, const KeypointTrial& t, const BoneLengths& bones,
+                               const std::string& name, std::optional<SkeletonCameraResult>* keep = nullptr) {
+  EngineClipScore score{std::nan(""), 0, ""};
+  try {
+    SkeletonCameraResult r =
+        reconstructThroughCamera(t.jointsPx, calibrationOf(clip.camera, kImageW, kImageH), bones, t.rateHz, name);
+    score.mpjpeMm = mpjpeWithoutTranslation(shiftedByProgression(r.worldMm, clip, -1.0), clip.truth);
+    score.clampedBoneFrames = r.sequence.clampedBoneFrames;
+    if (keep) *keep = std::move(r);
+  } catch (const std::exception& e) {
+    score.error = e.what();
+  }
+  return score;
+}
+
+EngineClipScore snippetOnClip(const Clip& clip, const KeypointTrial& t, const SnippetEngine& snippet,
+                              const SkeletonCameraResult& depthFrom, const std::string& name) {
+  EngineClipScore score{std::nan(""), 0, ""};
+  try {
+    ViewInput in;
+    in.uvMm = weakPerspectiveView(t.jointsPx, clip.camera,
+                                  depthFrom.sequence.framesMm.middleCols<3>(3 * index(Joint::Pelvis)));
+    in.rateHz = t.rateHz;
+    in.alphaDeg = clip.camera.alphaDeg;
+    in.name = name;
+    const EngineResult e = reconstructWithEngine(snippet, in);
+    score.mpjpeMm = mpjpeWithoutTranslation(e.framesMm, shiftedByProgression(clip.truth, clip, 1.0));
+  } catch (const std::exception& e) {
+    score.error = e.what();
+  }
+  return score;
+}
+
+EngineClipScore failed(const std::string& why) { return {std::nan(""), 0, why}; }
+
+// The skeleton engine through the true camera with each source of bone lengths, and the
+// snippet engine at the depth the skeleton engine (own bones) found.
+void geometricEnginesOnClip(const Clip& clip, const KeypointTrial& t, const SnippetEngine* snippet,
+                            const std::optional<std::pair<VectorXd, double>>& eigenwalker,
+                            const CameraExperimentOptions& o, const std::string& name, CameraRow& row) {
+  if (t.jointsPx.rows() != clip.truth.rows()) {
+    const std::string why = name + ": frames lost reading back";
+    if (o.skeleton) row.skeleton = row.skeletonTable2 = row.skeletonEigenwalkerBones = failed(why);
+    if (o.snippet) row.snippet = failed(why);
+    return;
+  }
+  std::optional<SkeletonCameraResult> own;
+  EngineClipScore ownScore;
+  try {
+    ownScore = skeletonOnClip(clip, t, boneLengthsFromFrames(clip.truth, name), name, &own);
+  } catch (const std::exception& e) {
+    ownScore = failed(e.what());
+  }
+  if (o.snippet) row.snippet = own && snippet ? snippetOnClip(clip, t, *snippet, *own, name) : failed(ownScore.error);
+  if (!o.skeleton) return;
+  row.skeleton = ownScore;
+  try {
+    const auto size = measureBodySize(clip.truth);
+    if (!size) throw Error(ErrorKind::BadData, name, "", "no head-to-ankles distance for a stature");
+    row.skeletonTable2 =
+        skeletonOnClip(clip, t, boneLengthsFromZouTable2(size->lengthMm / kHeadAboveAnklesPerStature, name), name);
+  } catch (const std::exception& e) {
+    row.skeletonTable2 = failed(e.what());
+  }
+  try {
+    if (!eigenwalker) throw Error(ErrorKind::BadData, name, "", "the eigenwalker gave no walker: " + row.error);
+    row.skeletonEigenwalkerBones =
+        skeletonOnClip(clip, t, boneLengthsFromWalker(eigenwalker->first, eigenwalker->second, name), name);
+  } catch (const std::exception& e) {
+    row.skeletonEigenwalkerBones = failed(e.what());
+  }
+}
+
 void reconstructClip(const Fold& fold, const ExperimentWalker& w, const Clip& clip, const MatrixXd& observed,
-                     const MatrixXd& confidence, const MatrixXd* other, const CameraExperimentOptions& o,
-                     int index, CameraRow& row) {
+                     const MatrixXd& confidence, const MatrixXd* other, const SnippetEngine* snippet,
+                     const CameraExperimentOptions& o, int index, CameraRow& row) {
   const fs::path folder = clipFolder(index);
   fs::remove_all(folder);
   std::vector<OpenPosePerson> people{{observed, confidence}};
@@ -137,27 +269,42 @@ void reconstructClip(const Fold& fold, const ExperimentWalker& w, const Clip& cl
     KeypointOptions k;
     k.fps = o.fps;
     const KeypointTrial t = readKeypointTrial(folder, k);
-    CameraFitOptions f;
-    f.estimator = {Estimator::Map, o.sigma2Mm2};
-    f.strideHzHint = imageGaitCycles(t).strideHz;
-    f.file = folder.string();
-    const CameraFit fit = reconstructUnknownCamera(fold.model, t.jointsPx, t.rateHz, f);
-    row.alphaDeg = fit.camera.alphaDeg;
-    row.elevationDeg = fit.camera.elevationDeg;
-    row.focalPx = fit.camera.focalPx;
-    row.distanceM = fit.camera.distanceMm / 1000;
-    row.alphaErrorDeg = std::abs(wrapDeg(fit.camera.alphaDeg - clip.camera.alphaDeg));
-    row.elevationErrorDeg = std::abs(fit.camera.elevationDeg - clip.camera.elevationDeg);
-    row.focalRelError = std::abs(fit.camera.focalPx - clip.camera.focalPx) / clip.camera.focalPx;
-    const double height = walkerHeadHeightMm(w.fit.w);
-    row.heightRelError = std::abs(fit.headHeightMm - height) / height;
-    const VectorXd times = frameTimes(static_cast<int>(clip.times.size()), o.fps);
-    row.mpjpeMm = mpjpeWithoutTranslation(synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, times), clip.truth);
-    row.reprojectionRmsPx = fit.reprojectionRmsPx;
-  } catch (const std::exception& e) {
+    std::optional<std::pair<VectorXd, double>> walker;
+    try {
+      walker = eigenwalkerOnClip(fold, w, clip, t, folder.string(), o, row);
+    } catch (const std::exception& e) {
+      row.error = e.what();
+    }
+    if (o.skeleton || o.snippet) geometricEnginesOnClip(clip, t, snippet, walker, o, folder.string(), row);
+  } catch (const std::exception& e) {  // the clip could not be read back: no engine saw it
     row.error = e.what();
+    if (o.skeleton) row.skeleton = row.skeletonTable2 = row.skeletonEigenwalkerBones = failed(e.what());
+    if (o.snippet) row.snippet = failed(e.what());
   }
   fs::remove_all(folder);
+}
+
+// Each fold's snippet prior, learnt from the other subjects' walkers (4 cycles at 1.3 m/s,
+// the middle of the clips' speeds); a fold whose prior cannot be learnt gets none (its
+// clips then carry the reason).
+std::vector<std::shared_ptr<const PreparedSnippetPrior>> snippetPriors(const std::vector<ExperimentWalker>& walkers,
+                                                                       const std::vector<Fold>& folds, int threads,
+                                                                       std::vector<std::string>& whyNot) {
+  std::vector<std::shared_ptr<const PreparedSnippetPrior>> priors(folds.size());
+  whyNot.assign(folds.size(), "");
+  parallelFor(static_cast<int>(folds.size()), threads, [&](int f) {
+    std::vector<FourierWalkerTrial> trials;
+    for (const auto& w : walkers)
+      if (w.subject != folds[static_cast<std::size_t>(f)].subject)
+        trials.push_back({w.subject, w.id, w.fit.w, w.fit.omegaRadS, 1.3});
+    try {
+      priors[static_cast<std::size_t>(f)] = std::make_shared<const PreparedSnippetPrior>(
+          prepareSnippetPrior(trainSnippetPrior(snippetTrialsFromFourier(trials), {})));
+    } catch (const std::exception& e) {
+      whyNot[static_cast<std::size_t>(f)] = std::string("snippet prior: ") + e.what();
+    }
+  });
+  return priors;
 }
 
 }  // namespace
@@ -175,6 +322,9 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
       for (int c = 0; c < o.camerasPerWalker; ++c) jobs.push_back({static_cast<int>(f), w, c});
     }
   const std::size_t levels = o.noisePx.size();
+  std::vector<std::string> noPrior;
+  const auto priors = o.snippet ? snippetPriors(walkers, folds, o.threads, noPrior)
+                                : std::vector<std::shared_ptr<const PreparedSnippetPrior>>(folds.size());
   std::vector<CameraRow> rows(jobs.size() * levels);
   parallelFor(static_cast<int>(jobs.size()), o.threads, [&](int j) {
     const Job& job = jobs[static_cast<std::size_t>(j)];
@@ -203,12 +353,38 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
       row.trueElevationDeg = clip.camera.elevationDeg;
       row.trueFocalPx = clip.camera.focalPx;
       row.trueDistanceM = clip.camera.distanceMm / 1000;
+      const auto& prior = priors[static_cast<std::size_t>(job.fold)];
+      const SnippetEngine snippet{prior, {}};
       reconstructClip(folds[static_cast<std::size_t>(job.fold)], w, clip, observed, confidence,
-                      withBystander ? &other : nullptr, o, j * static_cast<int>(levels) + static_cast<int>(l), row);
+                      withBystander ? &other : nullptr, prior ? &snippet : nullptr, o,
+                      j * static_cast<int>(levels) + static_cast<int>(l), row);
+      if (o.snippet && !prior) row.snippet = failed(noPrior[static_cast<std::size_t>(job.fold)]);
     }
   });
   return rows;
 }
+
+namespace {
+
+CameraSummary::Other summarizeOtherEngine(const std::vector<const CameraRow*>& rows,
+                                          std::optional<EngineClipScore> CameraRow::*score) {
+  CameraSummary::Other out;
+  double sum = 0;
+  for (const auto* r : rows) {
+    const auto& s = r->*score;
+    if (!s) continue;
+    ++out.clips;
+    if (!s->error.empty() || !std::isfinite(s->mpjpeMm)) {
+      ++out.failures;
+      continue;
+    }
+    sum += s->mpjpeMm;
+  }
+  out.meanMpjpeMm = out.clips > out.failures ? sum / (out.clips - out.failures) : std::nan("");
+  return out;
+}
+
+}  // namespace
 
 std::vector<CameraSummary> summarizeCamera(const std::vector<CameraRow>& rows) {
   std::map<double, std::vector<const CameraRow*>> byNoise;
@@ -238,6 +414,10 @@ std::vector<CameraSummary> summarizeCamera(const std::vector<CameraRow>& rows) {
       height.push_back(r->heightRelError);
       within += r->heightRelError <= 0.05;
     }
+    s.skeleton = summarizeOtherEngine(list, &CameraRow::skeleton);
+    s.skeletonTable2 = summarizeOtherEngine(list, &CameraRow::skeletonTable2);
+    s.skeletonEigenwalkerBones = summarizeOtherEngine(list, &CameraRow::skeletonEigenwalkerBones);
+    s.snippet = summarizeOtherEngine(list, &CameraRow::snippet);
     const int ok = s.clips - s.failures;
     s.meanMpjpeMm = ok ? mpjpe / ok : std::nan("");
     s.medianAlphaErrorDeg = median(alpha);

@@ -551,6 +551,8 @@ EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
     CameraExperimentOptions camera;
     camera.sigma2Mm2 = s2;
     camera.threads = options.threads;
+    camera.skeleton = options.cameraSkeleton;
+    camera.snippet = options.cameraSnippet;
     res.camera = cameraErrors(walkers, folds, camera);
   });
   return res;

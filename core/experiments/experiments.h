@@ -59,6 +59,8 @@ struct EvaluationOptions {
   std::uint64_t noiseSeed = 20070501;
   std::vector<JointSet> missingJointSets = defaultMissingJointSets();
   ModelOptions model;                   // N per fold (default 95 %, ≤ R − 2 in LOO)
+  // Experiment "camera": the other engines scored beside the eigenwalker (camera_experiment.h).
+  bool cameraSkeleton = true, cameraSnippet = true;
   int threads = 1;
   ExperimentProgressFn progress;
 };

@@ -132,6 +132,14 @@ std::string snippetClustersCsv(const std::vector<ClusterChoiceRow>& rows) {
   });
 }
 
+namespace {
+
+// An engine's columns: empty when it was not asked for.
+std::string scoreMm(const std::optional<EngineClipScore>& s) { return s ? num(s->mpjpeMm) : ""; }
+std::string scoreError(const std::optional<EngineClipScore>& s) { return s ? quotedError(s->error) : ""; }
+
+}  // namespace
+
 std::string cameraCsv(const std::vector<CameraRow>& rows) {
   return csv(kCameraHeader, rows, [](const CameraRow& r) {
     const std::string error = r.error;
@@ -139,7 +147,10 @@ std::string cameraCsv(const std::vector<CameraRow>& rows) {
                  std::to_string(r.frames), num(r.trueAlphaDeg), num(r.trueElevationDeg), num(r.trueFocalPx),
                  num(r.trueDistanceM), num(r.alphaDeg), num(r.elevationDeg), num(r.focalPx), num(r.distanceM),
                  num(r.alphaErrorDeg), num(r.elevationErrorDeg), num(r.focalRelError), num(r.heightRelError),
-                 num(r.mpjpeMm), num(r.reprojectionRmsPx), quotedError(error)});
+                 num(r.mpjpeMm), num(r.reprojectionRmsPx), quotedError(error), scoreMm(r.skeleton),
+                 r.skeleton ? std::to_string(r.skeleton->clampedBoneFrames) : "", scoreError(r.skeleton),
+                 scoreMm(r.skeletonTable2), scoreError(r.skeletonTable2), scoreMm(r.skeletonEigenwalkerBones),
+                 scoreError(r.skeletonEigenwalkerBones), scoreMm(r.snippet), scoreError(r.snippet)});
   });
 }
 
@@ -284,6 +295,14 @@ std::string summaryJson(const EvaluationResults& r, const EvaluationProvenance& 
                         {"median_focal_rel_error", c.medianFocalRelError},
                         {"median_height_rel_error", c.medianHeightRelError},
                         {"height_within_5_percent_share", c.heightWithin5Share}});
+      const auto other = [&](const char* key, const CameraSummary::Other& e) {
+        if (e.clips)
+          camera.back()[key] = {{"clips", e.clips}, {"failures", e.failures}, {"mean_mpjpe_mm", e.meanMpjpeMm}};
+      };
+      other("skeleton", c.skeleton);
+      other("skeleton_table2_bones", c.skeletonTable2);
+      other("skeleton_eigenwalker_bones", c.skeletonEigenwalkerBones);
+      other("snippet", c.snippet);
     }
     s["camera"] = camera;
   }

@@ -38,6 +38,12 @@ Eigen::Vector3d imageUp(const Eigen::MatrixXd& px) {
   return up.norm() > 0.0 ? up.normalized() : Eigen::Vector3d(0.0, -1.0, 0.0);
 }
 
+// The bones whose bound sets the depth: the long ones. The short ones (neck, clavicles,
+// hips) are 40-60 px in a typical image, so a few pixels of detector offset — the
+// shoulders' midpoint standing in for the sternum — move their bound by 10 % or more.
+constexpr std::array<bool, kBoneCount> kDepthBones = {false, true, false, false, true, true, true,
+                                                      true,  false, false, true, true, true, true};
+
 }  // namespace
 
 Eigen::Matrix3d rotationFromRodrigues(const std::array<double, 3>& rotation) {
@@ -77,6 +83,7 @@ std::vector<double> rootDistancesFromBones(const std::vector<JointRays>& rays, c
   for (const JointRays& r : rays) {
     double best = std::numeric_limits<double>::infinity();
     for (size_t b = 0; b < kBones.size(); ++b) {
+      if (!kDepthBones[b]) continue;
       const double sine = r.direction.col(index(kBones[b].first)).cross(r.direction.col(index(kBones[b].second))).norm();
       if (sine > 1e-12) best = std::min(best, bones.mm[b] / sine);
     }
