@@ -11,21 +11,35 @@
 
 namespace ew {
 
-Eigen::MatrixXd projectWalk(const Eigen::Ref<const Eigen::MatrixXd>& frames,
-                            const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& c) {
+Eigen::MatrixXd walkInCameraFrame(const Eigen::Ref<const Eigen::MatrixXd>& frames,
+                                  const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& c) {
   const double ca = std::cos(degToRad(c.alphaDeg)), sa = std::sin(degToRad(c.alphaDeg));
   const double ce = std::cos(degToRad(c.elevationDeg)), se = std::sin(degToRad(c.elevationDeg));
   const bool pinhole = c.model == CameraModel::Pinhole;
   const double y0 = pinhole ? c.startOffsetMm : 0.0, h = pinhole ? c.lookAtHeightMm : 0.0;
-  Eigen::MatrixXd out(frames.rows(), 2 * kJointCount);
+  Eigen::MatrixXd out(frames.rows(), 3 * kJointCount);
   for (Eigen::Index f = 0; f < frames.rows(); ++f) {
     const double forward = y0 + c.speedMmS * timesS[f];
     for (int j = 0; j < kJointCount; ++j) {
       const double x = frames(f, 3 * j), y = frames(f, 3 * j + 1) + forward, z = frames(f, 3 * j + 2) - h;
       const double u = x * ca + y * sa, d = -x * sa + y * ca;
-      const double xc = u, yc = -(d * se + z * ce);
+      out(f, 3 * j) = u;
+      out(f, 3 * j + 1) = -(d * se + z * ce);
+      out(f, 3 * j + 2) = c.distanceMm + d * ce - z * se;
+    }
+  }
+  return out;
+}
+
+Eigen::MatrixXd projectWalk(const Eigen::Ref<const Eigen::MatrixXd>& frames,
+                            const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& c) {
+  const Eigen::MatrixXd cam = walkInCameraFrame(frames, timesS, c);
+  const bool pinhole = c.model == CameraModel::Pinhole;
+  Eigen::MatrixXd out(frames.rows(), 2 * kJointCount);
+  for (Eigen::Index f = 0; f < frames.rows(); ++f) {
+    for (int j = 0; j < kJointCount; ++j) {
+      const double xc = cam(f, 3 * j), yc = cam(f, 3 * j + 1), zc = cam(f, 3 * j + 2);
       if (pinhole) {
-        const double zc = c.distanceMm + d * ce - z * se;
         const bool visible = zc > 1.0;
         out(f, 2 * j) = visible ? c.cxPx + c.focalPx * xc / zc : std::numeric_limits<double>::quiet_NaN();
         out(f, 2 * j + 1) = visible ? c.cyPx + c.focalPx * yc / zc : std::numeric_limits<double>::quiet_NaN();

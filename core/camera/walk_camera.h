@@ -38,6 +38,11 @@ struct WalkCamera {
 Eigen::MatrixXd projectWalk(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
                             const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& camera);
 
+// The walk in the camera's frame (x right, y down, z forward; mm): T × 45, X_c, Y_c, Z_c of
+// the equations above per joint (Z_c is D + d cos ε − z sin ε for either model).
+Eigen::MatrixXd walkInCameraFrame(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
+                                  const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& camera);
+
 // A pinhole WalkCamera as a calibration (OpenCV's x_cam = R x_world + t, no distortion,
 // `widthPx` × `heightPx`), the world being the walker's canonical frame with its progression
 // put back: W(t) = X(t) + (0, y0 + v·t, 0). Then R = E(ε) R₀(α) and t = (0, 0, D) − R (0, 0, h),

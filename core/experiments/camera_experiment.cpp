@@ -130,8 +130,15 @@ fs::path clipFolder(int index) {
 }
 
 // The eigenwalker with everything unknown (the experiment's subject).
-// Returns the reconstructed walker (w, ω).
-std::pair<VectorXd, double> eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, const Clip& clip,
+// What the eigenwalker's fit gives the other engines: its walker, and that walker in the
+// fit's own camera frame at every frame (a guide for the skeleton engine's branches).
+struct EigenwalkerClip {
+  VectorXd w;
+  double omegaRadS = 0.0;
+  std::vector<JointMatrix> guideMm;
+};
+
+EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, const Clip& clip,
                                               const KeypointTrial& t, const std::string& folder,
                                               const CameraExperimentOptions& o, CameraRow& row) {
   CameraFitOptions f;
@@ -149,9 +156,14 @@ std::pair<VectorXd, double> eigenwalkerOnClip(const Fold& fold, const Experiment
   const double height = walkerHeadHeightMm(w.fit.w);
   row.heightRelError = std::abs(fit.headHeightMm - height) / height;
   const VectorXd times = frameTimes(static_cast<int>(clip.times.size()), o.fps);
-  row.mpjpeMm = mpjpeWithoutTranslation(synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, times), clip.truth);
+  const MatrixXd frames = synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, times);
+  row.mpjpeMm = mpjpeWithoutTranslation(frames, clip.truth);
   row.reprojectionRmsPx = fit.reprojectionRmsPx;
-  return {fit.w, fit.omegaRadS};
+  EigenwalkerClip out{fit.w, fit.omegaRadS, {}};
+  const MatrixXd camera = walkInCameraFrame(frames, times, fit.camera);
+  for (Eigen::Index f = 0; f < camera.rows(); ++f)
+    out.guideMm.push_back(Eigen::Map<const Eigen::Matrix<double, 3, kJointCount>>(camera.row(f).eval().data()));
+  return out;
 }
 
 // Frames in the walker's frame with the clip's progression added (sign +1) or taken out (−1).
@@ -185,11 +197,14 @@ MatrixXd weakPerspectiveView(const MatrixXd& px, const WalkCamera& c, const Matr
 
 // The skeleton engine through the true camera with `bones`, scored; `keep` receives its result.
 EngineClipScore skeletonOnClip(const Clip& clip, const KeypointTrial& t, const BoneLengths& bones,
-                               const std::string& name, std::optional<SkeletonCameraResult>* keep = nullptr) {
+                               const std::string& name, const std::vector<JointMatrix>* guide = nullptr,
+                               std::optional<SkeletonCameraResult>* keep = nullptr) {
   EngineClipScore score{std::nan(""), 0, ""};
   try {
-    SkeletonCameraResult r =
-        reconstructThroughCamera(t.jointsPx, calibrationOf(clip.camera, kImageW, kImageH), bones, t.rateHz, name);
+    SkeletonCameraOptions options;
+    if (guide) options.solve.guideMm = *guide;
+    SkeletonCameraResult r = reconstructThroughCamera(t.jointsPx, calibrationOf(clip.camera, kImageW, kImageH), bones,
+                                                      t.rateHz, name, options);
     score.mpjpeMm = mpjpeWithoutTranslation(shiftedByProgression(r.worldMm, clip, -1.0), clip.truth);
     score.clampedBoneFrames = r.sequence.clampedBoneFrames;
     if (keep) *keep = std::move(r);
@@ -222,7 +237,7 @@ EngineClipScore failed(const std::string& why) { return {std::nan(""), 0, why}; 
 // The skeleton engine through the true camera with each source of bone lengths, and the
 // snippet engine at the depth the skeleton engine (own bones) found.
 void geometricEnginesOnClip(const Clip& clip, const KeypointTrial& t, const SnippetEngine* snippet,
-                            const std::optional<std::pair<VectorXd, double>>& eigenwalker,
+                            const std::optional<EigenwalkerClip>& eigenwalker,
                             const CameraExperimentOptions& o, const std::string& name, CameraRow& row) {
   if (t.jointsPx.rows() != clip.truth.rows()) {
     const std::string why = name + ": frames lost reading back";
@@ -233,13 +248,19 @@ void geometricEnginesOnClip(const Clip& clip, const KeypointTrial& t, const Snip
   std::optional<SkeletonCameraResult> own;
   EngineClipScore ownScore;
   try {
-    ownScore = skeletonOnClip(clip, t, boneLengthsFromFrames(clip.truth, name), name, &own);
+    ownScore = skeletonOnClip(clip, t, boneLengthsFromFrames(clip.truth, name), name, nullptr, &own);
   } catch (const std::exception& e) {
     ownScore = failed(e.what());
   }
   if (o.snippet) row.snippet = own && snippet ? snippetOnClip(clip, t, *snippet, *own, name) : failed(ownScore.error);
   if (!o.skeleton) return;
   row.skeleton = ownScore;
+  try {
+    if (!eigenwalker) throw Error(ErrorKind::BadData, name, "", "the eigenwalker gave no walker: " + row.error);
+    row.skeletonGuided = skeletonOnClip(clip, t, boneLengthsFromFrames(clip.truth, name), name, &eigenwalker->guideMm);
+  } catch (const std::exception& e) {
+    row.skeletonGuided = failed(e.what());
+  }
   try {
     const auto size = measureBodySize(clip.truth);
     if (!size) throw Error(ErrorKind::BadData, name, "", "no head-to-ankles distance for a stature");
@@ -251,7 +272,8 @@ void geometricEnginesOnClip(const Clip& clip, const KeypointTrial& t, const Snip
   try {
     if (!eigenwalker) throw Error(ErrorKind::BadData, name, "", "the eigenwalker gave no walker: " + row.error);
     row.skeletonEigenwalkerBones =
-        skeletonOnClip(clip, t, boneLengthsFromWalker(eigenwalker->first, eigenwalker->second, name), name);
+        skeletonOnClip(clip, t, boneLengthsFromWalker(eigenwalker->w, eigenwalker->omegaRadS, name), name,
+                       &eigenwalker->guideMm);
   } catch (const std::exception& e) {
     row.skeletonEigenwalkerBones = failed(e.what());
   }
@@ -269,7 +291,7 @@ void reconstructClip(const Fold& fold, const ExperimentWalker& w, const Clip& cl
     KeypointOptions k;
     k.fps = o.fps;
     const KeypointTrial t = readKeypointTrial(folder, k);
-    std::optional<std::pair<VectorXd, double>> walker;
+    std::optional<EigenwalkerClip> walker;
     try {
       walker = eigenwalkerOnClip(fold, w, clip, t, folder.string(), o, row);
     } catch (const std::exception& e) {
@@ -415,6 +437,7 @@ std::vector<CameraSummary> summarizeCamera(const std::vector<CameraRow>& rows) {
       within += r->heightRelError <= 0.05;
     }
     s.skeleton = summarizeOtherEngine(list, &CameraRow::skeleton);
+    s.skeletonGuided = summarizeOtherEngine(list, &CameraRow::skeletonGuided);
     s.skeletonTable2 = summarizeOtherEngine(list, &CameraRow::skeletonTable2);
     s.skeletonEigenwalkerBones = summarizeOtherEngine(list, &CameraRow::skeletonEigenwalkerBones);
     s.snippet = summarizeOtherEngine(list, &CameraRow::snippet);

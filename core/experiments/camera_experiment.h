@@ -19,10 +19,12 @@
 //   skeleton  the walker's own bone lengths (the median over the clip's true frames, as the
 //             paper measures its performer); pelvis depth from the bone bound; result in
 //             the world, the known progression subtracted (core/skeleton/skeleton_camera.h).
-//             Twice more with bone lengths a user without a 3D reference has
-//             (core/skeleton/bone_sources.h): Zou et al.'s Table 2 scaled to the walker's
-//             stature (its head-to-ankles distance / 0.87), and the eigenwalker's own
-//             reconstruction of this clip (its walker's bones; nothing known of the walker).
+//             Then with each bone's branch taken from the eigenwalker's fit of the clip (its
+//             walker in its own estimated camera frame: skeleton_solve.h's guide). And with
+//             bone lengths a user without a 3D reference has (core/skeleton/bone_sources.h):
+//             Zou et al.'s Table 2 scaled to the walker's stature (its head-to-ankles
+//             distance / 0.87; the paper's branch rule), and the eigenwalker's own walker
+//             (its bones and its guide: nothing known of the walker but the camera).
 //   snippet   it takes an orthographic view in mm, so it is given the rays made level (the
 //             elevation turned out) and scaled at the pelvis depth the skeleton engine
 //             found — weak perspective — and the camera's azimuth as the known view; its
@@ -69,7 +71,9 @@ struct CameraRow {
   double mpjpeMm = 0, reprojectionRmsPx = 0;
   std::string error;        // empty: reconstructed; else why not (a failure)
   std::optional<EngineClipScore> skeleton, snippet;  // unset: not asked for
-  std::optional<EngineClipScore> skeletonTable2, skeletonEigenwalkerBones;  // the skeleton's other bones
+  std::optional<EngineClipScore> skeletonTable2;            // Table 2 × stature
+  std::optional<EngineClipScore> skeletonEigenwalkerBones;  // the eigenwalker's bones and guide
+  std::optional<EngineClipScore> skeletonGuided;  // own bones, branches from the eigenwalker's fit
 };
 
 // Error(BadArgument) "camera: …" for no cameras, a negative or non-finite noise level, a
@@ -89,7 +93,7 @@ struct CameraSummary {
     int clips = 0, failures = 0;
     double meanMpjpeMm = 0;
   };
-  Other skeleton, skeletonTable2, skeletonEigenwalkerBones, snippet;
+  Other skeleton, skeletonGuided, skeletonTable2, skeletonEigenwalkerBones, snippet;
 };
 std::vector<CameraSummary> summarizeCamera(const std::vector<CameraRow>& rows);
 

@@ -149,6 +149,7 @@ std::string cameraCsv(const std::vector<CameraRow>& rows) {
                  num(r.alphaErrorDeg), num(r.elevationErrorDeg), num(r.focalRelError), num(r.heightRelError),
                  num(r.mpjpeMm), num(r.reprojectionRmsPx), quotedError(error), scoreMm(r.skeleton),
                  r.skeleton ? std::to_string(r.skeleton->clampedBoneFrames) : "", scoreError(r.skeleton),
+                 scoreMm(r.skeletonGuided), scoreError(r.skeletonGuided),
                  scoreMm(r.skeletonTable2), scoreError(r.skeletonTable2), scoreMm(r.skeletonEigenwalkerBones),
                  scoreError(r.skeletonEigenwalkerBones), scoreMm(r.snippet), scoreError(r.snippet)});
   });
@@ -300,6 +301,7 @@ std::string summaryJson(const EvaluationResults& r, const EvaluationProvenance& 
           camera.back()[key] = {{"clips", e.clips}, {"failures", e.failures}, {"mean_mpjpe_mm", e.meanMpjpeMm}};
       };
       other("skeleton", c.skeleton);
+      other("skeleton_guided", c.skeletonGuided);
       other("skeleton_table2_bones", c.skeletonTable2);
       other("skeleton_eigenwalker_bones", c.skeletonEigenwalkerBones);
       other("snippet", c.snippet);

@@ -25,7 +25,7 @@ inline constexpr const char* kCameraHeader =
     "subject,walker,camera,noise_px,bystander,frames,true_alpha_deg,true_elevation_deg,true_focal_px,"
     "true_distance_m,alpha_deg,elevation_deg,focal_px,distance_m,alpha_error_deg,elevation_error_deg,"
     "focal_rel_error,height_rel_error,mpjpe_mm,reprojection_rms_px,error,skeleton_mpjpe_mm,"
-    "skeleton_clamped_bone_frames,skeleton_error,skeleton_table2_mpjpe_mm,skeleton_table2_error,"
+    "skeleton_clamped_bone_frames,skeleton_error,skeleton_guided_mpjpe_mm,skeleton_guided_error,skeleton_table2_mpjpe_mm,skeleton_table2_error,"
     "skeleton_eigenwalker_bones_mpjpe_mm,skeleton_eigenwalker_bones_error,snippet_mpjpe_mm,snippet_error";
 
 inline constexpr const char* kSnippetEnginesHeader =

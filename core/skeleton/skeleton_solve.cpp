@@ -178,11 +178,30 @@ std::vector<double> branchGaps(const std::vector<JointRays>& rays, const std::ve
   return gap;
 }
 
-}  // namespace
 
-SkeletonSequence solveSkeletonSequence(const std::vector<JointRays>& rays, const std::vector<Eigen::Vector3d>& rootsMm,
-                                       const BoneLengths& bones, double rateHz, const SkeletonSolveOptions& options) {
-  checkInputs(rays, rootsMm, rateHz);
+// Each bone's root nearer the guide's bone vector, depth-first from the root.
+std::array<int, kBoneCount> guidedSigns(const JointRays& rays, const Eigen::Vector3d& root, const BoneLengths& bones,
+                                        const JointMatrix& guide) {
+  std::array<int, kBoneCount> signs{};
+  JointMatrix joints;
+  joints.col(index(Joint::Pelvis)) = root;
+  for (const TreeBone& tb : kTreeOrder) {
+    const auto b = static_cast<size_t>(tb.bone);
+    const Eigen::Vector3d parent = joints.col(index(tb.parent));
+    const Eigen::Vector3d want = guide.col(index(tb.child)) - guide.col(index(tb.parent));
+    const Eigen::Vector3d plus = placeChild(rays, parent, index(tb.child), bones.mm[b], 1);
+    const Eigen::Vector3d minus = placeChild(rays, parent, index(tb.child), bones.mm[b], -1);
+    signs[b] = (plus - parent - want).squaredNorm() <= (minus - parent - want).squaredNorm() ? 1 : -1;
+    joints.col(index(tb.child)) = signs[b] > 0 ? plus : minus;
+  }
+  return signs;
+}
+
+// Stages 1 and 2 (the header): per bone its branch over the clip up to a sign, then the 14
+// signs by the least implausible clip. Returns the signs of every frame.
+std::vector<std::array<int, kBoneCount>> plausibleSigns(const std::vector<JointRays>& rays,
+                                                        const std::vector<Eigen::Vector3d>& rootsMm,
+                                                        const BoneLengths& bones, const SkeletonSolveOptions& options) {
   const size_t frames = rays.size();
 
   // Stage 1: every bone's branch over the clip, up to one sign per bone.
@@ -233,12 +252,35 @@ SkeletonSequence solveSkeletonSequence(const std::vector<JointRays>& rays, const
     }
     if (total < bestTotal) { bestTotal = total; best = global; }
   }
+  std::vector<std::array<int, kBoneCount>> signs;
+  for (size_t t = 0; t < frames; ++t) signs.push_back(signsAt(t, best));
+  return signs;
+}
+
+}  // namespace
+
+SkeletonSequence solveSkeletonSequence(const std::vector<JointRays>& rays, const std::vector<Eigen::Vector3d>& rootsMm,
+                                       const BoneLengths& bones, double rateHz, const SkeletonSolveOptions& options) {
+  checkInputs(rays, rootsMm, rateHz);
+  const size_t frames = rays.size();
+  std::vector<std::array<int, kBoneCount>> signs;
+  if (options.guideMm.empty()) {
+    signs = plausibleSigns(rays, rootsMm, bones, options);
+  } else {
+    if (options.guideMm.size() != frames)
+      throw Error(ErrorKind::BadArgument, "skeleton", "", "the guide needs one pose per frame");
+    for (size_t t = 0; t < frames; ++t) {
+      if (!options.guideMm[t].allFinite())
+        throw Error(ErrorKind::BadArgument, "skeleton", "frame " + std::to_string(t), "the guide's pose is not finite");
+      signs.push_back(guidedSigns(rays[t], rootsMm[t], bones, options.guideMm[t]));
+    }
+  }
 
   SkeletonSequence out;
   out.framesMm.resize(static_cast<Eigen::Index>(frames), kDims3);
   out.poseCost = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(frames));
   for (size_t t = 0; t < frames; ++t) {
-    out.signs.push_back(signsAt(t, best));
+    out.signs.push_back(signs[t]);
     const TreePlacement placed = placeTree(rays[t], rootsMm[t], bones, out.signs.back());
     for (int b = 0; b < kBoneCount; ++b) {
       if (!placed.clamped[static_cast<size_t>(b)]) continue;

@@ -17,6 +17,12 @@
 //
 // "Up" (which way the body's head points in the rays' frame) makes "forward" and "leaning
 // backward" mean something: an orthographic view frame's V, a level camera's −y.
+//
+// A guide replaces both stages (beyond the paper, which names a learnt prior as the way to
+// choose): a pose per frame in the rays' frame — the eigenwalker's reconstruction of the
+// same clip — and each bone, placed depth-first, takes the root whose bone vector is
+// nearer the guide's (child − parent). Only the guide's bone directions matter, not where
+// it stands, so a guide from an estimated camera a degree off still chooses well.
 
 #include <Eigen/Core>
 #include <array>
@@ -30,6 +36,7 @@ struct SkeletonSolveOptions {
   double hingeWeight = 10.0;     // knee and elbow bent against their hinge
   double symmetryWeight = 10.0;  // hips, shoulders, head and trunk lean (above)
   Eigen::Vector3d upMm{0.0, 0.0, 1.0};  // the body's up in the rays' frame (any length)
+  std::vector<JointMatrix> guideMm;     // empty, or one pose per frame in the rays' frame
 };
 
 struct SkeletonSequence {
@@ -42,7 +49,8 @@ struct SkeletonSequence {
 
 // rays: one per frame; rootsMm: the pelvis of each frame (on its ray); rateHz > 0.
 // Throws Error(BadArgument) for unequal lengths, no frames or a bad rate, and
-// Error(BadData) naming the joint and frame for a ray that is not finite (an unseen joint).
+// Error(BadData) naming the joint and frame for a ray that is not finite (an unseen joint),
+// Error(BadArgument) for a guide that is not one finite pose per frame.
 SkeletonSequence solveSkeletonSequence(const std::vector<JointRays>& rays, const std::vector<Eigen::Vector3d>& rootsMm,
                                        const BoneLengths& bones, double rateHz,
                                        const SkeletonSolveOptions& options = {});
