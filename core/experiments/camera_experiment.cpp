@@ -161,8 +161,8 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   row.reprojectionRmsPx = fit.reprojectionRmsPx;
   EigenwalkerClip out{fit.w, fit.omegaRadS, {}};
   const MatrixXd camera = walkInCameraFrame(frames, times, fit.camera);
-  for (Eigen::Index f = 0; f < camera.rows(); ++f)
-    out.guideMm.push_back(Eigen::Map<const Eigen::Matrix<double, 3, kJointCount>>(camera.row(f).eval().data()));
+  for (Eigen::Index frame = 0; frame < camera.rows(); ++frame)
+    out.guideMm.push_back(Eigen::Map<const Eigen::Matrix<double, 3, kJointCount>>(camera.row(frame).eval().data()));
   return out;
 }
 
