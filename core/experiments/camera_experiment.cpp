@@ -184,9 +184,9 @@ MatrixXd weakPerspectiveView(const MatrixXd& px, const WalkCamera& c, const Matr
   MatrixXd uv(px.rows(), px.cols());
   for (Eigen::Index f = 0; f < px.rows(); ++f) {
     const double depth = (level * pelvisCameraMm.row(f).transpose()).z();
+    const JointRays rays = pinholeRays(px.row(f), {c.focalPx, c.focalPx, c.cxPx, c.cyPx});
     for (int j = 0; j < kJointCount; ++j) {
-      const Eigen::Vector3d ray =
-          level * Eigen::Vector3d((px(f, 2 * j) - c.cxPx) / c.focalPx, (px(f, 2 * j + 1) - c.cyPx) / c.focalPx, 1.0);
+      const Eigen::Vector3d ray = level * rays.direction.col(j);
       const bool seen = std::isfinite(ray.x()) && std::isfinite(ray.y()) && ray.z() > 1e-6;
       uv(f, 2 * j) = seen ? ray.x() * depth / ray.z() : std::nan("");
       uv(f, 2 * j + 1) = seen ? -ray.y() * depth / ray.z() : std::nan("");
@@ -234,30 +234,32 @@ EngineClipScore snippetOnClip(const Clip& clip, const KeypointTrial& t, const Sn
 
 EngineClipScore failed(const std::string& why) { return {std::nan(""), 0, why}; }
 
+// Every other engine asked for gave no answer, for one reason.
+void otherEnginesFailed(const CameraExperimentOptions& o, const std::string& why, CameraRow& row) {
+  if (o.skeleton) row.skeleton = row.skeletonGuided = row.skeletonTable2 = row.skeletonEigenwalkerBones = failed(why);
+  if (o.snippet) row.snippet = failed(why);
+}
+
 // The skeleton engine through the true camera with each source of bone lengths, and the
 // snippet engine at the depth the skeleton engine (own bones) found.
 void geometricEnginesOnClip(const Clip& clip, const KeypointTrial& t, const SnippetEngine* snippet,
                             const std::optional<EigenwalkerClip>& eigenwalker,
                             const CameraExperimentOptions& o, const std::string& name, CameraRow& row) {
-  if (t.jointsPx.rows() != clip.truth.rows()) {
-    const std::string why = name + ": frames lost reading back";
-    if (o.skeleton) row.skeleton = row.skeletonTable2 = row.skeletonEigenwalkerBones = failed(why);
-    if (o.snippet) row.snippet = failed(why);
-    return;
+  if (t.jointsPx.rows() != clip.truth.rows()) return otherEnginesFailed(o, name + ": frames lost reading back", row);
+  BoneLengths ownBones;
+  try {
+    ownBones = boneLengthsFromFrames(clip.truth, name);
+  } catch (const std::exception& e) {
+    return otherEnginesFailed(o, e.what(), row);
   }
   std::optional<SkeletonCameraResult> own;
-  EngineClipScore ownScore;
-  try {
-    ownScore = skeletonOnClip(clip, t, boneLengthsFromFrames(clip.truth, name), name, nullptr, &own);
-  } catch (const std::exception& e) {
-    ownScore = failed(e.what());
-  }
+  const EngineClipScore ownScore = skeletonOnClip(clip, t, ownBones, name, nullptr, &own);
   if (o.snippet) row.snippet = own && snippet ? snippetOnClip(clip, t, *snippet, *own, name) : failed(ownScore.error);
   if (!o.skeleton) return;
   row.skeleton = ownScore;
   try {
     if (!eigenwalker) throw Error(ErrorKind::BadData, name, "", "the eigenwalker gave no walker: " + row.error);
-    row.skeletonGuided = skeletonOnClip(clip, t, boneLengthsFromFrames(clip.truth, name), name, &eigenwalker->guideMm);
+    row.skeletonGuided = skeletonOnClip(clip, t, ownBones, name, &eigenwalker->guideMm);
   } catch (const std::exception& e) {
     row.skeletonGuided = failed(e.what());
   }
@@ -300,8 +302,7 @@ void reconstructClip(const Fold& fold, const ExperimentWalker& w, const Clip& cl
     if (o.skeleton || o.snippet) geometricEnginesOnClip(clip, t, snippet, walker, o, folder.string(), row);
   } catch (const std::exception& e) {  // the clip could not be read back: no engine saw it
     row.error = e.what();
-    if (o.skeleton) row.skeleton = row.skeletonTable2 = row.skeletonEigenwalkerBones = failed(e.what());
-    if (o.snippet) row.snippet = failed(e.what());
+    otherEnginesFailed(o, e.what(), row);
   }
   fs::remove_all(folder);
 }

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/camera/walk_camera.h"
+#include "tests/camera/filmed_walk.h"
 #include "core/common/errors.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
@@ -31,17 +32,9 @@ TEST(WalkCameraCalibration, ImagesEveryJointWhereProjectWalkDoes) {
   for (double alpha : {-150.0, -40.0, 0.0, 65.0, 180.0})
     for (double elevation : {0.0, 12.0, 30.0}) {
       SCOPED_TRACE(std::to_string(alpha) + "° " + std::to_string(elevation) + "°");
-      WalkCamera c;
-      c.model = CameraModel::Pinhole;
+      WalkCamera c = test::crossingPinhole(1400, 1.3);
       c.alphaDeg = alpha;
       c.elevationDeg = elevation;
-      c.focalPx = 1400;
-      c.distanceMm = 5200;
-      c.cxPx = 960;
-      c.cyPx = 540;
-      c.lookAtHeightMm = 950;
-      c.speedMmS = 1250;
-      c.startOffsetMm = -700;
       const Eigen::MatrixXd px = projectWalk(frames, times, c);
       const CalibratedCamera cal = calibrationOf(c, 1920, 1080);
       EXPECT_EQ(cal.widthPx, 1920);
