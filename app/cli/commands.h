@@ -16,5 +16,7 @@ void addSynthCommand(CLI::App& app, int& exitCode);
 void addBuildCommand(CLI::App& app, int& exitCode);
 void addEvaluateCommand(CLI::App& app, int& exitCode);
 void addReconstructCommand(CLI::App& app, int& exitCode);
+// Only when the video library was built (OpenCV found): EW_HAVE_VIDEO.
+void addTrackCommand(CLI::App& app, int& exitCode);
 
 }  // namespace ew::cli

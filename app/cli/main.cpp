@@ -19,6 +19,9 @@ int main(int argc, char** argv) {
   ew::cli::addBuildCommand(app, exitCode);
   ew::cli::addEvaluateCommand(app, exitCode);
   ew::cli::addReconstructCommand(app, exitCode);
+#ifdef EW_HAVE_VIDEO
+  ew::cli::addTrackCommand(app, exitCode);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,213 @@
+// `eigenwalker-cli track --video V (--keyframes K.json | --keyframes-from KEYPOINTS
+//  [--keyframe-frames 0,60]) --out DIR [--first F] [--last L] [--compare KEYPOINTS]
+//  [--reconstruct WALK3D.csv] [--json]`: the joints followed through a video from keyframes
+// (video/joint_tracker.h, docs/TRACKING.md). DIR gets the track as OpenPose BODY_25 JSON
+// (keypoints/, one file a frame, other tools read it), as the project's 2D CSV
+// (track_2d.csv: pixels, v up) with confidence.csv beside it, and track.json (what was done).
+// --compare: the pixel distance per joint to another 2D source of the same clip (a pose
+// estimator's detections). --reconstruct: the eigenwalker through the unknown camera
+// (the `reconstruct --unknown-camera` path) from the track.
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <sstream>
+
+#include <opencv2/imgcodecs.hpp>
+#include "app/cli/commands.h"
+#include "app/cli/reconstruct_camera.h"
+#include "core/common/errors.h"
+#include "core/engine/default_model.h"
+#include "core/experiments/view_csv.h"
+#include "core/io/atomic_write.h"
+#include "core/keypoints/keypoint_trial.h"
+#include "core/keypoints/openpose_writer.h"
+#include "core/tracking/keyframes.h"
+#include "core/tracking/track_compare.h"
+#include "video/joint_tracker.h"
+#include "video/track_overlay.h"
+
+namespace ew::cli {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct TrackArgs {
+  std::string video, keyframes, keyframesFrom, out, compare, reconstruct;
+  std::vector<int> keyframeFrames{0};
+  int first = 0, last = -1;
+  int overlayEvery = 0;  // 0: no overlay pictures
+  bool json = false;
+};
+
+Keyframes keyframesFor(const TrackArgs& a, double fps) {
+  if (!a.keyframes.empty()) return readKeyframes(a.keyframes);
+  KeypointOptions k;
+  k.fps = fps;
+  const KeypointTrial trial = readKeypointTrial(a.keyframesFrom, k);
+  return keyframesFromTrack(trial.jointsPx, a.keyframeFrames, a.video);
+}
+
+void writeTrack(const fs::path& dir, const JointTrack& t) {
+  fs::create_directories(dir);
+  OpenPosePerson person{t.jointsPx, t.confidence};
+  const fs::path keypoints = dir / "keypoints";
+  std::error_code ec;
+  fs::remove_all(keypoints, ec);  // a track's frames, not mixed with an older one's
+  writeOpenPoseBody25(keypoints, {person});
+  ViewSequence view;
+  view.rateHz = t.fps;
+  view.framesMm = t.jointsPx;
+  for (int j = 0; j < kJointCount; ++j) view.framesMm.col(2 * j + 1) *= -1.0;
+  writeViewCsv(dir / "track_2d.csv", view,
+               {"units=px (image pixels; u right, v up = minus the image row)",
+                "first_video_frame=" + std::to_string(t.firstFrame)});
+  writeFileAtomically(dir / "confidence.csv", [&](std::ostream& out) {
+    out << "frame";
+    for (const auto name : kJointNames) out << "," << name;
+    out << "\n";
+    for (Eigen::Index r = 0; r < t.confidence.rows(); ++r) {
+      out << t.firstFrame + r;
+      for (int j = 0; j < kJointCount; ++j) out << "," << t.confidence(r, j);
+      out << "\n";
+    }
+  });
+}
+
+json distanceJson(const TrackDistance& d) {
+  json perJoint = json::object();
+  for (int j = 0; j < kJointCount; ++j) {
+    if (d.frames[j] == 0) continue;
+    perJoint[std::string(kJointNames[j])] = {
+        {"median_px", d.medianPx[j]}, {"p95_px", d.p95Px[j]}, {"frames", d.frames[j]}};
+  }
+  return {{"median_px", d.medianAllPx},
+          {"p95_px", d.p95AllPx},
+          {"joint_frames", d.jointFrames},
+          {"per_joint", perJoint}};
+}
+
+void printDistance(const TrackDistance& d, const std::string& against) {
+  std::cout << "distance to " << against << ": median " << std::fixed << std::setprecision(1)
+            << d.medianAllPx << " px, 95th percentile " << d.p95AllPx << " px over "
+            << d.jointFrames << " joint-frames\n";
+  for (int j = 0; j < kJointCount; ++j) {
+    if (d.frames[j] == 0) continue;
+    std::cout << "  " << std::left << std::setw(11) << kJointNames[j] << std::right << " median "
+              << std::setw(6) << d.medianPx[j] << " px  p95 " << std::setw(6) << d.p95Px[j]
+              << " px  (" << d.frames[j] << " frames)\n";
+  }
+}
+
+// Every n-th tracked frame with the track drawn over it (and the --compare source, blue).
+void writeOverlays(VideoSource& video, const JointTrack& t, const Eigen::MatrixXd* referencePx,
+                   int every, const fs::path& dir) {
+  fs::create_directories(dir);
+  const OverlayStyle reference{cv::Scalar(255, 128, 0), 1.0 / 300.0, false};
+  for (Eigen::Index r = 0; r < t.jointsPx.rows(); r += every) {
+    const int frame = t.firstFrame + static_cast<int>(r);
+    cv::Mat image = video.frame(frame);
+    if (referencePx && frame < referencePx->rows())
+      drawTrack(image, referencePx->row(frame), Eigen::RowVectorXd(), reference);
+    drawTrack(image, t.jointsPx.row(r), t.confidence.row(r));
+    std::ostringstream name;
+    name << "frame_" << std::setw(6) << std::setfill('0') << frame << ".png";
+    if (!cv::imwrite((dir / name.str()).string(), image))
+      throw Error(ErrorKind::Io, (dir / name.str()).string(), "",
+                  "cannot write the overlay picture");
+  }
+}
+
+int runTrack(const TrackArgs& a) {
+  VideoSource video(a.video);
+  const VideoInfo& info = video.info();
+  const Keyframes keys = keyframesFor(a, info.fps);
+  TrackerOptions o;
+  o.firstFrame = a.first;
+  o.lastFrame = a.last;
+  const auto start = std::chrono::steady_clock::now();
+  const JointTrack track = trackJoints(video, keys, o);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  writeTrack(a.out, track);
+  const auto frames = track.jointsPx.rows();
+  std::cout << "tracked " << frames << " frames (" << track.firstFrame << "-"
+            << track.firstFrame + frames - 1 << ") of " << info.file << " (" << info.widthPx << "x"
+            << info.heightPx << ", " << info.fps << " fps) from " << keys.keyframes.size()
+            << " keyframe(s) in " << std::fixed << std::setprecision(2) << seconds << " s ("
+            << std::setprecision(1) << static_cast<double>(frames) / std::max(seconds, 1e-9)
+            << " frames/s)\n";
+  json report = {{"video", info.file},
+                 {"width_px", info.widthPx},
+                 {"height_px", info.heightPx},
+                 {"fps", info.fps},
+                 {"first_frame", track.firstFrame},
+                 {"frames", frames},
+                 {"keyframes", keys.keyframes.size()},
+                 {"seconds", seconds},
+                 {"mean_confidence", track.confidence.mean()},
+                 {"warnings", track.warnings}};
+  std::optional<Eigen::MatrixXd> referencePx;
+  if (!a.compare.empty()) {
+    KeypointOptions k;
+    k.fps = info.fps;
+    referencePx = readKeypointTrial(a.compare, k).jointsPx;
+    const TrackDistance d = compareTracks(track.jointsPx, track.firstFrame, *referencePx);
+    printDistance(d, a.compare);
+    report["compare"] = distanceJson(d);
+    report["compare"]["file"] = a.compare;
+  }
+  if (a.overlayEvery > 0)
+    writeOverlays(video, track, referencePx ? &*referencePx : nullptr, a.overlayEvery,
+                  fs::path(a.out) / "overlay");
+  writeFileAtomically(fs::path(a.out) / "track.json",
+                      [&](std::ostream& out) { out << report.dump(2) << "\n"; });
+  if (a.json) std::cout << report.dump(2) << "\n";
+  if (a.reconstruct.empty()) return 0;
+  CameraArgs c;
+  c.input = (fs::path(a.out) / "keypoints").string();
+  c.out = a.reconstruct;
+  c.fps = info.fps;
+  c.modelName = defaultRealModelName();
+  return runReconstructCamera(defaultRealModel(), c);
+}
+
+}  // namespace
+
+void addTrackCommand(CLI::App& app, int& exitCode) {
+  auto args = std::make_shared<TrackArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "track", "Follow a walker's joints through a video from keyframes marked by hand");
+  cmd->add_option("--video", args->video, "the video (MP4, AVI, MOV: what FFmpeg decodes)")
+      ->required();
+  auto* keys = cmd->add_option("--keyframes", args->keyframes, "keyframe file (docs/TRACKING.md)");
+  auto* from = cmd->add_option(
+      "--keyframes-from", args->keyframesFrom,
+      "take the keyframes from a keypoint file or folder (OpenPose, AlphaPose, MMPose, CSV)");
+  keys->excludes(from);
+  cmd->add_option("--keyframe-frames", args->keyframeFrames,
+                  "with --keyframes-from: which frames (default 0)")
+      ->delimiter(',');
+  cmd->add_option("--out", args->out, "output folder")->required();
+  cmd->add_option("--first", args->first, "first frame tracked (default 0)");
+  cmd->add_option("--last", args->last, "last frame tracked (default the video's last)");
+  cmd->add_option("--compare", args->compare,
+                  "another 2D source of the clip to measure the track against");
+  cmd->add_option("--reconstruct", args->reconstruct,
+                  "also write the 3D walker (eigenwalker, unknown camera) here");
+  cmd->add_option("--overlay-every", args->overlayEvery,
+                  "draw the track over every N-th frame into OUT/overlay/ (PNG)")
+      ->check(CLI::PositiveNumber);
+  cmd->add_flag("--json", args->json, "print the report as JSON too");
+  cmd->callback([args, &exitCode, keys, from] {
+    if (keys->count() == 0 && from->count() == 0)
+      throw Error(ErrorKind::BadArgument, "", "",
+                  "track needs --keyframes FILE or --keyframes-from KEYPOINTS");
+    exitCode = runTrack(*args);
+  });
+}
+
+}  // namespace ew::cli

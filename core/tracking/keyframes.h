@@ -1,0 +1,45 @@
+#pragma once
+// Joints marked by hand on a few frames of a video: where the tracker starts (issue 14;
+// Howe, Leventon & Freeman 1999 §2 and Zou et al. 2009 §4 start the same way). The file
+// (docs/TRACKING.md):
+//   {"format": "eigenwalker-keyframes", "version": 1, "video": "demo.mp4",
+//    "keyframes": [{"frame": 40, "joints": {"head": [812.5, 201.0], "l_wrist": null, …}}]}
+// Pixels, x right, y down, as the video has them; a joint left out or null was not seen.
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace ew {
+
+struct Keyframe {
+  int frame = 0;
+  Eigen::RowVectorXd jointsPx;  // 30: x, y per joint (SPEC §1 order), NaN = not marked
+};
+
+struct Keyframes {
+  std::string video;                // the clip they were marked on ("" when unsaid)
+  std::vector<Keyframe> keyframes;  // increasing frame numbers
+};
+
+inline constexpr int kMaxKeyframes = 100000;
+
+// Throws Error(Io) when unreadable, Error(Malformed) naming the file and keyframe for bad
+// JSON, another format, an unknown joint name, a coordinate that is not a finite number
+// pair, a negative or repeated frame, more than kMaxKeyframes; Error(BadData) when no
+// keyframe has at least one joint. Keyframes come back sorted by frame.
+Keyframes readKeyframes(const std::filesystem::path& file);
+Keyframes parseKeyframes(const std::string& text, const std::string& name);
+
+// Writes atomically (core/io/atomic_write.h).
+void writeKeyframes(const std::filesystem::path& file, const Keyframes& keyframes);
+std::string formatKeyframes(const Keyframes& keyframes);
+
+// Keyframes from a 2D track (T × 30 pixels, NaN = missing) at the given frames, e.g. a
+// pose estimator's detections (keypoint_trial.h). Error(BadArgument) for a frame outside
+// the track or one with no joint in it.
+Keyframes keyframesFromTrack(const Eigen::Ref<const Eigen::MatrixXd>& jointsPx,
+                             const std::vector<int>& frames, const std::string& video);
+
+}  // namespace ew

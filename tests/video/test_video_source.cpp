@@ -1,0 +1,115 @@
+// Reading footage (video/video_source.h): frame-accurate access in any order, checked
+// against a sequential decode, on a clip the test writes and on the shared real clips;
+// files that are not videos, or end early, give errors naming the file.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "tests/common/error_matchers.h"
+#include "tests/common/test_support.h"
+#include "video/video_source.h"
+
+namespace ew {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A clip whose frame k shows a white bar at column 4k on black (MJPG in AVI: every frame
+// a keyframe, no codec we might lack).
+fs::path barClip(const fs::path& dir, int frames) {
+  const fs::path file = dir / "bars.avi";
+  cv::VideoWriter writer(file.string(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
+                         25.0, cv::Size(320, 240));
+  EXPECT_TRUE(writer.isOpened());
+  for (int k = 0; k < frames; ++k) {
+    cv::Mat image(240, 320, CV_8UC3, cv::Scalar(0, 0, 0));
+    cv::rectangle(image, cv::Rect(4 * k, 0, 4, 240), cv::Scalar(255, 255, 255), cv::FILLED);
+    writer.write(image);
+  }
+  return file;
+}
+
+int barColumn(const cv::Mat& bgr) {
+  cv::Mat grey = toGrey(bgr), columns;
+  cv::reduce(grey, columns, 0, cv::REDUCE_AVG, CV_64F);
+  cv::Point best;
+  cv::minMaxLoc(columns, nullptr, nullptr, nullptr, &best);
+  return best.x / 4;
+}
+
+TEST(VideoSource, EveryFrameInAnyOrderIsTheFrameAskedFor) {
+  const fs::path file = barClip(test::makeTempDir("video_bars"), 60);
+  VideoSource video(file);
+  EXPECT_EQ(video.info().widthPx, 320);
+  EXPECT_EQ(video.info().heightPx, 240);
+  EXPECT_DOUBLE_EQ(video.info().fps, 25.0);
+  EXPECT_EQ(video.info().frameCount, 60);
+  EXPECT_EQ(video.info().codec, "MJPG");
+  for (const int k : {0, 1, 2, 59, 30, 31, 5, 45, 44, 43, 0, 58})
+    EXPECT_EQ(barColumn(video.frame(k)), k) << "frame " << k;
+  EXPECT_TRUE(
+      test::throwsError([&] { video.frame(60); }, ErrorKind::BadArgument, {"frame 60", "0-59"}));
+  EXPECT_TRUE(test::throwsError([&] { video.frame(-1); }, ErrorKind::BadArgument, {"frame -1"}));
+}
+
+TEST(VideoSource, SeekingInTheSharedClipsGivesTheSequentialDecodesFrames) {
+  EW_REQUIRE_SHARED_DATA();
+  for (const char* clip : {"video/sports2d-demo/demo.mp4", "pose2sim-balancing/videos/cam01.mp4"}) {
+    const fs::path file = test::sharedDataDir() / clip;
+    std::vector<cv::Mat> sequential;
+    cv::VideoCapture capture(file.string(), cv::CAP_FFMPEG);
+    for (cv::Mat f; capture.read(f);) sequential.push_back(f.clone());
+    VideoSource video(file);
+    ASSERT_EQ(video.info().frameCount, static_cast<int>(sequential.size())) << clip;
+    const int last = video.info().frameCount - 1;
+    for (const int k : {last, 3, last / 2, 0, last / 2 + 1, 17, last - 1})
+      EXPECT_EQ(cv::norm(video.frame(k), sequential[static_cast<std::size_t>(k)], cv::NORM_INF),
+                0.0)
+          << clip << " frame " << k;
+  }
+}
+
+TEST(VideoSource, WhatIsNotAVideoIsNamedWithTheProblem) {
+  const fs::path dir = test::makeTempDir("video_bad");
+  EXPECT_TRUE(test::throwsError([&] { VideoSource v(dir / "missing.mp4"); }, ErrorKind::Io,
+                                {"missing.mp4", "no such"}));
+  EXPECT_TRUE(
+      test::throwsError([&] { VideoSource v(dir); }, ErrorKind::Io, {"no such video file"}));
+  test::writeBinaryFile(dir / "text.mp4", "this is not a video\n");
+  EXPECT_TRUE(test::throwsError([&] { VideoSource v(dir / "text.mp4"); }, ErrorKind::Malformed,
+                                {"text.mp4"}));
+  test::writeBinaryFile(dir / "empty.avi", "");
+  EXPECT_TRUE(test::throwsError([&] { VideoSource v(dir / "empty.avi"); }, ErrorKind::Malformed,
+                                {"empty.avi"}));
+}
+
+TEST(VideoSource, AClipCutShortEndsWithAnErrorAtTheFirstMissingFrame) {
+  const fs::path dir = test::makeTempDir("video_cut");
+  const std::string whole = test::readTextFile(barClip(dir, 60));
+  const fs::path cut = dir / "cut.avi";
+  test::writeBinaryFile(cut,
+                        whole.substr(0, whole.size() / 2));  // the index at the end is gone too
+  VideoSource video(cut);
+  const int announced = video.info().frameCount;
+  int decoded = 0;
+  for (; decoded < announced; ++decoded) {
+    try {
+      EXPECT_EQ(barColumn(video.frame(decoded)), decoded);
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::BadData) << e.what();
+      EXPECT_NE(std::string(e.what()).find("cut.avi"), std::string::npos) << e.what();
+      break;
+    }
+  }
+  // Half the bytes hold about half the frames; whatever the container announced, the
+  // frames read are the right ones and the end is an error, not a crash or a repeat.
+  EXPECT_GE(decoded, 20);
+  EXPECT_LE(decoded, 40);
+  EXPECT_LE(video.info().frameCount, std::max(decoded, announced));
+}
+
+}  // namespace
+}  // namespace ew

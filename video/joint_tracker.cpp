@@ -1,0 +1,402 @@
+#include "video/joint_tracker.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/video/tracking.hpp>
+
+#include "core/common/errors.h"
+#include "core/common/skeleton.h"
+
+namespace ew {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// [SECTION] Sizes from the person's height in the image ---------------------------------
+
+struct Geometry {
+  double personPx = 0.0;
+  int windowPx = 21, patchPx = 21, searchPx = 20;
+  double forwardBackwardLimitPx = 1.0;
+};
+
+int oddClamp(double value, int lo, int hi) {
+  int v = std::clamp(static_cast<int>(std::lround(value)), lo, hi);
+  return v % 2 == 0 ? v + 1 : v;
+}
+
+// Head to ankles of the first keyframe with at least two joints; a third of the frame's
+// height when no keyframe says.
+double personHeightPx(const Keyframes& keys, int frameHeightPx) {
+  for (const Keyframe& k : keys.keyframes) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    int seen = 0;
+    for (int j = 0; j < kJointCount; ++j) {
+      const double y = k.jointsPx(2 * j + 1);
+      if (std::isnan(y)) continue;
+      lo = std::min(lo, y);
+      hi = std::max(hi, y);
+      ++seen;
+    }
+    if (seen >= 2 && hi - lo > 8.0) return hi - lo;
+  }
+  return frameHeightPx / 3.0;
+}
+
+Geometry geometryFor(double personPx, const TrackerOptions& o) {
+  Geometry g;
+  g.personPx = personPx;
+  g.windowPx = oddClamp(personPx * o.windowShare, 9, 61);
+  g.patchPx = oddClamp(personPx * o.patchShare, 9, 81);
+  g.searchPx = std::clamp(static_cast<int>(std::lround(personPx * o.searchShare)), 6, 120);
+  // Sub-pixel flow on textured clothing comes back within a pixel; a bigger forward–
+  // backward disagreement means the window slid onto something else (the other leg).
+  g.forwardBackwardLimitPx = std::max(1.0, 0.01 * personPx);
+  return g;
+}
+
+// [SECTION] One joint's constant-velocity Kalman filter (state x, y, vx, vy; px, px/frame) ---
+
+struct JointFilter {
+  Eigen::Vector4d state = Eigen::Vector4d::Zero();
+  Eigen::Matrix4d covariance = Eigen::Matrix4d::Identity();
+  bool active = false;
+
+  void start(double x, double y) {
+    state << x, y, 0.0, 0.0;
+    covariance = Eigen::Vector4d(1.0, 1.0, 100.0, 100.0).asDiagonal();
+    active = true;
+  }
+  // Limbs accelerate hard (a foot leaving the ground): the process noise lets the velocity
+  // change by about a hundredth of the body height per frame.
+  void predict(double accelerationPx) {
+    Eigen::Matrix4d f = Eigen::Matrix4d::Identity();
+    f(0, 2) = f(1, 3) = 1.0;
+    state = f * state;
+    const double q = accelerationPx * accelerationPx;
+    const Eigen::Vector4d noise(0.25 * q, 0.25 * q, q, q);
+    covariance = f * covariance * f.transpose() + Eigen::Matrix4d(noise.asDiagonal());
+  }
+  void update(double x, double y, double sigmaPx) {
+    Eigen::Matrix<double, 2, 4> h = Eigen::Matrix<double, 2, 4>::Zero();
+    h(0, 0) = h(1, 1) = 1.0;
+    const Eigen::Matrix2d s =
+        h * covariance * h.transpose() + Eigen::Matrix2d::Identity() * sigmaPx * sigmaPx;
+    const Eigen::Matrix<double, 4, 2> gain = covariance * h.transpose() * s.inverse();
+    state += gain * (Eigen::Vector2d(x, y) - h * state);
+    covariance = (Eigen::Matrix4d::Identity() - gain * h) * covariance;
+  }
+  cv::Point2f position() const {
+    return {static_cast<float>(state(0)), static_cast<float>(state(1))};
+  }
+  cv::Point2f predicted() const {
+    return {static_cast<float>(state(0) + state(2)), static_cast<float>(state(1) + state(3))};
+  }
+};
+
+// [SECTION] Frames: sequential reads forward, buffered pieces backward ---------------------
+
+class FrameSupply {
+ public:
+  FrameSupply(VideoSource& video, std::size_t capacity)
+      : video_(video), capacity_(std::max<std::size_t>(capacity, 2)) {}
+
+  // The grey frame `f`, where `lowest` is the lowest frame the caller will ask for next
+  // (so a backward pass decodes the piece [max(lowest, f − capacity + 1), f] at once).
+  const cv::Mat& grey(int f, int lowest) {
+    if (auto it = frames_.find(f); it != frames_.end()) return it->second;
+    if (f < newestRead_ || frames_.size() >= capacity_) frames_.clear();
+    const int from = f < newestRead_ ? std::max(lowest, f - static_cast<int>(capacity_) + 1) : f;
+    for (int k = from; k <= f; ++k) frames_[k] = toGrey(video_.frame(k));
+    newestRead_ = f;
+    return frames_.at(f);
+  }
+
+ private:
+  VideoSource& video_;
+  std::size_t capacity_;
+  std::map<int, cv::Mat> frames_;
+  int newestRead_ = -1;
+};
+
+// [SECTION] One pass from a keyframe ----------------------------------------------------
+
+struct PassOutput {
+  Eigen::MatrixXd jointsPx, confidence;  // rows: the whole tracked range
+};
+
+struct Step {
+  std::vector<cv::Point2f> from, flow, back, guess;
+  std::vector<unsigned char> status, backStatus;
+  std::vector<float> error;
+};
+
+class Pass {
+ public:
+  Pass(const Geometry& g, const TrackerOptions& o, const Keyframe& key, const cv::Mat& keyGrey)
+      : g_(g), o_(o) {
+    for (int j = 0; j < kJointCount; ++j) {
+      const double x = key.jointsPx(2 * j), y = key.jointsPx(2 * j + 1);
+      if (std::isnan(x) || std::isnan(y)) continue;
+      filters_[j].start(x, y);
+      templates_[j] =
+          patchAround(keyGrey, cv::Point2f(static_cast<float>(x), static_cast<float>(y)));
+    }
+  }
+
+  bool tracks(int j) const { return filters_[j].active; }
+  cv::Point2f position(int j) const { return filters_[j].position(); }
+
+  // Moves every joint from `fromGrey` to `toGrey`; confidence per joint out.
+  std::array<double, kJointCount> advance(const std::vector<cv::Mat>& fromPyramid,
+                                          const std::vector<cv::Mat>& toPyramid,
+                                          const cv::Mat& toGrey) {
+    std::array<double, kJointCount> confidence{};
+    std::vector<int> joints;
+    Step s;
+    for (int j = 0; j < kJointCount; ++j) {
+      if (!filters_[j].active) continue;
+      joints.push_back(j);
+      s.from.push_back(filters_[j].position());
+      filters_[j].predict(0.01 * g_.personPx);
+      s.guess.push_back(filters_[j].position());
+    }
+    if (joints.empty()) return confidence;
+    const cv::Size window(g_.windowPx, g_.windowPx);
+    const cv::TermCriteria stop(cv::TermCriteria::COUNT | cv::TermCriteria::EPS, 30, 0.01);
+    s.flow = s.guess;
+    cv::calcOpticalFlowPyrLK(fromPyramid, toPyramid, s.from, s.flow, s.status, s.error, window,
+                             o_.pyramidLevels, stop, cv::OPTFLOW_USE_INITIAL_FLOW);
+    s.back = s.from;
+    cv::calcOpticalFlowPyrLK(toPyramid, fromPyramid, s.flow, s.back, s.backStatus, s.error, window,
+                             o_.pyramidLevels, stop, cv::OPTFLOW_USE_INITIAL_FLOW);
+    for (std::size_t i = 0; i < joints.size(); ++i)
+      confidence[joints[i]] = measure(joints[i], s, i, toGrey);
+    return confidence;
+  }
+
+ private:
+  cv::Mat patchAround(const cv::Mat& grey, cv::Point2f centre) const {
+    cv::Mat patch;
+    cv::getRectSubPix(grey, cv::Size(g_.patchPx, g_.patchPx), centre, patch);
+    return patch;
+  }
+
+  // The keyframe patch sought in a square around `centre`: the best match and its score
+  // (normalised cross-correlation, −1-1), and the score at `centre` itself.
+  struct Match {
+    cv::Point2f best;
+    double bestScore = -1.0, centreScore = -1.0;
+  };
+  Match matchAround(int j, const cv::Mat& grey, cv::Point2f centre) const {
+    const int side = g_.patchPx + 2 * g_.searchPx;
+    cv::Mat region, scores;
+    cv::getRectSubPix(grey, cv::Size(side, side), centre, region);
+    cv::matchTemplate(region, templates_[j], scores, cv::TM_CCOEFF_NORMED);
+    double maxScore = 0.0;
+    cv::Point maxAt;
+    cv::minMaxLoc(scores, nullptr, &maxScore, nullptr, &maxAt);
+    Match m;
+    m.bestScore = maxScore;
+    m.centreScore = scores.at<float>(g_.searchPx, g_.searchPx);
+    m.best = centre + cv::Point2f(static_cast<float>(maxAt.x - g_.searchPx),
+                                  static_cast<float>(maxAt.y - g_.searchPx));
+    return m;
+  }
+
+  double measure(int j, const Step& s, std::size_t i, const cv::Mat& toGrey) {
+    const cv::Point2f d = s.back[i] - s.from[i];
+    const double forwardBackwardPx = std::hypot(d.x, d.y);
+    const bool flowHolds =
+        s.status[i] && s.backStatus[i] && forwardBackwardPx <= g_.forwardBackwardLimitPx;
+    const Match m = matchAround(j, toGrey, flowHolds ? s.flow[i] : s.guess[i]);
+    if (flowHolds) {
+      const double c = std::clamp(0.5 + 0.5 * m.centreScore, 0.05, 1.0) *
+                       (1.0 - 0.5 * forwardBackwardPx / g_.forwardBackwardLimitPx);
+      filters_[j].update(s.flow[i].x, s.flow[i].y, 0.5 / c);
+      return c;
+    }
+    // The flow lost the joint: the keyframe's look, if it is clearly there, else coast.
+    if (m.bestScore > 0.7) {
+      filters_[j].update(m.best.x, m.best.y, 1.0 / m.bestScore);
+      return 0.5 * m.bestScore;
+    }
+    return 0.05;
+  }
+
+  Geometry g_;
+  TrackerOptions o_;
+  std::array<JointFilter, kJointCount> filters_{};
+  std::array<cv::Mat, kJointCount> templates_{};
+};
+
+std::vector<cv::Mat> pyramidOf(const cv::Mat& grey, const Geometry& g, int levels) {
+  std::vector<cv::Mat> pyramid;
+  cv::buildOpticalFlowPyramid(grey, pyramid, cv::Size(g.windowPx, g.windowPx), levels);
+  return pyramid;
+}
+
+// [SECTION] Blending the passes -----------------------------------------------------------
+
+// Forward and backward answers for one joint in one frame: near each other they are
+// averaged by weight, else the heavier one is kept (an average of two different legs is
+// neither).
+void blend(const PassOutput& fwd, double wf, const PassOutput& bwd, double wb, Eigen::Index row,
+           int j, double agreePx, JointTrack& out) {
+  const double xf = fwd.jointsPx(row, 2 * j), yf = fwd.jointsPx(row, 2 * j + 1);
+  const double xb = bwd.jointsPx(row, 2 * j), yb = bwd.jointsPx(row, 2 * j + 1);
+  const bool hasF = !std::isnan(xf), hasB = !std::isnan(xb);
+  if (!hasF && !hasB) return;
+  wf = hasF ? wf * fwd.confidence(row, j) : 0.0;
+  wb = hasB ? wb * bwd.confidence(row, j) : 0.0;
+  if (!hasB || (hasF && std::hypot(xf - xb, yf - yb) > agreePx && wf >= wb)) {
+    out.jointsPx(row, 2 * j) = xf, out.jointsPx(row, 2 * j + 1) = yf,
+                          out.confidence(row, j) = fwd.confidence(row, j);
+  } else if (!hasF || std::hypot(xf - xb, yf - yb) > agreePx) {
+    out.jointsPx(row, 2 * j) = xb, out.jointsPx(row, 2 * j + 1) = yb,
+                          out.confidence(row, j) = bwd.confidence(row, j);
+  } else {
+    const double sum = std::max(wf + wb, 1e-12);
+    out.jointsPx(row, 2 * j) = (wf * xf + wb * xb) / sum;
+    out.jointsPx(row, 2 * j + 1) = (wf * yf + wb * yb) / sum;
+    out.confidence(row, j) = std::max(fwd.confidence(row, j), bwd.confidence(row, j));
+  }
+}
+
+// [SECTION] The whole range ---------------------------------------------------------------
+
+struct Range {
+  int first = 0, last = 0;
+  Eigen::Index rows() const { return last - first + 1; }
+};
+
+Range rangeFor(const VideoSource& video, const TrackerOptions& o) {
+  const int count = video.info().frameCount;
+  Range r{o.firstFrame, o.lastFrame < 0 ? count - 1 : o.lastFrame};
+  if (r.first < 0 || r.last >= count || r.first > r.last)
+    throw Error(ErrorKind::BadArgument, video.info().file, "",
+                "frames " + std::to_string(r.first) + "-" + std::to_string(r.last) +
+                    " are not within the video's 0-" + std::to_string(count - 1));
+  return r;
+}
+
+class RangeTracker {
+ public:
+  RangeTracker(VideoSource& video, const Keyframes& keys, const TrackerOptions& o,
+               const TrackProgress& progress)
+      : video_(video),
+        o_(o),
+        progress_(progress),
+        range_(rangeFor(video, o)),
+        supply_(video,
+                std::max<std::size_t>(
+                    2, o.frameBufferBytes /
+                           std::max<std::size_t>(1, static_cast<std::size_t>(video.info().widthPx) *
+                                                        video.info().heightPx))) {
+    for (const Keyframe& k : keys.keyframes)
+      if (k.frame >= range_.first && k.frame <= range_.last) keys_.push_back(k);
+    if (keys_.empty())
+      throw Error(ErrorKind::BadArgument, video.info().file, "",
+                  "no keyframe within the tracked frames " + std::to_string(range_.first) + "-" +
+                      std::to_string(range_.last));
+    g_ = geometryFor(personHeightPx(keys, video.info().heightPx), o);
+    const PassOutput empty{Eigen::MatrixXd::Constant(range_.rows(), kDims2, kNaN),
+                           Eigen::MatrixXd::Zero(range_.rows(), kJointCount)};
+    forward_ = backward_ = empty;
+    totalSteps_ = static_cast<double>(2 * range_.rows());
+  }
+
+  JointTrack run() {
+    for (std::size_t i = 0; i < keys_.size(); ++i) {
+      const int previous = i == 0 ? range_.first : keys_[i - 1].frame;
+      const int next = i + 1 == keys_.size() ? range_.last : keys_[i + 1].frame;
+      runPass(keys_[i], previous, backward_);
+      runPass(keys_[i], next, forward_);
+    }
+    return blended();
+  }
+
+ private:
+  // From the keyframe to `until` (either direction), writing rows of `out`.
+  void runPass(const Keyframe& key, int until, PassOutput& out) {
+    const int step = until >= key.frame ? 1 : -1;
+    const int lowest = std::min(key.frame, until);
+    const cv::Mat keyGrey = supply_.grey(key.frame, lowest).clone();
+    Pass pass(g_, o_, key, keyGrey);
+    record(pass, key.frame, std::array<double, kJointCount>{}, out, true);
+    std::vector<cv::Mat> fromPyramid = pyramidOf(keyGrey, g_, o_.pyramidLevels);
+    for (int f = key.frame + step; f != until + step; f += step) {
+      const cv::Mat toGrey = supply_.grey(f, lowest).clone();
+      std::vector<cv::Mat> toPyramid = pyramidOf(toGrey, g_, o_.pyramidLevels);
+      record(pass, f, pass.advance(fromPyramid, toPyramid, toGrey), out, false);
+      fromPyramid = std::move(toPyramid);
+      if (progress_ && !progress_(++stepsDone_ / totalSteps_))
+        throw Error(ErrorKind::BadArgument, video_.info().file, "", "tracking cancelled");
+    }
+  }
+
+  void record(const Pass& pass, int frame, const std::array<double, kJointCount>& confidence,
+              PassOutput& out, bool isKeyframe) {
+    const Eigen::Index row = frame - range_.first;
+    for (int j = 0; j < kJointCount; ++j) {
+      if (!pass.tracks(j)) continue;
+      const cv::Point2f p = pass.position(j);
+      out.jointsPx(row, 2 * j) = p.x;
+      out.jointsPx(row, 2 * j + 1) = p.y;
+      out.confidence(row, j) = isKeyframe ? 1.0 : confidence[j];
+    }
+  }
+
+  JointTrack blended() const {
+    JointTrack t;
+    t.firstFrame = range_.first;
+    t.fps = video_.info().fps;
+    t.jointsPx = Eigen::MatrixXd::Constant(range_.rows(), kDims2, kNaN);
+    t.confidence = Eigen::MatrixXd::Zero(range_.rows(), kJointCount);
+    const double agreePx = 0.03 * g_.personPx;
+    for (Eigen::Index row = 0; row < range_.rows(); ++row) {
+      const int frame = range_.first + static_cast<int>(row);
+      const auto [wf, wb] = passWeights(frame);
+      for (int j = 0; j < kJointCount; ++j) blend(forward_, wf, backward_, wb, row, j, agreePx, t);
+    }
+    return t;
+  }
+
+  // Each pass counts more the nearer its keyframe: 1 at it, 0 at the other keyframe.
+  std::pair<double, double> passWeights(int frame) const {
+    const Keyframe* before = nullptr;
+    const Keyframe* after = nullptr;
+    for (const Keyframe& k : keys_) {
+      if (k.frame <= frame) before = &k;
+      if (k.frame >= frame && !after) after = &k;
+    }
+    if (!before) return {0.0, 1.0};
+    if (!after) return {1.0, 0.0};
+    if (before == after) return {1.0, 1.0};
+    const double s = static_cast<double>(frame - before->frame) / (after->frame - before->frame);
+    return {1.0 - s, s};
+  }
+
+  VideoSource& video_;
+  TrackerOptions o_;
+  TrackProgress progress_;
+  Range range_;
+  FrameSupply supply_;
+  std::vector<Keyframe> keys_;
+  Geometry g_;
+  PassOutput forward_, backward_;
+  double stepsDone_ = 0.0, totalSteps_ = 1.0;
+};
+
+}  // namespace
+
+JointTrack trackJoints(VideoSource& video, const Keyframes& keyframes,
+                       const TrackerOptions& options, const TrackProgress& progress) {
+  return RangeTracker(video, keyframes, options, progress).run();
+}
+
+}  // namespace ew

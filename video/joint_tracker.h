@@ -1,0 +1,53 @@
+#pragma once
+// Joints followed through a video from hand-marked keyframes (core/tracking/keyframes.h):
+// pyramidal Lucas–Kanade optical flow from frame to frame, checked by tracking back
+// (forward–backward error), patch matching against the joint's look on its keyframe, and
+// a constant-velocity Kalman filter per joint that carries a joint through frames where
+// neither finds it. Every keyframe is tracked forward to the next keyframe and backward to
+// the previous one; between two keyframes the two tracks are blended, each weighted by its
+// confidence and by how near its keyframe is (docs/TRACKING.md).
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/tracking/keyframes.h"
+#include "video/video_source.h"
+
+namespace ew {
+
+struct TrackerOptions {
+  int firstFrame = 0;  // the frames tracked, inclusive
+  int lastFrame = -1;  // -1: the video's last frame
+  int pyramidLevels = 3;
+  // The Lucas–Kanade window and the matched patch as shares of the person's height in
+  // pixels (from the first keyframe: head to ankles), so that the tracker sees the same
+  // part of a limb in a close-up and in a wide shot.
+  double windowShare = 1.0 / 12.0;
+  double patchShare = 1.0 / 10.0;
+  double searchShare = 1.0 / 10.0;  // how far around the flow's answer the patch is sought
+  // Grey frames held at once for the backward passes; a longer stretch between keyframes
+  // is decoded again in pieces of this size.
+  std::size_t frameBufferBytes = std::size_t{512} << 20;
+};
+
+struct JointTrack {
+  int firstFrame = 0;
+  double fps = 0.0;
+  Eigen::MatrixXd jointsPx;    // frames × 30: x, y per joint (SPEC §1), NaN = never marked
+  Eigen::MatrixXd confidence;  // frames × 15, 0-1 (1 on a keyframe)
+  std::vector<std::string> warnings;
+};
+
+// Called with the share done (0-1); returning false cancels (Error(BadArgument) "cancelled").
+using TrackProgress = std::function<bool(double)>;
+
+// Throws Error(BadArgument) for a frame range outside the video or with no keyframe in it,
+// or when `progress` cancels; Error(BadData) from the video source when the stream ends
+// before the frames asked for.
+JointTrack trackJoints(VideoSource& video, const Keyframes& keyframes,
+                       const TrackerOptions& options = {}, const TrackProgress& progress = {});
+
+}  // namespace ew

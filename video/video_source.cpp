@@ -1,0 +1,106 @@
+#include "video/video_source.h"
+
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+
+#include "core/common/errors.h"
+
+namespace ew {
+namespace {
+
+// Seeking costs a decode from the previous keyframe; reading forward up to this many
+// frames is cheaper than that for the clips we see (a keyframe every 1-10 s).
+constexpr int kReadAheadInsteadOfSeek = 30;
+
+std::string fourccText(double value) {
+  const auto code = static_cast<unsigned>(value);
+  std::string text;
+  for (int shift = 0; shift < 32; shift += 8) {
+    const char c = static_cast<char>((code >> shift) & 0xFFu);
+    if (c < 32 || c > 126) return "";
+    text += c;
+  }
+  return text;
+}
+
+}  // namespace
+
+VideoSource::VideoSource(const std::filesystem::path& path) {
+  info_.file = path.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error(ErrorKind::Io, info_.file, "", "no such video file");
+  if (!capture_.open(info_.file, cv::CAP_FFMPEG))
+    throwMalformed(info_.file, "", "not a video the FFmpeg backend can decode");
+  info_.widthPx = static_cast<int>(capture_.get(cv::CAP_PROP_FRAME_WIDTH));
+  info_.heightPx = static_cast<int>(capture_.get(cv::CAP_PROP_FRAME_HEIGHT));
+  info_.fps = capture_.get(cv::CAP_PROP_FPS);
+  const double count = capture_.get(cv::CAP_PROP_FRAME_COUNT);
+  info_.codec = fourccText(capture_.get(cv::CAP_PROP_FOURCC));
+  if (info_.widthPx <= 0 || info_.heightPx <= 0 || info_.widthPx > kMaxVideoSidePx ||
+      info_.heightPx > kMaxVideoSidePx)
+    throwBadData(info_.file, "",
+                 "frame size " + std::to_string(info_.widthPx) + "x" +
+                     std::to_string(info_.heightPx) + " is outside 1-" +
+                     std::to_string(kMaxVideoSidePx) + " px");
+  if (!std::isfinite(info_.fps) || info_.fps < 1.0 || info_.fps > 10000.0)
+    throwBadData(info_.file, "",
+                 "frame rate " + std::to_string(info_.fps) + " is outside 1-10000 fps");
+  if (!std::isfinite(count) || count < 1.0 || count > kMaxVideoFrames)
+    throwBadData(info_.file, "",
+                 "frame count " + std::to_string(count) + " is outside 1-" +
+                     std::to_string(kMaxVideoFrames));
+  info_.frameCount = static_cast<int>(count);
+  cv::Mat first;
+  if (!capture_.read(first) || first.empty())
+    throwMalformed(info_.file, "frame 0", "cannot be decoded");
+  next_ = 1;
+}
+
+void VideoSource::seekTo(int index) {
+  if (index == next_) return;
+  if (index > next_ && index - next_ <= kReadAheadInsteadOfSeek) {
+    while (next_ < index) {
+      if (!capture_.grab()) break;
+      ++next_;
+    }
+    if (next_ == index) return;
+  }
+  capture_.set(cv::CAP_PROP_POS_FRAMES, static_cast<double>(index));
+  next_ = index;
+}
+
+cv::Mat VideoSource::frame(int index) {
+  if (index < 0 || index >= info_.frameCount)
+    throw Error(ErrorKind::BadArgument, info_.file, "frame " + std::to_string(index),
+                "outside the video's frames 0-" + std::to_string(info_.frameCount - 1));
+  seekTo(index);
+  cv::Mat image;
+  if (!capture_.read(image) || image.empty()) {
+    const int found = index;
+    info_.frameCount = std::min(info_.frameCount, found);
+    next_ = -1;  // unknown: the next request seeks
+    throwBadData(info_.file, "frame " + std::to_string(index),
+                 "the stream ends before this frame (the container announced more frames)");
+  }
+  ++next_;
+  if (image.type() != CV_8UC3) {
+    cv::Mat converted;
+    if (image.channels() == 1)
+      cv::cvtColor(image, converted, cv::COLOR_GRAY2BGR);
+    else if (image.channels() == 4)
+      cv::cvtColor(image, converted, cv::COLOR_BGRA2BGR);
+    else
+      throwMalformed(info_.file, "frame " + std::to_string(index), "unsupported pixel format");
+    image = converted;
+  }
+  return image;
+}
+
+cv::Mat toGrey(const cv::Mat& bgr) {
+  cv::Mat grey;
+  cv::cvtColor(bgr, grey, cv::COLOR_BGR2GRAY);
+  return grey;
+}
+
+}  // namespace ew
