@@ -7,9 +7,11 @@
 #include <map>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
+#include <optional>
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
+#include "video/segment_search.h"
 
 namespace ew {
 namespace {
@@ -21,6 +23,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 struct Geometry {
   double personPx = 0.0;
   int windowPx = 21, patchPx = 21, searchPx = 20;
+  int segmentWindowPx = 15;  // Lucas–Kanade window for the segments' feature points
   double forwardBackwardLimitPx = 1.0;
 };
 
@@ -52,6 +55,7 @@ Geometry geometryFor(double personPx, const TrackerOptions& o) {
   g.personPx = personPx;
   g.windowPx = oddClamp(personPx * o.windowShare, 9, 61);
   g.patchPx = oddClamp(personPx * o.patchShare, 9, 81);
+  g.segmentWindowPx = oddClamp(personPx / 40.0, 9, 31);
   g.searchPx = std::clamp(static_cast<int>(std::lround(personPx * o.searchShare)), 6, 120);
   // Sub-pixel flow on textured clothing comes back within a pixel; a bigger forward–
   // backward disagreement means the window slid onto something else (the other leg).
@@ -146,22 +150,32 @@ class Pass {
       templates_[j] =
           patchAround(keyGrey, cv::Point2f(static_cast<float>(x), static_cast<float>(y)));
     }
+    for (std::size_t b = 0; b < kSearchTree.size(); ++b) {
+      const int parent = index(kSearchTree[b].parent), child = index(kSearchTree[b].child);
+      if (filters_[parent].active && filters_[child].active)
+        strips_[b] = segmentStrip(keyGrey, filters_[parent].position(), filters_[child].position(),
+                                  kSearchTree[b], g_.personPx);
+    }
   }
 
   bool tracks(int j) const { return filters_[j].active; }
   cv::Point2f position(int j) const { return filters_[j].position(); }
 
-  // Moves every joint from `fromGrey` to `toGrey`; confidence per joint out.
+  // Moves every joint from the from-frame to `toGrey`; confidence per joint out.
   std::array<double, kJointCount> advance(const std::vector<cv::Mat>& fromPyramid,
                                           const std::vector<cv::Mat>& toPyramid,
                                           const cv::Mat& toGrey) {
     std::array<double, kJointCount> confidence{};
+    std::array<cv::Point2f, kJointCount> fromAll;
+    fromAll.fill(cv::Point2f(std::numeric_limits<float>::quiet_NaN(),
+                             std::numeric_limits<float>::quiet_NaN()));
     std::vector<int> joints;
     Step s;
     for (int j = 0; j < kJointCount; ++j) {
       if (!filters_[j].active) continue;
       joints.push_back(j);
-      s.from.push_back(filters_[j].position());
+      fromAll[j] = filters_[j].position();
+      s.from.push_back(fromAll[j]);
       filters_[j].predict(0.01 * g_.personPx);
       s.guess.push_back(filters_[j].position());
     }
@@ -174,8 +188,32 @@ class Pass {
     s.back = s.from;
     cv::calcOpticalFlowPyrLK(toPyramid, fromPyramid, s.flow, s.back, s.backStatus, s.error, window,
                              o_.pyramidLevels, stop, cv::OPTFLOW_USE_INITIAL_FLOW);
-    for (std::size_t i = 0; i < joints.size(); ++i)
-      confidence[joints[i]] = measure(joints[i], s, i, toGrey);
+    // The flow's answer where it holds (checked by flowing back), else the filter's guess.
+    std::array<cv::Point2f, kJointCount> predicted = fromAll;
+    std::array<bool, kJointCount> flowHolds{};
+    for (std::size_t i = 0; i < joints.size(); ++i) {
+      const cv::Point2f d = s.back[i] - s.from[i];
+      flowHolds[joints[i]] =
+          s.status[i] && s.backStatus[i] && std::hypot(d.x, d.y) <= g_.forwardBackwardLimitPx;
+      predicted[joints[i]] = flowHolds[joints[i]] ? s.flow[i] : s.guess[i];
+    }
+    SearchResult found;
+    found.at.fill(cv::Point2f(std::numeric_limits<float>::quiet_NaN(),
+                              std::numeric_limits<float>::quiet_NaN()));
+    found.match.fill(-1.0);
+    if (o_.searchSegments)
+      found = ew::searchSegments(toGrey, predicted, strips_,
+                                 {g_.personPx, static_cast<double>(g_.searchPx)});
+    for (std::size_t i = 0; i < joints.size(); ++i) {
+      const int j = joints[i];
+      confidence[j] = measure(j, s.guess[i], flowHolds[j] ? std::optional(s.flow[i]) : std::nullopt,
+                              found.at[j], found.match[j], toGrey);
+      // A joint that left the picture is lost for the rest of this pass, not extrapolated.
+      const cv::Point2f p = filters_[j].position();
+      if (!(p.x >= 0.0f && p.y >= 0.0f && p.x < static_cast<float>(toGrey.cols) &&
+            p.y < static_cast<float>(toGrey.rows)))
+        filters_[j].active = false;
+    }
     return confidence;
   }
 
@@ -208,19 +246,21 @@ class Pass {
     return m;
   }
 
-  double measure(int j, const Step& s, std::size_t i, const cv::Mat& toGrey) {
-    const cv::Point2f d = s.back[i] - s.from[i];
-    const double forwardBackwardPx = std::hypot(d.x, d.y);
-    const bool flowHolds =
-        s.status[i] && s.backStatus[i] && forwardBackwardPx <= g_.forwardBackwardLimitPx;
-    const Match m = matchAround(j, toGrey, flowHolds ? s.flow[i] : s.guess[i]);
-    if (flowHolds) {
-      const double c = std::clamp(0.5 + 0.5 * m.centreScore, 0.05, 1.0) *
-                       (1.0 - 0.5 * forwardBackwardPx / g_.forwardBackwardLimitPx);
-      filters_[j].update(s.flow[i].x, s.flow[i].y, 0.5 / c);
+  // A segment that looks as it did on the keyframe places its joint; else the joint's own
+  // flow; else the keyframe patch, if it is clearly there; else the joint coasts on the filter.
+  double measure(int j, cv::Point2f guess, std::optional<cv::Point2f> flow, cv::Point2f segmentAt,
+                 double segmentMatch, const cv::Mat& toGrey) {
+    if (segmentMatch >= kSegmentMatchHolds) {
+      filters_[j].update(segmentAt.x, segmentAt.y, 0.5 / segmentMatch);
+      return segmentMatch;
+    }
+    if (flow) {
+      const Match m = matchAround(j, toGrey, *flow);
+      const double c = std::clamp(0.5 + 0.5 * m.centreScore, 0.05, 1.0) * 0.8;
+      filters_[j].update(flow->x, flow->y, 0.5 / c);
       return c;
     }
-    // The flow lost the joint: the keyframe's look, if it is clearly there, else coast.
+    const Match m = matchAround(j, toGrey, guess);
     if (m.bestScore > 0.7) {
       filters_[j].update(m.best.x, m.best.y, 1.0 / m.bestScore);
       return 0.5 * m.bestScore;
@@ -228,10 +268,15 @@ class Pass {
     return 0.05;
   }
 
+  // A strip correlation this high is the same segment (a limb's stripes or folds line up);
+  // below it the segment turned out of view or something covers it.
+  static constexpr double kSegmentMatchHolds = 0.6;
+
   Geometry g_;
   TrackerOptions o_;
   std::array<JointFilter, kJointCount> filters_{};
   std::array<cv::Mat, kJointCount> templates_{};
+  std::array<SegmentStrip, kBones.size()> strips_{};
 };
 
 std::vector<cv::Mat> pyramidOf(const cv::Mat& grey, const Geometry& g, int levels) {
@@ -328,9 +373,12 @@ class RangeTracker {
     const cv::Mat keyGrey = supply_.grey(key.frame, lowest).clone();
     Pass pass(g_, o_, key, keyGrey);
     record(pass, key.frame, std::array<double, kJointCount>{}, out, true);
+    for (int j = 0; j < kJointCount; ++j)  // the marks themselves, not their float copies
+      if (pass.tracks(j))
+        out.jointsPx.block<1, 2>(key.frame - range_.first, 2 * j) = key.jointsPx.segment<2>(2 * j);
     std::vector<cv::Mat> fromPyramid = pyramidOf(keyGrey, g_, o_.pyramidLevels);
     for (int f = key.frame + step; f != until + step; f += step) {
-      const cv::Mat toGrey = supply_.grey(f, lowest).clone();
+      cv::Mat toGrey = supply_.grey(f, lowest).clone();
       std::vector<cv::Mat> toPyramid = pyramidOf(toGrey, g_, o_.pyramidLevels);
       record(pass, f, pass.advance(fromPyramid, toPyramid, toGrey), out, false);
       fromPyramid = std::move(toPyramid);
@@ -376,7 +424,7 @@ class RangeTracker {
     }
     if (!before) return {0.0, 1.0};
     if (!after) return {1.0, 0.0};
-    if (before == after) return {1.0, 1.0};
+    if (before == after) return {1.0, 0.0};  // a keyframe: its forward pass starts at the marks
     const double s = static_cast<double>(frame - before->frame) / (after->frame - before->frame);
     return {1.0 - s, s};
   }

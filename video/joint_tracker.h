@@ -27,7 +27,11 @@ struct TrackerOptions {
   // part of a limb in a close-up and in a wide shot.
   double windowShare = 1.0 / 12.0;
   double patchShare = 1.0 / 10.0;
-  double searchShare = 1.0 / 10.0;  // how far around the flow's answer the patch is sought
+  double searchShare = 1.0 / 20.0;  // how far around the prediction a joint is sought
+  // Place each joint where its segment looks as on the keyframe (video/segment_search.h).
+  // Off by default: measured worse than each joint's own flow on both the synthetic
+  // footage and Pose2Sim's cam01 (docs/TRACKING.md, "Measured").
+  bool searchSegments = false;
   // Grey frames held at once for the backward passes; a longer stretch between keyframes
   // is decoded again in pieces of this size.
   std::size_t frameBufferBytes = std::size_t{512} << 20;

@@ -1,0 +1,112 @@
+// The joint tracker (video/joint_tracker.h) on footage with known truth, painted by
+// video/synthetic_footage.h (1280×720, pinhole, textured limbs over a noise background) and
+// tracked from keyframes with the true joints. Not yet here: issue 14's walking footage
+// (median ≤ 3 px, p95 ≤ 10 px) — on a walking synthetic walker the tracker still loses the
+// legs (docs/TRACKING.md, "Measured").
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "core/synth/population.h"
+#include "core/tracking/track_compare.h"
+#include "tests/common/error_matchers.h"
+#include "tests/common/test_support.h"
+#include "video/joint_tracker.h"
+#include "video/synthetic_footage.h"
+
+namespace ew {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Footage {
+  fs::path file;
+  Eigen::MatrixXd truthPx;
+};
+
+// One still pose of a synthetic walker carried forward at 1.3 m/s for 2 s, filmed at 30 fps
+// from 30° off the side view, 4 m away: the figure's look barely changes, so what the
+// tracker must do is follow it — its flow, its segments' strips and its filter together.
+const Footage& glidingFigure() {
+  static const Footage footage = [] {
+    PopulationOptions o;
+    o.count = 1;
+    o.simulation.rateHz = 30.0;
+    const SynthWalker walker = generatePopulation(o).front();
+    Eigen::MatrixXd frames(60, kDims3);
+    for (Eigen::Index f = 0; f < frames.rows(); ++f) {
+      frames.row(f) = walker.trial.positionsMm.row(0);
+      for (int j = 0; j < kJointCount; ++j)
+        frames(f, 3 * j + 1) += 1300.0 * static_cast<double>(f) / 30.0;
+    }
+    Footage out;
+    out.file = test::makeTempDir("tracker_footage") / "figure.avi";
+    out.truthPx = writeFootage(out.file, frames, cameraBeside(frames, 30.0, 4000.0), 30.0);
+    return out;
+  }();
+  return footage;
+}
+
+void printDistance(const TrackDistance& d) {
+  std::cout << "median " << d.medianAllPx << " px, p95 " << d.p95AllPx
+            << " px; per joint median/p95:";
+  for (int j = 0; j < kJointCount; ++j)
+    std::cout << " " << kJointNames[j] << " " << d.medianPx[j] << "/" << d.p95Px[j];
+  std::cout << "\n";
+}
+
+TEST(JointTracker, FollowsAGlidingFigureFromOneKeyframe) {
+  const Footage& footage = glidingFigure();
+  VideoSource video(footage.file);
+  ASSERT_EQ(video.info().frameCount, footage.truthPx.rows());
+  const Keyframes keys = keyframesFromTrack(footage.truthPx, {0}, footage.file.string());
+  const JointTrack track = trackJoints(video, keys);
+  ASSERT_EQ(track.jointsPx.rows(), footage.truthPx.rows());
+  const TrackDistance d = compareTracks(track.jointsPx, 0, footage.truthPx);
+  printDistance(d);
+  EXPECT_EQ(d.jointFrames, kJointCount * footage.truthPx.rows());
+  // Measured 6.5 px median: frame-to-frame flow drifts about 0.1 px a frame (docs/
+  // TRACKING.md). A guard against getting worse, not issue 14's bar (3 px on a walker).
+  EXPECT_LE(d.medianAllPx, 8.0);
+  EXPECT_LE(d.p95AllPx, 35.0);  // measured 26.5
+}
+
+TEST(JointTracker, KeyframesInTheMiddleAndAtTheEndTrackBackwardAndForward) {
+  const Footage& footage = glidingFigure();
+  VideoSource video(footage.file);
+  const int last = static_cast<int>(footage.truthPx.rows()) - 1;
+  const Keyframes keys =
+      keyframesFromTrack(footage.truthPx, {last / 2, last}, footage.file.string());
+  TrackerOptions o;
+  o.frameBufferBytes = 20 * 1280 * 720;  // backward in pieces of 20 frames
+  const JointTrack track = trackJoints(video, keys, o);
+  EXPECT_TRUE(test::bitwiseEqual(track.jointsPx.row(last), footage.truthPx.row(last)));
+  EXPECT_TRUE(test::bitwiseEqual(track.jointsPx.row(last / 2), footage.truthPx.row(last / 2)));
+  EXPECT_DOUBLE_EQ(track.confidence(last, 0), 1.0);
+  const TrackDistance d = compareTracks(track.jointsPx, 0, footage.truthPx);
+  printDistance(d);
+  // Two keyframes and a pass from each side shorten the stretch each pass drifts over:
+  // measured 0.6 px median, 8.8 px p95.
+  EXPECT_LE(d.medianAllPx, 1.5);
+  EXPECT_LE(d.p95AllPx, 12.0);
+}
+
+TEST(JointTracker, RefusesARangeWithoutKeyframesOrOutsideTheVideo) {
+  const Footage& footage = glidingFigure();
+  VideoSource video(footage.file);
+  const Keyframes keys = keyframesFromTrack(footage.truthPx, {50}, footage.file.string());
+  TrackerOptions o;
+  o.lastFrame = 40;
+  EXPECT_TRUE(test::throwsError([&] { trackJoints(video, keys, o); }, ErrorKind::BadArgument,
+                                {"no keyframe within the tracked frames 0-40"}));
+  o.lastFrame = 100000;
+  EXPECT_TRUE(test::throwsError([&] { trackJoints(video, keys, o); }, ErrorKind::BadArgument,
+                                {"not within"}));
+  o.lastFrame = -1;
+  EXPECT_TRUE(test::throwsError([&] { trackJoints(video, keys, o, [](double) { return false; }); },
+                                ErrorKind::BadArgument, {"cancelled"}));
+}
+
+}  // namespace
+}  // namespace ew

@@ -1,0 +1,55 @@
+#pragma once
+// Each joint placed where its body segment looks as it did on the keyframe (after Zou et
+// al. 2009 §5.2–5.3, who model the body as rectangles around the segments and search
+// joint positions depth-first down the tree). A segment's look is its rectangle resampled
+// into a fixed strip in the segment's own axes (along the bone × across it), so a limb that
+// turned or swung still lines up with its keyframe strip; strips are compared by normalised
+// cross-correlation. Starting at the pelvis, each child joint is sought in a square around
+// its predicted position (from the optical flow or the motion filter), its parent already
+// placed. The strip holds the limb and not the background beside it, which the optical
+// flow of a thin limb's joint window cannot avoid.
+
+#include <array>
+#include <opencv2/core.hpp>
+
+#include "core/common/skeleton.h"
+
+namespace ew {
+
+// Parent → child in search order (depth-first from the pelvis).
+struct TreeBone {
+  Joint parent, child;
+  double halfWidthShare;  // the segment's half-width, share of the person's height
+  double beyondShare;  // how far the strip reaches past the child (hand, foot, head), share of the
+                       // bone
+};
+extern const std::array<TreeBone, kBones.size()> kSearchTree;
+
+// A segment's look: its strip, zero mean and unit norm (empty when off the frame or degenerate).
+using SegmentStrip = cv::Mat;  // CV_32F, kStripAlong × kStripAcross
+
+SegmentStrip segmentStrip(const cv::Mat& grey, cv::Point2f parent, cv::Point2f child,
+                          const TreeBone& bone, double personPx);
+
+// Normalised cross-correlation of two strips (−1-1); −1 when either is empty.
+double stripMatch(const SegmentStrip& a, const SegmentStrip& b);
+
+struct SegmentSearchOptions {
+  double personPx = 300.0;
+  double radiusPx = 20.0;  // the square searched around each prediction
+};
+
+struct SearchResult {
+  std::array<cv::Point2f, kJointCount> at;  // NaN where not searched
+  std::array<double, kJointCount>
+      match{};  // the strip's match at the answer (the pelvis: the trunk's)
+};
+
+// `predicted`: each joint's predicted position in `grey` (NaN: not tracked); `strips`: the
+// keyframe's strip per search-tree bone (empty: that bone is not tracked).
+SearchResult searchSegments(const cv::Mat& grey,
+                            const std::array<cv::Point2f, kJointCount>& predicted,
+                            const std::array<SegmentStrip, kBones.size()>& strips,
+                            const SegmentSearchOptions& options);
+
+}  // namespace ew
