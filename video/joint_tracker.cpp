@@ -23,7 +23,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 struct Geometry {
   double personPx = 0.0;
   int windowPx = 21, patchPx = 21, searchPx = 20;
-  int segmentWindowPx = 15;  // Lucas–Kanade window for the segments' feature points
   double forwardBackwardLimitPx = 1.0;
 };
 
@@ -55,7 +54,6 @@ Geometry geometryFor(double personPx, const TrackerOptions& o) {
   g.personPx = personPx;
   g.windowPx = oddClamp(personPx * o.windowShare, 9, 61);
   g.patchPx = oddClamp(personPx * o.patchShare, 9, 81);
-  g.segmentWindowPx = oddClamp(personPx / 40.0, 9, 31);
   g.searchPx = std::clamp(static_cast<int>(std::lround(personPx * o.searchShare)), 6, 120);
   // Sub-pixel flow on textured clothing comes back within a pixel; a bigger forward–
   // backward disagreement means the window slid onto something else (the other leg).
@@ -96,9 +94,6 @@ struct JointFilter {
   }
   cv::Point2f position() const {
     return {static_cast<float>(state(0)), static_cast<float>(state(1))};
-  }
-  cv::Point2f predicted() const {
-    return {static_cast<float>(state(0) + state(2)), static_cast<float>(state(1) + state(3))};
   }
 };
 
@@ -197,13 +192,10 @@ class Pass {
           s.status[i] && s.backStatus[i] && std::hypot(d.x, d.y) <= g_.forwardBackwardLimitPx;
       predicted[joints[i]] = flowHolds[joints[i]] ? s.flow[i] : s.guess[i];
     }
-    SearchResult found;
-    found.at.fill(cv::Point2f(std::numeric_limits<float>::quiet_NaN(),
-                              std::numeric_limits<float>::quiet_NaN()));
-    found.match.fill(-1.0);
-    if (o_.searchSegments)
-      found = ew::searchSegments(toGrey, predicted, strips_,
-                                 {g_.personPx, static_cast<double>(g_.searchPx)});
+    const SearchResult found =
+        o_.searchSegments ? ew::searchSegments(toGrey, predicted, strips_,
+                                               {g_.personPx, static_cast<double>(g_.searchPx)})
+                          : SearchResult{};
     for (std::size_t i = 0; i < joints.size(); ++i) {
       const int j = joints[i];
       confidence[j] = measure(j, s.guess[i], flowHolds[j] ? std::optional(s.flow[i]) : std::nullopt,
@@ -225,11 +217,19 @@ class Pass {
   }
 
   // The keyframe patch sought in a square around `centre`: the best match and its score
-  // (normalised cross-correlation, −1-1), and the score at `centre` itself.
+  // (normalised cross-correlation, −1-1).
   struct Match {
     cv::Point2f best;
-    double bestScore = -1.0, centreScore = -1.0;
+    double bestScore = -1.0;
   };
+  // The keyframe patch's correlation at `centre` alone (one score, not a search).
+  double scoreAt(int j, const cv::Mat& grey, cv::Point2f centre) const {
+    cv::Mat region, score;
+    cv::getRectSubPix(grey, templates_[j].size(), centre, region);
+    cv::matchTemplate(region, templates_[j], score, cv::TM_CCOEFF_NORMED);
+    return score.at<float>(0, 0);
+  }
+
   Match matchAround(int j, const cv::Mat& grey, cv::Point2f centre) const {
     const int side = g_.patchPx + 2 * g_.searchPx;
     cv::Mat region, scores;
@@ -240,7 +240,6 @@ class Pass {
     cv::minMaxLoc(scores, nullptr, &maxScore, nullptr, &maxAt);
     Match m;
     m.bestScore = maxScore;
-    m.centreScore = scores.at<float>(g_.searchPx, g_.searchPx);
     m.best = centre + cv::Point2f(static_cast<float>(maxAt.x - g_.searchPx),
                                   static_cast<float>(maxAt.y - g_.searchPx));
     return m;
@@ -255,8 +254,7 @@ class Pass {
       return segmentMatch;
     }
     if (flow) {
-      const Match m = matchAround(j, toGrey, *flow);
-      const double c = std::clamp(0.5 + 0.5 * m.centreScore, 0.05, 1.0) * 0.8;
+      const double c = std::clamp(0.5 + 0.5 * scoreAt(j, toGrey, *flow), 0.05, 1.0) * 0.8;
       filters_[j].update(flow->x, flow->y, 0.5 / c);
       return c;
     }
@@ -298,17 +296,20 @@ void blend(const PassOutput& fwd, double wf, const PassOutput& bwd, double wb, E
   if (!hasF && !hasB) return;
   wf = hasF ? wf * fwd.confidence(row, j) : 0.0;
   wb = hasB ? wb * bwd.confidence(row, j) : 0.0;
-  if (!hasB || (hasF && std::hypot(xf - xb, yf - yb) > agreePx && wf >= wb)) {
-    out.jointsPx(row, 2 * j) = xf, out.jointsPx(row, 2 * j + 1) = yf,
-                          out.confidence(row, j) = fwd.confidence(row, j);
-  } else if (!hasF || std::hypot(xf - xb, yf - yb) > agreePx) {
-    out.jointsPx(row, 2 * j) = xb, out.jointsPx(row, 2 * j + 1) = yb,
-                          out.confidence(row, j) = bwd.confidence(row, j);
+  const auto take = [&](double x, double y, double c) {
+    out.jointsPx(row, 2 * j) = x;
+    out.jointsPx(row, 2 * j + 1) = y;
+    out.confidence(row, j) = c;
+  };
+  const bool apart = hasF && hasB && std::hypot(xf - xb, yf - yb) > agreePx;
+  if (!hasB || (apart && wf >= wb)) {
+    take(xf, yf, fwd.confidence(row, j));
+  } else if (!hasF || apart) {
+    take(xb, yb, bwd.confidence(row, j));
   } else {
     const double sum = std::max(wf + wb, 1e-12);
-    out.jointsPx(row, 2 * j) = (wf * xf + wb * xb) / sum;
-    out.jointsPx(row, 2 * j + 1) = (wf * yf + wb * yb) / sum;
-    out.confidence(row, j) = std::max(fwd.confidence(row, j), bwd.confidence(row, j));
+    take((wf * xf + wb * xb) / sum, (wf * yf + wb * yb) / sum,
+         std::max(fwd.confidence(row, j), bwd.confidence(row, j)));
   }
 }
 
@@ -370,7 +371,8 @@ class RangeTracker {
   void runPass(const Keyframe& key, int until, PassOutput& out) {
     const int step = until >= key.frame ? 1 : -1;
     const int lowest = std::min(key.frame, until);
-    const cv::Mat keyGrey = supply_.grey(key.frame, lowest).clone();
+    // Headers, not copies: they keep the frame alive when the supply lets it go.
+    const cv::Mat keyGrey = supply_.grey(key.frame, lowest);
     Pass pass(g_, o_, key, keyGrey);
     record(pass, key.frame, std::array<double, kJointCount>{}, out, true);
     for (int j = 0; j < kJointCount; ++j)  // the marks themselves, not their float copies
@@ -378,7 +380,7 @@ class RangeTracker {
         out.jointsPx.block<1, 2>(key.frame - range_.first, 2 * j) = key.jointsPx.segment<2>(2 * j);
     std::vector<cv::Mat> fromPyramid = pyramidOf(keyGrey, g_, o_.pyramidLevels);
     for (int f = key.frame + step; f != until + step; f += step) {
-      cv::Mat toGrey = supply_.grey(f, lowest).clone();
+      const cv::Mat toGrey = supply_.grey(f, lowest);
       std::vector<cv::Mat> toPyramid = pyramidOf(toGrey, g_, o_.pyramidLevels);
       record(pass, f, pass.advance(fromPyramid, toPyramid, toGrey), out, false);
       fromPyramid = std::move(toPyramid);

@@ -42,7 +42,6 @@ struct JointTrack {
   double fps = 0.0;
   Eigen::MatrixXd jointsPx;    // frames × 30: x, y per joint (SPEC §1), NaN = never marked
   Eigen::MatrixXd confidence;  // frames × 15, 0-1 (1 on a keyframe)
-  std::vector<std::string> warnings;
 };
 
 // Called with the share done (0-1); returning false cancels (Error(BadArgument) "cancelled").

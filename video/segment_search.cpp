@@ -22,8 +22,7 @@ float sampleBilinear(const cv::Mat& grey, float x, float y) {
          fy * ((1 - fx) * r1[x0] + fx * r1[x0 + 1]);
 }
 
-// Where a point is placed with its parent fixed: the best strip match in a square
-// `radiusPx` around the start, first on a 2 px grid, then on a 0.5 px grid around the best.
+// Where a joint is placed, and its strip's match there.
 struct Placement {
   cv::Point2f at;
   double match = -1.0;
@@ -65,7 +64,8 @@ Placement placeChild(const cv::Mat& grey, cv::Point2f parent, cv::Point2f start,
   return best;
 }
 
-// The pelvis with the trunk: pelvis and sternum moved together, the trunk strip compared.
+// The pelvis with the trunk: pelvis and sternum moved together, the trunk strip compared,
+// in a square `radiusPx` around the prediction on a 2 px grid, then 0.5 px around the best.
 Placement placeRoot(const cv::Mat& grey, cv::Point2f pelvis, cv::Point2f sternum,
                     const SegmentStrip& trunk, const TreeBone& bone,
                     const SegmentSearchOptions& o) {
@@ -89,6 +89,11 @@ Placement placeRoot(const cv::Mat& grey, cv::Point2f pelvis, cv::Point2f sternum
 // Half-widths: a forearm or shank is about 5 % of the body height across, the upper arm
 // and thigh 6-7 %, the trunk about 18 % (Drillis & Contini's proportions, rounded down so
 // the strip stays on the segment).
+SearchResult::SearchResult() {
+  at.fill(cv::Point2f(kNaNf, kNaNf));
+  match.fill(-1.0);
+}
+
 const std::array<TreeBone, kBones.size()> kSearchTree = {{
     {Joint::Pelvis, Joint::Sternum, 0.07, 0.0},
     {Joint::Sternum, Joint::Head, 0.04, 0.5},
@@ -147,8 +152,6 @@ SearchResult searchSegments(const cv::Mat& grey,
                             const std::array<SegmentStrip, kBones.size()>& strips,
                             const SegmentSearchOptions& o) {
   SearchResult r;
-  r.at.fill(cv::Point2f(kNaNf, kNaNf));
-  r.match.fill(-1.0);
   const int pelvis = index(Joint::Pelvis), sternum = index(Joint::Sternum);
   if (valid(predicted[pelvis])) {
     r.at[pelvis] = predicted[pelvis];

@@ -36,13 +36,15 @@ double stripMatch(const SegmentStrip& a, const SegmentStrip& b);
 
 struct SegmentSearchOptions {
   double personPx = 300.0;
-  double radiusPx = 20.0;  // the square searched around each prediction
+  double radiusPx = 20.0;  // the square the pelvis is sought in (the others: a sector)
 };
 
+// Default: nothing found (every joint NaN, every match −1).
 struct SearchResult {
+  SearchResult();
   std::array<cv::Point2f, kJointCount> at;  // NaN where not searched
-  std::array<double, kJointCount>
-      match{};  // the strip's match at the answer (the pelvis: the trunk's)
+  // The strip's match at the answer (the pelvis: the trunk's).
+  std::array<double, kJointCount> match;
 };
 
 // `predicted`: each joint's predicted position in `grey` (NaN: not tracked); `strips`: the

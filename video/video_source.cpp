@@ -59,7 +59,7 @@ VideoSource::VideoSource(const std::filesystem::path& path) {
 
 void VideoSource::seekTo(int index) {
   if (index == next_) return;
-  if (index > next_ && index - next_ <= kReadAheadInsteadOfSeek) {
+  if (next_ >= 0 && index > next_ && index - next_ <= kReadAheadInsteadOfSeek) {
     while (next_ < index) {
       if (!capture_.grab()) break;
       ++next_;
@@ -77,8 +77,7 @@ cv::Mat VideoSource::frame(int index) {
   seekTo(index);
   cv::Mat image;
   if (!capture_.read(image) || image.empty()) {
-    const int found = index;
-    info_.frameCount = std::min(info_.frameCount, found);
+    info_.frameCount = std::min(info_.frameCount, index);
     next_ = -1;  // unknown: the next request seeks
     throwBadData(info_.file, "frame " + std::to_string(index),
                  "the stream ends before this frame (the container announced more frames)");

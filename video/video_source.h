@@ -43,7 +43,7 @@ class VideoSource {
 
   cv::VideoCapture capture_;
   VideoInfo info_;
-  int next_ = 0;  // the frame the next read() returns
+  int next_ = 0;  // the frame the next read() returns; −1 unknown (after a failed read)
 };
 
 // Frames as 8-bit grey, the tracker's input.

@@ -148,8 +148,7 @@ int runTrack(const TrackArgs& a) {
                  {"frames", frames},
                  {"keyframes", keys.keyframes.size()},
                  {"seconds", seconds},
-                 {"mean_confidence", track.confidence.mean()},
-                 {"warnings", track.warnings}};
+                 {"mean_confidence", track.confidence.mean()}};
   std::optional<Eigen::MatrixXd> referencePx;
   if (!a.compare.empty()) {
     KeypointOptions k;

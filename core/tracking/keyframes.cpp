@@ -54,6 +54,11 @@ Keyframe parseKeyframe(const json& entry, const std::string& name, std::size_t p
   return k;
 }
 
+void sortByFrame(std::vector<Keyframe>& keyframes) {
+  std::sort(keyframes.begin(), keyframes.end(),
+            [](const Keyframe& a, const Keyframe& b) { return a.frame < b.frame; });
+}
+
 bool hasAJoint(const Keyframe& k) { return !k.jointsPx.array().isNaN().all(); }
 
 }  // namespace
@@ -87,8 +92,7 @@ Keyframes parseKeyframes(const std::string& text, const std::string& name) {
                      "frame " + std::to_string(k.frame) + " is marked twice");
     out.keyframes.push_back(std::move(k));
   }
-  std::sort(out.keyframes.begin(), out.keyframes.end(),
-            [](const Keyframe& a, const Keyframe& b) { return a.frame < b.frame; });
+  sortByFrame(out.keyframes);
   if (std::none_of(out.keyframes.begin(), out.keyframes.end(), hasAJoint))
     throwBadData(name, "", "no keyframe has a marked joint");
   return out;
@@ -127,7 +131,7 @@ Keyframes keyframesFromTrack(const Eigen::Ref<const Eigen::MatrixXd>& jointsPx,
     throw Error(ErrorKind::BadArgument, video, "", "a 2D track has 30 columns");
   Keyframes out;
   out.video = video;
-  for (const int f : frames) {
+  for (const int f : std::set<int>(frames.begin(), frames.end())) {  // in order, each once
     if (f < 0 || f >= jointsPx.rows())
       throw Error(ErrorKind::BadArgument, video, "frame " + std::to_string(f),
                   "outside the track's frames 0-" + std::to_string(jointsPx.rows() - 1));
@@ -137,8 +141,6 @@ Keyframes keyframesFromTrack(const Eigen::Ref<const Eigen::MatrixXd>& jointsPx,
                   "has no joint to start from");
     out.keyframes.push_back(std::move(k));
   }
-  std::sort(out.keyframes.begin(), out.keyframes.end(),
-            [](const Keyframe& a, const Keyframe& b) { return a.frame < b.frame; });
   return out;
 }
 

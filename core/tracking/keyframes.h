@@ -38,7 +38,7 @@ std::string formatKeyframes(const Keyframes& keyframes);
 
 // Keyframes from a 2D track (T × 30 pixels, NaN = missing) at the given frames, e.g. a
 // pose estimator's detections (keypoint_trial.h). Error(BadArgument) for a frame outside
-// the track or one with no joint in it.
+// the track or one with no joint in it; a frame given twice is one keyframe.
 Keyframes keyframesFromTrack(const Eigen::Ref<const Eigen::MatrixXd>& jointsPx,
                              const std::vector<int>& frames, const std::string& video);
 
