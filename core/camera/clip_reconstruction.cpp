@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "core/engine/fourier.h"
 #include "core/engine/projection.h"
@@ -31,11 +32,17 @@ std::array<double, kJointCount> residualRms(const Eigen::MatrixXd& reprojected, 
 
 ClipReconstruction reconstructKeypointClip(const EigenwalkerModel& model, const std::filesystem::path& input,
                                            const KeypointOptions& keypointOptions, CameraFitOptions fitOptions) {
+  if (fitOptions.file.empty()) fitOptions.file = input.string();
+  return reconstructKeypointTrial(model, readKeypointTrial(input, keypointOptions), std::move(fitOptions));
+}
+
+ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, KeypointTrial trial,
+                                            CameraFitOptions fitOptions) {
   ClipReconstruction c;
-  c.trial = readKeypointTrial(input, keypointOptions);
+  c.trial = std::move(trial);
   c.gait = imageGaitCycles(c.trial);
   fitOptions.strideHzHint = c.gait.strideHz;
-  if (fitOptions.file.empty()) fitOptions.file = input.string();
+  if (fitOptions.file.empty()) fitOptions.file = c.trial.file;
   c.fit = reconstructUnknownCamera(model, c.trial.jointsPx, c.trial.rateHz, fitOptions);
   c.timesS = frameTimes(c.trial.frameCount, c.trial.rateHz);
   c.framesMm = synthesizeFrames(c.fit.w, c.fit.omegaRadS, c.fit.phaseRad, c.timesS);

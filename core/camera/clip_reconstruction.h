@@ -30,6 +30,9 @@ struct ClipReconstruction {
 // throw (typed errors naming the file).
 ClipReconstruction reconstructKeypointClip(const EigenwalkerModel& model, const std::filesystem::path& input,
                                            const KeypointOptions& keypointOptions, CameraFitOptions fitOptions);
+// The same from a trial already read (a joint tracker's, core/keypoints trialFromJoints).
+ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, KeypointTrial trial,
+                                            CameraFitOptions fitOptions);
 
 // Where the walker's canonical origin stands at time t relative to the camera's look-at point
 // (docs/CAMERA.md): (0, y0 + v t, −h); orthography has no y0 or h (zero).

@@ -232,6 +232,45 @@ const KeypointLayout& chooseLayout(const KeypointFrames& frames, const PersonTra
   return *best;
 }
 
+// Which joints the trial sees and how often; a warning for those never seen; Error(BadData)
+// naming the file when the walk's minimum joints are among them.
+void checkSeenJoints(KeypointTrial& t, const KeypointOptions& options) {
+  std::vector<std::string> unseen;
+  for (int j = 0; j < kJointCount; ++j) {
+    const auto col = t.jointsPx.col(2 * j);
+    const auto seen = static_cast<double>(col.array().isFinite().count());
+    t.seenShare[static_cast<std::size_t>(j)] = t.frameCount ? seen / t.frameCount : 0.0;
+    t.missing[static_cast<std::size_t>(j)] = seen == 0;
+    t.derived[static_cast<std::size_t>(j)] = !t.layout->derived[static_cast<std::size_t>(j)].empty();
+    if (seen == 0) unseen.emplace_back(jointName(static_cast<Joint>(j)));
+  }
+  if (!unseen.empty()) {
+    std::string list;
+    for (const auto& u : unseen) list += (list.empty() ? "" : ", ") + u;
+    t.warnings.push_back("never seen above confidence " + std::to_string(options.minConfidence).substr(0, 4) +
+                         ": " + list + " (to be estimated from a model)");
+  }
+  for (Joint j : {Joint::Pelvis, Joint::RKnee, Joint::LKnee, Joint::RAnkle, Joint::LAnkle}) {
+    if (t.missing[static_cast<std::size_t>(index(j))])
+      throw Error(ErrorKind::BadData, t.file, "",
+                  std::string(jointName(j)) + " of " + t.chosenReason.substr(0, t.chosenReason.find(':')) +
+                      " is never seen above confidence " + std::to_string(options.minConfidence).substr(0, 4) +
+                      ": a walk needs pelvis, knees and ankles");
+  }
+}
+
+// The 15 joints as their own layout, each its own point (a tracker's output).
+std::shared_ptr<const KeypointLayout> jointLayout() {
+  auto l = std::make_shared<KeypointLayout>();
+  l->name = "15 joints (SPEC §1)";
+  l->about = "the joints themselves, as a tracker follows them";
+  for (int j = 0; j < kJointCount; ++j) {
+    l->points.emplace_back(jointName(static_cast<Joint>(j)));
+    l->joints[static_cast<std::size_t>(j)] = {{j}};
+  }
+  return l;
+}
+
 }  // namespace
 
 // [SECTION] Public API -------------------------------------------------------------------------
@@ -313,33 +352,45 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
   const PersonTrack& walker = t.people[static_cast<std::size_t>(t.chosen)];
   t.layout = &chooseLayout(frames, walker, options, t.layoutSource, t.warnings, t.builtLayout);
   t.jointsPx = personJoints(*t.layout, frames, walker, options.minConfidence);
-  std::vector<std::string> unseen;
-  for (int j = 0; j < kJointCount; ++j) {
-    const auto col = t.jointsPx.col(2 * j);
-    const auto seen = static_cast<double>(col.array().isFinite().count());
-    t.seenShare[static_cast<std::size_t>(j)] = t.frameCount ? seen / t.frameCount : 0.0;
-    t.missing[static_cast<std::size_t>(j)] = seen == 0;
-    t.derived[static_cast<std::size_t>(j)] = !t.layout->derived[static_cast<std::size_t>(j)].empty();
-    if (seen == 0) unseen.emplace_back(jointName(static_cast<Joint>(j)));
-  }
-  if (!unseen.empty()) {
-    std::string list;
-    for (const auto& u : unseen) list += (list.empty() ? "" : ", ") + u;
-    t.warnings.push_back("never seen above confidence " + std::to_string(options.minConfidence).substr(0, 4) +
-                         ": " + list + " (to be estimated from a model)");
-  }
-  for (Joint j : {Joint::Pelvis, Joint::RKnee, Joint::LKnee, Joint::RAnkle, Joint::LAnkle}) {
-    if (t.missing[static_cast<std::size_t>(index(j))])
-      throw Error(ErrorKind::BadData, frames.file, "",
-                  std::string(jointName(j)) + " of " + t.chosenReason.substr(0, t.chosenReason.find(':')) +
-                      " is never seen above confidence " + std::to_string(options.minConfidence).substr(0, 4) +
-                      ": a walk needs pelvis, knees and ankles");
-  }
+  checkSeenJoints(t, options);
   return t;
 }
 
 KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options) {
   return cleanKeypoints(readKeypointFrames(path, options.imageSize), options);
+}
+
+KeypointTrial trialFromJoints(const Eigen::MatrixXd& jointsPx, const Eigen::MatrixXd& confidence,
+                              const std::string& file, const std::string& format, const KeypointOptions& options) {
+  if (jointsPx.cols() != 2 * kJointCount || confidence.rows() != jointsPx.rows() || confidence.cols() != kJointCount)
+    throw Error(ErrorKind::BadArgument, file, "", "a track needs frames × 30 pixels and frames × 15 confidences");
+  if (jointsPx.rows() > kMaxKeypointFrames)
+    throw Error(ErrorKind::BadArgument, file, "", "more than " + std::to_string(kMaxKeypointFrames) + " frames");
+  if (!options.fps) throw Error(ErrorKind::BadArgument, file, "", "a track needs its frame rate");
+  KeypointTrial t;
+  t.file = file;
+  t.format = format;
+  t.rateHz = checkedFileRateHz(*options.fps, file, "frame rate");
+  t.rateAssumed = false;
+  t.frameCount = static_cast<int>(jointsPx.rows());
+  t.builtLayout = jointLayout();
+  t.layout = t.builtLayout.get();
+  t.layoutSource = "the tracker's own joints";
+  t.jointsPx = jointsPx;
+  PersonTrack person;
+  for (Eigen::Index f = 0; f < jointsPx.rows(); ++f) {
+    for (int j = 0; j < kJointCount; ++j) {
+      if (confidence(f, j) >= options.minConfidence && std::isfinite(confidence(f, j))) continue;
+      t.jointsPx(f, 2 * j) = t.jointsPx(f, 2 * j + 1) = std::numeric_limits<double>::quiet_NaN();
+    }
+    if (t.jointsPx.row(f).array().isFinite().any()) person.frames.push_back(static_cast<int>(f));
+  }
+  person.detection.assign(person.frames.size(), 0);
+  t.maxPeople = person.frames.empty() ? 0 : 1;
+  t.people.push_back(std::move(person));
+  t.chosenReason = "the tracked person";
+  checkSeenJoints(t, options);
+  return t;
 }
 
 }  // namespace ew

@@ -71,4 +71,12 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
 
 KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options = {});
 
+// A trial from 15 joints already in SPEC §1 order (a joint tracker's output, one person):
+// a point whose confidence is below options.minConfidence is missing, as in a file. `file`
+// and `format` name the source in errors and captions; the rate is options.fps (required).
+// Throws Error(BadData) naming `file` as cleanKeypoints does when the walk's minimum joints
+// are never seen, Error(BadArgument) for a rate missing or out of bounds or sizes that differ.
+KeypointTrial trialFromJoints(const Eigen::MatrixXd& jointsPx, const Eigen::MatrixXd& confidence,
+                              const std::string& file, const std::string& format, const KeypointOptions& options);
+
 }  // namespace ew

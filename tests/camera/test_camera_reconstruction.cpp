@@ -15,7 +15,9 @@
 #include "core/common/skeleton.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
+#include "core/keypoints/keypoint_trial.h"
 #include "tests/camera/filmed_walk.h"
+#include "tests/common/error_matchers.h"
 
 namespace ew {
 namespace {
@@ -199,6 +201,43 @@ TEST(CameraReconstruction, DetectorGlitchesAreRejected) {
   expectSameWalk(fit, s);
   // Clean data: nothing rejected.
   EXPECT_EQ(reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o).outlierSamples, 0);
+}
+
+// A joint tracker's output (15 joints and a confidence each, no file): points the tracker
+// is unsure of are left out as a file's would be, and the camera comes out as from the
+// detector's file; a track that never holds the legs is refused naming its source.
+TEST(CameraReconstruction, ATrackedClipIsFittedLikeAFile) {
+  const Scene s = filmed(test::crossingPinhole(1500, 5.0));
+  MatrixXd confidence = MatrixXd::Constant(s.px.rows(), kJointCount, 0.9);
+  MatrixXd px = s.px;
+  for (Eigen::Index f = 0; f < px.rows(); f += 5) {
+    // Every fifth frame the left wrist is lost, far off where the tracker last guessed.
+    confidence(f, index(Joint::LWrist)) = 0.1;
+    px(f, 2 * index(Joint::LWrist)) += 400.0;
+  }
+  KeypointOptions k;
+  k.fps = 30.0;
+  const KeypointTrial trial = trialFromJoints(px, confidence, "walk.mp4", "tracked video", k);
+  EXPECT_EQ(trial.frameCount, 150);
+  EXPECT_EQ(trial.layout->points.size(), 15u);
+  EXPECT_NEAR(trial.seenShare[static_cast<std::size_t>(index(Joint::LWrist))], 0.8, 1e-12);
+  EXPECT_TRUE(std::isnan(trial.jointsPx(0, 2 * index(Joint::LWrist))));
+  CameraFitOptions o = lsq();
+  o.focalPx = 1500;
+  const ClipReconstruction c = reconstructKeypointTrial(defaultRealModel(), trial, o);
+  EXPECT_NEAR(c.fit.camera.alphaDeg, 40, 1e-3 * 40);
+  EXPECT_NEAR(c.fit.camera.elevationDeg, 12, 1e-3 * 12);
+  EXPECT_EQ(c.fit.outlierSamples, 0);
+  expectSameWalk(c.fit, s);
+
+  confidence.col(index(Joint::LAnkle)).setZero();
+  EXPECT_TRUE(test::throwsError([&] { trialFromJoints(px, confidence, "walk.mp4", "tracked video", k); },
+                                ErrorKind::BadData, {"walk.mp4", "l_ankle", "never seen"}));
+  EXPECT_TRUE(test::throwsError([&] { trialFromJoints(px, confidence, "walk.mp4", "tracked video", {}); },
+                                ErrorKind::BadArgument, {"walk.mp4", "frame rate"}));
+  EXPECT_TRUE(test::throwsError(
+      [&] { trialFromJoints(px.leftCols(10), confidence, "walk.mp4", "tracked video", k); },
+      ErrorKind::BadArgument, {"walk.mp4"}));
 }
 
 // The camera's centre (what the viewer draws): every point on the line from it through the

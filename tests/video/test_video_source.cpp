@@ -1,4 +1,4 @@
-// Reading footage (video/video_source.h): frame-accurate access in any order, checked
+// Reading footage (video/video_source.h, and video/frame_cache.h ahead of a viewer): frame-accurate access in any order, checked
 // against a sequential decode, on a clip the test writes and on the shared real clips;
 // files that are not videos, or end early, give errors naming the file.
 
@@ -10,6 +10,7 @@
 
 #include "tests/common/error_matchers.h"
 #include "tests/common/test_support.h"
+#include "video/frame_cache.h"
 #include "video/video_source.h"
 
 namespace ew {
@@ -109,6 +110,30 @@ TEST(VideoSource, AClipCutShortEndsWithAnErrorAtTheFirstMissingFrame) {
   EXPECT_GE(decoded, 20);
   EXPECT_LE(decoded, 40);
   EXPECT_LE(video.info().frameCount, std::max(decoded, announced));
+}
+
+TEST(FrameCache, FramesComeBackRightWithinTheBudget) {
+  const fs::path file = barClip(test::makeTempDir("video_cache"), 60);
+  const std::size_t frameBytes = 320 * 240 * 3;
+  FrameCache cache(file, 5 * frameBytes, 8);
+  EXPECT_EQ(cache.frameCount(), 60);
+  // Scrubbing forward, then back, then jumping: every frame is the one asked for, and the
+  // cache never holds more than its budget.
+  for (const int k : {0, 1, 2, 3, 10, 11, 59, 58, 30, 0, 45}) {
+    const auto f = cache.waitFrame(k);
+    ASSERT_TRUE(f) << "frame " << k << ": " << cache.error();
+    EXPECT_EQ(barColumn(*f), k) << "frame " << k;
+    EXPECT_LE(cache.bytesHeld(), 5 * frameBytes) << "after frame " << k;
+  }
+  // Asking does not block: a frame far from the last one asked for is not there yet (the
+  // worker cannot add it while frame() holds the lock), then comes.
+  EXPECT_FALSE(cache.frame(20));
+  EXPECT_TRUE(cache.waitFrame(20));
+  // Outside the clip: the last frame.
+  const auto end = cache.waitFrame(1000);
+  ASSERT_TRUE(end);
+  EXPECT_EQ(barColumn(*end), 59);
+  EXPECT_EQ(cache.error(), "");
 }
 
 }  // namespace
