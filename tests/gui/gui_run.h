@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <functional>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -79,7 +80,10 @@ class GuiTest : public ::testing::Test {
     dir = makeTempDir(::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name());
   }
   void TearDown() override {
-    if (!HasFailure()) std::filesystem::remove_all(dir);
+    // EIGENWALKER_KEEP_GUI_OUTPUT=1 keeps it after a pass too, to look at the screenshots.
+    const char* keep = std::getenv("EIGENWALKER_KEEP_GUI_OUTPUT");
+    if (!HasFailure() && !(keep && *keep == '1')) std::filesystem::remove_all(dir);
+    else std::cout << "viewer output kept in " << dir.string() << "\n";
   }
   // An image the viewer wrote into `dir` (empty, with a failure, when missing).
   cv::Mat load(const std::string& name) const {

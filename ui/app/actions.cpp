@@ -23,6 +23,7 @@
 #include "ui/app/state_json.h"
 #include "ui/app/theme.h"
 #include "ui/app/tour.h"
+#include "ui/app/video_poll.h"
 
 namespace ew::ui::actions {
 
@@ -343,6 +344,8 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& c) {
              c->rec.trial.layout->name + "): " + buf);
   for (const auto& w : c->rec.trial.warnings) s.log.warning(w);
   if (s.jobs.lastError.starts_with("Clip fit failed")) s.jobs.lastError.clear();
+  // A video's track: the fit shows the frame the user is at.
+  if (c->settings.tracked && s.video) setVideoFrame(s, s.video->frame);
   if (!newClip) return;
   dismissNotice(s);
   frameClipScene(s, *c);
@@ -384,6 +387,49 @@ std::vector<std::filesystem::path> openClips(AppState& s, std::vector<std::files
     } else {
       openClip(s, p);
       opened = true;
+    }
+  }
+  return rest;
+}
+
+// Opens the first video among `paths` and reads the keyframe files given with it into it
+// (a keyframe file alone goes to the video open, or to the video it names beside it);
+// returns the other paths. A video or keyframe file that cannot be read is a failed open.
+std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::filesystem::path> paths,
+                                              std::vector<std::string>& refused) {
+  std::vector<std::filesystem::path> rest, keyframeFiles;
+  bool opened = false;
+  for (auto& p : paths) {
+    if (isKeyframeFile(p)) {
+      keyframeFiles.push_back(std::move(p));
+    } else if (!isVideoFile(p)) {
+      rest.push_back(std::move(p));
+    } else if (opened) {
+      refused.push_back(p.string() + ": one video at a time");
+    } else {
+      opened = true;
+      try {
+        openVideo(s, p);
+      } catch (const std::exception& e) {
+        ++s.jobs.failures;
+        reportOpenError(s, {p}, e.what());
+        return rest;
+      }
+    }
+  }
+  for (const auto& k : keyframeFiles) {
+    try {
+      if (!s.video) {
+        const Keyframes named = readKeyframes(k);
+        const auto beside = k.parent_path() / named.video;
+        if (named.video.empty() || !std::filesystem::exists(beside))
+          throw std::invalid_argument(k.string() + ": open the video the keyframes were marked on first");
+        openVideo(s, beside);
+      }
+      loadKeyframes(s, k);
+    } catch (const std::exception& e) {
+      ++s.jobs.failures;
+      reportOpenError(s, {k}, e.what());
     }
   }
   return rest;
@@ -432,10 +478,11 @@ void open(AppState& s, std::vector<std::filesystem::path> paths) {
       std::all_of(paths.begin(), paths.end(), [](const auto& p) { return isModelFile(p); });
   request.paths = openModelFiles(s, std::move(paths));
   const bool hadPaths = !request.paths.empty();
+  request.paths = openVideos(s, std::move(request.paths), request.refused);
   request.paths = openClips(s, std::move(request.paths), request.refused);
   for (const auto& r : request.refused) s.log.warning("skipped: " + r);
   if (hadPaths && request.paths.empty()) {
-    // Only a clip: the synthetic walkers load too when nothing is, for the other modes.
+    // Only a clip or a video: the synthetic walkers load too when nothing is, for the other modes.
     if (!s.doc.population && !s.jobs.busy()) requestOpen(s, OpenRequest{});
     return;
   }
@@ -498,6 +545,7 @@ void pollJobs(AppState& s) {
       clipFailed(s, outcome->error);
     }
   }
+  pollVideo(s);
   try {
     startClipFit(s);
   } catch (const std::exception& e) {

@@ -146,6 +146,36 @@ void closeClip(AppState& s);
 // Shows the clip's frame `frame` (from 1, as the 2D view's caption counts) and pauses.
 void setClipFrame(AppState& s, int frame);
 
+// [SECTION] Video (ui/app/video.h, docs/VIEWER.md "Video")
+// Opens a video in Mode::Clip (closing the video and clip shown before): its frames show in
+// the 2D view. Error (std::invalid_argument with the file and reason) when it cannot be read.
+void openVideo(AppState& s, const std::filesystem::path& path);
+// Reads a keyframe file (core/tracking/keyframes.h) into the open video's keyframes (one
+// edit: undo takes it back). Throws when no video is open or the file is bad.
+void loadKeyframes(AppState& s, const std::filesystem::path& path);
+void saveKeyframes(AppState& s, const std::filesystem::path& path);
+// The frame shown (0-based, clamped to the video); pauses a tracked clip's playback there.
+void setVideoFrame(AppState& s, int frame);
+// Guided marking on the frame shown: clicks place the joint asked for, then the next.
+void startMarking(AppState& s);
+void stopMarking(AppState& s);
+void skipMarkedJoint(AppState& s);  // the joint asked for is not visible: ask for the next
+// Places (or moves) a joint on the frame shown, in video pixels (x right, y down). A frame
+// that is no keyframe yet becomes one, starting from the track's confident joints there.
+// `newEdit` false: part of the edit before (a drag), not a step of its own for undo.
+void markJoint(AppState& s, Joint joint, double xPx, double yPx, bool newEdit = true);
+void removeKeyframe(AppState& s, int frame);
+void undoKeyframes(AppState& s);
+void redoKeyframes(AppState& s);
+// The frames to track, inclusive (0-based; last -1: the video's end).
+void setTrackRange(AppState& s, int first, int last);
+// Tracks the range from the keyframes on a worker; when done the track is fitted as a clip.
+void startTracking(AppState& s);
+void cancelTracking(AppState& s);
+void closeVideo(AppState& s);
+// The video frame the 2D view shows: the tracked clip's playback frame, else the scrubbed one.
+int shownVideoFrame(const AppState& s);
+
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).
 int coefficientCount(const AppState& s);
 // The stride frequency driving playback (selected walker, or the population mean).

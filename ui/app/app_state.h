@@ -17,6 +17,7 @@
 #include "ui/app/document.h"
 #include "ui/app/export.h"
 #include "ui/app/log.h"
+#include "ui/app/video.h"
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/coefficients_panel.h"
 #include "ui/panels/controls_panel.h"
@@ -84,6 +85,7 @@ struct Jobs {
   BackgroundJob<std::shared_ptr<const AnalysisResult>> analysis;  // the analysis panel's curves
   BackgroundJob<std::shared_ptr<const DataSummary>> summary;      // the Data window's table
   BackgroundJob<std::shared_ptr<const ClipResult>> clip;           // a keypoint clip's camera fit
+  BackgroundJob<std::shared_ptr<const TrackedVideo>> track;  // joints tracked through a video
   ClipSettings clipRunning;                  // the settings of the running clip fit
   std::optional<ClipSettings> clipFailed;    // not retried until the settings change
   std::string clipError;                     // why that fit failed (the controls show it)
@@ -101,7 +103,7 @@ struct Jobs {
 
   bool busy() const {
     return load.running() || models.running() || analysis.running() || summary.running() ||
-           clip.running() || pendingOpen.has_value();
+           clip.running() || track.running() || pendingOpen.has_value();
   }
 };
 
@@ -133,7 +135,9 @@ struct Panels {
 
 struct AppState {
   // Loading, model building or an export under way (scripts wait for it).
-  bool busy() const { return jobs.busy() || exports.busy(); }
+  bool busy() const {
+    return jobs.busy() || exports.busy() || (video && video->frames && video->frames->pending());
+  }
 
   Document doc;
   ViewState view;
@@ -143,6 +147,7 @@ struct AppState {
   AnalysisCache analysis;
   std::shared_ptr<const DataSummary> dataSummary;  // of the current generation, once computed
   std::shared_ptr<const ClipResult> clip;          // the last clip fit that succeeded
+  std::optional<VideoSession> video;               // the video open (Mode::Clip shows it)
   Log log;
   Fonts fonts;
   Panels panels;

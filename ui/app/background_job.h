@@ -41,6 +41,7 @@ class JobProgress {
     return what_;
   }
   void cancel() { cancelled_ = true; }
+  bool cancelled() const { return cancelled_; }
 
  private:
   mutable std::mutex mutex_;
@@ -75,6 +76,11 @@ class BackgroundJob {
   }
 
   bool running() const { return future_.valid(); }
+  // Asks the work to stop at its next progress report (poll() then gives its error).
+  void cancel() {
+    if (progress_) progress_->cancel();
+  }
+  bool cancelled() const { return progress_ && progress_->cancelled(); }
   const std::string& title() const { return title_; }
   float fraction() const { return progress_ ? progress_->fraction() : 0.0f; }
   std::string what() const { return progress_ ? progress_->what() : std::string(); }

@@ -38,7 +38,10 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   o.focalPx = settings.focalPx;
   o.alphaDeg = settings.alphaDeg;
   o.elevationDeg = settings.elevationDeg;
-  ClipResult r{settings, model, reconstructKeypointClip(*model.model, settings.path, k, o), 0.0, {}, {}};
+  ClipResult r{settings, model,
+               settings.tracked ? reconstructKeypointTrial(*model.model, *settings.tracked, o)
+                                : reconstructKeypointClip(*model.model, settings.path, k, o),
+               0.0, {}, {}};
   extend(r.keypointBounds, r.rec.trial.jointsPx);
   r.shownBounds = r.keypointBounds;
   extend(r.shownBounds, r.rec.reprojectedPx);

@@ -21,6 +21,9 @@ struct ClipSettings {
   std::optional<double> focalPx;   // known focal length (else estimated)
   std::optional<double> alphaDeg;  // azimuth held at this value (else estimated)
   std::optional<double> elevationDeg;
+  // A video's tracked joints (ui/app/video.h) instead of a file: `path` is the video; layout,
+  // fps and person do not apply.
+  std::shared_ptr<const KeypointTrial> tracked;
   bool operator==(const ClipSettings&) const = default;
 };
 

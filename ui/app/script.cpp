@@ -25,7 +25,9 @@ const std::set<std::string>& knownActions() {
       "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour",
       "drop",         "set_file_override", "reload", "export_data_summary", "export_state",
       "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame",
-      "set_engine"};
+      "set_engine", "video_frame", "mark_joints", "start_marking", "stop_marking", "skip_joint",
+      "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "track_video",
+      "close_video"};
   // clang-format on
   return names;
 }
@@ -96,6 +98,26 @@ std::vector<std::filesystem::path> pathList(const ScriptAction& a) {
         "expects a path, a list of paths, or null (the default population)");
   }
   return paths;
+}
+
+int wholeNumber(const ScriptAction& a) {
+  const double v = number(a);
+  if (v != std::floor(v) || std::abs(v) > 1e9) throw std::invalid_argument("expects a whole number");
+  return static_cast<int>(v);
+}
+
+// {"mark_joints": {"head": [x, y], …}}: each joint placed on the frame shown, as clicks would
+// (video pixels, x right, y down), each an edit of its own.
+void markJoints(AppState& s, const ScriptAction& a) {
+  if (!a.argument.is_object() || a.argument.empty())
+    throw std::invalid_argument(R"(expects {"joint name": [x, y], …})");
+  for (const auto& [name, xy] : a.argument.items()) {
+    const auto joint = jointFromName(name);
+    if (!joint) throw std::invalid_argument("unknown joint \"" + name + "\"");
+    if (!xy.is_array() || xy.size() != 2 || !xy[0].is_number() || !xy[1].is_number())
+      throw std::invalid_argument(name + ": expects [x, y] in pixels");
+    actions::markJoint(s, *joint, xy[0].get<double>(), xy[1].get<double>());
+  }
 }
 
 // {"set_clip": {"focal_px": F | null, "azimuth_deg": A | null, "elevation_deg": E | null,
@@ -212,6 +234,26 @@ void applyAction(AppState& s, const ScriptAction& a) {
     const double v = number(a);
     if (v != std::floor(v)) throw std::invalid_argument("expects a whole frame number (from 1)");
     actions::setClipFrame(s, static_cast<int>(v));
+  } else if (n == "video_frame") {
+    actions::setVideoFrame(s, wholeNumber(a));
+  } else if (n == "mark_joints") {
+    markJoints(s, a);
+  } else if (n == "start_marking") {
+    actions::startMarking(s);
+  } else if (n == "stop_marking") {
+    actions::stopMarking(s);
+  } else if (n == "skip_joint") {
+    actions::skipMarkedJoint(s);
+  } else if (n == "undo_keyframes") {
+    actions::undoKeyframes(s);
+  } else if (n == "redo_keyframes") {
+    actions::redoKeyframes(s);
+  } else if (n == "remove_keyframe") {
+    actions::removeKeyframe(s, wholeNumber(a));
+  } else if (n == "save_keyframes") {
+    actions::saveKeyframes(s, text(a));
+  } else if (n == "close_video") {
+    actions::closeVideo(s);
   } else if (n == "set_angle") {
     actions::setAngle(s, number(a));
   } else if (n == "set_method") {
@@ -318,6 +360,17 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   const auto& n = a.name;
   if (n == "expect_failure") {
     applyExpectingFailure(s, a);
+  } else if (n == "track_video") {
+    // {"first": F, "last": L} (L -1: the end): tracked and fitted in the background; a track
+    // or fit that fails fails the script like a failed open.
+    const auto& arg = a.argument;
+    if (!arg.is_object() || !arg.contains("first") || !arg["first"].is_number_integer() || !arg.contains("last") ||
+        !arg["last"].is_number_integer())
+      throw std::invalid_argument(R"(expects {"first": F, "last": L})");
+    actions::setTrackRange(s, arg["first"].get<int>(), arg["last"].get<int>());
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = true;
+    actions::startTracking(s);
   } else if (n == "set_clip") {
     // The refit runs in the background: its failure fails the script like a failed open.
     applyAction(s, a);

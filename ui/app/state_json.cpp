@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/held_model.h"
 #include "ui/app/theme.h"
@@ -145,6 +146,38 @@ nlohmann::json clipJson(const AppState& s) {
   return j;
 }
 
+// The video open: its frames, the keyframes marked and the last track.
+nlohmann::json videoJson(const AppState& s) {
+  if (!s.video) return nullptr;
+  const VideoSession& v = *s.video;
+  const VideoInfo& i = v.frames->info();
+  nlohmann::json keyframes = nlohmann::json::array();
+  for (const auto& k : v.keyframes.keyframes)
+    keyframes.push_back({{"frame", k.frame}, {"joints", k.jointsPx.array().isFinite().count() / 2}});
+  nlohmann::json j = {{"path", v.path.string()},
+                      {"width_px", i.widthPx},
+                      {"height_px", i.heightPx},
+                      {"fps", i.fps},
+                      {"frames", v.frameCount()},
+                      {"frame", v.frame},
+                      {"shown_frame", actions::shownVideoFrame(s)},
+                      {"marking", v.marking},
+                      {"mark_step", v.markStep},
+                      {"keyframes", keyframes},
+                      {"undo_steps", v.undo.size()},
+                      {"redo_steps", v.redo.size()},
+                      {"cache_bytes", v.frames->bytesHeld()},
+                      {"track_error", v.trackError}};
+  if (v.tracked) {
+    const auto& t = *v.tracked;
+    j["track"] = {{"first_frame", t.track.firstFrame},
+                  {"last_frame", t.lastFrame()},
+                  {"seconds", t.seconds},
+                  {"mean_confidence", t.track.confidence.mean()}};
+  }
+  return j;
+}
+
 const char* modeName(Mode m) {
   return m == Mode::Reconstruct ? "reconstruct" : m == Mode::Explore ? "explore" : "clip";
 }
@@ -166,6 +199,7 @@ nlohmann::json stateJson(const AppState& s) {
   j["reconstruction_error"] = s.derived.error();
   j["mode"] = modeName(d.mode);
   j["clip"] = clipJson(s);
+  j["video"] = videoJson(s);
   j["angle_deg"] = d.recon.alphaDeg;
   j["method"] = d.recon.estimator == Estimator::Lsq ? "lsq" : "map";
   j["engine"] = engineName(d.recon.engine);

@@ -154,7 +154,25 @@ void Program::set(const char* name, const glm::mat4& v) {
 
 // [SECTION] Textures and render targets
 
+void Texture2D::uploadBgr(int width, int height, const unsigned char* bgr, std::size_t strideBytes) {
+  if (!handle_ || width != width_ || height != height_) allocate(width, height);
+  glBindTexture(GL_TEXTURE_2D, handle_.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, static_cast<GLint>(strideBytes / 3));
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_BGR, GL_UNSIGNED_BYTE, bgr);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void Texture2D::bind(int unit) const {
+  glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+  glBindTexture(GL_TEXTURE_2D, handle_.id());
+}
+
 void Texture2D::allocate(int width, int height) {
+  width_ = width;
+  height_ = height;
   if (!handle_) {
     GLuint id = 0;
     glGenTextures(1, &id);

@@ -133,12 +133,19 @@ class Texture2D {
   Texture2D() = default;
   // RGBA8, linear filtering, clamped; contents undefined.
   void allocate(int width, int height);
+  // Replaces the contents with 8-bit BGR rows (`strideBytes` apart, top row first), the
+  // storage reallocated when the size changes.
+  void uploadBgr(int width, int height, const unsigned char* bgr, std::size_t strideBytes);
+  void bind(int unit) const;
   GLuint id() const { return handle_.id(); }
+  int width() const { return width_; }
+  int height() const { return height_; }
   // For ImGui::Image.
   void* imguiId() const { return reinterpret_cast<void*>(static_cast<std::uintptr_t>(id())); }
 
  private:
   Handle<deleteTexture> handle_;
+  int width_ = 0, height_ = 0;
 };
 
 // An offscreen target: a multisampled colour (+ depth) framebuffer that is resolved into

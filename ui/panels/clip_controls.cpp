@@ -83,10 +83,21 @@ void heldValue(AppState& s, const char* id, const char* label, std::optional<dou
 
 }  // namespace
 
+// The file's choices (layout, rate, person), for a pose estimator's clip.
+static void drawClipSource(AppState& s, const ClipSettings& c, const ClipResult* r);
+// The camera values the fit may hold, and how the last fit went.
+static void drawCameraHolds(AppState& s, const ClipSettings& c, const ClipResult* r);
+
 void drawClipControls(AppState& s) {
   if (!s.doc.clip) return;
   const ClipSettings c = *s.doc.clip;
   const ClipResult* r = s.clip.get();
+  if (!c.tracked) drawClipSource(s, c, r);
+  drawCameraHolds(s, c, r);
+  if (!c.tracked && ImGui::Button("Close the clip")) actions::closeClip(s);
+}
+
+static void drawClipSource(AppState& s, const ClipSettings& c, const ClipResult* r) {
   sectionTitle("Keypoint clip");
   ImGui::TextUnformatted(c.path.filename().string().c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.path.string().c_str());
@@ -104,7 +115,9 @@ void drawClipControls(AppState& s) {
     apply(s, [&] { actions::setClipFps(s, fps); });
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("The video's frame rate (JSON stores none; 0 = the file's, else 30)");
   if (r) personCombo(s, c, *r);
+}
 
+static void drawCameraHolds(AppState& s, const ClipSettings& c, const ClipResult* r) {
   sectionTitle("Camera (tick to hold a value)");
   const WalkCamera* cam = r ? &r->rec.fit.camera : nullptr;
   if (!cam || cam->model == CameraModel::Pinhole) {
@@ -128,7 +141,6 @@ void drawClipControls(AppState& s) {
   } else if (r) {
     ImGui::TextDisabled("fitted in %.0f ms", 1000.0 * r->seconds);
   }
-  if (ImGui::Button("Close the clip")) actions::closeClip(s);
 }
 
 }  // namespace ew::ui

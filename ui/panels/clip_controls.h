@@ -8,5 +8,8 @@ namespace ew::ui {
 struct AppState;
 
 void drawClipControls(AppState& s);
+// A video's part (ui/app/video.h): scrub, mark joints (guided, undo / redo), the frames to
+// track, Track with progress and Cancel, what the track gave (ui/panels/video_controls.cpp).
+void drawVideoControls(AppState& s, float scale);
 
 }  // namespace ew::ui

@@ -17,10 +17,11 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     if (ImGui::RadioButton("Reconstruct", &mode, 0)) actions::setMode(s, Mode::Reconstruct);
     ImGui::SameLine();
     if (ImGui::RadioButton("Explore gait space", &mode, 1)) actions::setMode(s, Mode::Explore);
-    if (doc.clip) {
-      if (ImGui::RadioButton("Keypoint clip", &mode, 2)) actions::setMode(s, Mode::Clip);
+    if (doc.clip || s.video) {
+      if (ImGui::RadioButton(s.video ? "Video" : "Keypoint clip", &mode, 2)) actions::setMode(s, Mode::Clip);
     }
     if (doc.mode == Mode::Clip) {
+      drawVideoControls(s, ctx.scale);
       drawClipControls(s);
       drawViewControls(s, ctx);
       ImGui::End();

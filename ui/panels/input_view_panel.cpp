@@ -158,7 +158,9 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
       target.ensure(static_cast<int>(size.x * fbScale.x), static_cast<int>(size.y * fbScale.y),
                     ctx.renderer.samples());
       lastImage = {p0, size};
-      if (s.doc.mode == Mode::Clip) {
+      if (s.doc.mode == Mode::Clip && s.video) {
+        drawVideoView(s, ctx, p0, size);
+      } else if (s.doc.mode == Mode::Clip) {
         drawClipView(s, ctx, p0, size);
       } else {
         drawWalkerView(s, ctx, p0, size);

@@ -32,6 +32,11 @@ struct InputViewPanel {
   void drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size);
   // Mode::Clip: the keypoint clip in image pixels (ui/panels/clip_view.h).
   void drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size);
+  // Mode::Clip with a video open: the footage, marks and track (ui/panels/video_view.h).
+  void drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size);
+  void handleVideoMouse(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size, int frame);
+
+  int dragJoint_ = -1;  // the keyframe joint being dragged (-1: none)
 };
 
 }  // namespace ew::ui

@@ -225,7 +225,9 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
                            errorScale, "depth error (RMS)", ctx.scale);
       }
       if (!drawn) {
-        const char* msg = clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : "the clip could not be fitted")
+        const char* msg = clipMode && s.video && !s.doc.clip
+                              ? (s.jobs.track.running() ? "tracking…" : "mark the walker's joints on one frame, then Track")
+                          : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : "the clip could not be fitted")
                           : s.jobs.busy() ? "building models…" : "nothing to show";
         const ImVec2 ts = ImGui::CalcTextSize(msg);
         dl->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y), IM_COL32(160, 168, 180, 255), msg);

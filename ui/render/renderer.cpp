@@ -23,7 +23,8 @@ Renderer::Renderer()
       floor_(loadProgram("floor")),
       sphere_(loadProgram("sphere")),
       tube_(loadProgram("tube")),
-      line_(loadProgram("line")) {
+      line_(loadProgram("line")),
+      image_(loadProgram("image")) {
   static_assert(sizeof(SphereInstance) == 8 * sizeof(float));
   static_assert(sizeof(TubeInstance) == 12 * sizeof(float));
   static_assert(sizeof(LineInstance) == 12 * sizeof(float));
@@ -84,6 +85,23 @@ void Renderer::drawLines(const std::vector<LineInstance>& items, const CameraMat
   gl::drawQuads(lineVao_, static_cast<int>(items.size()));
 }
 
+void Renderer::drawImage(const SceneImage& image, const CameraMatrices& camera) {
+  if (!image.shown()) return;
+  if (image.key != imageKey_ || imageTexture_.width() != image.width || imageTexture_.height() != image.height) {
+    imageTexture_.uploadBgr(image.width, image.height, image.bgr, image.strideBytes);
+    imageKey_ = image.key;
+  }
+  gl::apply({.depthTest = false, .depthWrite = false});
+  image_.use();
+  image_.set("uViewProj", camera.projection * camera.view);
+  image_.set("uLow", image.low);
+  image_.set("uHigh", image.high);
+  image_.set("uBrightness", image.brightness);
+  image_.set("uImage", 0);
+  imageTexture_.bind(0);
+  gl::drawQuad(emptyVao_);
+}
+
 void Renderer::render(gl::RenderTarget& target, const Scene& scene, const CameraMatrices& camera) {
   if (!target.valid()) return;
   target.begin();
@@ -99,6 +117,8 @@ void Renderer::render(gl::RenderTarget& target, const Scene& scene, const Camera
     background_.set("uBottom", scene.backgroundBottom);
     gl::drawQuad(emptyVao_);
   }
+
+  drawImage(scene.image, camera);
 
   // Floor: blended over the background, writes depth so what is below it is hidden.
   if (scene.floor.visible) {

@@ -3,6 +3,7 @@
 // impostors (joints and bones), one translucent layer (the ghost), point-lights and
 // lines. The only user of ui/gl/ besides the app's frame loop.
 
+#include <cstdint>
 #include <memory>
 
 #include "ui/gl/gl.h"
@@ -28,7 +29,11 @@ class Renderer {
   void drawLines(const std::vector<LineInstance>& items, const CameraMatrices& camera,
                  glm::vec2 viewportPx);
 
-  gl::Program background_, floor_, sphere_, tube_, line_;
+  void drawImage(const SceneImage& image, const CameraMatrices& camera);
+
+  gl::Program background_, floor_, sphere_, tube_, line_, image_;
+  gl::Texture2D imageTexture_;
+  std::uint64_t imageKey_ = 0;
   gl::Buffer sphereBuffer_, tubeBuffer_, lineBuffer_;
   gl::VertexArray sphereVao_, tubeVao_, lineVao_, emptyVao_;
   int samples_ = 4;

@@ -3,6 +3,8 @@
 // camera matrices. Built by the panels' scene builders each frame; no GL here.
 
 #include <glm/glm.hpp>
+#include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace ew::ui {
@@ -40,10 +42,25 @@ struct FloorGrid {
   float shadowRadiusMm = 380.0f;
 };
 
+// A picture behind everything (a video frame in the 2D view): 8-bit BGR rows, drawn on the
+// rectangle [low, high] of the scene's plane z = 0 (low = the picture's bottom-left). The
+// pixels must stay alive until the frame is rendered; `key` names them (the renderer
+// uploads only when it changes).
+struct SceneImage {
+  const unsigned char* bgr = nullptr;
+  int width = 0, height = 0;
+  std::size_t strideBytes = 0;
+  std::uint64_t key = 0;
+  glm::vec2 low{0.0f}, high{0.0f};
+  float brightness = 1.0f;  // dims the picture under the marks
+  bool shown() const { return bgr != nullptr && width > 0 && height > 0; }
+};
+
 struct Scene {
   glm::vec4 backgroundTop{0.11f, 0.12f, 0.14f, 1.0f};
   glm::vec4 backgroundBottom{0.05f, 0.055f, 0.065f, 1.0f};
   FloorGrid floor;
+  SceneImage image;
   std::vector<SphereInstance> spheres;       // opaque
   std::vector<TubeInstance> tubes;           // opaque
   std::vector<SphereInstance> ghostSpheres;  // one translucent layer (alpha of the colour)
@@ -53,6 +70,7 @@ struct Scene {
   std::vector<LineInstance> overlayLines;    // drawn on top of everything
 
   void clearItems() {
+    image = {};
     spheres.clear();
     tubes.clear();
     ghostSpheres.clear();

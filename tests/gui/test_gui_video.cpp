@@ -1,0 +1,133 @@
+// Video in the viewer (issue 14): a clip opens with the keyframes marked on it, joints are
+// marked on another frame by the script's clicks (with undo), the joints are tracked on a
+// worker and the track is fitted through the unknown camera; the 2D view shows the footage
+// with the 3D walker drawn back over it.
+//
+// The footage: a synthetic walker (known stride frequency) filmed 30° off the side view,
+// 4.5 m away, 1280×720 at 30 fps, painted by video/synthetic_footage.h; keyframes with the
+// true joints every 6 frames, as a user marking a clip every fifth of a second would.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
+#include <string>
+
+#include "core/synth/population.h"
+#include "core/tracking/keyframes.h"
+#include "tests/gui/gui_run.h"
+#include "video/synthetic_footage.h"
+
+namespace ew::test::gui {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct Footage {
+  fs::path video, keyframes;
+  Eigen::MatrixXd truthPx;
+  double strideHz = 0.0;
+};
+
+Footage writeWalkingFootage(const fs::path& dir) {
+  PopulationOptions o;
+  o.count = 1;
+  o.simulation.rateHz = 30.0;
+  const SynthWalker walker = generatePopulation(o).front();
+  const Eigen::MatrixXd frames = walker.trial.positionsMm.topRows(
+      std::min<Eigen::Index>(100, walker.trial.positionsMm.rows()));
+  Footage f;
+  f.video = dir / "walk.avi";
+  f.truthPx = writeFootage(f.video, frames, cameraBeside(frames, 30.0, 4500.0), 30.0);
+  f.strideHz = walker.attributes.at("cadence_spm") / 120.0;
+  std::vector<int> marked;
+  for (int k = 0; k < f.truthPx.rows(); k += 6)
+    if (k != 30) marked.push_back(k);
+  f.keyframes = dir / "walk_keyframes.json";
+  writeKeyframes(f.keyframes, keyframesFromTrack(f.truthPx, marked, "walk.avi"));
+  return f;
+}
+
+json jointsAt(const Eigen::MatrixXd& px, int frame) {
+  json j = json::object();
+  for (int k = 0; k < 15; ++k)
+    j[std::string(kJointNames[k])] = {px(frame, 2 * k), px(frame, 2 * k + 1)};
+  return j;
+}
+
+class GuiVideo : public GuiTest {
+ protected:
+  json state(const std::string& name) const { return json::parse(readAll(dir / name)); }
+  std::string path(const std::string& name) const { return (dir / name).string(); }
+};
+
+TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
+  const Footage f = writeWalkingFootage(dir);
+  ASSERT_GE(f.truthPx.rows(), 90) << "three gait cycles at 30 fps";
+  const json script = json::array({
+      {{"open", json::array({f.video.string(), f.keyframes.string()})}},
+      {{"video_frame", 30}},
+      {{"start_marking", true}},
+      // A wrong head, taken back; then every joint where it is.
+      {{"mark_joints", {{"head", {10.0, 10.0}}}}},
+      {{"undo_keyframes", true}},
+      {{"mark_joints", jointsAt(f.truthPx, 30)}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("marked.json")}},
+      {{"screenshot", path("marking.png")}},
+      {{"save_keyframes", path("saved_keyframes.json")}},
+      {{"track_video", {{"first", 0}, {"last", -1}}}},
+      {{"video_frame", 45}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("tracked.json")}},
+      {{"export_png", {{"path", path("input.png")}, {"view", "input"}}}},
+      {{"screenshot", path("window.png")}},
+      {{"expect_failure", {{"mark_joints", {{"l_knee", {5000.0, 10.0}}}}}}},
+      {{"expect_failure", {{"mark_joints", {{"nose", {10.0, 10.0}}}}}}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1600x900 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+
+  // Marking: the keyframes read, frame 30 marked with its 15 joints, the wrong head undone.
+  const json marked = state("marked.json")["video"];
+  ASSERT_TRUE(marked.is_object()) << marked;
+  EXPECT_EQ(marked["frames"], f.truthPx.rows());
+  EXPECT_EQ(marked["width_px"], 1280);
+  EXPECT_EQ(marked["keyframes"].size(), 17u);
+  EXPECT_EQ(marked["mark_step"], 15) << "every joint marked: nothing more asked for";
+  const Keyframes saved = readKeyframes(dir / "saved_keyframes.json");
+  const auto k30 = std::find_if(saved.keyframes.begin(), saved.keyframes.end(),
+                                [](const Keyframe& k) { return k.frame == 30; });
+  ASSERT_NE(k30, saved.keyframes.end());
+  EXPECT_NEAR((k30->jointsPx - f.truthPx.row(30)).cwiseAbs().maxCoeff(), 0.0, 1e-6);
+
+  // The track and its fit: the walker's own stride frequency, its joints reprojected within
+  // a few pixels (the model's walker is not the synthetic one: the residual is not zero).
+  const json tracked = state("tracked.json");
+  ASSERT_TRUE(tracked["video"]["track"].is_object()) << tracked["video"];
+  EXPECT_EQ(tracked["video"]["track"]["last_frame"], f.truthPx.rows() - 1);
+  const json fit = tracked["clip"]["fit"];
+  ASSERT_TRUE(fit.is_object()) << tracked["clip"];
+  EXPECT_EQ(fit["format"], "tracked video");
+  EXPECT_NEAR(fit["stride_hz"].get<double>(), f.strideHz, 0.05 * f.strideHz);
+  EXPECT_LT(fit["reprojection_rms_px"].get<double>(), 12.0);
+  EXPECT_EQ(tracked["video"]["shown_frame"], 45);
+
+  // The 2D view shows the footage (its noise background is no flat dark panel) and the
+  // reprojected walker's orange.
+  const cv::Mat input = load("input.png");
+  const int orange = countPixels(
+      input, [](int rr, int g, int b) { return rr > 200 && g > 110 && g < 190 && b < 90; });
+  EXPECT_GT(orange, 40) << "the reprojection drawn over the footage";
+  cv::Mat grey;
+  cv::cvtColor(input, grey, cv::COLOR_BGR2GRAY);
+  cv::Scalar mean, sd;
+  cv::meanStdDev(grey, mean, sd);
+  EXPECT_GT(sd[0], 20.0) << "the footage's texture behind the joints";
+}
+
+}  // namespace
+}  // namespace ew::test::gui

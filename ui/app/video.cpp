@@ -1,0 +1,61 @@
+#include "ui/app/video.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <fstream>
+
+namespace ew::ui {
+
+const std::vector<Joint>& markingOrder() {
+  static const std::vector<Joint> order{
+      Joint::Head,   Joint::Sternum,   Joint::Pelvis, Joint::RShoulder, Joint::RElbow,
+      Joint::RWrist, Joint::LShoulder, Joint::LElbow, Joint::LWrist,    Joint::RHip,
+      Joint::RKnee,  Joint::RAnkle,    Joint::LHip,   Joint::LKnee,     Joint::LAnkle};
+  return order;
+}
+
+const Keyframe* VideoSession::keyframeAt(int f) const {
+  for (const auto& k : keyframes.keyframes)
+    if (k.frame == f) return &k;
+  return nullptr;
+}
+
+TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes, int first,
+                        int last, const std::function<bool(double)>& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  VideoSource source(video);
+  TrackerOptions o;
+  o.firstFrame = first;
+  o.lastFrame = last;
+  TrackedVideo t;
+  t.video = video;
+  t.keyframes = keyframes;
+  t.track = trackJoints(source, keyframes, o, progress);
+  KeypointOptions k;
+  k.fps = t.track.fps;
+  t.trial = std::make_shared<const KeypointTrial>(
+      trialFromJoints(t.track.jointsPx, t.track.confidence, video.string(), "tracked video", k));
+  t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return t;
+}
+
+bool isVideoFile(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  for (const char* e : {".mp4", ".avi", ".mov", ".mkv", ".webm", ".m4v", ".mpg", ".mpeg"})
+    if (ext == e) return true;
+  return false;
+}
+
+bool isKeyframeFile(const std::filesystem::path& path) {
+  if (path.extension() != ".json") return false;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return head.find("\"eigenwalker-keyframes\"") != std::string::npos;
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,68 @@
+#pragma once
+// A video in the viewer (docs/VIEWER.md, "Video"): its frames decoded ahead on a worker
+// (video/frame_cache.h), the joints the user marks on keyframes (with undo and redo), and
+// the joints tracked through a range of frames (video/joint_tracker.h) on a worker. The
+// track becomes a keypoint clip (ui/app/clip.h): fitted through the unknown camera like a
+// pose estimator's file, its reprojection drawn over the footage.
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/keypoints/keypoint_trial.h"
+#include "core/tracking/keyframes.h"
+#include "video/frame_cache.h"
+#include "video/joint_tracker.h"
+
+namespace ew::ui {
+
+// A finished track: what was tracked, from which keyframes, and the trial it makes.
+struct TrackedVideo {
+  std::filesystem::path video;
+  Keyframes keyframes;  // as they were when tracking started
+  JointTrack track;
+  std::shared_ptr<const KeypointTrial> trial;  // the track's confident points (trialFromJoints)
+  double seconds = 0.0;
+  int frames() const { return static_cast<int>(track.jointsPx.rows()); }
+  int lastFrame() const { return track.firstFrame + frames() - 1; }
+};
+
+// The order the guided marking asks for the joints: down the trunk, then each limb from
+// the body outwards (SPEC §1 names).
+const std::vector<Joint>& markingOrder();
+
+struct VideoSession {
+  std::filesystem::path path;
+  std::shared_ptr<FrameCache> frames;
+  Keyframes keyframes;
+  std::vector<Keyframes> undo, redo;   // each edit of the keyframes (≤ 200 kept)
+  int frame = 0;                       // the frame scrubbed to (0-based)
+  bool marking = false;                // clicks in the 2D view place joints on `frame`
+  int markStep = 0;                    // index into markingOrder(): the joint asked for next
+  int firstFrame = 0, lastFrame = -1;  // the range to track (-1: the video's end)
+  std::shared_ptr<const TrackedVideo> tracked;  // the last finished track
+  std::string trackError;                       // why the last track failed ("" when none)
+  // The frame last drawn and its number: shown while the frame asked for is decoding.
+  std::shared_ptr<const cv::Mat> shown;
+  int shownIndex = -1;
+
+  int frameCount() const { return frames ? frames->frameCount() : 0; }
+  double fps() const { return frames ? frames->info().fps : 0.0; }
+  // The keyframe on `frame`, if any.
+  const Keyframe* keyframeAt(int frame) const;
+};
+
+// Reads and tracks (blocking; the viewer runs it as a background job). `progress` gets the
+// share done and returns false to cancel. Throws the tracker's and trialFromJoints' errors.
+TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes, int first,
+                        int last, const std::function<bool(double)>& progress);
+
+// True for the file names a video has (.mp4, .avi, .mov, .mkv, .webm, .m4v, .mpg, .mpeg).
+bool isVideoFile(const std::filesystem::path& path);
+// True for a JSON file that says it is an eigenwalker keyframe file (read its start only).
+bool isKeyframeFile(const std::filesystem::path& path);
+
+}  // namespace ew::ui

@@ -1,0 +1,285 @@
+// The video actions of ui/app/actions.h ([SECTION] Video): opening, scrubbing, marking
+// keyframes with undo, and tracking on a worker whose track becomes a keypoint clip.
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "core/common/errors.h"
+#include "ui/app/actions.h"
+#include "ui/app/video_poll.h"
+
+namespace ew::ui::actions {
+
+namespace {
+
+constexpr std::size_t kUndoDepth = 200;
+
+VideoSession& session(AppState& s) {
+  if (!s.video) throw std::invalid_argument("no video is open");
+  return *s.video;
+}
+
+// Records the keyframes as they are before an edit.
+void pushUndo(VideoSession& v) {
+  v.undo.push_back(v.keyframes);
+  if (v.undo.size() > kUndoDepth) v.undo.erase(v.undo.begin());
+  v.redo.clear();
+}
+
+// The first joint of the guided order from `step` on that the frame's keyframe lacks.
+int nextUnmarked(const VideoSession& v, int step) {
+  const Keyframe* k = v.keyframeAt(v.frame);
+  const auto& order = markingOrder();
+  for (int i = step; i < static_cast<int>(order.size()); ++i) {
+    const int j = index(order[static_cast<std::size_t>(i)]);
+    if (!k || !std::isfinite(k->jointsPx(2 * j))) return i;
+  }
+  return static_cast<int>(order.size());
+}
+
+// The keyframe on the frame shown, made when missing: from the track's confident joints
+// there (a correction of a tracked frame), else empty.
+Keyframe& keyframeHere(VideoSession& v) {
+  for (auto& k : v.keyframes.keyframes)
+    if (k.frame == v.frame) return k;
+  Keyframe k;
+  k.frame = v.frame;
+  k.jointsPx =
+      Eigen::RowVectorXd::Constant(2 * kJointCount, std::numeric_limits<double>::quiet_NaN());
+  if (v.tracked && v.frame >= v.tracked->track.firstFrame && v.frame <= v.tracked->lastFrame()) {
+    const int row = v.frame - v.tracked->track.firstFrame;
+    for (int j = 0; j < kJointCount; ++j) {
+      if (v.tracked->track.confidence(row, j) < KeypointOptions{}.minConfidence) continue;
+      k.jointsPx.segment<2>(2 * j) = v.tracked->track.jointsPx.row(row).segment<2>(2 * j);
+    }
+  }
+  auto& list = v.keyframes.keyframes;
+  const auto at =
+      std::find_if(list.begin(), list.end(), [&](const Keyframe& o) { return o.frame > k.frame; });
+  return *list.insert(at, std::move(k));
+}
+
+}  // namespace
+
+void openVideo(AppState& s, const std::filesystem::path& path) {
+  std::shared_ptr<FrameCache> frames;
+  try {
+    frames = std::make_shared<FrameCache>(path);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(e.what());
+  }
+  closeVideo(s);
+  if (s.doc.clip) closeClip(s);
+  VideoSession v;
+  v.path = path;
+  v.frames = std::move(frames);
+  v.keyframes.video = path.filename().string();
+  s.video = std::move(v);
+  s.doc.mode = Mode::Clip;
+  s.view.playback.playing = false;
+  const VideoInfo& i = s.video->frames->info();
+  s.log.info("Opened the video " + path.string() + ": " + std::to_string(i.widthPx) + "×" +
+             std::to_string(i.heightPx) + ", " + std::to_string(i.frameCount) + " frames at " +
+             std::to_string(i.fps).substr(0, 5) + " fps");
+}
+
+void loadKeyframes(AppState& s, const std::filesystem::path& path) {
+  VideoSession& v = session(s);
+  Keyframes k;
+  try {
+    k = readKeyframes(path);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(e.what());
+  }
+  for (const auto& f : k.keyframes)
+    if (f.frame >= v.frameCount())
+      throw std::invalid_argument(path.string() + ": keyframe on frame " + std::to_string(f.frame) +
+                                  ", the video has " + std::to_string(v.frameCount()) + " frames");
+  pushUndo(v);
+  k.video = v.path.filename().string();
+  v.keyframes = std::move(k);
+  if (!v.keyframes.keyframes.empty()) v.frame = v.keyframes.keyframes.front().frame;
+  s.log.info("Read " + std::to_string(v.keyframes.keyframes.size()) + " keyframes from " +
+             path.string());
+}
+
+void saveKeyframes(AppState& s, const std::filesystem::path& path) {
+  const VideoSession& v = session(s);
+  if (v.keyframes.keyframes.empty()) throw std::invalid_argument("no joints are marked yet");
+  try {
+    writeKeyframes(path, v.keyframes);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(e.what());
+  }
+  s.log.info("Wrote the keyframes to " + path.string());
+}
+
+void setVideoFrame(AppState& s, int frame) {
+  VideoSession& v = session(s);
+  v.frame = std::clamp(frame, 0, std::max(v.frameCount() - 1, 0));
+  if (v.marking) v.markStep = nextUnmarked(v, 0);
+  // A tracked clip shows this frame too, when it covers it.
+  if (s.clip && s.clip->settings.tracked && v.tracked &&
+      s.clip->settings.tracked == v.tracked->trial && v.frame >= v.tracked->track.firstFrame &&
+      v.frame <= v.tracked->lastFrame())
+    setClipFrame(s, v.frame - v.tracked->track.firstFrame + 1);
+  s.view.playback.playing = false;
+}
+
+void startMarking(AppState& s) {
+  VideoSession& v = session(s);
+  setVideoFrame(s, shownVideoFrame(s));
+  v.marking = true;
+  v.markStep = nextUnmarked(v, 0);
+}
+
+void stopMarking(AppState& s) { session(s).marking = false; }
+
+void skipMarkedJoint(AppState& s) {
+  VideoSession& v = session(s);
+  if (!v.marking) throw std::invalid_argument("not marking joints");
+  v.markStep = nextUnmarked(v, v.markStep + 1);
+}
+
+void markJoint(AppState& s, Joint joint, double xPx, double yPx, bool newEdit) {
+  VideoSession& v = session(s);
+  const VideoInfo& i = v.frames->info();
+  if (!(std::isfinite(xPx) && std::isfinite(yPx) && xPx >= 0.0 && yPx >= 0.0 && xPx <= i.widthPx &&
+        yPx <= i.heightPx))
+    throw std::invalid_argument("a joint must lie in the picture (0-" + std::to_string(i.widthPx) +
+                                ", 0-" + std::to_string(i.heightPx) + " px)");
+  if (newEdit || v.undo.empty()) pushUndo(v);
+  s.view.playback.playing = false;
+  Keyframe& k = keyframeHere(v);
+  k.jointsPx(2 * index(joint)) = xPx;
+  k.jointsPx(2 * index(joint) + 1) = yPx;
+  if (v.marking) v.markStep = nextUnmarked(v, 0);
+}
+
+void removeKeyframe(AppState& s, int frame) {
+  VideoSession& v = session(s);
+  auto& list = v.keyframes.keyframes;
+  const auto it =
+      std::find_if(list.begin(), list.end(), [&](const Keyframe& k) { return k.frame == frame; });
+  if (it == list.end())
+    throw std::invalid_argument("frame " + std::to_string(frame) + " is no keyframe");
+  pushUndo(v);
+  v.keyframes.keyframes.erase(v.keyframes.keyframes.begin() + (it - list.begin()));
+  if (v.marking) v.markStep = nextUnmarked(v, 0);
+}
+
+void undoKeyframes(AppState& s) {
+  VideoSession& v = session(s);
+  if (v.undo.empty()) throw std::invalid_argument("nothing to undo");
+  v.redo.push_back(std::move(v.keyframes));
+  v.keyframes = std::move(v.undo.back());
+  v.undo.pop_back();
+  if (v.marking) v.markStep = nextUnmarked(v, 0);
+}
+
+void redoKeyframes(AppState& s) {
+  VideoSession& v = session(s);
+  if (v.redo.empty()) throw std::invalid_argument("nothing to redo");
+  v.undo.push_back(std::move(v.keyframes));
+  v.keyframes = std::move(v.redo.back());
+  v.redo.pop_back();
+  if (v.marking) v.markStep = nextUnmarked(v, 0);
+}
+
+void setTrackRange(AppState& s, int first, int last) {
+  VideoSession& v = session(s);
+  const int end = v.frameCount() - 1;
+  if (last < 0) last = end;
+  if (first < 0 || first > end || last < first || last > end)
+    throw std::invalid_argument("the frames to track must lie in [0, " + std::to_string(end) +
+                                "], first ≤ last");
+  v.firstFrame = first;
+  v.lastFrame = last;
+}
+
+void startTracking(AppState& s) {
+  VideoSession& v = session(s);
+  if (s.jobs.track.running()) throw std::invalid_argument("a track is running");
+  const int last = v.lastFrame < 0 ? v.frameCount() - 1 : v.lastFrame;
+  const bool any = std::any_of(
+      v.keyframes.keyframes.begin(), v.keyframes.keyframes.end(), [&](const Keyframe& k) {
+        return k.frame >= v.firstFrame && k.frame <= last && k.jointsPx.array().isFinite().any();
+      });
+  if (!any)
+    throw std::invalid_argument("no joints are marked on frames " + std::to_string(v.firstFrame) +
+                                "-" + std::to_string(last) + ": mark them on one frame first");
+  v.marking = false;
+  v.trackError.clear();
+  const std::string title = "Tracking " + v.path.filename().string();
+  s.log.info(title + ", frames " + std::to_string(v.firstFrame) + "-" + std::to_string(last));
+  s.jobs.track.start(
+      title, [path = v.path, keys = v.keyframes, first = v.firstFrame, last](JobProgress& p) {
+        const auto progress = [&p, first, last](double done) {
+          try {
+            const int frames = last - first + 1;
+            p.set(static_cast<int>(done * frames), frames,
+                  "frame " + std::to_string(first + static_cast<int>(done * frames)));
+            return true;
+          } catch (const JobCancelled&) {
+            return false;
+          }
+        };
+        return std::make_shared<const TrackedVideo>(trackVideo(path, keys, first, last, progress));
+      });
+}
+
+void cancelTracking(AppState& s) { s.jobs.track.cancel(); }
+
+void closeVideo(AppState& s) {
+  if (!s.video) return;
+  s.jobs.track.cancel();
+  if (s.doc.clip && s.doc.clip->tracked) closeClip(s);
+  s.video.reset();
+}
+
+int shownVideoFrame(const AppState& s) {
+  if (!s.video) return 0;
+  const VideoSession& v = *s.video;
+  if (!v.marking && s.clip && v.tracked && s.clip->settings.tracked == v.tracked->trial)
+    return v.tracked->track.firstFrame + clipFrameAt(*s.clip, s.view.playback.cycles);
+  return v.frame;
+}
+
+}  // namespace ew::ui::actions
+
+namespace ew::ui {
+
+void pollVideo(AppState& s) {
+  auto outcome = s.jobs.track.poll();
+  if (!outcome || !s.video) return;
+  VideoSession& v = *s.video;
+  if (!outcome->value) {
+    const bool cancelled = outcome->error.find("cancelled") != std::string::npos;
+    v.trackError = cancelled ? "" : outcome->error;
+    if (cancelled) {
+      s.log.info("Tracking cancelled");
+    } else {
+      ++s.jobs.failures;
+      actions::reportError(s, "Could not track " + v.path.filename().string(), outcome->error);
+    }
+    return;
+  }
+  v.tracked = *outcome->value;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "Tracked %d frames in %.1f s (%.0f frames/s)", v.tracked->frames(),
+                v.tracked->seconds, v.tracked->frames() / std::max(v.tracked->seconds, 1e-9));
+  s.log.info(buf);
+  for (const auto& w : v.tracked->trial->warnings) s.log.warning(w);
+  // Fitted as a clip, keeping the camera values the user held for this video.
+  ClipSettings c = s.doc.clip && s.doc.clip->path == v.path ? *s.doc.clip : ClipSettings{};
+  c.path = v.path;
+  c.tracked = v.tracked->trial;
+  s.doc.clip = c;
+  s.doc.mode = Mode::Clip;
+  s.jobs.clipFailed.reset();
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,167 @@
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+#include "ui/panels/clip_controls.h"
+#include "ui/widgets/section_title.h"
+
+namespace ew::ui {
+
+namespace {
+
+template <class F>
+void apply(AppState& s, F&& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    s.log.error(e.what());
+  }
+}
+
+// A row of equal buttons filling the width; returns the index clicked (-1: none).
+int buttonRow(std::initializer_list<std::pair<const char*, bool>> buttons) {
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float n = static_cast<float>(buttons.size());
+  const float w = (ImGui::GetContentRegionAvail().x - (n - 1.0f) * spacing) / n;
+  int clicked = -1, i = 0;
+  for (const auto& [label, enabled] : buttons) {
+    if (i > 0) ImGui::SameLine();
+    ImGui::BeginDisabled(!enabled);
+    if (ImGui::Button(label, ImVec2(w, 0.0f))) clicked = i;
+    ImGui::EndDisabled();
+    ++i;
+  }
+  return clicked;
+}
+
+void scrubber(AppState& s, const VideoSession& v) {
+  int frame = actions::shownVideoFrame(s);
+  ImGui::SetNextItemWidth(-1.0f);
+  char format[64];
+  std::snprintf(format, sizeof format, "frame %%d of %d", v.frameCount());
+  if (ImGui::SliderInt("##videoframe", &frame, 0, std::max(v.frameCount() - 1, 0), format,
+                       ImGuiSliderFlags_AlwaysClamp))
+    apply(s, [&] { actions::setVideoFrame(s, frame); });
+  switch (buttonRow({{"<< 10", true}, {"< 1", true}, {"1 >", true}, {"10 >>", true}})) {
+    case 0:
+      apply(s, [&] { actions::setVideoFrame(s, frame - 10); });
+      break;
+    case 1:
+      apply(s, [&] { actions::setVideoFrame(s, frame - 1); });
+      break;
+    case 2:
+      apply(s, [&] { actions::setVideoFrame(s, frame + 1); });
+      break;
+    case 3:
+      apply(s, [&] { actions::setVideoFrame(s, frame + 10); });
+      break;
+    default:
+      break;
+  }
+}
+
+void marking(AppState& s, const VideoSession& v) {
+  sectionTitle("Mark the joints");
+  const int shown = actions::shownVideoFrame(s);
+  const Keyframe* k = v.keyframeAt(shown);
+  const int marked = k ? static_cast<int>(k->jointsPx.array().isFinite().count() / 2) : 0;
+  ImGui::TextDisabled("%zu keyframe%s · this frame: %d of 15 joints", v.keyframes.keyframes.size(),
+                      v.keyframes.keyframes.size() == 1 ? "" : "s", marked);
+  if (!v.marking) {
+    if (buttonRow({{"Mark joints on this frame", true}}) == 0)
+      apply(s, [&] { actions::startMarking(s); });
+  } else {
+    switch (buttonRow({{"Skip joint", v.markStep < kJointCount}, {"Done", true}})) {
+      case 0:
+        apply(s, [&] { actions::skipMarkedJoint(s); });
+        break;
+      case 1:
+        apply(s, [&] { actions::stopMarking(s); });
+        break;
+      default:
+        break;
+    }
+  }
+  switch (
+      buttonRow({{"Undo", !v.undo.empty()}, {"Redo", !v.redo.empty()}, {"Remove", k != nullptr}})) {
+    case 0:
+      apply(s, [&] { actions::undoKeyframes(s); });
+      break;
+    case 1:
+      apply(s, [&] { actions::redoKeyframes(s); });
+      break;
+    case 2:
+      apply(s, [&] { actions::removeKeyframe(s, shown); });
+      break;
+    default:
+      break;
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Forget the joints marked on this frame");
+}
+
+void tracking(AppState& s, const VideoSession& v) {
+  sectionTitle("Track");
+  int range[2] = {v.firstFrame, v.lastFrame < 0 ? v.frameCount() - 1 : v.lastFrame};
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::InputInt2("##range", range, ImGuiInputTextFlags_EnterReturnsTrue))
+    apply(s, [&] { actions::setTrackRange(s, range[0], range[1]); });
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The first and last frame to track (Enter)");
+  const bool stale =
+      v.tracked &&
+      (v.tracked->keyframes.keyframes.size() != v.keyframes.keyframes.size() ||
+       v.tracked->track.firstFrame != v.firstFrame ||
+       !std::equal(v.keyframes.keyframes.begin(), v.keyframes.keyframes.end(),
+                   v.tracked->keyframes.keyframes.begin(), [](const auto& a, const auto& b) {
+                     return a.frame == b.frame && a.jointsPx.cwiseEqual(b.jointsPx).all();
+                   }));
+  char label[96];
+  std::snprintf(label, sizeof label, "%s frames %d-%d",
+                stale       ? "Track again,"
+                : v.tracked ? "Track"
+                            : "Track",
+                range[0], range[1]);
+  if (s.jobs.track.running()) {
+    ImGui::ProgressBar(s.jobs.track.fraction(), ImVec2(-1.0f, 0.0f), s.jobs.track.what().c_str());
+    if (buttonRow({{"Cancel", true}}) == 0) actions::cancelTracking(s);
+  } else if (buttonRow({{label, !v.keyframes.keyframes.empty()}}) == 0) {
+    apply(s, [&] { actions::startTracking(s); });
+  }
+  if (stale) ImGui::TextDisabled("the keyframes changed since the last track");
+  if (v.tracked) {
+    const auto& t = *v.tracked;
+    ImGui::TextDisabled("tracked %d-%d in %.1f s (%.0f frames/s)", t.track.firstFrame,
+                        t.lastFrame(), t.seconds, t.frames() / std::max(t.seconds, 1e-9));
+    ImGui::TextDisabled("mean confidence %.2f", t.track.confidence.mean());
+  }
+  if (!v.trackError.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.55f, 1.0f));
+    ImGui::TextWrapped("%s", v.trackError.c_str());
+    ImGui::PopStyleColor();
+  }
+}
+
+}  // namespace
+
+void drawVideoControls(AppState& s, float scale) {
+  (void)scale;
+  if (!s.video) return;
+  const VideoSession& v = *s.video;
+  sectionTitle("Video");
+  ImGui::TextUnformatted(v.path.filename().string().c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.path.string().c_str());
+  const VideoInfo& i = v.frames->info();
+  ImGui::TextDisabled("%d×%d · %.4g fps · %d frames", i.widthPx, i.heightPx, i.fps, v.frameCount());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("codec %s", i.codec.empty() ? "unknown" : i.codec.c_str());
+  scrubber(s, v);
+  marking(s, v);
+  tracking(s, v);
+  if (buttonRow({{"Close the video", true}}) == 0) actions::closeVideo(s);
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,117 @@
+#include "ui/panels/video_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/core.hpp>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+#include "ui/panels/clip_view.h"
+#include "ui/render/palette.h"
+
+namespace ew::ui {
+
+namespace {
+
+glm::vec2 scenePoint(double u, double v) { return {static_cast<float>(u), static_cast<float>(-v)}; }
+
+bool finitePair(const Eigen::Ref<const Eigen::RowVectorXd>& px, int joint) {
+  return std::isfinite(px(2 * joint)) && std::isfinite(px(2 * joint + 1));
+}
+
+// Red (lost) through amber to green (sure), as video/track_overlay.h colours them.
+glm::vec4 confidenceColour(double c) {
+  const float t = static_cast<float>(std::clamp(c, 0.0, 1.0));
+  return {std::min(1.0f, 2.0f - 2.0f * t), std::min(1.0f, 2.0f * t), 0.25f, 1.0f};
+}
+
+void addBones(Scene& scene, const Eigen::Ref<const Eigen::RowVectorXd>& px, float width,
+              glm::vec4 colour) {
+  for (const auto& [a, b] : kBones) {
+    if (!finitePair(px, index(a)) || !finitePair(px, index(b))) continue;
+    scene.overlayLines.push_back(
+        {glm::vec3(scenePoint(px(2 * index(a)), px(2 * index(a) + 1)), 1.0f), width,
+         glm::vec3(scenePoint(px(2 * index(b)), px(2 * index(b) + 1)), 1.0f), 0.0f, colour});
+  }
+}
+
+// The tracked joints of a frame the fit does not show (before the fit, or outside it).
+void addTrackedPose(Scene& scene, const TrackedVideo& t, int frame, float radius, float lineScale) {
+  const int row = frame - t.track.firstFrame;
+  if (row < 0 || row >= t.frames()) return;
+  const Eigen::RowVectorXd px = t.track.jointsPx.row(row);
+  addBones(scene, px, 2.0f * lineScale, glm::vec4(0.85f, 0.88f, 0.95f, 0.55f));
+  for (int j = 0; j < kJointCount; ++j) {
+    if (!finitePair(px, j)) continue;
+    scene.glows.push_back({glm::vec3(scenePoint(px(2 * j), px(2 * j + 1)), 0.5f), radius,
+                           confidenceColour(t.track.confidence(row, j))});
+  }
+}
+
+// The joints marked on this frame: teal rings (a dark disc under a bright one) and bones.
+void addKeyframeMarks(Scene& scene, const Keyframe& k, float radius, float lineScale) {
+  addBones(scene, k.jointsPx, 2.5f * lineScale, glm::vec4(glm::vec3(palette::kCamera), 0.9f));
+  for (int j = 0; j < kJointCount; ++j) {
+    if (!finitePair(k.jointsPx, j)) continue;
+    const glm::vec3 p(scenePoint(k.jointsPx(2 * j), k.jointsPx(2 * j + 1)), 2.0f);
+    scene.glows.push_back({p, 1.5f * radius, glm::vec4(0.02f, 0.05f, 0.05f, 0.85f)});
+    scene.glows.push_back({p, radius, palette::kCamera});
+  }
+}
+
+}  // namespace
+
+glm::vec2 VideoViewFrame::toVideoPx(glm::vec2 share, float aspect) const {
+  const float h = 0.5f * heightPx, w = h * aspect;
+  const glm::vec2 scene{centre.x - w + 2.0f * w * share.x, centre.y + h - 2.0f * h * share.y};
+  return {scene.x, -scene.y};
+}
+
+glm::vec2 VideoViewFrame::toViewShare(glm::vec2 px, float aspect) const {
+  const float h = 0.5f * heightPx, w = h * aspect;
+  return {(px.x - (centre.x - w)) / (2.0f * w), ((centre.y + h) + px.y) / (2.0f * h)};
+}
+
+VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect) {
+  VideoViewFrame f;
+  const float w = static_cast<float>(widthPx), h = static_cast<float>(heightPx);
+  // Room above for the caption and below for the legend.
+  f.heightPx = std::max({h * 1.22f, w * 1.02f / std::max(aspect, 0.1f), 16.0f});
+  f.centre = {0.5f * w, -0.5f * h + 0.02f * f.heightPx};
+  return f;
+}
+
+bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,
+                          float videoPxPerScreenPx, int frame, const void* bgrMat) {
+  scene.clearItems();
+  scene.floor.visible = false;
+  scene.backgroundTop = {0.085f, 0.09f, 0.105f, 1.0f};
+  scene.backgroundBottom = {0.04f, 0.045f, 0.055f, 1.0f};
+  if (!s.video) return false;
+  const VideoSession& v = *s.video;
+  const float radius = 5.0f * lineScale * videoPxPerScreenPx;
+  const bool fitted =
+      s.clip && v.tracked && s.clip->settings.tracked == v.tracked->trial && !v.marking;
+  const int clipFrame = fitted ? frame - v.tracked->track.firstFrame : -1;
+  if (fitted && clipFrame >= 0 && clipFrame < s.clip->rec.trial.frameCount) {
+    buildClipInputScene(s, scene, lineScale, clipFrame, clipImageFrame(*s.clip, 1.0f));
+  } else if (v.tracked) {
+    addTrackedPose(scene, *v.tracked, frame, radius, lineScale);
+  }
+  if (const Keyframe* k = v.keyframeAt(frame)) addKeyframeMarks(scene, *k, radius, lineScale);
+  if (const auto* mat = static_cast<const cv::Mat*>(bgrMat); mat && !mat->empty()) {
+    scene.image.bgr = mat->data;
+    scene.image.width = mat->cols;
+    scene.image.height = mat->rows;
+    scene.image.strideBytes = mat->step[0];
+    scene.image.key =
+        reinterpret_cast<std::uintptr_t>(mat->data) ^ (static_cast<std::uint64_t>(frame) << 40);
+    scene.image.low = {0.0f, -static_cast<float>(mat->rows)};
+    scene.image.high = {static_cast<float>(mat->cols), 0.0f};
+    // Dimmed under a fit or while marking, so the marks read on any footage.
+    scene.image.brightness = fitted || v.marking || v.tracked ? 0.72f : 1.0f;
+  }
+  return true;
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,33 @@
+#pragma once
+// The 2D view of a video (Mode::Clip with a video open, docs/VIEWER.md "Video"): the frame at
+// the video's aspect, the joints marked on it (keyframes), the tracked joints coloured by
+// confidence, and once the track is fitted the 3D walker drawn back through the estimated
+// camera over the footage. Clicks place the joint the guided marking asks for; a mark can
+// be dragged to correct it.
+
+#include <glm/vec2.hpp>
+
+#include "ui/render/scene.h"
+
+namespace ew::ui {
+
+struct AppState;
+
+// The image-plane view that holds the whole picture with room for the captions.
+struct VideoViewFrame {
+  glm::vec2 centre{0.0f};  // scene units: image pixels, y up (−v)
+  float heightPx = 1.0f;
+  // A screen point of the view (0-1 across, 0-1 down) as video pixels (x right, y down).
+  glm::vec2 toVideoPx(glm::vec2 viewShare, float aspect) const;
+  // A video pixel as a view share (the inverse).
+  glm::vec2 toViewShare(glm::vec2 videoPx, float aspect) const;
+};
+VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect);
+
+// Builds the scene for video frame `frame` whose pixels are `bgrMat` (a cv::Mat; null: no
+// picture yet); `videoPxPerScreenPx` sizes the marks on screen. Returns false when no video
+// is open.
+bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,
+                          float videoPxPerScreenPx, int frame, const void* bgrMat);
+
+}  // namespace ew::ui
