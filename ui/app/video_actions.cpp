@@ -256,6 +256,8 @@ void pollVideo(AppState& s) {
   auto outcome = s.jobs.track.poll();
   if (!outcome || !s.video) return;
   VideoSession& v = *s.video;
+  // A track of a video closed since (cancelled, or finished first) is no track of this one.
+  if (outcome->value && (*outcome->value)->video != v.path) return;
   if (!outcome->value) {
     const bool cancelled = outcome->error.find("cancelled") != std::string::npos;
     v.trackError = cancelled ? "" : outcome->error;
