@@ -12,6 +12,7 @@ inline constexpr int kExitUsage = 2;
 void addInfoCommand(CLI::App& app, int& exitCode);
 void addJointsCommand(CLI::App& app, int& exitCode);
 void addAnglesCommand(CLI::App& app, int& exitCode);
+void addGaitCommand(CLI::App& app, int& exitCode);
 void addSynthCommand(CLI::App& app, int& exitCode);
 void addBuildCommand(CLI::App& app, int& exitCode);
 void addEvaluateCommand(CLI::App& app, int& exitCode);

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   ew::cli::addInfoCommand(app, exitCode);
   ew::cli::addJointsCommand(app, exitCode);
   ew::cli::addAnglesCommand(app, exitCode);
+  ew::cli::addGaitCommand(app, exitCode);
   ew::cli::addSynthCommand(app, exitCode);
   ew::cli::addBuildCommand(app, exitCode);
   ew::cli::addEvaluateCommand(app, exitCode);

@@ -6,26 +6,10 @@
 #include <sstream>
 
 #include "core/common/errors.h"
+#include "core/gait/gait_events.h"
 
 namespace ew {
 namespace {
-
-Joint ankleOf(Side side) { return side == Side::Left ? Joint::LAnkle : Joint::RAnkle; }
-
-// Forward distance of the ankle from the pelvis, smoothed over ~50 ms.
-Eigen::VectorXd ankleLead(const Eigen::MatrixXd& m, double rateHz, Side side) {
-  const Eigen::VectorXd raw =
-      m.col(3 * index(ankleOf(side)) + 1) - m.col(3 * index(Joint::Pelvis) + 1);
-  const int half = std::max(0, static_cast<int>(std::lround(0.025 * rateHz)));
-  const auto n = raw.size();
-  Eigen::VectorXd smooth(n);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Eigen::Index a = std::max<Eigen::Index>(0, i - half);
-    const Eigen::Index b = std::min<Eigen::Index>(n - 1, i + half);
-    smooth[i] = raw.segment(a, b - a + 1).mean();
-  }
-  return smooth;
-}
 
 std::vector<double> strikesFromEvents(const std::vector<GaitEvent>& events, Side side,
                                       double durationS) {
@@ -61,7 +45,7 @@ double strideHzFromStrikes(const std::vector<double>& right, const std::vector<d
 
 void checkWalking(const Eigen::MatrixXd& m, double rateHz, const std::string& file) {
   for (Side side : {Side::Right, Side::Left}) {
-    const Eigen::VectorXd lead = ankleLead(m, rateHz, side);
+    const Eigen::VectorXd lead = ankleLeadMm(m, rateHz, side);
     const double range = lead.maxCoeff() - lead.minCoeff();
     if (range < kMinAnkleExcursionMm) {
       std::ostringstream msg;
@@ -78,20 +62,9 @@ void checkWalking(const Eigen::MatrixXd& m, double rateHz, const std::string& fi
 
 std::vector<double> footStrikesFromKinematics(const Eigen::MatrixXd& m, double rateHz, Side side) {
   if (m.rows() < 3 || m.cols() != kDims3 || !(rateHz > 0)) return {};  // no interior peak possible
-  const Eigen::VectorXd lead = ankleLead(m, rateHz, side);
-  const auto n = lead.size();
-  const double mean = lead.mean();
-  const double threshold = mean + 0.3 * (lead.maxCoeff() - mean);
-  // Strikes of one foot are at least 1/kMaxStrideHz apart: a peak must dominate ±0.2 s.
-  const auto reach = static_cast<Eigen::Index>(std::lround(0.5 / kMaxStrideHz * rateHz));
+  // Whole frames, not refined: the models' cycles were built with these.
   std::vector<double> strikes;
-  for (Eigen::Index i = 1; i + 1 < n; ++i) {
-    if (lead[i] < threshold || lead[i] < lead[i - 1] || lead[i] <= lead[i + 1]) continue;
-    const Eigen::Index a = std::max<Eigen::Index>(0, i - reach);
-    const Eigen::Index b = std::min<Eigen::Index>(n - 1, i + reach);
-    if (lead.segment(a, b - a + 1).maxCoeff() > lead[i]) continue;
-    strikes.push_back(static_cast<double>(i) / rateHz);
-  }
+  for (int i : dominantPeaks(ankleLeadMm(m, rateHz, side), rateHz)) strikes.push_back(i / rateHz);
   return strikes;
 }
 

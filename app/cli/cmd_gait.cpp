@@ -1,0 +1,227 @@
+// `eigenwalker-cli gait PATH… [--events auto|kinematics|file|both] [--out gait.csv]
+// [--curves curves.csv] [--json]`: the spatiotemporal gait measures and the flexion curves over
+// the gait cycle (core/gait/gait_measures.h) of each 3D trial — motion capture, a
+// reconstruction's CSV or a synthetic walker. `--events both` measures a trial twice, from its
+// file's events and from its kinematics, and prints how far apart the two are.
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "app/cli/commands.h"
+#include "core/common/errors.h"
+#include "core/gait/dataset.h"
+#include "core/gait/gait_measures.h"
+#include "core/gait/joint_angles.h"
+#include "core/io/atomic_write.h"
+
+namespace ew::cli {
+namespace {
+
+struct GaitArgs {
+  std::vector<std::string> paths;
+  std::string events = "auto", out, curves, units, mapping;
+  double rateHz = 0.0;
+  bool json = false, wholeTrial = false;
+};
+
+struct MeasuredTrial {
+  std::string file, subject;
+  GaitMeasures measures;
+  std::vector<CycleCurve> curves;
+};
+
+std::string number(double v, int digits) {
+  if (!std::isfinite(v)) return "nan";
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+
+std::vector<GaitEventSet> eventSetsFor(const WalkingTrial& t, const std::string& choice) {
+  const auto& m = t.joints.positionsMm;
+  const double durationS = static_cast<double>(m.rows() - 1) / t.joints.rateHz;
+  const GaitEventSet file = gaitEventsFromFile(t.joints.events, durationS);
+  const bool hasFile = !file.right.strikesS.empty() || !file.left.strikesS.empty();
+  if (choice == "file" && !hasFile)
+    throwBadData(t.joints.file, "", "--events file: the file has no foot strike events");
+  if (choice == "file" || (choice == "auto" && hasFile)) return {file};
+  if (choice == "both" && hasFile) return {file, gaitEventsFromKinematics(m, t.joints.rateHz)};
+  return {gaitEventsFromKinematics(m, t.joints.rateHz)};
+}
+
+std::vector<CycleCurve> curvesOf(const WalkingTrial& t, const GaitMeasures& g) {
+  const JointAngles angles = jointAngles(t.joints.positionsMm, Eigen::Vector3d::UnitZ(), t.joints.file);
+  return flexionCycleCurves(angles.degrees, angles.names, t.joints.rateHz, g);
+}
+
+std::vector<MeasuredTrial> measureFile(const TrialFile& f, const GaitArgs& args) {
+  LoadOptions options;
+  if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
+  if (!args.units.empty()) options.unitsOverride = args.units;
+  if (!args.mapping.empty()) options.mappingFile = args.mapping;
+  PrepareOptions prepare;
+  prepare.cropToSteadyWindow = !args.wholeTrial;
+  const WalkingTrial t = loadWalkingTrial(f.path, options, prepare);
+  std::vector<MeasuredTrial> out;
+  for (const auto& events : eventSetsFor(t, args.events)) {
+    MeasuredTrial m{f.path.string(), f.info.subject,
+                    measureGait(t.joints.positionsMm, t.joints.rateHz, events, t.speedMps, f.path.string()), {}};
+    m.curves = curvesOf(t, m.measures);
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
+const std::vector<std::string>& columns() {
+  static const std::vector<std::string> c = {
+      "file", "subject", "events", "strides", "stride_time_s", "cadence_spm", "step_length_r_m",
+      "step_length_l_m", "stride_length_m", "step_width_m", "speed_mps", "speed_source", "stance_foot_speed_mps",
+      "stance_r_pct", "stance_l_pct", "stance_pct", "swing_pct", "double_support_pct", "notes"};
+  return c;
+}
+
+std::vector<std::string> row(const MeasuredTrial& t) {
+  const GaitMeasures& g = t.measures;
+  std::string notes;
+  for (const auto& n : g.notes) notes += (notes.empty() ? "" : "; ") + n;
+  return {t.file, t.subject, g.events.method, std::to_string(g.strides.size()),
+          number(g.strideTimeS, 4), number(g.cadenceSpm, 2), number(g.stepLengthRightM, 4),
+          number(g.stepLengthLeftM, 4), number(g.strideLengthM, 4), number(g.stepWidthM, 4),
+          number(g.speedMps, 3), g.speedSource, number(g.stanceFootSpeedMps, 3), number(g.stanceRightPct, 2),
+          number(g.stanceLeftPct, 2), number(g.stancePct, 2), number(g.swingPct, 2),
+          number(g.doubleSupportPct, 2), notes};
+}
+
+std::string csvCell(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+void writeRow(std::ostream& out, const std::vector<std::string>& cells) {
+  for (size_t k = 0; k < cells.size(); ++k) out << (k ? "," : "") << csvCell(cells[k]);
+  out << "\n";
+}
+
+void writeMeasures(const std::string& file, const std::vector<MeasuredTrial>& trials) {
+  writeFileAtomically(file, [&](std::ostream& out) {
+    writeRow(out, columns());
+    for (const auto& t : trials) writeRow(out, row(t));
+  });
+}
+
+void writeCurves(const std::string& file, const std::vector<MeasuredTrial>& trials) {
+  writeFileAtomically(file, [&](std::ostream& out) {
+    out << "file,events,curve,cycle_pct,mean_deg,sd_deg,strides\n";
+    for (const auto& t : trials) {
+      for (const auto& c : t.curves) {
+        const auto n = c.meanDeg.size();
+        for (Eigen::Index k = 0; k < n; ++k) {
+          writeRow(out, {t.file, t.measures.events.method, c.name, number(100.0 * static_cast<double>(k) / static_cast<double>(n - 1), 1),
+                         number(c.meanDeg[k], 3), number(c.sdDeg[k], 3), std::to_string(c.strides)});
+        }
+      }
+    }
+  });
+}
+
+nlohmann::json toJson(const MeasuredTrial& t) {
+  nlohmann::json j;
+  const auto cells = row(t);
+  for (size_t k = 0; k < cells.size(); ++k) j[columns()[k]] = cells[k];
+  auto times = [](const std::vector<double>& v) { return nlohmann::json(v); };
+  const auto& e = t.measures.events;
+  j["events_s"] = {{"right_strikes", times(e.right.strikesS)}, {"right_offs", times(e.right.offsS)},
+                   {"left_strikes", times(e.left.strikesS)}, {"left_offs", times(e.left.offsS)}};
+  return j;
+}
+
+// With --events both: each trial's kinematic measures against its file's, and the largest gaps.
+void printEventAgreement(const std::vector<MeasuredTrial>& all) {
+  double worstStride = 0, worstCadence = 0, worstStance = 0;
+  int pairs = 0;
+  for (size_t k = 0; k + 1 < all.size(); ++k) {
+    const auto& a = all[k].measures;
+    const auto& b = all[k + 1].measures;
+    if (all[k].file != all[k + 1].file || a.events.method != "file events") continue;
+    const double dStride = 100.0 * (b.strideTimeS - a.strideTimeS) / a.strideTimeS;
+    const double dCadence = 100.0 * (b.cadenceSpm - a.cadenceSpm) / a.cadenceSpm;
+    const double dStance = b.stancePct - a.stancePct;
+    std::cerr << all[k].file << ": kinematics − file events: stride time " << number(dStride, 2)
+              << " %, cadence " << number(dCadence, 2) << " %, stance " << number(dStance, 2) << " points\n";
+    worstStride = std::max(worstStride, std::abs(dStride));
+    worstCadence = std::max(worstCadence, std::abs(dCadence));
+    worstStance = std::isfinite(dStance) ? std::max(worstStance, std::abs(dStance)) : worstStance;
+    ++pairs;
+  }
+  if (pairs > 0)
+    std::cerr << "kinematics vs file events over " << pairs << " trials: largest |difference| stride time "
+              << number(worstStride, 2) << " %, cadence " << number(worstCadence, 2) << " %, stance "
+              << number(worstStance, 2) << " points\n";
+}
+
+void printTable(const std::vector<MeasuredTrial>& all) {
+  const std::vector<size_t> shown = {1, 2, 3, 5, 8, 9, 10, 12, 15, 17};
+  for (size_t c : shown) std::cout << columns()[c] << (c == shown.back() ? "\n" : "\t");
+  for (const auto& t : all) {
+    const auto cells = row(t);
+    for (size_t c : shown) std::cout << cells[c] << (c == shown.back() ? "\n" : "\t");
+  }
+}
+
+int runGait(const GaitArgs& args) {
+  std::vector<std::filesystem::path> paths(args.paths.begin(), args.paths.end());
+  std::vector<std::string> warnings;
+  std::vector<MeasuredTrial> all;
+  int failed = 0;
+  for (const auto& f : collectTrialFiles(paths, warnings)) {
+    try {
+      for (auto& m : measureFile(f, args)) all.push_back(std::move(m));
+    } catch (const Error& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      ++failed;
+    }
+  }
+  for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
+  if (all.empty() && failed == 0) std::cerr << "error: no trial files found in the given paths\n";
+  if (!args.out.empty()) writeMeasures(args.out, all);
+  if (!args.curves.empty()) writeCurves(args.curves, all);
+  if (args.json) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const auto& t : all) out.push_back(toJson(t));
+    std::cout << out.dump(2) << "\n";
+  } else {
+    printTable(all);
+  }
+  if (args.events == "both") printEventAgreement(all);
+  return failed > 0 || all.empty() ? kExitDataError : 0;
+}
+
+}  // namespace
+
+void addGaitCommand(CLI::App& app, int& exitCode) {
+  auto args = std::make_shared<GaitArgs>();
+  auto* cmd = app.add_subcommand(
+      "gait", "Gait measures of 3D trials: cadence, stride and step length, step width, speed, stance, "
+              "swing and double support, and hip/knee/shoulder/elbow flexion over the gait cycle. Exit 1 if "
+              "any trial cannot be measured.");
+  cmd->add_option("paths", args->paths, "3D trials (.c3d .bvh .amc .trc .csv), folders or manifest CSVs")->required();
+  cmd->add_option("--events", args->events,
+                  "Foot strikes and offs from: auto (the file's events when it has them, else the kinematics), "
+                  "kinematics, file, both (one row each, and their differences on stderr)")
+      ->check(CLI::IsMember({"auto", "kinematics", "file", "both"}));
+  cmd->add_option("--out", args->out, "CSV of the measures, one row per trial and event source");
+  cmd->add_option("--curves", args->curves, "CSV of the flexion curves over the gait cycle (mean, SD over strides)");
+  cmd->add_flag("--json", args->json, "One JSON object per trial (with the event times) instead of a table");
+  cmd->add_flag("--whole-trial", args->wholeTrial,
+                "Measure the whole trial, not only its steady straight-walking window");
+  cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's");
+  cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
+  cmd->add_option("--mapping", args->mapping, "Joint mapping file (JSON, docs/FORMATS.md)");
+  cmd->callback([args, &exitCode] { exitCode = runGait(*args); });
+}
+
+}  // namespace ew::cli

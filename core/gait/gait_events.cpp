@@ -1,0 +1,108 @@
+#include "core/gait/gait_events.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/common/skeleton.h"
+#include "core/gait/gait_cycles.h"
+
+namespace ew {
+namespace {
+
+int smoothingHalfWidth(double rateHz) { return std::max(0, static_cast<int>(std::lround(0.025 * rateHz))); }
+
+Joint ankleOf(Side side) { return side == Side::Left ? Joint::LAnkle : Joint::RAnkle; }
+
+std::vector<double> rowsToSeconds(const Eigen::VectorXd& signal, const std::vector<int>& rows,
+                                  double rateHz) {
+  std::vector<double> seconds;
+  seconds.reserve(rows.size());
+  for (int i : rows) seconds.push_back(refinedExtreme(signal, i) / rateHz);
+  return seconds;
+}
+
+// Near either end the smoothing window is cut short and the signal may still be rising past
+// the last frame: an extreme found there is the window's, not the foot's. Dropped.
+std::vector<int> awayFromEnds(const std::vector<int>& rows, Eigen::Index n, double rateHz) {
+  const int margin = smoothingHalfWidth(rateHz) + 1;
+  std::vector<int> kept;
+  for (int i : rows)
+    if (i >= margin && i + margin < n) kept.push_back(i);
+  return kept;
+}
+
+void sortedInto(std::vector<double>& times) { std::sort(times.begin(), times.end()); }
+
+}  // namespace
+
+Eigen::VectorXd ankleLeadMm(const Eigen::Ref<const Eigen::MatrixXd>& m, double rateHz, Side side) {
+  const Eigen::VectorXd raw =
+      m.col(3 * index(ankleOf(side)) + 1) - m.col(3 * index(Joint::Pelvis) + 1);
+  const int half = smoothingHalfWidth(rateHz);
+  const auto n = raw.size();
+  Eigen::VectorXd smooth(n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const Eigen::Index a = std::max<Eigen::Index>(0, i - half);
+    const Eigen::Index b = std::min<Eigen::Index>(n - 1, i + half);
+    smooth[i] = raw.segment(a, b - a + 1).mean();
+  }
+  return smooth;
+}
+
+std::vector<int> dominantPeaks(const Eigen::VectorXd& s, double rateHz) {
+  const auto n = s.size();
+  if (n < 3) return {};
+  const double mean = s.mean();
+  const double threshold = mean + 0.3 * (s.maxCoeff() - mean);
+  const auto reach = static_cast<Eigen::Index>(std::lround(0.5 / kMaxStrideHz * rateHz));
+  std::vector<int> peaks;
+  for (Eigen::Index i = 1; i + 1 < n; ++i) {
+    if (s[i] < threshold || s[i] < s[i - 1] || s[i] <= s[i + 1]) continue;
+    const Eigen::Index a = std::max<Eigen::Index>(0, i - reach);
+    const Eigen::Index b = std::min<Eigen::Index>(n - 1, i + reach);
+    if (s.segment(a, b - a + 1).maxCoeff() > s[i]) continue;
+    peaks.push_back(static_cast<int>(i));
+  }
+  return peaks;
+}
+
+double refinedExtreme(const Eigen::VectorXd& s, int i) {
+  if (i <= 0 || i + 1 >= s.size()) return i;
+  const double curvature = s[i - 1] - 2.0 * s[i] + s[i + 1];
+  if (!(std::abs(curvature) > 1e-12)) return i;
+  const double shift = 0.5 * (s[i - 1] - s[i + 1]) / curvature;
+  return i + std::clamp(shift, -0.5, 0.5);
+}
+
+GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& m, double rateHz) {
+  GaitEventSet events;
+  events.method = "kinematics";
+  if (m.rows() < 3 || m.cols() != kDims3 || !(rateHz > 0) || !std::isfinite(rateHz)) return events;
+  for (Side side : {Side::Right, Side::Left}) {
+    const Eigen::VectorXd lead = ankleLeadMm(m, rateHz, side);
+    if (!lead.allFinite()) continue;
+    const Eigen::VectorXd trail = -lead;
+    FootEvents& foot = side == Side::Right ? events.right : events.left;
+    foot.strikesS = rowsToSeconds(lead, awayFromEnds(dominantPeaks(lead, rateHz), lead.size(), rateHz), rateHz);
+    foot.offsS = rowsToSeconds(trail, awayFromEnds(dominantPeaks(trail, rateHz), trail.size(), rateHz), rateHz);
+  }
+  return events;
+}
+
+GaitEventSet gaitEventsFromFile(const std::vector<GaitEvent>& events, double durationS) {
+  GaitEventSet set;
+  set.method = "file events";
+  for (const auto& e : events) {
+    if (!(e.timeS >= 0 && e.timeS <= durationS)) continue;
+    FootEvents& foot = e.side == Side::Right ? set.right : set.left;
+    if (e.type == GaitEventType::FootStrike) foot.strikesS.push_back(e.timeS);
+    if (e.type == GaitEventType::FootOff) foot.offsS.push_back(e.timeS);
+  }
+  for (FootEvents* foot : {&set.right, &set.left}) {
+    sortedInto(foot->strikesS);
+    sortedInto(foot->offsS);
+  }
+  return set;
+}
+
+}  // namespace ew

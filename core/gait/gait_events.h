@@ -1,0 +1,54 @@
+#pragma once
+// Gait events — foot strike and foot off of each foot — from the kinematics of any 3D walker
+// (measured, reconstructed or synthesised), or from a file's own events (a C3D EVENT group).
+//
+// Kinematic events follow Zeni, Richards & Higginson (2008, Gait & Posture 27:710): in the
+// walker's own frame, a foot strikes where its forward distance from the pelvis is largest and
+// leaves the floor where it is smallest. Zeni use the heel for the strike and the toe for the
+// foot off; the 15 joints have neither, so both come from the ankle centre (the foot off is
+// then found a little early: measured against the Schreiber-Moissenet force-plate events in
+// docs/RESULTS.md, "Gait measures"). Extremes are located to a fraction of a frame by a
+// parabola through the three samples around them.
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "core/common/trial.h"
+
+namespace ew {
+
+struct FootEvents {
+  std::vector<double> strikesS;  // seconds from row 0, ascending
+  std::vector<double> offsS;
+};
+
+struct GaitEventSet {
+  FootEvents right, left;
+  std::string method;  // "kinematics" or "file events"
+
+  const FootEvents& of(Side side) const { return side == Side::Right ? right : left; }
+};
+
+// The ankle's forward lead on the pelvis (mm), smoothed over ~50 ms: y of the ankle minus y of
+// the pelvis in a canonical frame (SPEC §2: y forward). framesX45: T × 45.
+Eigen::VectorXd ankleLeadMm(const Eigen::Ref<const Eigen::MatrixXd>& framesX45, double rateHz,
+                            Side side);
+
+// Rows where `signal` has a local maximum above mean + 0.3·(max − mean) that dominates
+// ±0.5/kMaxStrideHz seconds (one foot strikes at most kMaxStrideHz times a second).
+std::vector<int> dominantPeaks(const Eigen::VectorXd& signal, double rateHz);
+
+// The sub-frame position of the extreme at row i (a parabola through rows i−1, i, i+1;
+// i itself at the ends), in rows.
+double refinedExtreme(const Eigen::VectorXd& signal, int i);
+
+// framesX45 in a canonical frame (x right, y forward, z up; progression may be removed).
+// Empty lists when the trial is too short or not finite.
+GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
+                                      double rateHz);
+
+// The file's foot strikes and foot offs between 0 and durationS, sorted per side.
+GaitEventSet gaitEventsFromFile(const std::vector<GaitEvent>& events, double durationS);
+
+}  // namespace ew
