@@ -10,6 +10,7 @@
 #include "core/engine/model_file.h"
 #include "core/gait/dataset.h"
 #include "core/io/joint_csv.h"
+#include "core/io/trc_writer.h"
 
 namespace ew::cli {
 namespace {
@@ -65,7 +66,7 @@ int runJoints(const JointsArgs& args) {
   const WalkingTrial out = completeFromModel(trial, args, comments);
   for (const auto& w : out.joints.warnings)
     std::cerr << "warning: " << args.file << ": " << w << "\n";
-  writeJointCsv(args.out, out.joints.positionsMm, out.joints.rateHz, comments);
+  writeJointTrajectories(args.out, out.joints.positionsMm, out.joints.rateHz, comments);
   std::cerr << "wrote " << args.out << ": " << out.joints.frameCount() << " frames at "
             << out.joints.rateHz << " Hz\n";
   return 0;
@@ -79,7 +80,7 @@ void addJointsCommand(CLI::App& app, int& exitCode) {
                                  "Write one trial's normalised 15-joint trajectories "
                                  "(steady window, canonical frame, mm) as CSV");
   cmd->add_option("file", args->file, "Motion-capture file (.c3d .bvh .amc .trc .csv)")->required();
-  cmd->add_option("--out", args->out, "Output CSV (written atomically)")->required();
+  cmd->add_option("--out", args->out, "Output: the 15-joint CSV, or a TRC (OpenSim's axes) when it ends in .trc; written atomically")->required();
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
   cmd->add_option("--mapping", args->mapping,

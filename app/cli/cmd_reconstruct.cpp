@@ -31,6 +31,7 @@
 #include "core/engines/engine.h"
 #include "core/experiments/snippet_experiment.h"
 #include "core/experiments/view_csv.h"
+#include "core/io/trc_writer.h"
 #include "core/snippet/snippet_file.h"
 #include "core/synth/population.h"
 #include "core/gait/dataset.h"
@@ -282,7 +283,7 @@ int runReconstructSnippet(const ReconstructArgs& a) {
   }
   std::ostringstream angle;
   angle << r.alphaDeg;
-  writeJointCsv(a.out, r.framesMm, view.rateHz,
+  writeJointTrajectories(a.out, r.framesMm, view.rateHz,
                 {"snippet-engine reconstruction of " + a.input + " (MAP, view " + angle.str() + " deg)",
                  "prior " + report["prior"].get<std::string>()});
   std::cerr << "wrote " << a.out << "\n";
@@ -402,7 +403,7 @@ int runReconstruct(const ReconstructArgs& a) {
   if (anyJoint(in.missing))
     comments.push_back("model_estimated_joints=" + jointList(in.missing) +
                        " (not in the input: estimated from the model)");
-  writeJointCsv(a.out, frames, in.view.rateHz, comments);
+  writeJointTrajectories(a.out, frames, in.view.rateHz, comments);
   printReport(report);
   if (a.json) std::cout << report.dump(2) << "\n";
   return 0;
@@ -471,7 +472,7 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--mapping", args->mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md) for a 3D marker input whose set "
                   "the program does not know, or a DeepLabCut keypoint file's body parts");
-  cmd->add_option("--out", args->out, "3D joint CSV to write")->required();
+  cmd->add_option("--out", args->out, "3D joints to write: the 15-joint CSV, or a TRC (OpenSim's axes) when it ends in .trc")->required();
   cmd->add_option("--angle", args->angleDeg, "Known view angle in degrees (0 frontal, +-90 profile)");
   cmd->add_flag("--unknown-angle", args->unknownAngle, "Estimate the view angle over the whole circle");
   cmd->add_option("--method", args->method, "lsq or map")->check(CLI::IsMember({"lsq", "map"}))->capture_default_str();

@@ -11,6 +11,7 @@
 #include "core/common/errors.h"
 #include "core/engine/model_file.h"
 #include "core/io/joint_csv.h"
+#include "core/io/trc_writer.h"
 
 namespace ew::cli {
 namespace {
@@ -116,7 +117,7 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   std::ostringstream what;
   what << "eigenwalker reconstruction of " << a.input << " through an unknown camera (azimuth " << fit.camera.alphaDeg
        << " deg, elevation " << fit.camera.elevationDeg << " deg), model " << a.modelName;
-  writeJointCsv(a.out, frames, t.rateHz, {what.str()});
+  writeJointTrajectories(a.out, frames, t.rateHz, {what.str()});
   json report = reportJson(a, t, fit);
   if (report["focal_source"].is_string()) report["focal_source"] = focalSource;
   printSummary(report);

@@ -12,6 +12,7 @@
 #include "core/gait/joint_angles.h"
 #include "core/io/joint_csv.h"
 #include "core/io/load_trial.h"
+#include "core/io/trc_writer.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/skeleton/skeleton_camera.h"
 
@@ -77,7 +78,7 @@ int runReconstructSkeleton(const SkeletonArgs& a) {
   const BoneLengths bones = boneLengthsFromFrames(reference.positionsMm, a.reference);
   const SkeletonCameraResult r = reconstructThroughCamera(keypoints.jointsPx, camera, bones, keypoints.rateHz, a.input);
   const bool world = camera.hasExtrinsics;
-  writeJointCsv(a.out, world ? r.worldMm : r.sequence.framesMm, keypoints.rateHz,
+  writeJointTrajectories(a.out, world ? r.worldMm : r.sequence.framesMm, keypoints.rateHz,
                 {"skeleton engine (Zou et al. 2009) of " + a.input + " through camera " + camera.name + " of " + a.camera,
                  world ? "frame: the calibration's world (mm)" : "frame: the camera's (x right, y down, z forward; mm)"});
   json report = {{"engine", "skeleton"}, {"input", a.input}, {"camera", camera.name}, {"frames", r.sequence.framesMm.rows()},
