@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -255,6 +256,58 @@ LinePlot cameraFigure(const EvaluationResults& r) {
   return p;
 }
 
+// Bland-Altman plot of one gait measure: per engine, each walker and view a point (mean of the
+// two measurements, reconstruction − motion capture), the bias as a solid line and the 95 %
+// limits of agreement as dashed lines.
+LinePlot blandAltmanFigure(const std::vector<GaitAgreementRow>& rows, const std::string& measure,
+                           const std::string& title, const std::string& unit) {
+  LinePlot p{title, "mean of motion capture and reconstruction (" + unit + ")",
+             "reconstruction - motion capture (" + unit + ")", {}, false, {}, {}, {}, {}, {}, {}};
+  const std::array<Rgb, 3> colors{Rgb{214, 39, 40}, Rgb{31, 119, 180}, Rgb{44, 160, 44}};
+  std::map<std::string, PlotSeries> points;
+  std::vector<std::string> order;
+  double lo = INFINITY, hi = -INFINITY, yLo = 0.0, yHi = 0.0;
+  for (const auto& r : rows) {
+    if (r.measure != measure || !std::isfinite(r.mocap) || !std::isfinite(r.reconstructed)) continue;
+    if (!points.count(r.engine)) {
+      order.push_back(r.engine);
+      points[r.engine] = PlotSeries{r.engine, {}, {}, {}, colors[(order.size() - 1) % colors.size()], false, true, false};
+    }
+    const double mean = 0.5 * (r.mocap + r.reconstructed), diff = r.reconstructed - r.mocap;
+    points[r.engine].x.push_back(mean);
+    points[r.engine].y.push_back(diff);
+    lo = std::min(lo, mean), hi = std::max(hi, mean), yLo = std::min(yLo, diff), yHi = std::max(yHi, diff);
+  }
+  if (order.empty()) return p;
+  std::vector<GaitAgreementRow> pooled;
+  for (const auto& r : rows) {
+    if (r.measure != measure) continue;
+    GaitAgreementRow any = r;
+    any.angleDeg = 0.0;  // one bias and one pair of limits per engine, over every view
+    pooled.push_back(any);
+  }
+  for (const auto& engine : order) {
+    const PlotSeries& pts = points[engine];
+    p.series.push_back(pts);
+    for (const auto& b : blandAltman(pooled)) {
+      if (b.engine != engine || b.pairs == 0) continue;
+      for (double y : {b.bias, b.loaLow, b.loaHigh}) {
+        p.series.push_back(PlotSeries{"", {lo, hi}, {y, y}, {}, pts.color, y != b.bias, false, true});
+        yLo = std::min(yLo, y), yHi = std::max(yHi, y);
+      }
+      p.notes.push_back(engine + ": bias " + fmt(b.bias, 3) + ", limits " + fmt(b.loaLow, 3) + " to " +
+                        fmt(b.loaHigh, 3) + " (" + std::to_string(b.pairs) + " pairs)");
+    }
+  }
+  const double pad = 0.08 * std::max(1e-9, yHi - yLo);
+  p.yMin = yLo - pad;
+  p.yMax = yHi + pad;
+  const double xPad = 0.05 * std::max(1e-9, hi - lo);
+  p.xMin = lo - xPad;
+  p.xMax = hi + xPad;
+  return p;
+}
+
 }  // namespace
 
 std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir, const EvaluationResults& r) {
@@ -278,6 +331,12 @@ std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir, 
     names.push_back("missing_joints.png");
   }
   if (r.ran.count(Experiment::Camera) && !r.camera.empty()) line("camera.png", cameraFigure(r));
+  if (r.ran.count(Experiment::Snippet) && !r.snippet.gait.empty()) {
+    line("gait_bland_altman_stride_length.png",
+         blandAltmanFigure(r.snippet.gait, "stride_length", "Stride length from one view: Bland-Altman", "m"));
+    line("gait_bland_altman_knee_flexion_range.png",
+         blandAltmanFigure(r.snippet.gait, "knee_flexion_range", "Knee flexion range from one view: Bland-Altman", "deg"));
+  }
   if (r.ran.count(Experiment::LowerBody) && !r.lowerBody.empty()) {
     saveBarPlot(dir / "lower_body.png", lowerBodyFigure(r));
     names.push_back("lower_body.png");
@@ -503,7 +562,7 @@ void drawSeries(cv::Mat& img, const Axes& ax, const PlotSeries& s) {
   }
   cv::Mat plotArea = img(a);
   const cv::Point offset(a.x, a.y);
-  for (size_t i = 1; i < s.x.size(); ++i) {
+  for (size_t i = 1; s.lines && i < s.x.size(); ++i) {
     if (!ax.drawable(s.x[i - 1], s.y[i - 1]) || !ax.drawable(s.x[i], s.y[i])) continue;
     const cv::Point p0 = ax.at(s.x[i - 1], s.y[i - 1]) - offset, p1 = ax.at(s.x[i], s.y[i]) - offset;
     if (s.dashed) dashedLine(plotArea, p0, p1, bgr(s.color), 2);
@@ -537,8 +596,10 @@ cv::Rect legendBox(const cv::Rect& a, cv::Size size, const std::vector<cv::Point
   return best;
 }
 
-void drawLegend(cv::Mat& img, const cv::Rect& a, const std::vector<PlotSeries>& series,
+void drawLegend(cv::Mat& img, const cv::Rect& a, const std::vector<PlotSeries>& all,
                 const std::vector<std::string>& notes, const std::vector<cv::Point>& drawn = {}) {
+  std::vector<PlotSeries> series;
+  std::copy_if(all.begin(), all.end(), std::back_inserter(series), [](const PlotSeries& s) { return !s.label.empty(); });
   int width = 0;
   for (const auto& s : series) width = std::max(width, cv::getTextSize(s.label, kFont, 0.5, 1, nullptr).width + 50);
   for (const auto& n : notes) width = std::max(width, cv::getTextSize(n, kFont, 0.45, 1, nullptr).width + 16);
@@ -550,7 +611,7 @@ void drawLegend(cv::Mat& img, const cv::Rect& a, const std::vector<PlotSeries>& 
   for (const auto& s : series) {
     const cv::Point l0(box.x + 8, y - 5), l1(box.x + 38, y - 5);
     if (s.dashed) dashedLine(img, l0, l1, bgr(s.color), 2);
-    else cv::line(img, l0, l1, bgr(s.color), 2, cv::LINE_AA);
+    else if (s.lines) cv::line(img, l0, l1, bgr(s.color), 2, cv::LINE_AA);
     if (s.markers) cv::circle(img, (l0 + l1) / 2, 4, bgr(s.color), cv::FILLED, cv::LINE_AA);
     text(img, s.label, box.x + 46, y);
     y += 22;

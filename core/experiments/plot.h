@@ -22,6 +22,7 @@ struct PlotSeries {
   Rgb color{0, 0, 0};
   bool dashed = false;
   bool markers = false;
+  bool lines = true;  // false: points only (a scatter); needs markers
 };
 
 struct LinePlot {
@@ -29,6 +30,7 @@ struct LinePlot {
   std::vector<PlotSeries> series;
   bool logX = false;
   std::optional<double> xMin, xMax, yMin, yMax;  // default: the data's range (y from 0)
+  // A series with an empty label is drawn but not listed in the legend.
   std::optional<double> xTickStep;
   std::vector<std::string> notes;  // short lines printed under the legend
 };

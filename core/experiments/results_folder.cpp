@@ -132,6 +132,19 @@ std::string snippetClustersCsv(const std::vector<ClusterChoiceRow>& rows) {
   });
 }
 
+std::string gaitAgreementCsv(const std::vector<GaitAgreementRow>& rows) {
+  return csv(kGaitAgreementHeader, rows, [](const GaitAgreementRow& r) {
+    return join({r.subject, r.engine, num(r.angleDeg), r.measure, num(r.mocap), num(r.reconstructed)});
+  });
+}
+
+std::string blandAltmanCsv(const std::vector<BlandAltmanRow>& rows) {
+  return csv(kBlandAltmanHeader, rows, [](const BlandAltmanRow& r) {
+    return join({r.engine, num(r.angleDeg), r.measure, r.unit, std::to_string(r.pairs), std::to_string(r.unmeasured),
+                 num(r.mocapMean), num(r.bias), num(r.sd), num(r.loaLow), num(r.loaHigh), num(r.meanAbsDifference)});
+  });
+}
+
 namespace {
 
 // An engine's columns: empty when it was not asked for.
@@ -201,8 +214,15 @@ json snippetSummary(const SnippetExperimentResults& r) {
                      {"subjects_median_within_10_deg_share",
                       static_cast<double>(subjectsWithin) / static_cast<double>(std::max<size_t>(1, subjects.size()))}});
   }
+  json gait = json::array();
+  for (const auto& b : blandAltman(r.gait)) {
+    const auto finite = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+    gait.push_back({{"engine", b.engine}, {"angle_deg", b.angleDeg}, {"measure", b.measure}, {"unit", b.unit},
+                    {"pairs", b.pairs}, {"unmeasured", b.unmeasured}, {"mocap_mean", finite(b.mocapMean)},
+                    {"bias", finite(b.bias)}, {"loa_low", finite(b.loaLow)}, {"loa_high", finite(b.loaHigh)}});
+  }
   return {{"engines", engines}, {"theta", theta}, {"train_seconds_mean", r.trainSecondsMean},
-          {"training_snippets_mean", r.snippetsMean}};
+          {"training_snippets_mean", r.snippetsMean}, {"gait_bland_altman", gait}};
 }
 
 json knownViewSummary(const std::vector<ViewErrorRow>& rows) {
@@ -377,6 +397,8 @@ std::vector<std::string> writeResultsFolder(const fs::path& dir, const Evaluatio
       add("snippet_engines.csv", snippetEnginesCsv(r.snippet.rows));
       add("snippet_phase.csv", snippetPhaseCsv(r.snippet.phase));
       add("snippet_theta.csv", snippetThetaCsv(r.snippet.theta));
+      add("gait_agreement.csv", gaitAgreementCsv(r.snippet.gait));
+      add("gait_bland_altman.csv", blandAltmanCsv(blandAltman(r.snippet.gait)));
     }
     if (r.ran.count(Experiment::SnippetClusters)) add("snippet_clusters.csv", snippetClustersCsv(r.snippetClusters));
     if (options.plots) {

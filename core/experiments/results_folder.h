@@ -34,11 +34,16 @@ inline constexpr const char* kSnippetPhaseHeader = "angle_deg,engine,phase_bin,m
 inline constexpr const char* kSnippetThetaHeader =
     "subject,angle_deg,snippet,true_deg,estimated_deg,error_deg,clip_estimate_deg";
 inline constexpr const char* kSnippetClustersHeader = "clusters,held_out_log_likelihood,em_held_out_log_likelihood";
+inline constexpr const char* kGaitAgreementHeader = "subject,engine,angle_deg,measure,mocap,reconstructed";
+inline constexpr const char* kBlandAltmanHeader =
+    "engine,angle_deg,measure,unit,pairs,unmeasured,mocap_mean,bias,sd,loa_low,loa_high,mean_abs_difference";
 
 std::string snippetEnginesCsv(const std::vector<EngineRow>& rows);
 std::string snippetPhaseCsv(const std::vector<PhaseRow>& rows);
 std::string snippetThetaCsv(const std::vector<ThetaRow>& rows);
 std::string snippetClustersCsv(const std::vector<ClusterChoiceRow>& rows);
+std::string gaitAgreementCsv(const std::vector<GaitAgreementRow>& rows);
+std::string blandAltmanCsv(const std::vector<BlandAltmanRow>& rows);
 
 std::string harmonicsCsv(const std::vector<HarmonicsRow>& rows);
 std::string varianceCsv(const std::vector<VarianceRow>& rows);

@@ -11,6 +11,7 @@
 #include "core/engine/projection.h"
 #include "core/engine/reconstruction.h"
 #include "core/engines/engine.h"
+#include "core/experiments/gait_agreement.h"
 #include "core/experiments/leave_one_out.h"
 #include "core/snippet/snippet_data.h"
 
@@ -68,18 +69,33 @@ struct FoldOutput {
   std::vector<EngineRow> rows;
   std::vector<ThetaRow> theta;
   std::vector<std::string> warnings;
+  std::vector<GaitAgreementRow> gait;
   // per engine, angle, bin: sum of per-frame errors and counts
   std::vector<std::tuple<std::string, double, int, double>> phaseSamples;
+};
+
+// What a clip's rows collect beyond MPJPE: per-frame errors for the phase bins, and the gait
+// measures of the reconstruction beside the truth's (the whole held-out trial only).
+struct ClipScoring {
+  bool phase = false;
+  bool gait = false;
 };
 
 // One engine's row for a clip at one view: its frames scored, or the reason it gave none.
 // `reconstruct` returns the engine's frames; `truth` is what they are scored against.
 template <class Reconstruct>
 EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const std::string& clipName, double alpha,
-                    const Eigen::MatrixXd& truth, const Reconstruct& reconstruct, FoldOutput& out, bool phase) {
+                    const Eigen::MatrixXd& truth, const Reconstruct& reconstruct, FoldOutput& out,
+                    const ClipScoring& scoring) {
+  const bool phase = scoring.phase;
   EngineRow row{fold.subject, engine, clipName, alpha, static_cast<int>(truth.rows()), 0.0, 0.0, ""};
   try {
-    const ClipErrors e = clipErrors(reconstruct(), truth, alpha);
+    const Eigen::MatrixXd frames = reconstruct();
+    const ClipErrors e = clipErrors(frames, truth, alpha);
+    if (scoring.gait) {
+      const auto gait = gaitAgreementRows(fold.subject, engine, alpha, truth, frames, kClipRateHz);
+      out.gait.insert(out.gait.end(), gait.begin(), gait.end());
+    }
     row.mpjpeMm = e.mpjpeMm;
     row.depthErrorMm2 = e.depthErrorMm2;
     if (phase)
@@ -97,6 +113,7 @@ bool uses(const SnippetExperimentOptions& o, EngineKind kind) {
 
 void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& clipName, const SnippetExperimentOptions& o,
                FoldOutput& out, const FourierFit* phaseFit) {
+  const ClipScoring scoring{phaseFit != nullptr, clipName == "trial"};
   for (double alpha : o.anglesDeg) {
     // Each engine is given the image it is designed for: the snippet engine's prior was
     // learnt overground, the eigenwalker's model in place (the pelvis's image drift is
@@ -104,7 +121,7 @@ void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& cli
     if (uses(o, EngineKind::Snippet))
       out.rows.push_back(engineRow(fold, "snippet MAP", clipName, alpha, clip.withProgression, [&] {
         return reconstructWithEngine(fold.snippet, knownView(fold, clip.withProgression, alpha, clip.strideHz)).framesMm;
-      }, out, phaseFit != nullptr));
+      }, out, scoring));
     // The skeleton engine is given the walker's own bone lengths (the paper measures its
     // performer) and the frames in place: an orthographic view says nothing of depth, so
     // its walker never moves along the line of sight.
@@ -113,12 +130,12 @@ void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& cli
         SkeletonEngine skeleton;
         skeleton.bones = boneLengthsFromFrames(clip.withoutProgression, fold.subject);
         return reconstructWithEngine(skeleton, knownView(fold, clip.withoutProgression, alpha, clip.strideHz)).framesMm;
-      }, out, phaseFit != nullptr));
+      }, out, scoring));
     if (uses(o, EngineKind::Eigenwalker))
       out.rows.push_back(engineRow(fold, "eigenwalker MAP", clipName, alpha, clip.withoutProgression, [&] {
         return reconstructWithEngine(fold.eigenwalker, knownView(fold, clip.withoutProgression, alpha, clip.strideHz))
             .framesMm;
-      }, out, phaseFit != nullptr));
+      }, out, scoring));
   }
 }
 
@@ -237,6 +254,7 @@ SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::ve
     res.rows.insert(res.rows.end(), out.rows.begin(), out.rows.end());
     res.theta.insert(res.theta.end(), out.theta.begin(), out.theta.end());
     res.warnings.insert(res.warnings.end(), out.warnings.begin(), out.warnings.end());
+    res.gait.insert(res.gait.end(), out.gait.begin(), out.gait.end());
     for (const auto& [engine, alpha, bin, err] : out.phaseSamples) {
       auto& b = bins[{engine, alpha, bin}];
       b.first += err;

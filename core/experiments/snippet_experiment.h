@@ -27,6 +27,7 @@
 #include "core/engine/model.h"
 #include "core/engine/walker_set.h"
 #include "core/engines/engine.h"
+#include "core/experiments/gait_agreement.h"
 #include "core/gait/dataset.h"
 #include "core/snippet/snippet_prior.h"
 #include "core/snippet/snippet_sequence.h"
@@ -77,6 +78,9 @@ struct SnippetExperimentResults {
   std::vector<EngineRow> rows;
   std::vector<PhaseRow> phase;
   std::vector<ThetaRow> theta;
+  // The gait measures of each engine's reconstruction of the held-out trial beside the
+  // motion capture's, per walker and view (gait_agreement.h).
+  std::vector<GaitAgreementRow> gait;
   std::vector<std::string> warnings;
   double trainSecondsMean = 0.0;       // one fold's prior
   int snippetsMean = 0;                // training snippets per fold

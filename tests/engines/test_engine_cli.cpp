@@ -111,6 +111,12 @@ TEST_F(EngineCli, EvaluateScoresTheEnginesAskedFor) {
     const std::string csv = test::readTextFile(root_ / "ev" / "snippet_engines.csv");
     EXPECT_NE(csv.find(engine), std::string::npos) << args;
     EXPECT_EQ(csv.find(engine == "snippet MAP" ? "eigenwalker MAP" : "snippet MAP"), std::string::npos) << args;
+    // The gait measures of each reconstruction beside the walker's own (issue 17).
+    const std::string gait = test::readTextFile(root_ / "ev" / "gait_agreement.csv");
+    EXPECT_NE(gait.find("," + engine + ",0,stride_length,"), std::string::npos) << gait;
+    const std::string ba = test::readTextFile(root_ / "ev" / "gait_bland_altman.csv");
+    EXPECT_EQ(ba.rfind("engine,angle_deg,measure,unit,pairs", 0), 0u) << ba;
+    EXPECT_NE(ba.find(engine + ",90,knee_flexion_range,deg,4,0,"), std::string::npos) << ba;
   }
   const test::ShellRun paper =
       runCli("evaluate --data four/walkers.csv --engine snippet --experiment known-view --out ev2", root_);

@@ -1,0 +1,122 @@
+#include "core/experiments/gait_agreement.h"
+
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include "core/common/errors.h"
+#include "core/gait/gait_measures.h"
+#include "core/gait/joint_angles.h"
+
+namespace ew {
+namespace {
+
+struct MeasuredSide {
+  std::optional<GaitMeasures> measures;
+  double kneeRangeDeg = NAN, hipRangeDeg = NAN;
+};
+
+double rangeOf(const std::vector<CycleCurve>& curves, const std::string& right, const std::string& left) {
+  double sum = 0.0;
+  int count = 0;
+  for (const auto& c : curves) {
+    if (c.name != right && c.name != left) continue;
+    sum += c.meanDeg.maxCoeff() - c.meanDeg.minCoeff();
+    ++count;
+  }
+  return count > 0 ? sum / count : NAN;
+}
+
+MeasuredSide measure(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, double rateHz, const std::string& name) {
+  MeasuredSide side;
+  try {
+    side.measures = measureGait(framesMm, rateHz, gaitEventsFromKinematics(framesMm, rateHz), std::nullopt, name);
+    const JointAngles angles = jointAngles(framesMm, Eigen::Vector3d::UnitZ(), name);
+    const auto curves = flexionCycleCurves(angles.degrees, angles.names, rateHz, *side.measures);
+    side.kneeRangeDeg = rangeOf(curves, "knee_angle_r", "knee_angle_l");
+    side.hipRangeDeg = rangeOf(curves, "hip_flexion_r", "hip_flexion_l");
+  } catch (const Error&) {
+    side.measures.reset();  // "could not be measured" is the NaN the row carries
+  }
+  return side;
+}
+
+double valueOf(const MeasuredSide& s, const std::string& measure) {
+  if (!s.measures) return NAN;
+  const GaitMeasures& g = *s.measures;
+  if (measure == "cadence") return g.cadenceSpm;
+  if (measure == "stride_length") return g.strideLengthM;
+  if (measure == "step_width") return g.stepWidthM;
+  if (measure == "speed") return g.speedMps;
+  if (measure == "stance") return g.stancePct;
+  if (measure == "double_support") return g.doubleSupportPct;
+  if (measure == "knee_flexion_range") return s.kneeRangeDeg;
+  if (measure == "hip_flexion_range") return s.hipRangeDeg;
+  return NAN;
+}
+
+}  // namespace
+
+const std::vector<GaitMeasureName>& agreementMeasures() {
+  static const std::vector<GaitMeasureName> names = {
+      {"cadence", "steps/min"}, {"stride_length", "m"},     {"step_width", "m"},
+      {"speed", "m/s"},         {"stance", "%"},            {"double_support", "%"},
+      {"knee_flexion_range", "deg"}, {"hip_flexion_range", "deg"}};
+  return names;
+}
+
+std::vector<GaitAgreementRow> gaitAgreementRows(const std::string& subject, const std::string& engine,
+                                                double angleDeg, const Eigen::Ref<const Eigen::MatrixXd>& truthMm,
+                                                const Eigen::Ref<const Eigen::MatrixXd>& reconstructedMm,
+                                                double rateHz) {
+  const MeasuredSide truth = measure(truthMm, rateHz, subject);
+  const MeasuredSide recon = measure(reconstructedMm, rateHz, subject);
+  std::vector<GaitAgreementRow> rows;
+  for (const auto& m : agreementMeasures())
+    rows.push_back({subject, engine, angleDeg, m.name, valueOf(truth, m.name), valueOf(recon, m.name)});
+  return rows;
+}
+
+std::vector<BlandAltmanRow> blandAltman(const std::vector<GaitAgreementRow>& rows) {
+  std::vector<BlandAltmanRow> out;
+  std::map<std::tuple<std::string, double, std::string>, size_t> slot;
+  std::vector<std::vector<double>> differences, mocap;
+  for (const auto& r : rows) {
+    const auto key = std::make_tuple(r.engine, r.angleDeg, r.measure);
+    auto [it, added] = slot.emplace(key, out.size());
+    if (added) {
+      BlandAltmanRow b;
+      b.engine = r.engine;
+      b.angleDeg = r.angleDeg;
+      b.measure = r.measure;
+      for (const auto& m : agreementMeasures())
+        if (r.measure == m.name) b.unit = m.unit;
+      out.push_back(b);
+      differences.emplace_back();
+      mocap.emplace_back();
+    }
+    if (std::isfinite(r.mocap) && std::isfinite(r.reconstructed)) {
+      differences[it->second].push_back(r.reconstructed - r.mocap);
+      mocap[it->second].push_back(r.mocap);
+    } else {
+      ++out[it->second].unmeasured;
+    }
+  }
+  for (size_t k = 0; k < out.size(); ++k) {
+    const auto& d = differences[k];
+    BlandAltmanRow& b = out[k];
+    b.pairs = static_cast<int>(d.size());
+    if (d.empty()) continue;
+    const Eigen::Map<const Eigen::VectorXd> dv(d.data(), static_cast<Eigen::Index>(d.size()));
+    const Eigen::Map<const Eigen::VectorXd> mv(mocap[k].data(), static_cast<Eigen::Index>(d.size()));
+    b.mocapMean = mv.mean();
+    b.bias = dv.mean();
+    b.meanAbsDifference = dv.cwiseAbs().mean();
+    b.sd = d.size() > 1 ? std::sqrt((dv.array() - b.bias).square().sum() / (static_cast<double>(d.size()) - 1.0)) : 0.0;
+    b.loaLow = b.bias - 1.96 * b.sd;
+    b.loaHigh = b.bias + 1.96 * b.sd;
+  }
+  return out;
+}
+
+}  // namespace ew

@@ -1,0 +1,60 @@
+#pragma once
+// How good are gait measures from one view? For a held-out walker seen at one angle, the
+// gait measures (core/gait/gait_measures.h) of an engine's reconstruction beside those of the
+// motion capture it was made from, and their agreement over walkers as clinical validation
+// studies report it (Bland & Altman 1986, Lancet 327:307): the bias (mean difference,
+// reconstruction − motion capture) and the 95 % limits of agreement (bias ± 1.96 SD of the
+// differences).
+//
+// Both sides are measured the same way — events from the kinematics of their own frames, speed
+// and footprints from the stance feet (a reconstruction has no progression of its own) — so a
+// difference is what the reconstruction changed, not a difference of methods (those are
+// compared apart: the kinematic events against the C3D's, and the stance feet's speed against
+// the progression, docs/GAIT.md).
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ew {
+
+// The measures compared, with their units: cadence (steps/min), stride_length (m), step_width
+// (m), speed (m/s), stance (%), double_support (%), knee_flexion_range (deg: the mean over
+// both knees of the range of the stride-averaged knee flexion curve), hip_flexion_range (deg).
+struct GaitMeasureName {
+  const char* name;
+  const char* unit;
+};
+const std::vector<GaitMeasureName>& agreementMeasures();
+
+struct GaitAgreementRow {
+  std::string subject, engine;
+  double angleDeg = 0.0;
+  std::string measure;
+  double mocap = NAN, reconstructed = NAN;  // NaN: that side could not be measured
+};
+
+// One walker at one view: a row per measure. truthMm and reconstructedMm: T × 45 at rateHz in
+// the walker's frame (x right, y forward, z up; progression may be present or removed). A side
+// that cannot be measured (no complete stride) gives NaN, never an exception.
+std::vector<GaitAgreementRow> gaitAgreementRows(const std::string& subject, const std::string& engine,
+                                                double angleDeg, const Eigen::Ref<const Eigen::MatrixXd>& truthMm,
+                                                const Eigen::Ref<const Eigen::MatrixXd>& reconstructedMm,
+                                                double rateHz);
+
+struct BlandAltmanRow {
+  std::string engine;
+  double angleDeg = 0.0;
+  std::string measure, unit;
+  int pairs = 0;        // walkers where both sides were measured
+  int unmeasured = 0;   // where the reconstruction (or the mocap) gave no value
+  double mocapMean = NAN;
+  double bias = NAN, sd = NAN, loaLow = NAN, loaHigh = NAN;
+  double meanAbsDifference = NAN;
+};
+
+// Grouped by engine, angle and measure, in the order first seen.
+std::vector<BlandAltmanRow> blandAltman(const std::vector<GaitAgreementRow>& rows);
+
+}  // namespace ew
