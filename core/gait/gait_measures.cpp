@@ -110,6 +110,13 @@ Eigen::Vector2d stanceFootSlide(const Eigen::Ref<const Eigen::MatrixXd>& m, doub
   return sx.empty() ? Eigen::Vector2d(NAN, NAN) : Eigen::Vector2d(median(sx), median(sy));
 }
 
+// The pelvis's mean horizontal velocity over the whole clip (mm/s, x and y): the least-squares
+// line through its track.
+Eigen::Vector2d pelvisTrend(const Eigen::Ref<const Eigen::MatrixXd>& m, double rateHz) {
+  const int x = 3 * index(Joint::Pelvis);
+  return {slopePerS(m, x, 0, m.rows() - 1, rateHz), slopePerS(m, x + 1, 0, m.rows() - 1, rateHz)};
+}
+
 // Where a foot stood in one stance: its ankle's mean position over foot flat, forward in the
 // ground frame (the frame's y plus the walker's progression since row 0), mm.
 struct Footprint {
@@ -209,8 +216,11 @@ GaitMeasures measureGait(const Eigen::Ref<const Eigen::MatrixXd>& m, double rate
   for (const auto& s : g.strides) durations.push_back(s.nextStrikeS - s.strikeS);
   g.strideTimeS = meanOf(durations);
   g.cadenceSpm = 120.0 / g.strideTimeS;
+  // The frame may carry the walker forward (overground) or not (progression removed): speed
+  // is the pelvis's mean velocity relative to the stance feet either way.
   const Eigen::Vector2d slide = stanceFootSlide(m, rateHz, events, g.strideTimeS);
-  g.stanceFootSpeedMps = -slide.y() / 1000.0;
+  const Eigen::Vector2d pelvis = pelvisTrend(m, rateHz);
+  g.stanceFootSpeedMps = (pelvis.y() - slide.y()) / 1000.0;
   if (progressionSpeedMps && *progressionSpeedMps > 0) {
     g.speedMps = *progressionSpeedMps;
     g.speedSource = "progression";
@@ -220,7 +230,7 @@ GaitMeasures measureGait(const Eigen::Ref<const Eigen::MatrixXd>& m, double rate
   }
   // The floor under the walker: its known progression, else the stance feet's own slide.
   const Eigen::Vector2d floorSlide = progressionSpeedMps && *progressionSpeedMps > 0
-                                         ? Eigen::Vector2d(0.0, -*progressionSpeedMps * 1000.0)
+                                         ? Eigen::Vector2d(pelvis.x(), pelvis.y() - *progressionSpeedMps * 1000.0)
                                          : (slide.allFinite() ? slide : Eigen::Vector2d::Zero());
   fillSteps(g, m, rateHz, floorSlide);
   fillStance(g);

@@ -17,11 +17,12 @@
 //   stance %        from a foot's strike to its foot off, in % of its stride; swing = 100 − stance
 //   double support  both feet down: stance right % + stance left % − 100 (walking has no flight)
 //   speed           the walker's progression when known (motion capture), else from the stance
-//                   feet: a flat foot stands still on the floor, so relative to the walker's
-//                   frame its ankle slides back at the walking speed (the median over foot-flat
-//                   windows of that slope). A reconstruction has no progression of its own.
+//                   feet: a flat foot stands still on the floor, so the walker's speed is the
+//                   pelvis's mean velocity (its least-squares line) minus the stance ankle's
+//                   (the median over foot-flat windows of its slope) — whether the frame carries
+//                   the walker forward or has its progression removed, as a reconstruction does.
 // Footprints are put on the floor by adding the progression back (along y), or without it by
-// taking the stance feet's slide (x and y) out of the ankle's track. The slide is measured a
+// taking the stance ankle's slope (x and y) out of its track. The slide is measured a
 // little slow — the ankle is not quite still from 10 to 30 % — by a median 1.5 % (up to 4 %)
 // on the shared walkers against their progression (docs/GAIT.md), and stride length with it.
 // A side's stride counts only when its strike, foot off and next strike are all in the trial.
