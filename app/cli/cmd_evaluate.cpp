@@ -248,6 +248,10 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "                     trial, 0.5 s or whole trial (--experiment snippet only; docs/SNIPPETS.md)\n"
       "  snippet_phase.csv  angle_deg,engine,phase_bin,mpjpe_mm,frames: per-frame error over the gait cycle\n"
       "  snippet_theta.csv  subject,angle_deg,snippet,true_deg,estimated_deg,error_deg,clip_estimate_deg: unknown view\n"
+      "  gait_agreement.csv subject,engine,angle_deg,measure,mocap,reconstructed: gait measures of each engine's\n"
+      "                     reconstruction beside the motion capture's (--experiment snippet; docs/GAIT.md)\n"
+      "  gait_bland_altman.csv engine,angle_deg,measure,unit,pairs,unmeasured,mocap_mean,bias,sd,loa_low,loa_high,\n"
+      "                     mean_abs_difference: their agreement (Bland-Altman)\n"
       "  snippet_clusters.csv clusters,held_out_log_likelihood,em_held_out_log_likelihood (--experiment\n"
       "                     snippet-clusters only)\n"
       "  summary.json, fig*.png. DIR is written to a temporary sibling and renamed into place.");

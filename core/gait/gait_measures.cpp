@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "core/common/errors.h"
@@ -221,6 +222,16 @@ GaitMeasures measureGait(const Eigen::Ref<const Eigen::MatrixXd>& m, double rate
   const Eigen::Vector2d slide = stanceFootSlide(m, rateHz, events, g.strideTimeS);
   const Eigen::Vector2d pelvis = pelvisTrend(m, rateHz);
   g.stanceFootSpeedMps = (pelvis.y() - slide.y()) / 1000.0;
+  // A progression far below what the feet show is no walk over the floor: a treadmill, or
+  // frames whose progression was removed before (a joints CSV or TRC). The feet then tell.
+  if (progressionSpeedMps && std::isfinite(g.stanceFootSpeedMps) &&
+      *progressionSpeedMps < 0.5 * g.stanceFootSpeedMps) {
+    std::ostringstream note;
+    note << std::fixed << std::setprecision(2) << "walking in place (progression " << *progressionSpeedMps
+         << " m/s, the stance feet " << g.stanceFootSpeedMps << " m/s): speed from the stance feet";
+    g.notes.push_back(note.str());
+    progressionSpeedMps.reset();
+  }
   if (progressionSpeedMps && *progressionSpeedMps > 0) {
     g.speedMps = *progressionSpeedMps;
     g.speedSource = "progression";

@@ -65,7 +65,8 @@ struct GaitMeasures {
 
 // framesX45: T × 45 in a canonical frame at rateHz. progressionSpeedMps: the walker's mean
 // speed when the frames had progression removed (WalkingTrial::speedMps), empty for a
-// reconstruction. Throws Error(BadArgument) naming `name` for a bad shape or rate and
+// reconstruction; ignored, with a note, when it is under half the stance feet's speed (a
+// treadmill, or frames whose progression was removed before they were given). Throws Error(BadArgument) naming `name` for a bad shape or rate and
 // Error(BadData) when no complete stride of either foot is found (a trial shorter than a
 // stride, or not walking). Measures the events cannot give are NaN with a note.
 GaitMeasures measureGait(const Eigen::Ref<const Eigen::MatrixXd>& framesX45, double rateHz,

@@ -107,6 +107,16 @@ TEST(GaitMeasures, WithoutProgressionTheSpeedComesFromTheStanceFeet) {
   EXPECT_NEAR(g.speedMps, kSpeedMps, 1e-9);
 }
 
+TEST(GaitMeasures, AProgressionFarBelowTheFeetsIsWalkingInPlace) {
+  // A treadmill, or frames whose progression was removed before: the feet tell the speed.
+  const GaitMeasures g = measureGait(walkerOnStances(250), 100.0, handEvents(), 0.003, "in place");
+  EXPECT_EQ(g.speedSource, "stance feet");
+  EXPECT_NEAR(g.speedMps, kSpeedMps, 1e-9);
+  EXPECT_NEAR(g.strideLengthM, 1.3, 1e-9);
+  ASSERT_FALSE(g.notes.empty());
+  EXPECT_NE(g.notes.front().find("walking in place"), std::string::npos);
+}
+
 TEST(GaitMeasures, AStrideWithoutItsFootOffCountsForTimeButNotStance) {
   GaitEventSet e = handEvents();
   e.left.offsS.clear();
