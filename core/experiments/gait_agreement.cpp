@@ -16,25 +16,14 @@ struct MeasuredSide {
   double kneeRangeDeg = NAN, hipRangeDeg = NAN;
 };
 
-double rangeOf(const std::vector<CycleCurve>& curves, const std::string& right, const std::string& left) {
-  double sum = 0.0;
-  int count = 0;
-  for (const auto& c : curves) {
-    if (c.name != right && c.name != left) continue;
-    sum += c.meanDeg.maxCoeff() - c.meanDeg.minCoeff();
-    ++count;
-  }
-  return count > 0 ? sum / count : NAN;
-}
-
 MeasuredSide measure(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, double rateHz, const std::string& name) {
   MeasuredSide side;
   try {
     side.measures = measureGait(framesMm, rateHz, gaitEventsFromKinematics(framesMm, rateHz), std::nullopt, name);
     const JointAngles angles = jointAngles(framesMm, Eigen::Vector3d::UnitZ(), name);
     const auto curves = flexionCycleCurves(angles.degrees, angles.names, rateHz, *side.measures);
-    side.kneeRangeDeg = rangeOf(curves, "knee_angle_r", "knee_angle_l");
-    side.hipRangeDeg = rangeOf(curves, "hip_flexion_r", "hip_flexion_l");
+    side.kneeRangeDeg = flexionRangeDeg(curves, "knee_angle");
+    side.hipRangeDeg = flexionRangeDeg(curves, "hip_flexion");
   } catch (const Error&) {
     side.measures.reset();  // "could not be measured" is the NaN the row carries
   }

@@ -259,6 +259,17 @@ const std::vector<std::string>& flexionCurveNames() {
   return names;
 }
 
+double flexionRangeDeg(const std::vector<CycleCurve>& curves, const std::string& base) {
+  double sum = 0.0;
+  int count = 0;
+  for (const auto& c : curves) {
+    if (c.name != base + "_r" && c.name != base + "_l") continue;
+    sum += c.meanDeg.maxCoeff() - c.meanDeg.minCoeff();
+    ++count;
+  }
+  return count > 0 ? sum / count : NAN;
+}
+
 std::vector<CycleCurve> flexionCycleCurves(const Eigen::Ref<const Eigen::MatrixXd>& angles,
                                            const std::vector<std::string>& names, double rateHz,
                                            const GaitMeasures& measures, int samples) {

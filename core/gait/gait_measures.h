@@ -92,4 +92,9 @@ std::vector<CycleCurve> flexionCycleCurves(const Eigen::Ref<const Eigen::MatrixX
 // The names flexionCycleCurves reports, right side then left.
 const std::vector<std::string>& flexionCurveNames();
 
+// The range (max − min, degrees) of a flexion's stride-averaged curve, the mean over the two
+// sides present; `base` without the side suffix ("knee_angle", "hip_flexion"). NaN when
+// neither side has a curve.
+double flexionRangeDeg(const std::vector<CycleCurve>& curves, const std::string& base);
+
 }  // namespace ew

@@ -12,10 +12,12 @@
 #include "core/engine/model.h"
 #include "core/engine/model_file.h"
 #include "core/engine/projection.h"
+#include "core/gait/joint_angles.h"
 #include "core/io/atomic_write.h"
 #include "core/io/bvh_writer.h"
 #include "core/io/joint_csv.h"
 #include "core/io/load_trial.h"
+#include "core/io/trc_writer.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "core/keypoints/keypoint_layout.h"
 #include "ui/app/held_model.h"
@@ -928,6 +930,52 @@ void setAnalysisMetric(AppState& s, const std::string& name) {
   }
 }
 
+// [SECTION] Gait report
+
+namespace {
+
+// The reconstruction's frames carried forward at its own measured speed: what OpenSim shows
+// walking over the floor.
+Eigen::MatrixXd walkedOverTheFloor(const GaitSummary& g) {
+  Eigen::MatrixXd frames = g.framesMm;
+  const double speed = g.measures && std::isfinite(g.measures->speedMps) ? g.measures->speedMps : 0.0;
+  for (Eigen::Index f = 0; f < frames.rows(); ++f)
+    for (int j = 0; j < kJointCount; ++j) frames(f, 3 * j + 1) += speed * 1000.0 * static_cast<double>(f) / kReportRateHz;
+  return frames;
+}
+
+}  // namespace
+
+void exportGaitReport(AppState& s, const std::filesystem::path& path) {
+  GaitPanel& p = s.panels.gait;
+  s.derived.update(s.doc);  // a script may have changed the document since the last frame
+  p.update(s);
+  if (!p.recon.measures) throw std::invalid_argument("no measured walker to export (" + p.recon.error + ")");
+  const std::string ext = path.extension().string();
+  const GaitBand empty;
+  const GaitBand& band = p.band ? *p.band : empty;
+  if (ext == ".csv") {
+    writeGaitReportCsv(path.string(), p.mocap, p.recon, band);
+  } else if (ext == ".json") {
+    const Walker* w = s.doc.selectedWalker();
+    writeGaitReportJson(path.string(),
+                        {s.doc.mode == Mode::Explore ? std::string("explore") : (w ? w->id : std::string()),
+                         s.doc.mode == Mode::Explore ? std::string("synthesised") : engineName(s.doc.recon.engine)},
+                        p.mocap, p.recon, band);
+  } else if (ext == ".trc") {
+    const Eigen::MatrixXd frames = walkedOverTheFloor(p.recon);
+    writeTrc(path, frames, kReportRateHz);
+    std::filesystem::path mot = path;
+    mot.replace_extension(".mot");
+    writeJointAngles(mot.string(), jointAngles(frames, Eigen::Vector3d::UnitZ(), path.string()), kReportRateHz,
+                     {"gait report: the reconstruction's joint angles (eigenwalker)"});
+  } else {
+    throw std::invalid_argument("gait report: export to .csv, .json or .trc (with its .mot), not '" + ext + "'");
+  }
+  p.status = "wrote " + path.filename().string() + (ext == ".trc" ? " and its .mot" : "");
+  s.log.info("Wrote " + path.string() + " (gait report)");
+}
+
 // [SECTION] Opening data
 
 void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
@@ -1089,6 +1137,8 @@ void showPanel(AppState& s, const std::string& name, bool shown) {
     s.panels.exports.open = shown;
   } else if (name == "analysis") {
     s.panels.analysis.open = shown;
+  } else if (name == "gait") {
+    s.panels.gait.open = shown;
   } else if (name == "help") {
     s.panels.help.open = shown;
   } else if (name == "data") {
@@ -1101,7 +1151,7 @@ void showPanel(AppState& s, const std::string& name, bool shown) {
     s.panels.header.modelMenuOpen = shown;
   } else {
     throw std::invalid_argument("unknown panel \"" + name +
-                                "\" (known: export, analysis, help, data, notice_details, model)");
+                                "\" (known: export, analysis, gait, help, data, notice_details, model)");
   }
 }
 

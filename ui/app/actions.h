@@ -90,6 +90,12 @@ void exportAnalysisCsv(AppState& s, const std::filesystem::path& path);
 // The plotted metric: "E_a", "E_r" or "MPJPE".
 void setAnalysisMetric(AppState& s, const std::string& name);
 
+// [SECTION] Gait report (ui/app/gait_report.h, ui/panels/gait_panel.h)
+// By the extension: .csv or .json the report; .trc the reconstruction walked over the floor at
+// its measured speed as an OpenSim marker file, and its joint angles beside it as .mot.
+// Throws ew::Error naming the file, std::invalid_argument when there is nothing to export.
+void exportGaitReport(AppState& s, const std::filesystem::path& path);
+
 // [SECTION] Opening data
 // Files or folders dropped on the window (or the script action "drop"): the items that exist
 // and are a folder or a supported file (.c3d .bvh .asf .amc .trc .csv) are opened, the others

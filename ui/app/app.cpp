@@ -487,6 +487,7 @@ class App {
       p.log.draw(state_, ctx, l.log);
       p.exports.draw(state_, ctx);
       p.analysis.draw(state_, ctx);
+      p.gait.draw(state_, ctx);
       p.data.draw(state_, ctx);
       p.tour.draw(state_, ctx);
       p.help.draw(state_, ctx);

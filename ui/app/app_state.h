@@ -23,6 +23,7 @@
 #include "ui/panels/controls_panel.h"
 #include "ui/panels/data_panel.h"
 #include "ui/panels/export_panel.h"
+#include "ui/panels/gait_panel.h"
 #include "ui/panels/header_panel.h"
 #include "ui/panels/help_panel.h"
 #include "ui/panels/input_view_panel.h"
@@ -128,6 +129,7 @@ struct Panels {
   NoticePanel notice;
   ExportPanel exports;
   AnalysisPanel analysis;
+  GaitPanel gait;
   TourPanel tour;
   DataPanel data;
   HelpPanel help;

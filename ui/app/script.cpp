@@ -27,7 +27,7 @@ const std::set<std::string>& knownActions() {
       "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame",
       "set_engine", "video_frame", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "track_video",
-      "close_video"};
+      "close_video", "export_gait_report"};
   // clang-format on
   return names;
 }
@@ -302,6 +302,8 @@ void applyAction(AppState& s, const ScriptAction& a) {
         !a.argument[1].is_boolean())
       throw std::invalid_argument("expects [NAME, true|false]");
     actions::showPanel(s, a.argument[0].get<std::string>(), a.argument[1].get<bool>());
+  } else if (n == "export_gait_report") {
+    actions::exportGaitReport(s, text(a));
   } else if (n == "export_analysis_csv") {
     actions::exportAnalysisCsv(s, text(a));
   } else if (n == "set_analysis_metric") {

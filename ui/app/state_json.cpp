@@ -103,6 +103,7 @@ nlohmann::json reconstructionJson(const Derived& derived) {
 }
 
 nlohmann::json optionalJson(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+std::optional<double> finiteOr(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
 
 // The keypoint clip: what the user chose, and the last fit (camera, walk, residuals).
 nlohmann::json clipJson(const AppState& s) {
@@ -186,6 +187,21 @@ const char* levelName(LogLevel level) {
   return level == LogLevel::Error ? "error" : level == LogLevel::Warning ? "warning" : "info";
 }
 
+// The gait report as the panel last computed it (show_panel gait, or an export, computes it).
+nlohmann::json gaitJson(const AppState& s) {
+  const GaitPanel& p = s.panels.gait;
+  nlohmann::json rows = nlohmann::json::object();
+  for (size_t r = 0; r < gaitRows().size(); ++r) {
+    const std::string key = gaitRows()[r].key;
+    rows[key] = {{"motion_capture", optionalJson(finiteOr(gaitRowValue(p.mocap, key)))},
+                 {"reconstruction", optionalJson(finiteOr(gaitRowValue(p.recon, key)))},
+                 {"population_mean", optionalJson(p.band ? finiteOr(p.band->rowMean[r]) : std::nullopt)},
+                 {"population_sd", optionalJson(p.band ? finiteOr(p.band->rowSd[r]) : std::nullopt)}};
+  }
+  return {{"open", p.open}, {"band_walkers", p.band ? p.band->walkers : 0}, {"measures", rows},
+          {"reconstruction_error", p.recon.error}, {"status", p.status}};
+}
+
 }  // namespace
 
 nlohmann::json stateJson(const AppState& s) {
@@ -200,6 +216,7 @@ nlohmann::json stateJson(const AppState& s) {
   j["mode"] = modeName(d.mode);
   j["clip"] = clipJson(s);
   j["video"] = videoJson(s);
+  j["gait"] = gaitJson(s);
   j["angle_deg"] = d.recon.alphaDeg;
   j["method"] = d.recon.estimator == Estimator::Lsq ? "lsq" : "map";
   j["engine"] = engineName(d.recon.engine);

@@ -170,6 +170,9 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
     ImGui::SameLine();
     if (ImGui::Button("Analysis")) s.panels.analysis.open = !s.panels.analysis.open;
     ImGui::SameLine();
+    if (ImGui::Button("Gait")) s.panels.gait.open = !s.panels.gait.open;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gait report: cadence, stride, stance, … and flexion curves, against the population");
+    ImGui::SameLine();
     if (ImGui::Button("Tour")) {
       if (s.panels.tour.active) {
         actions::tourEnd(s);

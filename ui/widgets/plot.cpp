@@ -47,6 +47,25 @@ void dashedLine(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 c, float t, float dash
 
 }  // namespace
 
+namespace {
+
+bool hasBand(const PlotSeries& s) { return s.bandLow.size() == s.x.size() && s.bandHigh.size() == s.x.size() && !s.x.empty(); }
+
+// The band under a series: one translucent quad per sample interval where both ends are finite.
+template <class ToX, class ToY>
+void drawBand(ImDrawList* dl, const PlotSeries& s, const ToX& X, const ToY& Y) {
+  if (!hasBand(s)) return;
+  const ImU32 fill = (s.colour & ~IM_COL32_A_MASK) | (static_cast<ImU32>(56) << IM_COL32_A_SHIFT);
+  for (std::size_t i = 0; i + 1 < s.x.size(); ++i) {
+    const double lo0 = s.bandLow[i], hi0 = s.bandHigh[i], lo1 = s.bandLow[i + 1], hi1 = s.bandHigh[i + 1];
+    if (!std::isfinite(lo0) || !std::isfinite(hi0) || !std::isfinite(lo1) || !std::isfinite(hi1)) continue;
+    dl->AddQuadFilled(ImVec2(X(s.x[i]), Y(hi0)), ImVec2(X(s.x[i + 1]), Y(hi1)), ImVec2(X(s.x[i + 1]), Y(lo1)),
+                      ImVec2(X(s.x[i]), Y(lo0)), fill);
+  }
+}
+
+}  // namespace
+
 void drawPlot(const char* id, const ImVec2& size, const PlotSpec& spec, std::span<const PlotSeries> series,
               float scale) {
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
@@ -69,6 +88,10 @@ void drawPlot(const char* id, const ImVec2& size, const PlotSpec& spec, std::spa
       xhi = std::max(xhi, x);
       ylo = std::min(ylo, y);
       yhi = std::max(yhi, y);
+      if (hasBand(s) && std::isfinite(s.bandLow[i]) && std::isfinite(s.bandHigh[i])) {
+        ylo = std::min(ylo, s.bandLow[i]);
+        yhi = std::max(yhi, s.bandHigh[i]);
+      }
     }
   }
   if (!std::isfinite(xlo)) {
@@ -145,6 +168,7 @@ void drawPlot(const char* id, const ImVec2& size, const PlotSpec& spec, std::spa
       dl->AddText(ImVec2(lx, a.y + 2.0f * scale), m.colour, m.label.c_str());
     }
   }
+  for (const auto& s : series) drawBand(dl, s, X, Y);
   std::vector<ImVec2> run;
   for (const auto& s : series) {
     const std::size_t n = std::min(s.x.size(), s.y.size());
@@ -174,7 +198,7 @@ void drawPlot(const char* id, const ImVec2& size, const PlotSpec& spec, std::spa
   dl->AddRect(a, b, gridC);
 
   // Legend (top right, inside the plot).
-  if (!series.empty()) {
+  if (!series.empty() && spec.legend) {
     float lw = 0.0f;
     for (const auto& s : series) lw = std::max(lw, ImGui::CalcTextSize(s.label.c_str()).x);
     const float sw = 22.0f * scale, pad = 6.0f * scale;

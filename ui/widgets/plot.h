@@ -19,6 +19,8 @@ struct PlotSeries {
   float thickness = 2.0f;        // × the UI scale; 0: no line (points only)
   bool dashed = false;
   bool points = false;           // a dot at each sample
+  // Optional band drawn under the line (e.g. a normative mean ± SD): same length as x.
+  std::span<const double> bandLow = {}, bandHigh = {};
 };
 
 struct PlotMarker {
@@ -36,6 +38,7 @@ struct PlotSpec {
   std::vector<PlotMarker> markers;
   const char* valueFormat = "%.3g";  // hover read-out
   bool legendBottom = false;    // legend in the bottom-right corner instead of the top-right
+  bool legend = true;           // false: no legend (the caller draws one for several plots)
 };
 
 // Draws the plot filling `size` at the cursor (an ImGui item: hover works like a button).

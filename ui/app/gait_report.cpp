@@ -1,0 +1,216 @@
+#include "ui/app/gait_report.h"
+
+#include <cmath>
+#include <iomanip>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
+
+#include "core/common/errors.h"
+#include "core/engine/fourier.h"
+#include "core/gait/joint_angles.h"
+#include "core/io/atomic_write.h"
+#include "ui/app/population.h"
+
+namespace ew::ui {
+namespace {
+
+double meanOf(const std::vector<double>& v) {
+  double sum = 0.0;
+  for (double x : v) sum += x;
+  return v.empty() ? NAN : sum / static_cast<double>(v.size());
+}
+
+double sdOf(const std::vector<double>& v) {
+  if (v.size() < 2) return v.empty() ? NAN : 0.0;
+  const double m = meanOf(v);
+  double ss = 0.0;
+  for (double x : v) ss += (x - m) * (x - m);
+  return std::sqrt(ss / (static_cast<double>(v.size()) - 1.0));
+}
+
+const CycleCurve* curveOf(const GaitSummary& s, const std::string& name) {
+  for (const auto& c : s.curves)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+std::string cell(double v, int decimals = 4) {
+  if (!std::isfinite(v)) return "";
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(decimals) << v;
+  return out.str();
+}
+
+double curveSample(const CycleCurve* c, Eigen::Index k) { return c ? c->meanDeg[k] : NAN; }
+double bandSample(const Eigen::VectorXd* v, Eigen::Index k) { return v ? (*v)[k] : NAN; }
+
+}  // namespace
+
+GaitSummary summarizeFourierWalker(const Eigen::VectorXd& w, double strideHz, std::optional<double> speedMps,
+                                   const std::string& name) {
+  GaitSummary out;
+  try {
+    if (w.size() != 225 || !(strideHz > 0)) throw Error(ErrorKind::BadArgument, name, "", "no 3D walker to measure");
+    const int frames = static_cast<int>(std::lround(kReportCycles / strideHz * kReportRateHz));
+    out.framesMm = synthesizeFrames(w, 2.0 * std::numbers::pi * strideHz, 0.0, frameTimes(frames, kReportRateHz));
+    const GaitEventSet events = gaitEventsFromKinematics(out.framesMm, kReportRateHz);
+    out.measures = measureGait(out.framesMm, kReportRateHz, events, speedMps, name);
+    const JointAngles angles = jointAngles(out.framesMm, Eigen::Vector3d::UnitZ(), name);
+    out.curves = flexionCycleCurves(angles.degrees, angles.names, kReportRateHz, *out.measures);
+  } catch (const Error& e) {
+    out.measures.reset();
+    out.error = e.problem();
+  }
+  return out;
+}
+
+const std::vector<GaitRow>& gaitRows() {
+  static const std::vector<GaitRow> rows = {
+      {"cadence_spm", "cadence (steps/min)", 1},
+      {"stride_time_s", "stride time (s)", 3},
+      {"stride_length_m", "stride length (m)", 2},
+      {"step_length_r_m", "step length, right (m)", 2},
+      {"step_length_l_m", "step length, left (m)", 2},
+      {"step_width_m", "step width (m)", 3},
+      {"speed_mps", "speed (m/s)", 2},
+      {"stance_pct", "stance (%)", 1},
+      {"swing_pct", "swing (%)", 1},
+      {"double_support_pct", "double support (%)", 1},
+      {"hip_flexion_range_deg", "hip flexion range (°)", 1},
+      {"knee_flexion_range_deg", "knee flexion range (°)", 1},
+  };
+  return rows;
+}
+
+double gaitRowValue(const GaitSummary& s, const std::string& key) {
+  if (!s.measures) return NAN;
+  const GaitMeasures& g = *s.measures;
+  if (key == "cadence_spm") return g.cadenceSpm;
+  if (key == "stride_time_s") return g.strideTimeS;
+  if (key == "stride_length_m") return g.strideLengthM;
+  if (key == "step_length_r_m") return g.stepLengthRightM;
+  if (key == "step_length_l_m") return g.stepLengthLeftM;
+  if (key == "step_width_m") return g.stepWidthM;
+  if (key == "speed_mps") return g.speedMps;
+  if (key == "stance_pct") return g.stancePct;
+  if (key == "swing_pct") return g.swingPct;
+  if (key == "double_support_pct") return g.doubleSupportPct;
+  if (key == "hip_flexion_range_deg") return flexionRangeDeg(s.curves, "hip_flexion");
+  if (key == "knee_flexion_range_deg") return flexionRangeDeg(s.curves, "knee_angle");
+  return NAN;
+}
+
+const Eigen::VectorXd* GaitBand::curveMeanOf(const std::string& name) const {
+  for (size_t k = 0; k < curveNames.size(); ++k)
+    if (curveNames[k] == name) return &curveMean[k];
+  return nullptr;
+}
+
+const Eigen::VectorXd* GaitBand::curveSdOf(const std::string& name) const {
+  for (size_t k = 0; k < curveNames.size(); ++k)
+    if (curveNames[k] == name) return &curveSd[k];
+  return nullptr;
+}
+
+GaitBand populationGaitBand(const Population& population) {
+  GaitBand band;
+  const auto& rows = gaitRows();
+  std::vector<std::vector<double>> values(rows.size());
+  std::vector<std::vector<Eigen::VectorXd>> curves(flexionCurveNames().size());
+  for (int i = 0; i < population.walkerCount(); ++i) {
+    const Walker& w = population.walkers[static_cast<size_t>(i)];
+    const WalkerFacts& f = population.facts[static_cast<size_t>(i)];
+    const GaitSummary s = summarizeFourierWalker(w.fit.w, f.strideHz, f.speedMps, w.id);
+    if (!s.measures) {
+      ++band.unmeasured;
+      continue;
+    }
+    ++band.walkers;
+    for (size_t r = 0; r < rows.size(); ++r) {
+      const double v = gaitRowValue(s, rows[r].key);
+      if (std::isfinite(v)) values[r].push_back(v);
+    }
+    for (size_t c = 0; c < curves.size(); ++c)
+      if (const CycleCurve* curve = curveOf(s, flexionCurveNames()[c])) curves[c].push_back(curve->meanDeg);
+  }
+  for (const auto& v : values) {
+    band.rowMean.push_back(meanOf(v));
+    band.rowSd.push_back(sdOf(v));
+  }
+  for (size_t c = 0; c < curves.size(); ++c) {
+    if (curves[c].empty()) continue;
+    const auto n = curves[c].front().size();
+    Eigen::VectorXd mean = Eigen::VectorXd::Zero(n), sd = Eigen::VectorXd::Zero(n);
+    for (const auto& v : curves[c]) mean += v;
+    mean /= static_cast<double>(curves[c].size());
+    for (const auto& v : curves[c]) sd += (v - mean).cwiseAbs2();
+    if (curves[c].size() > 1) sd = (sd / (static_cast<double>(curves[c].size()) - 1.0)).cwiseSqrt();
+    band.curveNames.push_back(flexionCurveNames()[c]);
+    band.curveMean.push_back(mean);
+    band.curveSd.push_back(sd);
+  }
+  return band;
+}
+
+void writeGaitReportCsv(const std::string& file, const GaitSummary& mocap, const GaitSummary& recon,
+                        const GaitBand& band) {
+  writeFileAtomically(file, [&](std::ostream& out) {
+    out << "measure,motion_capture,reconstruction,population_mean,population_sd\n";
+    const auto& rows = gaitRows();
+    for (size_t r = 0; r < rows.size(); ++r) {
+      out << rows[r].key << ',' << cell(gaitRowValue(mocap, rows[r].key)) << ','
+          << cell(gaitRowValue(recon, rows[r].key)) << ',' << cell(band.rowMean[r]) << ',' << cell(band.rowSd[r])
+          << '\n';
+    }
+    out << "\ncurve,cycle_pct,motion_capture_deg,reconstruction_deg,population_mean_deg,population_sd_deg\n";
+    for (const auto& name : flexionCurveNames()) {
+      const CycleCurve *a = curveOf(mocap, name), *b = curveOf(recon, name);
+      const Eigen::VectorXd *m = band.curveMeanOf(name), *sd = band.curveSdOf(name);
+      const CycleCurve* any = a ? a : b;
+      if (!any) continue;
+      const auto n = any->meanDeg.size();
+      for (Eigen::Index k = 0; k < n; ++k) {
+        out << name << ',' << cell(100.0 * static_cast<double>(k) / static_cast<double>(n - 1), 1) << ','
+            << cell(curveSample(a, k), 3) << ',' << cell(curveSample(b, k), 3) << ',' << cell(bandSample(m, k), 3)
+            << ',' << cell(bandSample(sd, k), 3) << '\n';
+      }
+    }
+  });
+}
+
+void writeGaitReportJson(const std::string& file, const GaitReportText& what, const GaitSummary& mocap,
+                         const GaitSummary& recon, const GaitBand& band) {
+  using nlohmann::json;
+  const auto value = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  json measures = json::object();
+  const auto& rows = gaitRows();
+  for (size_t r = 0; r < rows.size(); ++r) {
+    measures[rows[r].key] = {{"motion_capture", value(gaitRowValue(mocap, rows[r].key))},
+                             {"reconstruction", value(gaitRowValue(recon, rows[r].key))},
+                             {"population_mean", value(band.rowMean[r])},
+                             {"population_sd", value(band.rowSd[r])}};
+  }
+  json curves = json::object();
+  for (const auto& name : flexionCurveNames()) {
+    const auto series = [](const CycleCurve* c) {
+      return c ? json(std::vector<double>(c->meanDeg.data(), c->meanDeg.data() + c->meanDeg.size())) : json(nullptr);
+    };
+    const auto band1 = [](const Eigen::VectorXd* v) {
+      return v ? json(std::vector<double>(v->data(), v->data() + v->size())) : json(nullptr);
+    };
+    curves[name] = {{"motion_capture_deg", series(curveOf(mocap, name))},
+                    {"reconstruction_deg", series(curveOf(recon, name))},
+                    {"population_mean_deg", band1(band.curveMeanOf(name))},
+                    {"population_sd_deg", band1(band.curveSdOf(name))}};
+  }
+  const json doc = {{"walker", what.walker},
+                    {"engine", what.engine},
+                    {"cycle_samples", 101},
+                    {"band_walkers", band.walkers},
+                    {"measures", measures},
+                    {"curves", curves}};
+  writeFileAtomically(file, [&](std::ostream& out) { out << doc.dump(2) << "\n"; });
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,74 @@
+#pragma once
+// The gait report (issue 17): the spatiotemporal gait measures and flexion curves over the
+// gait cycle (core/gait/gait_measures.h) of the selected walker and of its reconstruction,
+// beside the loaded population's mean ± SD. GL-free; the panel draws it
+// (ui/panels/gait_panel.h), the export writes it.
+//
+// Every walker the viewer holds is a Fourier walker (SPEC §3: two harmonics, one cycle), so
+// each is measured the same way: walked in place for kReportCycles cycles at kReportRateHz,
+// events from its kinematics. The motion capture's side and the population are given their
+// measured progression speed; a reconstruction has none, so its speed and footprints come from
+// its stance feet (docs/GAIT.md: a two-harmonic stance ankle does not stand still, and
+// lengths read about 10 % long that way).
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/gait/gait_measures.h"
+
+namespace ew::ui {
+
+struct Population;
+
+inline constexpr double kReportCycles = 4.0;
+inline constexpr double kReportRateHz = 100.0;
+
+// One walker measured: its measures and curves, or why it could not be.
+struct GaitSummary {
+  std::optional<GaitMeasures> measures;
+  std::vector<CycleCurve> curves;  // flexionCurveNames(), those measured
+  Eigen::MatrixXd framesMm;        // the frames measured (kReportCycles at kReportRateHz, in place)
+  std::string error;
+};
+
+// w: 225 (SPEC §3, phase origin 0); strideHz > 0. speedMps: the walker's progression when known.
+GaitSummary summarizeFourierWalker(const Eigen::VectorXd& w, double strideHz, std::optional<double> speedMps,
+                                   const std::string& name);
+
+// The rows of the report's table, in order: a label with its unit and the value of a summary.
+struct GaitRow {
+  const char* key;    // "cadence_spm", … (the export's column)
+  const char* label;  // "cadence (steps/min)"
+  int decimals;
+};
+const std::vector<GaitRow>& gaitRows();
+double gaitRowValue(const GaitSummary& s, const std::string& key);  // NaN when not measured
+
+// The population's mean and SD per row and per curve sample, over the walkers measured.
+struct GaitBand {
+  int walkers = 0;        // measured
+  int unmeasured = 0;     // no complete stride
+  std::vector<double> rowMean, rowSd;  // gaitRows() order
+  std::vector<std::string> curveNames;
+  std::vector<Eigen::VectorXd> curveMean, curveSd;
+  const Eigen::VectorXd* curveMeanOf(const std::string& name) const;
+  const Eigen::VectorXd* curveSdOf(const std::string& name) const;
+};
+GaitBand populationGaitBand(const Population& population);
+
+// Written atomically; errors are ew::Error naming the file.
+//  CSV: measure,motion_capture,reconstruction,population_mean,population_sd then a blank line and
+//       curve,side,cycle_pct,motion_capture_deg,reconstruction_deg,population_mean_deg,population_sd_deg
+//  JSON: {"walker", "engine", "measures": {key: {…}}, "curves": {name: {…}}, "band_walkers"}
+struct GaitReportText {
+  std::string walker, engine;
+};
+void writeGaitReportCsv(const std::string& file, const GaitSummary& mocap, const GaitSummary& recon,
+                        const GaitBand& band);
+void writeGaitReportJson(const std::string& file, const GaitReportText& what, const GaitSummary& mocap,
+                         const GaitSummary& recon, const GaitBand& band);
+
+}  // namespace ew::ui
