@@ -633,6 +633,15 @@ void setEngine(AppState& s, EngineKind engine) {
   s.doc.recon.engine = engine;
 }
 
+void setCompareEngines(AppState& s, bool on) {
+  s.doc.compareEngines = on;
+  if (on) s.doc.mode = Mode::Reconstruct;
+}
+
+void setCompareShown(AppState& s, EngineKind engine, bool shown) {
+  s.doc.compareShown[static_cast<std::size_t>(engine)] = shown;
+}
+
 void setSigma2(AppState& s, double sigma2Mm2) {
   if (!std::isfinite(sigma2Mm2) || sigma2Mm2 <= 0.0)
     throw std::invalid_argument("sigma2 must be a positive number of mm^2");
@@ -950,20 +959,21 @@ void exportGaitReport(AppState& s, const std::filesystem::path& path) {
   GaitPanel& p = s.panels.gait;
   s.derived.update(s.doc);  // a script may have changed the document since the last frame
   p.update(s);
-  if (!p.recon.measures) throw std::invalid_argument("no measured walker to export (" + p.recon.error + ")");
+  const GaitSummary& recon = p.recon();
+  if (!recon.measures) throw std::invalid_argument("no measured walker to export (" + recon.error + ")");
   const std::string ext = path.extension().string();
   const GaitBand empty;
   const GaitBand& band = p.band ? *p.band : empty;
   if (ext == ".csv") {
-    writeGaitReportCsv(path.string(), p.mocap, p.recon, band);
+    writeGaitReportCsv(path.string(), p.mocap, p.exportColumns(), band);
   } else if (ext == ".json") {
     const Walker* w = s.doc.selectedWalker();
     writeGaitReportJson(path.string(),
                         {s.doc.mode == Mode::Explore ? std::string("explore") : (w ? w->id : std::string()),
                          s.doc.mode == Mode::Explore ? std::string("synthesised") : engineName(s.doc.recon.engine)},
-                        p.mocap, p.recon, band);
+                        p.mocap, p.exportColumns(), band);
   } else if (ext == ".trc") {
-    const Eigen::MatrixXd frames = walkedOverTheFloor(p.recon);
+    const Eigen::MatrixXd frames = walkedOverTheFloor(recon);
     writeTrc(path, frames, kReportRateHz);
     std::filesystem::path mot = path;
     mot.replace_extension(".mot");

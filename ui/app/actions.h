@@ -39,6 +39,10 @@ void setAngle(AppState& s, double alphaDeg);
 void setEstimator(AppState& s, Estimator estimator);
 // The engine that reconstructs in reconstruct mode (its name: engineName).
 void setEngine(AppState& s, EngineKind engine);
+// Compare mode: every engine reconstructs the walker, drawn together (reconstruct mode).
+void setCompareEngines(AppState& s, bool on);
+// Which engines compare mode draws.
+void setCompareShown(AppState& s, EngineKind engine, bool shown);
 void setSigma2(AppState& s, double sigma2Mm2);  // the user's choice: stops following the model
 // Until the user sets σ², it is the held model's stored optimum (or the paper's 70 mm²).
 void followModelSigma2(AppState& s);

@@ -1,5 +1,6 @@
 #include "ui/app/derived.h"
 
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -197,6 +198,28 @@ std::unique_ptr<ReconDisplay> computeDisplay(const ReconBase& base,
   return d;
 }
 
+// Every engine on the walker with the same settings; one engine's failure is its entry's error.
+std::unique_ptr<CompareResult> computeCompare(const Document& doc, const ReconKey& key, SnippetPriorCache& priors) {
+  auto out = std::make_unique<CompareResult>();
+  for (EngineKind kind : kEngineKinds) {
+    CompareEntry entry;
+    entry.engine = kind;
+    ReconKey k = key;
+    k.settings.engine = kind;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+      std::shared_ptr<const ReconBase> base = computeRecon(doc, k, priors);
+      entry.display = computeDisplay(*base, {});
+      entry.base = std::move(base);
+    } catch (const std::exception& e) {
+      entry.error = e.what();
+    }
+    entry.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out->engines.push_back(std::move(entry));
+  }
+  return out;
+}
+
 std::unique_ptr<ExploreResult> computeExplore(const Document& doc, const ExploreKey& key) {
   const EigenwalkerModel& all = *doc.heldModel();
   auto e = std::make_unique<ExploreResult>();
@@ -221,8 +244,16 @@ std::unique_ptr<ExploreResult> computeExplore(const Document& doc, const Explore
 
 }  // namespace
 
+const CompareEntry* CompareResult::of(EngineKind kind) const {
+  for (const auto& e : engines)
+    if (e.engine == kind) return &e;
+  return nullptr;
+}
+
 void Derived::update(const Document& doc) {
   if (!doc.ready()) {
+    compareKey_.reset();
+    compare_.reset();
     reconKey_.reset();
     displayKey_.reset();
     exploreKey_.reset();
@@ -249,6 +280,17 @@ void Derived::update(const Document& doc) {
         displayKey_ = dk;
         display_ = computeDisplay(*recon_, doc.editedSd);
       }
+    }
+    if (doc.compareEngines && doc.mode == Mode::Reconstruct) {
+      ReconKey ck = rk;
+      ck.settings.engine = EngineKind::Eigenwalker;
+      if (!compareKey_ || !(*compareKey_ == ck)) {
+        compareKey_ = ck;
+        compare_ = computeCompare(doc, ck, snippetPriors_);
+      }
+    } else {
+      compareKey_.reset();
+      compare_.reset();
     }
     const ExploreKey ek{doc.generation, doc.recon.components, doc.exploreSd, doc.recon.alphaDeg};
     if (!exploreKey_ || !(*exploreKey_ == ek)) {

@@ -92,6 +92,21 @@ struct ReconDisplay {
   double angleErrorDeg = 0.0;    // |α̂ − α| (0 with a known angle)
 };
 
+// [SECTION] Compare mode: the walker reconstructed by every engine
+
+struct CompareEntry {
+  EngineKind engine = EngineKind::Eigenwalker;
+  std::shared_ptr<const ReconBase> base;        // null when the engine gave no answer
+  std::shared_ptr<const ReconDisplay> display;  // its errors (no coefficient edits)
+  std::string error;                            // why not
+  double seconds = 0.0;                         // the reconstruction's wall time
+};
+
+struct CompareResult {
+  std::vector<CompareEntry> engines;  // kEngineKinds order
+  const CompareEntry* of(EngineKind kind) const;
+};
+
 // [SECTION] Explorer: a walker synthesised from coefficients of the full model
 
 struct ExploreKey {
@@ -148,6 +163,8 @@ class Derived {
   const ReconBase* recon() const { return recon_.get(); }
   const ReconDisplay* display() const { return display_.get(); }
   const ExploreResult* explore() const { return explore_.get(); }
+  // Compare mode only (Document::compareEngines): each engine's reconstruction.
+  const CompareResult* compare() const { return compare_.get(); }
   // The last computation's error (empty when it succeeded).
   const std::string& error() const { return error_; }
   // How many times each cache was recomputed (for tests and the log).
@@ -160,6 +177,8 @@ class Derived {
   std::unique_ptr<ReconBase> recon_;
   std::unique_ptr<ReconDisplay> display_;
   std::unique_ptr<ExploreResult> explore_;
+  std::optional<ReconKey> compareKey_;  // settings.engine normalised: every engine is in it
+  std::unique_ptr<CompareResult> compare_;
   std::string error_;
   int reconComputations_ = 0;
   SnippetPriorCache snippetPriors_;

@@ -5,6 +5,7 @@
 //   ViewState — how it is looked at (camera, overlays, playback, UI scale).
 //   Derived   — the reconstruction and friends, cached (ui/app/derived.h).
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -75,6 +76,10 @@ struct Document {
   std::vector<double> exploreSd;   // explorer coefficients, units of each component's SD
   std::vector<double> editedSd;    // reconstruct mode: coefficients the user dragged
                                    // (empty = the estimate)
+  // Compare mode (reconstruct mode): every engine reconstructs the walker, drawn together
+  // over the ground truth; which of them the views show (kEngineKinds order).
+  bool compareEngines = false;
+  std::array<bool, 3> compareShown{true, true, true};
 
   int populationCount() const { return population ? population->walkerCount() : 0; }
   int walkerCount() const { return populationCount() + (inspected ? inspected->walkerCount() : 0); }

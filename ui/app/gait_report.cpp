@@ -153,56 +153,68 @@ GaitBand populationGaitBand(const Population& population) {
   return band;
 }
 
-void writeGaitReportCsv(const std::string& file, const GaitSummary& mocap, const GaitSummary& recon,
+void writeGaitReportCsv(const std::string& file, const GaitSummary& mocap, const std::vector<GaitColumn>& columns,
                         const GaitBand& band) {
   writeFileAtomically(file, [&](std::ostream& out) {
-    out << "measure,motion_capture,reconstruction,population_mean,population_sd\n";
+    out << "measure,motion_capture";
+    for (const auto& c : columns) out << ',' << c.name;
+    out << ",population_mean,population_sd\n";
     const auto& rows = gaitRows();
     for (size_t r = 0; r < rows.size(); ++r) {
-      out << rows[r].key << ',' << cell(gaitRowValue(mocap, rows[r].key)) << ','
-          << cell(gaitRowValue(recon, rows[r].key)) << ',' << cell(band.rowMean[r]) << ',' << cell(band.rowSd[r])
-          << '\n';
+      out << rows[r].key << ',' << cell(gaitRowValue(mocap, rows[r].key));
+      for (const auto& c : columns) out << ',' << cell(gaitRowValue(*c.summary, rows[r].key));
+      out << ',' << cell(band.rowMean[r]) << ',' << cell(band.rowSd[r]) << '\n';
     }
-    out << "\ncurve,cycle_pct,motion_capture_deg,reconstruction_deg,population_mean_deg,population_sd_deg\n";
+    out << "\ncurve,cycle_pct,motion_capture_deg";
+    for (const auto& c : columns) out << ',' << c.name << "_deg";
+    out << ",population_mean_deg,population_sd_deg\n";
     for (const auto& name : flexionCurveNames()) {
-      const CycleCurve *a = curveOf(mocap, name), *b = curveOf(recon, name);
+      const CycleCurve* a = curveOf(mocap, name);
+      std::vector<const CycleCurve*> cols;
+      const CycleCurve* any = a;
+      for (const auto& c : columns) {
+        cols.push_back(curveOf(*c.summary, name));
+        if (!any) any = cols.back();
+      }
       const Eigen::VectorXd *m = band.curveMeanOf(name), *sd = band.curveSdOf(name);
-      const CycleCurve* any = a ? a : b;
       if (!any) continue;
       const auto n = any->meanDeg.size();
       for (Eigen::Index k = 0; k < n; ++k) {
         out << name << ',' << cell(100.0 * static_cast<double>(k) / static_cast<double>(n - 1), 1) << ','
-            << cell(curveSample(a, k), 3) << ',' << cell(curveSample(b, k), 3) << ',' << cell(bandSample(m, k), 3)
-            << ',' << cell(bandSample(sd, k), 3) << '\n';
+            << cell(curveSample(a, k), 3);
+        for (const CycleCurve* c : cols) out << ',' << cell(curveSample(c, k), 3);
+        out << ',' << cell(bandSample(m, k), 3) << ',' << cell(bandSample(sd, k), 3) << '\n';
       }
     }
   });
 }
 
 void writeGaitReportJson(const std::string& file, const GaitReportText& what, const GaitSummary& mocap,
-                         const GaitSummary& recon, const GaitBand& band) {
+                         const std::vector<GaitColumn>& columns, const GaitBand& band) {
   using nlohmann::json;
   const auto value = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   json measures = json::object();
   const auto& rows = gaitRows();
   for (size_t r = 0; r < rows.size(); ++r) {
-    measures[rows[r].key] = {{"motion_capture", value(gaitRowValue(mocap, rows[r].key))},
-                             {"reconstruction", value(gaitRowValue(recon, rows[r].key))},
-                             {"population_mean", value(band.rowMean[r])},
-                             {"population_sd", value(band.rowSd[r])}};
+    json m = {{"motion_capture", value(gaitRowValue(mocap, rows[r].key))},
+              {"population_mean", value(band.rowMean[r])},
+              {"population_sd", value(band.rowSd[r])}};
+    for (const auto& c : columns) m[c.name] = value(gaitRowValue(*c.summary, rows[r].key));
+    measures[rows[r].key] = m;
   }
   json curves = json::object();
+  const auto series = [](const CycleCurve* c) {
+    return c ? json(std::vector<double>(c->meanDeg.data(), c->meanDeg.data() + c->meanDeg.size())) : json(nullptr);
+  };
+  const auto band1 = [](const Eigen::VectorXd* v) {
+    return v ? json(std::vector<double>(v->data(), v->data() + v->size())) : json(nullptr);
+  };
   for (const auto& name : flexionCurveNames()) {
-    const auto series = [](const CycleCurve* c) {
-      return c ? json(std::vector<double>(c->meanDeg.data(), c->meanDeg.data() + c->meanDeg.size())) : json(nullptr);
-    };
-    const auto band1 = [](const Eigen::VectorXd* v) {
-      return v ? json(std::vector<double>(v->data(), v->data() + v->size())) : json(nullptr);
-    };
-    curves[name] = {{"motion_capture_deg", series(curveOf(mocap, name))},
-                    {"reconstruction_deg", series(curveOf(recon, name))},
-                    {"population_mean_deg", band1(band.curveMeanOf(name))},
-                    {"population_sd_deg", band1(band.curveSdOf(name))}};
+    json c = {{"motion_capture_deg", series(curveOf(mocap, name))},
+              {"population_mean_deg", band1(band.curveMeanOf(name))},
+              {"population_sd_deg", band1(band.curveSdOf(name))}};
+    for (const auto& col : columns) c[col.name + "_deg"] = series(curveOf(*col.summary, name));
+    curves[name] = c;
   }
   const json doc = {{"walker", what.walker},
                     {"engine", what.engine},

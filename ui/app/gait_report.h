@@ -59,16 +59,22 @@ struct GaitBand {
 };
 GaitBand populationGaitBand(const Population& population);
 
+// A reconstruction's column of the report: "reconstruction", or an engine's name in compare mode.
+struct GaitColumn {
+  std::string name;
+  const GaitSummary* summary = nullptr;
+};
+
 // Written atomically; errors are ew::Error naming the file.
-//  CSV: measure,motion_capture,reconstruction,population_mean,population_sd then a blank line and
-//       curve,side,cycle_pct,motion_capture_deg,reconstruction_deg,population_mean_deg,population_sd_deg
+//  CSV: measure,motion_capture,<column names>,population_mean,population_sd then a blank line and
+//       curve,cycle_pct,motion_capture_deg,<column names>_deg,population_mean_deg,population_sd_deg
 //  JSON: {"walker", "engine", "measures": {key: {…}}, "curves": {name: {…}}, "band_walkers"}
 struct GaitReportText {
   std::string walker, engine;
 };
-void writeGaitReportCsv(const std::string& file, const GaitSummary& mocap, const GaitSummary& recon,
+void writeGaitReportCsv(const std::string& file, const GaitSummary& mocap, const std::vector<GaitColumn>& columns,
                         const GaitBand& band);
 void writeGaitReportJson(const std::string& file, const GaitReportText& what, const GaitSummary& mocap,
-                         const GaitSummary& recon, const GaitBand& band);
+                         const std::vector<GaitColumn>& columns, const GaitBand& band);
 
 }  // namespace ew::ui

@@ -27,7 +27,7 @@ const std::set<std::string>& knownActions() {
       "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame",
       "set_engine", "video_frame", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "track_video",
-      "close_video", "export_gait_report"};
+      "close_video", "export_gait_report", "compare_engines", "show_engine"};
   // clang-format on
   return names;
 }
@@ -265,6 +265,15 @@ void applyAction(AppState& s, const ScriptAction& a) {
     } else {
       throw std::invalid_argument("method must be \"lsq\" or \"map\"");
     }
+  } else if (n == "compare_engines") {
+    if (!a.argument.is_boolean()) throw std::invalid_argument("expects true or false");
+    actions::setCompareEngines(s, a.argument.get<bool>());
+  } else if (n == "show_engine") {
+    if (!a.argument.is_array() || a.argument.size() != 2 || !a.argument[0].is_string() ||
+        !a.argument[1].is_boolean())
+      throw std::invalid_argument("expects [ENGINE, true|false]");
+    actions::setCompareShown(s, parseEngineKind(a.argument[0].get<std::string>(), "show_engine"),
+                             a.argument[1].get<bool>());
   } else if (n == "set_engine") {
     actions::setEngine(s, parseEngineKind(text(a), "set_engine"));
   } else if (n == "set_sigma2") {

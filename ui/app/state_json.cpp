@@ -187,19 +187,47 @@ const char* levelName(LogLevel level) {
   return level == LogLevel::Error ? "error" : level == LogLevel::Warning ? "warning" : "info";
 }
 
+// Compare mode: each engine's errors, or why it gave none; null when compare mode is off.
+nlohmann::json compareJson(const AppState& s) {
+  const CompareResult* c = s.derived.compare();
+  if (!s.doc.compareEngines || !c) return nullptr;
+  nlohmann::json engines = nlohmann::json::array();
+  for (const auto& e : c->engines) {
+    nlohmann::json j = {{"engine", engineName(e.engine)},
+                        {"shown", s.doc.compareShown[static_cast<std::size_t>(e.engine)]},
+                        {"seconds", e.seconds},
+                        {"error", e.error}};
+    if (e.display && e.base) {
+      j["mpjpe_mm"] = e.display->mpjpeMm;
+      j["abs_error_mm2"] = e.display->absScoredMm2;
+      j["rel_error"] = e.display->relScored;
+      j["alpha_used_deg"] = e.base->alphaUsedDeg;
+      j["residual_rms_mm"] = e.display->residualRmsMm;
+    }
+    engines.push_back(j);
+  }
+  return engines;
+}
+
 // The gait report as the panel last computed it (show_panel gait, or an export, computes it).
 nlohmann::json gaitJson(const AppState& s) {
   const GaitPanel& p = s.panels.gait;
   nlohmann::json rows = nlohmann::json::object();
+  nlohmann::json columns = nlohmann::json::object();  // each column's measures (compare mode: per engine)
+  for (const auto& c : p.columns) {
+    nlohmann::json m = nlohmann::json::object();
+    for (const auto& row : gaitRows()) m[row.key] = optionalJson(finiteOr(gaitRowValue(c.summary, row.key)));
+    columns[c.name] = m;
+  }
   for (size_t r = 0; r < gaitRows().size(); ++r) {
     const std::string key = gaitRows()[r].key;
     rows[key] = {{"motion_capture", optionalJson(finiteOr(gaitRowValue(p.mocap, key)))},
-                 {"reconstruction", optionalJson(finiteOr(gaitRowValue(p.recon, key)))},
+                 {"reconstruction", optionalJson(finiteOr(gaitRowValue(p.recon(), key)))},
                  {"population_mean", optionalJson(p.band ? finiteOr(p.band->rowMean[r]) : std::nullopt)},
                  {"population_sd", optionalJson(p.band ? finiteOr(p.band->rowSd[r]) : std::nullopt)}};
   }
   return {{"open", p.open}, {"band_walkers", p.band ? p.band->walkers : 0}, {"measures", rows},
-          {"reconstruction_error", p.recon.error}, {"status", p.status}};
+          {"reconstruction_error", p.recon().error}, {"columns", columns}, {"status", p.status}};
 }
 
 }  // namespace
@@ -217,6 +245,7 @@ nlohmann::json stateJson(const AppState& s) {
   j["clip"] = clipJson(s);
   j["video"] = videoJson(s);
   j["gait"] = gaitJson(s);
+  j["compare"] = compareJson(s);
   j["angle_deg"] = d.recon.alphaDeg;
   j["method"] = d.recon.estimator == Estimator::Lsq ? "lsq" : "map";
   j["engine"] = engineName(d.recon.engine);

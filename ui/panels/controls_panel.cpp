@@ -5,7 +5,9 @@
 #include "core/engine/model.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/convert.h"
 #include "ui/panels/clip_controls.h"
+#include "ui/render/palette.h"
 #include "ui/widgets/section_title.h"
 
 namespace ew::ui {
@@ -47,6 +49,28 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Zou et al. 2009: each frame from geometry alone, the walker's own\n"
                           "bone lengths, no training; each bone's two depths chosen over the clip");
+      bool compare = doc.compareEngines;
+      if (ImGui::Checkbox("Compare all three", &compare)) actions::setCompareEngines(s, compare);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Every engine reconstructs the walker from the same view, drawn together\n"
+                          "over the ground truth, with a row of errors each");
+      if (doc.compareEngines) {
+        for (EngineKind kind : kEngineKinds) {
+          const auto k = static_cast<std::size_t>(kind);
+          bool shown = doc.compareShown[k];
+          ImGui::PushStyleColor(ImGuiCol_CheckMark, toImVec4(palette::kEngineRight[k]));
+          ImGui::PushStyleColor(ImGuiCol_Text, toImVec4(palette::kEngineRight[k]));
+          if (ImGui::Checkbox(engineName(kind), &shown)) actions::setCompareShown(s, kind, shown);
+          ImGui::PopStyleColor(2);
+          if (kind == EngineKind::Skeleton) break;
+          // The next one on this line when it fits, else on the next.
+          const auto next = static_cast<EngineKind>(static_cast<int>(kind) + 1);
+          const float nextW = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+                              ImGui::CalcTextSize(engineName(next)).x + ImGui::GetStyle().ItemSpacing.x;
+          ImGui::SameLine();
+          if (ImGui::GetContentRegionAvail().x < nextW) ImGui::NewLine();
+        }
+      }
     }
     const bool eigenwalkerSettings = doc.mode != Mode::Reconstruct || doc.recon.engine == EngineKind::Eigenwalker;
 

@@ -19,16 +19,23 @@ namespace ew::ui {
 namespace {
 
 ImU32 mocapColour() { return toImU32(glm::vec4(palette::kGhostRight.x, palette::kGhostRight.y, palette::kGhostRight.z, 1.0f)); }
-ImU32 reconColour() { return toImU32(palette::kReconRight); }
+ImU32 reconColour(int engine = -1) {
+  return toImU32(engine < 0 ? palette::kReconRight : palette::kEngineRight[static_cast<std::size_t>(engine)]);
+}
 ImU32 bandColour() { return ImGui::GetColorU32(ImGuiCol_TextDisabled); }
 
 // What the report compares: the walker's own fit and what the viewer shows beside it.
+struct ShownColumn {
+  std::string name, label;
+  int engine = -1;
+  const Eigen::VectorXd* w = nullptr;
+};
 struct Shown {
   const Eigen::VectorXd* mocapW = nullptr;  // null in explore mode
-  const Eigen::VectorXd* reconW = nullptr;
+  std::vector<ShownColumn> columns;
   double strideHz = 0.0;
   std::optional<double> speedMps;
-  std::string walker, reconLabel;
+  std::string walker;
 };
 
 std::optional<Shown> shownWalkers(const AppState& s) {
@@ -36,10 +43,9 @@ std::optional<Shown> shownWalkers(const AppState& s) {
   if (s.doc.mode == Mode::Explore) {
     const ExploreResult* e = s.derived.explore();
     if (!e) return std::nullopt;
-    out.reconW = &e->w;
+    out.columns.push_back({"synthesised", "synthesised", -1, &e->w});
     out.strideHz = e->strideHz;
     out.walker = "synthesised from the sliders";
-    out.reconLabel = "synthesised";
     return out;
   }
   if (s.doc.mode != Mode::Reconstruct) return std::nullopt;
@@ -48,13 +54,21 @@ std::optional<Shown> shownWalkers(const AppState& s) {
   const Walker* w = s.doc.selectedWalker();
   if (!r || !d || !w) return std::nullopt;
   out.mocapW = &r->wTrue;
-  out.reconW = &d->w;
   out.strideHz = r->strideHz;
   if (const WalkerFacts* f = s.doc.selectedFacts()) out.speedMps = f->speedMps;
   out.walker = w->id;
   char label[96];
+  if (const CompareResult* c = s.doc.compareEngines ? s.derived.compare() : nullptr) {
+    for (const auto& e : c->engines) {
+      const auto k = static_cast<std::size_t>(e.engine);
+      if (!e.display || !s.doc.compareShown[k]) continue;
+      std::snprintf(label, sizeof label, "%s at %.0f°", engineName(e.engine), e.base->alphaUsedDeg);
+      out.columns.push_back({engineName(e.engine), label, static_cast<int>(k), &e.display->w});
+    }
+    return out;
+  }
   std::snprintf(label, sizeof label, "%s at %.0f°", engineName(r->engine), r->alphaUsedDeg);
-  out.reconLabel = label;
+  out.columns.push_back({"reconstruction", label, -1, &d->w});
   return out;
 }
 
@@ -77,31 +91,34 @@ std::string valueText(double v, int decimals) {
   return buf;
 }
 
-void drawTable(const GaitPanel& p, const std::string& reconLabel, bool withMocap) {
+void drawTable(const GaitPanel& p, bool withMocap) {
   const auto& rows = gaitRows();
+  const int n = 3 + static_cast<int>(p.columns.size());
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
-  if (!ImGui::BeginTable("gait_table", 4, flags)) return;
+  if (!ImGui::BeginTable("gait_table", n, flags)) return;
   ImGui::TableSetupColumn("measure", ImGuiTableColumnFlags_WidthStretch, 1.6f);
   ImGui::TableSetupColumn(withMocap ? "motion capture" : "–", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-  ImGui::TableSetupColumn(reconLabel.c_str(), ImGuiTableColumnFlags_WidthStretch, 1.2f);
+  for (const auto& c : p.columns) ImGui::TableSetupColumn(c.label.c_str(), ImGuiTableColumnFlags_WidthStretch, 1.2f);
   ImGui::TableSetupColumn("population mean ± SD", ImGuiTableColumnFlags_WidthStretch, 1.3f);
   ImGui::TableHeadersRow();
   for (size_t r = 0; r < rows.size(); ++r) {
     const double mean = p.band ? p.band->rowMean[r] : NAN, sd = p.band ? p.band->rowSd[r] : NAN;
-    const double a = gaitRowValue(p.mocap, rows[r].key), b = gaitRowValue(p.recon, rows[r].key);
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(rows[r].label);
     ImGui::TableNextColumn();
     ImGui::PushStyleColor(ImGuiCol_Text, mocapColour());
-    ImGui::TextUnformatted(withMocap ? valueText(a, rows[r].decimals).c_str() : "");
+    ImGui::TextUnformatted(withMocap ? valueText(gaitRowValue(p.mocap, rows[r].key), rows[r].decimals).c_str() : "");
     ImGui::PopStyleColor();
-    ImGui::TableNextColumn();
-    // Outside the population's mean ± 2 SD: marked, as a gait report flags a measure.
-    const bool outside = std::isfinite(b) && std::isfinite(sd) && sd > 0 && std::abs(b - mean) > 2.0 * sd;
-    ImGui::PushStyleColor(ImGuiCol_Text, reconColour());
-    ImGui::TextUnformatted((valueText(b, rows[r].decimals) + (outside ? "  (beyond 2 SD)" : "")).c_str());
-    ImGui::PopStyleColor();
+    for (const auto& c : p.columns) {
+      ImGui::TableNextColumn();
+      const double b = gaitRowValue(c.summary, rows[r].key);
+      // Outside the population's mean ± 2 SD: marked, as a gait report flags a measure.
+      const bool outside = std::isfinite(b) && std::isfinite(sd) && sd > 0 && std::abs(b - mean) > 2.0 * sd;
+      ImGui::PushStyleColor(ImGuiCol_Text, reconColour(c.engine));
+      ImGui::TextUnformatted((valueText(b, rows[r].decimals) + (outside ? "  (beyond 2 SD)" : "")).c_str());
+      ImGui::PopStyleColor();
+    }
     ImGui::TableNextColumn();
     ImGui::TextDisabled("%s ± %s", valueText(mean, rows[r].decimals).c_str(), valueText(sd, rows[r].decimals).c_str());
   }
@@ -113,8 +130,7 @@ struct CurveCell {
   const char* title;  // "knee flexion (°)"
 };
 
-void drawCurve(const GaitPanel& p, const CurveCell& cell, const std::string& reconLabel, const ImVec2& size,
-               float scale) {
+void drawCurve(const GaitPanel& p, const CurveCell& cell, const ImVec2& size, float scale) {
   const std::string name = std::string(cell.base) + (p.leftSide ? "_l" : "_r");
   std::vector<double> x(101);
   for (int k = 0; k <= 100; ++k) x[static_cast<size_t>(k)] = k;
@@ -131,14 +147,13 @@ void drawCurve(const GaitPanel& p, const CurveCell& cell, const std::string& rec
     band.bandHigh = hi;
     series.push_back(band);
   }
-  for (const auto* s : {&p.mocap, &p.recon}) {
-    for (const auto& c : s->curves) {
-      if (c.name != name || c.meanDeg.size() != 101) continue;
-      const bool isMocap = s == &p.mocap;
-      series.push_back({isMocap ? "motion capture" : reconLabel, x, std::span<const double>(c.meanDeg.data(), 101),
-                        isMocap ? mocapColour() : reconColour(), 2.0f});
-    }
-  }
+  const auto add = [&](const GaitSummary& s, const std::string& label, ImU32 colour) {
+    for (const auto& c : s.curves)
+      if (c.name == name && c.meanDeg.size() == 101)
+        series.push_back({label, x, std::span<const double>(c.meanDeg.data(), 101), colour, 2.0f});
+  };
+  add(p.mocap, "motion capture", mocapColour());
+  for (const auto& col : p.columns) add(col.summary, col.label, reconColour(col.engine));
   PlotSpec spec;
   const char* longLabel = "gait cycle (%, foot strike to foot strike)";
   spec.xLabel = ImGui::CalcTextSize(longLabel).x < size.x - 60.0f * scale ? longLabel : "gait cycle (%)";
@@ -151,7 +166,7 @@ void drawCurve(const GaitPanel& p, const CurveCell& cell, const std::string& rec
 }
 
 // One legend for the four plots: a swatch and a name per series.
-void drawLegend(const std::string& reconLabel, bool withMocap, float scale) {
+void drawLegend(const GaitPanel& gp, bool withMocap, float scale) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float h = ImGui::GetTextLineHeight();
   bool first = true;
@@ -170,11 +185,11 @@ void drawLegend(const std::string& reconLabel, bool withMocap, float scale) {
     ImGui::TextUnformatted(label);
   };
   if (withMocap) entry(mocapColour(), "motion capture", false);
-  entry(reconColour(), reconLabel.c_str(), false);
+  for (const auto& c : gp.columns) entry(reconColour(c.engine), c.label.c_str(), false);
   entry(bandColour(), "population mean ± SD", true);
 }
 
-void drawExport(AppState& s, GaitPanel& p, const std::string& walker, const std::string& engine, float scale) {
+void drawExport(AppState& s, GaitPanel& p, float scale) {
   ImGui::AlignTextToFramePadding();
   ImGui::TextDisabled("export to");
   ImGui::SameLine();
@@ -196,9 +211,8 @@ void drawExport(AppState& s, GaitPanel& p, const std::string& walker, const std:
   ImGui::SameLine();
   if (ImGui::Button("TRC + MOT")) run("TRC + MOT", [&] { actions::exportGaitReport(s, base + ".trc"); });
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("the reconstruction walked over the floor at its measured speed (%s), as an OpenSim marker\n"
-                      "file, and its joint angles as an OpenSim motion file", engine.c_str());
-  (void)walker;
+    ImGui::SetTooltip("the reconstruction (in compare mode the selected engine's) walked over the floor at its\n"
+                      "measured speed, as an OpenSim marker file, and its joint angles as an OpenSim motion file");
   if (!p.status.empty()) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s", p.status.c_str());
@@ -206,6 +220,20 @@ void drawExport(AppState& s, GaitPanel& p, const std::string& walker, const std:
 }
 
 }  // namespace
+
+const GaitSummary& GaitPanel::recon() const {
+  static const GaitSummary none;
+  if (columns.empty()) return none;
+  for (const auto& c : columns)
+    if (c.name == "reconstruction" || c.name == "synthesised") return c.summary;
+  return columns.front().summary;
+}
+
+std::vector<GaitColumn> GaitPanel::exportColumns() const {
+  std::vector<GaitColumn> out;
+  for (const auto& c : columns) out.push_back({c.name, &c.summary});
+  return out;
+}
 
 void GaitPanel::update(AppState& s) {
   const auto shown = shownWalkers(s);
@@ -215,11 +243,20 @@ void GaitPanel::update(AppState& s) {
   }
   if (!shown) {
     refresh(mocap, mocapW, nullptr, 0.0, std::nullopt, "");
-    refresh(recon, reconW, nullptr, 0.0, std::nullopt, "");
+    columns.clear();
     return;
   }
   refresh(mocap, mocapW, shown->mocapW, shown->strideHz, shown->speedMps, shown->walker);
-  refresh(recon, reconW, shown->reconW, shown->strideHz, std::nullopt, shown->walker + " (" + shown->reconLabel + ")");
+  std::vector<Column> next;
+  for (const auto& c : shown->columns) {
+    Column col{c.name, c.label, c.engine, {}, {}};
+    // Reuse a column already measured for the same walker.
+    for (auto& old : columns)
+      if (old.name == c.name) col.w = std::move(old.w), col.summary = std::move(old.summary);
+    refresh(col.summary, col.w, c.w, shown->strideHz, std::nullopt, shown->walker + " (" + c.label + ")");
+    next.push_back(std::move(col));
+  }
+  columns = std::move(next);
 }
 
 void GaitPanel::draw(AppState& s, const FrameContext& ctx) {
@@ -249,8 +286,9 @@ void GaitPanel::draw(AppState& s, const FrameContext& ctx) {
                      kReportCycles, band ? band->walkers : 0);
   ImGui::PopStyleColor();
   if (!mocap.error.empty() && shown->mocapW) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "motion capture: %s", mocap.error.c_str());
-  if (!recon.error.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s: %s", shown->reconLabel.c_str(), recon.error.c_str());
-  drawTable(*this, shown->reconLabel, shown->mocapW != nullptr);
+  for (const auto& c : columns)
+    if (!c.summary.error.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s: %s", c.label.c_str(), c.summary.error.c_str());
+  drawTable(*this, shown->mocapW != nullptr);
   ImGui::AlignTextToFramePadding();
   ImGui::TextDisabled("curves of the");
   ImGui::SameLine();
@@ -260,7 +298,7 @@ void GaitPanel::draw(AppState& s, const FrameContext& ctx) {
   ImGui::RadioButton("left side", &side, 1);
   leftSide = side == 1;
   ImGui::Dummy(ImVec2(0.0f, 0.0f));  // the legend starts its own line (its entries are SameLine)
-  drawLegend(shown->reconLabel, shown->mocapW != nullptr, ctx.scale);
+  drawLegend(*this, shown->mocapW != nullptr, ctx.scale);
   const float exportH = ImGui::GetFrameHeightWithSpacing() + 4.0f * ctx.scale;
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
@@ -274,9 +312,9 @@ void GaitPanel::draw(AppState& s, const FrameContext& ctx) {
                              {"arm_flex", "shoulder flexion (°)"}, {"elbow_flex", "elbow flexion (°)"}};
   for (int k = 0; k < 4; ++k) {
     if (k % perRow != 0) ImGui::SameLine();
-    drawCurve(*this, cells[k], shown->reconLabel, ImVec2(cellW, cellH), ctx.scale);
+    drawCurve(*this, cells[k], ImVec2(cellW, cellH), ctx.scale);
   }
-  drawExport(s, *this, shown->walker, shown->reconLabel, ctx.scale);
+  drawExport(s, *this, ctx.scale);
   ImGui::End();
 }
 

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "ui/app/gait_report.h"
 
@@ -28,8 +29,20 @@ struct GaitPanel {
   // Cached: the band per population generation, the summaries per walker shown.
   std::uint64_t bandGeneration = 0;
   std::shared_ptr<const GaitBand> band;
-  Eigen::VectorXd mocapW, reconW;
-  GaitSummary mocap, recon;
+  Eigen::VectorXd mocapW;
+  GaitSummary mocap;
+  // The reconstruction's column, or one per engine in compare mode.
+  struct Column {
+    std::string name;   // the export's column: "reconstruction", or the engine's name
+    std::string label;  // the table's header
+    int engine = -1;    // kEngineKinds index in compare mode (its colour); -1: the amber
+    Eigen::VectorXd w;
+    GaitSummary summary;
+  };
+  std::vector<Column> columns;
+  // The column of the engine the viewer has selected (the first when none is it).
+  const GaitSummary& recon() const;
+  std::vector<GaitColumn> exportColumns() const;
 
   void draw(AppState& s, const FrameContext& ctx);
   // Brings the caches up to date with what the viewer shows (also used by the scripts).

@@ -91,12 +91,109 @@ void drawClipResiduals(const AppState& s, float scale) {
   }
 }
 
+// Compare mode: a row of metrics per engine, then each joint's depth error per engine as
+// three thin bars in the engines' colours.
+void drawCompare(const CompareResult& c, float scale) {
+  // Columns as wide as their contents: the panel is narrow; each header's tooltip says what it is.
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
+  if (ImGui::BeginTable("compare_table", 7, flags)) {
+    for (const char* h : {"engine", "MPJPE", "E_a", "E_r", "α", "2D", "ms"}) ImGui::TableSetupColumn(h);
+    static constexpr const char* kWhat[] = {
+        "", "MPJPE: mean 3D joint error over one cycle (mm)", "E_a: mean squared depth error (mm²)",
+        "E_r: E_a over the walker's own depth variance", "α the engine used (estimated when unknown)",
+        "2D: RMS of the reconstruction's reprojection against the input (mm)",
+        "ms: the reconstruction's wall time (the snippet prior's training included the first time)"};
+    ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
+    for (int col = 0; col < 7; ++col) {
+      ImGui::TableSetColumnIndex(col);
+      ImGui::TableHeader(ImGui::TableGetColumnName(col));
+      if (col > 0 && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kWhat[col]);
+    }
+    for (const auto& e : c.engines) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextColored(toImVec4(palette::kEngineRight[static_cast<std::size_t>(e.engine)]), "%s", engineName(e.engine));
+      if (!e.display || !e.base) {
+        ImGui::TableNextColumn();
+        ImGui::TextDisabled("no answer");
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.error.c_str());
+        continue;
+      }
+      const ReconDisplay& d = *e.display;
+      ImGui::TableNextColumn();
+      ImGui::Text("%.1f", d.mpjpeMm);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.0f", d.absScoredMm2);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.3f", d.relScored);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.1f°", e.base->alphaUsedDeg);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.1f", d.residualRmsMm);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.0f", 1000.0 * e.seconds);
+    }
+    ImGui::EndTable();
+  }
+  // Per joint: √E_abs(j) of each engine.
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  const ImVec2 size = ImGui::GetContentRegionAvail();
+  const int fit = static_cast<int>(size.y / ImGui::GetTextLineHeight());
+  if (3 * fit < kJointCount) {  // three columns of joints do not fit: no bars rather than overprinted ones
+    ImGui::TextDisabled("per-joint errors: a taller window shows them");
+    return;
+  }
+  double worst = 1.0;
+  for (const auto& e : c.engines)
+    if (e.display) worst = std::max(worst, e.display->depthRmsMm.maxCoeff());
+  const float scaleMax = palette::errorScaleMm(static_cast<float>(worst));
+  const int columns = fit >= kJointCount ? 1 : 3;
+  const int rows = (kJointCount + columns - 1) / columns;
+  const float colW = size.x / static_cast<float>(columns), rowH = size.y / static_cast<float>(rows);
+  const float labelW = ImGui::CalcTextSize("r_shoulder ").x;
+  const float barMax = std::max(0.0f, colW - labelW - 10.0f * scale);
+  for (int j = 0; j < kJointCount; ++j) {
+    const float x = p0.x + colW * static_cast<float>(j / rows), y = p0.y + rowH * static_cast<float>(j % rows);
+    const auto name = kJointNames[static_cast<std::size_t>(j)];
+    dl->AddText(ImVec2(x, y + 0.5f * (rowH - ImGui::GetTextLineHeight())), ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                name.data(), name.data() + name.size());
+    const float bh = std::max(1.5f, std::min(rowH / 3.6f, 5.0f * scale));
+    for (std::size_t k = 0; k < c.engines.size(); ++k) {
+      const auto& e = c.engines[k];
+      if (!e.display) continue;
+      const float w = barMax * std::min(static_cast<float>(e.display->depthRmsMm(j)) / scaleMax, 1.0f);
+      const float by = y + 0.5f * rowH - 1.5f * bh + static_cast<float>(k) * bh;
+      dl->AddRectFilled(ImVec2(x + labelW, by), ImVec2(x + labelW + w, by + bh * 0.85f),
+                        toImU32(palette::kEngineRight[k]));
+    }
+  }
+  ImGui::Dummy(size);
+  if (ImGui::IsItemHovered()) {
+    const int col = std::clamp(static_cast<int>((ImGui::GetMousePos().x - p0.x) / colW), 0, columns - 1);
+    const int row = std::clamp(static_cast<int>((ImGui::GetMousePos().y - p0.y) / rowH), 0, rows - 1);
+    const int j = std::min(col * rows + row, kJointCount - 1);
+    std::string tip = std::string(kJointNames[static_cast<std::size_t>(j)]) + ": RMS depth error";
+    for (const auto& e : c.engines) {
+      char line[96];
+      if (e.display)
+        std::snprintf(line, sizeof line, "\n  %s %.1f mm", engineName(e.engine), e.display->depthRmsMm(j));
+      else
+        std::snprintf(line, sizeof line, "\n  %s: no answer", engineName(e.engine));
+      tip += line;
+    }
+    ImGui::SetTooltip("%s", tip.c_str());
+  }
+}
+
 }  // namespace
 
 void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   const bool clip = s.doc.mode == Mode::Clip;
-  const char* title = clip ? "Reprojection residual per joint (RMS over the clip, px)###joint_errors"
-                           : "Depth error per joint (RMS over one cycle, mm)###joint_errors";
+  const bool compare = s.doc.compareEngines && s.doc.mode == Mode::Reconstruct;
+  const char* title = clip      ? "Reprojection residual per joint (RMS over the clip, px)###joint_errors"
+                      : compare ? "Engines against the ground truth; depth RMS per joint (mm)###joint_errors"
+                                : "Depth error per joint (RMS over one cycle, mm)###joint_errors";
   if (beginPanel(ctx.backdrop, title, rect, ImGuiWindowFlags_NoScrollbar)) {
     const ReconDisplay* d = s.derived.display();
     const ReconBase* r = s.derived.recon();
@@ -104,6 +201,12 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
       ImGui::TextDisabled("reconstruct mode only");
     } else if (!s.view.overlays.errorBars) {
       ImGui::TextDisabled("hidden (overlay \"error bars\")");
+    } else if (compare) {
+      if (const CompareResult* c = s.derived.compare()) {
+        drawCompare(*c, ctx.scale);
+      } else {
+        ImGui::TextDisabled("no reconstruction");
+      }
     } else if (clip) {
       if (s.clip) {
         drawClipResiduals(s, ctx.scale);

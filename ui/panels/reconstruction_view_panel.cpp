@@ -1,6 +1,7 @@
 #include "ui/panels/reconstruction_view_panel.h"
 
 #include <algorithm>
+#include <deque>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -70,6 +71,25 @@ void drawClipAnnotations(const AppState& s, const FrameContext& ctx, ImVec2 p0, 
 
 }  // namespace
 
+// Compare mode: the ground truth as the ghost and each shown engine's walker in its colour.
+bool buildCompareScene(const AppState& s, Scene& scene, double phase) {
+  const ReconBase* r = s.derived.recon();
+  const CompareResult* c = s.derived.compare();
+  if (!r || !c) return false;
+  const auto& o = s.view.overlays;
+  const Pose3 truth = toPose3(frameAtPhase(r->wTrue, phase));
+  scene.floor.shadowCentre = {truth[static_cast<std::size_t>(index(Joint::Pelvis))].x,
+                              truth[static_cast<std::size_t>(index(Joint::Pelvis))].y};
+  for (std::size_t k = 0; k < c->engines.size(); ++k) {
+    const CompareEntry& e = c->engines[k];
+    if (!e.display || !s.doc.compareShown[k]) continue;
+    addFigure(scene, toPose3(frameAtPhase(e.display->w, phase)), engineStyle(static_cast<int>(k)));
+  }
+  if (o.ghost) addFigure(scene, truth, ghostStyle());
+  if (o.cameraGlyph) addCameraGlyph(scene, r->alphaTrueDeg, 1150.0f, palette::kCamera, false);
+  return true;
+}
+
 bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, double cycles, float* errorScale) {
   scene.clearItems();
   const auto& o = s.view.overlays;
@@ -81,7 +101,9 @@ bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, 
   scene.floor.visible = o.grid;
   scene.floor.scrollMm = static_cast<float>(std::fmod(cycles * strideLengthMm(s), 1000.0));
   bool drawn = false;
-  if (reconstruct && r && d) {
+  if (reconstruct && s.doc.compareEngines) {
+    drawn = buildCompareScene(s, scene, phase);
+  } else if (reconstruct && r && d) {
     const Pose3 truth = toPose3(frameAtPhase(r->wTrue, phase));
     const Pose3 rec = toPose3(frameAtPhase(d->w, phase));
     scene.floor.shadowCentre = {rec[static_cast<std::size_t>(index(Joint::Pelvis))].x,
@@ -197,11 +219,28 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       } else {
         std::snprintf(sub, sizeof sub, "walker synthesised from the eigenwalker coefficients");
       }
+      if (reconstruct && r && s.doc.compareEngines)
+        std::snprintf(sub, sizeof sub, "compare: the three engines %s α = %.1f°",
+                      s.doc.recon.unknownAngle ? "with α unknown, true" : "at the known", r->alphaTrueDeg);
       drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), reconstruct ? "3D reconstruction" : "Gait space",
                   sub, s.fonts.large, ctx.scale);
       std::vector<LegendItem> legend;
+      std::deque<std::string> legendLabels;  // the items point into it: a deque never moves them
       if (o.pointLights) {
         legend.push_back({palette::kInputPoint, reconstruct ? "reconstructed joints (point-lights)" : "joints (point-lights)", false});
+      } else if (reconstruct && s.doc.compareEngines && s.derived.compare()) {
+        for (const auto& e : s.derived.compare()->engines) {
+          const auto k = static_cast<std::size_t>(e.engine);
+          if (!s.doc.compareShown[k]) continue;
+          char label[96];
+          if (e.display)
+            std::snprintf(label, sizeof label, "%s: MPJPE %.1f mm", engineName(e.engine), e.display->mpjpeMm);
+          else
+            std::snprintf(label, sizeof label, "%s: no answer", engineName(e.engine));
+          legendLabels.emplace_back(label);
+          legend.push_back({palette::kEngineRight[k], legendLabels.back().c_str(), false});
+        }
+        if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
       } else if (reconstruct) {
         legend.push_back({palette::kReconRight, "reconstruction (right side darker)", false});
         if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
@@ -220,7 +259,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
           legend.push_back({palette::kCameraEstimate, "estimated camera (est. α)", true});
       }
       drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale);
-      if (reconstruct && d && o.depthErrorColour && !o.pointLights)
+      if (reconstruct && d && o.depthErrorColour && !o.pointLights && !s.doc.compareEngines)
         drawErrorColourBar(dl, ImVec2(p1.x - pad, p0.y + 78.0f * ctx.scale), std::min(200.0f * ctx.scale, size.y * 0.35f),
                            errorScale, "depth error (RMS)", ctx.scale);
       }

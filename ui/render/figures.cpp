@@ -1,5 +1,7 @@
 #include "ui/render/figures.h"
 
+#include <algorithm>
+
 #include <array>
 #include <cmath>
 
@@ -46,6 +48,15 @@ Side boneSide(Joint a, Joint b) {
 
 FigureStyle reconstructionStyle() {
   return {palette::kReconRight, palette::kReconLeft, palette::kReconMid};
+}
+
+FigureStyle engineStyle(int index) {
+  const glm::vec4 right = palette::kEngineRight[static_cast<std::size_t>(std::clamp(index, 0, 2))];
+  FigureStyle s{right, palette::engineLighter(right, 0.45f), palette::engineLighter(right, 0.22f)};
+  s.boneRadiusMm = 14.0f;
+  s.jointRadiusMm = 22.0f;
+  s.headRadiusMm = 85.0f;
+  return s;
 }
 
 FigureStyle ghostStyle() {

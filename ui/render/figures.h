@@ -21,6 +21,8 @@ struct FigureStyle {
 };
 
 FigureStyle reconstructionStyle();
+// Compare mode: engine `index` of kEngineKinds in its own colour, a little thinner.
+FigureStyle engineStyle(int index);
 FigureStyle ghostStyle();
 
 // Joints and bones of a 3D pose. jointColours (15), when given, colour the joints.

@@ -27,6 +27,14 @@ inline constexpr glm::vec4 kCameraEstimate{1.00f, 0.36f, 0.55f, 1.0f};
 inline constexpr glm::vec4 kTrail{0.55f, 0.75f, 1.00f, 0.30f};
 inline constexpr glm::vec4 kAxis{0.40f, 0.44f, 0.50f, 0.8f};
 
+// Compare mode: one hue per engine (index of kEngineKinds: eigenwalker, snippet, skeleton),
+// the eigenwalker keeping the reconstruction's amber; distinct for the common colour
+// deficiencies in lightness as well as hue.
+inline constexpr std::array<glm::vec4, 3> kEngineRight{{{1.00f, 0.60f, 0.22f, 1.0f},
+                                                         {0.24f, 0.80f, 0.42f, 1.0f},
+                                                         {0.78f, 0.46f, 1.00f, 1.0f}}};
+inline glm::vec4 engineLighter(const glm::vec4& c, float t) { return {glm::mix(glm::vec3(c), glm::vec3(1.0f), t), c.a}; }
+
 // Sequential map for errors, t in [0, 1]: teal → green-yellow → amber → red → magenta.
 inline glm::vec4 errorColour(float t) {
   constexpr std::array<glm::vec3, 5> stops{{{0.16f, 0.80f, 0.72f},
