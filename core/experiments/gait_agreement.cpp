@@ -13,7 +13,7 @@ namespace {
 
 struct MeasuredSide {
   std::optional<GaitMeasures> measures;
-  double kneeRangeDeg = NAN, hipRangeDeg = NAN;
+  std::vector<CycleCurve> curves;
 };
 
 MeasuredSide measure(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, double rateHz, const std::string& name) {
@@ -21,36 +21,29 @@ MeasuredSide measure(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, double r
   try {
     side.measures = measureGait(framesMm, rateHz, gaitEventsFromKinematics(framesMm, rateHz), std::nullopt, name);
     const JointAngles angles = jointAngles(framesMm, Eigen::Vector3d::UnitZ(), name);
-    const auto curves = flexionCycleCurves(angles.degrees, angles.names, rateHz, *side.measures);
-    side.kneeRangeDeg = flexionRangeDeg(curves, "knee_angle");
-    side.hipRangeDeg = flexionRangeDeg(curves, "hip_flexion");
+    side.curves = flexionCycleCurves(angles.degrees, angles.names, rateHz, *side.measures);
   } catch (const Error&) {
     side.measures.reset();  // "could not be measured" is the NaN the row carries
   }
   return side;
 }
 
-double valueOf(const MeasuredSide& s, const std::string& measure) {
-  if (!s.measures) return NAN;
-  const GaitMeasures& g = *s.measures;
-  if (measure == "cadence") return g.cadenceSpm;
-  if (measure == "stride_length") return g.strideLengthM;
-  if (measure == "step_width") return g.stepWidthM;
-  if (measure == "speed") return g.speedMps;
-  if (measure == "stance") return g.stancePct;
-  if (measure == "double_support") return g.doubleSupportPct;
-  if (measure == "knee_flexion_range") return s.kneeRangeDeg;
-  if (measure == "hip_flexion_range") return s.hipRangeDeg;
-  return NAN;
+double valueOf(const MeasuredSide& s, const GaitMeasureName& measure) {
+  return s.measures ? gaitMeasureByName(*s.measures, s.curves, measure.key) : NAN;
 }
 
 }  // namespace
 
 const std::vector<GaitMeasureName>& agreementMeasures() {
   static const std::vector<GaitMeasureName> names = {
-      {"cadence", "steps/min"}, {"stride_length", "m"},     {"step_width", "m"},
-      {"speed", "m/s"},         {"stance", "%"},            {"double_support", "%"},
-      {"knee_flexion_range", "deg"}, {"hip_flexion_range", "deg"}};
+      {"cadence", "steps/min", "cadence_spm"},
+      {"stride_length", "m", "stride_length_m"},
+      {"step_width", "m", "step_width_m"},
+      {"speed", "m/s", "speed_mps"},
+      {"stance", "%", "stance_pct"},
+      {"double_support", "%", "double_support_pct"},
+      {"knee_flexion_range", "deg", "knee_flexion_range_deg"},
+      {"hip_flexion_range", "deg", "hip_flexion_range_deg"}};
   return names;
 }
 
@@ -62,7 +55,7 @@ std::vector<GaitAgreementRow> gaitAgreementRows(const std::string& subject, cons
   const MeasuredSide recon = measure(reconstructedMm, rateHz, subject);
   std::vector<GaitAgreementRow> rows;
   for (const auto& m : agreementMeasures())
-    rows.push_back({subject, engine, angleDeg, m.name, valueOf(truth, m.name), valueOf(recon, m.name)});
+    rows.push_back({subject, engine, angleDeg, m.name, valueOf(truth, m), valueOf(recon, m)});
   return rows;
 }
 

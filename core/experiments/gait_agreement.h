@@ -25,6 +25,7 @@ namespace ew {
 struct GaitMeasureName {
   const char* name;
   const char* unit;
+  const char* key;  // gaitMeasureByName's (core/gait/gait_measures.h)
 };
 const std::vector<GaitMeasureName>& agreementMeasures();
 

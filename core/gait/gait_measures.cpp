@@ -259,6 +259,22 @@ const std::vector<std::string>& flexionCurveNames() {
   return names;
 }
 
+double gaitMeasureByName(const GaitMeasures& g, const std::vector<CycleCurve>& curves, const std::string& key) {
+  if (key == "cadence_spm") return g.cadenceSpm;
+  if (key == "stride_time_s") return g.strideTimeS;
+  if (key == "stride_length_m") return g.strideLengthM;
+  if (key == "step_length_r_m") return g.stepLengthRightM;
+  if (key == "step_length_l_m") return g.stepLengthLeftM;
+  if (key == "step_width_m") return g.stepWidthM;
+  if (key == "speed_mps") return g.speedMps;
+  if (key == "stance_pct") return g.stancePct;
+  if (key == "swing_pct") return g.swingPct;
+  if (key == "double_support_pct") return g.doubleSupportPct;
+  if (key == "hip_flexion_range_deg") return flexionRangeDeg(curves, "hip_flexion");
+  if (key == "knee_flexion_range_deg") return flexionRangeDeg(curves, "knee_angle");
+  return NAN;
+}
+
 double flexionRangeDeg(const std::vector<CycleCurve>& curves, const std::string& base) {
   double sum = 0.0;
   int count = 0;

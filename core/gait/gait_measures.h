@@ -92,6 +92,12 @@ std::vector<CycleCurve> flexionCycleCurves(const Eigen::Ref<const Eigen::MatrixX
 // The names flexionCycleCurves reports, right side then left.
 const std::vector<std::string>& flexionCurveNames();
 
+// A measure by its column name, as `gait --out` writes it and the viewer's report exports it:
+// cadence_spm, stride_time_s, stride_length_m, step_length_r_m, step_length_l_m, step_width_m,
+// speed_mps, stance_pct, swing_pct, double_support_pct, hip_flexion_range_deg,
+// knee_flexion_range_deg (these two from `curves`). NaN for another name or a measure not taken.
+double gaitMeasureByName(const GaitMeasures& g, const std::vector<CycleCurve>& curves, const std::string& key);
+
 // The range (max − min, degrees) of a flexion's stride-averaged curve, the mean over the two
 // sides present; `base` without the side suffix ("knee_angle", "hip_flexion"). NaN when
 // neither side has a curve.

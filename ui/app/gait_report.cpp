@@ -1,5 +1,6 @@
 #include "ui/app/gait_report.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <nlohmann/json.hpp>
@@ -84,33 +85,17 @@ const std::vector<GaitRow>& gaitRows() {
 }
 
 double gaitRowValue(const GaitSummary& s, const std::string& key) {
-  if (!s.measures) return NAN;
-  const GaitMeasures& g = *s.measures;
-  if (key == "cadence_spm") return g.cadenceSpm;
-  if (key == "stride_time_s") return g.strideTimeS;
-  if (key == "stride_length_m") return g.strideLengthM;
-  if (key == "step_length_r_m") return g.stepLengthRightM;
-  if (key == "step_length_l_m") return g.stepLengthLeftM;
-  if (key == "step_width_m") return g.stepWidthM;
-  if (key == "speed_mps") return g.speedMps;
-  if (key == "stance_pct") return g.stancePct;
-  if (key == "swing_pct") return g.swingPct;
-  if (key == "double_support_pct") return g.doubleSupportPct;
-  if (key == "hip_flexion_range_deg") return flexionRangeDeg(s.curves, "hip_flexion");
-  if (key == "knee_flexion_range_deg") return flexionRangeDeg(s.curves, "knee_angle");
-  return NAN;
+  return s.measures ? gaitMeasureByName(*s.measures, s.curves, key) : NAN;
 }
 
 const Eigen::VectorXd* GaitBand::curveMeanOf(const std::string& name) const {
-  for (size_t k = 0; k < curveNames.size(); ++k)
-    if (curveNames[k] == name) return &curveMean[k];
-  return nullptr;
+  const auto k = std::find(curveNames.begin(), curveNames.end(), name);
+  return k == curveNames.end() ? nullptr : &curveMean[static_cast<size_t>(k - curveNames.begin())];
 }
 
 const Eigen::VectorXd* GaitBand::curveSdOf(const std::string& name) const {
-  for (size_t k = 0; k < curveNames.size(); ++k)
-    if (curveNames[k] == name) return &curveSd[k];
-  return nullptr;
+  const auto k = std::find(curveNames.begin(), curveNames.end(), name);
+  return k == curveNames.end() ? nullptr : &curveSd[static_cast<size_t>(k - curveNames.begin())];
 }
 
 GaitBand populationGaitBand(const Population& population) {
