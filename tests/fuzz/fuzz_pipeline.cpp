@@ -2,6 +2,7 @@
 // the viewer run it on a trial, from bytes in memory:
 //   reader -> ew::toJointTrial -> ew::prepareWalkingTrial -> ew::fitFourierMeasured
 //   (-> ew::completeWalkingTrial with the default model when joints are missing)
+//   -> ew::measureGait from the file's events and from the kinematics (`eigenwalker-cli gait`)
 // The first input byte picks the format (value % 5: C3D, BVH, ASF+AMC, TRC, CSV); the rest
 // is the file (for ASF+AMC: skeleton, a line "%%AMC%%", motion). The fit gets the stride
 // frequency of the gait cycles as its ω hint, as a trial becomes a walker in
@@ -17,6 +18,7 @@
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
 #include "core/engine/joint_completion.h"
+#include "core/gait/gait_measures.h"
 #include "core/gait/prepare.h"
 #include "core/io/asf_amc_reader.h"
 #include "core/io/bvh_reader.h"
@@ -43,6 +45,25 @@ ew::RawTrial parseAs(std::uint8_t selector, const std::uint8_t* data, std::size_
       return ew::parseTrc(text, "fuzz.trc");
     default:
       return ew::parseJointCsv(text, "fuzz.csv");
+  }
+}
+
+// What `gait` does with a trial: a measured stride time must be finite and positive.
+void measureGaitBothWays(const ew::WalkingTrial& walking) {
+  const auto& m = walking.joints.positionsMm;
+  const double rate = walking.joints.rateHz;
+  const double durationS = static_cast<double>(m.rows() - 1) / rate;
+  for (const ew::GaitEventSet& events :
+       {ew::gaitEventsFromFile(walking.joints.events, durationS), ew::gaitEventsFromKinematics(m, rate)}) {
+    try {
+      const ew::GaitMeasures g = ew::measureGait(m, rate, events, walking.speedMps, "fuzz");
+      if (!(g.strideTimeS > 0.0) || !std::isfinite(g.cadenceSpm)) {
+        std::fprintf(stderr, "fuzz_pipeline: gait measures with stride time %g s\n", g.strideTimeS);
+        std::abort();
+      }
+    } catch (const ew::Error&) {
+      // no complete stride, a joint missing: the typed error `gait` reports
+    }
   }
 }
 
@@ -73,6 +94,7 @@ void openTrial(const std::uint8_t* data, std::size_t size) {
                  raw.file.c_str(), fit.omegaRadS, fit.phaseRad);
     std::abort();
   }
+  measureGaitBothWays(walking);
 }
 
 }  // namespace
