@@ -243,7 +243,7 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "                     OpenPose JSON, read back and reconstructed with everything unknown (--experiment\n"
       "                     camera only, not in all; docs/CAMERA.md); beside it the skeleton and snippet\n"
       "                     engines given the true camera (skeleton_*, snippet_* columns; --engine narrows)\n"
-      "  snippet_engines.csv subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error: the snippet engine\n"
+      "  snippet_engines.csv subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error,seconds: the snippet engine\n"
       "                     (Howe, Leventon & Freeman 1999) beside the eigenwalker on the same 2D frames; clip is\n"
       "                     trial, 0.5 s or whole trial (--experiment snippet only; docs/SNIPPETS.md)\n"
       "  snippet_phase.csv  angle_deg,engine,phase_bin,mpjpe_mm,frames: per-frame error over the gait cycle\n"

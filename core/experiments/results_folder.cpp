@@ -109,7 +109,7 @@ std::string snippetEnginesCsv(const std::vector<EngineRow>& rows) {
   return csv(kSnippetEnginesHeader, rows, [](const EngineRow& r) {
     return join({r.subject, r.clip, num(r.angleDeg), r.engine, std::to_string(r.frames),
                  r.error.empty() ? num(r.mpjpeMm) : "", r.error.empty() ? num(r.depthErrorMm2) : "",
-                 quotedError(r.error)});
+                 quotedError(r.error), num(r.seconds)});
   });
 }
 
@@ -180,8 +180,10 @@ using nlohmann::json;
 json snippetSummary(const SnippetExperimentResults& r) {
   json engines = json::array();
   std::map<std::tuple<std::string, std::string, double>, std::tuple<double, double, int, int>> cells;
+  std::map<std::tuple<std::string, std::string, double>, double> seconds;  // over every clip, answered or not
   for (const auto& row : r.rows) {
     auto& [mpjpe, depth, n, refused] = cells[{row.clip, row.engine, row.angleDeg}];
+    seconds[{row.clip, row.engine, row.angleDeg}] += row.seconds;
     if (!row.error.empty()) { ++refused; continue; }
     mpjpe += row.mpjpeMm;
     depth += row.depthErrorMm2;
@@ -192,7 +194,8 @@ json snippetSummary(const SnippetExperimentResults& r) {
     engines.push_back({{"clip", std::get<0>(key)}, {"engine", std::get<1>(key)}, {"angle_deg", std::get<2>(key)},
                        {"mean_mpjpe_mm", n ? json(mpjpe / n) : json(nullptr)},
                        {"mean_depth_error_mm2", n ? json(depth / n) : json(nullptr)},
-                       {"clips", n}, {"refused", refused}});
+                       {"clips", n}, {"refused", refused},
+                       {"mean_seconds", seconds[key] / std::max(1, n + refused)}});
   }
   json theta = json::array();
   std::map<double, std::map<std::string, std::vector<double>>> byAngle;

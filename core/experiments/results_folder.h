@@ -29,7 +29,7 @@ inline constexpr const char* kCameraHeader =
     "skeleton_eigenwalker_bones_mpjpe_mm,skeleton_eigenwalker_bones_error,snippet_mpjpe_mm,snippet_error";
 
 inline constexpr const char* kSnippetEnginesHeader =
-    "subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error";
+    "subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error,seconds";
 inline constexpr const char* kSnippetPhaseHeader = "angle_deg,engine,phase_bin,mpjpe_mm,frames";
 inline constexpr const char* kSnippetThetaHeader =
     "subject,angle_deg,snippet,true_deg,estimated_deg,error_deg,clip_estimate_deg";

@@ -88,9 +88,12 @@ EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const st
                     const Eigen::MatrixXd& truth, const Reconstruct& reconstruct, FoldOutput& out,
                     const ClipScoring& scoring) {
   const bool phase = scoring.phase;
-  EngineRow row{fold.subject, engine, clipName, alpha, static_cast<int>(truth.rows()), 0.0, 0.0, ""};
+  EngineRow row{fold.subject, engine, clipName, alpha, static_cast<int>(truth.rows()), 0.0, 0.0, "", 0.0};
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   try {
     const Eigen::MatrixXd frames = reconstruct();
+    row.seconds = elapsed();
     const ClipErrors e = clipErrors(frames, truth, alpha);
     if (scoring.gait) {
       const auto gait = gaitAgreementRows(fold.subject, engine, alpha, truth, frames, kClipRateHz);
@@ -103,6 +106,7 @@ EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const st
         out.phaseSamples.emplace_back(engine, alpha, static_cast<int>(f), e.perFrameMm(f));
   } catch (const Error& err) {
     row.error = err.what();
+    row.seconds = elapsed();
   }
   return row;
 }

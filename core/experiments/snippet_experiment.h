@@ -56,6 +56,7 @@ struct EngineRow {
   int frames = 0;
   double mpjpeMm = 0.0, depthErrorMm2 = 0.0;
   std::string error;                   // why the engine gave no answer (empty: it did)
+  double seconds = 0.0;                // the engine's wall time on this clip (answer or refusal)
 };
 
 struct PhaseRow {
