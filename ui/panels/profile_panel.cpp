@@ -43,21 +43,26 @@ void drawClipStarts(const AppState& s, const FrameContext& ctx) {
   drawPlot("##starts", ImGui::GetContentRegionAvail(), spec, series, ctx.scale);
 }
 
+// Colours from the theme, so the curve reads on the light and projector themes as on the dark
+// (a fixed near-white curve vanished on the light theme: issue 18).
+ImU32 curveColour() { return ImGui::GetColorU32(ImGuiCol_Text, 0.9f); }
+ImU32 gridColour() { return ImGui::GetColorU32(ImGuiCol_Border, 0.45f); }
+
 // The view-angle axis both plots share: a faint frame from a to b, a line every 90° from
 // −180° to 180° and labels under b (the labels kept inside [labelLeft, b.x]).
 void drawCircleAxis(ImDrawList* dl, ImVec2 a, ImVec2 b, float labelLeft, float scale) {
   const auto X = [&](double deg) { return a.x + static_cast<float>((deg + 180.0) / 360.0) * (b.x - a.x); };
-  dl->AddRectFilled(a, b, IM_COL32(255, 255, 255, 8));
+  dl->AddRectFilled(a, b, ImGui::GetColorU32(ImGuiCol_FrameBg));
   // A narrow panel labels every 180° only: five labels would run into each other.
   const bool everyQuarter = b.x - a.x > 6.0f * ImGui::CalcTextSize("-180°").x;
   for (int deg = -180; deg <= 180; deg += 90) {
-    dl->AddLine(ImVec2(X(deg), a.y), ImVec2(X(deg), b.y), IM_COL32(255, 255, 255, 28));
+    dl->AddLine(ImVec2(X(deg), a.y), ImVec2(X(deg), b.y), gridColour());
     if (!everyQuarter && deg % 180 != 0) continue;
     char buf[16];
     std::snprintf(buf, sizeof buf, "%d°", deg);
     const float tw = ImGui::CalcTextSize(buf).x;
     dl->AddText(ImVec2(std::clamp(X(deg) - tw * 0.5f, labelLeft, b.x - tw), b.y + 2.0f * scale),
-                IM_COL32(150, 160, 175, 255), buf);
+                ImGui::GetColorU32(ImGuiCol_TextDisabled), buf);
   }
 }
 
@@ -82,7 +87,7 @@ void drawSnippetAngles(const ReconBase& r, const FrameContext& ctx) {
   const std::size_t n = seq.freeAlphaDeg.size();
   for (std::size_t k = 0; k < n; ++k) {
     const float y = a.y + (b.y - a.y) * (static_cast<float>(k) + 0.5f) / static_cast<float>(std::max<std::size_t>(n, 1));
-    dl->AddCircleFilled(ImVec2(X(seq.freeAlphaDeg[k]), y), 3.5f * ctx.scale, IM_COL32(230, 234, 240, 230));
+    dl->AddCircleFilled(ImVec2(X(seq.freeAlphaDeg[k]), y), 3.5f * ctx.scale, curveColour());
   }
   ImGui::Dummy(avail);
   if (ImGui::IsItemHovered())
@@ -136,8 +141,8 @@ void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
         return b.y - static_cast<float>(t) * (b.y - a.y);
       };
       drawCircleAxis(dl, a, b, p0.x, ctx.scale);
-      const ImU32 gridC = IM_COL32(255, 255, 255, 28);
-      const ImU32 labelC = IM_COL32(150, 160, 175, 255);
+      const ImU32 gridC = gridColour();
+      const ImU32 labelC = ImGui::GetColorU32(ImGuiCol_TextDisabled);
       for (int e = static_cast<int>(lo); e <= static_cast<int>(hi); ++e) {
         const float y = Y(std::pow(10.0, e));
         dl->AddLine(ImVec2(a.x, y), ImVec2(b.x, y), gridC);
@@ -152,8 +157,7 @@ void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
       std::vector<ImVec2> pts(static_cast<std::size_t>(n));
       for (Eigen::Index i = 0; i < n; ++i)
         pts[static_cast<std::size_t>(i)] = ImVec2(X(vs.scanAlphaDeg(i)), Y(vs.scanObjective(i)));
-      dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), IM_COL32(230, 234, 240, 230), 0,
-                      1.8f * ctx.scale);
+      dl->AddPolyline(pts.data(), static_cast<int>(pts.size()), curveColour(), 0, 1.8f * ctx.scale);
       // Minima.
       for (std::size_t m = 0; m < vs.minima.size(); ++m) {
         const auto& mn = vs.minima[m];
