@@ -29,7 +29,8 @@ struct EvaluateArgs {
   std::vector<std::string> data;
   std::string out;
   std::vector<std::string> experiments{"all"};
-  std::string angles = "-90:90:1";
+  std::string angles;      // empty: each experiment's default views
+  int cameras = 0;         // experiment "engines": random cameras per walker (0 = its default)
   std::string method = "both";
   double sigma2Mm2 = 0.0;  // 0 = the sweep's optimum
   int components = 0;      // 0 = 95 % of the variance
@@ -115,10 +116,10 @@ std::vector<std::string> experimentsForEngines(const EvaluateArgs& a) {
   if (a.experiments == std::vector<std::string>{"all"}) return {experimentName(Experiment::Snippet)};
   for (const auto& n : a.experiments) {
     const auto e = experimentFromName(n);
-    if (e && *e != Experiment::Snippet && *e != Experiment::SnippetClusters)
+    if (e && *e != Experiment::Snippet && *e != Experiment::SnippetClusters && *e != Experiment::Engines)
       throw Error(ErrorKind::BadArgument, "--engine", "",
                   "experiment '" + n + "' is the eigenwalker's (Zhang & Troje 2007); the other engines' are "
-                  "'snippet' (every engine) and 'snippet-clusters' (the snippet prior)");
+                  "'snippet' and 'engines' (every engine) and 'snippet-clusters' (the snippet prior)");
     if (e && *e == Experiment::SnippetClusters && !asksFor(a, EngineKind::Snippet))
       throw Error(ErrorKind::BadArgument, "--engine", "", "experiment 'snippet-clusters' is the snippet prior's");
   }
@@ -127,7 +128,7 @@ std::vector<std::string> experimentsForEngines(const EvaluateArgs& a) {
 
 EvaluationOptions evaluationOptions(const EvaluateArgs& a, ProgressPrinter& printer) {
   EvaluationOptions o;
-  o.anglesDeg = parseAngleSpec(a.angles);
+  o.anglesDeg = parseAngleSpec(a.angles.empty() ? "-90:90:1" : a.angles);
   o.lsq = a.method != "map";
   o.map = a.method != "lsq";
   if (a.sigma2Mm2 > 0) o.sigma2Mm2 = a.sigma2Mm2;
@@ -147,6 +148,36 @@ void printHeadline(const EvaluationResults& r, const fs::path& out) {
   for (const auto& [name, s] : r.timingsS) std::cerr << "  " << name << ": " << std::setprecision(2) << s << " s\n";
   for (const auto& w : r.warnings) std::cerr << "warning: " << w << "\n";
   std::cerr << "wrote " << out.string() << "\n";
+}
+
+std::vector<EngineKind> enginesAskedFor(const EvaluateArgs& a) {
+  std::vector<EngineKind> kinds;
+  for (EngineKind k : {EngineKind::Eigenwalker, EngineKind::Snippet, EngineKind::Skeleton})
+    if (asksFor(a, k)) kinds.push_back(k);
+  return kinds;
+}
+
+// Experiment "engines" (engines_experiment.h): the eigenwalker folds of the camera setting
+// are built here, like the paper's experiments build theirs.
+void runEnginesExperiment(const Dataset& dataset, const std::vector<Walker>& walkers, const EvaluateArgs& a,
+                          int threads, EvaluationResults& results) {
+  const auto t0 = std::chrono::steady_clock::now();
+  EnginesExperimentOptions o;
+  o.threads = threads;
+  o.engines = enginesAskedFor(a);
+  if (!a.angles.empty()) o.anglesDeg = parseAngleSpec(a.angles);
+  if (a.cameras > 0) o.camerasPerWalker = a.cameras;
+  if (a.sigma2Mm2 > 0) o.sigma2Mm2 = a.sigma2Mm2;
+  if (a.components > 0) o.model.components = a.components;
+  if (a.clusters > 0) o.prior.clusters = a.clusters;
+  if (a.clusterComponents > 0) o.prior.components = a.clusterComponents;
+  const std::vector<ExperimentWalker> experimentSet = experimentWalkers(walkers, dataset);
+  std::cerr << "engines: " << dataset.subjects().size() << " folds on " << threads << " threads\n";
+  const std::vector<Fold> folds = buildFolds(experimentSet, o.model, threads);
+  results.engines = compareEngines(dataset, walkers, experimentSet, folds, o);
+  results.warnings.insert(results.warnings.end(), results.engines.warnings.begin(), results.engines.warnings.end());
+  results.ran.insert(Experiment::Engines);
+  results.timingsS.emplace_back("engines", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
 // The snippet engine's experiments (snippet_experiment.h) learn from the dataset's trials.
@@ -180,6 +211,7 @@ void runSnippetExperiments(const Dataset& dataset, const std::vector<Walker>& wa
     results.timingsS.emplace_back("snippet-clusters",
                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
+  if (experiments.count(Experiment::Engines)) runEnginesExperiment(dataset, walkers, a, threads, results);
 }
 
 int runEvaluate(const EvaluateArgs& a) {
@@ -209,6 +241,7 @@ int runEvaluate(const EvaluateArgs& a) {
   std::set<Experiment> eigenwalkerExperiments = experiments;
   eigenwalkerExperiments.erase(Experiment::Snippet);
   eigenwalkerExperiments.erase(Experiment::SnippetClusters);
+  eigenwalkerExperiments.erase(Experiment::Engines);
   EvaluationResults results = runEvaluation(experimentWalkers(walkers, dataset), eigenwalkerExperiments, options);
   runSnippetExperiments(dataset, walkers, experiments, a, results);
   results.timingsS.insert(results.timingsS.begin(), {"load", loadS});
@@ -254,17 +287,29 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "                     mean_abs_difference: their agreement (Bland-Altman)\n"
       "  snippet_clusters.csv clusters,held_out_log_likelihood,em_held_out_log_likelihood (--experiment\n"
       "                     snippet-clusters only)\n"
+      "  engines.csv        setting,subject,engine,variant,angle_deg,camera,noise,noise_unit,frames,mpjpe_mm,\n"
+      "                     depth_error_mm2,seconds,error: every engine on the same held-out walkers, views\n"
+      "                     (orthographic, 2D noise in mm; --angles, default 0,30,60,90) and random cameras\n"
+      "                     (OpenPose JSON, noise in px; --cameras per walker, default 3) (--experiment engines\n"
+      "                     only; docs/RESULTS.md); engines_summary.csv per setting, engine, variant and noise:\n"
+      "                     clips, failures, mean and median MPJPE, seconds per clip, ms per frame;\n"
+      "                     engines_gait_agreement.csv and engines_gait_bland_altman.csv the gait measures'\n"
+      "                     agreement per setting, view and noise\n"
       "  summary.json, fig*.png. DIR is written to a temporary sibling and renamed into place.");
   cmd->add_option("--data", args->data, "Trial files, folders (recursive) or manifest CSVs")->required();
   cmd->add_option("--out", args->out, "Output folder (replaced only after success)")->required();
   cmd->add_option("--experiment", args->experiments,
                   "variance, sigma-sweep, known-view, unknown-view, noise, missing-joints, lower-body, camera, snippet, "
-                  "snippet-clusters or all "
+                  "snippet-clusters, engines or all "
                   "(repeat or comma-separate)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "lower-body", "camera", "snippet", "snippet-clusters", "all"}))
+      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "lower-body", "camera", "snippet", "snippet-clusters", "engines", "all"}))
       ->capture_default_str();
-  cmd->add_option("--angles", args->angles, "View angles in degrees: FROM:TO:STEP or a list a,b,c")->capture_default_str();
+  cmd->add_option("--angles", args->angles,
+                  "View angles in degrees: FROM:TO:STEP or a list a,b,c (default -90:90:1; experiment 'engines' "
+                  "0,30,60,90)");
+  cmd->add_option("--cameras", args->cameras, "Experiment 'engines': random cameras per held-out walker (default 3)")
+      ->check(CLI::Range(1, 100));
   cmd->add_option("--method", args->method, "lsq, map or both")
       ->check(CLI::IsMember({"lsq", "map", "both"}))->capture_default_str();
   cmd->add_option("--sigma2", args->sigma2Mm2, "MAP noise variance in mm^2 (default: the sigma-sweep optimum)")
@@ -283,7 +328,7 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
                   "Engines to evaluate (repeatable; default eigenwalker and snippet): eigenwalker runs the "
                   "paper's experiments, snippet the snippet engine's ('snippet', 'snippet-clusters'), skeleton "
                   "(Zou et al. 2009, with each walker's own bone lengths) experiment 'snippet'; experiments "
-                  "'snippet' and 'camera' score each engine asked for ('camera' needs eigenwalker)")
+                  "'snippet', 'engines' and 'camera' score each engine asked for ('camera' needs eigenwalker)")
       ->check(CLI::IsMember({"eigenwalker", "snippet", "skeleton"}));
   cmd->callback([args, &exitCode] {
     try {

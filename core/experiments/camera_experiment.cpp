@@ -1,6 +1,7 @@
 #include "core/experiments/camera_experiment.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -22,6 +23,14 @@
 #include "core/skeleton/skeleton_camera.h"
 
 namespace ew {
+
+const char* const kCameraEigenwalker = "eigenwalker";
+const char* const kCameraSkeletonOwnBones = "skeleton (own bones)";
+const char* const kCameraSkeletonGuided = "skeleton (own bones, eigenwalker's branches)";
+const char* const kCameraSkeletonTable2 = "skeleton (Table 2 x stature)";
+const char* const kCameraSkeletonEigenwalkerBones = "skeleton (eigenwalker's bones and branches)";
+const char* const kCameraSnippet = "snippet (weak perspective)";
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -124,6 +133,27 @@ double mpjpeWithoutTranslation(const MatrixXd& rec, const MatrixXd& truth) {
   return sum / static_cast<double>(d.rows() * kJointCount);
 }
 
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Where an engine's gait rows go when options.gait asks for them: beside the walker's own
+// measures, both from frames in the walker's frame at the clip's rate.
+struct GaitSink {
+  bool on;
+  double fps;
+  CameraRow& row;
+  void add(const char* engine, const Clip& clip, const MatrixXd& truth, const MatrixXd& frames) const {
+    if (!on) return;
+    for (auto& g : gaitAgreementRows(row.subject, engine, clip.camera.alphaDeg, truth, frames, fps)) {
+      g.setting = "camera";
+      g.noise = row.noisePx;
+      g.camera = row.camera;
+      row.gait.push_back(std::move(g));
+    }
+  }
+};
+
 fs::path clipFolder(int index) {
   return fs::temp_directory_path() /
          ("eigenwalker_camera_" + std::to_string(::getpid()) + "_" + std::to_string(index));
@@ -145,7 +175,9 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   f.estimator = {Estimator::Map, o.sigma2Mm2};
   f.strideHzHint = imageGaitCycles(t).strideHz;
   f.file = folder;
+  const auto t0 = std::chrono::steady_clock::now();
   const CameraFit fit = reconstructUnknownCamera(fold.model, t.jointsPx, t.rateHz, f);
+  row.seconds = secondsSince(t0);
   row.alphaDeg = fit.camera.alphaDeg;
   row.elevationDeg = fit.camera.elevationDeg;
   row.focalPx = fit.camera.focalPx;
@@ -159,6 +191,7 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   const MatrixXd frames = synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, times);
   row.mpjpeMm = mpjpeWithoutTranslation(frames, clip.truth);
   row.reprojectionRmsPx = fit.reprojectionRmsPx;
+  GaitSink{o.gait, o.fps, row}.add(kCameraEigenwalker, clip, clip.truth, frames);
   EigenwalkerClip out{fit.w, fit.omegaRadS, {}};
   const MatrixXd camera = walkInCameraFrame(frames, times, fit.camera);
   for (Eigen::Index frame = 0; frame < camera.rows(); ++frame)
@@ -195,28 +228,36 @@ MatrixXd weakPerspectiveView(const MatrixXd& px, const WalkCamera& c, const Matr
   return uv;
 }
 
-// The skeleton engine through the true camera with `bones`, scored; `keep` receives its result.
+// The skeleton engine (labelled `engine`) through the true camera with `bones`, scored;
+// `keep` receives its result.
 EngineClipScore skeletonOnClip(const Clip& clip, const KeypointTrial& t, const BoneLengths& bones,
-                               const std::string& name, const std::vector<JointMatrix>* guide = nullptr,
+                               const std::string& name, const char* engine, const GaitSink& gait,
+                               const std::vector<JointMatrix>* guide = nullptr,
                                std::optional<SkeletonCameraResult>* keep = nullptr) {
   EngineClipScore score{std::nan(""), 0, ""};
+  const auto t0 = std::chrono::steady_clock::now();
   try {
     SkeletonCameraOptions options;
     if (guide) options.solve.guideMm = *guide;
     SkeletonCameraResult r = reconstructThroughCamera(t.jointsPx, calibrationOf(clip.camera, kImageW, kImageH), bones,
                                                       t.rateHz, name, options);
-    score.mpjpeMm = mpjpeWithoutTranslation(shiftedByProgression(r.worldMm, clip, -1.0), clip.truth);
+    score.seconds = secondsSince(t0);
+    const MatrixXd inPlace = shiftedByProgression(r.worldMm, clip, -1.0);
+    score.mpjpeMm = mpjpeWithoutTranslation(inPlace, clip.truth);
+    gait.add(engine, clip, clip.truth, inPlace);
     score.clampedBoneFrames = r.sequence.clampedBoneFrames;
     if (keep) *keep = std::move(r);
   } catch (const std::exception& e) {
     score.error = e.what();
+    score.seconds = secondsSince(t0);
   }
   return score;
 }
 
 EngineClipScore snippetOnClip(const Clip& clip, const KeypointTrial& t, const SnippetEngine& snippet,
-                              const SkeletonCameraResult& depthFrom, const std::string& name) {
+                              const SkeletonCameraResult& depthFrom, const std::string& name, const GaitSink& gait) {
   EngineClipScore score{std::nan(""), 0, ""};
+  const auto t0 = std::chrono::steady_clock::now();
   try {
     ViewInput in;
     in.uvMm = weakPerspectiveView(t.jointsPx, clip.camera,
@@ -225,9 +266,13 @@ EngineClipScore snippetOnClip(const Clip& clip, const KeypointTrial& t, const Sn
     in.alphaDeg = clip.camera.alphaDeg;
     in.name = name;
     const EngineResult e = reconstructWithEngine(snippet, in);
-    score.mpjpeMm = mpjpeWithoutTranslation(e.framesMm, shiftedByProgression(clip.truth, clip, 1.0));
+    score.seconds = secondsSince(t0);
+    const MatrixXd truth = shiftedByProgression(clip.truth, clip, 1.0);
+    score.mpjpeMm = mpjpeWithoutTranslation(e.framesMm, truth);
+    gait.add(kCameraSnippet, clip, truth, e.framesMm);
   } catch (const std::exception& e) {
     score.error = e.what();
+    score.seconds = secondsSince(t0);
   }
   return score;
 }
@@ -252,14 +297,18 @@ void geometricEnginesOnClip(const Clip& clip, const KeypointTrial& t, const Snip
   } catch (const std::exception& e) {
     return otherEnginesFailed(o, e.what(), row);
   }
+  const GaitSink gait{o.gait, o.fps, row};
+  const GaitSink noGait{false, o.fps, row};  // the skeleton's depth for the snippet engine only
   std::optional<SkeletonCameraResult> own;
-  const EngineClipScore ownScore = skeletonOnClip(clip, t, ownBones, name, nullptr, &own);
-  if (o.snippet) row.snippet = own && snippet ? snippetOnClip(clip, t, *snippet, *own, name) : failed(ownScore.error);
+  const EngineClipScore ownScore =
+      skeletonOnClip(clip, t, ownBones, name, kCameraSkeletonOwnBones, o.skeleton ? gait : noGait, nullptr, &own);
+  if (o.snippet)
+    row.snippet = own && snippet ? snippetOnClip(clip, t, *snippet, *own, name, gait) : failed(ownScore.error);
   if (!o.skeleton) return;
   row.skeleton = ownScore;
   try {
     if (!eigenwalker) throw Error(ErrorKind::BadData, name, "", "the eigenwalker gave no walker: " + row.error);
-    row.skeletonGuided = skeletonOnClip(clip, t, ownBones, name, &eigenwalker->guideMm);
+    row.skeletonGuided = skeletonOnClip(clip, t, ownBones, name, kCameraSkeletonGuided, gait, &eigenwalker->guideMm);
   } catch (const std::exception& e) {
     row.skeletonGuided = failed(e.what());
   }
@@ -267,7 +316,8 @@ void geometricEnginesOnClip(const Clip& clip, const KeypointTrial& t, const Snip
     const auto size = measureBodySize(clip.truth);
     if (!size) throw Error(ErrorKind::BadData, name, "", "no head-to-ankles distance for a stature");
     row.skeletonTable2 =
-        skeletonOnClip(clip, t, boneLengthsFromZouTable2(size->lengthMm / kHeadAboveAnklesPerStature, name), name);
+        skeletonOnClip(clip, t, boneLengthsFromZouTable2(size->lengthMm / kHeadAboveAnklesPerStature, name), name,
+                       kCameraSkeletonTable2, gait);
   } catch (const std::exception& e) {
     row.skeletonTable2 = failed(e.what());
   }
@@ -275,7 +325,7 @@ void geometricEnginesOnClip(const Clip& clip, const KeypointTrial& t, const Snip
     if (!eigenwalker) throw Error(ErrorKind::BadData, name, "", "the eigenwalker gave no walker: " + row.error);
     row.skeletonEigenwalkerBones =
         skeletonOnClip(clip, t, boneLengthsFromWalker(eigenwalker->w, eigenwalker->omegaRadS, name), name,
-                       &eigenwalker->guideMm);
+                       kCameraSkeletonEigenwalkerBones, gait, &eigenwalker->guideMm);
   } catch (const std::exception& e) {
     row.skeletonEigenwalkerBones = failed(e.what());
   }

@@ -35,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "core/experiments/gait_agreement.h"
 #include "core/experiments/leave_one_out.h"
 
 namespace ew {
@@ -50,6 +51,9 @@ struct CameraExperimentOptions {
   int threads = 1;
   bool skeleton = true;    // score the skeleton engine beside the eigenwalker
   bool snippet = true;     // and the snippet engine (needs the skeleton engine's depth)
+  // Measure the gait of every engine's reconstruction beside the walker's own
+  // (gait_agreement.h; setting "camera", noise in px): CameraRow::gait.
+  bool gait = false;
 };
 
 // Another engine's result on a clip: NaN MPJPE and the reason when it gave none.
@@ -57,6 +61,8 @@ struct EngineClipScore {
   double mpjpeMm = 0.0;
   int clampedBoneFrames = 0;  // skeleton only
   std::string error;
+  double seconds = 0.0;       // the engine's wall time on the clip (the snippet engine's
+                              // excludes the skeleton engine's depth it is given)
 };
 
 struct CameraRow {
@@ -69,12 +75,22 @@ struct CameraRow {
   double alphaDeg = 0, elevationDeg = 0, focalPx = 0, distanceM = 0;
   double alphaErrorDeg = 0, elevationErrorDeg = 0, focalRelError = 0, heightRelError = 0;
   double mpjpeMm = 0, reprojectionRmsPx = 0;
+  double seconds = 0;       // the eigenwalker's wall time: fit through the unknown camera
   std::string error;        // empty: reconstructed; else why not (a failure)
   std::optional<EngineClipScore> skeleton, snippet;  // unset: not asked for
   std::optional<EngineClipScore> skeletonTable2;            // Table 2 × stature
   std::optional<EngineClipScore> skeletonEigenwalkerBones;  // the eigenwalker's bones and guide
   std::optional<EngineClipScore> skeletonGuided;  // own bones, branches from the eigenwalker's fit
+  std::vector<GaitAgreementRow> gait;  // options.gait: per engine that answered, per measure
 };
+
+// The engine labels of CameraRow::gait, in the order of the columns of camera.csv.
+extern const char* const kCameraEigenwalker;
+extern const char* const kCameraSkeletonOwnBones;
+extern const char* const kCameraSkeletonGuided;
+extern const char* const kCameraSkeletonTable2;
+extern const char* const kCameraSkeletonEigenwalkerBones;
+extern const char* const kCameraSnippet;
 
 // Error(BadArgument) "camera: …" for no cameras, a negative or non-finite noise level, a
 // share outside [0, 1], σ² negative, a frame rate outside 1-240, or folds not of `walkers`.

@@ -105,15 +105,6 @@ std::string formatLevel(double mm) {
   return s;
 }
 
-// Independent, schedule-free noise streams: one seed per (walker, angle, level) cell.
-std::uint64_t cellSeed(std::uint64_t seed, size_t walker, size_t angle, size_t level) {
-  std::uint64_t z = seed ^ (walker * 0x9E3779B97F4A7C15ull) ^ (angle * 0xBF58476D1CE4E5B9ull) ^
-                    (level * 0x94D049BB133111EBull);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  return z ^ (z >> 31);
-}
-
 // Rows of ŵ (150: block, joint, u/v) that belong to hidden joints become NaN, so a test
 // would notice if the reconstruction read them.
 void hideJoints(Eigen::VectorXd& observed, const std::vector<int>& joints) {
@@ -150,6 +141,7 @@ std::string experimentName(Experiment e) {
     case Experiment::Camera: return "camera";
     case Experiment::Snippet: return "snippet";
     case Experiment::SnippetClusters: return "snippet-clusters";
+    case Experiment::Engines: return "engines";
   }
   return "";
 }
@@ -166,7 +158,7 @@ std::optional<Experiment> experimentFromName(const std::string& name) {
   for (Experiment e : allExperiments()) {
     if (experimentName(e) == name) return e;
   }
-  for (Experiment e : {Experiment::Camera, Experiment::Snippet, Experiment::SnippetClusters})
+  for (Experiment e : {Experiment::Camera, Experiment::Snippet, Experiment::SnippetClusters, Experiment::Engines})
     if (name == experimentName(e)) return e;
   return std::nullopt;
 }
@@ -466,7 +458,9 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // (which build their own folds from the dataset's trials).
 bool needsFolds(const std::set<Experiment>& e) {
   for (Experiment x : e)
-    if (x != Experiment::Variance && x != Experiment::Snippet && x != Experiment::SnippetClusters) return true;
+    if (x != Experiment::Variance && x != Experiment::Snippet && x != Experiment::SnippetClusters &&
+        x != Experiment::Engines)
+      return true;
   return false;
 }
 

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/experiments/camera_experiment.h"
+#include "core/experiments/engines_experiment.h"
 #include "core/experiments/leave_one_out.h"
 #include "core/experiments/lower_body.h"
 #include "core/experiments/snippet_experiment.h"
@@ -25,6 +26,7 @@ enum class Experiment {
   Variance, SigmaSweep, KnownView, UnknownView, Noise, MissingJoints, LowerBody, Camera,
   Snippet,          // snippet engine beside the eigenwalker (snippet_experiment.h); by name only
   SnippetClusters,  // the snippet prior's cluster count by held-out likelihood; by name only
+  Engines,          // the three engines on the same views, noise and cameras (engines_experiment.h)
 };
 
 std::string experimentName(Experiment e);  // "variance", "sigma-sweep", …
@@ -118,6 +120,7 @@ struct EvaluationResults {
   // dataset's trials, so the caller runs them (snippetComparison, chooseSnippetClusters).
   SnippetExperimentResults snippet;
   std::vector<ClusterChoiceRow> snippetClusters;
+  EnginesExperimentResults engines;     // experiment "engines": the caller runs it too
   std::vector<std::pair<std::string, double>> timingsS;  // per experiment, wall seconds
   std::vector<std::string> warnings;
 };

@@ -61,15 +61,18 @@ std::vector<GaitAgreementRow> gaitAgreementRows(const std::string& subject, cons
 
 std::vector<BlandAltmanRow> blandAltman(const std::vector<GaitAgreementRow>& rows) {
   std::vector<BlandAltmanRow> out;
-  std::map<std::tuple<std::string, double, std::string>, size_t> slot;
+  std::map<std::tuple<std::string, std::string, double, double, std::string>, size_t> slot;
   std::vector<std::vector<double>> differences, mocap;
   for (const auto& r : rows) {
-    const auto key = std::make_tuple(r.engine, r.angleDeg, r.measure);
+    const bool view = r.setting == "view";
+    const auto key = std::make_tuple(r.setting, r.engine, view ? r.angleDeg : 0.0, r.noise, r.measure);
     auto [it, added] = slot.emplace(key, out.size());
     if (added) {
       BlandAltmanRow b;
       b.engine = r.engine;
-      b.angleDeg = r.angleDeg;
+      b.angleDeg = view ? r.angleDeg : NAN;
+      b.setting = r.setting;
+      b.noise = r.noise;
       b.measure = r.measure;
       for (const auto& m : agreementMeasures())
         if (r.measure == m.name) b.unit = m.unit;

@@ -31,9 +31,15 @@ const std::vector<GaitMeasureName>& agreementMeasures();
 
 struct GaitAgreementRow {
   std::string subject, engine;
-  double angleDeg = 0.0;
+  double angleDeg = 0.0;                    // the view (setting "camera": the camera's azimuth)
   std::string measure;
   double mocap = NAN, reconstructed = NAN;  // NaN: that side could not be measured
+  // Experiment "engines" (engines_experiment.h) reports more than one condition: "view" is an
+  // orthographic view at angleDeg with `noise` mm of 2D noise, "camera" a random pinhole
+  // camera (number `camera` of the walker's) with `noise` px.
+  std::string setting = "view";
+  double noise = 0.0;
+  int camera = -1;
 };
 
 // One walker at one view: a row per measure. truthMm and reconstructedMm: T × 45 at rateHz in
@@ -46,7 +52,9 @@ std::vector<GaitAgreementRow> gaitAgreementRows(const std::string& subject, cons
 
 struct BlandAltmanRow {
   std::string engine;
-  double angleDeg = 0.0;
+  double angleDeg = 0.0;  // NaN for setting "camera": its rows pool every random camera
+  std::string setting = "view";
+  double noise = 0.0;
   std::string measure, unit;
   int pairs = 0;        // walkers where both sides were measured
   int unmeasured = 0;   // where the reconstruction (or the mocap) gave no value
@@ -55,7 +63,7 @@ struct BlandAltmanRow {
   double meanAbsDifference = NAN;
 };
 
-// Grouped by engine, angle and measure, in the order first seen.
+// Grouped by setting, engine, angle (views only), noise and measure, in the order first seen.
 std::vector<BlandAltmanRow> blandAltman(const std::vector<GaitAgreementRow>& rows);
 
 }  // namespace ew

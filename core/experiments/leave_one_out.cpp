@@ -122,4 +122,12 @@ void parallelFor(int count, int threads, const std::function<void(int)>& body) {
   if (firstError) std::rethrow_exception(firstError);
 }
 
+std::uint64_t cellSeed(std::uint64_t seed, size_t walker, size_t angle, size_t level) {
+  std::uint64_t z = seed ^ (walker * 0x9E3779B97F4A7C15ull) ^ (angle * 0xBF58476D1CE4E5B9ull) ^
+                    (level * 0x94D049BB133111EBull);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;  // splitmix64's finaliser
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  return z ^ (z >> 31);
+}
+
 }  // namespace ew

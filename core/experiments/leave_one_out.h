@@ -4,6 +4,7 @@
 // precomputed once (all joints observed).
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -53,6 +54,10 @@ struct Fold {
 // direction of variation).
 std::vector<Fold> buildFolds(const std::vector<ExperimentWalker>& walkers,
                              const ModelOptions& options, int threads);
+
+// Independent, schedule-free noise streams: one seed per (walker, angle, level) cell, the
+// same whichever thread draws it.
+std::uint64_t cellSeed(std::uint64_t seed, size_t walker, size_t angle, size_t level);
 
 // Runs body(i) for i in [0, count) on up to `threads` threads (work pulled from a shared
 // counter, so uneven folds balance). The first exception is rethrown after all finish.

@@ -256,6 +256,13 @@ LinePlot cameraFigure(const EvaluationResults& r) {
   return p;
 }
 
+// The engines' colours: one per engine, the same in every figure.
+Rgb engineColor(const std::string& engine) {
+  if (engine.rfind("eigenwalker", 0) == 0) return Rgb{31, 119, 180};
+  if (engine.rfind("snippet", 0) == 0) return Rgb{214, 39, 40};
+  return Rgb{44, 160, 44};
+}
+
 // Bland-Altman plot of one gait measure: per engine, each walker and view a point (mean of the
 // two measurements, reconstruction − motion capture), the bias as a solid line and the 95 %
 // limits of agreement as dashed lines.
@@ -263,7 +270,6 @@ LinePlot blandAltmanFigure(const std::vector<GaitAgreementRow>& rows, const std:
                            const std::string& title, const std::string& unit) {
   LinePlot p{title, "mean of motion capture and reconstruction (" + unit + ")",
              "reconstruction - motion capture (" + unit + ")", {}, false, {}, {}, {}, {}, {}, {}};
-  const std::array<Rgb, 3> colors{Rgb{214, 39, 40}, Rgb{31, 119, 180}, Rgb{44, 160, 44}};
   std::map<std::string, PlotSeries> points;
   std::vector<std::string> order;
   double lo = INFINITY, hi = -INFINITY, yLo = 0.0, yHi = 0.0;
@@ -271,7 +277,7 @@ LinePlot blandAltmanFigure(const std::vector<GaitAgreementRow>& rows, const std:
     if (r.measure != measure || !std::isfinite(r.mocap) || !std::isfinite(r.reconstructed)) continue;
     if (!points.count(r.engine)) {
       order.push_back(r.engine);
-      points[r.engine] = PlotSeries{r.engine, {}, {}, {}, colors[(order.size() - 1) % colors.size()], false, true, false};
+      points[r.engine] = PlotSeries{r.engine, {}, {}, {}, engineColor(r.engine), false, true, false};
     }
     const double mean = 0.5 * (r.mocap + r.reconstructed), diff = r.reconstructed - r.mocap;
     points[r.engine].x.push_back(mean);
@@ -308,6 +314,130 @@ LinePlot blandAltmanFigure(const std::vector<GaitAgreementRow>& rows, const std:
   return p;
 }
 
+// [SECTION] Experiment "engines"
+
+// Mean MPJPE against the view, one line per engine without noise and one (dashed) at the
+// highest noise level (the levels between are in engines_summary.csv).
+LinePlot enginesViewFigure(const std::vector<EnginesRow>& rows) {
+  LinePlot p{"Three engines, known orthographic view: error against view", "view angle (deg)",
+             "mean MPJPE (mm, mean translation removed)", {}, false, {}, {}, 0.0, {}, 30.0, {}};
+  double lowest = INFINITY, highest = -INFINITY;
+  for (const auto& r : rows)
+    if (r.setting == "view") lowest = std::min(lowest, r.noise), highest = std::max(highest, r.noise);
+  std::map<std::pair<std::string, double>, std::map<double, std::pair<double, int>>> cells;  // (engine, noise) → angle
+  std::vector<std::pair<std::string, double>> order;
+  for (const auto& r : rows) {
+    if (r.setting != "view" || !std::isfinite(r.mpjpeMm) || (r.noise != lowest && r.noise != highest)) continue;
+    const auto key = std::make_pair(r.engine, r.noise);
+    if (!cells.count(key)) order.push_back(key);
+    auto& c = cells[key][r.angleDeg];
+    c.first += r.mpjpeMm;
+    ++c.second;
+  }
+  std::sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  double top = 0.0;
+  for (const auto& key : order) {
+    PlotSeries s{key.first + ", " + fmt(key.second) + " mm noise", {}, {}, {}, engineColor(key.first),
+                 key.second > lowest, true};
+    for (const auto& [angle, c] : cells[key]) {
+      s.x.push_back(angle);
+      s.y.push_back(c.first / c.second);
+      top = std::max(top, s.y.back());
+    }
+    p.series.push_back(s);
+  }
+  p.yMax = 1.7 * top;  // the legend above the lines
+  p.notes.push_back("each held-out walker's first trial, 30 Hz; the same noise for every engine");
+  return p;
+}
+
+// Mean MPJPE of every engine and variant per noise level, through the random cameras.
+BarPlot enginesCameraFigure(const std::vector<EnginesSummaryRow>& summary) {
+  BarPlot p{"Three engines through random pinhole cameras", "mean MPJPE (mm, mean translation removed)", {}, {}, {},
+            {}, ""};
+  std::vector<double> levels;
+  for (const auto& e : summary)
+    if (e.setting == "camera" && std::find(levels.begin(), levels.end(), e.noise) == levels.end())
+      levels.push_back(e.noise);
+  const std::array<Rgb, 4> shades{Rgb{120, 170, 220}, Rgb{40, 110, 200}, Rgb{20, 50, 120}, Rgb{10, 20, 60}};
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    p.seriesLabels.push_back(fmt(levels[l]) + " px noise");
+    p.seriesColors.push_back(shades[std::min(l, shades.size() - 1)]);
+  }
+  for (const auto& e : summary) {
+    if (e.setting != "camera") continue;
+    const std::string label = e.engine + ", " + e.variant;
+    auto g = std::find_if(p.groups.begin(), p.groups.end(), [&](const BarGroup& b) { return b.label == label; });
+    if (g == p.groups.end()) {
+      p.groups.push_back({label, std::vector<double>(levels.size(), NAN)});
+      g = p.groups.end() - 1;
+    }
+    g->values[static_cast<std::size_t>(std::find(levels.begin(), levels.end(), e.noise) - levels.begin())] =
+        e.meanMpjpeMm;
+  }
+  return p;
+}
+
+// Time per frame of every engine and variant at the lowest noise level, per setting.
+BarPlot enginesTimeFigure(const std::vector<EnginesSummaryRow>& summary) {
+  BarPlot p{"Three engines: time per frame (noise-free clips)", "ms per frame (wall, one thread per clip)",
+            {"known view", "random camera"}, {Rgb{90, 90, 90}, Rgb{40, 110, 200}}, {}, {}, ""};
+  for (const auto& e : summary) {
+    if (e.noise != 0.0) continue;
+    const std::string label = e.engine + ", " + e.variant;
+    auto g = std::find_if(p.groups.begin(), p.groups.end(), [&](const BarGroup& b) { return b.label == label; });
+    if (g == p.groups.end()) {
+      p.groups.push_back({label, {NAN, NAN}});
+      g = p.groups.end() - 1;
+    }
+    g->values[e.setting == "view" ? 0 : 1] = e.msPerFrame;
+  }
+  return p;
+}
+
+// The gait rows of one setting and noise level, of the engines named (empty: all).
+std::vector<GaitAgreementRow> gaitRowsOf(const std::vector<GaitAgreementRow>& rows, const std::string& setting,
+                                         double noise, const std::vector<std::string>& engines) {
+  std::vector<GaitAgreementRow> out;
+  for (const auto& r : rows)
+    if (r.setting == setting && r.noise == noise &&
+        (engines.empty() || std::find(engines.begin(), engines.end(), r.engine) != engines.end()))
+      out.push_back(r);
+  return out;
+}
+
+}  // namespace
+
+namespace {
+
+void writeEnginesPlots(const std::filesystem::path& dir, const EnginesExperimentResults& r,
+                       std::vector<std::string>& names) {
+  const auto bar = [&](const std::string& name, const BarPlot& p) {
+    if (p.groups.empty()) return;
+    saveBarPlot(dir / name, p);
+    names.push_back(name);
+  };
+  const std::vector<EnginesSummaryRow> summary = summarizeEngines(r.rows);
+  if (std::any_of(r.rows.begin(), r.rows.end(), [](const EnginesRow& e) { return e.setting == "view"; })) {
+    saveLinePlot(dir / "engines_views.png", enginesViewFigure(r.rows));
+    names.push_back("engines_views.png");
+  }
+  bar("engines_cameras.png", enginesCameraFigure(summary));
+  bar("engines_time.png", enginesTimeFigure(summary));
+  // Stride length's agreement: the noise-free views, and the cameras at 2 px (the camera
+  // experiment's headline level), for the engines' main variants.
+  const auto gait = [&](const std::string& name, const std::vector<GaitAgreementRow>& rows, const std::string& title) {
+    if (rows.empty()) return;
+    saveLinePlot(dir / name, blandAltmanFigure(rows, "stride_length", title, "m"));
+    names.push_back(name);
+  };
+  gait("engines_gait_stride_length_views.png", gaitRowsOf(r.gait, "view", 0.0, {}),
+       "Stride length, known orthographic views (all pooled): Bland-Altman");
+  gait("engines_gait_stride_length_cameras.png",
+       gaitRowsOf(r.gait, "camera", 2.0, {kCameraEigenwalker, kCameraSkeletonGuided, kCameraSnippet}),
+       "Stride length, random cameras, 2 px: Bland-Altman");
+}
+
 }  // namespace
 
 std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir, const EvaluationResults& r) {
@@ -341,6 +471,7 @@ std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir, 
     saveBarPlot(dir / "lower_body.png", lowerBodyFigure(r));
     names.push_back("lower_body.png");
   }
+  if (r.ran.count(Experiment::Engines) && !r.engines.rows.empty()) writeEnginesPlots(dir, r.engines, names);
   return names;
 }
 
@@ -667,7 +798,11 @@ void saveBarPlot(const std::filesystem::path& file, const BarPlot& p, int width,
                       std::to_string(p.seriesColors.size()) + " series");
   }
   cv::Mat img(height, width, CV_8UC3, kWhite);
-  const cv::Rect area(170, 55, width - 200, height - 120);
+  // The group labels sit left of the bars: as wide as the widest, within a half of the image.
+  int labels = 150;
+  for (const auto& g : p.groups) labels = std::max(labels, cv::getTextSize(g.label, kFont, 0.45, 1, nullptr).width);
+  const int left = std::min(labels + 20, width / 2);
+  const cv::Rect area(left, 55, width - left - 30, height - 120);
   // Non-finite values (and a non-finite reference) are left out: no bar, no scale.
   const double reference =
       p.referenceValue && std::isfinite(*p.referenceValue) ? *p.referenceValue : 0.0;

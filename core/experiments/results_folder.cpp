@@ -97,8 +97,8 @@ std::string lowerBodyCsv(const std::vector<LowerBodyRow>& rows) {
 
 namespace {
 
-// The error text may hold commas: quoted, inner quotes doubled (RFC 4180).
-std::string quotedError(std::string error) {
+// A cell that may hold commas (an error text, a label): quoted, inner quotes doubled (RFC 4180).
+std::string quotedCell(std::string error) {
   for (std::size_t i = 0; (i = error.find('"', i)) != std::string::npos; i += 2) error.insert(i, "\"");
   return error.empty() ? "" : "\"" + error + "\"";
 }
@@ -109,7 +109,7 @@ std::string snippetEnginesCsv(const std::vector<EngineRow>& rows) {
   return csv(kSnippetEnginesHeader, rows, [](const EngineRow& r) {
     return join({r.subject, r.clip, num(r.angleDeg), r.engine, std::to_string(r.frames),
                  r.error.empty() ? num(r.mpjpeMm) : "", r.error.empty() ? num(r.depthErrorMm2) : "",
-                 quotedError(r.error), num(r.seconds)});
+                 quotedCell(r.error), num(r.seconds)});
   });
 }
 
@@ -145,11 +145,48 @@ std::string blandAltmanCsv(const std::vector<BlandAltmanRow>& rows) {
   });
 }
 
+// Cells that have no value (an engine's refusal, a camera row's view-only column) are empty.
+namespace {
+std::string numOrEmpty(double v) { return std::isfinite(v) ? num(v) : ""; }
+}  // namespace
+
+std::string enginesCsv(const std::vector<EnginesRow>& rows) {
+  return csv(kEnginesHeader, rows, [](const EnginesRow& r) {
+    return join({r.setting, r.subject, r.engine, quotedCell(r.variant), num(r.angleDeg),
+                 r.camera >= 0 ? std::to_string(r.camera) : "", num(r.noise), r.noiseUnit, std::to_string(r.frames),
+                 numOrEmpty(r.mpjpeMm), numOrEmpty(r.depthErrorMm2), num(r.seconds), quotedCell(r.error)});
+  });
+}
+
+std::string enginesSummaryCsv(const std::vector<EnginesSummaryRow>& rows) {
+  return csv(kEnginesSummaryHeader, rows, [](const EnginesSummaryRow& r) {
+    return join({r.setting, r.engine, quotedCell(r.variant), num(r.noise), r.noiseUnit, std::to_string(r.clips),
+                 std::to_string(r.failures), numOrEmpty(r.meanMpjpeMm), numOrEmpty(r.medianMpjpeMm),
+                 num(r.meanSeconds), numOrEmpty(r.msPerFrame)});
+  });
+}
+
+std::string enginesGaitAgreementCsv(const std::vector<GaitAgreementRow>& rows) {
+  return csv(kEnginesGaitAgreementHeader, rows, [](const GaitAgreementRow& r) {
+    return join({r.setting, r.subject, quotedCell(r.engine), num(r.angleDeg),
+                 r.camera >= 0 ? std::to_string(r.camera) : "", num(r.noise), r.measure, numOrEmpty(r.mocap),
+                 numOrEmpty(r.reconstructed)});
+  });
+}
+
+std::string enginesBlandAltmanCsv(const std::vector<BlandAltmanRow>& rows) {
+  return csv(kEnginesBlandAltmanHeader, rows, [](const BlandAltmanRow& r) {
+    return join({r.setting, quotedCell(r.engine), numOrEmpty(r.angleDeg), num(r.noise), r.measure, r.unit,
+                 std::to_string(r.pairs), std::to_string(r.unmeasured), numOrEmpty(r.mocapMean), numOrEmpty(r.bias),
+                 numOrEmpty(r.sd), numOrEmpty(r.loaLow), numOrEmpty(r.loaHigh), numOrEmpty(r.meanAbsDifference)});
+  });
+}
+
 namespace {
 
 // An engine's columns: empty when it was not asked for.
 std::string scoreMm(const std::optional<EngineClipScore>& s) { return s ? num(s->mpjpeMm) : ""; }
-std::string scoreError(const std::optional<EngineClipScore>& s) { return s ? quotedError(s->error) : ""; }
+std::string scoreError(const std::optional<EngineClipScore>& s) { return s ? quotedCell(s->error) : ""; }
 
 }  // namespace
 
@@ -160,7 +197,7 @@ std::string cameraCsv(const std::vector<CameraRow>& rows) {
                  std::to_string(r.frames), num(r.trueAlphaDeg), num(r.trueElevationDeg), num(r.trueFocalPx),
                  num(r.trueDistanceM), num(r.alphaDeg), num(r.elevationDeg), num(r.focalPx), num(r.distanceM),
                  num(r.alphaErrorDeg), num(r.elevationErrorDeg), num(r.focalRelError), num(r.heightRelError),
-                 num(r.mpjpeMm), num(r.reprojectionRmsPx), quotedError(error), scoreMm(r.skeleton),
+                 num(r.mpjpeMm), num(r.reprojectionRmsPx), quotedCell(error), scoreMm(r.skeleton),
                  r.skeleton ? std::to_string(r.skeleton->clampedBoneFrames) : "", scoreError(r.skeleton),
                  scoreMm(r.skeletonGuided), scoreError(r.skeletonGuided),
                  scoreMm(r.skeletonTable2), scoreError(r.skeletonTable2), scoreMm(r.skeletonEigenwalkerBones),
@@ -226,6 +263,18 @@ json snippetSummary(const SnippetExperimentResults& r) {
   }
   return {{"engines", engines}, {"theta", theta}, {"train_seconds_mean", r.trainSecondsMean},
           {"training_snippets_mean", r.snippetsMean}, {"gait_bland_altman", gait}};
+}
+
+// Per setting, engine, variant and noise level: accuracy and time (engines_summary.csv's rows).
+json enginesSummary(const EnginesExperimentResults& r) {
+  const auto finite = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  json out = json::array();
+  for (const auto& e : summarizeEngines(r.rows))
+    out.push_back({{"setting", e.setting}, {"engine", e.engine}, {"variant", e.variant}, {"noise", e.noise},
+                   {"noise_unit", e.noiseUnit}, {"clips", e.clips}, {"failures", e.failures},
+                   {"mean_mpjpe_mm", finite(e.meanMpjpeMm)}, {"median_mpjpe_mm", finite(e.medianMpjpeMm)},
+                   {"mean_seconds", e.meanSeconds}, {"ms_per_frame", finite(e.msPerFrame)}});
+  return out;
 }
 
 json knownViewSummary(const std::vector<ViewErrorRow>& rows) {
@@ -332,6 +381,7 @@ std::string summaryJson(const EvaluationResults& r, const EvaluationProvenance& 
     s["camera"] = camera;
   }
   if (r.ran.count(Experiment::Snippet)) s["snippet"] = snippetSummary(r.snippet);
+  if (r.ran.count(Experiment::Engines)) s["engines"] = enginesSummary(r.engines);
   if (r.ran.count(Experiment::SnippetClusters)) {
     json clusters = json::array();
     for (const auto& c : r.snippetClusters)
@@ -404,6 +454,12 @@ std::vector<std::string> writeResultsFolder(const fs::path& dir, const Evaluatio
       add("gait_bland_altman.csv", blandAltmanCsv(blandAltman(r.snippet.gait)));
     }
     if (r.ran.count(Experiment::SnippetClusters)) add("snippet_clusters.csv", snippetClustersCsv(r.snippetClusters));
+    if (r.ran.count(Experiment::Engines)) {
+      add("engines.csv", enginesCsv(r.engines.rows));
+      add("engines_summary.csv", enginesSummaryCsv(summarizeEngines(r.engines.rows)));
+      add("engines_gait_agreement.csv", enginesGaitAgreementCsv(r.engines.gait));
+      add("engines_gait_bland_altman.csv", enginesBlandAltmanCsv(blandAltman(r.engines.gait)));
+    }
     if (options.plots) {
       for (const auto& name : writeEvaluationPlots(partial, r)) {
         written.push_back(name);

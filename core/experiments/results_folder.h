@@ -38,6 +38,21 @@ inline constexpr const char* kGaitAgreementHeader = "subject,engine,angle_deg,me
 inline constexpr const char* kBlandAltmanHeader =
     "engine,angle_deg,measure,unit,pairs,unmeasured,mocap_mean,bias,sd,loa_low,loa_high,mean_abs_difference";
 
+inline constexpr const char* kEnginesHeader =
+    "setting,subject,engine,variant,angle_deg,camera,noise,noise_unit,frames,mpjpe_mm,depth_error_mm2,seconds,error";
+inline constexpr const char* kEnginesSummaryHeader =
+    "setting,engine,variant,noise,noise_unit,clips,failures,mean_mpjpe_mm,median_mpjpe_mm,mean_seconds,ms_per_frame";
+inline constexpr const char* kEnginesGaitAgreementHeader =
+    "setting,subject,engine,angle_deg,camera,noise,measure,mocap,reconstructed";
+inline constexpr const char* kEnginesBlandAltmanHeader =
+    "setting,engine,angle_deg,noise,measure,unit,pairs,unmeasured,mocap_mean,bias,sd,loa_low,loa_high,"
+    "mean_abs_difference";
+
+std::string enginesCsv(const std::vector<EnginesRow>& rows);
+std::string enginesSummaryCsv(const std::vector<EnginesSummaryRow>& rows);
+std::string enginesGaitAgreementCsv(const std::vector<GaitAgreementRow>& rows);
+std::string enginesBlandAltmanCsv(const std::vector<BlandAltmanRow>& rows);
+
 std::string snippetEnginesCsv(const std::vector<EngineRow>& rows);
 std::string snippetPhaseCsv(const std::vector<PhaseRow>& rows);
 std::string snippetThetaCsv(const std::vector<ThetaRow>& rows);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <random>
 
 #include "core/common/errors.h"
 #include "core/engine/fourier.h"
@@ -29,14 +30,18 @@ const DatasetTrial* firstTrialOf(const Dataset& dataset, const std::string& subj
 
 struct SnippetFold {
   std::string subject;
+  size_t index = 0;  // of the subject: its noise streams
   EigenwalkerEngine eigenwalker;
   SnippetEngine snippet;
 };
 
-// A clip seen at a known view, as both engines are given it (mm, 30 Hz).
-ViewInput knownView(const SnippetFold& fold, const Eigen::MatrixXd& frames, double alphaDeg, double strideHz) {
+// A clip seen at a known view, as every engine is given it (mm, 30 Hz), plus `noiseMm`
+// (T × 30, the same for every engine; empty: none).
+ViewInput knownView(const SnippetFold& fold, const Eigen::MatrixXd& frames, double alphaDeg, double strideHz,
+                    const Eigen::MatrixXd& noiseMm = {}) {
   ViewInput in;
   in.uvMm = projectFramesToView(frames, alphaDeg);
+  if (noiseMm.size() > 0) in.uvMm += noiseMm;
   in.rateHz = kClipRateHz;
   in.alphaDeg = alphaDeg;
   if (strideHz > 0) in.strideHzHint = strideHz;
@@ -85,10 +90,10 @@ struct ClipScoring {
 // `reconstruct` returns the engine's frames; `truth` is what they are scored against.
 template <class Reconstruct>
 EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const std::string& clipName, double alpha,
-                    const Eigen::MatrixXd& truth, const Reconstruct& reconstruct, FoldOutput& out,
+                    double noiseMm, const Eigen::MatrixXd& truth, const Reconstruct& reconstruct, FoldOutput& out,
                     const ClipScoring& scoring) {
-  const bool phase = scoring.phase;
-  EngineRow row{fold.subject, engine, clipName, alpha, static_cast<int>(truth.rows()), 0.0, 0.0, "", 0.0};
+  const bool phase = scoring.phase && noiseMm == 0.0;
+  EngineRow row{fold.subject, engine, clipName, alpha, noiseMm, static_cast<int>(truth.rows()), 0.0, 0.0, "", 0.0};
   const auto t0 = std::chrono::steady_clock::now();
   const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   try {
@@ -96,8 +101,10 @@ EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const st
     row.seconds = elapsed();
     const ClipErrors e = clipErrors(frames, truth, alpha);
     if (scoring.gait) {
-      const auto gait = gaitAgreementRows(fold.subject, engine, alpha, truth, frames, kClipRateHz);
-      out.gait.insert(out.gait.end(), gait.begin(), gait.end());
+      for (auto& g : gaitAgreementRows(fold.subject, engine, alpha, truth, frames, kClipRateHz)) {
+        g.noise = noiseMm;
+        out.gait.push_back(std::move(g));
+      }
     }
     row.mpjpeMm = e.mpjpeMm;
     row.depthErrorMm2 = e.depthErrorMm2;
@@ -115,32 +122,49 @@ bool uses(const SnippetExperimentOptions& o, EngineKind kind) {
   return std::find(o.engines.begin(), o.engines.end(), kind) != o.engines.end();
 }
 
+// Every engine's view of the clip at each level: the same draw, whatever the engine.
+Eigen::MatrixXd viewNoise(const SnippetFold& fold, const SnippetExperimentOptions& o, size_t angle, size_t level,
+                          Eigen::Index frames) {
+  const double sd = o.noiseMm[level];
+  if (sd == 0.0) return {};
+  std::mt19937_64 rng(cellSeed(o.noiseSeed, fold.index, angle, level));
+  std::normal_distribution<double> normal(0.0, sd);
+  Eigen::MatrixXd noise(frames, 2 * kJointCount);
+  for (Eigen::Index i = 0; i < noise.size(); ++i) noise.data()[i] = normal(rng);
+  return noise;
+}
+
 void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& clipName, const SnippetExperimentOptions& o,
                FoldOutput& out, const FourierFit* phaseFit) {
   const ClipScoring scoring{phaseFit != nullptr, clipName == "trial"};
-  for (double alpha : o.anglesDeg) {
-    // Each engine is given the image it is designed for: the snippet engine's prior was
-    // learnt overground, the eigenwalker's model in place (the pelvis's image drift is
-    // removed by the engine either way: tests/engines/test_engine.cpp).
-    if (uses(o, EngineKind::Snippet))
-      out.rows.push_back(engineRow(fold, "snippet MAP", clipName, alpha, clip.withProgression, [&] {
-        return reconstructWithEngine(fold.snippet, knownView(fold, clip.withProgression, alpha, clip.strideHz)).framesMm;
-      }, out, scoring));
-    // The skeleton engine is given the walker's own bone lengths (the paper measures its
-    // performer) and the frames in place: an orthographic view says nothing of depth, so
-    // its walker never moves along the line of sight.
-    if (uses(o, EngineKind::Skeleton))
-      out.rows.push_back(engineRow(fold, "skeleton", clipName, alpha, clip.withoutProgression, [&] {
-        SkeletonEngine skeleton;
-        skeleton.bones = boneLengthsFromFrames(clip.withoutProgression, fold.subject);
-        return reconstructWithEngine(skeleton, knownView(fold, clip.withoutProgression, alpha, clip.strideHz)).framesMm;
-      }, out, scoring));
-    if (uses(o, EngineKind::Eigenwalker))
-      out.rows.push_back(engineRow(fold, "eigenwalker MAP", clipName, alpha, clip.withoutProgression, [&] {
-        return reconstructWithEngine(fold.eigenwalker, knownView(fold, clip.withoutProgression, alpha, clip.strideHz))
-            .framesMm;
-      }, out, scoring));
-  }
+  for (size_t a = 0; a < o.anglesDeg.size(); ++a)
+    for (size_t l = 0; l < o.noiseMm.size(); ++l) {
+      const double alpha = o.anglesDeg[a], level = o.noiseMm[l];
+      const Eigen::MatrixXd noise = viewNoise(fold, o, a, l, clip.withProgression.rows());
+      // Each engine is given the image it is designed for: the snippet engine's prior was
+      // learnt overground, the eigenwalker's model in place (the pelvis's image drift is
+      // removed by the engine either way: tests/engines/test_engine.cpp).
+      if (uses(o, EngineKind::Snippet))
+        out.rows.push_back(engineRow(fold, "snippet MAP", clipName, alpha, level, clip.withProgression, [&] {
+          return reconstructWithEngine(fold.snippet, knownView(fold, clip.withProgression, alpha, clip.strideHz, noise))
+              .framesMm;
+        }, out, scoring));
+      // The skeleton engine is given the walker's own bone lengths (the paper measures its
+      // performer) and the frames in place: an orthographic view says nothing of depth, so
+      // its walker never moves along the line of sight.
+      if (uses(o, EngineKind::Skeleton))
+        out.rows.push_back(engineRow(fold, "skeleton", clipName, alpha, level, clip.withoutProgression, [&] {
+          SkeletonEngine skeleton;
+          skeleton.bones = boneLengthsFromFrames(clip.withoutProgression, fold.subject);
+          return reconstructWithEngine(skeleton,
+                                       knownView(fold, clip.withoutProgression, alpha, clip.strideHz, noise)).framesMm;
+        }, out, scoring));
+      if (uses(o, EngineKind::Eigenwalker))
+        out.rows.push_back(engineRow(fold, "eigenwalker MAP", clipName, alpha, level, clip.withoutProgression, [&] {
+          return reconstructWithEngine(fold.eigenwalker,
+                                       knownView(fold, clip.withoutProgression, alpha, clip.strideHz, noise)).framesMm;
+        }, out, scoring));
+    }
 }
 
 void unknownView(const SnippetFold& fold, const Clip& clip, const SnippetExperimentOptions& o, FoldOutput& out) {
@@ -192,12 +216,19 @@ SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::ve
                                            const SnippetExperimentOptions& o) {
   const std::vector<std::string> subjects = dataset.subjects();
   if (subjects.size() < 3) throwBadData("snippet", "", "leave-one-subject-out needs at least 3 subjects");
+  if (o.noiseMm.empty()) throw Error(ErrorKind::BadArgument, "snippet", "", "no noise level");
+  for (double n : o.noiseMm)
+    if (!(std::isfinite(n) && n >= 0.0))
+      throw Error(ErrorKind::BadArgument, "snippet", "", "noise levels must be finite and >= 0");
+  for (double a : o.anglesDeg)
+    if (!std::isfinite(a)) throw Error(ErrorKind::BadArgument, "snippet", "", "view angles must be finite");
   std::vector<FoldOutput> outputs(subjects.size());
   std::vector<double> trainS(subjects.size(), 0.0);
   std::vector<int> snippets(subjects.size(), 0);
   parallelFor(static_cast<int>(subjects.size()), o.threads, [&](int i) {
     SnippetFold fold;
     fold.subject = subjects[static_cast<size_t>(i)];
+    fold.index = static_cast<size_t>(i);
     if (uses(o, EngineKind::Snippet)) {
       const auto t0 = std::chrono::steady_clock::now();
       const SnippetPrior prior = trainSnippetPrior(snippetTrainingTrials(dataset, fold.subject), o.prior);
@@ -233,6 +264,7 @@ SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::ve
         frame = std::min(o.phaseBins - 1, static_cast<int>(ph / (2.0 * std::numbers::pi) * o.phaseBins));
       }
     }
+    if (!o.beyondTheTrial) return;
     const int shortFrames = static_cast<int>(std::lround(o.shortClipS * kClipRateHz)) + 1;
     FoldOutput shortOut;
     scoreClip(fold, middleOf(clip, shortFrames), "0.5 s", o, shortOut, nullptr);

@@ -21,6 +21,7 @@
 // CMU 05_01's whole trial (speeding up and slowing down; `wholeTrial`), and an unknown view:
 // every snippet's own α̂ against its true view (α minus the heading of its middle frame).
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,13 @@ struct SnippetExperimentOptions {
   int phaseBins = 20;
   std::string wholeTrialSuffix = "05_01.bvh";  // a trial loaded uncropped ("" = none)
   int threads = 1;
+  // 2D noise levels (mm, Gaussian per coordinate): every engine is given the same noisy
+  // frames at a level (one draw per walker, view and level from noiseSeed). The phase bins
+  // are scored at level 0 only.
+  std::vector<double> noiseMm{0.0};
+  std::uint64_t noiseSeed = 20070501;
+  // The clips beyond the held-out trial: 0.5 s, the whole trial, and the unknown view.
+  bool beyondTheTrial = true;
   // The engines scored (evaluate --engine): these two by default; the unknown-view part is the
   // snippet engine's (the eigenwalker's is experiment unknown-view).
   std::vector<EngineKind> engines{EngineKind::Eigenwalker, EngineKind::Snippet};
@@ -53,6 +61,7 @@ struct SnippetExperimentOptions {
 struct EngineRow {
   std::string subject, engine, clip;  // clip: "trial", "0.5 s", "whole trial"
   double angleDeg = 0.0;
+  double noiseMm = 0.0;
   int frames = 0;
   double mpjpeMm = 0.0, depthErrorMm2 = 0.0;
   std::string error;                   // why the engine gave no answer (empty: it did)

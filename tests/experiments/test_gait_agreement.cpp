@@ -34,6 +34,31 @@ TEST(BlandAltman, BiasAndLimitsOfAgreementAreComputedPerEngineViewAndMeasure) {
   EXPECT_DOUBLE_EQ(ba[1].sd, 0.0);
 }
 
+// Experiment "engines": each setting and noise level is its own group; a camera group pools
+// every camera's azimuth (its angle is NaN).
+TEST(BlandAltman, SettingsAndNoiseLevelsAreGroupsAndCamerasPoolTheirAzimuths) {
+  std::vector<GaitAgreementRow> rows;
+  const auto add = [&](const char* setting, double angle, double noise, double diff) {
+    GaitAgreementRow r{"S", "A", angle, "speed", 1.0, 1.0 + diff};
+    r.setting = setting;
+    r.noise = noise;
+    rows.push_back(r);
+  };
+  add("view", 30.0, 0.0, 0.1);
+  add("view", 30.0, 10.0, 0.2);
+  add("camera", 17.0, 0.0, 0.3);
+  add("camera", -120.0, 0.0, 0.5);
+  add("camera", 40.0, 2.0, 0.7);
+  const auto ba = blandAltman(rows);
+  ASSERT_EQ(ba.size(), 4u);
+  EXPECT_EQ(ba[1].noise, 10.0);
+  EXPECT_EQ(ba[2].setting, "camera");
+  EXPECT_TRUE(std::isnan(ba[2].angleDeg));
+  EXPECT_EQ(ba[2].pairs, 2);
+  EXPECT_DOUBLE_EQ(ba[2].bias, 0.4);
+  EXPECT_EQ(ba[3].noise, 2.0);
+}
+
 WalkingTrial syntheticTrial() {
   PopulationOptions o;
   o.count = 1;
