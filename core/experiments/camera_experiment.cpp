@@ -14,6 +14,7 @@
 #include "core/common/errors.h"
 #include "core/engine/fourier.h"
 #include "core/engines/engine.h"
+#include "core/experiments/engine_view_curves.h"
 #include "core/engine/projection.h"
 #include "core/keypoints/image_gait.h"
 #include "core/keypoints/keypoint_trial.h"
@@ -366,13 +367,9 @@ std::vector<std::shared_ptr<const PreparedSnippetPrior>> snippetPriors(const std
   std::vector<std::shared_ptr<const PreparedSnippetPrior>> priors(folds.size());
   whyNot.assign(folds.size(), "");
   parallelFor(static_cast<int>(folds.size()), threads, [&](int f) {
-    std::vector<FourierWalkerTrial> trials;
-    for (const auto& w : walkers)
-      if (w.subject != folds[static_cast<std::size_t>(f)].subject)
-        trials.push_back({w.subject, w.id, w.fit.w, w.fit.omegaRadS, 1.3});
     try {
       priors[static_cast<std::size_t>(f)] = std::make_shared<const PreparedSnippetPrior>(
-          prepareSnippetPrior(trainSnippetPrior(snippetTrialsFromFourier(trials), {})));
+          prepareSnippetPrior(fourierSnippetPrior(walkers, folds[static_cast<std::size_t>(f)].subject, 1.3)));
     } catch (const std::exception& e) {
       whyNot[static_cast<std::size_t>(f)] = std::string("snippet prior: ") + e.what();
     }

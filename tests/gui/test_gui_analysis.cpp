@@ -81,6 +81,57 @@ TEST_F(GuiAnalysis, DrawsTheCurvesAndExportsThemAsCsv) {
   EXPECT_EQ(line.rfind("sigma2_mm2,method", 0), 0u) << line;
 }
 
+// "other engines": the snippet and skeleton engines' curves (core/experiments/
+// engine_view_curves.h) drawn in their compare-mode colours and exported beside the
+// eigenwalker's.
+TEST_F(GuiAnalysis, OtherEnginesCurvesAreDrawnAndExported) {
+  const auto d = dir.string();
+  const auto script = writeScript(dir, R"([
+    {"select_subject": "SYN005"},
+    {"play": false},
+    {"analysis_engines": true},
+    {"show_panel": ["analysis", true]},
+    {"wait_frames": 3},
+    {"export_analysis_csv": ")" + d + R"(/analysis.csv"},
+    {"screenshot": ")" + d + R"(/engines.png"}
+  ])");
+  const RunResult r = runViewer(dir, "--size 1600x900 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  // The snippet engine's green (kEngineRight[1]: 61, 204, 107) in the angle plot.
+  const cv::Mat shot = cv::imread(d + "/engines.png");
+  ASSERT_FALSE(shot.empty());
+  const int green = countPixels(crop(shot, Region{0.2, 0.2, 0.8, 0.6}), [](int red, int g, int b) {
+    return std::abs(red - 61) < 30 && std::abs(g - 204) < 30 && std::abs(b - 107) < 30;
+  });
+  EXPECT_GT(green, 300) << "no snippet curve drawn";
+
+  std::ifstream in(dir / "analysis.csv");
+  std::string line;
+  std::getline(in, line);
+  std::getline(in, line);
+  const auto header = split(line);
+  ASSERT_EQ(header.size(), 21u) << line;  // 13 + {subject, mean} × {snippet, skeleton} × {E_a, MPJPE}
+  EXPECT_EQ(header[13], "SYN005_snippet_abs_error_mm2");
+  EXPECT_EQ(header[20], "mean_skeleton_mpjpe_mm");
+  int computed = 0;
+  while (std::getline(in, line) && !line.empty()) {
+    const auto cells = split(line);
+    ASSERT_EQ(cells.size(), header.size()) << line;
+    // The other engines every 15°, NaN between.
+    const bool onGrid = std::fmod(std::stod(cells[0]) + 90.0, 15.0) == 0.0;
+    EXPECT_EQ(std::isfinite(std::stod(cells[16])), onGrid) << line;
+    if (!onGrid) continue;
+    ++computed;
+    // MPJPE (mm) of the subject and the mean, snippet and skeleton. Measured on the synthetic
+    // population: tens of mm; a broken projection or a wrong view would be hundreds.
+    for (size_t c : {15u, 16u, 19u, 20u}) {
+      EXPECT_GT(std::stod(cells[c]), 5.0) << header[c] << " " << line;
+      EXPECT_LT(std::stod(cells[c]), 200.0) << header[c] << " " << line;
+    }
+  }
+  EXPECT_EQ(computed, 13);
+}
+
 TEST_F(GuiAnalysis, UnknownPanelAndMetricAreErrors) {
   const auto script = writeScript(dir, R"([{"show_panel": ["nonsense", true]}])");
   RunResult r = runViewer(dir, "--size 800x600 --script " + quote(script.string()));

@@ -889,7 +889,8 @@ void exportState(AppState& s, const std::filesystem::path& path) {
 // [SECTION] Analysis
 
 AnalysisKey analysisKey(const AppState& s) {
-  return {s.doc.generation, s.doc.recon.components, s.doc.recon.sigma2Mm2};
+  return {s.doc.generation, s.doc.recon.components, s.doc.recon.sigma2Mm2,
+          s.panels.analysis.showEngines || s.doc.compareEngines};
 }
 
 void requestAnalysis(AppState& s) {

@@ -33,6 +33,17 @@ AnalysisResult computeAnalysis(const Population& population, const AnalysisKey& 
   stage = 2;
   r.sigmaSweep = sigmaSweep(walkers, folds, options);
   r.spectrum = varianceTable(buildFullModel(walkers, options.model));
+  if (key.engines) {
+    // Every 15° (the eigenwalker's curves every 5°) and a prior from 2 cycles per walker: a
+    // prior per fold makes these the slow part (about 0.2 s a fold on one core).
+    EngineViewOptions engines;
+    for (int a = -90; a <= 90; a += 15) engines.anglesDeg.push_back(a);
+    engines.priorCycles = 2.0;
+    engines.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));  // opt-in, slow
+    r.engines = engineViewErrors(walkers, engines, [&](int done, int total, const std::string&) {
+      if (progress) progress(done, total, "snippet and skeleton engines");
+    });
+  }
   r.anglesDeg = options.anglesDeg;
   r.subjects = walkerSubjects(walkers);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -83,6 +94,28 @@ std::vector<double> errorCurve(const AnalysisResult& result, const std::string& 
   return sum;
 }
 
+std::vector<double> engineErrorCurve(const AnalysisResult& result, const std::string& subject, EngineKind engine,
+                                     ErrorMetric metric) {
+  const std::size_t n = result.anglesDeg.size();
+  std::vector<double> sum(n, 0.0);
+  std::vector<int> count(n, 0);
+  for (const auto& row : result.engines) {
+    if (row.engine != engine || (!subject.empty() && row.subject != subject) || !row.error.empty()) continue;
+    const double v = metric == ErrorMetric::MpjpeMm ? row.mpjpeMm
+                     : metric == ErrorMetric::AbsMm2 ? row.depthErrorMm2
+                                                     : std::nan("");
+    for (std::size_t i = 0; i < n; ++i) {
+      if (std::abs(result.anglesDeg[i] - row.angleDeg) < 1e-9) {
+        sum[i] += v;
+        ++count[i];
+        break;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i) sum[i] = count[i] > 0 ? sum[i] / count[i] : std::nan("");
+  return sum;
+}
+
 const char* metricName(ErrorMetric metric) {
   switch (metric) {
     case ErrorMetric::AbsMm2: return "E_a";
@@ -114,6 +147,15 @@ void writeAnalysisCsv(const AnalysisResult& result, const std::string& subject, 
       if (!subject.empty())
         columns.push_back({subject + "_" + method + "_" + metricKeys[m], errorCurve(result, subject, method, metrics[m])});
       columns.push_back({"mean_" + method + "_" + metricKeys[m], errorCurve(result, "", method, metrics[m])});
+    }
+  }
+  for (EngineKind engine : {EngineKind::Snippet, EngineKind::Skeleton}) {
+    if (result.engines.empty()) break;
+    const std::string name = engineName(engine);
+    for (int m : {0, 2}) {
+      if (!subject.empty())
+        columns.push_back({subject + "_" + name + "_" + metricKeys[m], engineErrorCurve(result, subject, engine, metrics[m])});
+      columns.push_back({"mean_" + name + "_" + metricKeys[m], engineErrorCurve(result, "", engine, metrics[m])});
     }
   }
   writeFileAtomically(file, [&](std::ostream& out) {

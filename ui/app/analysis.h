@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/experiments/engine_view_curves.h"
 #include "core/experiments/experiments.h"
 #include "ui/app/population.h"
 
@@ -23,6 +24,7 @@ struct AnalysisKey {
   std::uint64_t generation = 0;
   int components = 0;   // N; 0 = 95 % per fold
   double sigma2Mm2 = 70.0;
+  bool engines = false;  // the snippet and skeleton engines' curves too (engine_view_curves.h)
   bool operator==(const AnalysisKey&) const = default;
 };
 
@@ -33,6 +35,7 @@ struct AnalysisResult {
   std::vector<ViewErrorRow> knownView;     // subject × angle × {lsq, map}
   std::vector<SigmaSweepRow> sigmaSweep;   // σ² grid × {lsq, map}, mean over subjects and angles
   std::vector<VarianceRow> spectrum;       // model of every walker
+  std::vector<EngineViewRow> engines;      // key.engines: snippet and skeleton × subject × every 15°
   double seconds = 0.0;                    // wall time of the computation
 };
 
@@ -50,11 +53,17 @@ AnalysisResult computeAnalysis(const Population& population, const AnalysisKey& 
 // or (subject empty) the mean over the held-out subjects.
 std::vector<double> errorCurve(const AnalysisResult& result, const std::string& subject, const std::string& method,
                                ErrorMetric metric);
+// The same for another engine's rows (snippet or skeleton): MPJPE and E_a; E_r is the
+// eigenwalker's alone (NaN), as is a curve the result does not hold and an angle between
+// the engines' 15° steps.
+std::vector<double> engineErrorCurve(const AnalysisResult& result, const std::string& subject, EngineKind engine,
+                                     ErrorMetric metric);
 const char* metricName(ErrorMetric metric);  // "E_a", "E_r", "MPJPE"
 const char* metricUnit(ErrorMetric metric);  // "mm²", "", "mm"
 
 // The curves as CSV (atomic write): angle_deg, then one column per curve (subject and
-// mean, LSQ and MAP, every metric); then the σ² sweep and the spectrum as further blocks
+// mean, LSQ and MAP, every metric; then the snippet and skeleton engines' MPJPE and E_a when
+// computed); then the σ² sweep and the spectrum as further blocks
 // separated by a blank line. Throws Error(Io) on a write failure.
 void writeAnalysisCsv(const AnalysisResult& result, const std::string& subject, const std::filesystem::path& file);
 

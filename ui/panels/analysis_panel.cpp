@@ -75,6 +75,11 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   ImGui::Checkbox("LSQ", &showLsq);
   ImGui::SameLine();
   ImGui::Checkbox("MAP", &showMap);
+  ImGui::SameLine();
+  ImGui::Checkbox("other engines", &showEngines);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The snippet and skeleton engines at every view (leave-one-subject-out, each walker walked\n"
+                      "2 cycles at 1.3 m/s): MPJPE and E_a. On in compare mode.");
   ImGui::SameLine(0.0f, 24.0f * ctx.scale);
   ImGui::SetNextItemWidth(220.0f * ctx.scale);
   ImGui::InputText("##csv", csvPath.data(), csvPath.size());
@@ -99,6 +104,9 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
                         result->subjects.size(), result->key.sigma2Mm2,
                         result->key.components > 0 ? std::to_string(result->key.components).c_str() : "95 % per fold",
                         result->seconds, status.empty() ? "" : " · ", status.c_str());
+    if (!result->engines.empty() && metric == ErrorMetric::Relative)
+      ImGui::TextDisabled("E_r needs the variance of the missing depth of the eigenwalker's model: the other engines "
+                          "show MPJPE and E_a");
   }
   if (!result) {
     if (!s.jobs.analysis.running() && s.jobs.analysisError.empty()) ImGui::TextDisabled("waiting for data…");
@@ -113,7 +121,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   // Error against view angle.
   std::vector<std::vector<double>> ys;
   std::vector<PlotSeries> series;
-  ys.reserve(4);
+  ys.reserve(8);  // the series hold spans into ys: no reallocation
   const std::span<const double> angles(result->anglesDeg);
   for (const char* method : {"lsq", "map"}) {
     const bool lsq = std::string(method) == "lsq";
@@ -124,6 +132,25 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
     ys.push_back(errorCurve(*result, "", method, metric));
     series.push_back({std::string("mean of all subjects ") + (lsq ? "LSQ" : "MAP"), angles, ys.back(),
                       (colour & 0x00FFFFFF) | 0xB0000000, 2.0f, true, false});
+  }
+  // The other engines' curves: their 15° points only (the angles between are NaN).
+  std::vector<std::vector<double>> xs;
+  xs.reserve(4);  // the series hold spans into xs too
+  const auto addEngineCurve = [&](const std::string& who, EngineKind engine, const std::string& label, ImU32 colour,
+                                  float thickness, bool dashed, bool points) {
+    const std::vector<double> y = engineErrorCurve(*result, who, engine, metric);
+    xs.emplace_back();
+    ys.emplace_back();
+    for (std::size_t i = 0; i < y.size(); ++i)
+      if (std::isfinite(y[i])) xs.back().push_back(result->anglesDeg[i]), ys.back().push_back(y[i]);
+    series.push_back({label, xs.back(), ys.back(), colour, thickness, dashed, points});
+  };
+  for (EngineKind engine : {EngineKind::Snippet, EngineKind::Skeleton}) {
+    if (result->engines.empty() || metric == ErrorMetric::Relative) break;
+    const ImU32 colour = toImU32(palette::kEngineRight[static_cast<std::size_t>(engine)]);
+    if (!subject.empty()) addEngineCurve(subject, engine, subject + " " + engineName(engine), colour, 2.6f, false, true);
+    addEngineCurve("", engine, std::string("mean of all subjects ") + engineName(engine),
+                   (colour & 0x00FFFFFF) | 0xB0000000, 2.0f, true, false);
   }
   PlotSpec angleSpec;
   angleSpec.xLabel = "view angle α (°; 0 = frontal, ±90 = profile)";
