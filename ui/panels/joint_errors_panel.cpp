@@ -96,18 +96,26 @@ void drawClipResiduals(const AppState& s, float scale) {
 void drawCompare(const CompareResult& c, float scale) {
   // Columns as wide as their contents: the panel is narrow; each header's tooltip says what it is.
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingFixedFit;
-  if (ImGui::BeginTable("compare_table", 7, flags)) {
-    for (const char* h : {"engine", "MPJPE", "E_a", "E_r", "α", "2D", "ms"}) ImGui::TableSetupColumn(h);
-    static constexpr const char* kWhat[] = {
-        "", "MPJPE: mean 3D joint error over one cycle (mm)", "E_a: mean squared depth error (mm²)",
-        "E_r: E_a over the walker's own depth variance", "α the engine used (estimated when unknown)",
-        "2D: RMS of the reconstruction's reprojection against the input (mm)",
-        "ms: the reconstruction's wall time (the snippet prior's training included the first time)"};
+  static constexpr const char* kHeaders[] = {"engine", "MPJPE", "E_a", "E_r", "α", "2D", "ms"};
+  static constexpr const char* kWhat[] = {
+      "", "MPJPE: mean 3D joint error over one cycle (mm)", "E_a: mean squared depth error (mm²)",
+      "E_r: E_a over the walker's own depth variance", "α the engine used (estimated when unknown)",
+      "2D: RMS of the reconstruction's reprojection against the input (mm)",
+      "ms: the reconstruction's wall time (the snippet prior's training included the first time)"};
+  // A narrow panel keeps engine, MPJPE, α and ms; a row's tooltip gives every column.
+  const float full = ImGui::CalcTextSize("skeleton  MPJPE  E_a  E_r  -179.9°  2D  1527").x + 12.0f * 7 * scale;
+  const float reduced = ImGui::CalcTextSize("skeleton  MPJPE  -179.9°  1527").x + 12.0f * 4 * scale;
+  const float avail = ImGui::GetContentRegionAvail().x;
+  const std::vector<int> shown = avail >= full      ? std::vector<int>{0, 1, 2, 3, 4, 5, 6}
+                                 : avail >= reduced ? std::vector<int>{0, 1, 4, 6}
+                                                    : std::vector<int>{0, 1, 4};
+  if (ImGui::BeginTable("compare_table", static_cast<int>(shown.size()), flags)) {
+    for (int col : shown) ImGui::TableSetupColumn(kHeaders[col]);
     ImGui::TableNextRow(ImGuiTableRowFlags_Headers);
-    for (int col = 0; col < 7; ++col) {
-      ImGui::TableSetColumnIndex(col);
-      ImGui::TableHeader(ImGui::TableGetColumnName(col));
-      if (col > 0 && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kWhat[col]);
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+      ImGui::TableSetColumnIndex(static_cast<int>(i));
+      ImGui::TableHeader(kHeaders[shown[i]]);
+      if (shown[i] > 0 && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", kWhat[shown[i]]);
     }
     for (const auto& e : c.engines) {
       ImGui::TableNextRow();
@@ -120,18 +128,20 @@ void drawCompare(const CompareResult& c, float scale) {
         continue;
       }
       const ReconDisplay& d = *e.display;
-      ImGui::TableNextColumn();
-      ImGui::Text("%.1f", d.mpjpeMm);
-      ImGui::TableNextColumn();
-      ImGui::Text("%.0f", d.absScoredMm2);
-      ImGui::TableNextColumn();
-      ImGui::Text("%.3f", d.relScored);
-      ImGui::TableNextColumn();
-      ImGui::Text("%.1f°", e.base->alphaUsedDeg);
-      ImGui::TableNextColumn();
-      ImGui::Text("%.1f", d.residualRmsMm);
-      ImGui::TableNextColumn();
-      ImGui::Text("%.0f", 1000.0 * e.seconds);
+      char cells[7][32];
+      std::snprintf(cells[1], sizeof cells[1], "%.1f", d.mpjpeMm);
+      std::snprintf(cells[2], sizeof cells[2], "%.0f", d.absScoredMm2);
+      std::snprintf(cells[3], sizeof cells[3], "%.3f", d.relScored);
+      std::snprintf(cells[4], sizeof cells[4], "%.1f°", e.base->alphaUsedDeg);
+      std::snprintf(cells[5], sizeof cells[5], "%.1f", d.residualRmsMm);
+      std::snprintf(cells[6], sizeof cells[6], "%.0f", 1000.0 * e.seconds);
+      for (std::size_t i = 1; i < shown.size(); ++i) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(cells[shown[i]]);
+        if (ImGui::IsItemHovered())
+          ImGui::SetTooltip("%s: MPJPE %s mm, E_a %s mm², E_r %s, α %s, 2D %s mm, %s ms", engineName(e.engine),
+                            cells[1], cells[2], cells[3], cells[4], cells[5], cells[6]);
+      }
     }
     ImGui::EndTable();
   }
@@ -192,7 +202,7 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
   const bool clip = s.doc.mode == Mode::Clip;
   const bool compare = s.doc.compareEngines && s.doc.mode == Mode::Reconstruct;
   const char* title = clip      ? "Reprojection residual per joint (RMS over the clip, px)###joint_errors"
-                      : compare ? "Engines against the ground truth; depth RMS per joint (mm)###joint_errors"
+                      : compare ? "Engines vs ground truth; depth RMS per joint (mm)###joint_errors"
                                 : "Depth error per joint (RMS over one cycle, mm)###joint_errors";
   if (beginPanel(ctx.backdrop, title, rect, ImGuiWindowFlags_NoScrollbar)) {
     const ReconDisplay* d = s.derived.display();
