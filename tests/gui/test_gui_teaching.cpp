@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "tests/common/test_support.h"
@@ -91,6 +92,45 @@ TEST_F(GuiTeaching, PointLightDisplayHidesTheSkeleton) {
   EXPECT_LT(amberAfter, amberBefore / 10);
   EXPECT_GT(lightsAfter, 40);
   EXPECT_LT(countPixels(crop(dots, kReconView), isGhostBlue), countPixels(crop(figure, kReconView), isGhostBlue));
+}
+
+// 1280×720 at UI scale 2 (issue 18: both views used to vanish): the side and bottom panels
+// move into the drawer, one at a time, and the two views keep the rest — the walker is drawn
+// in each. At 1600×900, scale 1, the full layout stays.
+TEST_F(GuiTeaching, AtScaleTwoTheDrawerLeavesTheViewsTheirRoom) {
+  const auto d = dir.string();
+  const auto script = writeScript(dir, R"([
+    {"select_subject": "SYN005"},
+    {"play": false},
+    {"set_angle": 45},
+    {"set_phase": 0.25},
+    {"export_state": ")" + d + R"(/drawer.json"},
+    {"drawer_tab": "coefficients"},
+    {"screenshot": ")" + d + R"(/drawer.png"},
+    {"export_state": ")" + d + R"(/coefficients.json"}
+  ])");
+  const RunResult r = runViewer(dir, "--size 1280x720 --ui-scale 2 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(readAll(dir / "drawer.json"))["view"]["drawer"], "Controls");
+  EXPECT_EQ(nlohmann::json::parse(readAll(dir / "coefficients.json"))["view"]["drawer"], "Coefficients");
+  // The drawer takes the left third; the views the rest, side by side.
+  const cv::Mat shot = load("drawer.png");
+  const int walker2d = countPixels(crop(shot, Region{0.34, 0.3, 0.66, 0.9}), isAmber);
+  const int walker3d = countPixels(crop(shot, Region{0.67, 0.3, 1.0, 0.9}), isAmber);
+  std::printf("amber pixels: 2D view %d, 3D view %d\n", walker2d, walker3d);
+  // Measured 1424 and 150 (the 3D walker is small, its joints in the error colours); the old
+  // layout left both views 68 px high: none.
+  EXPECT_GT(walker2d, 400);
+  EXPECT_GT(walker3d, 75);
+
+  const auto full = writeScript(dir, R"([{"export_state": ")" + d + R"(/full.json"}])");
+  const RunResult f = runViewer(dir, "--size 1600x900 --script " + quote(full.string()));
+  ASSERT_EQ(f.exitCode, 0) << f.err;
+  EXPECT_TRUE(nlohmann::json::parse(readAll(dir / "full.json"))["view"]["drawer"].is_null());
+  const auto bad = writeScript(dir, R"([{"drawer_tab": "nonsense"}])");
+  const RunResult b = runViewer(dir, "--size 800x600 --script " + quote(bad.string()));
+  EXPECT_EQ(b.exitCode, 1);
+  EXPECT_NE(b.err.find("coefficients"), std::string::npos) << b.err;
 }
 
 TEST_F(GuiTeaching, BadThemeAndTourArgumentsAreErrors) {

@@ -463,10 +463,14 @@ class App {
     FrameContext ctx{renderer_, backdrop_, themeScale_, dt};
     auto& p = state_.panels;
     try {
+      // In the drawer layout the side and bottom panels share one place: only the active tab's is drawn.
+      const auto shown = [&](DrawerTab tab) { return !l.drawer || p.drawer.shows(tab); };
       p.header.draw(state_, ctx, l.header);
       p.notice.draw(state_, ctx, l.notice);
-      p.subjects.draw(state_, ctx, l.subjects);
-      p.controls.draw(state_, ctx, l.controls);
+      p.drawer.inUse = l.drawer;
+      if (l.drawer) p.drawer.draw(state_, ctx, l.drawerTabs);
+      if (shown(DrawerTab::Subjects)) p.subjects.draw(state_, ctx, l.subjects);
+      if (shown(DrawerTab::Controls)) p.controls.draw(state_, ctx, l.controls);
       p.metrics.draw(state_, ctx, l.metrics);
       const auto v0 = std::chrono::steady_clock::now();
       p.input.draw(state_, ctx, l.input);
@@ -481,10 +485,10 @@ class App {
         profile_->views += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - v0).count();
       }
       p.playback.draw(state_, ctx, l.playback);
-      p.coefficients.draw(state_, ctx, l.coefficients);
-      p.jointErrors.draw(state_, ctx, l.jointErrors);
-      p.profile.draw(state_, ctx, l.profile);
-      p.log.draw(state_, ctx, l.log);
+      if (shown(DrawerTab::Coefficients)) p.coefficients.draw(state_, ctx, l.coefficients);
+      if (shown(DrawerTab::JointErrors)) p.jointErrors.draw(state_, ctx, l.jointErrors);
+      if (shown(DrawerTab::Profile)) p.profile.draw(state_, ctx, l.profile);
+      if (shown(DrawerTab::Log)) p.log.draw(state_, ctx, l.log);
       p.exports.draw(state_, ctx);
       p.analysis.draw(state_, ctx);
       p.gait.draw(state_, ctx);

@@ -22,6 +22,7 @@
 #include "ui/panels/coefficients_panel.h"
 #include "ui/panels/controls_panel.h"
 #include "ui/panels/data_panel.h"
+#include "ui/panels/drawer_panel.h"
 #include "ui/panels/export_panel.h"
 #include "ui/panels/gait_panel.h"
 #include "ui/panels/header_panel.h"
@@ -133,6 +134,7 @@ struct Panels {
   TourPanel tour;
   DataPanel data;
   HelpPanel help;
+  DrawerPanel drawer;
 };
 
 struct AppState {

@@ -4,42 +4,103 @@
 
 namespace ew::ui {
 
-float noticeRowHeight(float scale) { return 34.0f * scale; }
+namespace {
 
-Layout computeLayout(float width, float height, float scale, bool noticeRow) {
+struct Rows {
+  float header, notice, metrics, playback, bottom;
+};
+
+Rows rowsAt(float height, float scale, bool noticeRow) {
+  return {46.0f * scale, noticeRow ? noticeRowHeight(scale) : 0.0f, 66.0f * scale, 44.0f * scale,
+          std::clamp(height * 0.24f, 170.0f * scale, 300.0f * scale)};
+}
+
+// The centre: metrics strip, the two views side by side, playback under them; `bottom` is
+// what is left under the playback row.
+void placeCentre(Layout& l, float x, float width, float top, float height, const Rows& r) {
+  l.metrics = {{x, top}, {width, r.metrics}};
+  const float viewsY = top + r.metrics;
+  const float viewsH = std::max(60.0f, height - r.metrics - r.playback);
+  const float halfW = width * 0.5f;
+  l.input = {{x, viewsY}, {halfW, viewsH}};
+  l.reconstruction = {{x + halfW, viewsY}, {width - halfW, viewsH}};
+  l.playback = {{x, viewsY + viewsH}, {width, r.playback}};
+}
+
+Layout fullLayout(float width, float height, float scale, const Rows& r) {
   Layout l;
-  const float headerH = 46.0f * scale;
-  const float noticeH = noticeRow ? noticeRowHeight(scale) : 0.0f;
   const float sideW = std::clamp(width * 0.19f, 250.0f * scale, 360.0f * scale);
   const float rightW = std::clamp(width * 0.18f, 240.0f * scale, 340.0f * scale);
-  const float metricsH = 66.0f * scale;
-  const float playbackH = 44.0f * scale;
-  const float bottomH = std::clamp(height * 0.24f, 170.0f * scale, 300.0f * scale);
-  const float centreX = sideW;
   const float centreW = std::max(100.0f, width - sideW - rightW);
-  const float bodyY = headerH + noticeH;
+  const float bodyY = r.header + r.notice;
   const float bodyH = height - bodyY;
-
-  l.header = {{0, 0}, {width, headerH}};
-  l.notice = {{0, headerH}, {width, noticeH}};
   const float subjectsH = bodyH * 0.46f;
   l.subjects = {{0, bodyY}, {sideW, subjectsH}};
   l.controls = {{0, bodyY + subjectsH}, {sideW, bodyH - subjectsH}};
-  l.coefficients = {{width - rightW, bodyY}, {rightW, bodyH - bottomH}};
-  l.log = {{width - rightW, height - bottomH}, {rightW, bottomH}};
-
-  l.metrics = {{centreX, bodyY}, {centreW, metricsH}};
-  const float viewsY = bodyY + metricsH;
-  const float viewsH = std::max(60.0f, bodyH - metricsH - playbackH - bottomH);
-  const float halfW = centreW * 0.5f;
-  l.input = {{centreX, viewsY}, {halfW, viewsH}};
-  l.reconstruction = {{centreX + halfW, viewsY}, {centreW - halfW, viewsH}};
-  l.playback = {{centreX, viewsY + viewsH}, {centreW, playbackH}};
-  const float bottomY = height - bottomH;
+  l.coefficients = {{width - rightW, bodyY}, {rightW, bodyH - r.bottom}};
+  l.log = {{width - rightW, height - r.bottom}, {rightW, r.bottom}};
+  placeCentre(l, sideW, centreW, bodyY, bodyH - r.bottom, r);
+  const float bottomY = height - r.bottom;
   const float errorsW = centreW * 0.42f;
-  l.jointErrors = {{centreX, bottomY}, {errorsW, bottomH}};
-  l.profile = {{centreX + errorsW, bottomY}, {centreW - errorsW, bottomH}};
+  l.jointErrors = {{sideW, bottomY}, {errorsW, r.bottom}};
+  l.profile = {{sideW + errorsW, bottomY}, {centreW - errorsW, r.bottom}};
   return l;
+}
+
+bool fits(const Layout& l, float width, float height) {
+  return l.input.size.x + l.reconstruction.size.x >= 0.5f * width && l.input.size.y >= 0.35f * height;
+}
+
+Layout drawerLayout(float width, float height, float scale, const Rows& r) {
+  Layout l;
+  l.drawer = true;
+  // A third of the width (the views keep two thirds), at least 200 px of the scale's when
+  // that still leaves the views half.
+  const float drawerW = std::min(std::max(width / 3.0f, std::min(200.0f * scale, width * 0.5f)), width * 0.5f);
+  // The notice row heads the drawer's column, not the whole width: the views keep its height.
+  l.notice = {{0, r.header}, {drawerW, r.notice}};
+  const float bodyY = r.header + r.notice;
+  const float bodyH = height - bodyY;
+  const float tabsH = std::min(drawerTabsHeight(drawerW, scale), bodyH * 0.35f);
+  l.drawerTabs = {{0, bodyY}, {drawerW, tabsH}};
+  const PanelRect body{{0, bodyY + tabsH}, {drawerW, bodyH - tabsH}};
+  l.subjects = l.controls = l.coefficients = l.jointErrors = l.profile = l.log = body;
+  placeCentre(l, drawerW, width - drawerW, r.header, height - r.header, r);
+  return l;
+}
+
+}  // namespace
+
+float noticeRowHeight(float scale) { return 34.0f * scale; }
+
+float drawerTabsHeight(float drawerWidth, float scale) {
+  // The six labels take about 560 px of the scale's on one row (the body font, button padding).
+  const float logical = drawerWidth / scale;
+  const int rows = logical >= 560.0f ? 1 : logical >= 330.0f ? 2 : 3;
+  return (30.0f * static_cast<float>(rows) + 14.0f) * scale;
+}
+
+const char* drawerTabName(DrawerTab tab) {
+  switch (tab) {
+    case DrawerTab::Subjects: return "Subjects";
+    case DrawerTab::Controls: return "Controls";
+    case DrawerTab::Coefficients: return "Coefficients";
+    case DrawerTab::JointErrors: return "Errors";
+    case DrawerTab::Profile: return "View";
+    case DrawerTab::Log: return "Log";
+  }
+  return "";
+}
+
+Layout computeLayout(float width, float height, float scale, bool noticeRow) {
+  const Rows rows = rowsAt(height, scale, noticeRow);
+  Layout l = fullLayout(width, height, scale, rows);
+  l.header = {{0, 0}, {width, rows.header}};
+  l.notice = {{0, rows.header}, {width, rows.notice}};
+  if (fits(l, width, height)) return l;
+  Layout d = drawerLayout(width, height, scale, rows);
+  d.header = l.header;
+  return d;
 }
 
 }  // namespace ew::ui

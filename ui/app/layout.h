@@ -1,19 +1,40 @@
 #pragma once
 // Where each panel goes: a fixed layout computed from the window size and the UI scale.
+// When everything fits:
 //   header (full width)
 //   notice row (full width; only while an error or warning is shown)
 //   subjects | metrics strip            | coefficients
 //   controls | 2D input | 3D view       |
 //            | playback                 |
 //            | joint errors | J(α) | log |
+// When it does not — the side columns would leave the views less than half the width, or
+// the bottom row would leave them less than 0.35 of the height (a small window, or a large
+// UI scale: 1280×720 at scale 2) — the six side and bottom panels share one column, a
+// drawer, one at a time under a row of tabs, and the views take the rest:
+//   header
+//   notice | metrics strip   (the notice row over the drawer only)
+//   tabs   |
+//   drawer | 2D input | 3D view
+//          | playback
+
+#include <array>
 
 #include "ui/panels/panel_window.h"
 
 namespace ew::ui {
 
+// The drawer's panels, in the order of its tabs.
+enum class DrawerTab { Subjects, Controls, Coefficients, JointErrors, Profile, Log };
+inline constexpr std::array<DrawerTab, 6> kDrawerTabs{DrawerTab::Subjects, DrawerTab::Controls,
+                                                      DrawerTab::Coefficients, DrawerTab::JointErrors,
+                                                      DrawerTab::Profile, DrawerTab::Log};
+const char* drawerTabName(DrawerTab tab);  // "Subjects", "Controls", …
+
 struct Layout {
   PanelRect header, notice, subjects, controls, metrics, input, reconstruction, playback,
       coefficients, jointErrors, profile, log;
+  bool drawer = false;    // the side and bottom panels share `drawerBody`, one at a time
+  PanelRect drawerTabs;   // the tab row above it (drawer only)
 };
 
 // `noticeRow`: a row under the header for the error / warning notice, so that it covers
@@ -21,5 +42,8 @@ struct Layout {
 Layout computeLayout(float width, float height, float scale, bool noticeRow = false);
 // The notice row's height at `scale`.
 float noticeRowHeight(float scale);
+// The drawer's tab rows' height for a drawer `drawerWidth` wide at `scale`: a narrow drawer
+// wraps its six tabs onto two or three rows.
+float drawerTabsHeight(float drawerWidth, float scale);
 
 }  // namespace ew::ui

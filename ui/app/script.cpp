@@ -27,7 +27,7 @@ const std::set<std::string>& knownActions() {
       "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame",
       "set_engine", "video_frame", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "track_video",
-      "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines"};
+      "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab"};
   // clang-format on
   return names;
 }
@@ -317,6 +317,8 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::exportAnalysisCsv(s, text(a));
   } else if (n == "set_analysis_metric") {
     actions::setAnalysisMetric(s, text(a));
+  } else if (n == "drawer_tab") {
+    s.panels.drawer.active = drawerTabFromName(text(a));
   } else if (n == "analysis_engines") {
     if (!a.argument.is_boolean()) throw std::invalid_argument("expects true or false");
     s.panels.analysis.showEngines = a.argument.get<bool>();

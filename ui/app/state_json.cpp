@@ -264,6 +264,8 @@ nlohmann::json stateJson(const AppState& s) {
                  {"pitch_deg", v.camera.pitchDeg},
                  {"distance_mm", v.camera.distanceMm}}},
                {"point_lights", v.overlays.pointLights}};
+  // The drawer layout (small window or large scale): the tab shown; null in the full layout.
+  j["view"]["drawer"] = s.panels.drawer.inUse ? nlohmann::json(drawerTabName(s.panels.drawer.active)) : nlohmann::json();
   j["busy"] = s.busy();
   j["failures"] = s.jobs.failures;
   j["error"] = s.jobs.lastError;

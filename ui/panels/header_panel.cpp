@@ -155,10 +155,20 @@ std::vector<std::string> modelLines(const AppState& s) {
 void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   if (beginPanel(ctx.backdrop, "##header", rect,
                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
+    // The name goes first when the window is too narrow for it and every button (a large UI
+    // scale): the buttons are what the header is for.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float buttonsW = 0.0f;
+    for (const char* b : {"Open…", "Model…", "Export…", "Analysis", "Gait", "Tour", "?"})
+      buttonsW += ImGui::CalcTextSize(b).x + 2.0f * style.FramePadding.x + style.ItemSpacing.x;
     if (s.fonts.large) ImGui::PushFont(s.fonts.large);
-    ImGui::TextColored(ImVec4(1.0f, 0.72f, 0.38f, 1.0f), "Eigenwalker");
+    const bool named = ImGui::CalcTextSize("Eigenwalker").x + 18.0f * ctx.scale + buttonsW <=
+                       ImGui::GetContentRegionAvail().x;
+    if (named) {
+      ImGui::TextColored(ImVec4(1.0f, 0.72f, 0.38f, 1.0f), "Eigenwalker");
+      ImGui::SameLine(0.0f, 18.0f * ctx.scale);
+    }
     if (s.fonts.large) ImGui::PopFont();
-    ImGui::SameLine(0.0f, 18.0f * ctx.scale);
     if (ImGui::Button("Open…")) s.panels.data.open = !s.panels.data.open;
     ImGui::SameLine();
     if (ImGui::Button("Model…")) modelMenuOpen = !modelMenuOpen;

@@ -88,7 +88,7 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
                 v.frameCount(), frame / std::max(info.fps, 1e-9),
                 v.shownIndex != frame ? " · decoding…" : "");
   drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input (video)", sub, s.fonts.large,
-              ctx.scale);
+              ctx.scale, size.x - 2.0f * pad);
   if (v.marking) {
     const auto& order = markingOrder();
     const std::string prompt =
@@ -113,7 +113,7 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
     legend.push_back({glm::vec4(0.3f, 1.0f, 0.25f, 1.0f), "tracked: sure", false});
     legend.push_back({glm::vec4(1.0f, 0.2f, 0.25f, 1.0f), "tracked: lost", false});
   }
-  drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), legend, ctx.scale);
+  drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), legend, ctx.scale, size.x);
 }
 
 void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size,

@@ -10,15 +10,28 @@ namespace ew::ui {
 
 namespace {
 
+// A narrow strip (a small window or a large UI scale) drops a metric's note, then the metrics
+// that do not fit at all, rather than cutting them at the edge.
 void metric(const AppState& s, const char* label, const char* value, const char* note, float width,
             const ImVec4& colour = ImGui::GetStyleColorVec4(ImGuiCol_Text)) {
+  const float avail = ImGui::GetContentRegionAvail().x;
+  if (s.fonts.large) ImGui::PushFont(s.fonts.large);
+  const float valueW = ImGui::CalcTextSize(value).x;
+  if (s.fonts.large) ImGui::PopFont();
+  const float noteW = ImGui::CalcTextSize(note).x + ImGui::GetStyle().ItemSpacing.x;
+  if (std::max(ImGui::CalcTextSize(label).x, valueW) > avail) return;
   ImGui::BeginGroup();
   ImGui::TextDisabled("%s", label);
   if (s.fonts.large) ImGui::PushFont(s.fonts.large);
   ImGui::TextColored(colour, "%s", value);
   if (s.fonts.large) ImGui::PopFont();
-  ImGui::SameLine();
-  ImGui::TextDisabled("%s", note);
+  // Five metrics at their minimum width do not fit: notes go, so that every value can stay.
+  const float strip = ImGui::GetWindowContentRegionMax().x - ImGui::GetWindowContentRegionMin().x;
+  const bool notes = 5.0f * width <= strip + 1.0f;
+  if (notes && valueW + noteW <= avail) {
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", note);
+  }
   ImGui::EndGroup();
   ImGui::SameLine(0.0f, 0.0f);
   const float used = ImGui::GetItemRectSize().x;

@@ -22,8 +22,13 @@ void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     if (ImGui::Button(">|", ImVec2(bw, 0))) p.step(1, strideHz);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("step forward one frame (1/60 s)");
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(150.0f * ctx.scale);
-    ImGui::SliderFloat("##speed", &p.speed, 0.1f, 2.0f, "speed %.2f×", ImGuiSliderFlags_AlwaysClamp);
+    // A narrow row (a small window, a large UI scale) shares what is left between the two
+    // sliders and shortens their labels rather than pushing the phase slider off the edge.
+    const float rest = ImGui::GetContentRegionAvail().x;
+    const bool narrow = rest < 360.0f * ctx.scale;
+    ImGui::SetNextItemWidth(narrow ? 0.4f * rest : 150.0f * ctx.scale);
+    ImGui::SliderFloat("##speed", &p.speed, 0.1f, 2.0f, narrow ? "%.2f×" : "speed %.2f×", ImGuiSliderFlags_AlwaysClamp);
+    if (narrow && ImGui::IsItemHovered()) ImGui::SetTooltip("playback speed");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     if (s.doc.mode == Mode::Clip && s.clip && strideHz > 0.0) {
@@ -38,7 +43,8 @@ void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       }
     } else {
       float phase = static_cast<float>(p.phase());
-      if (ImGui::SliderFloat("##phase", &phase, 0.0f, 1.0f, "gait phase %.3f", ImGuiSliderFlags_AlwaysClamp)) {
+      if (ImGui::SliderFloat("##phase", &phase, 0.0f, 1.0f, narrow ? "phase %.2f" : "gait phase %.3f",
+                             ImGuiSliderFlags_AlwaysClamp)) {
         p.setPhase(phase);
         p.playing = false;
       }

@@ -45,6 +45,22 @@ float strideLengthMm(const AppState& s) {
 }
 
 // The clip's 3D view: where the estimated camera stands, and what is estimated.
+// The depth-error colour bar at the top right, under the caption, kept clear of the legend: in
+// a small view it is shortened to end above the legend, or left out when too little is left
+// (the metrics strip and the joint-error panel still give the errors).
+void drawColourBarClearOf(ImDrawList* dl, const ImRect& legend, ImVec2 p0, ImVec2 p1, ImVec2 size, float errorScale,
+                          float scale) {
+  const char* title = "depth error (RMS)";
+  const float pad = 10.0f * scale, top = p0.y + 78.0f * scale;
+  const float plateW = std::max(14.0f * scale + ImGui::CalcTextSize("000 mm").x + 24.0f * scale,
+                                ImGui::CalcTextSize(title).x + 16.0f * scale);
+  const float chrome = ImGui::GetTextLineHeight() + 24.0f * scale;  // title and padding around the bar
+  float height = std::min(200.0f * scale, size.y * 0.35f);
+  if (legend.Max.x > p1.x - pad - plateW) height = std::min(height, legend.Min.y - pad - top - chrome);
+  if (height < 50.0f * scale) return;
+  drawErrorColourBar(dl, ImVec2(p1.x - pad, top), height, errorScale, title, scale);
+}
+
 void drawClipAnnotations(const AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float pad = 10.0f * ctx.scale;
@@ -61,12 +77,12 @@ void drawClipAnnotations(const AppState& s, const FrameContext& ctx, ImVec2 p0, 
                   c.alphaDeg, c.elevationDeg);
   }
   drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "3D reconstruction and the estimated camera", sub, s.fonts.large,
-              ctx.scale);
+              ctx.scale, size.x - 2.0f * pad);
   std::vector<LegendItem> legend{{palette::kReconRight, "reconstruction (right side darker)", false},
                                  {palette::kCamera, "estimated camera, its view of the walk", true},
                                  {palette::kReconMid, "walking line over the clip", true}};
   if (!fit.unseenJoints.empty()) legend.push_back({palette::kModelEstimated, "never seen: from the model", false});
-  drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), legend, ctx.scale);
+  drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), legend, ctx.scale, size.x);
 }
 
 }  // namespace
@@ -223,7 +239,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
         std::snprintf(sub, sizeof sub, "compare: the three engines %s α = %.1f°",
                       s.doc.recon.unknownAngle ? "with α unknown, true" : "at the known", r->alphaTrueDeg);
       drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), reconstruct ? "3D reconstruction" : "Gait space",
-                  sub, s.fonts.large, ctx.scale);
+                  sub, s.fonts.large, ctx.scale, size.x - 2.0f * pad);
       std::vector<LegendItem> legend;
       std::deque<std::string> legendLabels;  // the items point into it: a deque never moves them
       if (o.pointLights) {
@@ -258,10 +274,9 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
         if (reconstruct && s.doc.recon.unknownAngle)
           legend.push_back({palette::kCameraEstimate, "estimated camera (est. α)", true});
       }
-      drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale);
+      const ImRect legendRect = drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale, size.x);
       if (reconstruct && d && o.depthErrorColour && !o.pointLights && !s.doc.compareEngines)
-        drawErrorColourBar(dl, ImVec2(p1.x - pad, p0.y + 78.0f * ctx.scale), std::min(200.0f * ctx.scale, size.y * 0.35f),
-                           errorScale, "depth error (RMS)", ctx.scale);
+        drawColourBarClearOf(dl, legendRect, p0, p1, size, errorScale, ctx.scale);
       }
       if (!drawn) {
         const char* msg = clipMode && s.video && !s.doc.clip

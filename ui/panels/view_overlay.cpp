@@ -9,28 +9,55 @@
 namespace ew::ui {
 
 void drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
-                 ImFont* titleFont, float scale) {
-  ImFont* font = titleFont ? titleFont : ImGui::GetFont();
-  const float titleSize = font->FontSize;
-  const ImVec2 t = font->CalcTextSizeA(titleSize, 1e9f, 0.0f, title.c_str());
-  const ImVec2 s = ImGui::CalcTextSize(subtitle.c_str());
+                 ImFont* titleFont, float scale, float maxWidth) {
+  // A narrow view (a small window, a large UI scale) gets the caption in smaller type: it
+  // would otherwise cover the walker.
+  const bool narrow = maxWidth < 330.0f * scale;
+  ImFont* font = titleFont && !narrow ? titleFont : ImGui::GetFont();
+  ImFont* body = ImGui::GetFont();
+  const float titleSize = narrow ? ImGui::GetFontSize() * 1.1f : font->FontSize;
+  const float bodySize = ImGui::GetFontSize() * (narrow ? 0.8f : 1.0f);
   const float pad = 8.0f * scale;
+  const float wrap = std::max(40.0f * scale, maxWidth - 2 * pad);  // whole words onto the next line
+  const ImVec2 t = font->CalcTextSizeA(titleSize, 1e9f, wrap, title.c_str());
+  const ImVec2 s = body->CalcTextSizeA(bodySize, 1e9f, wrap, subtitle.c_str());
   const ImVec2 plate{std::max(t.x, s.x) + 2 * pad, t.y + s.y + 2 * pad + 2.0f * scale};
   dl->AddRectFilled(at, ImVec2(at.x + plate.x, at.y + plate.y), IM_COL32(10, 12, 16, 150), 6.0f * scale);
-  dl->AddText(font, titleSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(235, 238, 245, 255), title.c_str());
-  dl->AddText(ImVec2(at.x + pad, at.y + pad + t.y + 2.0f * scale), IM_COL32(150, 160, 175, 255),
-              subtitle.c_str());
+  dl->AddText(font, titleSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(235, 238, 245, 255), title.c_str(), nullptr,
+              wrap);
+  dl->AddText(body, bodySize, ImVec2(at.x + pad, at.y + pad + t.y + 2.0f * scale), IM_COL32(150, 160, 175, 255),
+              subtitle.c_str(), nullptr, wrap);
 }
 
-void drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale) {
-  const float row = ImGui::GetTextLineHeight() + 4.0f * scale;
-  const float pad = 8.0f * scale;
+ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale,
+                  float viewWidth) {
   float width = 0.0f;
   for (const auto& it : items) width = std::max(width, ImGui::CalcTextSize(it.label.c_str()).x);
+  const float natural = width + 42.0f * scale;
+  const float soft = 0.55f * viewWidth;
+  const float shrink = natural > soft ? std::max(0.6f, soft / natural) : 1.0f;
+  const float hardText = viewWidth - 2.0f * (bottomLeft.x - ImGui::GetWindowPos().x) - 42.0f * scale * shrink;
+  scale *= shrink;
+  width = std::min(width * shrink, std::max(hardText, 20.0f * scale));
+  const float fontSize = ImGui::GetFontSize() * shrink;
+  // A label longer than the room left: its end becomes "…".
+  const auto fitted = [&](const std::string& label) {
+    if (ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, label.c_str()).x <= width) return label;
+    std::string cut = label;
+    const auto popCharacter = [&cut] {  // a whole UTF-8 character: its continuation bytes, then its lead
+      while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80) cut.pop_back();
+      if (!cut.empty()) cut.pop_back();
+    };
+    while (!cut.empty() && ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, (cut + "…").c_str()).x > width)
+      popCharacter();
+    return cut + "…";
+  };
+  const float row = fontSize + 4.0f * scale;
+  const float pad = 8.0f * scale;
   const float h = row * static_cast<float>(items.size()) + 2 * pad;
   const ImVec2 tl{bottomLeft.x, bottomLeft.y - h};
-  dl->AddRectFilled(tl, ImVec2(tl.x + width + 2 * pad + 26.0f * scale, bottomLeft.y),
-                    IM_COL32(10, 12, 16, 150), 6.0f * scale);
+  const ImVec2 br{tl.x + width + 2 * pad + 26.0f * scale, bottomLeft.y};
+  dl->AddRectFilled(tl, br, IM_COL32(10, 12, 16, 150), 6.0f * scale);
   float y = tl.y + pad;
   for (const auto& it : items) {
     const ImU32 c = toImU32(glm::vec4(glm::vec3(it.colour), std::max(it.colour.a, 0.85f)));
@@ -40,9 +67,11 @@ void drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> i
     } else {
       dl->AddCircleFilled(mid, 6.0f * scale, c);
     }
-    dl->AddText(ImVec2(tl.x + pad + 24.0f * scale, y + 1.0f), IM_COL32(215, 220, 230, 255), it.label.c_str());
+    dl->AddText(ImGui::GetFont(), fontSize, ImVec2(tl.x + pad + 24.0f * scale, y + 1.0f), IM_COL32(215, 220, 230, 255),
+                fitted(it.label).c_str());
     y += row;
   }
+  return {tl, br};
 }
 
 void drawErrorColourBar(ImDrawList* dl, ImVec2 topRight, float heightPx, float maxMm,

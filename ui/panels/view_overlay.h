@@ -3,6 +3,7 @@
 // a legend, a colour bar, a scale bar. Helpers shared by both view panels.
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <span>
 #include <string>
@@ -19,10 +20,15 @@ struct LegendItem {
 };
 
 // Caption at the top-left corner, on a translucent plate.
+// Wider than `maxWidth`, its lines wrap between words.
 void drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
-                 ImFont* titleFont, float scale);
-// Legend rows, bottom-left corner upwards.
-void drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale);
+                 ImFont* titleFont, float scale, float maxWidth = 1e9f);
+// Legend rows, bottom-left corner upwards; the plate's rectangle is returned (so other
+// overlays can keep clear of it). In a view `viewWidth` wide, a legend wider than 0.55 of it
+// is drawn in smaller text (down to 0.6 of the body size) so it covers less of the walker,
+// and a label that would still leave the view ends in "…".
+ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale,
+                  float viewWidth = 1e9f);
 // Vertical colour bar of the error map, 0 … maxMm, at the right edge.
 void drawErrorColourBar(ImDrawList* dl, ImVec2 topRight, float heightPx, float maxMm,
                         const char* title, float scale);

@@ -1,0 +1,87 @@
+// The viewer's layout (ui/app/layout.h) over the window sizes and UI scales teaching happens
+// at: every panel inside the window, no two panels overlapping, and the two views at least a
+// quarter of the width and 0.35 of the height each — by switching to the drawer (the side and
+// bottom panels one at a time) when the full layout would not leave them that.
+
+#include "ui/app/layout.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+namespace ew::ui {
+namespace {
+
+struct Named {
+  std::string name;
+  PanelRect rect;
+};
+
+// The panels drawn at once: in the drawer only one of the six side and bottom panels is.
+std::vector<Named> drawnPanels(const Layout& l, bool notice) {
+  std::vector<Named> p{{"header", l.header},   {"metrics", l.metrics},   {"input", l.input},
+                       {"reconstruction", l.reconstruction}, {"playback", l.playback}};
+  if (notice) p.push_back({"notice", l.notice});
+  if (l.drawer) {
+    p.push_back({"drawer tabs", l.drawerTabs});
+    p.push_back({"drawer", l.controls});
+  } else {
+    for (const Named& n : std::vector<Named>{{"subjects", l.subjects}, {"controls", l.controls},
+                                             {"coefficients", l.coefficients}, {"joint errors", l.jointErrors},
+                                             {"profile", l.profile}, {"log", l.log}})
+      p.push_back(n);
+  }
+  return p;
+}
+
+bool overlap(const PanelRect& a, const PanelRect& b) {
+  constexpr float kSlack = 0.5f;  // shared edges are not overlaps
+  return a.pos.x + a.size.x > b.pos.x + kSlack && b.pos.x + b.size.x > a.pos.x + kSlack &&
+         a.pos.y + a.size.y > b.pos.y + kSlack && b.pos.y + b.size.y > a.pos.y + kSlack;
+}
+
+TEST(Layout, HoldsAtEveryTeachingSizeAndScale) {
+  const std::pair<float, float> sizes[] = {{1024, 768}, {1280, 720}, {1366, 768}, {1600, 900}, {1920, 1080}, {3840, 2160}};
+  // UI scales 1, 1.5 and 2, and the projector theme's 1.3 on top of each (kProjectorScale).
+  const float scales[] = {1.0f, 1.3f, 1.5f, 1.95f, 2.0f, 2.6f};
+  int drawers = 0;
+  for (const auto& [w, h] : sizes)
+    for (float scale : scales)
+      for (bool notice : {false, true}) {
+        const std::string cell = std::to_string(static_cast<int>(w)) + "x" + std::to_string(static_cast<int>(h)) +
+                                 " at " + std::to_string(scale) + (notice ? " with the notice row" : "");
+        const Layout l = computeLayout(w, h, scale, notice);
+        drawers += l.drawer ? 1 : 0;
+        const auto panels = drawnPanels(l, notice);
+        for (const Named& p : panels) {
+          EXPECT_GE(p.rect.pos.x, 0.0f) << cell << ": " << p.name;
+          EXPECT_GE(p.rect.pos.y, 0.0f) << cell << ": " << p.name;
+          EXPECT_GT(p.rect.size.x, 0.0f) << cell << ": " << p.name;
+          EXPECT_LE(p.rect.pos.x + p.rect.size.x, w + 0.5f) << cell << ": " << p.name;
+          EXPECT_LE(p.rect.pos.y + p.rect.size.y, h + 0.5f) << cell << ": " << p.name;
+        }
+        for (size_t i = 0; i < panels.size(); ++i)
+          for (size_t j = i + 1; j < panels.size(); ++j)
+            EXPECT_FALSE(overlap(panels[i].rect, panels[j].rect)) << cell << ": " << panels[i].name << " and "
+                                                                  << panels[j].name;
+        for (const PanelRect& view : {l.input, l.reconstruction}) {
+          EXPECT_GE(view.size.x, 0.25f * w) << cell;
+          EXPECT_GE(view.size.y, 0.35f * h) << cell;
+        }
+      }
+  // The drawer is for tight windows only: 1600×900 and up at scale 1 keep the full layout.
+  EXPECT_GT(drawers, 0);
+  for (const auto& [w, h] : {std::pair{1600.0f, 900.0f}, std::pair{1920.0f, 1080.0f}, std::pair{1024.0f, 768.0f}})
+    EXPECT_FALSE(computeLayout(w, h, 1.0f).drawer) << w << "x" << h;
+  EXPECT_TRUE(computeLayout(1280, 720, 2.0f).drawer);
+}
+
+TEST(Layout, TheDrawersTabsWrapOntoMoreRowsWhenNarrow) {
+  EXPECT_LT(drawerTabsHeight(700.0f, 1.0f), drawerTabsHeight(400.0f, 1.0f));
+  EXPECT_LT(drawerTabsHeight(400.0f, 1.0f), drawerTabsHeight(250.0f, 1.0f));
+  EXPECT_FLOAT_EQ(drawerTabsHeight(800.0f, 2.0f), 2.0f * drawerTabsHeight(400.0f, 1.0f));
+}
+
+}  // namespace
+}  // namespace ew::ui
