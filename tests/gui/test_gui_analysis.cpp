@@ -85,8 +85,15 @@ TEST_F(GuiAnalysis, DrawsTheCurvesAndExportsThemAsCsv) {
 // engine_view_curves.h) drawn in their compare-mode colours and exported beside the
 // eigenwalker's.
 TEST_F(GuiAnalysis, OtherEnginesCurvesAreDrawnAndExported) {
+  // Ten synthetic walkers: a snippet prior per fold makes these curves slow (23 s for the
+  // default 50 on this machine, docs/VIEWER.md); ten folds show the same.
+  const auto syn = dir / "syn";
+  const std::string synth = quote(EW_CLI_PATH) + " synth --out " + quote(syn.string()) +
+                            " --count 10 --seed 7 --force > /dev/null 2>&1";
+  ASSERT_EQ(std::system(synth.c_str()), 0);
   const auto d = dir.string();
   const auto script = writeScript(dir, R"([
+    {"open": ")" + (syn / "walkers.csv").string() + R"("},
     {"select_subject": "SYN005"},
     {"play": false},
     {"analysis_engines": true},
