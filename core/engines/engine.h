@@ -31,6 +31,7 @@
 #include <optional>
 #include <string>
 #include <variant>
+#include <algorithm>
 #include <vector>
 
 #include "core/engine/fourier.h"
@@ -51,6 +52,10 @@ inline constexpr EngineKind kEngineKinds[] = {EngineKind::Eigenwalker, EngineKin
 const char* engineName(EngineKind kind);
 // Throws Error(BadArgument) naming `where` (e.g. "--engine") and the known names.
 EngineKind parseEngineKind(const std::string& name, const std::string& where);
+// Whether `kind` is among `engines` (an experiment's or a comparison's engines asked for).
+inline bool hasEngine(const std::vector<EngineKind>& engines, EngineKind kind) {
+  return std::find(engines.begin(), engines.end(), kind) != engines.end();
+}
 
 struct EigenwalkerEngine {
   EigenwalkerModel model;

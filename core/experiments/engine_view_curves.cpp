@@ -24,7 +24,7 @@ void checkOptions(const std::vector<ExperimentWalker>& walkers, const EngineView
   if (o.anglesDeg.empty()) bad("no view angle");
   for (double a : o.anglesDeg)
     if (!std::isfinite(a)) bad("view angles must be finite");
-  if (std::find(o.engines.begin(), o.engines.end(), EngineKind::Eigenwalker) != o.engines.end())
+  if (hasEngine(o.engines, EngineKind::Eigenwalker))
     bad("the eigenwalker's curves are the known-view experiment's");
   if (walkerSubjects(walkers).size() < 3) throwBadData("engine curves", "", "leave-one-subject-out needs 3 subjects");
 }
@@ -47,10 +47,6 @@ EngineViewRow scoreView(const std::string& subject, EngineKind kind, double alph
     row.error = e.what();
   }
   return row;
-}
-
-bool uses(const EngineViewOptions& o, EngineKind kind) {
-  return std::find(o.engines.begin(), o.engines.end(), kind) != o.engines.end();
 }
 
 }  // namespace
@@ -77,7 +73,7 @@ std::vector<EngineViewRow> engineViewErrors(const std::vector<ExperimentWalker>&
     const std::string& subject = subjects[static_cast<size_t>(f)];
     SnippetEngine snippet;
     std::string noPrior;
-    if (uses(o, EngineKind::Snippet)) {
+    if (hasEngine(o.engines, EngineKind::Snippet)) {
       try {
         snippet.prior = std::make_shared<const PreparedSnippetPrior>(
             prepareSnippetPrior(fourierSnippetPrior(walkers, subject, o.speedMps, o.priorCycles)));
@@ -91,13 +87,13 @@ std::vector<EngineViewRow> engineViewErrors(const std::vector<ExperimentWalker>&
       const Eigen::MatrixXd overground = overgroundFrames(w.fit.w, w.fit.omegaRadS, o.speedMps, o.cycles, kRateHz);
       const Eigen::MatrixXd inPlace = overgroundFrames(w.fit.w, w.fit.omegaRadS, 0.0, o.cycles, kRateHz);
       SkeletonEngine skeleton;
-      if (uses(o, EngineKind::Skeleton)) skeleton.bones = boneLengthsFromFrames(inPlace, w.id);
+      if (hasEngine(o.engines, EngineKind::Skeleton)) skeleton.bones = boneLengthsFromFrames(inPlace, w.id);
       for (double alpha : o.anglesDeg) {
-        if (uses(o, EngineKind::Snippet))
+        if (hasEngine(o.engines, EngineKind::Snippet))
           parts[static_cast<size_t>(f)].push_back(
               noPrior.empty() ? scoreView(subject, EngineKind::Snippet, alpha, snippet, overground, strideHz)
                               : EngineViewRow{subject, EngineKind::Snippet, alpha, NAN, NAN, noPrior});
-        if (uses(o, EngineKind::Skeleton))
+        if (hasEngine(o.engines, EngineKind::Skeleton))
           parts[static_cast<size_t>(f)].push_back(
               scoreView(subject, EngineKind::Skeleton, alpha, skeleton, inPlace, strideHz));
       }

@@ -28,10 +28,6 @@ void checkOptions(const EnginesExperimentOptions& o) {
   if (o.cameras && o.camerasPerWalker < 1) bad("at least one camera per walker");
 }
 
-bool uses(const EnginesExperimentOptions& o, EngineKind kind) {
-  return std::find(o.engines.begin(), o.engines.end(), kind) != o.engines.end();
-}
-
 // Experiment "snippet"'s engine labels → (engine, variant, the gait table's label).
 struct ViewEngineName {
   const char* snippetLabel;
@@ -92,10 +88,10 @@ void compareOnCameras(const std::vector<ExperimentWalker>& walkers, const std::v
   c.noisePx = o.noisePx;
   c.sigma2Mm2 = o.sigma2Mm2;
   c.threads = o.threads;
-  c.skeleton = uses(o, EngineKind::Skeleton);
-  c.snippet = uses(o, EngineKind::Snippet);
+  c.skeleton = hasEngine(o.engines, EngineKind::Skeleton);
+  c.snippet = hasEngine(o.engines, EngineKind::Snippet);
   c.gait = true;
-  const bool eigenwalker = uses(o, EngineKind::Eigenwalker);
+  const bool eigenwalker = hasEngine(o.engines, EngineKind::Eigenwalker);
   for (const CameraRow& row : cameraErrors(walkers, folds, c)) {
     if (eigenwalker)
       addCameraRow(row, "eigenwalker", "everything unknown",

@@ -351,6 +351,14 @@ LinePlot enginesViewFigure(const std::vector<EnginesRow>& rows) {
   return p;
 }
 
+// The bar group labelled `label`, added (with `values` NaN: no bar) when new.
+BarGroup& groupNamed(BarPlot& p, const std::string& label, std::size_t values) {
+  for (auto& g : p.groups)
+    if (g.label == label) return g;
+  p.groups.push_back({label, std::vector<double>(values, NAN)});
+  return p.groups.back();
+}
+
 // Mean MPJPE of every engine and variant per noise level, through the random cameras.
 BarPlot enginesCameraFigure(const std::vector<EnginesSummaryRow>& summary) {
   BarPlot p{"Three engines through random pinhole cameras", "mean MPJPE (mm, mean translation removed)", {}, {}, {},
@@ -366,13 +374,8 @@ BarPlot enginesCameraFigure(const std::vector<EnginesSummaryRow>& summary) {
   }
   for (const auto& e : summary) {
     if (e.setting != "camera") continue;
-    const std::string label = e.engine + ", " + e.variant;
-    auto g = std::find_if(p.groups.begin(), p.groups.end(), [&](const BarGroup& b) { return b.label == label; });
-    if (g == p.groups.end()) {
-      p.groups.push_back({label, std::vector<double>(levels.size(), NAN)});
-      g = p.groups.end() - 1;
-    }
-    g->values[static_cast<std::size_t>(std::find(levels.begin(), levels.end(), e.noise) - levels.begin())] =
+    groupNamed(p, e.engine + ", " + e.variant, levels.size())
+        .values[static_cast<std::size_t>(std::find(levels.begin(), levels.end(), e.noise) - levels.begin())] =
         e.meanMpjpeMm;
   }
   return p;
@@ -382,16 +385,8 @@ BarPlot enginesCameraFigure(const std::vector<EnginesSummaryRow>& summary) {
 BarPlot enginesTimeFigure(const std::vector<EnginesSummaryRow>& summary) {
   BarPlot p{"Three engines: time per frame (noise-free clips)", "ms per frame (wall, one thread per clip)",
             {"known view", "random camera"}, {Rgb{90, 90, 90}, Rgb{40, 110, 200}}, {}, {}, ""};
-  for (const auto& e : summary) {
-    if (e.noise != 0.0) continue;
-    const std::string label = e.engine + ", " + e.variant;
-    auto g = std::find_if(p.groups.begin(), p.groups.end(), [&](const BarGroup& b) { return b.label == label; });
-    if (g == p.groups.end()) {
-      p.groups.push_back({label, {NAN, NAN}});
-      g = p.groups.end() - 1;
-    }
-    g->values[e.setting == "view" ? 0 : 1] = e.msPerFrame;
-  }
+  for (const auto& e : summary)
+    if (e.noise == 0.0) groupNamed(p, e.engine + ", " + e.variant, 2).values[e.setting == "view" ? 0 : 1] = e.msPerFrame;
   return p;
 }
 

@@ -118,10 +118,6 @@ EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const st
   return row;
 }
 
-bool uses(const SnippetExperimentOptions& o, EngineKind kind) {
-  return std::find(o.engines.begin(), o.engines.end(), kind) != o.engines.end();
-}
-
 // Every engine's view of the clip at each level: the same draw, whatever the engine.
 Eigen::MatrixXd viewNoise(const SnippetFold& fold, const SnippetExperimentOptions& o, size_t angle, size_t level,
                           Eigen::Index frames) {
@@ -144,7 +140,7 @@ void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& cli
       // Each engine is given the image it is designed for: the snippet engine's prior was
       // learnt overground, the eigenwalker's model in place (the pelvis's image drift is
       // removed by the engine either way: tests/engines/test_engine.cpp).
-      if (uses(o, EngineKind::Snippet))
+      if (hasEngine(o.engines, EngineKind::Snippet))
         out.rows.push_back(engineRow(fold, "snippet MAP", clipName, alpha, level, clip.withProgression, [&] {
           return reconstructWithEngine(fold.snippet, knownView(fold, clip.withProgression, alpha, clip.strideHz, noise))
               .framesMm;
@@ -152,14 +148,14 @@ void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& cli
       // The skeleton engine is given the walker's own bone lengths (the paper measures its
       // performer) and the frames in place: an orthographic view says nothing of depth, so
       // its walker never moves along the line of sight.
-      if (uses(o, EngineKind::Skeleton))
+      if (hasEngine(o.engines, EngineKind::Skeleton))
         out.rows.push_back(engineRow(fold, "skeleton", clipName, alpha, level, clip.withoutProgression, [&] {
           SkeletonEngine skeleton;
           skeleton.bones = boneLengthsFromFrames(clip.withoutProgression, fold.subject);
           return reconstructWithEngine(skeleton,
                                        knownView(fold, clip.withoutProgression, alpha, clip.strideHz, noise)).framesMm;
         }, out, scoring));
-      if (uses(o, EngineKind::Eigenwalker))
+      if (hasEngine(o.engines, EngineKind::Eigenwalker))
         out.rows.push_back(engineRow(fold, "eigenwalker MAP", clipName, alpha, level, clip.withoutProgression, [&] {
           return reconstructWithEngine(fold.eigenwalker,
                                        knownView(fold, clip.withoutProgression, alpha, clip.strideHz, noise)).framesMm;
@@ -229,14 +225,14 @@ SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::ve
     SnippetFold fold;
     fold.subject = subjects[static_cast<size_t>(i)];
     fold.index = static_cast<size_t>(i);
-    if (uses(o, EngineKind::Snippet)) {
+    if (hasEngine(o.engines, EngineKind::Snippet)) {
       const auto t0 = std::chrono::steady_clock::now();
       const SnippetPrior prior = trainSnippetPrior(snippetTrainingTrials(dataset, fold.subject), o.prior);
       trainS[static_cast<size_t>(i)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       snippets[static_cast<size_t>(i)] = prior.trainingSnippets;
       fold.snippet = {std::make_shared<const PreparedSnippetPrior>(prepareSnippetPrior(prior)), o.sequence};
     }
-    if (uses(o, EngineKind::Eigenwalker)) {
+    if (hasEngine(o.engines, EngineKind::Eigenwalker)) {
       fold.eigenwalker.model = buildModelWithoutSubject(walkers, fold.subject, o.model);
       fold.eigenwalker.estimator = {Estimator::Map, o.sigma2Mm2};
     }
@@ -269,7 +265,7 @@ SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::ve
     FoldOutput shortOut;
     scoreClip(fold, middleOf(clip, shortFrames), "0.5 s", o, shortOut, nullptr);
     out.rows.insert(out.rows.end(), shortOut.rows.begin(), shortOut.rows.end());
-    if (uses(o, EngineKind::Snippet)) unknownView(fold, clip, o, out);
+    if (hasEngine(o.engines, EngineKind::Snippet)) unknownView(fold, clip, o, out);
     if (!o.wholeTrialSuffix.empty()) {
       for (const auto& t : dataset.trials) {
         const std::string& f = t.info.file;

@@ -75,16 +75,20 @@ double metricValue(const ViewErrorRow& row, ErrorMetric m) {
 
 }  // namespace
 
-std::vector<double> errorCurve(const AnalysisResult& result, const std::string& subject, const std::string& method,
-                               ErrorMetric metric) {
+namespace {
+
+// The mean of value(row) over the rows `take` keeps, at each of the result's angles (NaN
+// where none fell).
+template <class Rows, class Take, class Value>
+std::vector<double> meanAtAngles(const AnalysisResult& result, const Rows& rows, const Take& take, const Value& value) {
   const std::size_t n = result.anglesDeg.size();
   std::vector<double> sum(n, 0.0);
   std::vector<int> count(n, 0);
-  for (const auto& row : result.knownView) {
-    if (row.method != method || (!subject.empty() && row.subject != subject)) continue;
+  for (const auto& row : rows) {
+    if (!take(row)) continue;
     for (std::size_t i = 0; i < n; ++i) {
       if (std::abs(result.anglesDeg[i] - row.angleDeg) < 1e-9) {
-        sum[i] += metricValue(row, metric);
+        sum[i] += value(row);
         ++count[i];
         break;
       }
@@ -94,26 +98,28 @@ std::vector<double> errorCurve(const AnalysisResult& result, const std::string& 
   return sum;
 }
 
+}  // namespace
+
+std::vector<double> errorCurve(const AnalysisResult& result, const std::string& subject, const std::string& method,
+                               ErrorMetric metric) {
+  return meanAtAngles(
+      result, result.knownView,
+      [&](const ViewErrorRow& row) { return row.method == method && (subject.empty() || row.subject == subject); },
+      [&](const ViewErrorRow& row) { return metricValue(row, metric); });
+}
+
 std::vector<double> engineErrorCurve(const AnalysisResult& result, const std::string& subject, EngineKind engine,
                                      ErrorMetric metric) {
-  const std::size_t n = result.anglesDeg.size();
-  std::vector<double> sum(n, 0.0);
-  std::vector<int> count(n, 0);
-  for (const auto& row : result.engines) {
-    if (row.engine != engine || (!subject.empty() && row.subject != subject) || !row.error.empty()) continue;
-    const double v = metric == ErrorMetric::MpjpeMm ? row.mpjpeMm
-                     : metric == ErrorMetric::AbsMm2 ? row.depthErrorMm2
-                                                     : std::nan("");
-    for (std::size_t i = 0; i < n; ++i) {
-      if (std::abs(result.anglesDeg[i] - row.angleDeg) < 1e-9) {
-        sum[i] += v;
-        ++count[i];
-        break;
-      }
-    }
-  }
-  for (std::size_t i = 0; i < n; ++i) sum[i] = count[i] > 0 ? sum[i] / count[i] : std::nan("");
-  return sum;
+  return meanAtAngles(
+      result, result.engines,
+      [&](const EngineViewRow& row) {
+        return row.engine == engine && (subject.empty() || row.subject == subject) && row.error.empty();
+      },
+      [&](const EngineViewRow& row) {
+        return metric == ErrorMetric::MpjpeMm ? row.mpjpeMm
+               : metric == ErrorMetric::AbsMm2 ? row.depthErrorMm2
+                                               : std::nan("");
+      });
 }
 
 const char* metricName(ErrorMetric metric) {

@@ -61,7 +61,7 @@ Layout drawerLayout(float width, float height, float scale, const Rows& r) {
   l.notice = {{0, r.header}, {drawerW, r.notice}};
   const float bodyY = r.header + r.notice;
   const float bodyH = height - bodyY;
-  const float tabsH = std::min(drawerTabsHeight(drawerW, scale), bodyH * 0.35f);
+  const float tabsH = std::min(drawerTabsHeight(drawerW, scale), bodyH * 0.45f);
   l.drawerTabs = {{0, bodyY}, {drawerW, tabsH}};
   const PanelRect body{{0, bodyY + tabsH}, {drawerW, bodyH - tabsH}};
   l.subjects = l.controls = l.coefficients = l.jointErrors = l.profile = l.log = body;
@@ -76,7 +76,7 @@ float noticeRowHeight(float scale) { return 34.0f * scale; }
 float drawerTabsHeight(float drawerWidth, float scale) {
   // The six labels take about 560 px of the scale's on one row (the body font, button padding).
   const float logical = drawerWidth / scale;
-  const int rows = logical >= 560.0f ? 1 : logical >= 330.0f ? 2 : 3;
+  const int rows = logical >= 560.0f ? 1 : logical >= 330.0f ? 2 : logical >= 200.0f ? 3 : 4;
   return (30.0f * static_cast<float>(rows) + 14.0f) * scale;
 }
 

@@ -113,7 +113,7 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
   std::snprintf(sub, sizeof sub, "%s · %s · frame %d / %d (%.2f s) · pixels, y down",
                 rec.trial.format.c_str(), rec.trial.layout->name.c_str(), shown + 1, rec.trial.frameCount,
                 shown / rec.trial.rateHz);
-  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input (keypoints)", sub, s.fonts.large, ctx.scale, size.x - 2.0f * pad);
+  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input (keypoints)", sub, s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
   // The largest residual of this frame, named.
   int worst = -1;
   double worstPx = 0.0;
@@ -196,7 +196,7 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
   } else {
     std::snprintf(sub, sizeof sub, "the synthesised walker projected at α = %.1f°", s.doc.recon.alphaDeg);
   }
-  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input", sub, s.fonts.large, ctx.scale, size.x - 2.0f * pad);
+  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input", sub, s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
   const float halfMetre = 500.0f * size.y / kViewHeightMm;
   drawScaleBar(dl, ImVec2(p1.x - pad - halfMetre - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale), halfMetre,
                "50 cm", ctx.scale);

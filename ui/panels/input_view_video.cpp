@@ -88,7 +88,7 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
                 v.frameCount(), frame / std::max(info.fps, 1e-9),
                 v.shownIndex != frame ? " · decoding…" : "");
   drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input (video)", sub, s.fonts.large,
-              ctx.scale, size.x - 2.0f * pad);
+              ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
   if (v.marking) {
     const auto& order = markingOrder();
     const std::string prompt =

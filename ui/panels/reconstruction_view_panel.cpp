@@ -77,7 +77,7 @@ void drawClipAnnotations(const AppState& s, const FrameContext& ctx, ImVec2 p0, 
                   c.alphaDeg, c.elevationDeg);
   }
   drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "3D reconstruction and the estimated camera", sub, s.fonts.large,
-              ctx.scale, size.x - 2.0f * pad);
+              ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
   std::vector<LegendItem> legend{{palette::kReconRight, "reconstruction (right side darker)", false},
                                  {palette::kCamera, "estimated camera, its view of the walk", true},
                                  {palette::kReconMid, "walking line over the clip", true}};
@@ -239,7 +239,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
         std::snprintf(sub, sizeof sub, "compare: the three engines %s α = %.1f°",
                       s.doc.recon.unknownAngle ? "with α unknown, true" : "at the known", r->alphaTrueDeg);
       drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), reconstruct ? "3D reconstruction" : "Gait space",
-                  sub, s.fonts.large, ctx.scale, size.x - 2.0f * pad);
+                  sub, s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
       std::vector<LegendItem> legend;
       std::deque<std::string> legendLabels;  // the items point into it: a deque never moves them
       if (o.pointLights) {

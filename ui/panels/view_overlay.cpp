@@ -9,7 +9,8 @@
 namespace ew::ui {
 
 void drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
-                 ImFont* titleFont, float scale, float maxWidth) {
+                 ImFont* titleFont, float scale, ImVec2 viewSize) {
+  const float maxWidth = viewSize.x;
   // A narrow view (a small window, a large UI scale) gets the caption in smaller type: it
   // would otherwise cover the walker.
   const bool narrow = maxWidth < 330.0f * scale;
@@ -20,13 +21,16 @@ void drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std:
   const float pad = 8.0f * scale;
   const float wrap = std::max(40.0f * scale, maxWidth - 2 * pad);  // whole words onto the next line
   const ImVec2 t = font->CalcTextSizeA(titleSize, 1e9f, wrap, title.c_str());
-  const ImVec2 s = body->CalcTextSizeA(bodySize, 1e9f, wrap, subtitle.c_str());
+  ImVec2 s = body->CalcTextSizeA(bodySize, 1e9f, wrap, subtitle.c_str());
+  const bool withSubtitle = t.y + s.y + 2 * pad <= 0.3f * viewSize.y;
+  if (!withSubtitle) s = ImVec2(0.0f, 0.0f);
   const ImVec2 plate{std::max(t.x, s.x) + 2 * pad, t.y + s.y + 2 * pad + 2.0f * scale};
   dl->AddRectFilled(at, ImVec2(at.x + plate.x, at.y + plate.y), IM_COL32(10, 12, 16, 150), 6.0f * scale);
   dl->AddText(font, titleSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(235, 238, 245, 255), title.c_str(), nullptr,
               wrap);
-  dl->AddText(body, bodySize, ImVec2(at.x + pad, at.y + pad + t.y + 2.0f * scale), IM_COL32(150, 160, 175, 255),
-              subtitle.c_str(), nullptr, wrap);
+  if (withSubtitle)
+    dl->AddText(body, bodySize, ImVec2(at.x + pad, at.y + pad + t.y + 2.0f * scale), IM_COL32(150, 160, 175, 255),
+                subtitle.c_str(), nullptr, wrap);
 }
 
 ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale,
@@ -36,7 +40,8 @@ ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem>
   const float natural = width + 42.0f * scale;
   const float soft = 0.55f * viewWidth;
   const float shrink = natural > soft ? std::max(0.6f, soft / natural) : 1.0f;
-  const float hardText = viewWidth - 2.0f * (bottomLeft.x - ImGui::GetWindowPos().x) - 42.0f * scale * shrink;
+  // The plate stays inside the view with the callers' 10 px (× scale) margin on either side.
+  const float hardText = viewWidth - 20.0f * scale - 42.0f * scale * shrink;
   scale *= shrink;
   width = std::min(width * shrink, std::max(hardText, 20.0f * scale));
   const float fontSize = ImGui::GetFontSize() * shrink;
