@@ -180,6 +180,22 @@ void runEnginesExperiment(const Dataset& dataset, const std::vector<Walker>& wal
   results.timingsS.emplace_back("engines", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
 }
 
+// Experiment "semantic" (semantic_experiment.h): the walkers' attributes as axes in gait space.
+void runSemanticExperiment(const std::vector<Walker>& walkers, const EvaluateArgs& a, int threads,
+                           EvaluationResults& results) {
+  const auto t0 = std::chrono::steady_clock::now();
+  SemanticExperimentOptions o;
+  o.threads = threads;
+  if (!a.angles.empty()) o.anglesDeg = parseAngleSpec(a.angles);
+  if (a.sigma2Mm2 > 0) o.sigma2Mm2 = a.sigma2Mm2;
+  if (a.components > 0) o.model.components = a.components;
+  std::cerr << "semantic: " << walkers.size() << " walkers on " << threads << " threads\n";
+  results.semantic = semanticExperiment(walkers, o);
+  for (const auto& n : results.semantic.notes) results.warnings.push_back("semantic: " + n);
+  results.ran.insert(Experiment::Semantic);
+  results.timingsS.emplace_back("semantic", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+}
+
 // The snippet engine's experiments (snippet_experiment.h) learn from the dataset's trials.
 void runSnippetExperiments(const Dataset& dataset, const std::vector<Walker>& walkers,
                            const std::set<Experiment>& experiments, const EvaluateArgs& a, EvaluationResults& results) {
@@ -212,6 +228,7 @@ void runSnippetExperiments(const Dataset& dataset, const std::vector<Walker>& wa
                                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
   }
   if (experiments.count(Experiment::Engines)) runEnginesExperiment(dataset, walkers, a, threads, results);
+  if (experiments.count(Experiment::Semantic)) runSemanticExperiment(walkers, a, threads, results);
 }
 
 int runEvaluate(const EvaluateArgs& a) {
@@ -242,6 +259,7 @@ int runEvaluate(const EvaluateArgs& a) {
   eigenwalkerExperiments.erase(Experiment::Snippet);
   eigenwalkerExperiments.erase(Experiment::SnippetClusters);
   eigenwalkerExperiments.erase(Experiment::Engines);
+  eigenwalkerExperiments.erase(Experiment::Semantic);
   EvaluationResults results = runEvaluation(experimentWalkers(walkers, dataset), eigenwalkerExperiments, options);
   runSnippetExperiments(dataset, walkers, experiments, a, results);
   results.timingsS.insert(results.timingsS.begin(), {"load", loadS});
@@ -295,15 +313,20 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "                     clips, failures, mean and median MPJPE, seconds per clip, ms per frame;\n"
       "                     engines_gait_agreement.csv and engines_gait_bland_altman.csv the gait measures'\n"
       "                     agreement per setting, view and noise\n"
+      "  semantic_axes.csv  attribute,label,source,kind,walkers,mean,sd,loo_r2,loo_rmse,loo_accuracy,chance,gain,\n"
+      "                     steerable,slider_measured_change,slider_ratio: each attribute of the walkers (manifest\n"
+      "                     columns, measured gait) as an axis in gait space, leave one subject out (--experiment\n"
+      "                     semantic only; docs/SEMANTIC.md); semantic_views.csv and semantic_views_summary.csv the\n"
+      "                     attributes predicted from one 2D view (--angles, default 0:90:15; known and searched view)\n"
       "  summary.json, fig*.png. DIR is written to a temporary sibling and renamed into place.");
   cmd->add_option("--data", args->data, "Trial files, folders (recursive) or manifest CSVs")->required();
   cmd->add_option("--out", args->out, "Output folder (replaced only after success)")->required();
   cmd->add_option("--experiment", args->experiments,
                   "variance, sigma-sweep, known-view, unknown-view, noise, missing-joints, lower-body, camera, snippet, "
-                  "snippet-clusters, engines or all "
+                  "snippet-clusters, engines, semantic or all "
                   "(repeat or comma-separate)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "lower-body", "camera", "snippet", "snippet-clusters", "engines", "all"}))
+      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "lower-body", "camera", "snippet", "snippet-clusters", "engines", "semantic", "all"}))
       ->capture_default_str();
   cmd->add_option("--angles", args->angles,
                   "View angles in degrees: FROM:TO:STEP or a list a,b,c (default -90:90:1; experiment 'engines' "

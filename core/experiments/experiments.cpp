@@ -142,6 +142,7 @@ std::string experimentName(Experiment e) {
     case Experiment::Snippet: return "snippet";
     case Experiment::SnippetClusters: return "snippet-clusters";
     case Experiment::Engines: return "engines";
+    case Experiment::Semantic: return "semantic";
   }
   return "";
 }
@@ -158,7 +159,8 @@ std::optional<Experiment> experimentFromName(const std::string& name) {
   for (Experiment e : allExperiments()) {
     if (experimentName(e) == name) return e;
   }
-  for (Experiment e : {Experiment::Camera, Experiment::Snippet, Experiment::SnippetClusters, Experiment::Engines})
+  for (Experiment e : {Experiment::Camera, Experiment::Snippet, Experiment::SnippetClusters, Experiment::Engines,
+                       Experiment::Semantic})
     if (name == experimentName(e)) return e;
   return std::nullopt;
 }
@@ -459,7 +461,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 bool needsFolds(const std::set<Experiment>& e) {
   for (Experiment x : e)
     if (x != Experiment::Variance && x != Experiment::Snippet && x != Experiment::SnippetClusters &&
-        x != Experiment::Engines)
+        x != Experiment::Engines && x != Experiment::Semantic)
       return true;
   return false;
 }

@@ -18,6 +18,7 @@
 #include "core/experiments/engines_experiment.h"
 #include "core/experiments/leave_one_out.h"
 #include "core/experiments/lower_body.h"
+#include "core/experiments/semantic_experiment.h"
 #include "core/experiments/snippet_experiment.h"
 
 namespace ew {
@@ -27,6 +28,7 @@ enum class Experiment {
   Snippet,          // snippet engine beside the eigenwalker (snippet_experiment.h); by name only
   SnippetClusters,  // the snippet prior's cluster count by held-out likelihood; by name only
   Engines,          // the three engines on the same views, noise and cameras (engines_experiment.h)
+  Semantic,         // semantic axes of the walkers' attributes (semantic_experiment.h); by name only
 };
 
 std::string experimentName(Experiment e);  // "variance", "sigma-sweep", …
@@ -121,6 +123,7 @@ struct EvaluationResults {
   SnippetExperimentResults snippet;
   std::vector<ClusterChoiceRow> snippetClusters;
   EnginesExperimentResults engines;     // experiment "engines": the caller runs it too
+  SemanticExperimentResults semantic;   // experiment "semantic": the caller runs it too
   std::vector<std::pair<std::string, double>> timingsS;  // per experiment, wall seconds
   std::vector<std::string> warnings;
 };

@@ -403,6 +403,46 @@ std::vector<GaitAgreementRow> gaitRowsOf(const std::vector<GaitAgreementRow>& ro
 
 }  // namespace
 
+// [SECTION] Experiment "semantic"
+
+// Leave-one-subject-out quality of each axis: R² (numeric) or accuracy beside chance (two classes).
+BarPlot semanticAxesFigure(const SemanticExperimentResults& r) {
+  BarPlot p{"Semantic axes: each attribute predicted from the walker, leave one subject out",
+            "R2 (numeric) or accuracy (two classes)", {"R2 / accuracy", "chance (two classes)"},
+            {Rgb{40, 110, 200}, Rgb{190, 190, 190}}, {}, 1.0, "perfect"};
+  for (const auto& a : r.axes) {
+    const double value = a.categorical ? a.looAccuracy : std::max(a.looR2, -0.2);
+    p.groups.push_back({a.attribute, {value, a.categorical ? a.chance : NAN}});
+  }
+  return p;
+}
+
+// RMSE of each numeric attribute predicted from one known view, over its SD, against the view.
+LinePlot semanticViewsFigure(const SemanticExperimentResults& r) {
+  LinePlot p{"Attributes predicted from one 2D view (known view, MAP)", "view angle (deg)",
+             "RMSE / SD of the attribute (1 = guessing the mean)", {}, false, {}, {}, 0.0, {}, 15.0, {}};
+  const std::array<Rgb, 8> colors{Rgb{31, 119, 180}, Rgb{255, 127, 14}, Rgb{44, 160, 44}, Rgb{214, 39, 40},
+                                  Rgb{148, 103, 189}, Rgb{140, 86, 75}, Rgb{227, 119, 194}, Rgb{127, 127, 127}};
+  std::vector<std::string> order;
+  for (const auto& s : r.viewSummary)
+    if (!s.categorical && s.view == "known" && std::find(order.begin(), order.end(), s.attribute) == order.end())
+      order.push_back(s.attribute);
+  double top = 1.0;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    PlotSeries line{order[i], {}, {}, {}, colors[i % colors.size()], i >= colors.size(), true};
+    for (const auto& s : r.viewSummary) {
+      if (s.attribute != order[i] || s.view != "known" || !(s.sd > 0)) continue;
+      line.x.push_back(s.angleDeg);
+      line.y.push_back(s.rmse2d / s.sd);
+      top = std::max(top, line.y.back());
+    }
+    p.series.push_back(line);
+  }
+  p.yMax = 1.6 * top;  // the legend above the lines
+  p.notes.push_back("each held-out walker's own Fourier walker, model refitted without its subject");
+  return p;
+}
+
 namespace {
 
 void writeEnginesPlots(const std::filesystem::path& dir, const EnginesExperimentResults& r,
@@ -467,6 +507,11 @@ std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir, 
     names.push_back("lower_body.png");
   }
   if (r.ran.count(Experiment::Engines) && !r.engines.rows.empty()) writeEnginesPlots(dir, r.engines, names);
+  if (r.ran.count(Experiment::Semantic) && !r.semantic.axes.empty()) {
+    saveBarPlot(dir / "semantic_axes.png", semanticAxesFigure(r.semantic));
+    names.push_back("semantic_axes.png");
+    if (!r.semantic.viewSummary.empty()) line("semantic_views.png", semanticViewsFigure(r.semantic));
+  }
   return names;
 }
 

@@ -41,6 +41,14 @@ std::string join(std::initializer_list<std::string> cells) {
   return s;
 }
 
+// A label with commas or quotes as one CSV cell.
+std::string quoted(const std::string& s) {
+  if (s.find_first_of(",\"") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
 std::string viewErrorLine(const ViewErrorRow& r, bool withCondition) {
   std::string s = r.subject + ",";
   if (withCondition) s += r.condition + ",";
@@ -49,6 +57,31 @@ std::string viewErrorLine(const ViewErrorRow& r, bool withCondition) {
 }
 
 }  // namespace
+
+std::string semanticAxesCsv(const std::vector<SemanticAxisRow>& rows) {
+  return csv(kSemanticAxesHeader, rows, [](const SemanticAxisRow& r) {
+    return join({r.attribute, quoted(r.label), r.source, r.categorical ? "two-class" : "numeric",
+                 std::to_string(r.walkers), num(r.mean), num(r.sd), num(r.looR2), num(r.looRmse),
+                 num(r.looAccuracy), num(r.chance), num(r.gain), r.steerable ? "1" : "0",
+                 num(r.sliderMeasuredChange), num(r.sliderRatio)});
+  });
+}
+
+std::string semanticViewsCsv(const std::vector<SemanticViewRow>& rows) {
+  return csv(kSemanticViewsHeader, rows, [](const SemanticViewRow& r) {
+    return join({r.subject, r.walker, r.attribute, r.view, num(r.angleDeg), num(r.alphaHatDeg), num(r.truth),
+                 num(r.from3d), num(r.from2d), r.categorical ? std::to_string(r.class3d) : "",
+                 r.categorical ? std::to_string(r.class2d) : ""});
+  });
+}
+
+std::string semanticViewSummaryCsv(const std::vector<SemanticViewSummaryRow>& rows) {
+  return csv(kSemanticViewSummaryHeader, rows, [](const SemanticViewSummaryRow& r) {
+    return join({r.attribute, r.categorical ? "two-class" : "numeric", r.view, num(r.angleDeg),
+                 std::to_string(r.walkers), num(r.sd), num(r.rmse3d), num(r.rmse2d), num(r.r2From2d),
+                 num(r.accuracy3d), num(r.accuracy2d)});
+  });
+}
 
 std::string harmonicsCsv(const std::vector<HarmonicsRow>& rows) {
   return csv(kHarmonicsHeader, rows, [](const HarmonicsRow& r) {
@@ -277,6 +310,18 @@ json enginesSummary(const EnginesExperimentResults& r) {
   return out;
 }
 
+// Per attribute: the axis's quality and slider check (semantic_axes.csv's rows).
+json semanticSummary(const SemanticExperimentResults& r) {
+  const auto finite = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  json axes = json::array();
+  for (const auto& a : r.axes)
+    axes.push_back({{"attribute", a.attribute}, {"source", a.source}, {"kind", a.categorical ? "two-class" : "numeric"},
+                    {"walkers", a.walkers}, {"sd", finite(a.sd)}, {"loo_r2", finite(a.looR2)},
+                    {"loo_rmse", finite(a.looRmse)}, {"loo_accuracy", finite(a.looAccuracy)},
+                    {"chance", finite(a.chance)}, {"steerable", a.steerable}, {"slider_ratio", finite(a.sliderRatio)}});
+  return {{"components", r.components}, {"axes", axes}, {"notes", r.notes}};
+}
+
 json knownViewSummary(const std::vector<ViewErrorRow>& rows) {
   std::map<std::string, std::array<double, 4>> sums;  // abs, rel, mpjpe, count
   for (const auto& r : rows) {
@@ -382,6 +427,7 @@ std::string summaryJson(const EvaluationResults& r, const EvaluationProvenance& 
   }
   if (r.ran.count(Experiment::Snippet)) s["snippet"] = snippetSummary(r.snippet);
   if (r.ran.count(Experiment::Engines)) s["engines"] = enginesSummary(r.engines);
+  if (r.ran.count(Experiment::Semantic)) s["semantic"] = semanticSummary(r.semantic);
   if (r.ran.count(Experiment::SnippetClusters)) {
     json clusters = json::array();
     for (const auto& c : r.snippetClusters)
@@ -459,6 +505,11 @@ std::vector<std::string> writeResultsFolder(const fs::path& dir, const Evaluatio
       add("engines_summary.csv", enginesSummaryCsv(summarizeEngines(r.engines.rows)));
       add("engines_gait_agreement.csv", enginesGaitAgreementCsv(r.engines.gait));
       add("engines_gait_bland_altman.csv", enginesBlandAltmanCsv(blandAltman(r.engines.gait)));
+    }
+    if (r.ran.count(Experiment::Semantic)) {
+      add("semantic_axes.csv", semanticAxesCsv(r.semantic.axes));
+      add("semantic_views.csv", semanticViewsCsv(r.semantic.views));
+      add("semantic_views_summary.csv", semanticViewSummaryCsv(r.semantic.viewSummary));
     }
     if (options.plots) {
       for (const auto& name : writeEvaluationPlots(partial, r)) {

@@ -48,6 +48,18 @@ inline constexpr const char* kEnginesBlandAltmanHeader =
     "setting,engine,angle_deg,noise,measure,unit,pairs,unmeasured,mocap_mean,bias,sd,loa_low,loa_high,"
     "mean_abs_difference";
 
+inline constexpr const char* kSemanticAxesHeader =
+    "attribute,label,source,kind,walkers,mean,sd,loo_r2,loo_rmse,loo_accuracy,chance,gain,steerable,"
+    "slider_measured_change,slider_ratio";
+inline constexpr const char* kSemanticViewsHeader =
+    "subject,walker,attribute,view,angle_deg,alpha_hat_deg,truth,from_3d,from_2d,class_3d,class_2d";
+inline constexpr const char* kSemanticViewSummaryHeader =
+    "attribute,kind,view,angle_deg,walkers,sd,rmse_3d,rmse_2d,r2_from_2d,accuracy_3d,accuracy_2d";
+
+std::string semanticAxesCsv(const std::vector<SemanticAxisRow>& rows);
+std::string semanticViewsCsv(const std::vector<SemanticViewRow>& rows);
+std::string semanticViewSummaryCsv(const std::vector<SemanticViewSummaryRow>& rows);
+
 std::string enginesCsv(const std::vector<EnginesRow>& rows);
 std::string enginesSummaryCsv(const std::vector<EnginesSummaryRow>& rows);
 std::string enginesGaitAgreementCsv(const std::vector<GaitAgreementRow>& rows);

@@ -50,20 +50,7 @@ double bandSample(const Eigen::VectorXd* v, Eigen::Index k) { return v ? (*v)[k]
 
 GaitSummary summarizeFourierWalker(const Eigen::VectorXd& w, double strideHz, std::optional<double> speedMps,
                                    const std::string& name) {
-  GaitSummary out;
-  try {
-    if (w.size() != 225 || !(strideHz > 0)) throw Error(ErrorKind::BadArgument, name, "", "no 3D walker to measure");
-    const int frames = static_cast<int>(std::lround(kReportCycles / strideHz * kReportRateHz));
-    out.framesMm = synthesizeFrames(w, 2.0 * std::numbers::pi * strideHz, 0.0, frameTimes(frames, kReportRateHz));
-    const GaitEventSet events = gaitEventsFromKinematics(out.framesMm, kReportRateHz);
-    out.measures = measureGait(out.framesMm, kReportRateHz, events, speedMps, name);
-    const JointAngles angles = jointAngles(out.framesMm, Eigen::Vector3d::UnitZ(), name);
-    out.curves = flexionCycleCurves(angles.degrees, angles.names, kReportRateHz, *out.measures);
-  } catch (const Error& e) {
-    out.measures.reset();
-    out.error = e.problem();
-  }
-  return out;
+  return measureFourierWalker(w, strideHz, speedMps, name);
 }
 
 const std::vector<GaitRow>& gaitRows() {

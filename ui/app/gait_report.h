@@ -17,22 +17,18 @@
 #include <string>
 #include <vector>
 
+#include "core/gait/fourier_walker_gait.h"
 #include "core/gait/gait_measures.h"
 
 namespace ew::ui {
 
 struct Population;
 
-inline constexpr double kReportCycles = 4.0;
-inline constexpr double kReportRateHz = 100.0;
+inline constexpr double kReportCycles = kWalkerGaitCycles;
+inline constexpr double kReportRateHz = kWalkerGaitRateHz;
 
 // One walker measured: its measures and curves, or why it could not be.
-struct GaitSummary {
-  std::optional<GaitMeasures> measures;
-  std::vector<CycleCurve> curves;  // flexionCurveNames(), those measured
-  Eigen::MatrixXd framesMm;        // the frames measured (kReportCycles at kReportRateHz, in place)
-  std::string error;
-};
+using GaitSummary = FourierWalkerGait;
 
 // w: 225 (SPEC §3, phase origin 0); strideHz > 0. speedMps: the walker's progression when known.
 GaitSummary summarizeFourierWalker(const Eigen::VectorXd& w, double strideHz, std::optional<double> speedMps,

@@ -1,0 +1,32 @@
+#include "core/gait/fourier_walker_gait.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/common/errors.h"
+#include "core/engine/fourier.h"
+#include "core/gait/gait_events.h"
+#include "core/gait/joint_angles.h"
+
+namespace ew {
+
+FourierWalkerGait measureFourierWalker(const Eigen::Ref<const Eigen::VectorXd>& w, double strideHz,
+                                       std::optional<double> speedMps, const std::string& name) {
+  FourierWalkerGait out;
+  try {
+    if (w.size() != 225 || !(strideHz > 0) || !std::isfinite(strideHz))
+      throw Error(ErrorKind::BadArgument, name, "", "no 3D walker to measure");
+    const int frames = static_cast<int>(std::lround(kWalkerGaitCycles / strideHz * kWalkerGaitRateHz));
+    out.framesMm = synthesizeFrames(w, 2.0 * std::numbers::pi * strideHz, 0.0, frameTimes(frames, kWalkerGaitRateHz));
+    const GaitEventSet events = gaitEventsFromKinematics(out.framesMm, kWalkerGaitRateHz);
+    out.measures = measureGait(out.framesMm, kWalkerGaitRateHz, events, speedMps, name);
+    const JointAngles angles = jointAngles(out.framesMm, Eigen::Vector3d::UnitZ(), name);
+    out.curves = flexionCycleCurves(angles.degrees, angles.names, kWalkerGaitRateHz, *out.measures);
+  } catch (const Error& e) {
+    out.measures.reset();
+    out.error = e.problem();
+  }
+  return out;
+}
+
+}  // namespace ew
