@@ -106,6 +106,13 @@ const std::vector<NumericWords>& numericWords() {
       {"stride_length", "stride length (m)", "shorter strides", "longer strides"},
       {"step_width", "step width (mm)", "narrower", "wider"},
       {"arm_swing", "arm swing (°)", "less arm swing", "more arm swing"},
+      {"hip_rom", "hip range of motion (°)", "less hip motion", "more hip motion"},
+      {"knee_flexion", "knee flexion (°)", "straighter knees", "more knee flexion"},
+      {"elbow_flexion", "elbow flexion (°)", "straighter elbows", "more bent elbows"},
+      {"trunk_lean", "trunk lean (°)", "upright", "leaning forward"},
+      {"lateral_sway", "lateral sway (mm)", "less sway", "more sway"},
+      {"pelvis_rotation", "pelvis rotation (°)", "less pelvis rotation", "more pelvis rotation"},
+      {"pelvis_obliquity", "pelvis obliquity (°)", "less pelvis tilt", "more pelvis tilt"},
   };
   return words;
 }
@@ -119,9 +126,19 @@ void setNumericWords(WalkerAttribute& a) {
       return;
     }
   }
+  // "knee_loading_deg" → "less knee loading" ↔ "more knee loading".
+  std::string words = a.name;
+  for (const char* unit : {"_mps", "_spm", "_deg", "_pct", "_kg", "_mm", "_cm", "_m", "_s"}) {
+    const std::string u = unit;
+    if (words.size() > u.size() && words.compare(words.size() - u.size(), u.size(), u) == 0) {
+      words.resize(words.size() - u.size());
+      break;
+    }
+  }
+  std::replace(words.begin(), words.end(), '_', ' ');
   a.label = a.name;
-  a.lowWord = "lower " + a.name;
-  a.highWord = "higher " + a.name;
+  a.lowWord = "less " + words;
+  a.highWord = "more " + words;
 }
 
 // A two-valued column (0/1, or text): categorical, class 0 the first in sorted order (for 0/1,

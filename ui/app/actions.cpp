@@ -284,6 +284,7 @@ void takeLoaded(AppState& s, const std::shared_ptr<const Population>& pop) {
   s.doc.walker = 0;
   s.doc.editedSd.clear();
   s.doc.exploreSd.clear();
+  s.doc.exploreOmegaOffsetRadS = 0.0;
   s.log.info("Loaded " + pop->label + ": " + std::to_string(pop->walkerCount()) + " walkers");
   noticeSkipped(s, s.jobs.loading, *pop);
   startModels(s);
@@ -706,6 +707,7 @@ void setCoefficient(AppState& s, int index, double sd) {
 void resetCoefficients(AppState& s) {
   if (s.doc.mode == Mode::Explore) {
     s.doc.exploreSd.assign(s.doc.exploreSd.size(), 0.0);
+    s.doc.exploreOmegaOffsetRadS = 0.0;
   } else {
     s.doc.editedSd.clear();
   }
@@ -717,6 +719,7 @@ void randomiseCoefficients(AppState& s, unsigned seed) {
   std::normal_distribution<double> normal(0.0, 1.0);
   s.doc.exploreSd.resize(static_cast<std::size_t>(n));
   for (auto& v : s.doc.exploreSd) v = std::clamp(normal(rng), -3.0, 3.0);
+  s.doc.exploreOmegaOffsetRadS = 0.0;
 }
 
 void coefficientsFromWalker(AppState& s) {
@@ -732,6 +735,36 @@ void coefficientsFromWalker(AppState& s) {
   for (int i = 0; i < n; ++i)
     s.doc.exploreSd[static_cast<std::size_t>(i)] =
         std::clamp(k(i) / std::max(std::sqrt(m.eigenvalues(i)), 1e-12), -3.0, 3.0);
+  s.doc.exploreOmegaOffsetRadS = held->omegasRadS.size() > 0 ? walker->fit.omegaRadS - held->omegasRadS.mean() : 0.0;
+}
+
+ExploreState exploreState(const AppState& s) { return {s.doc.exploreSd, s.doc.exploreOmegaOffsetRadS}; }
+
+void moveAlongAxis(AppState& s, const std::string& attribute, const ExploreState& from, double delta) {
+  const auto* e = s.derived.explore();
+  const auto* axes = s.derived.semantic();
+  const SemanticAxisView* a = axes ? axes->find(attribute) : nullptr;
+  if (!e || !a) throw std::invalid_argument("no semantic axis '" + attribute + "' (explore mode, population loaded)");
+  if (!std::isfinite(delta)) throw std::invalid_argument("the attribute's value must be a number");
+  const int n = e->components;
+  s.doc.exploreSd = from.sd;
+  s.doc.exploreSd.resize(static_cast<std::size_t>(n), 0.0);
+  for (int i = 0; i < n && i < a->axis.directionK.size(); ++i)
+    s.doc.exploreSd[static_cast<std::size_t>(i)] =
+        std::clamp(s.doc.exploreSd[static_cast<std::size_t>(i)] + a->axis.directionK(i) * delta / std::max(e->sd(i), 1e-12), -3.0, 3.0);
+  s.doc.exploreOmegaOffsetRadS = from.omegaOffsetRadS + a->axis.directionOmega * delta;
+}
+
+double semanticReading(const AppState& s, const std::string& attribute) {
+  const auto* e = s.derived.explore();
+  const auto* axes = s.derived.semantic();
+  const SemanticAxisView* a = axes ? axes->find(attribute) : nullptr;
+  if (!e || !a) throw std::invalid_argument("no semantic axis '" + attribute + "' (explore mode, population loaded)");
+  return readAttribute(*a, e->k, 2.0 * std::numbers::pi * e->strideHz);
+}
+
+void setSemanticValue(AppState& s, const std::string& attribute, double value) {
+  moveAlongAxis(s, attribute, exploreState(s), value - semanticReading(s, attribute));
 }
 
 // [SECTION] View state

@@ -54,6 +54,16 @@ void setCoefficient(AppState& s, int index, double sd);
 void resetCoefficients(AppState& s);
 void randomiseCoefficients(AppState& s, unsigned seed);
 void coefficientsFromWalker(AppState& s);  // explorer starts from the selected walker
+
+// [SECTION] Semantic axes (explore mode; ui/app/semantic.h)
+ExploreState exploreState(const AppState& s);
+// The explorer's walker = `from` moved by `delta` (the attribute's units) along the axis of
+// `attribute` (coefficients clamped to ±3 SD). Throws std::invalid_argument for an unknown axis.
+void moveAlongAxis(AppState& s, const std::string& attribute, const ExploreState& from, double delta);
+// The axis's predictor reading of the explorer's walker.
+double semanticReading(const AppState& s, const std::string& attribute);
+// Moves the walker along the axis by what it takes from its reading to `value`.
+void setSemanticValue(AppState& s, const std::string& attribute, double value);
 void setPhase(AppState& s, double phase01);
 void setPlaying(AppState& s, bool playing);
 // Overlay names: depth_error, error_lines, error_bars, metrics, ghost, camera, grid,

@@ -1,5 +1,6 @@
 #include "ui/app/derived.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -233,10 +234,14 @@ std::unique_ptr<ExploreResult> computeExplore(const Document& doc, const Explore
   Eigen::VectorXd k = Eigen::VectorXd::Zero(e->components);
   for (Eigen::Index i = 0; i < k.size() && i < static_cast<Eigen::Index>(key.sd.size()); ++i)
     k(i) = key.sd[static_cast<std::size_t>(i)] * e->sd(i);
+  e->k = k;
   e->w = synthesizeWalker(m, k);
   e->projected = projectToView(e->w, key.alphaDeg);
   e->projectedTrail = trailOverCycle(e->projected, kTrailSamples);
-  e->strideHz = all.omegasRadS.size() > 0 ? all.omegasRadS.mean() / (2.0 * std::numbers::pi) : 0.9;
+  const double meanOmega = all.omegasRadS.size() > 0 ? all.omegasRadS.mean() : 2.0 * std::numbers::pi * 0.9;
+  // A semantic axis may move ω; a stride frequency outside the Fourier scan's range is no walk.
+  e->strideHz = std::clamp(meanOmega + key.omegaOffsetRadS, 2.0 * std::numbers::pi * 0.3, 2.0 * std::numbers::pi * 2.5) /
+                (2.0 * std::numbers::pi);
   e->modelWalkers = all.walkerCount();
   e->modelName = heldModelName(doc);
   return e;
@@ -260,6 +265,10 @@ void Derived::update(const Document& doc) {
     recon_.reset();
     display_.reset();
     explore_.reset();
+    semanticKey_.reset();
+    semantic_.reset();
+    fromViewKey_.reset();
+    fromView_.clear();
     return;
   }
   try {
@@ -292,13 +301,43 @@ void Derived::update(const Document& doc) {
       compareKey_.reset();
       compare_.reset();
     }
-    const ExploreKey ek{doc.generation, doc.recon.components, doc.exploreSd, doc.recon.alphaDeg};
+    const ExploreKey ek{doc.generation, doc.recon.components, doc.exploreSd, doc.exploreOmegaOffsetRadS,
+                        doc.recon.alphaDeg};
     if (!exploreKey_ || !(*exploreKey_ == ek)) {
       exploreKey_ = ek;
       explore_ = computeExplore(doc, ek);
     }
+    updateSemantic(doc);
   } catch (const std::exception& e) {
     error_ = e.what();
+  }
+}
+
+const AttributeTable& Derived::attributes(const Document& doc) {
+  if (!attributes_ || attributesGeneration_ != doc.generation) {
+    attributes_ = populationAttributes(*doc.population);
+    attributesGeneration_ = doc.generation;
+  }
+  return *attributes_;
+}
+
+// The explorer's axes in explore mode; the attributes from the 2D view in reconstruct mode.
+void Derived::updateSemantic(const Document& doc) {
+  if (!doc.population || doc.population->walkerCount() < kMinPopulation) return;
+  if (doc.mode == Mode::Explore && explore_) {
+    const SemanticAxesKey key{doc.generation, explore_->components};
+    if (!semanticKey_ || !(*semanticKey_ == key)) {
+      semanticKey_ = key;
+      semantic_ = std::make_unique<SemanticAxes>(
+          fitPopulationAxes(attributes(doc), *doc.population, truncateModel(*doc.heldModel(), key.components)));
+    }
+  }
+  if (doc.mode != Mode::Reconstruct || !recon_ || !reconKey_ || recon_->inspected) {
+    fromViewKey_.reset();
+    fromView_.clear();
+  } else if (!fromViewKey_ || !(*fromViewKey_ == *reconKey_)) {
+    fromViewKey_ = reconKey_;
+    fromView_ = ui::attributesFromView(attributes(doc), *doc.population, doc.walker, *recon_);
   }
 }
 

@@ -15,6 +15,7 @@
 #include "core/engine/metrics.h"
 #include "core/engine/reconstruction.h"
 #include "ui/app/document.h"
+#include "ui/app/semantic.h"
 
 namespace ew::ui {
 
@@ -113,6 +114,7 @@ struct ExploreKey {
   std::uint64_t generation = 0;
   int components = 0;
   std::vector<double> sd;
+  double omegaOffsetRadS = 0.0;
   double alphaDeg = 0.0;
   bool operator==(const ExploreKey&) const = default;
 };
@@ -123,10 +125,11 @@ struct ExploreResult {
   double explained = 0.0;
   Eigen::VectorXd sd;            // √λ_n of the full model
   Eigen::VectorXd shares;        // λ_n / Σλ
+  Eigen::VectorXd k;             // N, mm
   Eigen::VectorXd w;             // 225
   Eigen::VectorXd projected;     // C(α) w (150)
   Eigen::MatrixXd projectedTrail;
-  double strideHz = 0.0;         // mean of the population
+  double strideHz = 0.0;         // mean of the population, plus the explorer's offset
   int modelWalkers = 0;
   std::string modelName;  // the held model (heldModelName)
 };
@@ -165,6 +168,10 @@ class Derived {
   const ExploreResult* explore() const { return explore_.get(); }
   // Compare mode only (Document::compareEngines): each engine's reconstruction.
   const CompareResult* compare() const { return compare_.get(); }
+  // Explore mode: the population's semantic axes in the explorer's model.
+  const SemanticAxes* semantic() const { return semantic_.get(); }
+  // Reconstruct mode (eigenwalker, population walker): attributes predicted from the 2D view.
+  const std::vector<AttributeFromView>& attributesFromView() const { return fromView_; }
   // The last computation's error (empty when it succeeded).
   const std::string& error() const { return error_; }
   // How many times each cache was recomputed (for tests and the log).
@@ -182,6 +189,15 @@ class Derived {
   std::string error_;
   int reconComputations_ = 0;
   SnippetPriorCache snippetPriors_;
+  // The population's attributes (measured once per generation) and what uses them.
+  std::shared_ptr<const AttributeTable> attributes_;
+  std::uint64_t attributesGeneration_ = 0;
+  std::optional<SemanticAxesKey> semanticKey_;
+  std::unique_ptr<SemanticAxes> semantic_;
+  std::optional<ReconKey> fromViewKey_;
+  std::vector<AttributeFromView> fromView_;
+  const AttributeTable& attributes(const Document& doc);
+  void updateSemantic(const Document& doc);
 };
 
 // Pose helpers: w (225 or 150) evaluated at a gait phase (0 … 1); all walkers share the

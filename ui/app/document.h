@@ -74,6 +74,7 @@ struct Document {
   // σ² follows the held model's stored optimum (defaultSigma2Mm2) until the user sets it.
   bool sigma2Chosen = false;
   std::vector<double> exploreSd;   // explorer coefficients, units of each component's SD
+  double exploreOmegaOffsetRadS = 0.0;  // explorer's ω − the population's mean (semantic axes move it)
   std::vector<double> editedSd;    // reconstruct mode: coefficients the user dragged
                                    // (empty = the estimate)
   // Compare mode (reconstruct mode): every engine reconstructs the walker, drawn together

@@ -27,7 +27,8 @@ const std::set<std::string>& knownActions() {
       "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame",
       "set_engine", "video_frame", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "track_video",
-      "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab"};
+      "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab",
+      "set_semantic"};
   // clang-format on
   return names;
 }
@@ -290,6 +291,13 @@ void applyAction(AppState& s, const ScriptAction& a) {
       throw std::invalid_argument("expects [INDEX (from 1), SD]");
     s.derived.update(s.doc);  // the count of components follows the latest settings
     actions::setCoefficient(s, a.argument[0].get<int>() - 1, a.argument[1].get<double>());
+  } else if (n == "set_semantic") {
+    // {"attribute": NAME, "value": V}: the explorer's walker moved along the attribute's axis.
+    if (!a.argument.is_object() || !a.argument.contains("attribute") || !a.argument["attribute"].is_string() ||
+        !a.argument.contains("value") || !a.argument["value"].is_number())
+      throw std::invalid_argument(R"(expects {"attribute": NAME, "value": V})");
+    s.derived.update(s.doc);
+    actions::setSemanticValue(s, a.argument["attribute"].get<std::string>(), a.argument["value"].get<double>());
   } else if (n == "set_phase") {
     actions::setPhase(s, number(a));
   } else if (n == "play") {

@@ -188,6 +188,27 @@ const char* levelName(LogLevel level) {
 }
 
 // Compare mode: each engine's errors, or why it gave none; null when compare mode is off.
+// Explore mode: each semantic axis's reading of the explorer's walker; reconstruct mode: the
+// attributes predicted from the 2D view.
+nlohmann::json semanticJson(const AppState& s) {
+  nlohmann::json j = nlohmann::json::object();
+  const auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  if (const auto* e = s.derived.explore()) j["explore_stride_hz"] = e->strideHz;
+  if (const auto* axes = s.derived.semantic(); axes && s.doc.mode == Mode::Explore) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& a : axes->axes)
+      list.push_back({{"attribute", a.axis.attribute}, {"reading", finite(actions::semanticReading(s, a.axis.attribute))},
+                      {"sd", finite(a.axis.sd)}, {"gain", finite(a.axis.gain)}, {"loo_r2", finite(a.quality.r2)}, {"loo_accuracy", finite(a.quality.accuracy)}});
+    j["axes"] = list;
+  }
+  nlohmann::json fromView = nlohmann::json::array();
+  for (const auto& f : s.derived.attributesFromView())
+    fromView.push_back({{"attribute", f.attribute}, {"from_2d", finite(f.from2d)}, {"from_3d", finite(f.from3d)},
+                        {"truth", finite(f.truth)}});
+  j["from_view"] = fromView;
+  return j;
+}
+
 nlohmann::json compareJson(const AppState& s) {
   const CompareResult* c = s.derived.compare();
   if (!s.doc.compareEngines || !c) return nullptr;
@@ -246,6 +267,7 @@ nlohmann::json stateJson(const AppState& s) {
   j["video"] = videoJson(s);
   j["gait"] = gaitJson(s);
   j["compare"] = compareJson(s);
+  j["semantic"] = semanticJson(s);
   j["angle_deg"] = d.recon.alphaDeg;
   j["method"] = d.recon.estimator == Estimator::Lsq ? "lsq" : "map";
   j["engine"] = engineName(d.recon.engine);

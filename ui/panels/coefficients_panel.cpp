@@ -62,6 +62,7 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
       if (ImGui::Button("From subject") && s.doc.selectedWalker())
         actions::coefficientsFromWalker(s);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected walker's coefficients in the full model");
+      semantic.drawExplore(s, ctx.scale);
       ImGui::TextDisabled("units: SD of each component (√λ)");
     } else if (r && r->engine != EngineKind::Eigenwalker) {
       ImGui::TextWrapped("The %s engine has no eigenwalker coefficients. Its result, summarised "
@@ -104,6 +105,7 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
     }
     ImGui::EndDisabled();
     if (n == 0) ImGui::TextDisabled(s.jobs.busy() ? "building models…" : "no model");
+    if (!explore) semantic.drawFromView(s, ctx.scale);
   }
   ImGui::End();
 }

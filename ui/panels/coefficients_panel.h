@@ -5,6 +5,7 @@
 // reconstruction and the residual change (reset returns to the estimate).
 
 #include "ui/panels/panel_window.h"
+#include "ui/panels/semantic_controls.h"
 
 namespace ew::ui {
 
@@ -13,6 +14,7 @@ struct FrameContext;
 
 struct CoefficientsPanel {
   unsigned randomSeed = 1;
+  SemanticControls semantic;
 
   void draw(AppState& s, const FrameContext& ctx, const PanelRect& rect);
 };

@@ -1,0 +1,127 @@
+#include "ui/app/semantic.h"
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "core/common/errors.h"
+#include "ui/app/derived.h"
+#include "ui/app/population.h"
+
+namespace ew::ui {
+namespace {
+
+// The unit inside a label's parentheses: "speed (m/s, measured)" → "m/s".
+std::string unitOf(const std::string& label) {
+  const auto open = label.find('(');
+  if (open == std::string::npos) return "";
+  const auto end = label.find_first_of(",)", open);
+  return end == std::string::npos ? "" : label.substr(open + 1, end - open - 1);
+}
+
+std::vector<Walker> walkersExcept(const std::vector<Walker>& walkers, const std::string& subject, std::vector<int>& kept) {
+  std::vector<Walker> out;
+  for (size_t r = 0; r < walkers.size(); ++r) {
+    if (walkers[r].subject == subject) continue;
+    out.push_back(walkers[r]);
+    kept.push_back(static_cast<int>(r));
+  }
+  return out;
+}
+
+}  // namespace
+
+const SemanticAxisView* SemanticAxes::find(const std::string& attribute) const {
+  for (const auto& a : axes)
+    if (a.axis.attribute == attribute) return &a;
+  return nullptr;
+}
+
+std::shared_ptr<const AttributeTable> populationAttributes(const Population& population) {
+  return std::make_shared<const AttributeTable>(walkerAttributes(population.walkers));
+}
+
+SemanticAxes fitPopulationAxes(const AttributeTable& table, const Population& population,
+                               const EigenwalkerModel& exploreModel) {
+  SemanticAxes out;
+  out.notes = table.notes;
+  const AxisWalkers walkers = axisWalkers(exploreModel, population.walkers);
+  out.omegaMeanRadS = walkers.omegaRadS.mean();
+  out.walkersSd.resize(2, walkers.k.cols());
+  for (Eigen::Index r = 0; r < walkers.k.cols(); ++r)
+    for (Eigen::Index i = 0; i < 2; ++i)
+      out.walkersSd(i, r) = i < walkers.k.rows() ? walkers.k(i, r) / std::sqrt(std::max(exploreModel.eigenvalues(i), 1e-12)) : 0.0;
+  ModelOptions options;
+  options.components = exploreModel.componentCount();
+  std::vector<AxisFold> folds;
+  try {
+    folds = axisFolds(population.walkers, options);
+  } catch (const Error& e) {
+    out.notes.push_back("no leave-one-subject-out quality: " + e.problem());
+  }
+  for (const auto& a : table.attributes) {
+    try {
+      SemanticAxisView v{fitSemanticAxis(a, exploreModel.eigenvalues, walkers), {}, a.source};
+      if (!v.axis.steerable) {
+        out.notes.push_back(a.name + ": not predictable from the walker (gain " + std::to_string(v.axis.gain).substr(0, 4) + ")");
+        continue;
+      }
+      if (!folds.empty()) v.quality = leaveOneSubjectOut(a, population.walkers, folds);
+      out.axes.push_back(std::move(v));
+    } catch (const Error& e) {
+      out.notes.push_back(e.problem());
+    }
+  }
+  return out;
+}
+
+double readAttribute(const SemanticAxisView& a, const Eigen::VectorXd& k, double omegaRadS) {
+  return predictAttribute(a.axis, k, omegaRadS);
+}
+
+std::string formatAttributeValue(const SemanticAxisView& a, double value) {
+  char text[64];
+  if (a.axis.categorical) {
+    std::snprintf(text, sizeof text, "%.2f", value);
+    return text;
+  }
+  const double magnitude = std::max(std::abs(a.axis.mean), a.axis.sd);
+  const int decimals = magnitude >= 100 ? 0 : magnitude >= 10 ? 1 : 2;
+  const std::string unit = unitOf(a.axis.label);
+  std::snprintf(text, sizeof text, "%.*f%s%s", decimals, value, unit.empty() ? "" : " ", unit.c_str());
+  return text;
+}
+
+std::vector<AttributeFromView> attributesFromView(const AttributeTable& table, const Population& population,
+                                                  int walker, const ReconBase& recon) {
+  std::vector<AttributeFromView> out;
+  if (walker < 0 || walker >= population.walkerCount() || recon.engine != EngineKind::Eigenwalker) return out;
+  const Walker& self = population.walkers[static_cast<size_t>(walker)];
+  std::vector<int> kept;
+  const std::vector<Walker> train = walkersExcept(population.walkers, self.subject, kept);
+  if (train.size() < 3) return out;
+  const AxisWalkers trainWalkers = axisWalkers(recon.model, train);
+  const Eigen::VectorXd k3d = projectOntoModel(recon.model, recon.wTrue);
+  for (const auto& a : table.attributes) {
+    const double truth = a.values[static_cast<size_t>(walker)];
+    if (!std::isfinite(truth)) continue;
+    try {
+      const SemanticAxis axis = fitSemanticAxis(trainingAttribute(a, kept), recon.model.eigenvalues, trainWalkers);
+      if (!axis.steerable) continue;
+      AttributeFromView v;
+      v.attribute = a.name;
+      v.label = a.label;
+      v.categorical = a.categorical;
+      v.classes = a.classes;
+      v.truth = truth;
+      v.from2d = predictAttribute(axis, recon.estimate.k, self.fit.omegaRadS);
+      v.from3d = predictAttribute(axis, k3d, self.fit.omegaRadS);
+      out.push_back(v);
+    } catch (const Error&) {
+      // Too few values among the other subjects: no prediction for this attribute.
+    }
+  }
+  return out;
+}
+
+}  // namespace ew::ui

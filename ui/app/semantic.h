@@ -1,0 +1,78 @@
+#pragma once
+// Semantic axes in the viewer (issue 18; core/semantic/semantic_axes.h): sliders that mean
+// something ("slower ↔ faster", "shorter ↔ taller", "male ↔ female" where the data has it) for
+// the explorer's walker, and, in reconstruct mode, the attributes predicted from the 2D view
+// beside the walker's own. GL-free; the coefficients panel draws them.
+//
+// The axes are fitted to the loaded population's walkers projected onto the explorer's model
+// (the held model truncated to its N). Their quality is the leave-one-subject-out R² or accuracy
+// of the population's own models refitted with that N. An axis moves the walker's coefficients
+// and its stride frequency together (ω matters for speed and cadence).
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/semantic/semantic_axes.h"
+#include "core/semantic/walker_attributes.h"
+
+namespace ew::ui {
+
+struct Population;
+struct ReconBase;
+
+// The explorer's walker (Document::exploreSd and its ω offset), as a semantic slider's drag
+// starts from it.
+struct ExploreState {
+  std::vector<double> sd;
+  double omegaOffsetRadS = 0.0;
+  bool operator==(const ExploreState&) const = default;
+};
+
+struct SemanticAxesKey {
+  std::uint64_t generation = 0;
+  int components = 0;  // the explorer's N
+  bool operator==(const SemanticAxesKey&) const = default;
+};
+
+struct SemanticAxisView {
+  SemanticAxis axis;
+  AxisQuality quality;
+  std::string source;  // "manifest" or "measured"
+};
+
+struct SemanticAxes {
+  std::vector<SemanticAxisView> axes;   // the steerable ones, in the table's order
+  std::vector<std::string> notes;       // attributes without an axis, and why
+  double omegaMeanRadS = 0.0;           // the population's mean ω (the explorer's base)
+  Eigen::MatrixXd walkersSd;            // 2 × R: each walker's k1, k2 in SD units (the arrows' plot)
+  const SemanticAxisView* find(const std::string& attribute) const;
+};
+
+// The population's attributes (manifest columns and measured gait), measured once per population.
+std::shared_ptr<const AttributeTable> populationAttributes(const Population& population);
+
+// Axes for the explorer's model (the held model truncated to N components).
+SemanticAxes fitPopulationAxes(const AttributeTable& table, const Population& population,
+                               const EigenwalkerModel& exploreModel);
+
+// The predictor's reading of the explorer's walker (k in mm, ω in rad/s).
+double readAttribute(const SemanticAxisView& a, const Eigen::VectorXd& k, double omegaRadS);
+// "1.42 m/s", "0.72" (two classes), with the attribute's unit from its label.
+std::string formatAttributeValue(const SemanticAxisView& a, double value);
+
+// Reconstruct mode: an attribute predicted from the 2D view (the reconstruction's k), from the
+// walker's own 3D w, and its true value — axes fitted in the reconstruction's model to the
+// population walkers of the other subjects.
+struct AttributeFromView {
+  std::string attribute, label;
+  bool categorical = false;
+  std::vector<std::string> classes;
+  double from2d = NAN, from3d = NAN, truth = NAN;
+};
+std::vector<AttributeFromView> attributesFromView(const AttributeTable& table, const Population& population,
+                                                  int walker, const ReconBase& recon);
+
+}  // namespace ew::ui
