@@ -269,6 +269,8 @@ void Derived::update(const Document& doc) {
     semantic_.reset();
     fromViewKey_.reset();
     fromView_.clear();
+    viewAxesKey_.reset();
+    viewAxes_ = {};
     return;
   }
   try {
@@ -337,7 +339,13 @@ void Derived::updateSemantic(const Document& doc) {
     fromView_.clear();
   } else if (!fromViewKey_ || !(*fromViewKey_ == *reconKey_)) {
     fromViewKey_ = reconKey_;
-    fromView_ = ui::attributesFromView(attributes(doc), *doc.population, doc.walker, *recon_);
+    const auto axesKey = std::make_tuple(doc.generation, doc.walker, recon_->components,
+                                         recon_->model.mean.sum() + recon_->model.eigenvalues.sum());
+    if (!viewAxesKey_ || *viewAxesKey_ != axesKey) {
+      viewAxesKey_ = axesKey;
+      viewAxes_ = fitViewAxes(attributes(doc), *doc.population, doc.walker, recon_->model);
+    }
+    fromView_ = ui::attributesFromView(viewAxes_, *doc.population, doc.walker, *recon_);
   }
 }
 

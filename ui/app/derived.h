@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "core/engine/metrics.h"
@@ -196,6 +197,10 @@ class Derived {
   std::unique_ptr<SemanticAxes> semantic_;
   std::optional<ReconKey> fromViewKey_;
   std::vector<AttributeFromView> fromView_;
+  // The axes of the walker's attributes, refitted only when the walker or its model changes.
+  // generation, walker, N, and a checksum of the model (the held model's source may change)
+  std::optional<std::tuple<std::uint64_t, int, int, double>> viewAxesKey_;
+  ViewAxes viewAxes_;
   const AttributeTable& attributes(const Document& doc);
   void updateSemantic(const Document& doc);
 };

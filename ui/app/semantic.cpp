@@ -92,34 +92,45 @@ std::string formatAttributeValue(const SemanticAxisView& a, double value) {
   return text;
 }
 
-std::vector<AttributeFromView> attributesFromView(const AttributeTable& table, const Population& population,
-                                                  int walker, const ReconBase& recon) {
-  std::vector<AttributeFromView> out;
-  if (walker < 0 || walker >= population.walkerCount() || recon.engine != EngineKind::Eigenwalker) return out;
-  const Walker& self = population.walkers[static_cast<size_t>(walker)];
+ViewAxes fitViewAxes(const AttributeTable& table, const Population& population, int walker, const EigenwalkerModel& model) {
+  ViewAxes out;
+  if (walker < 0 || walker >= population.walkerCount()) return out;
   std::vector<int> kept;
-  const std::vector<Walker> train = walkersExcept(population.walkers, self.subject, kept);
+  const std::vector<Walker> train =
+      walkersExcept(population.walkers, population.walkers[static_cast<size_t>(walker)].subject, kept);
   if (train.size() < 3) return out;
-  const AxisWalkers trainWalkers = axisWalkers(recon.model, train);
-  const Eigen::VectorXd k3d = projectOntoModel(recon.model, recon.wTrue);
+  const AxisWalkers trainWalkers = axisWalkers(model, train);
   for (const auto& a : table.attributes) {
-    const double truth = a.values[static_cast<size_t>(walker)];
-    if (!std::isfinite(truth)) continue;
+    if (!std::isfinite(a.values[static_cast<size_t>(walker)])) continue;
     try {
-      const SemanticAxis axis = fitSemanticAxis(trainingAttribute(a, kept), recon.model.eigenvalues, trainWalkers);
+      SemanticAxis axis = fitSemanticAxis(trainingAttribute(a, kept), model.eigenvalues, trainWalkers);
       if (!axis.steerable) continue;
-      AttributeFromView v;
-      v.attribute = a.name;
-      v.label = a.label;
-      v.categorical = a.categorical;
-      v.classes = a.classes;
-      v.truth = truth;
-      v.from2d = predictAttribute(axis, recon.estimate.k, self.fit.omegaRadS);
-      v.from3d = predictAttribute(axis, k3d, self.fit.omegaRadS);
-      out.push_back(v);
+      out.attributes.push_back(&a);
+      out.axes.push_back(std::move(axis));
     } catch (const Error&) {
       // Too few values among the other subjects: no prediction for this attribute.
     }
+  }
+  return out;
+}
+
+std::vector<AttributeFromView> attributesFromView(const ViewAxes& axes, const Population& population, int walker,
+                                                  const ReconBase& recon) {
+  std::vector<AttributeFromView> out;
+  if (walker < 0 || walker >= population.walkerCount() || recon.engine != EngineKind::Eigenwalker) return out;
+  const Walker& self = population.walkers[static_cast<size_t>(walker)];
+  const Eigen::VectorXd k3d = projectOntoModel(recon.model, recon.wTrue);
+  for (size_t i = 0; i < axes.axes.size(); ++i) {
+    const WalkerAttribute& a = *axes.attributes[i];
+    AttributeFromView v;
+    v.attribute = a.name;
+    v.label = a.label;
+    v.categorical = a.categorical;
+    v.classes = a.classes;
+    v.truth = a.values[static_cast<size_t>(walker)];
+    v.from2d = predictAttribute(axes.axes[i], recon.estimate.k, self.fit.omegaRadS);
+    v.from3d = predictAttribute(axes.axes[i], k3d, self.fit.omegaRadS);
+    out.push_back(v);
   }
   return out;
 }

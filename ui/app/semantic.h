@@ -72,7 +72,14 @@ struct AttributeFromView {
   std::vector<std::string> classes;
   double from2d = NAN, from3d = NAN, truth = NAN;
 };
-std::vector<AttributeFromView> attributesFromView(const AttributeTable& table, const Population& population,
-                                                  int walker, const ReconBase& recon);
+// The axes a walker's attributes are predicted with: fitted in its reconstruction's model to the
+// population walkers of the other subjects (they change with the walker and N, not with α).
+struct ViewAxes {
+  std::vector<const WalkerAttribute*> attributes;  // into the table
+  std::vector<SemanticAxis> axes;
+};
+ViewAxes fitViewAxes(const AttributeTable& table, const Population& population, int walker, const EigenwalkerModel& model);
+std::vector<AttributeFromView> attributesFromView(const ViewAxes& axes, const Population& population, int walker,
+                                                  const ReconBase& recon);
 
 }  // namespace ew::ui
