@@ -1137,7 +1137,15 @@ void applyTourStep(AppState& s) {
   const auto& step = steps[static_cast<std::size_t>(s.panels.tour.step)];
   const auto script =
       parseScript(nlohmann::json::parse(step.actionsJson), std::string("tour step ") + step.title);
-  for (const auto& a : script) applyAction(s, a);
+  // A step's action the data cannot do (no semantic speed axis in a population that has no
+  // steerable one) is a warning: the tour goes on with the rest of the step.
+  for (const auto& a : script) {
+    try {
+      applyAction(s, a);
+    } catch (const std::exception& e) {
+      s.log.warning(std::string("tour step ") + step.title + ": " + a.name + ": " + e.what());
+    }
+  }
   s.log.info(std::string("Tour ") + std::to_string(s.panels.tour.step + 1) + "/" +
              std::to_string(steps.size()) + ": " + step.title);
 }

@@ -6,7 +6,7 @@ namespace ew::ui {
 
 namespace {
 
-constexpr std::array<TourStep, 5> kSteps{{
+constexpr std::array<TourStep, 6> kSteps{{
     {TourAnchor::BottomCentre, "What an eigenwalker is",
      "A walker is one gait cycle of 15 joints, summarised by a Fourier series with two "
      "harmonics: 225 numbers per person. Principal components over many walkers give the "
@@ -15,6 +15,16 @@ constexpr std::array<TourStep, 5> kSteps{{
      "what the others change.",
      R"([{"set_mode": "explore"}, {"overlay": ["point_lights", false]}, {"show_panel": ["analysis", false]},
          {"reset_coefficients": null}, {"set_coefficient": [1, 2.5]}, {"set_camera": "three_quarter"},
+         {"play": true}])"},
+    {TourAnchor::BottomCentre, "Directions that mean something",
+     "Eigenwalkers are the directions in which gaits differ most, not directions with names. "
+     "Regressing the walkers on what is known or measured about them (speed, height, leg "
+     "length, arm swing; in the default population also sex) gives an axis for each "
+     "(Troje, 2002). Here the mean walker has been moved along the speed axis to 1.6 m/s: "
+     "longer strides, quicker steps, more arm swing. Drag the semantic sliders on the right; "
+     "hover one to see how well the walkers predict it.",
+     R"([{"set_mode": "explore"}, {"reset_coefficients": null},
+         {"set_semantic": {"attribute": "measured_speed_mps", "value": 1.6}}, {"set_camera": "side"},
          {"play": true}])"},
     {TourAnchor::BottomCentre, "The 2D to 3D ambiguity",
      "Left: all the reconstruction sees, the walker's joints projected orthographically at "
@@ -34,11 +44,12 @@ constexpr std::array<TourStep, 5> kSteps{{
          {"set_analysis_metric": "E_a"}, {"show_panel": ["analysis", true]}])"},
     {TourAnchor::BottomLeft, "Unknown view angle, mirror ambiguity",
      "Usually α is unknown. The viewer searches the angle whose reconstruction explains the "
-     "input best: the profile J(α) below. An orthographic view cannot tell a walker from its "
-     "mirror image seen from the other side, so a minimum near 180° − α (mirror) and one "
-     "facing the camera are near-ties. In 3D the pink camera is the estimate, the teal one "
-     "the truth.",
-     R"([{"show_panel": ["analysis", false]}, {"set_method": "map"}, {"set_angle": 30}, {"unknown_angle": true},
+     "input best: the profile J(α) below. The dots alone cannot tell α from −α: a walker "
+     "seen from there with its depth reversed casts the same image. J(α) has a second dip "
+     "near −α, but on its logarithmic scale it lies far above the best fit: a depth-reversed "
+     "walker is a mirror image, and the model knows people do not walk like that. In 3D the "
+     "pink camera is the estimate, the teal one the truth.",
+     R"([{"show_panel": ["analysis", false]}, {"set_method": "map"}, {"set_angle": 45}, {"unknown_angle": true},
          {"set_camera": "top"}])"},
     {TourAnchor::BottomRight, "What the errors mean",
      "The blue ghost is the truth; magenta lines join each true joint to its reconstruction. "

@@ -65,8 +65,14 @@ void TourPanel::draw(AppState& s, const FrameContext& ctx) {
       }
     }
     try {
-      const float bw = 110.0f * ctx.scale;
+      // Buttons as wide as 110 px × scale allows beside the dots; narrower down to their labels';
+      // on a row of their own below the dots when even that does not fit.
       const ImGuiStyle& style = ImGui::GetStyle();
+      const float dotsW = static_cast<float>(steps.size()) * 4.0f * r + 8.0f * ctx.scale;
+      const float contentW = ImGui::GetContentRegionAvail().x;
+      const float minW = ImGui::CalcTextSize("End tour").x + 2.0f * style.FramePadding.x;
+      const float bw = std::clamp((contentW - dotsW - 2.0f * style.ItemSpacing.x) / 3.0f, minW, 110.0f * ctx.scale);
+      if (dotsW + 3.0f * bw + 2.0f * style.ItemSpacing.x > contentW) ImGui::Dummy(ImVec2(dotsW, h));
       ImGui::SetCursorPosX(ImGui::GetWindowContentRegionMax().x - 3.0f * bw - 2.0f * style.ItemSpacing.x);
       ImGui::BeginDisabled(step == 0);
       if (ImGui::Button("Back", ImVec2(bw, 0))) actions::tourBack(s);
