@@ -142,6 +142,12 @@ ImVec4 warningTextColour() {
   return light ? ImVec4(0.70f, 0.38f, 0.0f, 1.0f) : ImVec4(0.98f, 0.8f, 0.35f, 1.0f);
 }
 
+ImVec4 goodTextColour() {
+  const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+  const bool light = 0.3f * bg.x + 0.59f * bg.y + 0.11f * bg.z > 0.5f;
+  return light ? ImVec4(0.0f, 0.45f, 0.38f, 1.0f) : ImVec4(0.5f, 0.9f, 0.8f, 1.0f);
+}
+
 void applyTheme(Fonts& fonts, float scale, Theme theme) {
   ImGuiIO& io = ImGui::GetIO();
   io.Fonts->Clear();

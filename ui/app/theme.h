@@ -22,5 +22,7 @@ const char* themeName(Theme theme);
 // Warning text that reads on the current theme's window background (amber on dark,
 // dark orange on light).
 ImVec4 warningTextColour();
+// Text for a good outcome (a view angle found): teal on dark, dark teal on light.
+ImVec4 goodTextColour();
 
 }  // namespace ew::ui

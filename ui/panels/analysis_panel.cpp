@@ -1,3 +1,4 @@
+#include "ui/app/theme.h"
 #include "ui/panels/analysis_panel.h"
 
 #include <imgui.h>
@@ -160,7 +161,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   char alphaLabel[32];
   std::snprintf(alphaLabel, sizeof alphaLabel, "α = %.0f°", s.doc.recon.alphaDeg);
   if (std::abs(s.doc.recon.alphaDeg) <= 90.0)
-    angleSpec.markers.push_back({s.doc.recon.alphaDeg, alphaLabel, toImU32(palette::kCamera)});
+    angleSpec.markers.push_back({s.doc.recon.alphaDeg, alphaLabel, ImGui::ColorConvertFloat4ToU32(goodTextColour())});
   drawPlot("##angle", ImVec2(avail.x, topH), angleSpec, series, ctx.scale);
 
   // σ² sweep and spectrum side by side.
@@ -185,7 +186,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   sigmaSpec.legendBottom = true;
   char sigmaLabel[40];
   std::snprintf(sigmaLabel, sizeof sigmaLabel, "σ² = %.0f", s.doc.recon.sigma2Mm2);
-  sigmaSpec.markers.push_back({s.doc.recon.sigma2Mm2, sigmaLabel, toImU32(palette::kCamera)});
+  sigmaSpec.markers.push_back({s.doc.recon.sigma2Mm2, sigmaLabel, ImGui::ColorConvertFloat4ToU32(goodTextColour())});
   ImGui::Dummy(ImVec2(0.0f, gap * 0.5f));
   drawPlot("##sigma", ImVec2(halfW, bottomH), sigmaSpec, sigmaSeries, ctx.scale);
 
@@ -194,7 +195,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
     cx.push_back(row.component);
     ev.push_back(row.eigenvalueMm2);
   }
-  std::vector<PlotSeries> spectrumSeries{{"eigenvalue λ_n", cx, ev, IM_COL32(230, 234, 240, 255), 2.0f, false, true}};
+  std::vector<PlotSeries> spectrumSeries{{"eigenvalue λ_n", cx, ev, ImGui::GetColorU32(ImGuiCol_Text), 2.0f, false, true}};
   PlotSpec spectrumSpec;
   spectrumSpec.xLabel = "component n";
   spectrumSpec.yLabel = "eigenvalue λ_n (mm², log; model of every walker)";
@@ -203,7 +204,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   if (const auto* r = s.derived.recon()) {
     char nLabel[32];
     std::snprintf(nLabel, sizeof nLabel, "N = %d", r->components);
-    spectrumSpec.markers.push_back({static_cast<double>(r->components), nLabel, toImU32(palette::kCamera)});
+    spectrumSpec.markers.push_back({static_cast<double>(r->components), nLabel, ImGui::ColorConvertFloat4ToU32(goodTextColour())});
   }
   ImGui::SameLine(0.0f, gap);
   drawPlot("##spectrum", ImVec2(halfW, bottomH), spectrumSpec, spectrumSeries, ctx.scale);

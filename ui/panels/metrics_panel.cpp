@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "ui/app/app_state.h"
+#include "ui/app/theme.h"
 
 namespace ew::ui {
 
@@ -105,7 +106,7 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
         std::snprintf(v, sizeof v, "%.1f°", r->alphaUsedDeg);
         std::snprintf(n, sizeof n, "error %.1f°", d->angleErrorDeg);
         metric(s, "est. α  (true α hidden)", v, n, w,
-               d->angleErrorDeg > 10.0 ? ImVec4(1.0f, 0.45f, 0.55f, 1.0f) : ImVec4(0.5f, 0.9f, 0.8f, 1.0f));
+               d->angleErrorDeg > 10.0 ? ImVec4(1.0f, 0.45f, 0.55f, 1.0f) : goodTextColour());
       } else {
         std::snprintf(v, sizeof v, "%.1f°", r->alphaTrueDeg);
         metric(s, "α  known", v, "", w);
