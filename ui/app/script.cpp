@@ -27,7 +27,8 @@ const std::set<std::string>& knownActions() {
       "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame",
       "set_engine", "video_frame", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "track_video",
-      "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab"};
+      "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab",
+      "presentation"};
   // clang-format on
   return names;
 }
@@ -338,6 +339,8 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::exportState(s, text(a));
   } else if (n == "set_theme") {
     actions::setTheme(s, text(a));
+  } else if (n == "presentation") {
+    actions::setPresentation(s, boolean(a));
   } else if (n == "tour") {
     const std::string t = text(a);
     if (t == "start") {
