@@ -28,6 +28,7 @@
 #include "ui/app/layout.h"
 #include "ui/app/screenshot.h"
 #include "ui/app/settings.h"
+#include "ui/app/shortcuts.h"
 #include "ui/app/script.h"
 #include "ui/app/theme.h"
 #include "ui/render/backdrop.h"
@@ -445,33 +446,11 @@ class App {
 
   void handleShortcuts() {
     const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput) return;
-    auto& p = state_.panels;
-    if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) p.help.open = !p.help.open;
-    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
-      if (p.help.open) {
-        p.help.open = false;
-      } else if (p.tour.active) {
-        actions::tourEnd(state_);
-      } else if (state_.view.presentation) {
-        actions::setPresentation(state_, false);
-      }
-    }
-    if (ImGui::IsKeyPressed(GLFW_KEY_F5, false)) actions::setPresentation(state_, !state_.view.presentation);
-    // Space here, not in the playback row: presentation mode has no playback row.
-    if (ImGui::IsKeyPressed(GLFW_KEY_SPACE, false)) state_.view.playback.playing = !state_.view.playback.playing;
-    if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) state_.view.overlays.pointLights = !state_.view.overlays.pointLights;
-    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT, true)) state_.view.playback.step(-1, actions::playbackStrideHz(state_));
-    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT, true)) state_.view.playback.step(1, actions::playbackStrideHz(state_));
-    if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) {
-      const auto& e = p.exports;
-      const std::string stamp = std::to_string(std::chrono::duration_cast<std::chrono::seconds>(
-                                                    std::chrono::system_clock::now().time_since_epoch())
-                                                    .count());
-      actions::requestPng(state_, std::filesystem::path(e.folder.data()) /
-                                      (std::string(e.baseName.data()) + "-" + stamp + ".png"),
-                          CaptureView::Window);
-    }
+    if (io.WantTextInput || io.KeyAlt || io.KeySuper) return;
+    for (const ShortcutRow& row : shortcutRows())
+      for (const KeyBinding& b : row.bindings)
+        if (b.chord.ctrl == io.KeyCtrl && b.chord.shift == io.KeyShift && ImGui::IsKeyPressed(b.chord.key, b.repeats))
+          b.apply(state_);
   }
 
   void updateScale() {
