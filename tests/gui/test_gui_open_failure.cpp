@@ -36,7 +36,8 @@ bool isErrorBanner(int r, int g, int b) {
 
 // The state keys an open that fails may change: the error itself, and the log.
 nlohmann::json withoutErrorKeys(nlohmann::json state) {
-  for (const char* key : {"log", "error", "notice", "failures", "busy"}) state.erase(key);
+  // (and the layout: the notice row moves the views down)
+  for (const char* key : {"log", "error", "notice", "failures", "busy", "layout"}) state.erase(key);
   return state;
 }
 

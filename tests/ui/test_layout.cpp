@@ -77,6 +77,47 @@ TEST(Layout, HoldsAtEveryTeachingSizeAndScale) {
   EXPECT_TRUE(computeLayout(1280, 720, 2.0f).drawer);
 }
 
+// Presentation mode (F5): the two views and the bar under them (and the notice row while it is
+// shown) are all there is; the views fill the width between them, each at least a third of it.
+TEST(Layout, PresentationKeepsOnlyTheViewsAndTheirBar) {
+  const std::pair<float, float> sizes[] = {{1024, 768}, {1280, 720}, {1366, 768}, {1600, 900}, {1920, 1080}, {3840, 2160}};
+  const float scales[] = {1.0f, 1.3f, 1.5f, 1.95f, 2.0f, 2.6f};
+  for (const auto& [w, h] : sizes)
+    for (float scale : scales)
+      for (bool notice : {false, true}) {
+        const std::string cell = std::to_string(static_cast<int>(w)) + "x" + std::to_string(static_cast<int>(h)) +
+                                 " at " + std::to_string(scale) + (notice ? " with the notice row" : "");
+        const Layout l = computePresentationLayout(w, h, scale, notice);
+        EXPECT_TRUE(l.presentation) << cell;
+        EXPECT_FALSE(l.drawer) << cell;
+        std::vector<Named> drawn{{"input", l.input}, {"reconstruction", l.reconstruction}, {"bar", l.presentationBar}};
+        if (notice) drawn.push_back({"notice", l.notice});
+        float area = 0.0f;
+        for (const Named& p : drawn) {
+          EXPECT_GE(p.rect.pos.x, 0.0f) << cell << ": " << p.name;
+          EXPECT_GE(p.rect.pos.y, 0.0f) << cell << ": " << p.name;
+          EXPECT_GT(p.rect.size.y, 0.0f) << cell << ": " << p.name;
+          EXPECT_LE(p.rect.pos.x + p.rect.size.x, w + 0.5f) << cell << ": " << p.name;
+          EXPECT_LE(p.rect.pos.y + p.rect.size.y, h + 0.5f) << cell << ": " << p.name;
+          area += p.rect.size.x * p.rect.size.y;
+        }
+        for (size_t i = 0; i < drawn.size(); ++i)
+          for (size_t j = i + 1; j < drawn.size(); ++j)
+            EXPECT_FALSE(overlap(drawn[i].rect, drawn[j].rect)) << cell << ": " << drawn[i].name << " and "
+                                                                << drawn[j].name;
+        // Nothing else has room, and what is drawn covers the window.
+        EXPECT_NEAR(area, w * h, 1.0f) << cell;
+        for (const PanelRect& hidden : {l.header, l.subjects, l.controls, l.metrics, l.playback, l.coefficients,
+                                        l.jointErrors, l.profile, l.log, l.drawerTabs})
+          EXPECT_EQ(hidden.size.x * hidden.size.y, 0.0f) << cell;
+        for (const PanelRect& view : {l.input, l.reconstruction}) {
+          EXPECT_GE(view.size.x, w / 3.0f) << cell;
+          EXPECT_GE(view.size.y, 0.6f * h) << cell;  // far more than the workspace's 0.35
+        }
+        EXPECT_GE(l.presentationBar.size.x, w - 0.5f) << cell;
+      }
+}
+
 TEST(Layout, TheDrawersTabsWrapOntoMoreRowsWhenNarrow) {
   EXPECT_LT(drawerTabsHeight(700.0f, 1.0f), drawerTabsHeight(400.0f, 1.0f));
   EXPECT_LT(drawerTabsHeight(400.0f, 1.0f), drawerTabsHeight(250.0f, 1.0f));

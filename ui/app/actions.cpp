@@ -1130,6 +1130,11 @@ void exportDataSummary(AppState& s, const std::filesystem::path& path) {
 
 void setTheme(AppState& s, const std::string& name) { s.view.theme = themeFromName(name); }
 
+void setPresentation(AppState& s, bool on) {
+  if (s.view.presentation != on) s.log.info(on ? "Presentation mode (F5 or Esc to leave)" : "Presentation mode ended");
+  s.view.presentation = on;
+}
+
 namespace {
 
 void applyTourStep(AppState& s) {

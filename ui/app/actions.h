@@ -131,6 +131,8 @@ void exportDataSummary(AppState& s, const std::filesystem::path& path);
 
 // [SECTION] Teaching
 void setTheme(AppState& s, const std::string& name);  // dark, light, projector
+// Presentation mode (F5): only the two views, large captions, play / pause and the view angle.
+void setPresentation(AppState& s, bool on);
 // The guided tour (ui/app/tour.h): each step applies its actions through applyAction,
 // exactly as a script would. Next on the last step ends the tour.
 void tourStart(AppState& s);

@@ -28,6 +28,7 @@
 #include "ui/app/layout.h"
 #include "ui/app/screenshot.h"
 #include "ui/app/settings.h"
+#include "ui/app/shortcuts.h"
 #include "ui/app/script.h"
 #include "ui/app/theme.h"
 #include "ui/render/backdrop.h"
@@ -112,6 +113,41 @@ struct FrameStats {
 };
 
 // [SECTION] The application
+
+// Draws with another set of fonts (presentation mode's larger ones) until it goes out of scope:
+// the panels read AppState::fonts and ImGui's current font.
+class ScopedFonts {
+ public:
+  ScopedFonts(AppState& s, const Fonts& fonts) : state_(s), saved_(s.fonts) {
+    s.fonts = fonts;
+    if (fonts.body) ImGui::PushFont(fonts.body);
+  }
+  ~ScopedFonts() {
+    if (state_.fonts.body) ImGui::PopFont();
+    state_.fonts = saved_;
+  }
+  ScopedFonts(const ScopedFonts&) = delete;
+  ScopedFonts& operator=(const ScopedFonts&) = delete;
+
+ private:
+  AppState& state_;
+  Fonts saved_;
+};
+
+// Text drawn `factor` times its size until it goes out of scope (ImGui's global font scale,
+// which windows begun meanwhile take up).
+class ScopedFontScale {
+ public:
+  explicit ScopedFontScale(float factor) : saved_(ImGui::GetIO().FontGlobalScale) {
+    ImGui::GetIO().FontGlobalScale = factor;
+  }
+  ~ScopedFontScale() { ImGui::GetIO().FontGlobalScale = saved_; }
+  ScopedFontScale(const ScopedFontScale&) = delete;
+  ScopedFontScale& operator=(const ScopedFontScale&) = delete;
+
+ private:
+  float saved_;
+};
 
 // EIGENWALKER_PRESENT=swap: show frames by swapping buffers even where copying only the
 // changed rectangles is possible (docs/VIEWER.md, "Frame time").
@@ -410,28 +446,11 @@ class App {
 
   void handleShortcuts() {
     const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput) return;
-    auto& p = state_.panels;
-    if (ImGui::IsKeyPressed(GLFW_KEY_F1, false)) p.help.open = !p.help.open;
-    if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
-      if (p.help.open) {
-        p.help.open = false;
-      } else if (p.tour.active) {
-        actions::tourEnd(state_);
-      }
-    }
-    if (ImGui::IsKeyPressed(GLFW_KEY_P, false)) state_.view.overlays.pointLights = !state_.view.overlays.pointLights;
-    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT, true)) state_.view.playback.step(-1, actions::playbackStrideHz(state_));
-    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT, true)) state_.view.playback.step(1, actions::playbackStrideHz(state_));
-    if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) {
-      const auto& e = p.exports;
-      const std::string stamp = std::to_string(std::chrono::duration_cast<std::chrono::seconds>(
-                                                    std::chrono::system_clock::now().time_since_epoch())
-                                                    .count());
-      actions::requestPng(state_, std::filesystem::path(e.folder.data()) /
-                                      (std::string(e.baseName.data()) + "-" + stamp + ".png"),
-                          CaptureView::Window);
-    }
+    if (io.WantTextInput || io.KeyAlt || io.KeySuper) return;
+    for (const ShortcutRow& row : shortcutRows())
+      for (const KeyBinding& b : row.bindings)
+        if (b.chord.ctrl == io.KeyCtrl && b.chord.shift == io.KeyShift && ImGui::IsKeyPressed(b.chord.key, b.repeats))
+          b.apply(state_);
   }
 
   void updateScale() {
@@ -443,10 +462,97 @@ class App {
     if (scale != themeScale_ || state_.view.theme != appliedTheme_) {
       themeScale_ = scale;
       appliedTheme_ = state_.view.theme;
-      applyTheme(state_.fonts, scale, state_.view.theme);
+      applyTheme(state_.fonts, state_.presentationFonts, scale, state_.view.theme);
       ImGui_ImplOpenGL3_DestroyFontsTexture();
       ImGui_ImplOpenGL3_CreateFontsTexture();
       compositor_.invalidate();  // the same draw lists now sample another texture
+    }
+  }
+
+  // [SECTION] The panels of a frame: the workspace, or presentation mode
+
+  // Notes a panel as drawn this frame (export_state reports the list).
+  void drawn(const char* name) { state_.lastFrame.drawn.emplace_back(name); }
+
+  // The two views, then a wait for their rendering before ImGui composites them: on llvmpipe,
+  // letting it overlap the UI's made the median 1600×900 frame ~25 ms instead of ~17
+  // (measured with --bench-frames; the rasteriser threads and the UI thread share two cores).
+  void drawViews(const Layout& l, const FrameContext& ctx) {
+    auto& p = state_.panels;
+    const auto v0 = std::chrono::steady_clock::now();
+    p.input.draw(state_, ctx, l.input);
+    p.reconstruction.draw(state_, ctx, l.reconstruction);
+    drawn("input");
+    drawn("reconstruction");
+    gl::finish();
+    if (profile_)
+      profile_->views += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - v0).count();
+  }
+
+  void drawWorkspace(const Layout& l, const FrameContext& ctx) {
+    auto& p = state_.panels;
+    // In the drawer layout the side and bottom panels share one place: only the active tab's is drawn.
+    const auto shown = [&](DrawerTab tab) { return !l.drawer || p.drawer.shows(tab); };
+    const auto panel = [&](auto& which, const char* name, const PanelRect& rect) {
+      which.draw(state_, ctx, rect);
+      drawn(name);
+    };
+    panel(p.header, "header", l.header);
+    p.notice.draw(state_, ctx, l.notice);
+    p.drawer.inUse = l.drawer;
+    if (l.drawer) panel(p.drawer, "drawer_tabs", l.drawerTabs);
+    if (shown(DrawerTab::Subjects)) panel(p.subjects, "subjects", l.subjects);
+    if (shown(DrawerTab::Controls)) panel(p.controls, "controls", l.controls);
+    panel(p.metrics, "metrics", l.metrics);
+    drawViews(l, ctx);
+    panel(p.playback, "playback", l.playback);
+    if (shown(DrawerTab::Coefficients)) panel(p.coefficients, "coefficients", l.coefficients);
+    if (shown(DrawerTab::JointErrors)) panel(p.jointErrors, "joint_errors", l.jointErrors);
+    if (shown(DrawerTab::Profile)) panel(p.profile, "profile", l.profile);
+    if (shown(DrawerTab::Log)) panel(p.log, "log", l.log);
+  }
+
+  // The views and the bar in presentation fonts and sizes when the views are wide enough for
+  // them. Narrower views (a large UI scale on a small window) draw their text smaller instead,
+  // so that captions and legends keep clear of the walker.
+  void drawPresentation(const Layout& l, const FrameContext& ctx) {
+    auto& p = state_.panels;
+    p.notice.draw(state_, ctx, l.notice);
+    p.drawer.inUse = false;
+    constexpr float kViewWidth = 360.0f;  // of the scale's pixels, for a caption on one or two lines
+    const float room = l.input.size.x / (kViewWidth * ctx.scale);
+    if (room >= kPresentationTextScale) {
+      const ScopedFonts fonts(state_, state_.presentationFonts);
+      const FrameContext large{ctx.renderer, ctx.backdrop, ctx.scale * kPresentationTextScale, ctx.dtS};
+      drawViews(l, large);
+      p.presentationBar.draw(state_, large, l.presentationBar);
+    } else {
+      const float shrink = std::clamp(room, 0.6f, 1.0f);
+      {
+        const ScopedFontScale smaller(shrink);
+        drawViews(l, {ctx.renderer, ctx.backdrop, ctx.scale * shrink, ctx.dtS});
+      }
+      p.presentationBar.draw(state_, ctx, l.presentationBar);
+    }
+    drawn("presentation_bar");
+  }
+
+  // Floating windows. Presentation mode keeps the tour's card (above the bar), the help, and
+  // the analysis window while the tour shows it.
+  void drawFloating(const Layout& l, const FrameContext& ctx) {
+    auto& p = state_.panels;
+    p.tour.bottom = l.presentation ? l.presentationBar.pos.y : 0.0f;
+    if (!l.presentation) {
+      p.exports.draw(state_, ctx);
+      p.gait.draw(state_, ctx);
+      p.data.draw(state_, ctx);
+    }
+    if (!l.presentation || p.tour.active) p.analysis.draw(state_, ctx);
+    p.tour.draw(state_, ctx);
+    p.help.draw(state_, ctx);
+    if (!l.presentation) {
+      p.header.drawModelMenu(state_, ctx);
+      p.notice.drawDetails(state_, ctx);
     }
   }
 
@@ -458,45 +564,19 @@ class App {
     if (scripted_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
     ImGui::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
-    const Layout l = computeLayout(io.DisplaySize.x, io.DisplaySize.y, themeScale_,
-                                   state_.panels.notice.visible(state_));
+    const bool notice = state_.panels.notice.visible(state_);
+    const Layout l = state_.view.presentation
+                         ? computePresentationLayout(io.DisplaySize.x, io.DisplaySize.y, themeScale_, notice)
+                         : computeLayout(io.DisplaySize.x, io.DisplaySize.y, themeScale_, notice);
+    state_.lastFrame = {l, {}};
     FrameContext ctx{renderer_, backdrop_, themeScale_, dt};
-    auto& p = state_.panels;
     try {
-      // In the drawer layout the side and bottom panels share one place: only the active tab's is drawn.
-      const auto shown = [&](DrawerTab tab) { return !l.drawer || p.drawer.shows(tab); };
-      p.header.draw(state_, ctx, l.header);
-      p.notice.draw(state_, ctx, l.notice);
-      p.drawer.inUse = l.drawer;
-      if (l.drawer) p.drawer.draw(state_, ctx, l.drawerTabs);
-      if (shown(DrawerTab::Subjects)) p.subjects.draw(state_, ctx, l.subjects);
-      if (shown(DrawerTab::Controls)) p.controls.draw(state_, ctx, l.controls);
-      p.metrics.draw(state_, ctx, l.metrics);
-      const auto v0 = std::chrono::steady_clock::now();
-      p.input.draw(state_, ctx, l.input);
-      p.reconstruction.draw(state_, ctx, l.reconstruction);
-      // Wait for the two views before ImGui composites them: on llvmpipe, letting their
-      // rendering overlap the UI's made the median 1600×900 frame ~25 ms instead of ~17
-      // (measured with --bench-frames; the rasteriser threads and the UI thread share
-      // two cores).
-      if (!profile_) gl::finish();
-      if (profile_) {
-        gl::finish();
-        profile_->views += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - v0).count();
+      if (l.presentation) {
+        drawPresentation(l, ctx);
+      } else {
+        drawWorkspace(l, ctx);
       }
-      p.playback.draw(state_, ctx, l.playback);
-      if (shown(DrawerTab::Coefficients)) p.coefficients.draw(state_, ctx, l.coefficients);
-      if (shown(DrawerTab::JointErrors)) p.jointErrors.draw(state_, ctx, l.jointErrors);
-      if (shown(DrawerTab::Profile)) p.profile.draw(state_, ctx, l.profile);
-      if (shown(DrawerTab::Log)) p.log.draw(state_, ctx, l.log);
-      p.exports.draw(state_, ctx);
-      p.analysis.draw(state_, ctx);
-      p.gait.draw(state_, ctx);
-      p.data.draw(state_, ctx);
-      p.tour.draw(state_, ctx);
-      p.help.draw(state_, ctx);
-      p.header.drawModelMenu(state_, ctx);
-      p.notice.drawDetails(state_, ctx);
+      drawFloating(l, ctx);
       handleShortcuts();
     } catch (const std::exception& e) {
       // An action refused its input, or GL failed: say so, keep running.

@@ -33,6 +33,7 @@
 #include "ui/panels/metrics_panel.h"
 #include "ui/panels/notice_panel.h"
 #include "ui/panels/playback_panel.h"
+#include "ui/panels/presentation_bar.h"
 #include "ui/panels/profile_panel.h"
 #include "ui/panels/reconstruction_view_panel.h"
 #include "ui/panels/subjects_panel.h"
@@ -115,6 +116,16 @@ struct Fonts {
   ImFont* small = nullptr;   // view annotations
 };
 
+// Presentation mode's text, this much larger than the workspace's, for a room to read.
+inline constexpr float kPresentationTextScale = 1.4f;
+
+// What the last frame laid out and which panels it drew (export_state reports it, so that
+// tests see what is on screen without reading pixels).
+struct FrameRecord {
+  Layout layout;
+  std::vector<std::string> drawn;  // "header", "input", "presentation_bar", …
+};
+
 struct Panels {
   HeaderPanel header;
   SubjectsPanel subjects;
@@ -135,6 +146,7 @@ struct Panels {
   DataPanel data;
   HelpPanel help;
   DrawerPanel drawer;
+  PresentationBar presentationBar;
 };
 
 struct AppState {
@@ -154,7 +166,9 @@ struct AppState {
   std::optional<VideoSession> video;               // the video open (Mode::Clip shows it)
   Log log;
   Fonts fonts;
+  Fonts presentationFonts;  // the same, kPresentationTextScale larger
   Panels panels;
+  FrameRecord lastFrame;
   std::vector<std::filesystem::path> recentPaths;  // opened successfully, newest first (≤ 10)
   bool quitRequested = false;
   std::uint64_t frame = 0;

@@ -109,6 +109,7 @@ struct Overlays {
   bool trails = true;            // 2D: each point-light's path over the cycle
   bool pointLights = false;      // point-light display: joints as dots only, no skeleton,
                                  // trails, ghost or error lines (Johansson 1973)
+  bool operator==(const Overlays&) const = default;
 };
 
 // Dark (default), light (UI panels light, the views stay dark so point-lights show), or
@@ -133,6 +134,9 @@ struct ViewState {
   Theme theme = Theme::Dark;
   float uiScale = 1.0f;       // user setting, times the monitor's content scale
   float contentScale = 1.0f;  // from the monitor
+  // Presentation mode (F5): only the two views and the presentation bar. Never saved: every
+  // run starts in the workspace.
+  bool presentation = false;
 };
 
 }  // namespace ew::ui

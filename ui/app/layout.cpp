@@ -73,6 +73,23 @@ Layout drawerLayout(float width, float height, float scale, const Rows& r) {
 
 float noticeRowHeight(float scale) { return 34.0f * scale; }
 
+float presentationBarHeight(float scale) { return 60.0f * scale; }
+
+Layout computePresentationLayout(float width, float height, float scale, bool noticeRow) {
+  Layout l;
+  l.presentation = true;
+  const float noticeH = noticeRow ? noticeRowHeight(scale) : 0.0f;
+  // The bar never takes more than an eighth of a short window (a large scale on 1280×720).
+  const float barH = std::min(presentationBarHeight(scale), 0.12f * height);
+  const float viewsH = std::max(60.0f, height - noticeH - barH);
+  const float halfW = width * 0.5f;
+  l.notice = {{0, 0}, {width, noticeH}};
+  l.input = {{0, noticeH}, {halfW, viewsH}};
+  l.reconstruction = {{halfW, noticeH}, {width - halfW, viewsH}};
+  l.presentationBar = {{0, noticeH + viewsH}, {width, height - noticeH - viewsH}};
+  return l;
+}
+
 float drawerTabsHeight(float drawerWidth, float scale) {
   // The six labels take about 560 px of the scale's on one row (the body font, button padding).
   const float logical = drawerWidth / scale;

@@ -16,6 +16,11 @@
 //   tabs   |
 //   drawer | 2D input | 3D view
 //          | playback
+// Presentation mode (F5; computePresentationLayout) keeps only the two views, side by side
+// over the whole width, and a bar under them with play / pause and the view angle:
+//   notice (only while shown)
+//   2D input | 3D view
+//   presentation bar
 
 #include <array>
 
@@ -35,11 +40,18 @@ struct Layout {
       coefficients, jointErrors, profile, log;
   bool drawer = false;    // the side and bottom panels share `drawerBody`, one at a time
   PanelRect drawerTabs;   // the tab row above it (drawer only)
+  bool presentation = false;  // only the views, `notice` and `presentationBar` are drawn
+  PanelRect presentationBar;  // play / pause and the view angle (presentation only)
 };
 
 // `noticeRow`: a row under the header for the error / warning notice, so that it covers
 // nothing at any window size (the views move down by its height).
 Layout computeLayout(float width, float height, float scale, bool noticeRow = false);
+// Presentation mode: the two views fill the window above the presentation bar; every other
+// rectangle is empty.
+Layout computePresentationLayout(float width, float height, float scale, bool noticeRow = false);
+// The presentation bar's height at `scale` (tall enough for the view-angle dial).
+float presentationBarHeight(float scale);
 // The notice row's height at `scale`.
 float noticeRowHeight(float scale);
 // The drawer's tab rows' height for a drawer `drawerWidth` wide at `scale`: a narrow drawer

@@ -9,6 +9,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/app/shortcuts.h"
 
 namespace ew::ui {
 
@@ -28,7 +29,7 @@ const std::set<std::string>& knownActions() {
       "set_engine", "video_frame", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "track_video",
       "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab",
-      "set_semantic"};
+      "set_semantic", "presentation", "key"};
   // clang-format on
   return names;
 }
@@ -346,6 +347,12 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::exportState(s, text(a));
   } else if (n == "set_theme") {
     actions::setTheme(s, text(a));
+  } else if (n == "presentation") {
+    actions::setPresentation(s, boolean(a));
+  } else if (n == "key") {
+    const auto chord = parseKeyChord(text(a));
+    if (!chord || !applyShortcut(s, *chord))
+      throw std::invalid_argument("no key \"" + text(a) + "\" (the keys: docs/VIEWER.md, \"Keyboard\")");
   } else if (n == "tour") {
     const std::string t = text(a);
     if (t == "start") {

@@ -251,6 +251,20 @@ nlohmann::json gaitJson(const AppState& s) {
           {"reconstruction_error", p.recon().error}, {"columns", columns}, {"status", p.status}};
 }
 
+nlohmann::json rectJson(const PanelRect& r) { return {r.pos.x, r.pos.y, r.size.x, r.size.y}; }
+
+// What the last frame laid out ([x, y, width, height] in pixels) and drew.
+nlohmann::json layoutJson(const FrameRecord& f) {
+  const Layout& l = f.layout;
+  return {{"presentation", l.presentation},
+          {"drawer", l.drawer},
+          {"drawn", f.drawn},
+          {"input", rectJson(l.input)},
+          {"reconstruction", rectJson(l.reconstruction)},
+          {"presentation_bar", rectJson(l.presentationBar)},
+          {"header", rectJson(l.header)}};
+}
+
 }  // namespace
 
 nlohmann::json stateJson(const AppState& s) {
@@ -285,7 +299,9 @@ nlohmann::json stateJson(const AppState& s) {
                 {{"yaw_deg", v.camera.yawDeg},
                  {"pitch_deg", v.camera.pitchDeg},
                  {"distance_mm", v.camera.distanceMm}}},
-               {"point_lights", v.overlays.pointLights}};
+               {"point_lights", v.overlays.pointLights},
+               {"presentation", v.presentation}};
+  j["layout"] = layoutJson(s.lastFrame);
   // The drawer layout (small window or large scale): the tab shown; null in the full layout.
   j["view"]["drawer"] = s.panels.drawer.inUse ? nlohmann::json(drawerTabName(s.panels.drawer.active)) : nlohmann::json();
   j["busy"] = s.busy();

@@ -148,14 +148,19 @@ ImVec4 goodTextColour() {
   return light ? ImVec4(0.0f, 0.45f, 0.38f, 1.0f) : ImVec4(0.5f, 0.9f, 0.8f, 1.0f);
 }
 
-void applyTheme(Fonts& fonts, float scale, Theme theme) {
-  ImGuiIO& io = ImGui::GetIO();
-  io.Fonts->Clear();
+static void addFonts(ImFontAtlas& atlas, Fonts& fonts, float scale) {
   const auto regular = findFont("DejaVuSans.ttf");
   const auto bold = findFont("DejaVuSans-Bold.ttf");
-  fonts.body = addFont(*io.Fonts, regular, 16.0f * scale);
-  fonts.large = addFont(*io.Fonts, bold.empty() ? regular : bold, 21.0f * scale);
-  fonts.small = addFont(*io.Fonts, regular, 13.5f * scale);
+  fonts.body = addFont(atlas, regular, 16.0f * scale);
+  fonts.large = addFont(atlas, bold.empty() ? regular : bold, 21.0f * scale);
+  fonts.small = addFont(atlas, regular, 13.5f * scale);
+}
+
+void applyTheme(Fonts& fonts, Fonts& presentation, float scale, Theme theme) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  addFonts(*io.Fonts, fonts, scale);
+  addFonts(*io.Fonts, presentation, scale * kPresentationTextScale);
   io.FontDefault = fonts.body;
   io.Fonts->Build();
 

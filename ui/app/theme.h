@@ -13,7 +13,9 @@ namespace ew::ui {
 // Rebuilds the font atlas and the style for `scale` (which already includes the projector
 // factor) and the theme's colours. Call between frames; the renderer backend's font
 // texture must be recreated afterwards (the app does).
-void applyTheme(Fonts& fonts, float scale, Theme theme = Theme::Dark);
+// `presentation` gets the same fonts kPresentationTextScale times larger (the views' captions
+// and the bar in presentation mode).
+void applyTheme(Fonts& fonts, Fonts& presentation, float scale, Theme theme = Theme::Dark);
 
 // "dark", "light", "projector"; throws std::invalid_argument for anything else.
 Theme themeFromName(const std::string& name);

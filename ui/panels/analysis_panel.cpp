@@ -43,7 +43,8 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   if (s.panels.tour.active && s.panels.tour.lastHeight > 0.0f) {
     // During the tour: between the header and the tour's window.
-    const float top = 52.0f * ctx.scale, bottom = display.y - s.panels.tour.lastHeight - 28.0f * ctx.scale;
+    const float tourBottom = s.panels.tour.bottom > 0.0f ? s.panels.tour.bottom : display.y;
+    const float top = 52.0f * ctx.scale, bottom = tourBottom - s.panels.tour.lastHeight - 28.0f * ctx.scale;
     ImGui::SetNextWindowSize(ImVec2(display.x * 0.62f, std::max(200.0f, bottom - top)), ImGuiCond_Always);
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, top), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
   } else {

@@ -159,7 +159,7 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
     // scale): the buttons are what the header is for.
     const ImGuiStyle& style = ImGui::GetStyle();
     float buttonsW = 0.0f;
-    for (const char* b : {"Open…", "Model…", "Export…", "Analysis", "Gait", "Tour", "?"})
+    for (const char* b : {"Open…", "Model…", "Export…", "Analysis", "Gait", "Tour", "Present", "?"})
       buttonsW += ImGui::CalcTextSize(b).x + 2.0f * style.FramePadding.x + style.ItemSpacing.x;
     if (s.fonts.large) ImGui::PushFont(s.fonts.large);
     const bool named = ImGui::CalcTextSize("Eigenwalker").x + 18.0f * ctx.scale + buttonsW <=
@@ -190,6 +190,9 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
         actions::tourStart(s);
       }
     }
+    ImGui::SameLine();
+    if (ImGui::Button("Present")) actions::setPresentation(s, true);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Presentation mode: only the two views, large captions (F5)");
     ImGui::SameLine();
     if (ImGui::Button("?")) s.panels.help.open = !s.panels.help.open;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keyboard and mouse (F1)");

@@ -2,9 +2,11 @@
 
 #include <imgui.h>
 
-#include <iterator>
+#include <algorithm>
+#include <span>
 
 #include "ui/app/app_state.h"
+#include "ui/app/shortcuts.h"
 
 namespace ew::ui {
 
@@ -15,15 +17,6 @@ struct Shortcut {
   const char* what;
 };
 
-constexpr Shortcut kKeys[] = {
-    {"Space", "play / pause"},
-    {"← / →", "step the gait phase by one 1/60 s frame"},
-    {"P", "point-light display on / off (dots only)"},
-    {"F1", "this help"},
-    {"F12", "save a PNG of the window (Export… sets the folder)"},
-    {"Esc", "close this help / end the tour"},
-};
-
 constexpr Shortcut kMouse[] = {
     {"drag (3D view)", "orbit the camera"},
     {"right- or middle-drag", "pan"},
@@ -32,16 +25,19 @@ constexpr Shortcut kMouse[] = {
     {"hover a plot", "read the values at the cursor"},
 };
 
-void table(const char* id, const Shortcut* rows, int n, float keyWidth) {
+template <class Row>
+void table(const char* id, std::span<const Row> rows, float keyWidth) {
   if (ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_PadOuterX)) {
     ImGui::TableSetupColumn("key", ImGuiTableColumnFlags_WidthFixed, keyWidth);
     ImGui::TableSetupColumn("action", ImGuiTableColumnFlags_WidthStretch);
-    for (int i = 0; i < n; ++i) {
+    for (const Row& row : rows) {
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextColored(ImVec4(1.0f, 0.62f, 0.26f, 1.0f), "%s", rows[i].keys);
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + keyWidth);
+      ImGui::TextColored(ImVec4(1.0f, 0.62f, 0.26f, 1.0f), "%s", row.keys);
+      ImGui::PopTextWrapPos();
       ImGui::TableNextColumn();
-      ImGui::TextUnformatted(rows[i].what);
+      ImGui::TextWrapped("%s", row.what);
     }
     ImGui::EndTable();
   }
@@ -53,7 +49,9 @@ void HelpPanel::draw(AppState& s, const FrameContext& ctx) {
   if (!open) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(600.0f * ctx.scale, 0.0f), ImGuiCond_Always);
+  // As wide as the keys' names need, and no taller than the window: the rest scrolls.
+  const float width = std::min(680.0f * ctx.scale, 0.96f * display.x);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, 0.92f * display.y));
   ImGui::SetNextWindowBgAlpha(1.0f);
   if (ImGui::Begin("Keyboard and mouse (F1)", &open,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize |
@@ -61,12 +59,13 @@ void HelpPanel::draw(AppState& s, const FrameContext& ctx) {
     if (s.fonts.large) ImGui::PushFont(s.fonts.large);
     ImGui::TextUnformatted("Keyboard");
     if (s.fonts.large) ImGui::PopFont();
-    table("keys", kKeys, static_cast<int>(std::size(kKeys)), 190.0f * ctx.scale);
+    // Every key, from the table the frame loop answers them from (ui/app/shortcuts.h).
+    table("keys", shortcutRows(), 0.36f * width);
     ImGui::Spacing();
     if (s.fonts.large) ImGui::PushFont(s.fonts.large);
     ImGui::TextUnformatted("Mouse");
     if (s.fonts.large) ImGui::PopFont();
-    table("mouse", kMouse, static_cast<int>(std::size(kMouse)), 190.0f * ctx.scale);
+    table("mouse", std::span<const Shortcut>(kMouse), 0.36f * width);
     ImGui::Spacing();
     ImGui::TextDisabled("Header: Export… (PNG, video, CSV, BVH, model) · Analysis · Tour");
   }

@@ -32,7 +32,7 @@ std::string spokenJoint(Joint j) {
 
 void drawPrompt(ImDrawList* dl, ImFont* font, ImVec2 p0, ImVec2 size, const std::string& text,
                 float scale) {
-  const float fontSize = font ? font->FontSize : ImGui::GetFontSize();
+  const float fontSize = font ? font->FontSize * ImGui::GetIO().FontGlobalScale : ImGui::GetFontSize();
   const ImVec2 ts = font ? font->CalcTextSizeA(fontSize, size.x, 0.0f, text.c_str())
                          : ImGui::CalcTextSize(text.c_str());
   const float pad = 8.0f * scale;

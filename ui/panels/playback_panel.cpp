@@ -10,7 +10,6 @@ namespace ew::ui {
 void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   auto& p = s.view.playback;
   const double strideHz = actions::playbackStrideHz(s);
-  if (!ImGui::GetIO().WantTextInput && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) p.playing = !p.playing;
   if (beginPanel(ctx.backdrop, "##playback", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
     const float bw = 36.0f * ctx.scale;
     if (ImGui::Button("|<", ImVec2(bw, 0))) p.step(-1, strideHz);

@@ -48,12 +48,18 @@ float strideLengthMm(const AppState& s) {
 // The depth-error colour bar at the top right, under the caption, kept clear of the legend: in
 // a small view it is shortened to end above the legend, or left out when too little is left
 // (the metrics strip and the joint-error panel still give the errors).
-void drawColourBarClearOf(ImDrawList* dl, const ImRect& legend, ImVec2 p0, ImVec2 p1, ImVec2 size, float errorScale,
-                          float scale) {
+void drawColourBarClearOf(ImDrawList* dl, const ImRect& caption, const ImRect& legend, ImVec2 p0, ImVec2 p1,
+                          ImVec2 size, float errorScale, float scale, bool presentation) {
   const char* title = "depth error (RMS)";
-  const float pad = 10.0f * scale, top = p0.y + 78.0f * scale;
+  const float pad = 10.0f * scale;
   const float plateW = std::max(14.0f * scale + ImGui::CalcTextSize("000 mm").x + 24.0f * scale,
                                 ImGui::CalcTextSize(title).x + 16.0f * scale);
+  // Presentation mode has no metrics strip to point at instead: there a plate that would cover
+  // half a narrow view is left out rather than hide the walker.
+  if (presentation && plateW > 0.45f * size.x) return;
+  // Under the caption when a wide one (large text, a narrow view) reaches over to the bar.
+  float top = p0.y + 78.0f * scale;
+  if (caption.Max.x > p1.x - pad - plateW) top = std::max(top, caption.Max.y + pad);
   const float chrome = ImGui::GetTextLineHeight() + 24.0f * scale;  // title and padding around the bar
   float height = std::min(200.0f * scale, size.y * 0.35f);
   if (legend.Max.x > p1.x - pad - plateW) height = std::min(height, legend.Min.y - pad - top - chrome);
@@ -238,8 +244,9 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       if (reconstruct && r && s.doc.compareEngines)
         std::snprintf(sub, sizeof sub, "compare: the three engines %s α = %.1f°",
                       s.doc.recon.unknownAngle ? "with α unknown, true" : "at the known", r->alphaTrueDeg);
-      drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), reconstruct ? "3D reconstruction" : "Gait space",
-                  sub, s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
+      const ImRect captionRect =
+          drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), reconstruct ? "3D reconstruction" : "Gait space", sub,
+                      s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
       std::vector<LegendItem> legend;
       std::deque<std::string> legendLabels;  // the items point into it: a deque never moves them
       if (o.pointLights) {
@@ -276,7 +283,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       }
       const ImRect legendRect = drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale, size.x);
       if (reconstruct && d && o.depthErrorColour && !o.pointLights && !s.doc.compareEngines)
-        drawColourBarClearOf(dl, legendRect, p0, p1, size, errorScale, ctx.scale);
+        drawColourBarClearOf(dl, captionRect, legendRect, p0, p1, size, errorScale, ctx.scale, s.view.presentation);
       }
       if (!drawn) {
         const char* msg = clipMode && s.video && !s.doc.clip

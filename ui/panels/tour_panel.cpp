@@ -21,7 +21,7 @@ void TourPanel::draw(AppState& s, const FrameContext& ctx) {
   const float w = std::min(display.x * 0.46f, 760.0f * ctx.scale);
   ImGui::SetNextWindowSize(ImVec2(w, 0.0f), ImGuiCond_Always);
   const float margin = 16.0f * ctx.scale;
-  const float y = display.y - margin;
+  const float y = (bottom > 0.0f ? bottom : display.y) - margin;
   switch (st.anchor) {
     case TourAnchor::BottomCentre:
       ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, y), ImGuiCond_Always, ImVec2(0.5f, 1.0f));

@@ -13,6 +13,7 @@ struct TourPanel {
   bool active = false;
   int step = 0;  // 0-based
   float lastHeight = 0.0f;  // of the window last frame (the analysis window stays above it)
+  float bottom = 0.0f;      // the card sits above this y (the app sets it; 0: the window's bottom)
 
   void draw(AppState& s, const FrameContext& ctx);
 };

@@ -8,7 +8,31 @@
 
 namespace ew::ui {
 
-void drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
+namespace {
+
+// `text` with its spaces turned into line breaks where a line would pass `width`: ImGui's own
+// wrapping also breaks after a full stop, which cut "α = 30.0°" in two.
+std::string wrapAtSpaces(const ImFont* font, float size, const std::string& text, float width) {
+  std::string out, line;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t space = std::min(text.find(' ', start), text.size());
+    const std::string word = text.substr(start, space - start);
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (!line.empty() && font->CalcTextSizeA(size, 1e9f, 0.0f, longer.c_str()).x > width) {
+      out += line + "\n";
+      line = word;
+    } else {
+      line = longer;
+    }
+    start = space + 1;
+  }
+  return out + line;
+}
+
+}  // namespace
+
+ImRect drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
                  ImFont* titleFont, float scale, ImVec2 viewSize) {
   const float maxWidth = viewSize.x;
   // A narrow view (a small window, a large UI scale) gets the caption in smaller type: it
@@ -16,21 +40,24 @@ void drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std:
   const bool narrow = maxWidth < 330.0f * scale;
   ImFont* font = titleFont && !narrow ? titleFont : ImGui::GetFont();
   ImFont* body = ImGui::GetFont();
-  const float titleSize = narrow ? ImGui::GetFontSize() * 1.1f : font->FontSize;
+  // (× FontGlobalScale: presentation mode draws narrow views' text smaller with it.)
+  const float titleSize = narrow ? ImGui::GetFontSize() * 1.1f : font->FontSize * ImGui::GetIO().FontGlobalScale;
   const float bodySize = ImGui::GetFontSize() * (narrow ? 0.8f : 1.0f);
   const float pad = 8.0f * scale;
   const float wrap = std::max(40.0f * scale, maxWidth - 2 * pad);  // whole words onto the next line
-  const ImVec2 t = font->CalcTextSizeA(titleSize, 1e9f, wrap, title.c_str());
-  ImVec2 s = body->CalcTextSizeA(bodySize, 1e9f, wrap, subtitle.c_str());
+  const std::string titleLines = wrapAtSpaces(font, titleSize, title, wrap);
+  const std::string subtitleLines = wrapAtSpaces(body, bodySize, subtitle, wrap);
+  const ImVec2 t = font->CalcTextSizeA(titleSize, 1e9f, 0.0f, titleLines.c_str());
+  ImVec2 s = body->CalcTextSizeA(bodySize, 1e9f, 0.0f, subtitleLines.c_str());
   const bool withSubtitle = t.y + s.y + 2 * pad <= 0.3f * viewSize.y;
   if (!withSubtitle) s = ImVec2(0.0f, 0.0f);
   const ImVec2 plate{std::max(t.x, s.x) + 2 * pad, t.y + s.y + 2 * pad + 2.0f * scale};
   dl->AddRectFilled(at, ImVec2(at.x + plate.x, at.y + plate.y), IM_COL32(10, 12, 16, 150), 6.0f * scale);
-  dl->AddText(font, titleSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(235, 238, 245, 255), title.c_str(), nullptr,
-              wrap);
+  dl->AddText(font, titleSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(235, 238, 245, 255), titleLines.c_str());
   if (withSubtitle)
     dl->AddText(body, bodySize, ImVec2(at.x + pad, at.y + pad + t.y + 2.0f * scale), IM_COL32(150, 160, 175, 255),
-                subtitle.c_str(), nullptr, wrap);
+                subtitleLines.c_str());
+  return {at, ImVec2(at.x + plate.x, at.y + plate.y)};
 }
 
 ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale,

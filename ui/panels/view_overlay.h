@@ -21,8 +21,9 @@ struct LegendItem {
 
 // Caption at the top-left corner, on a translucent plate.
 // In a view `viewSize` big its lines wrap between words, and the subtitle is left out when
-// the caption would take more than 0.3 of the view's height (it would meet the legend).
-void drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
+// the caption would take more than 0.3 of the view's height (it would meet the legend). The
+// plate's rectangle is returned (the colour bar keeps clear of it).
+ImRect drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
                  ImFont* titleFont, float scale, ImVec2 viewSize = {1e9f, 1e9f});
 // Legend rows, bottom-left corner upwards; the plate's rectangle is returned (so other
 // overlays can keep clear of it). In a view `viewWidth` wide, a legend wider than 0.55 of it

@@ -1,0 +1,55 @@
+#include "ui/panels/presentation_bar.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+#include "ui/widgets/angle_dial.h"
+
+namespace ew::ui {
+
+namespace {
+
+// A button as tall as the row, so that it can be hit from the back of a lecture hall too.
+bool rowButton(const char* label, float width, float height) { return ImGui::Button(label, ImVec2(width, height)); }
+
+void drawAngle(AppState& s, float rowH, float sliderW) {
+  double alpha = s.doc.recon.alphaDeg;
+  if (angleDial("##alpha_dial", alpha, 0.5f * rowH)) actions::setAngle(s, alpha);
+  ImGui::SameLine();
+  float slider = static_cast<float>(s.doc.recon.alphaDeg);
+  ImGui::SetNextItemWidth(sliderW);
+  const float framePad = std::max(0.0f, 0.5f * (rowH - ImGui::GetFontSize()));
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, framePad));
+  if (ImGui::SliderFloat("##alpha", &slider, -180.0f, 180.0f,
+                         "α = %.0f°", ImGuiSliderFlags_AlwaysClamp))
+    actions::setAngle(s, std::round(slider));
+  ImGui::PopStyleVar();
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("view angle of the 2D input ([ ] ±1°, Shift ±15°)");
+}
+
+}  // namespace
+
+void PresentationBar::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
+  if (beginPanel(ctx.backdrop, "##presentation_bar", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float rowH = std::max(ImGui::GetFrameHeight(), ImGui::GetContentRegionAvail().y);
+    auto& p = s.view.playback;
+    if (rowButton(p.playing ? "||##play" : ">##play", 1.6f * rowH, rowH)) p.playing = !p.playing;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("play / pause (space)");
+    ImGui::SameLine(0.0f, 2.0f * style.ItemSpacing.x);
+    const char* leave = "Leave (F5)";
+    const float leaveW = ImGui::CalcTextSize(leave).x + 2.0f * style.FramePadding.x;
+    // The dial and the slider take what the buttons leave; the slider stops at a readable length.
+    const float sliderW = std::min(ImGui::GetContentRegionAvail().x - rowH - leaveW - 4.0f * style.ItemSpacing.x,
+                                   900.0f * ctx.scale);
+    drawAngle(s, rowH, std::max(80.0f * ctx.scale, sliderW));
+    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - leaveW);
+    if (rowButton(leave, leaveW, rowH)) actions::setPresentation(s, false);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the panels (F5 or Esc)");
+  }
+  ImGui::End();
+}
+
+}  // namespace ew::ui
