@@ -27,10 +27,21 @@ void placeCentre(Layout& l, float x, float width, float top, float height, const
   l.playback = {{x, viewsY + viewsH}, {width, r.playback}};
 }
 
+// The side columns' narrowest (the subjects table's three columns, the coefficients' sliders).
+constexpr float kMinSideW = 230.0f, kMinRightW = 220.0f;
+
 Layout fullLayout(float width, float height, float scale, const Rows& r) {
   Layout l;
-  const float sideW = std::clamp(width * 0.19f, 250.0f * scale, 360.0f * scale);
-  const float rightW = std::clamp(width * 0.18f, 240.0f * scale, 340.0f * scale);
+  float sideW = std::clamp(width * 0.19f, 250.0f * scale, 360.0f * scale);
+  float rightW = std::clamp(width * 0.18f, 240.0f * scale, 340.0f * scale);
+  // The two views keep two thirds of the width: the columns give up what they must, down to
+  // their narrowest (below that `fits` sends the panels to the drawer).
+  const float excess = sideW + rightW - width / 3.0f;
+  if (excess > 0.0f) {
+    const float sideShare = sideW / (sideW + rightW);
+    sideW = std::max(kMinSideW * scale, sideW - excess * sideShare);
+    rightW = std::max(kMinRightW * scale, rightW - excess * (1.0f - sideShare));
+  }
   const float centreW = std::max(100.0f, width - sideW - rightW);
   const float bodyY = r.header + r.notice;
   const float bodyH = height - bodyY;
@@ -47,16 +58,16 @@ Layout fullLayout(float width, float height, float scale, const Rows& r) {
   return l;
 }
 
+// Each view at least a third of the width (half a pixel of rounding allowed) and 0.35 of the height.
 bool fits(const Layout& l, float width, float height) {
-  return l.input.size.x + l.reconstruction.size.x >= 0.5f * width && l.input.size.y >= 0.35f * height;
+  return l.input.size.x + l.reconstruction.size.x >= 2.0f * width / 3.0f - 0.5f && l.input.size.y >= 0.35f * height;
 }
 
 Layout drawerLayout(float width, float height, float scale, const Rows& r) {
   Layout l;
   l.drawer = true;
-  // A third of the width (the views keep two thirds), at least 200 px of the scale's when
-  // that still leaves the views half.
-  const float drawerW = std::min(std::max(width / 3.0f, std::min(200.0f * scale, width * 0.5f)), width * 0.5f);
+  // A third of the width: the views keep two thirds, a third each, whatever the scale.
+  const float drawerW = width / 3.0f;
   // The notice row heads the drawer's column, not the whole width: the views keep its height.
   l.notice = {{0, r.header}, {drawerW, r.notice}};
   const float bodyY = r.header + r.notice;

@@ -7,7 +7,8 @@
 //   controls | 2D input | 3D view       |
 //            | playback                 |
 //            | joint errors | J(α) | log |
-// When it does not — the side columns would leave the views less than half the width, or
+// The side columns narrow (down to 230 and 220 px of the scale's) so that the views keep two
+// thirds of the width. When they cannot — the views would get less than a third each, or
 // the bottom row would leave them less than 0.35 of the height (a small window, or a large
 // UI scale: 1280×720 at scale 2) — the six side and bottom panels share one column, a
 // drawer, one at a time under a row of tabs, and the views take the rest:
