@@ -29,6 +29,7 @@
 #include "ui/app/screenshot.h"
 #include "ui/app/settings.h"
 #include "ui/app/shortcuts.h"
+#include "ui/app/undo.h"
 #include "ui/app/script.h"
 #include "ui/app/theme.h"
 #include "ui/render/backdrop.h"
@@ -453,6 +454,16 @@ class App {
           b.apply(state_);
   }
 
+  // A change is one undo step once it has settled: no control held by the mouse (a slider being
+  // dragged), no repeating key down (] held to sweep α).
+  bool parametersSettled() const {
+    if (ImGui::IsAnyItemActive()) return false;
+    for (const ShortcutRow& row : shortcutRows())
+      for (const KeyBinding& b : row.bindings)
+        if (b.repeats && ImGui::IsKeyDown(b.chord.key)) return false;
+    return true;
+  }
+
   void updateScale() {
     float xs = 1.0f, ys = 1.0f;
     glfwGetWindowContentScale(window_.get(), &xs, &ys);
@@ -578,6 +589,7 @@ class App {
       }
       drawFloating(l, ctx);
       handleShortcuts();
+      state_.history.observe(captureParameters(state_), captureParameterContext(state_), parametersSettled());
     } catch (const std::exception& e) {
       // An action refused its input, or GL failed: say so, keep running.
       ImGui::ErrorCheckEndFrameRecover(nullptr);
