@@ -500,6 +500,12 @@ class App {
       profile_->views += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - v0).count();
   }
 
+  // The notice row, when the layout gave it room (an error or warning is shown).
+  void drawNotice(const Layout& l, const FrameContext& ctx) {
+    state_.panels.notice.draw(state_, ctx, l.notice);
+    if (l.notice.size.y > 0.0f) drawn("notice");
+  }
+
   void drawWorkspace(const Layout& l, const FrameContext& ctx) {
     auto& p = state_.panels;
     // In the drawer layout the side and bottom panels share one place: only the active tab's is drawn.
@@ -509,7 +515,7 @@ class App {
       drawn(name);
     };
     panel(p.header, "header", l.header);
-    p.notice.draw(state_, ctx, l.notice);
+    drawNotice(l, ctx);
     p.drawer.inUse = l.drawer;
     if (l.drawer) panel(p.drawer, "drawer_tabs", l.drawerTabs);
     if (shown(DrawerTab::Subjects)) panel(p.subjects, "subjects", l.subjects);
@@ -528,7 +534,7 @@ class App {
   // so that captions and legends keep clear of the walker.
   void drawPresentation(const Layout& l, const FrameContext& ctx) {
     auto& p = state_.panels;
-    p.notice.draw(state_, ctx, l.notice);
+    drawNotice(l, ctx);
     p.drawer.inUse = false;
     constexpr float kViewWidth = 360.0f;  // of the scale's pixels, for a caption on one or two lines
     const float room = l.input.size.x / (kViewWidth * ctx.scale);

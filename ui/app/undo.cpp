@@ -26,7 +26,9 @@ ParameterContext captureParameterContext(const AppState& s) {
 
 void restoreParameters(AppState& s, const Parameters& p) {
   Document& d = s.doc;
-  d.walker = std::clamp(p.walker, 0, std::max(0, d.walkerCount() - 1));
+  const int walker = std::clamp(p.walker, 0, std::max(0, d.walkerCount() - 1));
+  if (walker != d.walker) s.panels.subjects.scrollToSelection = true;  // bring it into the list's view
+  d.walker = walker;
   d.mode = p.mode == Mode::Clip && !d.clip && !s.video ? Mode::Reconstruct : p.mode;
   const double sigma2 = d.recon.sigma2Mm2;
   d.recon = p.recon;
