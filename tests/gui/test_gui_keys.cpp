@@ -58,6 +58,48 @@ TEST_F(GuiKeys, KeysChangeTheAngleMethodWalkerAndPresentation) {
   EXPECT_FALSE(load("help.png").empty());
 }
 
+// Ctrl+Z takes back a change of α and of the estimator, one step each; Ctrl+Shift+Z and
+// Ctrl+Y bring them back; the header's buttons (script "undo") do the same.
+TEST_F(GuiKeys, UndoRestoresTheAngleAndMethodAndRedoReappliesThem) {
+  const auto d = dir.string();
+  const auto state = [&d](const char* name) { return R"({"export_state": ")" + d + "/" + name + R"(.json"})"; };
+  const auto script = writeScript(dir, R"([
+    {"select_subject": "SYN005"}, {"set_angle": 30}, {"set_method": "map"},
+    {"set_angle": 40}, {"set_method": "lsq"}, {"key": "]"},
+    )" + state("changed") + R"(,
+    {"key": "ctrl+z"}, )" + state("undo1") + R"(,
+    {"key": "ctrl+z"}, )" + state("undo2") + R"(,
+    {"undo": null}, )" + state("undo3") + R"(,
+    {"key": "ctrl+shift+z"}, )" + state("redo1") + R"(,
+    {"key": "ctrl+y"}, {"redo": null}, )" + state("redo3") + R"(,
+    {"set_angle": 50}, {"undo": null}, )" + state("branch") + R"(,
+    {"wait_frames": 2}, {"play": false}, )" + state("settled") + R"(
+  ])");
+  const RunResult r = runViewer(dir, "--size 1600x900 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto at = [this](const char* name) { return readJson(dir / (std::string(name) + ".json")); };
+  const auto alpha = [&at](const char* name) { return at(name)["angle_deg"].get<double>(); };
+  const auto method = [&at](const char* name) { return at(name)["method"].get<std::string>(); };
+  EXPECT_DOUBLE_EQ(alpha("changed"), 41.0);
+  EXPECT_EQ(method("changed"), "lsq");
+  EXPECT_DOUBLE_EQ(alpha("undo1"), 40.0);  // the ] press
+  EXPECT_EQ(method("undo1"), "lsq");
+  EXPECT_DOUBLE_EQ(alpha("undo2"), 40.0);  // the method
+  EXPECT_EQ(method("undo2"), "map");
+  EXPECT_DOUBLE_EQ(alpha("undo3"), 30.0);  // the angle
+  EXPECT_EQ(method("undo3"), "map");
+  EXPECT_DOUBLE_EQ(alpha("redo1"), 40.0);
+  EXPECT_EQ(method("redo1"), "map");
+  EXPECT_DOUBLE_EQ(alpha("redo3"), 41.0);
+  EXPECT_EQ(method("redo3"), "lsq");
+  EXPECT_EQ(at("redo3")["undo"]["redo_steps"], 0);
+  // A change after an undo: the undo takes it back, and nothing older is redone.
+  EXPECT_DOUBLE_EQ(alpha("branch"), 41.0);
+  EXPECT_EQ(at("branch")["undo"]["redo_steps"], 1);
+  // Frames that change nothing add no steps.
+  EXPECT_EQ(at("settled")["undo"]["steps"], at("branch")["undo"]["steps"]);
+}
+
 TEST_F(GuiKeys, AKeyNobodyBoundIsAScriptError) {
   const auto script = writeScript(dir, R"([{"key": "ctrl+q"}])");
   const RunResult r = runViewer(dir, "--size 800x600 --script " + quote(script.string()));

@@ -52,6 +52,22 @@ TEST_F(GuiSettings, PersistBetweenRuns) {
   EXPECT_EQ(j.at("overlays").at("grid"), false);
 }
 
+// Presentation mode is for the session: left on at exit, the next run starts without it.
+TEST_F(GuiSettings, PresentationModeIsNotSaved) {
+  auto script = writeScript(dir, R"([{"presentation": true}, {"wait_frames": 1}])");
+  RunResult r = runViewer(dir, "--size 800x600 --script " + quote(script.string()), env());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  ASSERT_TRUE(std::filesystem::exists(file())) << r.err;
+  EXPECT_EQ(readAll(file()).find("presentation"), std::string::npos) << readAll(file());
+  const auto state = (dir / "state.json").string();
+  script = writeScript(dir, R"([{"wait_frames": 1}, {"export_state": ")" + state + R"("}])");
+  r = runViewer(dir, "--size 800x600 --script " + quote(script.string()), env());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(readAll(state));
+  EXPECT_FALSE(j["view"]["presentation"].get<bool>());
+  EXPECT_FALSE(j["layout"]["presentation"].get<bool>());
+}
+
 TEST_F(GuiSettings, BrokenFileIsAWarningAndNoSettingsWritesNothing) {
   std::filesystem::create_directories(file().parent_path());
   std::ofstream(file()) << "{ not json";

@@ -63,6 +63,33 @@ class GuiVideo : public GuiTest {
   std::string path(const std::string& name) const { return (dir / name).string(); }
 };
 
+// While the joints are being marked, Ctrl+Z and Ctrl+Shift+Z undo and redo the keyframe edits
+// (as the marking panel's buttons do), not the settings.
+TEST_F(GuiVideo, WhileMarkingCtrlZUndoesTheKeyframes) {
+  const Footage f = writeWalkingFootage(dir);
+  const json script = json::array({
+      {{"open", json::array({f.video.string(), f.keyframes.string()})}},
+      {{"video_frame", 30}},
+      {{"start_marking", true}},
+      {{"mark_joints", {{"head", {10.0, 10.0}}}}},
+      {{"export_state", path("marked.json")}},
+      {{"key", "ctrl+z"}},
+      {{"export_state", path("undone.json")}},
+      {{"key", "ctrl+shift+z"}},
+      {{"export_state", path("redone.json")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json marked = state("marked.json")["video"], undone = state("undone.json")["video"];
+  const json redone = state("redone.json")["video"];
+  ASSERT_TRUE(marked.is_object());
+  EXPECT_EQ(undone["undo_steps"].get<int>(), marked["undo_steps"].get<int>() - 1);
+  EXPECT_EQ(undone["redo_steps"], 1);
+  EXPECT_EQ(undone["keyframes"].size() + 1, marked["keyframes"].size()) << "frame 30 was a new keyframe";
+  EXPECT_EQ(redone["keyframes"], marked["keyframes"]);
+}
+
 TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
   const Footage f = writeWalkingFootage(dir);
   ASSERT_GE(f.truthPx.rows(), 90) << "three gait cycles at 30 fps";

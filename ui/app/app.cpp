@@ -29,6 +29,7 @@
 #include "ui/app/screenshot.h"
 #include "ui/app/settings.h"
 #include "ui/app/shortcuts.h"
+#include "ui/app/undo.h"
 #include "ui/app/script.h"
 #include "ui/app/theme.h"
 #include "ui/render/backdrop.h"
@@ -453,6 +454,16 @@ class App {
           b.apply(state_);
   }
 
+  // A change is one undo step once it has settled: no control held by the mouse (a slider being
+  // dragged), no repeating key down (] held to sweep α).
+  bool parametersSettled() const {
+    if (ImGui::IsAnyItemActive()) return false;
+    for (const ShortcutRow& row : shortcutRows())
+      for (const KeyBinding& b : row.bindings)
+        if (b.repeats && ImGui::IsKeyDown(b.chord.key)) return false;
+    return true;
+  }
+
   void updateScale() {
     float xs = 1.0f, ys = 1.0f;
     glfwGetWindowContentScale(window_.get(), &xs, &ys);
@@ -489,6 +500,12 @@ class App {
       profile_->views += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - v0).count();
   }
 
+  // The notice row, when the layout gave it room (an error or warning is shown).
+  void drawNotice(const Layout& l, const FrameContext& ctx) {
+    state_.panels.notice.draw(state_, ctx, l.notice);
+    if (l.notice.size.y > 0.0f) drawn("notice");
+  }
+
   void drawWorkspace(const Layout& l, const FrameContext& ctx) {
     auto& p = state_.panels;
     // In the drawer layout the side and bottom panels share one place: only the active tab's is drawn.
@@ -498,7 +515,7 @@ class App {
       drawn(name);
     };
     panel(p.header, "header", l.header);
-    p.notice.draw(state_, ctx, l.notice);
+    drawNotice(l, ctx);
     p.drawer.inUse = l.drawer;
     if (l.drawer) panel(p.drawer, "drawer_tabs", l.drawerTabs);
     if (shown(DrawerTab::Subjects)) panel(p.subjects, "subjects", l.subjects);
@@ -517,7 +534,7 @@ class App {
   // so that captions and legends keep clear of the walker.
   void drawPresentation(const Layout& l, const FrameContext& ctx) {
     auto& p = state_.panels;
-    p.notice.draw(state_, ctx, l.notice);
+    drawNotice(l, ctx);
     p.drawer.inUse = false;
     constexpr float kViewWidth = 360.0f;  // of the scale's pixels, for a caption on one or two lines
     const float room = l.input.size.x / (kViewWidth * ctx.scale);
@@ -578,6 +595,7 @@ class App {
       }
       drawFloating(l, ctx);
       handleShortcuts();
+      state_.history.observe(captureParameters(state_), captureParameterContext(state_), parametersSettled());
     } catch (const std::exception& e) {
       // An action refused its input, or GL failed: say so, keep running.
       ImGui::ErrorCheckEndFrameRecover(nullptr);

@@ -17,6 +17,7 @@
 #include "ui/app/document.h"
 #include "ui/app/export.h"
 #include "ui/app/log.h"
+#include "ui/app/undo.h"
 #include "ui/app/video.h"
 #include "ui/panels/analysis_panel.h"
 #include "ui/panels/coefficients_panel.h"
@@ -157,6 +158,7 @@ struct AppState {
 
   Document doc;
   ViewState view;
+  ParameterHistory history;  // undo / redo of the parameters (ui/app/undo.h)
   Derived derived;
   Jobs jobs;
   Exports exports;

@@ -10,6 +10,7 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/shortcuts.h"
+#include "ui/app/undo.h"
 
 namespace ew::ui {
 
@@ -29,7 +30,7 @@ const std::set<std::string>& knownActions() {
       "set_engine", "video_frame", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "track_video",
       "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab",
-      "set_semantic", "presentation", "key"};
+      "set_semantic", "presentation", "key", "undo", "redo"};
   // clang-format on
   return names;
 }
@@ -349,6 +350,10 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::setTheme(s, text(a));
   } else if (n == "presentation") {
     actions::setPresentation(s, boolean(a));
+  } else if (n == "undo") {
+    undo(s);
+  } else if (n == "redo") {
+    redo(s);
   } else if (n == "key") {
     const auto chord = parseKeyChord(text(a));
     if (!chord || !applyShortcut(s, *chord))
@@ -544,6 +549,8 @@ void ScriptRunner::step(AppState& s) {
       return;
     }
     s.log.info("script: " + a.name + " " + a.argument.dump());
+    // Each action its own undo step, as each click is (the frame loop would merge a frame's).
+    s.history.observe(captureParameters(s), captureParameterContext(s), true);
     if (a.name == "open" || a.name == "drop" || a.name == "reload" || a.name == "expect_failure" ||
         a.name == "write_joint_mapping" || a.name == "wait_frames" || a.name == "screenshot" || a.name == "set_clip" ||
         a.name == "export_png" || a.name == "export_video")

@@ -11,6 +11,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/app/undo.h"
 
 namespace ew::ui {
 
@@ -75,6 +76,7 @@ void escape(AppState& s) {
 
 KeyBinding key(int k, void (*apply)(AppState&), bool repeats = false) { return {{k, false, false}, repeats, apply}; }
 KeyBinding shifted(int k, void (*apply)(AppState&), bool repeats = false) { return {{k, false, true}, repeats, apply}; }
+KeyBinding ctrl(int k, void (*apply)(AppState&), bool shift = false) { return {{k, true, shift}, true, apply}; }
 
 // [SECTION] The table (the F1 overlay's rows, in its order)
 
@@ -111,6 +113,10 @@ std::vector<ShortcutRow> makeRows() {
         key(GLFW_KEY_4, [](AppState& s) { actions::setCamera(s, "three_quarter"); })}},
       {"P", "point-light display on / off (dots only)",
        {key(GLFW_KEY_P, [](AppState& s) { s.view.overlays.pointLights = !s.view.overlays.pointLights; })}},
+      {"Ctrl+Z", "undo the last change of a setting (marking a video's joints: of the keyframes)",
+       {ctrl(GLFW_KEY_Z, [](AppState& s) { undo(s); })}},
+      {"Ctrl+Shift+Z / Ctrl+Y", "redo",
+       {ctrl(GLFW_KEY_Z, [](AppState& s) { redo(s); }, true), ctrl(GLFW_KEY_Y, [](AppState& s) { redo(s); })}},
       {"F5", "presentation mode: only the two views, large captions",
        {key(GLFW_KEY_F5, [](AppState& s) { actions::setPresentation(s, !s.view.presentation); })}},
       {"F1", "this help", {key(GLFW_KEY_F1, [](AppState& s) { s.panels.help.open = !s.panels.help.open; })}},

@@ -302,6 +302,7 @@ nlohmann::json stateJson(const AppState& s) {
                {"point_lights", v.overlays.pointLights},
                {"presentation", v.presentation}};
   j["layout"] = layoutJson(s.lastFrame);
+  j["undo"] = {{"steps", s.history.undoSteps()}, {"redo_steps", s.history.redoSteps()}};
   // The drawer layout (small window or large scale): the tab shown; null in the full layout.
   j["view"]["drawer"] = s.panels.drawer.inUse ? nlohmann::json(drawerTabName(s.panels.drawer.active)) : nlohmann::json();
   j["busy"] = s.busy();

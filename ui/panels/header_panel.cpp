@@ -9,6 +9,7 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/held_model.h"
+#include "ui/app/undo.h"
 #include "ui/widgets/text_fit.h"
 
 namespace ew::ui {
@@ -85,6 +86,19 @@ void modelChoice(AppState& s, const char* label, bool selected, bool enabled,
   if (!enabled) ImGui::EndDisabled();
 }
 
+// Undo and redo of the settings (Ctrl+Z, Ctrl+Shift+Z), greyed when there is nothing to step to.
+void drawUndoButtons(AppState& s) {
+  ImGui::BeginDisabled(!canUndo(s));
+  if (ImGui::Button("↶")) undo(s);
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Undo the last change (Ctrl+Z)");
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!canRedo(s));
+  if (ImGui::Button("↷")) redo(s);
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Redo (Ctrl+Shift+Z or Ctrl+Y)");
+}
+
 }  // namespace
 
 std::vector<std::string> clipLines(const ClipResult& c) {
@@ -159,7 +173,7 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
     // scale): the buttons are what the header is for.
     const ImGuiStyle& style = ImGui::GetStyle();
     float buttonsW = 0.0f;
-    for (const char* b : {"Open…", "Model…", "Export…", "Analysis", "Gait", "Tour", "Present", "?"})
+    for (const char* b : {"Open…", "Model…", "Export…", "Analysis", "Gait", "Tour", "Present", "↶", "↷", "?"})
       buttonsW += ImGui::CalcTextSize(b).x + 2.0f * style.FramePadding.x + style.ItemSpacing.x;
     if (s.fonts.large) ImGui::PushFont(s.fonts.large);
     const bool named = ImGui::CalcTextSize("Eigenwalker").x + 18.0f * ctx.scale + buttonsW <=
@@ -193,6 +207,8 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
     ImGui::SameLine();
     if (ImGui::Button("Present")) actions::setPresentation(s, true);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Presentation mode: only the two views, large captions (F5)");
+    ImGui::SameLine();
+    drawUndoButtons(s);
     ImGui::SameLine();
     if (ImGui::Button("?")) s.panels.help.open = !s.panels.help.open;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keyboard and mouse (F1)");

@@ -22,6 +22,7 @@ constexpr Shortcut kMouse[] = {
     {"right- or middle-drag", "pan"},
     {"wheel", "zoom"},
     {"double-click", "reset the camera"},
+    {"the α dial (F5)", "click or drag: the camera of the 2D view, seen from above"},
     {"hover a plot", "read the values at the cursor"},
 };
 

@@ -55,8 +55,8 @@ void drawColourBarClearOf(ImDrawList* dl, const ImRect& caption, const ImRect& l
   const float plateW = std::max(14.0f * scale + ImGui::CalcTextSize("000 mm").x + 24.0f * scale,
                                 ImGui::CalcTextSize(title).x + 16.0f * scale);
   // Presentation mode has no metrics strip to point at instead: there a plate that would cover
-  // half a narrow view is left out rather than hide the walker.
-  if (presentation && plateW > 0.45f * size.x) return;
+  // 0.4 of a narrow view is left out rather than hide the walker.
+  if (presentation && plateW > 0.4f * size.x) return;
   // Under the caption when a wide one (large text, a narrow view) reaches over to the bar.
   float top = p0.y + 78.0f * scale;
   if (caption.Max.x > p1.x - pad - plateW) top = std::max(top, caption.Max.y + pad);

@@ -1,0 +1,124 @@
+#include "ui/app/undo.h"
+
+#include <algorithm>
+
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+
+namespace ew::ui {
+
+// [SECTION] The parameters, out of and back into the state
+
+Parameters captureParameters(const AppState& s) {
+  const Document& d = s.doc;
+  Parameters p{d.walker,   d.mode,           d.recon,        d.sigma2Chosen,   d.exploreSd,
+               d.editedSd, d.compareEngines, d.compareShown, s.view.overlays};
+  // σ² that follows the model is no choice of the user's: another model changes it by itself.
+  if (!d.sigma2Chosen) p.recon.sigma2Mm2 = 0.0;
+  return p;
+}
+
+ParameterContext captureParameterContext(const AppState& s) {
+  const Document& d = s.doc;
+  const std::string clip = s.video ? s.video->path.string() : d.clip ? d.clip->path.string() : std::string();
+  return {d.generation, d.modelSource, d.modelFile, d.inspected.get(), clip};
+}
+
+void restoreParameters(AppState& s, const Parameters& p) {
+  Document& d = s.doc;
+  const int walker = std::clamp(p.walker, 0, std::max(0, d.walkerCount() - 1));
+  if (walker != d.walker) s.panels.subjects.scrollToSelection = true;  // bring it into the list's view
+  d.walker = walker;
+  d.mode = p.mode == Mode::Clip && !d.clip && !s.video ? Mode::Reconstruct : p.mode;
+  const double sigma2 = d.recon.sigma2Mm2;
+  d.recon = p.recon;
+  d.sigma2Chosen = p.sigma2Chosen;
+  if (!p.sigma2Chosen) {
+    d.recon.sigma2Mm2 = sigma2;
+    actions::followModelSigma2(s);  // before the coefficients: it clears edits when σ² moves
+  }
+  d.exploreSd = p.exploreSd;
+  d.editedSd = p.editedSd;
+  d.compareEngines = p.compareEngines;
+  d.compareShown = p.compareShown;
+  s.view.overlays = p.overlays;
+}
+
+// [SECTION] The history
+
+void ParameterHistory::observe(const Parameters& now, const ParameterContext& context, bool settled) {
+  if (context_ != context) {
+    context_ = context;
+    undo_.clear();
+    redo_.clear();
+    current_ = now;
+    return;
+  }
+  if (settled && current_ != now) record(now);
+}
+
+void ParameterHistory::record(const Parameters& now) {
+  if (current_) {
+    undo_.push_back(*current_);
+    if (undo_.size() > kMaxSteps) undo_.erase(undo_.begin());
+  }
+  current_ = now;
+  redo_.clear();
+}
+
+std::optional<Parameters> ParameterHistory::undo(const Parameters& now) {
+  if (current_ != now) record(now);
+  if (undo_.empty()) return std::nullopt;
+  redo_.push_back(*current_);
+  current_ = undo_.back();
+  undo_.pop_back();
+  return current_;
+}
+
+std::optional<Parameters> ParameterHistory::redo(const Parameters& now) {
+  if (current_ != now) record(now);  // a change since the undo: nothing is left to redo
+  if (redo_.empty()) return std::nullopt;
+  undo_.push_back(*current_);
+  current_ = redo_.back();
+  redo_.pop_back();
+  return current_;
+}
+
+// [SECTION] The app's undo and redo
+
+namespace {
+
+bool marking(const AppState& s) { return s.video && s.video->marking && s.doc.mode == Mode::Clip; }
+
+// The history brought up to date (a load just finished: a new context) before stepping in it.
+void observeSettled(AppState& s) { s.history.observe(captureParameters(s), captureParameterContext(s), true); }
+
+}  // namespace
+
+void undo(AppState& s) {
+  if (marking(s)) {
+    if (!s.video->undo.empty()) actions::undoKeyframes(s);
+    return;
+  }
+  observeSettled(s);
+  if (const auto p = s.history.undo(captureParameters(s))) restoreParameters(s, *p);
+}
+
+void redo(AppState& s) {
+  if (marking(s)) {
+    if (!s.video->redo.empty()) actions::redoKeyframes(s);
+    return;
+  }
+  observeSettled(s);
+  if (const auto p = s.history.redo(captureParameters(s))) restoreParameters(s, *p);
+}
+
+bool canUndo(const AppState& s) {
+  return marking(s) ? !s.video->undo.empty() : s.history.undoSteps() > 0;
+}
+
+bool canRedo(const AppState& s) {
+  return marking(s) ? !s.video->redo.empty() : s.history.redoSteps() > 0;
+}
+
+}  // namespace ew::ui

@@ -1,0 +1,85 @@
+#pragma once
+// Undo and redo of the parameters the user chooses (docs/VIEWER.md "Undo"): the walker, the
+// mode, α, the estimator, σ², N, unknown α, the engine, compare mode, the coefficient sliders
+// and the overlays. Not the data, the models or anything derived (those follow from the
+// parameters), not the camera or playback, and not a video's keyframes (their own undo:
+// ui/app/video.h).
+//
+// The frame loop shows the history the parameters after every frame (observe): a change is
+// recorded once it has settled — no control held by the mouse, no repeating key down — so a
+// slider dragged over many frames is one step. A new load, another model or another clip
+// starts a new history: walker indices and coefficient counts of the old one mean nothing
+// for the new.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ui/app/document.h"
+
+namespace ew::ui {
+
+struct AppState;
+
+struct Parameters {
+  int walker = 0;
+  Mode mode = Mode::Reconstruct;
+  ReconstructionSettings recon;  // σ² is 0 unless chosen: it follows the model otherwise
+  bool sigma2Chosen = false;
+  std::vector<double> exploreSd, editedSd;
+  bool compareEngines = false;
+  std::array<bool, 3> compareShown{true, true, true};
+  Overlays overlays;
+  bool operator==(const Parameters&) const = default;
+};
+
+// What the walker indices and coefficient vectors refer to.
+struct ParameterContext {
+  std::uint64_t generation = 0;
+  ModelSource modelSource = ModelSource::Population;
+  int modelFile = 0;
+  const void* inspected = nullptr;  // the population of walkers opened to inspect
+  std::string clip;                 // the keypoint clip or video open ("" none)
+  bool operator==(const ParameterContext&) const = default;
+};
+
+Parameters captureParameters(const AppState& s);
+ParameterContext captureParameterContext(const AppState& s);
+// Puts `p` back (σ² following the model again when it was then).
+void restoreParameters(AppState& s, const Parameters& p);
+
+class ParameterHistory {
+ public:
+  static constexpr std::size_t kMaxSteps = 200;
+
+  // Once a frame: records `now` as a step when it differs from the last recorded and has
+  // `settled`; a new context clears the history.
+  void observe(const Parameters& now, const ParameterContext& context, bool settled);
+  // The parameters to restore, or nothing when there is no step. `now` first records what
+  // has not settled yet, so an undo always goes back from what is shown.
+  std::optional<Parameters> undo(const Parameters& now);
+  std::optional<Parameters> redo(const Parameters& now);
+
+  std::size_t undoSteps() const { return undo_.size(); }
+  std::size_t redoSteps() const { return redo_.size(); }
+
+ private:
+  void record(const Parameters& now);
+
+  std::vector<Parameters> undo_, redo_;  // oldest first
+  std::optional<Parameters> current_;    // the last recorded
+  std::optional<ParameterContext> context_;
+};
+
+// The app's undo and redo (Ctrl+Z, Ctrl+Shift+Z / Ctrl+Y, the header's buttons): while the
+// video's joints are being marked they undo the keyframe edits instead, as the marking
+// panel's own buttons do.
+void undo(AppState& s);
+void redo(AppState& s);
+bool canUndo(const AppState& s);
+bool canRedo(const AppState& s);
+
+}  // namespace ew::ui
