@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iostream>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <sstream>
@@ -109,6 +110,16 @@ struct Region {
 // that small layout changes do not move them out.
 inline constexpr Region kInputView{0.23, 0.22, 0.47, 0.64};
 inline constexpr Region kReconView{0.54, 0.22, 0.78, 0.64};
+
+// The inside of a view ("input" or "reconstruction") as the viewer laid it out, from the
+// state's `layout` (export_state) of a window width × height: inset from its sides, below its
+// caption and above its legend, as kInputView and kReconView are in the full layout. For
+// windows whose layout is not the full one (the drawer at 1024×768).
+inline Region viewRegion(const nlohmann::json& state, const char* view, double width, double height) {
+  const auto& r = state.at("layout").at(view);
+  const double x = r[0].get<double>(), y = r[1].get<double>(), w = r[2].get<double>(), h = r[3].get<double>();
+  return {(x + 0.12 * w) / width, (y + 0.17 * h) / height, (x + 0.88 * w) / width, (y + 0.85 * h) / height};
+}
 
 inline cv::Mat crop(const cv::Mat& image, Region r) {
   const int x0 = static_cast<int>(r.x0 * image.cols), x1 = static_cast<int>(r.x1 * image.cols);

@@ -118,7 +118,7 @@ void expectRepaintsMatchAFullRedraw(const std::filesystem::path& dir, const std:
     {"overlay": ["ghost", false]}, {"wait_frames": 2}
   ])");
   const RunResult r =
-      runViewer(dir, "--size 1280x720 --check-repaint --script " + quote(script.string()), env);
+      runViewer(dir, "--size 1366x768 --check-repaint --script " + quote(script.string()), env);
   EXPECT_EQ(r.exitCode, 0) << r.err;
   std::smatch m;
   const std::regex summary(R"(repaint check: (\d+) frames, (\d+) of them repainted in part, (\d+) differ)");

@@ -147,6 +147,9 @@ TEST_F(GuiTeaching, SemanticAxesMoveTheWalkerAndReadAttributesFromTheView) {
     {"export_state": ")" + d + R"(/mean.json"},
     {"set_semantic": {"attribute": "speed_mps", "value": 1.75}},
     {"export_state": ")" + d + R"(/fast.json"},
+    {"undo": null},
+    {"export_state": ")" + d + R"(/undone.json"},
+    {"redo": null},
     {"expect_failure": {"set_semantic": {"attribute": "wingspan", "value": 2}}},
     {"play": false},
     {"screenshot": ")" + d + R"(/explore.png"}
@@ -169,6 +172,10 @@ TEST_F(GuiTeaching, SemanticAxesMoveTheWalkerAndReadAttributesFromTheView) {
   EXPECT_GT(axis(fast, "speed_mps")["loo_r2"].get<double>(), 0.7);
   EXPECT_GT(fast["semantic"]["explore_stride_hz"].get<double>(), mean["semantic"]["explore_stride_hz"].get<double>());
   EXPECT_GT(axis(fast, "measured_speed_mps")["reading"].get<double>(), axis(mean, "measured_speed_mps")["reading"].get<double>() + 0.1);
+  // Undo takes the move back, coefficients and stride frequency both.
+  const auto undone = nlohmann::json::parse(readAll(dir / "undone.json"));
+  EXPECT_DOUBLE_EQ(axis(undone, "speed_mps")["reading"].get<double>(), r0);
+  EXPECT_DOUBLE_EQ(undone["semantic"]["explore_stride_hz"].get<double>(), mean["semantic"]["explore_stride_hz"].get<double>());
 
   const auto recon = nlohmann::json::parse(readAll(dir / "recon.json"));
   bool height = false;

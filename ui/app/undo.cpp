@@ -12,7 +12,7 @@ namespace ew::ui {
 Parameters captureParameters(const AppState& s) {
   const Document& d = s.doc;
   Parameters p{d.walker,   d.mode,           d.recon,        d.sigma2Chosen,   d.exploreSd,
-               d.editedSd, d.compareEngines, d.compareShown, s.view.overlays};
+               d.editedSd, d.compareEngines, d.compareShown, s.view.overlays, d.exploreOmegaOffsetRadS};
   // σ² that follows the model is no choice of the user's: another model changes it by itself.
   if (!d.sigma2Chosen) p.recon.sigma2Mm2 = 0.0;
   return p;
@@ -38,6 +38,7 @@ void restoreParameters(AppState& s, const Parameters& p) {
     actions::followModelSigma2(s);  // before the coefficients: it clears edits when σ² moves
   }
   d.exploreSd = p.exploreSd;
+  d.exploreOmegaOffsetRadS = p.exploreOmegaOffsetRadS;
   d.editedSd = p.editedSd;
   d.compareEngines = p.compareEngines;
   d.compareShown = p.compareShown;

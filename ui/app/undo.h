@@ -33,6 +33,7 @@ struct Parameters {
   bool compareEngines = false;
   std::array<bool, 3> compareShown{true, true, true};
   Overlays overlays;
+  double exploreOmegaOffsetRadS = 0.0;  // a semantic axis moves the explorer's stride too
   bool operator==(const Parameters&) const = default;
 };
 
