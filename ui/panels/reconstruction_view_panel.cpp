@@ -47,13 +47,17 @@ float strideLengthMm(const AppState& s) {
 // The clip's 3D view: where the estimated camera stands, and what is estimated.
 // The depth-error colour bar at the top right, under the caption, kept clear of the legend: in
 // a small view it is shortened to end above the legend, or left out when too little is left
-// (the metrics strip and the joint-error panel still give the errors).
+// (the metrics strip and the joint-error panel still give the errors); in a narrow one its
+// title shortens so that the plate stays at the view's edge.
 void drawColourBarClearOf(ImDrawList* dl, const ImRect& caption, const ImRect& legend, ImVec2 p0, ImVec2 p1,
                           ImVec2 size, float errorScale, float scale, bool presentation) {
-  const char* title = "depth error (RMS)";
   const float pad = 10.0f * scale;
-  const float plateW = std::max(14.0f * scale + ImGui::CalcTextSize("000 mm").x + 24.0f * scale,
-                                ImGui::CalcTextSize(title).x + 16.0f * scale);
+  const float barW = 14.0f * scale + ImGui::CalcTextSize("000 mm").x + 24.0f * scale;
+  // A narrow view (1024×768's drawer layout) gets a plate as narrow as its scale, titled
+  // "RMS", which keeps clear of the walker in the middle of the view.
+  const char* title = ImGui::CalcTextSize("depth error (RMS)").x + 16.0f * scale > 0.3f * size.x ? "RMS"
+                                                                                               : "depth error (RMS)";
+  const float plateW = std::max(barW, ImGui::CalcTextSize(title).x + 16.0f * scale);
   // Presentation mode has no metrics strip to point at instead: there a plate that would cover
   // 0.4 of a narrow view is left out rather than hide the walker.
   if (presentation && plateW > 0.4f * size.x) return;
