@@ -76,6 +76,12 @@ std::string lowerCase(std::string s) {
   return s;
 }
 
+// How tables write "no value": such a cell is unknown for that walker, not a class of its own.
+bool isMissing(const std::string& cell) {
+  const std::string c = lowerCase(cell);
+  return c.empty() || c == "nan" || c == "na" || c == "n/a" || c == "-" || c == "?" || c == "null";
+}
+
 // "F" → "female", "m" → "male"; other class names as they are.
 std::string classWord(const std::string& cls) {
   const std::string c = lowerCase(cls);
@@ -168,7 +174,7 @@ std::variant<WalkerAttribute, std::string> manifestAttribute(const std::string& 
   bool allNumbers = true;
   for (const Walker& w : walkers) {
     const auto it = w.attributes.find(name);
-    text.push_back(it == w.attributes.end() ? "" : it->second);
+    text.push_back(it == w.attributes.end() || isMissing(it->second) ? "" : it->second);
     if (text.back().empty()) continue;
     ++classCounts[text.back()];
     if (std::isnan(parseNumber(text.back()))) allNumbers = false;

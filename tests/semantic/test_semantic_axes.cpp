@@ -119,7 +119,8 @@ TEST(SemanticAxes, ManifestColumnsBecomeNumericOrTwoClassAttributes) {
   const std::vector<std::string> sex{"F", "M", "F", "M", "M", "F"};
   const std::vector<std::string> group{"a", "b", "c", "a", "b", "c"};
   for (size_t i = 0; i < walkers.size(); ++i) {
-    walkers[i].attributes = {{"sex", sex[i]}, {"group", group[i]}, {"site", "lab"}, {"mass_kg", std::to_string(60 + i)}};
+    walkers[i].attributes = {{"sex", sex[i]}, {"group", group[i]}, {"site", "lab"},
+                             {"mass_kg", i == 2 ? "NaN" : std::to_string(60 + i)}};
     if (i == 0) walkers[i].attributes["odd"] = "x";
     if (i > 0) walkers[i].attributes["odd"] = "y";
   }
@@ -134,6 +135,8 @@ TEST(SemanticAxes, ManifestColumnsBecomeNumericOrTwoClassAttributes) {
   ASSERT_NE(mass, nullptr);
   EXPECT_FALSE(mass->categorical);
   EXPECT_EQ(mass->highWord, "heavier");
+  EXPECT_TRUE(std::isnan(mass->values[2]));  // "NaN" is no value, not a class
+  EXPECT_EQ(mass->known(), 5);
   EXPECT_EQ(table.find("group"), nullptr);
   EXPECT_EQ(table.find("site"), nullptr);
   EXPECT_EQ(table.find("odd"), nullptr);
