@@ -126,6 +126,9 @@ TEST(Layout, TheDrawersTabsWrapOntoMoreRowsWhenNarrow) {
   EXPECT_LT(drawerTabsHeight(700.0f, 1.0f), drawerTabsHeight(400.0f, 1.0f));
   EXPECT_LT(drawerTabsHeight(400.0f, 1.0f), drawerTabsHeight(250.0f, 1.0f));
   EXPECT_FLOAT_EQ(drawerTabsHeight(800.0f, 2.0f), 2.0f * drawerTabsHeight(400.0f, 1.0f));
+  // 1024×768 at scale 2: a drawer of 341 px holds the tabs on five rows (Subjects, Controls,
+  // Coefficients, Errors and View, Log), as the drawer panel wraps them.
+  EXPECT_FLOAT_EQ(drawerTabsHeight(1024.0f / 3.0f, 2.0f), (5 * 30.0f + 14.0f) * 2.0f);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "ui/app/layout.h"
 
 #include <algorithm>
+#include <string_view>
 
 namespace ew::ui {
 
@@ -72,7 +73,10 @@ Layout drawerLayout(float width, float height, float scale, const Rows& r) {
   l.notice = {{0, r.header}, {drawerW, r.notice}};
   const float bodyY = r.header + r.notice;
   const float bodyH = height - bodyY;
-  const float tabsH = std::min(drawerTabsHeight(drawerW, scale), bodyH * 0.45f);
+  // Tab rows that would take more than 0.45 of the height give way to one row with a list of
+  // the panels (the drawer panel draws a combo box when its rows do not fit).
+  float tabsH = drawerTabsHeight(drawerW, scale);
+  if (tabsH > bodyH * 0.45f) tabsH = std::min(drawerComboHeight(scale), bodyH * 0.45f);
   l.drawerTabs = {{0, bodyY}, {drawerW, tabsH}};
   const PanelRect body{{0, bodyY + tabsH}, {drawerW, bodyH - tabsH}};
   l.subjects = l.controls = l.coefficients = l.jointErrors = l.profile = l.log = body;
@@ -101,10 +105,23 @@ Layout computePresentationLayout(float width, float height, float scale, bool no
   return l;
 }
 
+float drawerComboHeight(float scale) { return 44.0f * scale; }
+
 float drawerTabsHeight(float drawerWidth, float scale) {
-  // The six labels take about 560 px of the scale's on one row (the body font, button padding).
-  const float logical = drawerWidth / scale;
-  const int rows = logical >= 560.0f ? 1 : logical >= 330.0f ? 2 : logical >= 200.0f ? 3 : 4;
+  // The tabs wrap as the drawer panel places them: each button is its label (about 7.6 px of
+  // the scale's per character in the body font) plus 16 px of padding, 8 px apart, in the
+  // drawer's width less 16 px of window padding. Rows of 30 px, plus 14 px around them.
+  const float available = drawerWidth / scale - 16.0f;
+  int rows = 1;
+  float x = 0.0f;
+  for (DrawerTab tab : kDrawerTabs) {
+    const float w = 7.6f * static_cast<float>(std::string_view(drawerTabName(tab)).size()) + 16.0f;
+    if (x > 0.0f && x + 8.0f + w > available) {
+      ++rows;
+      x = 0.0f;
+    }
+    x += (x > 0.0f ? 8.0f : 0.0f) + w;
+  }
   return (30.0f * static_cast<float>(rows) + 14.0f) * scale;
 }
 

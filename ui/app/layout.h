@@ -56,7 +56,9 @@ float presentationBarHeight(float scale);
 // The notice row's height at `scale`.
 float noticeRowHeight(float scale);
 // The drawer's tab rows' height for a drawer `drawerWidth` wide at `scale`: a narrow drawer
-// wraps its six tabs onto two or three rows.
+// wraps its six tabs onto as many rows as the drawer panel will (up to six).
 float drawerTabsHeight(float drawerWidth, float scale);
+// The one row that replaces the tabs when they would take more than 0.45 of the height.
+float drawerComboHeight(float scale);
 
 }  // namespace ew::ui

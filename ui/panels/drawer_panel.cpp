@@ -12,7 +12,18 @@ namespace ew::ui {
 
 void DrawerPanel::draw(AppState& /*s*/, const FrameContext& ctx, const PanelRect& rect) {
   if (beginPanel(ctx.backdrop, "##drawer_tabs", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
-    // Tabs wrap onto a second row when the drawer is narrow.
+    // Tabs wrap onto more rows when the drawer is narrow; when the layout gave them too little
+    // height for their rows (a narrow drawer at a large scale), a list of the panels instead.
+    if (drawerTabsHeight(rect.size.x, ctx.scale) > rect.size.y + 0.5f) {
+      ImGui::SetNextItemWidth(-1.0f);
+      if (ImGui::BeginCombo("##drawer_panel", drawerTabName(active))) {
+        for (DrawerTab tab : kDrawerTabs)
+          if (ImGui::Selectable(drawerTabName(tab), tab == active)) active = tab;
+        ImGui::EndCombo();
+      }
+      ImGui::End();
+      return;
+    }
     const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
     bool first = true;
     for (DrawerTab tab : kDrawerTabs) {
