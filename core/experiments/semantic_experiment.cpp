@@ -27,8 +27,8 @@ void checkSlider(const SemanticAxis& axis, const EigenwalkerModel& model, double
   row.sliderRatio = row.sliderMeasuredChange / axis.sd;
 }
 
-SemanticAxisRow axisRow(const WalkerAttribute& a, const std::vector<Walker>& walkers, const std::vector<AxisFold>& folds,
-                        const EigenwalkerModel& full, const AxisWalkers& fullWalkers) {
+SemanticAxisRow axisRow(const WalkerAttribute& a, const AxisQuality& q, const EigenwalkerModel& full,
+                        const AxisWalkers& fullWalkers) {
   SemanticAxisRow row;
   row.attribute = a.name;
   row.label = a.label;
@@ -40,7 +40,6 @@ SemanticAxisRow axisRow(const WalkerAttribute& a, const std::vector<Walker>& wal
   row.sd = axis.sd;
   row.gain = axis.gain;
   row.steerable = axis.steerable;
-  const AxisQuality q = leaveOneSubjectOut(a, walkers, folds);
   row.looR2 = q.r2;
   row.looRmse = q.rmse;
   row.looAccuracy = q.accuracy;
@@ -51,9 +50,16 @@ SemanticAxisRow axisRow(const WalkerAttribute& a, const std::vector<Walker>& wal
 
 // [SECTION] From one view
 
+// The axes of every attribute fitted in one fold (those with enough training values), used for
+// both the held-out walkers' own cycles (the axes' quality) and their 2D views.
 struct FoldAxes {
   std::vector<const WalkerAttribute*> attributes;
   std::vector<SemanticAxis> axes;
+  const SemanticAxis* of(const WalkerAttribute& a) const {
+    for (size_t i = 0; i < attributes.size(); ++i)
+      if (attributes[i] == &a) return &axes[i];
+    return nullptr;
+  }
 };
 
 FoldAxes fitFoldAxes(const AttributeTable& table, const AxisFold& fold) {
@@ -67,6 +73,25 @@ FoldAxes fitFoldAxes(const AttributeTable& table, const AxisFold& fold) {
     }
   }
   return out;
+}
+
+// Leave one subject out from the folds' axes: each held-out walker predicted from its own cycle
+// (heldOutK: its coefficients in its fold's model).
+AxisQuality heldOutQuality(const WalkerAttribute& a, const std::vector<Walker>& walkers, const std::vector<AxisFold>& folds,
+                           const std::vector<FoldAxes>& foldAxes, const std::vector<Eigen::VectorXd>& heldOutK) {
+  std::vector<double> predictions(walkers.size(), NAN);
+  std::vector<int> classes(walkers.size(), -1);
+  for (size_t f = 0; f < folds.size(); ++f) {
+    const SemanticAxis* axis = foldAxes[f].of(a);
+    if (!axis) continue;
+    for (int r : folds[f].test) {
+      const auto i = static_cast<size_t>(r);
+      if (!std::isfinite(a.values[i])) continue;
+      predictions[i] = predictAttribute(*axis, heldOutK[i], walkers[i].fit.omegaRadS);
+      classes[i] = predictedClass(*axis, predictions[i]);
+    }
+  }
+  return scorePredictions(a, std::move(predictions), classes);
 }
 
 void addPredictions(const FoldAxes& fa, const Walker& w, const Eigen::VectorXd& k3d, const Eigen::VectorXd& k2d,
@@ -93,16 +118,16 @@ void addPredictions(const FoldAxes& fa, const Walker& w, const Eigen::VectorXd& 
   }
 }
 
-std::vector<SemanticViewRow> foldViewRows(const AttributeTable& table, const std::vector<Walker>& walkers, const AxisFold& fold,
+std::vector<SemanticViewRow> foldViewRows(const FoldAxes& fa, const std::vector<Walker>& walkers, const AxisFold& fold,
+                                          const std::vector<Eigen::VectorXd>& heldOutK,
                                           const SemanticExperimentOptions& options) {
   std::vector<SemanticViewRow> out;
-  const FoldAxes fa = fitFoldAxes(table, fold);
   if (fa.axes.empty()) return out;
   const ModelGram gram = precomputeModelGram(fold.model);
   const EstimatorOptions map{Estimator::Map, options.sigma2Mm2};
   for (int r : fold.test) {
     const Walker& w = walkers[static_cast<size_t>(r)];
-    const Eigen::VectorXd k3d = projectOntoModel(fold.model, w.fit.w);
+    const Eigen::VectorXd& k3d = heldOutK[static_cast<size_t>(r)];
     for (double angle : options.anglesDeg) {
       const Eigen::VectorXd observed = projectToView(w.fit.w, angle);
       const Reconstruction known = reconstructKnownView(gram, observed, angle, map);
@@ -130,18 +155,24 @@ SemanticExperimentResults semanticExperiment(const std::vector<Walker>& walkers,
   res.components = full.componentCount();
   const AxisWalkers fullWalkers = axisWalkers(full, walkers);
   const std::vector<AxisFold> folds = axisFolds(walkers, options.model, options.threads);
+  // Each fold's axes once, for the quality and the views alike.
+  std::vector<FoldAxes> foldAxes(folds.size());
+  std::vector<Eigen::VectorXd> heldOutK(walkers.size());
+  std::vector<std::vector<SemanticViewRow>> parts(folds.size());
+  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
+    const AxisFold& fold = folds[static_cast<size_t>(f)];
+    foldAxes[static_cast<size_t>(f)] = fitFoldAxes(table, fold);
+    for (int r : fold.test) heldOutK[static_cast<size_t>(r)] = projectOntoModel(fold.model, walkers[static_cast<size_t>(r)].fit.w);
+    parts[static_cast<size_t>(f)] = foldViewRows(foldAxes[static_cast<size_t>(f)], walkers, fold, heldOutK, options);
+  });
   for (const auto& a : table.attributes) {
     try {
-      res.axes.push_back(axisRow(a, walkers, folds, full, fullWalkers));
+      res.axes.push_back(axisRow(a, heldOutQuality(a, walkers, folds, foldAxes, heldOutK), full, fullWalkers));
     } catch (const Error& e) {
       res.notes.push_back(e.problem());
     }
   }
   if (res.axes.empty()) throw Error(ErrorKind::BadData, "", "", "semantic axes: no attribute of the walkers has an axis");
-  std::vector<std::vector<SemanticViewRow>> parts(folds.size());
-  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
-    parts[static_cast<size_t>(f)] = foldViewRows(table, walkers, folds[static_cast<size_t>(f)], options);
-  });
   for (auto& p : parts) res.views.insert(res.views.end(), p.begin(), p.end());
   res.viewSummary = summarizeSemanticViews(res.views);
   return res;

@@ -199,9 +199,7 @@ WalkerAttribute trainingAttribute(const WalkerAttribute& attribute, const std::v
 
 AxisQuality leaveOneSubjectOut(const WalkerAttribute& attribute, const std::vector<Walker>& walkers,
                                const std::vector<AxisFold>& folds) {
-  AxisQuality q;
-  q.attribute = attribute.name;
-  q.predictions.assign(walkers.size(), NAN);
+  std::vector<double> predictions(walkers.size(), NAN);
   std::vector<int> classOf(walkers.size(), -1);
   for (const AxisFold& fold : folds) {
     std::vector<int> known;
@@ -217,14 +215,22 @@ AxisQuality leaveOneSubjectOut(const WalkerAttribute& attribute, const std::vect
     for (int r : known) {
       const Walker& w = walkers[static_cast<size_t>(r)];
       const double p = predictAttribute(axis, projectOntoModel(fold.model, w.fit.w), w.fit.omegaRadS);
-      q.predictions[static_cast<size_t>(r)] = p;
+      predictions[static_cast<size_t>(r)] = p;
       classOf[static_cast<size_t>(r)] = predictedClass(axis, p);
     }
   }
+  return scorePredictions(attribute, std::move(predictions), classOf);
+}
+
+AxisQuality scorePredictions(const WalkerAttribute& attribute, std::vector<double> predictions,
+                             const std::vector<int>& classes) {
+  AxisQuality q;
+  q.attribute = attribute.name;
+  q.predictions = std::move(predictions);
   double sum = 0.0, ssRes = 0.0, ssTot = 0.0;
   int right = 0, ones = 0;
   std::vector<int> used;
-  for (size_t r = 0; r < walkers.size(); ++r)
+  for (size_t r = 0; r < q.predictions.size(); ++r)
     if (std::isfinite(q.predictions[r])) used.push_back(static_cast<int>(r));
   q.walkers = static_cast<int>(used.size());
   if (used.empty()) return q;
@@ -235,7 +241,7 @@ AxisQuality leaveOneSubjectOut(const WalkerAttribute& attribute, const std::vect
     ssRes += (a - q.predictions[static_cast<size_t>(r)]) * (a - q.predictions[static_cast<size_t>(r)]);
     ssTot += (a - mean) * (a - mean);
     if (a > 0.5) ++ones;
-    if (classOf[static_cast<size_t>(r)] == (a > 0.5 ? 1 : 0)) ++right;
+    if (classes[static_cast<size_t>(r)] == (a > 0.5 ? 1 : 0)) ++right;
   }
   const double n = static_cast<double>(used.size());
   if (attribute.categorical) {

@@ -96,6 +96,12 @@ std::vector<AxisFold> axisFolds(const std::vector<Walker>& walkers, const ModelO
 AxisQuality leaveOneSubjectOut(const WalkerAttribute& attribute, const std::vector<Walker>& walkers,
                                const std::vector<AxisFold>& folds);
 
+// The quality of held-out predictions of `attribute` (one per walker, NaN where there is none):
+// R² and RMSE, or for two classes the accuracy of `classes` (the class predicted per walker)
+// beside chance. R² is taken about the mean of the walkers predicted.
+AxisQuality scorePredictions(const WalkerAttribute& attribute, std::vector<double> predictions,
+                             const std::vector<int>& classes);
+
 // The training rows of `attribute` in a fold (the attribute's values at fold.train).
 WalkerAttribute trainingAttribute(const WalkerAttribute& attribute, const std::vector<int>& train);
 

@@ -12,17 +12,18 @@
 namespace ew {
 namespace {
 
-// [SECTION] Measured on the walker
-
-struct MeasuredSpec {
-  const char* name;
+// An attribute's label and the words at its slider's ends.
+struct AttributeWords {
+  const char* name;  // the column; for a manifest column, the start of its name
   const char* label;
   const char* low;
   const char* high;
 };
 
-const std::vector<MeasuredSpec>& measuredSpecs() {
-  static const std::vector<MeasuredSpec> specs = {
+// [SECTION] Measured on the walker
+
+const std::vector<AttributeWords>& measuredSpecs() {
+  static const std::vector<AttributeWords> specs = {
       {"measured_speed_mps", "speed (m/s, measured)", "slower", "faster"},
       {"measured_cadence_spm", "cadence (steps/min, measured)", "fewer steps", "more steps"},
       {"measured_stride_length_m", "stride length (m, measured)", "shorter strides", "longer strides"},
@@ -90,17 +91,10 @@ std::string classWord(const std::string& cls) {
   return cls;
 }
 
-struct NumericWords {
-  const char* key;  // matched at the start of the column name
-  const char* label;
-  const char* low;
-  const char* high;
-};
-
 // Slider words for the manifest columns the field uses (Troje 2002's BMLwalker axes and the
 // synthetic population's attributes); any other column reads "lower NAME" ↔ "higher NAME".
-const std::vector<NumericWords>& numericWords() {
-  static const std::vector<NumericWords> words = {
+const std::vector<AttributeWords>& numericWords() {
+  static const std::vector<AttributeWords> words = {
       {"speed", "speed (m/s)", "slower", "faster"},
       {"height", "height (m)", "shorter", "taller"},
       {"stature", "stature (m)", "shorter", "taller"},
@@ -125,7 +119,7 @@ const std::vector<NumericWords>& numericWords() {
 
 void setNumericWords(WalkerAttribute& a) {
   for (const auto& w : numericWords()) {
-    if (a.name.rfind(w.key, 0) == 0) {
+    if (a.name.rfind(w.name, 0) == 0) {
       a.label = w.label;
       a.lowWord = w.low;
       a.highWord = w.high;

@@ -760,7 +760,7 @@ double semanticReading(const AppState& s, const std::string& attribute) {
   const auto* axes = s.derived.semantic();
   const SemanticAxisView* a = axes ? axes->find(attribute) : nullptr;
   if (!e || !a) throw std::invalid_argument("no semantic axis '" + attribute + "' (explore mode, population loaded)");
-  return readAttribute(*a, e->k, 2.0 * std::numbers::pi * e->strideHz);
+  return predictAttribute(a->axis, e->k, 2.0 * std::numbers::pi * e->strideHz);
 }
 
 void setSemanticValue(AppState& s, const std::string& attribute, double value) {

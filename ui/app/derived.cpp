@@ -339,8 +339,7 @@ void Derived::updateSemantic(const Document& doc) {
     fromView_.clear();
   } else if (!fromViewKey_ || !(*fromViewKey_ == *reconKey_)) {
     fromViewKey_ = reconKey_;
-    const auto axesKey = std::make_tuple(doc.generation, doc.walker, recon_->components,
-                                         recon_->model.mean.sum() + recon_->model.eigenvalues.sum());
+    const auto axesKey = std::make_tuple(doc.generation, doc.walker, recon_->components, doc.modelSource, doc.modelFile);
     if (!viewAxesKey_ || *viewAxesKey_ != axesKey) {
       viewAxesKey_ = axesKey;
       viewAxes_ = fitViewAxes(attributes(doc), *doc.population, doc.walker, recon_->model);

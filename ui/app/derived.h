@@ -198,8 +198,8 @@ class Derived {
   std::optional<ReconKey> fromViewKey_;
   std::vector<AttributeFromView> fromView_;
   // The axes of the walker's attributes, refitted only when the walker or its model changes.
-  // generation, walker, N, and a checksum of the model (the held model's source may change)
-  std::optional<std::tuple<std::uint64_t, int, int, double>> viewAxesKey_;
+  // generation, walker, N, and which model is held (its source and file)
+  std::optional<std::tuple<std::uint64_t, int, int, ModelSource, int>> viewAxesKey_;
   ViewAxes viewAxes_;
   const AttributeTable& attributes(const Document& doc);
   void updateSemantic(const Document& doc);

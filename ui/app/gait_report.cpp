@@ -48,11 +48,6 @@ double bandSample(const Eigen::VectorXd* v, Eigen::Index k) { return v ? (*v)[k]
 
 }  // namespace
 
-GaitSummary summarizeFourierWalker(const Eigen::VectorXd& w, double strideHz, std::optional<double> speedMps,
-                                   const std::string& name) {
-  return measureFourierWalker(w, strideHz, speedMps, name);
-}
-
 const std::vector<GaitRow>& gaitRows() {
   static const std::vector<GaitRow> rows = {
       {"cadence_spm", "cadence (steps/min)", 1},
@@ -93,7 +88,7 @@ GaitBand populationGaitBand(const Population& population) {
   for (int i = 0; i < population.walkerCount(); ++i) {
     const Walker& w = population.walkers[static_cast<size_t>(i)];
     const WalkerFacts& f = population.facts[static_cast<size_t>(i)];
-    const GaitSummary s = summarizeFourierWalker(w.fit.w, f.strideHz, f.speedMps, w.id);
+    const GaitSummary s = measureFourierWalker(w.fit.w, f.strideHz, f.speedMps, w.id);
     if (!s.measures) {
       ++band.unmeasured;
       continue;

@@ -27,12 +27,8 @@ struct Population;
 inline constexpr double kReportCycles = kWalkerGaitCycles;
 inline constexpr double kReportRateHz = kWalkerGaitRateHz;
 
-// One walker measured: its measures and curves, or why it could not be.
+// One walker measured (measureFourierWalker): its measures and curves, or why it could not be.
 using GaitSummary = FourierWalkerGait;
-
-// w: 225 (SPEC §3, phase origin 0); strideHz > 0. speedMps: the walker's progression when known.
-GaitSummary summarizeFourierWalker(const Eigen::VectorXd& w, double strideHz, std::optional<double> speedMps,
-                                   const std::string& name);
 
 // The rows of the report's table, in order: a label with its unit and the value of a summary.
 struct GaitRow {

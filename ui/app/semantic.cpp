@@ -75,10 +75,6 @@ SemanticAxes fitPopulationAxes(const AttributeTable& table, const Population& po
   return out;
 }
 
-double readAttribute(const SemanticAxisView& a, const Eigen::VectorXd& k, double omegaRadS) {
-  return predictAttribute(a.axis, k, omegaRadS);
-}
-
 std::string formatAttributeValue(const SemanticAxisView& a, double value) {
   char text[64];
   if (a.axis.categorical) {

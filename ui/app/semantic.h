@@ -58,8 +58,6 @@ std::shared_ptr<const AttributeTable> populationAttributes(const Population& pop
 SemanticAxes fitPopulationAxes(const AttributeTable& table, const Population& population,
                                const EigenwalkerModel& exploreModel);
 
-// The predictor's reading of the explorer's walker (k in mm, ω in rad/s).
-double readAttribute(const SemanticAxisView& a, const Eigen::VectorXd& k, double omegaRadS);
 // "1.42 m/s", "0.72" (two classes), with the attribute's unit from its label.
 std::string formatAttributeValue(const SemanticAxisView& a, double value);
 

@@ -81,7 +81,7 @@ void refresh(GaitSummary& cached, Eigen::VectorXd& key, const Eigen::VectorXd* w
   }
   if (key.size() == w->size() && key == *w) return;
   key = *w;
-  cached = summarizeFourierWalker(*w, strideHz, speed, name);
+  cached = measureFourierWalker(*w, strideHz, speed, name);
 }
 
 std::string valueText(double v, int decimals) {
