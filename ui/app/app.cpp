@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -26,6 +27,7 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/layout.h"
+#include "ui/app/overflow.h"
 #include "ui/app/screenshot.h"
 #include "ui/app/settings.h"
 #include "ui/app/shortcuts.h"
@@ -468,8 +470,16 @@ class App {
     float xs = 1.0f, ys = 1.0f;
     glfwGetWindowContentScale(window_.get(), &xs, &ys);
     state_.view.contentScale = std::max(xs, 0.5f);
-    const float scale = state_.view.contentScale * state_.view.uiScale *
-                        (state_.view.theme == Theme::Projector ? kProjectorScale : 1.0f);
+    const float wanted = state_.view.contentScale * state_.view.uiScale *
+                         (state_.view.theme == Theme::Projector ? kProjectorScale : 1.0f);
+    // A scale that would leave fewer than kMinLogicalWindow UI pixels is limited (in steps of
+    // 1/8, so that resizing rebuilds the fonts rarely), never below the monitor's own scale.
+    int w = 0, h = 0;
+    glfwGetWindowSize(window_.get(), &w, &h);
+    const float fits = std::min(static_cast<float>(w) / kMinLogicalWindowW, static_cast<float>(h) / kMinLogicalWindowH);
+    const float limit = std::max(state_.view.contentScale, std::floor(fits * 8.0f) / 8.0f);
+    const float scale = std::min(wanted, limit);
+    state_.view.uiScaleLimit = wanted > limit ? scale / (wanted / state_.view.uiScale) : 0.0f;
     if (scale != themeScale_ || state_.view.theme != appliedTheme_) {
       themeScale_ = scale;
       appliedTheme_ = state_.view.theme;
@@ -585,7 +595,8 @@ class App {
     const Layout l = state_.view.presentation
                          ? computePresentationLayout(io.DisplaySize.x, io.DisplaySize.y, themeScale_, notice)
                          : computeLayout(io.DisplaySize.x, io.DisplaySize.y, themeScale_, notice);
-    state_.lastFrame = {l, {}};
+    state_.lastFrame = FrameRecord{};
+    state_.lastFrame.layout = l;
     FrameContext ctx{renderer_, backdrop_, themeScale_, dt};
     try {
       if (l.presentation) {
@@ -604,6 +615,7 @@ class App {
       ImGui::ErrorCheckEndFrameRecover(nullptr);
       reportUnexpected("an exception of unknown type while drawing");
     }
+    state_.lastFrame.overflow = windowsCutOnTheRight();
     ImGui::Render();
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_.get(), &w, &h);

@@ -125,6 +125,13 @@ inline constexpr float kPresentationTextScale = 1.4f;
 struct FrameRecord {
   Layout layout;
   std::vector<std::string> drawn;  // "header", "input", "presentation_bar", …
+  // Annotations the views drew and what they keep clear of: "input.walker" (the walker's
+  // extent over the cycle), "input.legend", "input.caption", "reconstruction.…".
+  std::vector<std::pair<std::string, PanelRect>> overlays;
+  // Windows whose content is wider than they are (text or widgets cut at the edge), by how
+  // many pixels; none in a layout that holds.
+  std::vector<std::pair<std::string, float>> overflow;
+  void overlay(std::string name, const PanelRect& r) { overlays.emplace_back(std::move(name), r); }
 };
 
 struct Panels {

@@ -116,6 +116,8 @@ struct Overlays {
 // projector (dark, higher contrast, every size × kProjectorScale).
 enum class Theme { Dark, Light, Projector };
 inline constexpr float kProjectorScale = 1.3f;
+// The smallest window, in the UI's own pixels, the layout is made for (UI scale 1.83 at 1024×768).
+inline constexpr float kMinLogicalWindowW = 560.0f, kMinLogicalWindowH = 384.0f;
 
 struct Playback {
   bool playing = true;
@@ -134,6 +136,9 @@ struct ViewState {
   Theme theme = Theme::Dark;
   float uiScale = 1.0f;       // user setting, times the monitor's content scale
   float contentScale = 1.0f;  // from the monitor
+  // The UI scale the window's size allows, when it is less than uiScale (0: not limited): the
+  // UI keeps at least kMinLogicalWindow of its own pixels, so that panels hold their words.
+  float uiScaleLimit = 0.0f;
   // Presentation mode (F5): only the two views and the presentation bar. Never saved: every
   // run starts in the workspace.
   bool presentation = false;

@@ -253,6 +253,18 @@ nlohmann::json gaitJson(const AppState& s) {
 
 nlohmann::json rectJson(const PanelRect& r) { return {r.pos.x, r.pos.y, r.size.x, r.size.y}; }
 
+nlohmann::json overlaysJson(const FrameRecord& f) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, rect] : f.overlays) j[name] = rectJson(rect);
+  return j;
+}
+
+nlohmann::json overflowJson(const FrameRecord& f) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [window, px] : f.overflow) j[window] = px;
+  return j;
+}
+
 // What the last frame laid out ([x, y, width, height] in pixels) and drew.
 nlohmann::json layoutJson(const FrameRecord& f) {
   const Layout& l = f.layout;
@@ -262,7 +274,9 @@ nlohmann::json layoutJson(const FrameRecord& f) {
           {"input", rectJson(l.input)},
           {"reconstruction", rectJson(l.reconstruction)},
           {"presentation_bar", rectJson(l.presentationBar)},
-          {"header", rectJson(l.header)}};
+          {"header", rectJson(l.header)},
+          {"overlays", overlaysJson(f)},
+          {"overflow", overflowJson(f)}};
 }
 
 }  // namespace
@@ -295,6 +309,7 @@ nlohmann::json stateJson(const AppState& s) {
                {"speed", v.playback.speed},
                {"theme", themeName(v.theme)},
                {"ui_scale", v.uiScale},
+               {"ui_scale_limit", v.uiScaleLimit > 0.0f ? nlohmann::json(v.uiScaleLimit) : nlohmann::json()},
                {"camera",
                 {{"yaw_deg", v.camera.yawDeg},
                  {"pitch_deg", v.camera.pitchDeg},

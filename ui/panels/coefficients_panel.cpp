@@ -6,6 +6,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/widgets/flow.h"
 
 namespace ew::ui {
 
@@ -20,7 +21,7 @@ void drawClipCoefficients(const AppState& s, const FrameContext& ctx) {
   }
   const EigenwalkerModel& m = *s.clip->model.model;
   const Eigen::VectorXd& k = s.clip->rec.fit.k;
-  ImGui::TextDisabled("fitted with the camera (SD units)");
+  textDisabledWrapped("fitted with the camera (SD units)");
   ImGui::Separator();
   const float labelW = 88.0f * ctx.scale;
   const double total = std::max(m.spectrum.sum(), 1e-12);
@@ -55,15 +56,18 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
     }
     const int n = actions::coefficientCount(s);
     if (explore) {
+      const auto buttonW = [](const char* label) {
+        return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+      };
       if (ImGui::Button("Reset")) actions::resetCoefficients(s);
-      ImGui::SameLine();
+      sameLineOrWrap(buttonW("Randomise"));
       if (ImGui::Button("Randomise")) actions::randomiseCoefficients(s, randomSeed++);
-      ImGui::SameLine();
+      sameLineOrWrap(buttonW("From subject"));
       if (ImGui::Button("From subject") && s.doc.selectedWalker())
         actions::coefficientsFromWalker(s);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected walker's coefficients in the full model");
       semantic.drawExplore(s, ctx.scale);
-      ImGui::TextDisabled("units: SD of each component (√λ)");
+      textDisabledWrapped("units: SD of each component (√λ)");
     } else if (r && r->engine != EngineKind::Eigenwalker) {
       ImGui::TextWrapped("The %s engine has no eigenwalker coefficients. Its result, summarised "
                          "as one cycle, lies here in gait space (read only):",
@@ -73,9 +77,11 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
       if (ImGui::Button("Back to the estimate")) actions::resetCoefficients(s);
       ImGui::EndDisabled();
       if (d && d->edited) {
-        ImGui::TextColored(ImVec4(1.0f, 0.72f, 0.38f, 1.0f), "edited: the 2D and 3D views follow");
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.72f, 0.38f, 1.0f));
+        ImGui::TextWrapped("edited: the 2D and 3D views follow");
+        ImGui::PopStyleColor();
       } else {
-        ImGui::TextDisabled("estimated k, in SD units (drag to edit)");
+        textDisabledWrapped("estimated k, in SD units (drag to edit)");
       }
     }
     ImGui::Separator();

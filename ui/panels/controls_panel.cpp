@@ -1,6 +1,9 @@
 #include "ui/panels/controls_panel.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <utility>
 
 #include "core/engine/model.h"
 #include "ui/app/actions.h"
@@ -8,6 +11,7 @@
 #include "ui/convert.h"
 #include "ui/panels/clip_controls.h"
 #include "ui/render/palette.h"
+#include "ui/widgets/flow.h"
 #include "ui/widgets/section_title.h"
 
 namespace ew::ui {
@@ -16,12 +20,8 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
   if (beginPanel(ctx.backdrop, "Controls", rect)) {
     auto& doc = s.doc;
     int mode = static_cast<int>(doc.mode);
-    if (ImGui::RadioButton("Reconstruct", &mode, 0)) actions::setMode(s, Mode::Reconstruct);
-    ImGui::SameLine();
-    if (ImGui::RadioButton("Explore gait space", &mode, 1)) actions::setMode(s, Mode::Explore);
-    if (doc.clip || s.video) {
-      if (ImGui::RadioButton(s.video ? "Video" : "Keypoint clip", &mode, 2)) actions::setMode(s, Mode::Clip);
-    }
+    const char* modes[] = {"Reconstruct", "Explore gait space", s.video ? "Video" : "Keypoint clip"};
+    if (radioRow(modes, doc.clip || s.video ? 3 : 2, &mode)) actions::setMode(s, static_cast<Mode>(mode));
     if (doc.mode == Mode::Clip) {
       drawVideoControls(s, ctx.scale);
       drawClipControls(s);
@@ -33,24 +33,19 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     if (doc.mode == Mode::Reconstruct) {
       sectionTitle("Engine");
       int engine = static_cast<int>(doc.recon.engine);
-      if (ImGui::RadioButton("Eigenwalker", &engine, 0)) actions::setEngine(s, EngineKind::Eigenwalker);
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("Zhang & Troje 2007: one gait cycle, PCA of walkers");
-      ImGui::SameLine();
-      if (ImGui::RadioButton("Snippets", &engine, 1)) actions::setEngine(s, EngineKind::Snippet);
-      if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Howe, Leventon & Freeman 1999: 11-frame snippets, mixture prior,\n"
-                          "learnt from the population's other subjects walked overground");
-      // Three radios fit one row only in a wide panel: the third wraps otherwise.
-      const ImGuiStyle& style = ImGui::GetStyle();
-      const float skeletonW = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize("Skeleton").x;
-      ImGui::SameLine();
-      if (ImGui::GetContentRegionAvail().x < skeletonW) ImGui::NewLine();
-      if (ImGui::RadioButton("Skeleton", &engine, 2)) actions::setEngine(s, EngineKind::Skeleton);
-      if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Zou et al. 2009: each frame from geometry alone, the walker's own\n"
-                          "bone lengths, no training; each bone's two depths chosen over the clip");
+      const char* tips[] = {"Zhang & Troje 2007: one gait cycle, PCA of walkers",
+                            "Howe, Leventon & Freeman 1999: 11-frame snippets, mixture prior,\n"
+                            "learnt from the population's other subjects walked overground",
+                            "Zou et al. 2009: each frame from geometry alone, the walker's own\n"
+                            "bone lengths, no training; each bone's two depths chosen over the clip"};
+      for (int i = 0; i < 3; ++i) {
+        const char* label = i == 0 ? "Eigenwalker" : i == 1 ? "Snippets" : "Skeleton";
+        if (i > 0) sameLineOrWrap(toggleWidth(label));
+        if (radioWrapped(label, engine == i) && engine != i) actions::setEngine(s, static_cast<EngineKind>(i));
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tips[i]);
+      }
       bool compare = doc.compareEngines;
-      if (ImGui::Checkbox("Compare all three", &compare)) actions::setCompareEngines(s, compare);
+      if (checkboxWrapped("Compare all three", &compare)) actions::setCompareEngines(s, compare);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Every engine reconstructs the walker from the same view, drawn together\n"
                           "over the ground truth, with a row of errors each");
@@ -63,12 +58,7 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
           if (ImGui::Checkbox(engineName(kind), &shown)) actions::setCompareShown(s, kind, shown);
           ImGui::PopStyleColor(2);
           if (kind == EngineKind::Skeleton) break;
-          // The next one on this line when it fits, else on the next.
-          const auto next = static_cast<EngineKind>(static_cast<int>(kind) + 1);
-          const float nextW = ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
-                              ImGui::CalcTextSize(engineName(next)).x + ImGui::GetStyle().ItemSpacing.x;
-          ImGui::SameLine();
-          if (ImGui::GetContentRegionAvail().x < nextW) ImGui::NewLine();
+          sameLineOrWrap(toggleWidth(engineName(static_cast<EngineKind>(static_cast<int>(kind) + 1))));
         }
       }
     }
@@ -80,22 +70,25 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     if (ImGui::SliderFloat("##alpha", &alpha, -180.0f, 180.0f, "α = %.1f°",
                            ImGuiSliderFlags_AlwaysClamp))
       actions::setAngle(s, alpha);
-    ImGui::SetNextItemWidth(100.0f * ctx.scale);
-    if (ImGui::DragFloat("fine (drag / type)", &alpha, 0.05f, -180.0f, 180.0f, "%.2f°",
+    // The fine field's label beside it when the panel has room, else in its tooltip.
+    const float fineW = 100.0f * ctx.scale;
+    const bool fineLabel = fineW + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize("fine (drag / type)").x <=
+                           ImGui::GetContentRegionAvail().x;
+    ImGui::SetNextItemWidth(fineLabel ? fineW : -1.0f);
+    if (ImGui::DragFloat(fineLabel ? "fine (drag / type)" : "##fine", &alpha, 0.05f, -180.0f, 180.0f, "%.2f°",
                          ImGuiSliderFlags_AlwaysClamp))
       actions::setAngle(s, alpha);
-    ImGui::TextDisabled("0° frontal · ±90° profiles");
+    if (!fineLabel && ImGui::IsItemHovered()) ImGui::SetTooltip("fine: drag, or double-click to type");
+    textDisabledWrapped("0° frontal · ±90° profiles");
     bool unknown = doc.recon.unknownAngle;
-    if (ImGui::Checkbox("Unknown view angle (estimate α)", &unknown))
+    if (checkboxWrapped("Unknown view angle (estimate α)", &unknown))
       actions::setUnknownAngle(s, unknown);
 
     ImGui::BeginDisabled(!eigenwalkerSettings);
     sectionTitle("Estimator");
     int est = doc.recon.estimator == Estimator::Lsq ? 0 : 1;
-    if (ImGui::RadioButton("LSQ", &est, 0)) actions::setEstimator(s, Estimator::Lsq);
-    ImGui::SameLine();
-    if (ImGui::RadioButton("MAP (Bayesian prior)", &est, 1))
-      actions::setEstimator(s, Estimator::Map);
+    const char* estimators[] = {"LSQ", "MAP (Bayesian prior)"};
+    if (radioRow(estimators, 2, &est)) actions::setEstimator(s, est == 0 ? Estimator::Lsq : Estimator::Map);
     ImGui::BeginDisabled(doc.recon.estimator != Estimator::Map);
     float sigma2 = static_cast<float>(doc.recon.sigma2Mm2);
     ImGui::SetNextItemWidth(-1.0f);
@@ -142,37 +135,33 @@ void ControlsPanel::drawViewControls(AppState& s, const FrameContext& /*ctx*/) {
     if (ImGui::Button("Side", ImVec2(bw, 0))) actions::setCamera(s, "side");
     ImGui::SameLine();
     if (ImGui::Button("Top", ImVec2(bw, 0))) actions::setCamera(s, "top");
-    ImGui::TextDisabled("drag: orbit · right-drag: pan · wheel: zoom\ndouble-click: reset");
+    textDisabledWrapped("drag: orbit · right-drag: pan · wheel: zoom · double-click: reset");
 
     sectionTitle("Overlays");
     auto& o = s.view.overlays;
-    if (ImGui::BeginTable("overlays", 2)) {
-      auto box = [](const char* label, bool* v) {
+    const std::pair<const char*, bool*> boxes[] = {
+        {"depth error colour", &o.depthErrorColour}, {"error lines", &o.errorLines},
+        {"error bars", &o.errorBars},                {"metrics", &o.metrics},
+        {"ground truth ghost", &o.ghost},            {"camera glyph", &o.cameraGlyph},
+        {"floor grid", &o.grid},                     {"2D reprojection", &o.reprojection},
+        {"2D stick figure", &o.stickFigure},         {"2D trails", &o.trails},
+        {"point-lights only", &o.pointLights}};
+    // Two columns when the longest label fits half the panel, else one.
+    float longest = 0.0f;
+    for (const auto& [label, value] : boxes) longest = std::max(longest, toggleWidth(label));
+    const int columns = 2.0f * (longest + 2.0f * ImGui::GetStyle().CellPadding.x) <= ImGui::GetContentRegionAvail().x ? 2 : 1;
+    if (ImGui::BeginTable("overlays", columns)) {
+      for (const auto& [label, value] : boxes) {
         ImGui::TableNextColumn();
-        ImGui::Checkbox(label, v);
-      };
-      box("depth error colour", &o.depthErrorColour);
-      box("error lines", &o.errorLines);
-      box("error bars", &o.errorBars);
-      box("metrics", &o.metrics);
-      box("ground truth ghost", &o.ghost);
-      box("camera glyph", &o.cameraGlyph);
-      box("floor grid", &o.grid);
-      box("2D reprojection", &o.reprojection);
-      box("2D stick figure", &o.stickFigure);
-      box("2D trails", &o.trails);
-      box("point-lights only", &o.pointLights);
+        checkboxWrapped(label, value);
+      }
       ImGui::EndTable();
     }
 
     sectionTitle("Display");
     int theme = static_cast<int>(s.view.theme);
-    ImGui::RadioButton("dark", &theme, 0);
-    ImGui::SameLine();
-    ImGui::RadioButton("light", &theme, 1);
-    ImGui::SameLine();
-    ImGui::RadioButton("projector", &theme, 2);
-    s.view.theme = static_cast<Theme>(theme);
+    const char* themes[] = {"dark", "light", "projector"};
+    if (radioRow(themes, 3, &theme)) s.view.theme = static_cast<Theme>(theme);
     float scale = pendingUiScale > 0.0f ? pendingUiScale : s.view.uiScale;
     ImGui::SetNextItemWidth(-1.0f);
     if (ImGui::SliderFloat("##uiscale", &scale, 0.75f, 2.5f, "UI scale %.2f×"))
@@ -180,6 +169,11 @@ void ControlsPanel::drawViewControls(AppState& s, const FrameContext& /*ctx*/) {
     if (pendingUiScale > 0.0f && ImGui::IsItemDeactivated()) {
       s.view.uiScale = pendingUiScale;
       pendingUiScale = 0.0f;
+    }
+    if (s.view.uiScaleLimit > 0.0f) {
+      char note[96];
+      std::snprintf(note, sizeof note, "shown at %.2f×: the window is too small for more", s.view.uiScaleLimit);
+      textDisabledWrapped(note);
     }
   }
 }

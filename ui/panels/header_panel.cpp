@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -86,17 +87,82 @@ void modelChoice(AppState& s, const char* label, bool selected, bool enabled,
   if (!enabled) ImGui::EndDisabled();
 }
 
-// Undo and redo of the settings (Ctrl+Z, Ctrl+Shift+Z), greyed when there is nothing to step to.
-void drawUndoButtons(AppState& s) {
-  ImGui::BeginDisabled(!canUndo(s));
-  if (ImGui::Button("↶")) undo(s);
+// One button of the header: its label, what it says on hover, whether it can be pressed now.
+struct HeaderButton {
+  const char* label;
+  const char* tooltip;
+  bool enabled;
+  std::function<void()> press;
+};
+
+std::vector<HeaderButton> headerButtons(AppState& s, HeaderPanel& h) {
+  return {
+      {"Open…", "Open a population, a walker, a keypoint clip or a video", true,
+       [&s] { s.panels.data.open = !s.panels.data.open; }},
+      {"Model…", "Which model the walkers are inspected against", true, [&h] { h.modelMenuOpen = !h.modelMenuOpen; }},
+      {"Export…", "Screenshots, video, the walker as CSV/BVH, the model", true,
+       [&s] { s.panels.exports.open = !s.panels.exports.open; }},
+      {"Analysis", "Error against view angle, over every walker", true,
+       [&s] { s.panels.analysis.open = !s.panels.analysis.open; }},
+      {"Gait", "Gait report: cadence, stride, stance, … and flexion curves, against the population", true,
+       [&s] { s.panels.gait.open = !s.panels.gait.open; }},
+      {"Tour", "A guided tour of the method, step by step", true,
+       [&s] {
+         if (s.panels.tour.active) {
+           actions::tourEnd(s);
+         } else if (s.doc.ready()) {
+           actions::tourStart(s);
+         }
+       }},
+      {"Present", "Presentation mode: only the two views, large captions (F5)", true,
+       [&s] { actions::setPresentation(s, true); }},
+      {"↶", "Undo the last change (Ctrl+Z)", canUndo(s), [&s] { undo(s); }},
+      {"↷", "Redo (Ctrl+Shift+Z or Ctrl+Y)", canRedo(s), [&s] { redo(s); }},
+      {"?", "Keyboard and mouse (F1)", true, [&s] { s.panels.help.open = !s.panels.help.open; }},
+  };
+}
+
+float buttonWidth(const char* label) {
+  return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+}
+
+void drawHeaderButton(const HeaderButton& b) {
+  ImGui::BeginDisabled(!b.enabled);
+  if (ImGui::Button(b.label)) b.press();
   ImGui::EndDisabled();
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Undo the last change (Ctrl+Z)");
-  ImGui::SameLine();
-  ImGui::BeginDisabled(!canRedo(s));
-  if (ImGui::Button("↷")) redo(s);
-  ImGui::EndDisabled();
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("Redo (Ctrl+Shift+Z or Ctrl+Y)");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", b.tooltip);
+}
+
+// The buttons that fit `room` in a row, the rest under a "More" button's menu (a small
+// window or a large UI scale).
+void drawHeaderButtons(std::vector<HeaderButton> buttons, float room) {
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float moreW = buttonWidth("More…") + spacing;
+  float total = 0.0f;
+  for (const auto& b : buttons) total += buttonWidth(b.label) + spacing;
+  std::size_t inRow = buttons.size();
+  if (total > room) {
+    float used = moreW;
+    inRow = 0;
+    while (inRow < buttons.size() && used + buttonWidth(buttons[inRow].label) + spacing <= room)
+      used += buttonWidth(buttons[inRow++].label) + spacing;
+  }
+  for (std::size_t i = 0; i < inRow; ++i) {
+    if (i > 0) ImGui::SameLine();
+    drawHeaderButton(buttons[i]);
+  }
+  if (inRow == buttons.size()) return;
+  if (inRow > 0) ImGui::SameLine();
+  if (ImGui::Button("More…")) ImGui::OpenPopup("##header_more");
+  if (ImGui::BeginPopup("##header_more")) {
+    for (std::size_t i = inRow; i < buttons.size(); ++i) {
+      const auto& b = buttons[i];
+      const std::string item = std::string(b.label) + "##more";
+      if (ImGui::MenuItem(item.c_str(), nullptr, false, b.enabled)) b.press();
+      if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", b.tooltip);
+    }
+    ImGui::EndPopup();
+  }
 }
 
 }  // namespace
@@ -170,11 +236,12 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
   if (beginPanel(ctx.backdrop, "##header", rect,
                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
     // The name goes first when the window is too narrow for it and every button (a large UI
-    // scale): the buttons are what the header is for.
+    // scale), then the buttons that do not fit go under "More": the buttons are what the
+    // header is for.
     const ImGuiStyle& style = ImGui::GetStyle();
+    auto buttons = headerButtons(s, *this);
     float buttonsW = 0.0f;
-    for (const char* b : {"Open…", "Model…", "Export…", "Analysis", "Gait", "Tour", "Present", "↶", "↷", "?"})
-      buttonsW += ImGui::CalcTextSize(b).x + 2.0f * style.FramePadding.x + style.ItemSpacing.x;
+    for (const auto& b : buttons) buttonsW += buttonWidth(b.label) + style.ItemSpacing.x;
     if (s.fonts.large) ImGui::PushFont(s.fonts.large);
     const bool named = ImGui::CalcTextSize("Eigenwalker").x + 18.0f * ctx.scale + buttonsW <=
                        ImGui::GetContentRegionAvail().x;
@@ -183,42 +250,19 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
       ImGui::SameLine(0.0f, 18.0f * ctx.scale);
     }
     if (s.fonts.large) ImGui::PopFont();
-    if (ImGui::Button("Open…")) s.panels.data.open = !s.panels.data.open;
-    ImGui::SameLine();
-    if (ImGui::Button("Model…")) modelMenuOpen = !modelMenuOpen;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Which model the walkers are inspected against");
-    modelButtonX = ImGui::GetItemRectMin().x;
+    const float rowX = ImGui::GetCursorPosX();
+    drawHeaderButtons(std::move(buttons), ImGui::GetContentRegionAvail().x);
+    // The model selector opens under its button, the row's second.
+    modelButtonX = ImGui::GetWindowPos().x + rowX + buttonWidth("Open…") + style.ItemSpacing.x;
     modelButtonBottom = ImGui::GetItemRectMax().y;
-    ImGui::SameLine();
-    if (ImGui::Button("Export…")) s.panels.exports.open = !s.panels.exports.open;
-    ImGui::SameLine();
-    if (ImGui::Button("Analysis")) s.panels.analysis.open = !s.panels.analysis.open;
-    ImGui::SameLine();
-    if (ImGui::Button("Gait")) s.panels.gait.open = !s.panels.gait.open;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Gait report: cadence, stride, stance, … and flexion curves, against the population");
-    ImGui::SameLine();
-    if (ImGui::Button("Tour")) {
-      if (s.panels.tour.active) {
-        actions::tourEnd(s);
-      } else if (s.doc.ready()) {
-        actions::tourStart(s);
-      }
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Present")) actions::setPresentation(s, true);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Presentation mode: only the two views, large captions (F5)");
-    ImGui::SameLine();
-    drawUndoButtons(s);
-    ImGui::SameLine();
-    if (ImGui::Button("?")) s.panels.help.open = !s.panels.help.open;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Keyboard and mouse (F1)");
     ImGui::SameLine(0.0f, 18.0f * ctx.scale);
     const float lineX = ImGui::GetCursorPosX();
     const float progressX = drawProgress(s, ctx, ImGui::GetWindowContentRegionMax().x);
     // The model line fills what the buttons and the progress bar leave, never overprinting.
     // The longest of the line's forms that fits (the last one shortened when none does).
     const auto lines = modelLines(s);
-    if (!lines.front().empty()) {
+    // (Left out when the room would hold only a word or two of it.)
+    if (!lines.front().empty() && progressX - lineX >= 160.0f * ctx.scale) {
       ImGui::SameLine(lineX);
       ImGui::AlignTextToFramePadding();
       const float room = std::max(0.0f, progressX - lineX - 12.0f * ctx.scale);

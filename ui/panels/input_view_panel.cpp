@@ -9,6 +9,7 @@
 #include "ui/panels/clip_view.h"
 #include "ui/convert.h"
 #include "ui/panels/view_overlay.h"
+#include "ui/panels/walker_bounds.h"
 #include "ui/render/camera.h"
 #include "ui/render/figures.h"
 #include "ui/render/palette.h"
@@ -87,6 +88,44 @@ bool buildInputScene(const AppState& s, Scene& scene, float lineScale, double ph
 CameraMatrices inputViewCamera(float aspect) {
   return imageCamera(aspect, {0.0f, kViewCentreVMm}, kViewHeightMm);
 }
+
+namespace {
+
+// The 2D view's framing: the standard one (2.35 m high, the same for every walker, so that
+// walkers compare by size), unless the caption's title or the folded legend would then cover
+// the walker's trail (a small view, a large UI scale): then the trail is framed between them.
+// `top` and `bottom` are the plates (width, height) at the view's top-left and bottom-left;
+// `margin` the pixels kept around the trail (walkerBounds' margin).
+CameraMatrices inputFraming(const Eigen::MatrixXd& trail, ImVec2 size, float pad, ImVec2 top, ImVec2 bottom,
+                            float margin) {
+  const float aspect = size.x / size.y;
+  double uLo = 1e9, uHi = -1e9, vLo = 1e9, vHi = -1e9;
+  for (Eigen::Index i = 0; i < trail.rows(); ++i)
+    for (Eigen::Index j = 0; j + 1 < trail.cols(); j += 2) {
+      uLo = std::min(uLo, trail(i, j)), uHi = std::max(uHi, trail(i, j));
+      vLo = std::min(vLo, trail(i, j + 1)), vHi = std::max(vHi, trail(i, j + 1));
+    }
+  if (!(uLo < uHi && vLo < vHi)) return inputViewCamera(aspect);
+  // In pixels from the view's top-left corner, in the standard framing.
+  const float pxPerMm = size.y / kViewHeightMm;
+  const float left = 0.5f * size.x + static_cast<float>(uLo) * pxPerMm - margin;
+  const float head = 0.5f * size.y - static_cast<float>(vHi - kViewCentreVMm) * pxPerMm - margin;
+  const float feet = 0.5f * size.y - static_cast<float>(vLo - kViewCentreVMm) * pxPerMm + margin;
+  const bool underTitle = left < pad + top.x && head < pad + top.y;
+  const bool overTab = left < pad + bottom.x && feet > size.y - pad - bottom.y;
+  if (!underTitle && !overTab) return inputViewCamera(aspect);
+  // Room kept only for the plate the walker would meet (the ground then comes near the view's
+  // bottom, or the head near its top).
+  const float topPx = underTitle ? pad + top.y + margin + 1.0f : std::max(margin, head);
+  const float bottomPx = overTab ? size.y - pad - bottom.y - margin - 1.0f : size.y - margin - 4.0f * pad / 10.0f;
+  if (bottomPx - topPx < 0.4f * size.y) return inputViewCamera(aspect);  // no room to frame it: as it is
+  const float heightMm = std::max(kViewHeightMm, static_cast<float>(vHi - vLo) * size.y / (bottomPx - topPx));
+  const float mmPerPx = heightMm / size.y;
+  const float centre = static_cast<float>(vHi) - (0.5f * size.y - topPx) * mmPerPx;
+  return imageCamera(aspect, {0.0f, centre}, heightMm);
+}
+
+}  // namespace
 
 namespace {
 
@@ -176,15 +215,34 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
   const bool drawn = buildInputScene(s, scene, ctx.scale, s.view.playback.phase());
   const auto& o = s.view.overlays;
   const float aspect = size.x / size.y;
-  ctx.renderer.render(target, scene, inputViewCamera(aspect));
+  const float pad = 10.0f * ctx.scale;
+  const ReconBase* r = s.derived.recon();
+  const ReconDisplay* d = s.derived.display();
+  const ExploreResult* e = s.derived.explore();
+  // Where the walker is drawn over its cycle: the input's trail and the reconstruction over it.
+  Eigen::MatrixXd extent;
+  if (reconstruct && r) {
+    extent = r->observedTrail;
+    if (d && o.reprojection && !o.pointLights) {
+      const Eigen::MatrixXd reprojected = trailOverCycle(d->reprojected, 24);
+      extent.conservativeResize(extent.rows() + reprojected.rows(), Eigen::NoChange);
+      extent.bottomRows(reprojected.rows()) = reprojected;
+    }
+  } else if (!reconstruct && e) {
+    extent = e->projectedTrail;
+  }
+  const float margin = 8.0f * ctx.scale;  // around the walker, for its joints' discs
+  const CameraMatrices camera =
+      extent.size() > 0 ? inputFraming(extent, size, pad, smallCaptionPlate("2D input", ctx.scale, size.x - 2.0f * pad),
+                                       legendTabSize(ctx.scale), margin)
+                        : inputViewCamera(aspect);
+  ctx.renderer.render(target, scene, camera);
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p1{p0.x + size.x, p0.y + size.y};
   ctx.backdrop.image(target, {p0.x, p0.y});
-  const float pad = 10.0f * ctx.scale;
   char sub[160];
   if (reconstruct) {
-    const ReconBase* r = s.derived.recon();
     if (r && r->engine == EngineKind::Snippet)
       std::snprintf(sub, sizeof sub, "orthographic, α = %.1f°, walking across at %.2f m/s",
                     s.doc.recon.alphaDeg, r->speedMps);
@@ -196,12 +254,12 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
   } else {
     std::snprintf(sub, sizeof sub, "the synthesised walker projected at α = %.1f°", s.doc.recon.alphaDeg);
   }
-  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input", sub, s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
-  const float halfMetre = 500.0f * size.y / kViewHeightMm;
-  drawScaleBar(dl, ImVec2(p1.x - pad - halfMetre - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale), halfMetre,
-               "50 cm", ctx.scale);
+  // What the caption, the legend and the scale bar keep clear of: the input over its cycle and
+  // the reconstruction drawn over it.
+  const ImRect walker = extent.size() > 0 ? trailBounds2(extent, camera, p0, size, margin) : ImRect(p0, p0);
+  const ImRect caption = drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input", sub, s.fonts.large, ctx.scale,
+                                     ImVec2(size.x - 2.0f * pad, size.y), walker);
   std::vector<LegendItem> legend{{palette::kInputPoint, "input joints (u, v)", false}};
-  const ReconBase* r = s.derived.recon();
   const bool anyEstimated =
       reconstruct && r && std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(), [](bool b) { return b; });
   if (anyEstimated) legend.push_back({palette::kModelEstimated, "model-estimated (not measured)", false});
@@ -210,7 +268,18 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
                       s.doc.recon.unknownAngle ? "reconstruction seen at est. α" : "reconstruction seen at α", true});
     legend.push_back({palette::kError, "2D residual", true});
   }
-  drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale, size.x);
+  const ImRect legendRect = drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale, size.x, walker);
+  // The scale bar at the bottom right, when it has room there beside the legend and the walker.
+  const float halfMetre = 500.0f * camera.projection[1][1] * 0.5f * size.y;  // 500 mm in the framing's pixels
+  const ImVec2 barLeft(p1.x - pad - halfMetre - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale);
+  const ImRect bar(ImVec2(barLeft.x, barLeft.y - ImGui::GetTextLineHeight() - 6.0f * ctx.scale),
+                   ImVec2(barLeft.x + halfMetre, barLeft.y + 5.0f * ctx.scale));
+  if (!overlaps(bar, legendRect) && !overlaps(bar, walker)) drawScaleBar(dl, barLeft, halfMetre, "50 cm", ctx.scale);
+  if (drawn) {
+    s.lastFrame.overlay("input.walker", toPanelRect(walker));
+    s.lastFrame.overlay("input.caption", toPanelRect(caption));
+    s.lastFrame.overlay("input.legend", toPanelRect(legendRect));
+  }
   if (!drawn) drawCentredMessage(dl, p0, size, s.jobs.busy() ? "loading…" : "nothing loaded");
 }
 

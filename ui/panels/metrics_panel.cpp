@@ -13,8 +13,10 @@ namespace {
 
 // A narrow strip (a small window or a large UI scale) drops a metric's note, then the metrics
 // that do not fit at all, rather than cutting them at the edge.
-void metric(const AppState& s, const char* label, const char* value, const char* note, float width,
+// The strip's first metric starts its row (`first`); the others follow on the same line.
+void metric(const AppState& s, bool first, const char* label, const char* value, const char* note, float width,
             const ImVec4& colour = ImGui::GetStyleColorVec4(ImGuiCol_Text)) {
+  if (!first) ImGui::SameLine();
   const float avail = ImGui::GetContentRegionAvail().x;
   if (s.fonts.large) ImGui::PushFont(s.fonts.large);
   const float valueW = ImGui::CalcTextSize(value).x;
@@ -36,8 +38,9 @@ void metric(const AppState& s, const char* label, const char* value, const char*
   ImGui::EndGroup();
   ImGui::SameLine(0.0f, 0.0f);
   const float used = ImGui::GetItemRectSize().x;
-  if (used < width) ImGui::Dummy(ImVec2(width - used, 1.0f));
-  ImGui::SameLine();
+  // The slot filled to its width, but never past the strip's edge (the last slot).
+  const float room = std::max(0.0f, ImGui::GetContentRegionAvail().x);
+  if (used < width && room > 0.0f) ImGui::Dummy(ImVec2(std::min(width - used, room), 1.0f));
 }
 
 // A keypoint clip: the walk in metres and seconds (the prior knows how big people are) and
@@ -47,19 +50,18 @@ void clipMetrics(const AppState& s, float width) {
   const CameraFit& f = rec.fit;
   char v[64], n[96];
   std::snprintf(v, sizeof v, "%.2f m", f.headHeightMm / 1000.0);
-  metric(s, "height  head above ankles", v, "", width);
+  metric(s, true, "height  head above ankles", v, "", width);
   std::snprintf(v, sizeof v, "%.2f m/s", f.speedMps);
-  metric(s, "speed", v, rec.trial.rateAssumed ? "(30 fps?)" : "", width);
+  metric(s, false, "speed", v, rec.trial.rateAssumed ? "(30 fps?)" : "", width);
   std::snprintf(v, sizeof v, "%.2f m", f.strideLengthM);
   std::snprintf(n, sizeof n, "%.2f Hz", f.strideHz);
-  metric(s, "stride length", v, n, width);
+  metric(s, false, "stride length", v, n, width);
   std::snprintf(v, sizeof v, "%.0f /min", f.cadenceStepsPerMin);
-  metric(s, "cadence  steps", v, "", width);
+  metric(s, false, "cadence  steps", v, "", width);
   std::snprintf(v, sizeof v, "%.1f px", f.reprojectionRmsPx);
   n[0] = '\0';
   if (f.outlierSamples > 0) std::snprintf(n, sizeof n, "%d glitches out", f.outlierSamples);
-  metric(s, "reprojection  RMS", v, n, width);
-  ImGui::NewLine();
+  metric(s, false, "reprojection  RMS", v, n, width);
 }
 
 }  // namespace
@@ -70,8 +72,17 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
     const ReconDisplay* d = s.derived.display();
     if (s.doc.mode == Mode::Explore) {
       ImGui::TextDisabled("Gait-space explorer");
-      ImGui::TextWrapped("Drag the eigenwalker sliders: the walker is the mean walker plus Σ k_n e_n, animated in 3D and "
-                         "projected at α on the left. Errors are shown in reconstruct mode.");
+      // The longest explanation the strip has room for.
+      for (const char* text : {"Drag the eigenwalker sliders: the walker is the mean walker plus Σ k_n e_n, animated in 3D "
+                               "and projected at α on the left. Errors are shown in reconstruct mode.",
+                               "The walker is the mean walker plus Σ k_n e_n: drag the eigenwalker sliders.",
+                               "Mean walker + Σ k_n e_n"}) {
+        const float w = ImGui::GetContentRegionAvail().x;
+        if (ImGui::CalcTextSize(text, nullptr, false, w).y <= ImGui::GetContentRegionAvail().y) {
+          ImGui::TextWrapped("%s", text);
+          break;
+        }
+      }
     } else if (s.doc.mode == Mode::Clip && s.view.overlays.metrics) {
       if (s.clip) {
         clipMetrics(s, std::max(150.0f * ctx.scale, (ImGui::GetContentRegionAvail().x - 8.0f) / 5.0f));
@@ -86,10 +97,10 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
       // Over the measured joints, as `reconstruct` reports: a model-estimated joint has no truth.
       std::snprintf(v, sizeof v, "%.0f mm²", d->absScoredMm2);
       std::snprintf(n, sizeof n, "(√ %.1f mm)", std::sqrt(std::max(d->absScoredMm2, 0.0)));
-      metric(s, "E_a  depth error", v, n, w);
+      metric(s, true, "E_a  depth error", v, n, w);
       std::snprintf(v, sizeof v, "%.3f", d->relScored);
       std::snprintf(n, sizeof n, "σ_m² %.0f mm²", d->errors.sigmaM2Mm2);
-      metric(s, "E_r  relative", v, n, w);
+      metric(s, false, "E_r  relative", v, n, w);
       std::snprintf(v, sizeof v, "%.1f mm", d->mpjpeMm);
       // Joints estimated from a model are scored apart (their ground truth is the model's).
       if (d->mpjpeModelEstimatedMm) {
@@ -98,20 +109,19 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
       } else {
         n[0] = '\0';
       }
-      metric(s, "MPJPE  3D", v, n, w);
+      metric(s, false, "MPJPE  3D", v, n, w);
       std::snprintf(v, sizeof v, "%.1f mm", d->residualRmsMm);
-      metric(s, "2D residual  RMS", v, d->edited ? "(edited k)" : "", w,
+      metric(s, false, "2D residual  RMS", v, d->edited ? "(edited k)" : "", w,
              d->edited ? ImVec4(1.0f, 0.72f, 0.38f, 1.0f) : ImGui::GetStyleColorVec4(ImGuiCol_Text));
       if (s.doc.recon.unknownAngle) {
         std::snprintf(v, sizeof v, "%.1f°", r->alphaUsedDeg);
         std::snprintf(n, sizeof n, "error %.1f°", d->angleErrorDeg);
-        metric(s, "est. α  (true α hidden)", v, n, w,
+        metric(s, false, "est. α  (true α hidden)", v, n, w,
                d->angleErrorDeg > 10.0 ? ImVec4(1.0f, 0.45f, 0.55f, 1.0f) : goodTextColour());
       } else {
         std::snprintf(v, sizeof v, "%.1f°", r->alphaTrueDeg);
-        metric(s, "α  known", v, "", w);
+        metric(s, false, "α  known", v, "", w);
       }
-      ImGui::NewLine();
     } else {
       ImGui::TextDisabled(s.jobs.busy() ? "working…" : "no reconstruction");
     }

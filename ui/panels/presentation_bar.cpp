@@ -20,12 +20,9 @@ void drawAngle(AppState& s, float rowH, float sliderW) {
   ImGui::SameLine();
   float slider = static_cast<float>(s.doc.recon.alphaDeg);
   ImGui::SetNextItemWidth(sliderW);
-  const float framePad = std::max(0.0f, 0.5f * (rowH - ImGui::GetFontSize()));
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, framePad));
   if (ImGui::SliderFloat("##alpha", &slider, -180.0f, 180.0f,
                          "α = %.0f°", ImGuiSliderFlags_AlwaysClamp))
     actions::setAngle(s, std::round(slider));
-  ImGui::PopStyleVar();
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("view angle of the 2D input ([ ] ±1°, Shift ±15°)");
 }
 
@@ -34,7 +31,13 @@ void drawAngle(AppState& s, float rowH, float sliderW) {
 void PresentationBar::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   if (beginPanel(ctx.backdrop, "##presentation_bar", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
     const ImGuiStyle& style = ImGui::GetStyle();
-    const float rowH = std::max(ImGui::GetFrameHeight(), ImGui::GetContentRegionAvail().y);
+    // (A frame fits: the bar is 0.12 of the window at least, 46 UI pixels in the smallest window
+    // the UI scale allows, kMinLogicalWindowH.)
+    const float rowH = std::floor(ImGui::GetContentRegionAvail().y);
+    // Every item of the row as tall as the row, with its text in the middle (the same padding
+    // for all, so that ImGui's baseline alignment leaves the row one row high).
+    const float framePad = std::max(0.0f, 0.5f * (rowH - ImGui::GetFontSize()));
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(style.FramePadding.x, framePad));
     auto& p = s.view.playback;
     if (rowButton(p.playing ? "||##play" : ">##play", 1.6f * rowH, rowH)) p.playing = !p.playing;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("play / pause (space)");
@@ -48,6 +51,7 @@ void PresentationBar::draw(AppState& s, const FrameContext& ctx, const PanelRect
     ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - leaveW);
     if (rowButton(leave, leaveW, rowH)) actions::setPresentation(s, false);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the panels (F5 or Esc)");
+    ImGui::PopStyleVar();
   }
   ImGui::End();
 }

@@ -1,5 +1,7 @@
 #include "ui/panels/profile_panel.h"
 
+#include "ui/widgets/flow.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -124,7 +126,7 @@ void drawProfile(const ReconBase& r, const ViewSearch& vs, const FrameContext& c
   if (compare) {  // each engine's α̂ in its colour (the legend of the views names them)
     ImGui::TextDisabled("est. α");
     for (const auto& e : compare->engines) {
-      ImGui::SameLine();
+      sameLineOrWrap(ImGui::CalcTextSize("-000.0°").x);
       const ImVec4 colour = toImVec4(palette::kEngineRight[static_cast<std::size_t>(e.engine)]);
       if (e.base)
         ImGui::TextColored(colour, "%.1f°", e.base->alphaUsedDeg);
@@ -132,7 +134,7 @@ void drawProfile(const ReconBase& r, const ViewSearch& vs, const FrameContext& c
         ImGui::TextColored(colour, "none");
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", engineName(e.engine));
     }
-    ImGui::SameLine();
+    sameLineOrWrap(ImGui::CalcTextSize("true -000.0°").x);
     ImGui::TextDisabled("true %.1f°", r.alphaTrueDeg);
   }
   ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -213,15 +215,19 @@ void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
     } else if (s.doc.mode == Mode::Explore) {
       ImGui::TextDisabled("reconstruct mode only");
     } else if (!s.doc.recon.unknownAngle) {
-      ImGui::TextDisabled("The view angle is known.");
-      if (ImGui::Button("Estimate it (unknown view angle)")) actions::setUnknownAngle(s, true);
+      textDisabledWrapped("The view angle is known: J(α) is scanned when it is not.");
+      const char* label = ImGui::CalcTextSize("Estimate it (unknown view angle)").x + 2.0f * ImGui::GetStyle().FramePadding.x <=
+                                  ImGui::GetContentRegionAvail().x
+                              ? "Estimate it (unknown view angle)"
+                              : "Estimate α";
+      if (ImGui::Button(label)) actions::setUnknownAngle(s, true);
     } else if (r && r->snippets) {
       drawSnippetAngles(*r, ctx);
     } else if (r && r->engine == EngineKind::Skeleton) {
       ImGui::TextWrapped("The skeleton engine has no J(α) to scan: it reads the view from the poses it "
                          "reconstructs (the body's forward, up × hip line, averaged over the clip's frames).");
-      ImGui::Text("est. α = %.1f°   true α = %.1f°   error %.1f°", r->alphaUsedDeg, r->alphaTrueDeg,
-                  viewAngleErrorDeg(r->alphaUsedDeg, r->alphaTrueDeg));
+      ImGui::TextWrapped("est. α = %.1f° · true α = %.1f° · error %.1f°", r->alphaUsedDeg, r->alphaTrueDeg,
+                         viewAngleErrorDeg(r->alphaUsedDeg, r->alphaTrueDeg));
     } else if (compareEigen && compareEigen->base && compareEigen->base->search) {
       drawProfile(*compareEigen->base, *compareEigen->base->search, ctx, s.derived.compare());
     } else if (r && r->search) {

@@ -8,11 +8,14 @@
 #include <cstring>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "core/engine/reconstruction.h"
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
 #include "ui/panels/clip_view.h"
 #include "ui/panels/view_overlay.h"
+#include "ui/panels/walker_bounds.h"
 #include "ui/render/camera.h"
 #include "ui/render/figures.h"
 #include "ui/render/palette.h"
@@ -49,8 +52,8 @@ float strideLengthMm(const AppState& s) {
 // a small view it is shortened to end above the legend, or left out when too little is left
 // (the metrics strip and the joint-error panel still give the errors); in a narrow one its
 // title shortens so that the plate stays at the view's edge.
-void drawColourBarClearOf(ImDrawList* dl, const ImRect& caption, const ImRect& legend, ImVec2 p0, ImVec2 p1,
-                          ImVec2 size, float errorScale, float scale, bool presentation) {
+ImRect drawColourBarClearOf(ImDrawList* dl, const ImRect& caption, const ImRect& legend, const ImRect& walker, ImVec2 p0,
+                            ImVec2 p1, ImVec2 size, float errorScale, float scale, bool presentation) {
   const float pad = 10.0f * scale;
   const float barW = 14.0f * scale + ImGui::CalcTextSize("000 mm").x + 24.0f * scale;
   // A narrow view (1024×768's drawer layout) gets a plate as narrow as its scale, titled
@@ -60,15 +63,60 @@ void drawColourBarClearOf(ImDrawList* dl, const ImRect& caption, const ImRect& l
   const float plateW = std::max(barW, ImGui::CalcTextSize(title).x + 16.0f * scale);
   // Presentation mode has no metrics strip to point at instead: there a plate that would cover
   // 0.4 of a narrow view is left out rather than hide the walker.
-  if (presentation && plateW > 0.4f * size.x) return;
+  if (presentation && plateW > 0.4f * size.x) return kNothing;
   // Under the caption when a wide one (large text, a narrow view) reaches over to the bar.
   float top = p0.y + 78.0f * scale;
   if (caption.Max.x > p1.x - pad - plateW) top = std::max(top, caption.Max.y + pad);
   const float chrome = ImGui::GetTextLineHeight() + 24.0f * scale;  // title and padding around the bar
   float height = std::min(200.0f * scale, size.y * 0.35f);
   if (legend.Max.x > p1.x - pad - plateW) height = std::min(height, legend.Min.y - pad - top - chrome);
-  if (height < 50.0f * scale) return;
+  if (height < 50.0f * scale) return kNothing;
+  // The plate as drawErrorColourBar draws it; left out where it would cover the walker.
+  const ImRect plate(ImVec2(p1.x - pad - plateW, top),
+                     ImVec2(p1.x - pad, top + height + ImGui::GetTextLineHeight() + 24.0f * scale));
+  if (overlaps(plate, walker)) return kNothing;
   drawErrorColourBar(dl, ImVec2(p1.x - pad, top), height, errorScale, title, scale);
+  return plate;
+}
+
+// The walkers of the 3D view over their cycle on screen: the reconstruction and its ghost, every
+// engine's in compare mode, or the explorer's.
+ImRect walkerOnScreen(const AppState& s, const CameraMatrices& camera, ImVec2 p0, ImVec2 size, float scale) {
+  const float margin = 10.0f * scale;
+  const ReconBase* r = s.derived.recon();
+  const ReconDisplay* d = s.derived.display();
+  const bool ghost = s.view.overlays.ghost;
+  if (s.doc.mode == Mode::Explore) {
+    const ExploreResult* e = s.derived.explore();
+    return e ? walkerBounds3({&e->w}, camera, p0, size, margin) : ImRect(p0, p0);
+  }
+  if (!r) return {p0, p0};
+  ImRect bounds = walkerBounds3({ghost ? &r->wTrue : nullptr}, camera, p0, size, margin);
+  if (s.doc.compareEngines && s.derived.compare()) {
+    for (const auto& e : s.derived.compare()->engines)
+      if (e.display) bounds = unite(bounds, walkerBounds3({&e.display->w}, camera, p0, size, margin));
+  } else if (d) {
+    bounds = unite(bounds, walkerBounds3({&d->w}, camera, p0, size, margin));
+  }
+  return bounds;
+}
+
+// The camera with its picture moved down (a lens shift: the orbit stays as the user left it)
+// when the caption's title would cover the walker's head and there is room below: a small
+// view, a large UI scale.
+CameraMatrices clearOfCaption(const AppState& s, CameraMatrices camera, const char* title, ImVec2 p0, ImVec2 size,
+                              float scale) {
+  const float pad = 10.0f * scale;
+  const ImVec2 plate = smallCaptionPlate(title, scale, size.x - 2.0f * pad);
+  const ImRect caption(ImVec2(p0.x + pad, p0.y + pad), ImVec2(p0.x + pad + plate.x, p0.y + pad + plate.y));
+  const ImRect walker = walkerOnScreen(s, camera, p0, size, scale);
+  if (!overlaps(caption, walker)) return camera;
+  const float down = caption.Max.y + 1.0f - walker.Min.y;
+  const ImVec2 tab = legendTabSize(scale);
+  const float floorY = p0.y + size.y - pad - (walker.Min.x < p0.x + pad + tab.x ? tab.y : 0.0f);
+  if (walker.Max.y + down > floorY) return camera;  // no room below: as it is
+  camera.projection = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -2.0f * down / size.y, 0.0f)) * camera.projection;
+  return camera;
 }
 
 void drawClipAnnotations(const AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
@@ -205,13 +253,16 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       const float aspect = size.x / size.y;
       const OrbitCamera view = clipMode && s.clip ? clipViewCamera(s.view.camera, *s.clip, clipFrameAt(*s.clip, s.view.playback.cycles))
                                                   : s.view.camera;
-      ctx.renderer.render(target, scene, view.matrices(aspect));
+      const char* title = reconstruct ? "3D reconstruction" : "Gait space";
+      const float pad = 10.0f * ctx.scale;
+      const CameraMatrices camera =
+          clipMode || !drawn ? view.matrices(aspect) : clearOfCaption(s, view.matrices(aspect), title, p0, size, ctx.scale);
+      ctx.renderer.render(target, scene, camera);
       lastImage = {p0, size};
 
       ImDrawList* dl = ImGui::GetWindowDrawList();
       const ImVec2 p1{p0.x + size.x, p0.y + size.y};
       ctx.backdrop.image(target, {p0.x, p0.y});
-      const float pad = 10.0f * ctx.scale;
       if (clipMode) {
         if (drawn) drawClipAnnotations(s, ctx, p0, size);
       } else {
@@ -248,9 +299,10 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       if (reconstruct && r && s.doc.compareEngines)
         std::snprintf(sub, sizeof sub, "compare: the three engines %s α = %.1f°",
                       s.doc.recon.unknownAngle ? "with α unknown, true" : "at the known", r->alphaTrueDeg);
+      const ImRect walker = drawn ? walkerOnScreen(s, camera, p0, size, ctx.scale) : ImRect(p0, p0);
       const ImRect captionRect =
-          drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), reconstruct ? "3D reconstruction" : "Gait space", sub,
-                      s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
+          drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), title, sub,
+                      s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), walker);
       std::vector<LegendItem> legend;
       std::deque<std::string> legendLabels;  // the items point into it: a deque never moves them
       if (o.pointLights) {
@@ -285,9 +337,17 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
         if (reconstruct && s.doc.recon.unknownAngle)
           legend.push_back({palette::kCameraEstimate, "estimated camera (est. α)", true});
       }
-      const ImRect legendRect = drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale, size.x);
+      const ImRect legendRect = drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale, size.x, walker);
+      ImRect bar = kNothing;
       if (reconstruct && d && o.depthErrorColour && !o.pointLights && !s.doc.compareEngines)
-        drawColourBarClearOf(dl, captionRect, legendRect, p0, p1, size, errorScale, ctx.scale, s.view.presentation);
+        bar = drawColourBarClearOf(dl, captionRect, legendRect, walker, p0, p1, size, errorScale, ctx.scale,
+                                   s.view.presentation);
+      if (drawn) {
+        s.lastFrame.overlay("reconstruction.walker", toPanelRect(walker));
+        s.lastFrame.overlay("reconstruction.caption", toPanelRect(captionRect));
+        s.lastFrame.overlay("reconstruction.legend", toPanelRect(legendRect));
+        if (bar.GetWidth() > 0.0f) s.lastFrame.overlay("reconstruction.colour_bar", toPanelRect(bar));
+      }
       }
       if (!drawn) {
         const char* msg = clipMode && s.video && !s.doc.clip

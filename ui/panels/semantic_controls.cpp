@@ -10,6 +10,8 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/derived.h"
+#include "ui/widgets/flow.h"
+#include "ui/widgets/text_fit.h"
 
 namespace ew::ui {
 namespace {
@@ -76,7 +78,7 @@ void drawGaitSpace(const AppState& s, const SemanticAxes& axes, float scale) {
   const float w = ImGui::GetContentRegionAvail().x;
   const float h = std::min(w * 0.75f, 220.0f * scale);
   if (w < 80.0f * scale) return;
-  ImGui::TextDisabled("gait space e1 × e2 (SD units)");
+  textDisabledWrapped("gait space e1 × e2 (SD units)");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("dots: the population's walkers; orange: the explorer's walker\n"
                       "arrows: the direction each attribute grows in, 2.5 SD long when the axis lies\n"
@@ -151,11 +153,11 @@ void SemanticControls::drawExplore(AppState& s, float scale) {
   const SemanticAxes* axes = s.derived.semantic();
   if (!ImGui::CollapsingHeader("Semantic axes", ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (!axes) {
-    ImGui::TextDisabled("needs a loaded population of at least 3 walkers");
+    textDisabledWrapped("needs a loaded population of at least 3 walkers");
     return;
   }
   if (axes->axes.empty()) {
-    ImGui::TextDisabled("no attribute of these walkers is predictable from the walker");
+    textDisabledWrapped("no attribute of these walkers is predictable from the walker");
     return;
   }
   const auto row = [&](const SemanticAxisView& a) {
@@ -177,7 +179,7 @@ void SemanticControls::drawExplore(AppState& s, float scale) {
     const float highW = ImGui::CalcTextSize(a.axis.highWord.c_str()).x;
     const float valueW = ImGui::CalcTextSize(formatAttributeValue(a, value).c_str()).x;
     const bool inside = lowW + highW + valueW + 2.0f * pad + 24.0f * scale < width;
-    if (!inside) ImGui::TextDisabled("%s  ↔  %s", a.axis.lowWord.c_str(), a.axis.highWord.c_str());
+    if (!inside) textDisabledWrapped((a.axis.lowWord + "  ↔  " + a.axis.highWord).c_str());
     ImGui::SetNextItemWidth(width);
     const bool changed = ImGui::SliderFloat("##axis", &value, static_cast<float>(lo), static_cast<float>(hi), valueFormat.c_str());
     if (inside) {
@@ -207,31 +209,44 @@ void SemanticControls::drawExplore(AppState& s, float scale) {
   };
   const auto group = [&](const char* source, bool strong, const char* heading) {
     if (count(source, strong) == 0) return;
-    if (heading) ImGui::TextDisabled("%s", heading);
+    if (heading) textDisabledWrapped(heading);
     for (const auto& a : axes->axes)
       if (a.source == source && strongAxis(a) == strong) row(a);
   };
   group("manifest", true, "from the data's table");
   group("measured", true, "measured on the walkers");
-  if (count("manifest", false) + count("measured", false) > 0 &&
-      ImGui::TreeNode("weaker axes (R² < 0.5, or accuracy near chance)")) {
-    group("manifest", false, nullptr);
-    group("measured", false, nullptr);
-    ImGui::TreePop();
+  if (count("manifest", false) + count("measured", false) > 0) {
+    const bool open = ImGui::TreeNode("weaker axes");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("R² < 0.5, or accuracy near chance: a poor predictor of the attribute");
+    if (open) {
+      group("manifest", false, nullptr);
+      group("measured", false, nullptr);
+      ImGui::TreePop();
+    }
   }
   drawGaitSpace(s, *axes, scale);
 }
 
 void SemanticControls::drawFromView(const AppState& s, float scale) {
   const auto& rows = s.derived.attributesFromView();
-  if (rows.empty() || !ImGui::CollapsingHeader("Attributes from the 2D view", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (rows.empty()) return;
+  // (The header's label shortened where the panel is too narrow for it: a large UI scale.)
+  const float arrowW = ImGui::GetFontSize() + 3.0f * ImGui::GetStyle().FramePadding.x;
+  const char* header = arrowW + ImGui::CalcTextSize("Attributes from the 2D view").x <= ImGui::GetContentRegionAvail().x
+                           ? "Attributes from the 2D view###from_view"
+                           : "From the 2D view###from_view";
+  if (!ImGui::CollapsingHeader(header, ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::TextWrapped("Each attribute predicted from the reconstruction alone, from the walker's own 3D cycle, and its "
                      "true value; the axes learnt from the other subjects.");
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_SizingStretchProp;
-  if (!ImGui::BeginTable("from_view", 4, flags)) return;
+  // The column of values from the walker's own 3D cycle goes first when the panel is narrow:
+  // the 2D view's against the truth is the point.
+  const float numberW = ImGui::CalcTextSize("00.00").x + 2.0f * ImGui::GetStyle().CellPadding.x;
+  const bool with3d = ImGui::CalcTextSize("stride length").x + 3.0f * numberW <= 0.9f * ImGui::GetContentRegionAvail().x;
+  if (!ImGui::BeginTable("from_view", with3d ? 4 : 3, flags)) return;
   ImGui::TableSetupColumn("attribute", ImGuiTableColumnFlags_WidthStretch, 2.2f);
   ImGui::TableSetupColumn("2D view", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-  ImGui::TableSetupColumn("3D", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  if (with3d) ImGui::TableSetupColumn("3D", ImGuiTableColumnFlags_WidthStretch, 1.0f);
   ImGui::TableSetupColumn("true", ImGuiTableColumnFlags_WidthStretch, 1.0f);
   ImGui::TableHeadersRow();
   for (const auto& r : rows) {
@@ -241,13 +256,13 @@ void SemanticControls::drawFromView(const AppState& s, float scale) {
     const auto cell = [&](double v) {
       ImGui::TableNextColumn();
       if (r.categorical) {
-        ImGui::Text("%s", r.classes[v >= 0.5 ? 1 : 0].c_str());
+        ImGui::TextUnformatted(fitText(r.classes[v >= 0.5 ? 1 : 0], ImGui::GetContentRegionAvail().x).c_str());
       } else {
         ImGui::Text("%.*f", std::abs(v) >= 100 ? 0 : std::abs(v) >= 10 ? 1 : 2, v);
       }
     };
     cell(r.from2d);
-    cell(r.from3d);
+    if (with3d) cell(r.from3d);
     cell(r.truth);
   }
   ImGui::EndTable();

@@ -6,6 +6,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/widgets/text_fit.h"
 
 namespace ew::ui {
 
@@ -40,13 +41,18 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     ImGui::InputTextWithHint("##filter", "search subjects…", filter.data(), filter.size());
     const float factsHeight = 175.0f * ctx.scale;
     const float listHeight = std::max(80.0f * ctx.scale, ImGui::GetContentRegionAvail().y - factsHeight);
-    if (ImGui::BeginTable("walkers", 3,
+    // The source column only when the subject ids have room beside it (the facts below name it).
+    const float idW = ImGui::CalcTextSize("SYN000_0").x, sourceW = ImGui::CalcTextSize("synthetic").x;
+    const float hzW = ImGui::CalcTextSize("0.00").x;
+    const float cellPad = 2.0f * ImGui::GetStyle().CellPadding.x + ImGui::GetStyle().ScrollbarSize;
+    const bool withSource = idW + sourceW + hzW + 3.0f * cellPad <= ImGui::GetContentRegionAvail().x;
+    if (ImGui::BeginTable("walkers", withSource ? 3 : 2,
                           ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH,
                           ImVec2(0.0f, listHeight))) {
       ImGui::TableSetupScrollFreeze(0, 1);
       ImGui::TableSetupColumn("subject", ImGuiTableColumnFlags_WidthStretch);
-      ImGui::TableSetupColumn("source", ImGuiTableColumnFlags_WidthStretch);
-      ImGui::TableSetupColumn("Hz", ImGuiTableColumnFlags_WidthFixed, 44.0f * ctx.scale);
+      if (withSource) ImGui::TableSetupColumn("source", ImGuiTableColumnFlags_WidthStretch);
+      ImGui::TableSetupColumn("Hz", ImGuiTableColumnFlags_WidthFixed, hzW);
       ImGui::TableHeadersRow();
       {
         // The population's walkers, then the user's own trials inspected against the model.
@@ -66,8 +72,11 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
           ImGui::TableNextColumn();
           const bool selected = i == s.doc.walker;
           ImGui::PushID(i);
-          if (ImGui::Selectable(w.subject.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns))
+          // (A long id ends in "…" in a narrow list; hovering names it whole.)
+          const std::string shown = fitText(w.subject, ImGui::GetContentRegionAvail().x);
+          if (ImGui::Selectable(shown.c_str(), selected, ImGuiSelectableFlags_SpanAllColumns))
             actions::selectWalker(s, i);
+          if (shown != w.subject && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", w.subject.c_str());
           if (selected && scrollToSelection) {
             // The list's height counts rows added this frame only from the next one: scroll twice.
             ImGui::SetScrollHereY(0.5f);
@@ -77,8 +86,10 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
             }
           }
           ImGui::PopID();
-          ImGui::TableNextColumn();
-          ImGui::TextDisabled("%s", w.source.c_str());
+          if (withSource) {
+            ImGui::TableNextColumn();
+            ImGui::TextDisabled("%s", fitText(w.source, ImGui::GetContentRegionAvail().x).c_str());
+          }
           ImGui::TableNextColumn();
           ImGui::Text("%.2f", s.doc.factsAt(i)->strideHz);
         }
@@ -91,7 +102,7 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       const auto& f = *s.doc.selectedFacts();
       ImGui::Spacing();
       if (ImGui::BeginTable("facts", 2, ImGuiTableFlags_SizingStretchProp)) {
-        ImGui::TableSetupColumn("k", ImGuiTableColumnFlags_WidthFixed, 92.0f * ctx.scale);
+        ImGui::TableSetupColumn("k", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("from model").x);
         ImGui::TableSetupColumn("v", ImGuiTableColumnFlags_WidthStretch);
         fact("walker", w.id);
         fact("source", w.source == f.format || f.format.empty() ? w.source : w.source + " (" + f.format + ")");
@@ -131,7 +142,12 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       actions::open(s, {std::filesystem::path(openPath.data())});
       scrollToSelection = true;
     }
-    if (ImGui::SmallButton("Synthetic default population")) actions::open(s, {});
+    const char* back = ImGui::CalcTextSize("Synthetic default population").x + 2.0f * ImGui::GetStyle().FramePadding.x <=
+                               ImGui::GetContentRegionAvail().x
+                           ? "Synthetic default population"
+                           : "Default population";
+    if (ImGui::SmallButton(back)) actions::open(s, {});
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the synthetic default population (the program's own)");
   }
   ImGui::End();
 }

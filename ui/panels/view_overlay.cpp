@@ -30,26 +30,79 @@ std::string wrapAtSpaces(const ImFont* font, float size, const std::string& text
   return out + line;
 }
 
+// The folded legend: a small tab at the legend's corner.
+ImRect legendTab(ImVec2 bottomLeft, float scale) {
+  const float size = ImGui::GetFontSize() * 0.85f;
+  const ImVec2 text = ImGui::GetFont()->CalcTextSizeA(size, 1e9f, 0.0f, "legend");
+  const float pad = 5.0f * scale;
+  return {ImVec2(bottomLeft.x, bottomLeft.y - text.y - 2 * pad), ImVec2(bottomLeft.x + text.x + 2 * pad, bottomLeft.y)};
+}
+
+void drawLegendTab(ImDrawList* dl, const ImRect& tab, float scale) {
+  dl->AddRectFilled(tab.Min, tab.Max, IM_COL32(10, 12, 16, 170), 5.0f * scale);
+  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize() * 0.85f, ImVec2(tab.Min.x + 5.0f * scale, tab.Min.y + 5.0f * scale),
+              IM_COL32(200, 206, 215, 255), "legend");
+}
+
 }  // namespace
 
-ImRect drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
-                 ImFont* titleFont, float scale, ImVec2 viewSize) {
-  const float maxWidth = viewSize.x;
-  // A narrow view (a small window, a large UI scale) gets the caption in smaller type: it
-  // would otherwise cover the walker.
-  const bool narrow = maxWidth < 330.0f * scale;
-  ImFont* font = titleFont && !narrow ? titleFont : ImGui::GetFont();
-  ImFont* body = ImGui::GetFont();
+CaptionTitle captionTitle(const std::string& title, ImFont* titleFont, float scale, float viewWidth, bool small) {
+  CaptionTitle c;
+  c.font = small || !titleFont ? ImGui::GetFont() : titleFont;
   // (× FontGlobalScale: presentation mode draws narrow views' text smaller with it.)
-  const float titleSize = narrow ? ImGui::GetFontSize() * 1.1f : font->FontSize * ImGui::GetIO().FontGlobalScale;
+  c.size = small ? ImGui::GetFontSize() * 1.1f : c.font->FontSize * ImGui::GetIO().FontGlobalScale;
+  const float wrap = std::max(40.0f * scale, viewWidth - 16.0f * scale);
+  c.lines = wrapAtSpaces(c.font, c.size, title, wrap);
+  c.extent = c.font->CalcTextSizeA(c.size, 1e9f, 0.0f, c.lines.c_str());
+  return c;
+}
+
+ImVec2 smallCaptionPlate(const std::string& title, float scale, float viewWidth) {
+  const ImVec2 t = captionTitle(title, nullptr, scale, viewWidth, true).extent;
+  return {t.x + 16.0f * scale, t.y + 18.0f * scale};
+}
+
+ImVec2 legendTabSize(float scale) {
+  const ImRect tab = legendTab(ImVec2(0.0f, 0.0f), scale);
+  return {tab.GetWidth(), tab.GetHeight()};
+}
+
+bool overlaps(const ImRect& a, const ImRect& b) {
+  return a.Min.x < b.Max.x && b.Min.x < a.Max.x && a.Min.y < b.Max.y && b.Min.y < a.Max.y;
+}
+
+ImRect unite(const ImRect& a, const ImRect& b) {
+  if (a.Min.x >= a.Max.x || a.Min.y >= a.Max.y) return b;
+  if (b.Min.x >= b.Max.x || b.Min.y >= b.Max.y) return a;
+  ImRect u = a;
+  u.Add(b);
+  return u;
+}
+
+ImRect drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
+                 ImFont* titleFont, float scale, ImVec2 viewSize, const ImRect& keepClear) {
+  const float maxWidth = viewSize.x;
+  // A narrow view (a small window, a large UI scale) gets the caption in smaller type, and so
+  // does one where the large title would cover the walker.
+  const bool narrow = maxWidth < 330.0f * scale;
+  ImFont* body = ImGui::GetFont();
   const float bodySize = ImGui::GetFontSize() * (narrow ? 0.8f : 1.0f);
   const float pad = 8.0f * scale;
   const float wrap = std::max(40.0f * scale, maxWidth - 2 * pad);  // whole words onto the next line
-  const std::string titleLines = wrapAtSpaces(font, titleSize, title, wrap);
+  CaptionTitle tt = captionTitle(title, titleFont, scale, maxWidth, narrow || !titleFont);
+  const auto plateOf = [&](ImVec2 sub) {
+    return ImRect(at, ImVec2(at.x + std::max(tt.extent.x, sub.x) + 2 * pad,
+                             at.y + tt.extent.y + sub.y + 2 * pad + 2.0f * scale));
+  };
+  if (overlaps(plateOf(ImVec2(0.0f, 0.0f)), keepClear) && !narrow && titleFont)
+    tt = captionTitle(title, titleFont, scale, maxWidth, true);
+  const ImVec2 t = tt.extent;
+  ImFont* font = tt.font;
+  const float titleSize = tt.size;
+  const std::string& titleLines = tt.lines;
   const std::string subtitleLines = wrapAtSpaces(body, bodySize, subtitle, wrap);
-  const ImVec2 t = font->CalcTextSizeA(titleSize, 1e9f, 0.0f, titleLines.c_str());
   ImVec2 s = body->CalcTextSizeA(bodySize, 1e9f, 0.0f, subtitleLines.c_str());
-  const bool withSubtitle = t.y + s.y + 2 * pad <= 0.3f * viewSize.y;
+  const bool withSubtitle = t.y + s.y + 2 * pad <= 0.3f * viewSize.y && !overlaps(plateOf(s), keepClear);
   if (!withSubtitle) s = ImVec2(0.0f, 0.0f);
   const ImVec2 plate{std::max(t.x, s.x) + 2 * pad, t.y + s.y + 2 * pad + 2.0f * scale};
   dl->AddRectFilled(at, ImVec2(at.x + plate.x, at.y + plate.y), IM_COL32(10, 12, 16, 150), 6.0f * scale);
@@ -57,11 +110,14 @@ ImRect drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const st
   if (withSubtitle)
     dl->AddText(body, bodySize, ImVec2(at.x + pad, at.y + pad + t.y + 2.0f * scale), IM_COL32(150, 160, 175, 255),
                 subtitleLines.c_str());
-  return {at, ImVec2(at.x + plate.x, at.y + plate.y)};
+  const ImRect rect(at, ImVec2(at.x + plate.x, at.y + plate.y));
+  if (!withSubtitle && !subtitle.empty() && ImGui::IsMouseHoveringRect(rect.Min, rect.Max, false))
+    ImGui::SetTooltip("%s", subtitle.c_str());
+  return rect;
 }
 
 ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale,
-                  float viewWidth) {
+                  float viewWidth, const ImRect& keepClear) {
   float width = 0.0f;
   for (const auto& it : items) width = std::max(width, ImGui::CalcTextSize(it.label.c_str()).x);
   const float natural = width + 42.0f * scale;
@@ -89,6 +145,13 @@ ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem>
   const float h = row * static_cast<float>(items.size()) + 2 * pad;
   const ImVec2 tl{bottomLeft.x, bottomLeft.y - h};
   const ImVec2 br{tl.x + width + 2 * pad + 26.0f * scale, bottomLeft.y};
+  if (overlaps(ImRect(tl, br), keepClear)) {
+    const ImRect tab = legendTab(bottomLeft, scale / shrink);
+    if (!ImGui::IsMouseHoveringRect(tab.Min, tab.Max, false)) {
+      drawLegendTab(dl, tab, scale / shrink);
+      return tab;
+    }
+  }
   dl->AddRectFilled(tl, br, IM_COL32(10, 12, 16, 150), 6.0f * scale);
   float y = tl.y + pad;
   for (const auto& it : items) {

@@ -1,0 +1,68 @@
+#include "ui/widgets/flow.h"
+
+#include <imgui.h>
+
+#include <string>
+
+namespace ew::ui {
+
+namespace {
+
+// The box alone, then the label wrapped at the panel's edge; true when either was clicked.
+template <class Box>
+bool boxWithWrappedLabel(const char* label, Box box) {
+  ImGui::PushID(label);
+  bool pressed = box("##box");
+  ImGui::PopID();
+  ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextUnformatted(label);
+  ImGui::PopTextWrapPos();
+  return ImGui::IsItemClicked() || pressed;
+}
+
+}  // namespace
+
+float toggleWidth(const char* label) {
+  return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
+}
+
+void sameLineOrWrap(float width) {
+  ImGui::SameLine();
+  if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
+}
+
+bool checkboxWrapped(const char* label, bool* value) {
+  if (toggleWidth(label) <= ImGui::GetContentRegionAvail().x) return ImGui::Checkbox(label, value);
+  bool v = *value;
+  const bool clicked = boxWithWrappedLabel(label, [&](const char* id) { return ImGui::Checkbox(id, &v); });
+  if (clicked) *value = !*value;
+  return clicked;
+}
+
+bool radioWrapped(const char* label, bool active) {
+  if (toggleWidth(label) <= ImGui::GetContentRegionAvail().x) return ImGui::RadioButton(label, active);
+  return boxWithWrappedLabel(label, [&](const char* id) { return ImGui::RadioButton(id, active); });
+}
+
+bool radioRow(const char* const* labels, int count, int* value) {
+  bool changed = false;
+  for (int i = 0; i < count; ++i) {
+    if (i > 0) sameLineOrWrap(toggleWidth(labels[i]));
+    if (radioWrapped(labels[i], *value == i) && *value != i) {
+      *value = i;
+      changed = true;
+    }
+  }
+  return changed;
+}
+
+void textDisabledWrapped(const char* text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextUnformatted(text);
+  ImGui::PopTextWrapPos();
+  ImGui::PopStyleColor();
+}
+
+}  // namespace ew::ui

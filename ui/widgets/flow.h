@@ -1,0 +1,22 @@
+#pragma once
+// Widgets for panels that must hold at any width (issue 18: a small window or a large UI
+// scale cuts no label at the panel's edge). Toggles go on the same line while they fit and
+// wrap onto the next otherwise; a label too long for the panel wraps between words.
+
+namespace ew::ui {
+
+// The width of a radio button or checkbox with its label.
+float toggleWidth(const char* label);
+// Before an item `width` wide that would follow the previous one: the same line when it fits,
+// else the next.
+void sameLineOrWrap(float width);
+// A checkbox or radio button whose label, when the panel is too narrow for it on one line,
+// wraps between words beside the box (clicking the label still toggles).
+bool checkboxWrapped(const char* label, bool* value);
+bool radioWrapped(const char* label, bool active);
+// Radio buttons of `count` labels choosing *value, laid out on as many lines as the panel needs.
+bool radioRow(const char* const* labels, int count, int* value);
+// Greyed text that wraps between words at the panel's edge.
+void textDisabledWrapped(const char* text);
+
+}  // namespace ew::ui
