@@ -47,42 +47,47 @@ float strideLengthMm(const AppState& s) {
   return 1400.0f;
 }
 
-// The clip's 3D view: where the estimated camera stands, and what is estimated.
-// The depth-error colour bar at the top right, under the caption, kept clear of the legend: in
-// a small view it is shortened to end above the legend, or left out when too little is left
-// (the metrics strip and the joint-error panel still give the errors); in a narrow one its
-// title shortens so that the plate stays at the view's edge.
+// The depth-error colour bar at the top right (or left), under the caption, kept clear of the
+// legend and the walker: in a small view it is shortened to end above the legend, or left out
+// when too little is left (the metrics strip and the joint-error panel still give the errors);
+// in a narrow one its title shortens so that the plate stays at the view's edge.
 ImRect drawColourBarClearOf(ImDrawList* dl, const ImRect& caption, const ImRect& legend, const ImRect& walker, ImVec2 p0,
                             ImVec2 p1, ImVec2 size, float errorScale, float scale, bool presentation) {
   const float pad = 10.0f * scale;
   const float barW = 14.0f * scale + ImGui::CalcTextSize("000 mm").x + 24.0f * scale;
   // A narrow view (1024×768's drawer layout) gets a plate as narrow as its scale, titled
-  // "RMS", which keeps clear of the walker in the middle of the view.
-  const char* title = ImGui::CalcTextSize("depth error (RMS)").x + 16.0f * scale > 0.3f * size.x ? "RMS"
-                                                                                               : "depth error (RMS)";
-  const float plateW = std::max(barW, ImGui::CalcTextSize(title).x + 16.0f * scale);
-  // Presentation mode has no metrics strip to point at instead: there a plate that would cover
-  // 0.4 of a narrow view is left out rather than hide the walker.
-  if (presentation && plateW > 0.4f * size.x) return kNothing;
-  // Under the caption when a wide one (large text, a narrow view) reaches over to the bar.
-  float top = p0.y + 78.0f * scale;
-  if (caption.Max.x > p1.x - pad - plateW) top = std::max(top, caption.Max.y + pad);
+  // "RMS", which keeps clear of the walker in the middle of the view; so does a view where the
+  // wider plate would touch the walker.
+  const bool longFits = ImGui::CalcTextSize("depth error (RMS)").x + 16.0f * scale <= 0.3f * size.x;
   const float chrome = ImGui::GetTextLineHeight() + 24.0f * scale;  // title and padding around the bar
-  float height = std::min(200.0f * scale, size.y * 0.35f);
-  if (legend.Max.x > p1.x - pad - plateW) height = std::min(height, legend.Min.y - pad - top - chrome);
-  if (height < 50.0f * scale) return kNothing;
-  // The plate as drawErrorColourBar draws it; left out where it would cover the walker.
-  const ImRect plate(ImVec2(p1.x - pad - plateW, top),
-                     ImVec2(p1.x - pad, top + height + ImGui::GetTextLineHeight() + 24.0f * scale));
-  if (overlaps(plate, walker)) return kNothing;
-  drawErrorColourBar(dl, ImVec2(p1.x - pad, top), height, errorScale, title, scale);
-  return plate;
+  // At the right edge, else at the left (the walker stands off-centre or swings an arm out),
+  // each under the caption and above the legend where they reach over; left out where neither
+  // keeps clear of the walker.
+  for (const bool right : {true, false}) {
+    for (const char* title : {longFits ? "depth error (RMS)" : "RMS", "RMS"}) {
+      const float plateW = std::max(barW, ImGui::CalcTextSize(title).x + 16.0f * scale);
+      // Presentation mode has no metrics strip to point at instead: there a plate that would
+      // cover 0.4 of a narrow view is left out rather than hide the walker.
+      if (presentation && plateW > 0.4f * size.x) continue;
+      const float x0 = right ? p1.x - pad - plateW : p0.x + pad, x1 = x0 + plateW;
+      float top = p0.y + 78.0f * scale;
+      if (caption.Max.x > x0 && caption.Min.x < x1) top = std::max(top, caption.Max.y + pad);
+      float height = std::min(200.0f * scale, size.y * 0.35f);
+      if (legend.Max.x > x0 && legend.Min.x < x1) height = std::min(height, legend.Min.y - pad - top - chrome);
+      if (height < 50.0f * scale) continue;
+      const ImRect plate(ImVec2(x0, top), ImVec2(x1, top + height + chrome));
+      if (overlaps(plate, walker)) continue;
+      drawErrorColourBar(dl, ImVec2(x1, top), height, errorScale, title, scale);
+      return plate;
+    }
+  }
+  return kNothing;
 }
 
 // The walkers of the 3D view over their cycle on screen: the reconstruction and its ghost, every
 // engine's in compare mode, or the explorer's.
 ImRect walkerOnScreen(const AppState& s, const CameraMatrices& camera, ImVec2 p0, ImVec2 size, float scale) {
-  const float margin = 10.0f * scale;
+  const float margin = 6.0f * scale;  // the joints' spheres (35 mm) at a walker 1.7 m tall in ~300 px
   const ReconBase* r = s.derived.recon();
   const ReconDisplay* d = s.derived.display();
   const bool ghost = s.view.overlays.ghost;
@@ -119,6 +124,7 @@ CameraMatrices clearOfCaption(const AppState& s, CameraMatrices camera, const ch
   return camera;
 }
 
+// The clip's 3D view: where the estimated camera stands, and what is estimated.
 void drawClipAnnotations(const AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float pad = 10.0f * ctx.scale;

@@ -104,7 +104,10 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       if (ImGui::BeginTable("facts", 2, ImGuiTableFlags_SizingStretchProp)) {
         ImGui::TableSetupColumn("k", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("from model").x);
         ImGui::TableSetupColumn("v", ImGuiTableColumnFlags_WidthStretch);
-        fact("walker", w.id);
+        // (Spaced around its "/" so that a narrow panel breaks the id there, not mid-word.)
+        std::string id = w.id;
+        if (const auto slash = id.find('/'); slash != std::string::npos) id.replace(slash, 1, " / ");
+        fact("walker", id);
         fact("source", w.source == f.format || f.format.empty() ? w.source : w.source + " (" + f.format + ")");
         char buf[128];
         if (f.speedMps) {

@@ -1,0 +1,103 @@
+// Issue 18's layout matrix, in the real viewer: at the teaching sizes where the layout is
+// tightest (a small window, a large UI scale, the projector theme) no window or table column
+// has content cut at its edge, and no caption, legend or colour bar covers the walker of its
+// view — in both modes, with every drawer tab shown in turn, and in presentation mode. The
+// viewer reports what it laid out (export_state's layout.overflow and layout.overlays); the
+// whole matrix's screenshots are docs/screenshots/layout_matrix_*.png
+// (docs/tools/layout_contact_sheet.sh).
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/gui/gui_run.h"
+
+namespace ew::test::gui {
+namespace {
+
+using GuiLayoutMatrix = GuiTest;
+
+struct Cell {
+  const char* size;
+  const char* scale;
+  const char* theme;
+};
+
+// [x, y, w, h] rectangles.
+bool overlap(const nlohmann::json& a, const nlohmann::json& b) {
+  const double ax = a[0], ay = a[1], aw = a[2], ah = a[3], bx = b[0], by = b[1], bw = b[2], bh = b[3];
+  return ax < bx + bw && bx < ax + aw && ay < by + bh && by < ay + ah;
+}
+
+// What one exported state shows: nothing cut, nothing over a walker.
+void expectHolds(const nlohmann::json& state, const std::string& where) {
+  const auto& layout = state.at("layout");
+  for (const auto& [window, px] : layout.at("overflow").items())
+    ADD_FAILURE() << where << ": " << window << " is cut by " << px.get<double>() << " px";
+  const auto& o = layout.at("overlays");
+  for (const char* view : {"input", "reconstruction"}) {
+    const std::string v(view);
+    // Both views draw a walker in every state here: its rectangle must be there to check against.
+    if (!o.contains(v + ".walker")) {
+      ADD_FAILURE() << where << ": no " << v << ".walker reported";
+      continue;
+    }
+    for (const char* what : {"caption", "legend", "colour_bar"}) {
+      const std::string key = v + "." + what;
+      if (o.contains(key)) {
+        EXPECT_FALSE(overlap(o.at(key), o.at(v + ".walker"))) << where << ": the " << key << " covers the walker";
+      }
+    }
+  }
+}
+
+TEST_F(GuiLayoutMatrix, NothingIsCutAndNothingCoversTheWalker) {
+  // (The tests' X screen is 1920×1080: the 3840×2160 cells are in the contact sheets.)
+  const std::vector<Cell> cells = {{"1024x768", "2", "projector"},
+                                   {"1280x720", "2", "dark"},
+                                   {"1366x768", "1", "light"},
+                                   {"1920x1080", "1.5", "projector"}};
+  const std::vector<std::string> tabs = {"subjects", "controls", "coefficients", "errors", "view", "log"};
+  for (const Cell& c : cells) {
+    const std::string cell = std::string(c.size) + " scale " + c.scale + " " + c.theme;
+    std::string script = R"([{"set_theme": ")" + std::string(c.theme) +
+                         R"("}, {"select_subject": "SYN005"}, {"set_angle": 45}, {"play": false}, {"set_phase": 0.3})";
+    std::vector<std::string> states;
+    for (const char* mode : {"reconstruct", "explore"}) {
+      script += std::string(R"(, {"set_mode": ")") + mode + R"("})";
+      for (const auto& tab : tabs) {
+        states.push_back(std::string(mode) + "_" + tab);
+        script += R"(, {"drawer_tab": ")" + tab + R"("}, {"wait_frames": 2}, {"export_state": ")" +
+                  (dir / (states.back() + ".json")).string() + R"("})";
+      }
+    }
+    states.push_back("presentation");
+    script += R"(, {"set_mode": "reconstruct"}, {"presentation": true}, {"wait_frames": 2}, {"export_state": ")" +
+              (dir / "presentation.json").string() + R"("}])";
+    const RunResult r = runViewer(dir, std::string("--size ") + c.size + " --ui-scale " + c.scale + " --script " +
+                                           quote(writeScript(dir, script).string()));
+    ASSERT_EQ(r.exitCode, 0) << cell << "\n" << r.err;
+    for (const auto& s : states) expectHolds(nlohmann::json::parse(readAll(dir / (s + ".json"))), cell + ", " + s);
+  }
+}
+
+// A UI scale the window cannot hold is limited (to keep 560×384 of the UI's pixels), and the
+// state says so; at a size that holds it, it is not.
+TEST_F(GuiLayoutMatrix, AScaleTooLargeForTheWindowIsLimited) {
+  const auto script = writeScript(dir, R"([{"export_state": ")" + (dir / "small.json").string() + R"("}])");
+  const RunResult r = runViewer(dir, "--size 1024x768 --ui-scale 2 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto small = nlohmann::json::parse(readAll(dir / "small.json"));
+  EXPECT_EQ(small["view"]["ui_scale"], 2.0);
+  EXPECT_EQ(small["view"]["ui_scale_limit"], 1.75);  // ⌊1024 / 560 × 8⌋ / 8
+  const auto script2 = writeScript(dir, R"([{"export_state": ")" + (dir / "large.json").string() + R"("}])");
+  const RunResult r2 = runViewer(dir, "--size 1920x1080 --ui-scale 2 --script " + quote(script2.string()));
+  ASSERT_EQ(r2.exitCode, 0) << r2.err;
+  EXPECT_TRUE(nlohmann::json::parse(readAll(dir / "large.json"))["view"]["ui_scale_limit"].is_null());
+}
+
+}  // namespace
+}  // namespace ew::test::gui
