@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include "ui/app/app_state.h"
@@ -92,12 +93,13 @@ CameraMatrices inputViewCamera(float aspect) {
 namespace {
 
 // The 2D view's framing: the standard one (2.35 m high, the same for every walker, so that
-// walkers compare by size), unless the caption's title or the folded legend would then cover
-// the walker's trail (a small view, a large UI scale): then the trail is framed between them.
-// `top` and `bottom` are the plates (width, height) at the view's top-left and bottom-left;
-// `margin` the pixels kept around the trail (walkerBounds' margin).
-CameraMatrices inputFraming(const Eigen::MatrixXd& trail, ImVec2 size, float pad, ImVec2 top, ImVec2 bottom,
-                            float margin) {
+// walkers compare by size), unless the caption's title or the legend would then cover the
+// walker's trail (a small view, a large UI scale): then the trail is framed clear of them.
+// `top` and `bottom` are the plates (width, height) at the view's top-left and bottom-left
+// (the legend, or its folded tab); `margin` the pixels kept around the trail (trailBounds2's).
+// Nothing when the plates leave too little room between them.
+std::optional<CameraMatrices> inputFraming(const Eigen::MatrixXd& trail, ImVec2 size, float pad, ImVec2 top,
+                                           ImVec2 bottom, float margin) {
   const float aspect = size.x / size.y;
   double uLo = 1e9, uHi = -1e9, vLo = 1e9, vHi = -1e9;
   for (Eigen::Index i = 0; i < trail.rows(); ++i)
@@ -112,13 +114,15 @@ CameraMatrices inputFraming(const Eigen::MatrixXd& trail, ImVec2 size, float pad
   const float head = 0.5f * size.y - static_cast<float>(vHi - kViewCentreVMm) * pxPerMm - margin;
   const float feet = 0.5f * size.y - static_cast<float>(vLo - kViewCentreVMm) * pxPerMm + margin;
   const bool underTitle = left < pad + top.x && head < pad + top.y;
-  const bool overTab = left < pad + bottom.x && feet > size.y - pad - bottom.y;
-  if (!underTitle && !overTab) return inputViewCamera(aspect);
-  // Room kept only for the plate the walker would meet (the ground then comes near the view's
-  // bottom, or the head near its top).
-  const float topPx = underTitle ? pad + top.y + margin + 1.0f : std::max(margin, head);
-  const float bottomPx = overTab ? size.y - pad - bottom.y - margin - 1.0f : size.y - margin - 4.0f * pad / 10.0f;
-  if (bottomPx - topPx < 0.4f * size.y) return inputViewCamera(aspect);  // no room to frame it: as it is
+  const bool overLegend = left < pad + bottom.x && feet > size.y - pad - bottom.y;
+  if (!underTitle && !overLegend) return inputViewCamera(aspect);
+  // Where the trail's top and bottom go (the margin inside): room is kept only for the plate the
+  // walker would meet (the ground then comes nearer the view's bottom; the head nearer the top
+  // when the walker stands clear of the caption, else where it was).
+  const bool besideTitle = left >= pad + top.x;  // (and stays so: the framing only shrinks the trail)
+  const float topPx = underTitle ? pad + top.y + margin + 1.0f : besideTitle ? margin + pad : std::max(margin, head + margin);
+  const float bottomPx = overLegend ? size.y - pad - bottom.y - margin - 1.0f : size.y - margin - 4.0f * pad / 10.0f;
+  if (bottomPx - topPx < 0.4f * size.y) return std::nullopt;  // no room to frame it
   const float heightMm = std::max(kViewHeightMm, static_cast<float>(vHi - vLo) * size.y / (bottomPx - topPx));
   const float mmPerPx = heightMm / size.y;
   const float centre = static_cast<float>(vHi) - (0.5f * size.y - topPx) * mmPerPx;
@@ -231,16 +235,15 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
   } else if (!reconstruct && e) {
     extent = e->projectedTrail;
   }
-  const float margin = 8.0f * ctx.scale;  // around the walker, for its joints' discs
-  const CameraMatrices camera =
-      extent.size() > 0 ? inputFraming(extent, size, pad, smallCaptionPlate("2D input", ctx.scale, size.x - 2.0f * pad),
-                                       legendTabSize(ctx.scale), margin)
-                        : inputViewCamera(aspect);
-  ctx.renderer.render(target, scene, camera);
-
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  const ImVec2 p1{p0.x + size.x, p0.y + size.y};
-  ctx.backdrop.image(target, {p0.x, p0.y});
+  std::vector<LegendItem> legend{{palette::kInputPoint, "input joints (u, v)", false}};
+  const bool anyEstimated =
+      reconstruct && r && std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(), [](bool b) { return b; });
+  if (anyEstimated) legend.push_back({palette::kModelEstimated, "model-estimated (not measured)", false});
+  if (reconstruct && o.reprojection && !o.pointLights) {
+    legend.push_back({palette::kReconRight,
+                      s.doc.recon.unknownAngle ? "reconstruction seen at est. α" : "reconstruction seen at α", true});
+    legend.push_back({palette::kError, "2D residual", true});
+  }
   char sub[160];
   if (reconstruct) {
     if (r && r->engine == EngineKind::Snippet)
@@ -254,20 +257,37 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
   } else {
     std::snprintf(sub, sizeof sub, "the synthesised walker projected at α = %.1f°", s.doc.recon.alphaDeg);
   }
+  // The walker framed clear of the whole caption and the whole legend when that shrinks it by a
+  // fifth at most; else of the caption's title alone (its subtitle then goes) and the legend;
+  // else of the title and the legend folded into its tab.
+  const float margin = 8.0f * ctx.scale;  // around the walker, for its joints' discs
+  const ImVec2 captionPlate =
+      drawCaption(nullptr, ImVec2(0.0f, 0.0f), "2D input", sub, s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y))
+          .GetSize();
+  const ImVec2 titlePlate = smallCaptionPlate("2D input", ctx.scale, size.x - 2.0f * pad);
+  const ImVec2 legendPlate = legendSize(legend, ctx.scale, size.x);
+  CameraMatrices camera = inputViewCamera(aspect);
+  if (extent.size() > 0) {
+    const auto framed = [&](ImVec2 top, ImVec2 bottom, float leastScale) -> std::optional<CameraMatrices> {
+      auto c = inputFraming(extent, size, pad, top, bottom, margin);
+      if (c && c->projection[1][1] < leastScale * 2.0f / kViewHeightMm) return std::nullopt;
+      return c;
+    };
+    auto chosen = framed(captionPlate, legendPlate, 0.8f);
+    if (!chosen) chosen = framed(titlePlate, legendPlate, 0.8f);
+    if (!chosen) chosen = framed(titlePlate, legendTabSize(ctx.scale), 0.0f);
+    camera = chosen.value_or(camera);
+  }
+  ctx.renderer.render(target, scene, camera);
+
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  const ImVec2 p1{p0.x + size.x, p0.y + size.y};
+  ctx.backdrop.image(target, {p0.x, p0.y});
   // What the caption, the legend and the scale bar keep clear of: the input over its cycle and
   // the reconstruction drawn over it.
   const ImRect walker = extent.size() > 0 ? trailBounds2(extent, camera, p0, size, margin) : ImRect(p0, p0);
   const ImRect caption = drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input", sub, s.fonts.large, ctx.scale,
                                      ImVec2(size.x - 2.0f * pad, size.y), walker);
-  std::vector<LegendItem> legend{{palette::kInputPoint, "input joints (u, v)", false}};
-  const bool anyEstimated =
-      reconstruct && r && std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(), [](bool b) { return b; });
-  if (anyEstimated) legend.push_back({palette::kModelEstimated, "model-estimated (not measured)", false});
-  if (reconstruct && o.reprojection && !o.pointLights) {
-    legend.push_back({palette::kReconRight,
-                      s.doc.recon.unknownAngle ? "reconstruction seen at est. α" : "reconstruction seen at α", true});
-    legend.push_back({palette::kError, "2D residual", true});
-  }
   const ImRect legendRect = drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale, size.x, walker);
   // The scale bar at the bottom right, when it has room there beside the legend and the walker.
   const float halfMetre = 500.0f * camera.projection[1][1] * 0.5f * size.y;  // 500 mm in the framing's pixels

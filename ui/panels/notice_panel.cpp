@@ -133,14 +133,21 @@ void NoticePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& ro
     // Title and reason share what the buttons leave; the title gets at most half of it.
     const float room =
         std::max(0.0f, ImGui::GetContentRegionAvail().x - buttonsW - style.ItemSpacing.x);
-    const std::string title = fitText(n.title + ":", 0.5f * room);
+    // Where the title itself would be cut (a narrow drawer), just what kind of notice it is:
+    // hovering, or Details…, tells the rest.
+    const bool cramped = ImGui::CalcTextSize((n.title + ":").c_str()).x > 0.5f * room;
     ImGui::AlignTextToFramePadding();
-    ImGui::TextColored(accent, "%s", title.c_str());
-    const float used = ImGui::GetItemRectSize().x + style.ItemSpacing.x;
-    ImGui::SameLine();
-    const std::string reason = fitText(shortReason(n.detail), std::max(0.0f, room - used));
-    ImGui::TextColored(kDetailText, "%s", reason.c_str());
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", n.fullText.c_str());
+    if (cramped) {
+      ImGui::TextColored(accent, "%s", n.error ? "Error" : "Warning");
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", n.fullText.c_str());
+    } else {
+      ImGui::TextColored(accent, "%s", (n.title + ":").c_str());
+      const float used = ImGui::GetItemRectSize().x + style.ItemSpacing.x;
+      ImGui::SameLine();
+      const std::string reason = fitText(shortReason(n.detail), std::max(0.0f, room - used));
+      ImGui::TextColored(kDetailText, "%s", reason.c_str());
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", n.fullText.c_str());
+    }
     ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - buttonsW + style.ItemSpacing.x);
     std::string clicked;
     for (std::size_t i = 0; i < buttons.size(); ++i) {

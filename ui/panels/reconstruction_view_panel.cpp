@@ -106,20 +106,77 @@ ImRect walkerOnScreen(const AppState& s, const CameraMatrices& camera, ImVec2 p0
   return bounds;
 }
 
-// The camera with its picture moved down (a lens shift: the orbit stays as the user left it)
-// when the caption's title would cover the walker's head and there is room below: a small
-// view, a large UI scale.
-CameraMatrices clearOfCaption(const AppState& s, CameraMatrices camera, const char* title, ImVec2 p0, ImVec2 size,
-                              float scale) {
+// The 3D view's legend: what it draws, in its colours. Labels made here live in `labels` (the
+// items point into it: a deque never moves them).
+std::vector<LegendItem> reconstructionLegend(const AppState& s, std::deque<std::string>& labels) {
+  const auto& o = s.view.overlays;
+  const bool reconstruct = s.doc.mode == Mode::Reconstruct;
+  const ReconBase* r = s.derived.recon();
+  std::vector<LegendItem> legend;
+  if (o.pointLights) {
+    legend.push_back({palette::kInputPoint, reconstruct ? "reconstructed joints (point-lights)" : "joints (point-lights)", false});
+  } else if (reconstruct && s.doc.compareEngines && s.derived.compare()) {
+    for (const auto& e : s.derived.compare()->engines) {
+      const auto k = static_cast<std::size_t>(e.engine);
+      if (!s.doc.compareShown[k]) continue;
+      char label[96];
+      if (e.display)
+        std::snprintf(label, sizeof label, "%s: MPJPE %.1f mm", engineName(e.engine), e.display->mpjpeMm);
+      else
+        std::snprintf(label, sizeof label, "%s: no answer", engineName(e.engine));
+      labels.emplace_back(label);
+      legend.push_back({palette::kEngineRight[k], labels.back().c_str(), false});
+    }
+    if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
+  } else if (reconstruct) {
+    legend.push_back({palette::kReconRight, "reconstruction (right side darker)", false});
+    if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
+    if (o.errorLines) legend.push_back({palette::kError, "3D error per joint", true});
+    if (reconstruct && r &&
+        std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(),
+                    [](bool b) { return b; }))
+      legend.push_back(
+          {palette::kModelEstimated, "model-estimated joint (not measured)", false});
+  } else {
+    legend.push_back({palette::kReconRight, "synthesised walker", false});
+  }
+  if (o.cameraGlyph) {
+    legend.push_back({palette::kCamera, "camera of the 2D view", true});
+    if (reconstruct && s.doc.recon.unknownAngle)
+      legend.push_back({palette::kCameraEstimate, "estimated camera (est. α)", true});
+  }
+  return legend;
+}
+
+// The camera with its picture moved (a lens shift: the orbit stays as the user left it) down
+// when the caption's title would cover the walker's head, or up when the legend would cover its
+// feet, where there is room (a small view, a large UI scale). Else as it is: the legend then
+// folds into its tab.
+CameraMatrices clearOfOverlays(const AppState& s, CameraMatrices camera, const char* title, ImVec2 legendPlate,
+                               ImVec2 p0, ImVec2 size, float scale) {
   const float pad = 10.0f * scale;
   const ImVec2 plate = smallCaptionPlate(title, scale, size.x - 2.0f * pad);
   const ImRect caption(ImVec2(p0.x + pad, p0.y + pad), ImVec2(p0.x + pad + plate.x, p0.y + pad + plate.y));
+  const float bottom = p0.y + size.y - pad;
+  const ImRect legend(ImVec2(p0.x + pad, bottom - legendPlate.y), ImVec2(p0.x + pad + legendPlate.x, bottom));
   const ImRect walker = walkerOnScreen(s, camera, p0, size, scale);
-  if (!overlaps(caption, walker)) return camera;
-  const float down = caption.Max.y + 1.0f - walker.Min.y;
-  const ImVec2 tab = legendTabSize(scale);
-  const float floorY = p0.y + size.y - pad - (walker.Min.x < p0.x + pad + tab.x ? tab.y : 0.0f);
-  if (walker.Max.y + down > floorY) return camera;  // no room below: as it is
+  const auto shifted = [&](float down) {
+    return ImRect(ImVec2(walker.Min.x, walker.Min.y + down), ImVec2(walker.Max.x, walker.Max.y + down));
+  };
+  float down = 0.0f;
+  if (overlaps(caption, walker)) {
+    down = caption.Max.y + 1.0f - walker.Min.y;
+    const ImVec2 tab = legendTabSize(scale);
+    const ImRect tabRect(ImVec2(p0.x + pad, bottom - tab.y), ImVec2(p0.x + pad + tab.x, bottom));
+    if (shifted(down).Max.y > bottom || overlaps(shifted(down), tabRect)) return camera;  // no room below
+  } else if (overlaps(legend, walker)) {
+    down = legend.Min.y - 1.0f - walker.Max.y;
+    const bool underCaption = walker.Min.x < caption.Max.x && walker.Max.x > caption.Min.x;
+    const float top = underCaption ? caption.Max.y + 1.0f : p0.y + pad;
+    if (shifted(down).Min.y < top) return camera;  // no room above
+  } else {
+    return camera;
+  }
   camera.projection = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -2.0f * down / size.y, 0.0f)) * camera.projection;
   return camera;
 }
@@ -260,9 +317,13 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       const OrbitCamera view = clipMode && s.clip ? clipViewCamera(s.view.camera, *s.clip, clipFrameAt(*s.clip, s.view.playback.cycles))
                                                   : s.view.camera;
       const char* title = reconstruct ? "3D reconstruction" : "Gait space";
+      std::deque<std::string> legendLabels;
+      const std::vector<LegendItem> legend = reconstructionLegend(s, legendLabels);
       const float pad = 10.0f * ctx.scale;
       const CameraMatrices camera =
-          clipMode || !drawn ? view.matrices(aspect) : clearOfCaption(s, view.matrices(aspect), title, p0, size, ctx.scale);
+          clipMode || !drawn ? view.matrices(aspect)
+                             : clearOfOverlays(s, view.matrices(aspect), title, legendSize(legend, ctx.scale, size.x), p0,
+                                               size, ctx.scale);
       ctx.renderer.render(target, scene, camera);
       lastImage = {p0, size};
 
@@ -309,40 +370,6 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       const ImRect captionRect =
           drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), title, sub,
                       s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), walker);
-      std::vector<LegendItem> legend;
-      std::deque<std::string> legendLabels;  // the items point into it: a deque never moves them
-      if (o.pointLights) {
-        legend.push_back({palette::kInputPoint, reconstruct ? "reconstructed joints (point-lights)" : "joints (point-lights)", false});
-      } else if (reconstruct && s.doc.compareEngines && s.derived.compare()) {
-        for (const auto& e : s.derived.compare()->engines) {
-          const auto k = static_cast<std::size_t>(e.engine);
-          if (!s.doc.compareShown[k]) continue;
-          char label[96];
-          if (e.display)
-            std::snprintf(label, sizeof label, "%s: MPJPE %.1f mm", engineName(e.engine), e.display->mpjpeMm);
-          else
-            std::snprintf(label, sizeof label, "%s: no answer", engineName(e.engine));
-          legendLabels.emplace_back(label);
-          legend.push_back({palette::kEngineRight[k], legendLabels.back().c_str(), false});
-        }
-        if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
-      } else if (reconstruct) {
-        legend.push_back({palette::kReconRight, "reconstruction (right side darker)", false});
-        if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
-        if (o.errorLines) legend.push_back({palette::kError, "3D error per joint", true});
-        if (reconstruct && r &&
-            std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(),
-                        [](bool b) { return b; }))
-          legend.push_back(
-              {palette::kModelEstimated, "model-estimated joint (not measured)", false});
-      } else {
-        legend.push_back({palette::kReconRight, "synthesised walker", false});
-      }
-      if (o.cameraGlyph) {
-        legend.push_back({palette::kCamera, "camera of the 2D view", true});
-        if (reconstruct && s.doc.recon.unknownAngle)
-          legend.push_back({palette::kCameraEstimate, "estimated camera (est. α)", true});
-      }
       const ImRect legendRect = drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale, size.x, walker);
       ImRect bar = kNothing;
       if (reconstruct && d && o.depthErrorColour && !o.pointLights && !s.doc.compareEngines)

@@ -105,19 +105,27 @@ ImRect drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const st
   const bool withSubtitle = t.y + s.y + 2 * pad <= 0.3f * viewSize.y && !overlaps(plateOf(s), keepClear);
   if (!withSubtitle) s = ImVec2(0.0f, 0.0f);
   const ImVec2 plate{std::max(t.x, s.x) + 2 * pad, t.y + s.y + 2 * pad + 2.0f * scale};
+  const ImRect rect(at, ImVec2(at.x + plate.x, at.y + plate.y));
+  if (!dl) return rect;
   dl->AddRectFilled(at, ImVec2(at.x + plate.x, at.y + plate.y), IM_COL32(10, 12, 16, 150), 6.0f * scale);
   dl->AddText(font, titleSize, ImVec2(at.x + pad, at.y + pad), IM_COL32(235, 238, 245, 255), titleLines.c_str());
   if (withSubtitle)
     dl->AddText(body, bodySize, ImVec2(at.x + pad, at.y + pad + t.y + 2.0f * scale), IM_COL32(150, 160, 175, 255),
                 subtitleLines.c_str());
-  const ImRect rect(at, ImVec2(at.x + plate.x, at.y + plate.y));
   if (!withSubtitle && !subtitle.empty() && ImGui::IsMouseHoveringRect(rect.Min, rect.Max, false))
     ImGui::SetTooltip("%s", subtitle.c_str());
   return rect;
 }
 
-ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale,
-                  float viewWidth, const ImRect& keepClear) {
+namespace {
+
+// The legend's type and plate in a view `viewWidth` wide (see drawLegend).
+struct LegendLayout {
+  float scale, width, fontSize, row, pad;
+  ImVec2 size;
+};
+
+LegendLayout layOutLegend(std::span<const LegendItem> items, float scale, float viewWidth) {
   float width = 0.0f;
   for (const auto& it : items) width = std::max(width, ImGui::CalcTextSize(it.label.c_str()).x);
   const float natural = width + 42.0f * scale;
@@ -125,9 +133,28 @@ ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem>
   const float shrink = natural > soft ? std::max(0.6f, soft / natural) : 1.0f;
   // The plate stays inside the view with the callers' 10 px (× scale) margin on either side.
   const float hardText = viewWidth - 20.0f * scale - 42.0f * scale * shrink;
-  scale *= shrink;
-  width = std::min(width * shrink, std::max(hardText, 20.0f * scale));
-  const float fontSize = ImGui::GetFontSize() * shrink;
+  LegendLayout l;
+  l.scale = scale * shrink;
+  l.width = std::min(width * shrink, std::max(hardText, 20.0f * l.scale));
+  l.fontSize = ImGui::GetFontSize() * shrink;
+  l.row = l.fontSize + 4.0f * l.scale;
+  l.pad = 8.0f * l.scale;
+  l.size = ImVec2(l.width + 2 * l.pad + 26.0f * l.scale, l.row * static_cast<float>(items.size()) + 2 * l.pad);
+  return l;
+}
+
+}  // namespace
+
+ImVec2 legendSize(std::span<const LegendItem> items, float scale, float viewWidth) {
+  return layOutLegend(items, scale, viewWidth).size;
+}
+
+ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale,
+                  float viewWidth, const ImRect& keepClear) {
+  const LegendLayout l = layOutLegend(items, scale, viewWidth);
+  const float shrink = l.scale / scale;
+  scale = l.scale;
+  const float width = l.width, fontSize = l.fontSize;
   // A label longer than the room left: its end becomes "…".
   const auto fitted = [&](const std::string& label) {
     if (ImGui::GetFont()->CalcTextSizeA(fontSize, 1e9f, 0.0f, label.c_str()).x <= width) return label;
@@ -140,11 +167,9 @@ ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem>
       popCharacter();
     return cut + "…";
   };
-  const float row = fontSize + 4.0f * scale;
-  const float pad = 8.0f * scale;
-  const float h = row * static_cast<float>(items.size()) + 2 * pad;
-  const ImVec2 tl{bottomLeft.x, bottomLeft.y - h};
-  const ImVec2 br{tl.x + width + 2 * pad + 26.0f * scale, bottomLeft.y};
+  const float row = l.row, pad = l.pad;
+  const ImVec2 tl{bottomLeft.x, bottomLeft.y - l.size.y};
+  const ImVec2 br{tl.x + l.size.x, bottomLeft.y};
   if (overlaps(ImRect(tl, br), keepClear)) {
     const ImRect tab = legendTab(bottomLeft, scale / shrink);
     if (!ImGui::IsMouseHoveringRect(tab.Min, tab.Max, false)) {

@@ -40,12 +40,15 @@ CaptionTitle captionTitle(const std::string& title, ImFont* titleFont, float sca
 // view frames its walker clear of when they would cover it.
 ImVec2 smallCaptionPlate(const std::string& title, float scale, float viewWidth);
 ImVec2 legendTabSize(float scale);
+// The plate of the legend drawLegend draws unfolded.
+ImVec2 legendSize(std::span<const LegendItem> items, float scale, float viewWidth);
 
 // Caption at the top-left corner, on a translucent plate.
 // In a view `viewSize` big its lines wrap between words, and the subtitle is left out when
 // the caption would take more than 0.3 of the view's height (it would meet the legend) or
 // would cover `keepClear` (the walker: the subtitle is then the caption's tooltip). The
-// plate's rectangle is returned (the colour bar keeps clear of it).
+// plate's rectangle is returned (the colour bar keeps clear of it); with no draw list, only
+// that (the caption measured, not drawn).
 ImRect drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
                  ImFont* titleFont, float scale, ImVec2 viewSize = {1e9f, 1e9f}, const ImRect& keepClear = kNothing);
 // Legend rows, bottom-left corner upwards; the plate's rectangle is returned (so other
