@@ -89,6 +89,29 @@ TEST(Undo, OnTheStateUndoPutsBackTheAngleAndTheEstimator) {
   EXPECT_TRUE(canUndo(s));
 }
 
+// The theme and the UI scale are settings a user undoes too; the 3D camera is not (it is how
+// the walker is looked at, not what is shown of it).
+TEST(Undo, ThemeAndScaleAreStepsTheCameraIsNot) {
+  AppState s;
+  const auto settle = [&s] { s.history.observe(captureParameters(s), captureParameterContext(s), true); };
+  settle();
+  s.view.theme = Theme::Projector;
+  settle();
+  s.view.uiScale = 1.5f;
+  s.view.camera.yawDeg += 40.0f;
+  settle();
+  undo(s);
+  EXPECT_FLOAT_EQ(s.view.uiScale, 1.0f);
+  EXPECT_EQ(s.view.theme, Theme::Projector);
+  undo(s);
+  EXPECT_EQ(s.view.theme, Theme::Dark);
+  const float yaw = s.view.camera.yawDeg;
+  redo(s);
+  redo(s);
+  EXPECT_FLOAT_EQ(s.view.uiScale, 1.5f);
+  EXPECT_FLOAT_EQ(s.view.camera.yawDeg, yaw);  // the camera moved with none of the steps
+}
+
 // σ² the user never set follows the model: undo does not pin it to the value it had then.
 TEST(Undo, SigmaSquaredFollowingTheModelStaysFollowing) {
   AppState s;

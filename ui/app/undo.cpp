@@ -11,8 +11,9 @@ namespace ew::ui {
 
 Parameters captureParameters(const AppState& s) {
   const Document& d = s.doc;
-  Parameters p{d.walker,   d.mode,           d.recon,        d.sigma2Chosen,   d.exploreSd,
-               d.editedSd, d.compareEngines, d.compareShown, s.view.overlays, d.exploreOmegaOffsetRadS};
+  Parameters p{d.walker,    d.mode,           d.recon,        d.sigma2Chosen,   d.exploreSd,
+               d.editedSd,  d.compareEngines, d.compareShown, s.view.overlays, d.exploreOmegaOffsetRadS,
+               s.view.theme, s.view.uiScale};
   // σ² that follows the model is no choice of the user's: another model changes it by itself.
   if (!d.sigma2Chosen) p.recon.sigma2Mm2 = 0.0;
   return p;
@@ -43,6 +44,8 @@ void restoreParameters(AppState& s, const Parameters& p) {
   d.compareEngines = p.compareEngines;
   d.compareShown = p.compareShown;
   s.view.overlays = p.overlays;
+  s.view.theme = p.theme;
+  s.view.uiScale = p.uiScale;
 }
 
 // [SECTION] The history

@@ -1,9 +1,10 @@
 #pragma once
 // Undo and redo of the parameters the user chooses (docs/VIEWER.md "Undo"): the walker, the
-// mode, α, the estimator, σ², N, unknown α, the engine, compare mode, the coefficient sliders
-// and the overlays. Not the data, the models or anything derived (those follow from the
-// parameters), not the camera or playback, and not a video's keyframes (their own undo:
-// ui/app/video.h).
+// mode, α, the estimator, σ², N, unknown α, the engine, compare mode, the coefficient sliders,
+// the semantic axes, the overlays, the theme and the UI scale. Not the data, the models or
+// anything derived (those follow from the parameters), not the 3D camera or playback (how the
+// walker is being looked at as it moves: a double-click or a preset puts the camera back), and
+// not a video's keyframes (their own undo: ui/app/video.h).
 //
 // The frame loop shows the history the parameters after every frame (observe): a change is
 // recorded once it has settled — no control held by the mouse, no repeating key down — so a
@@ -34,6 +35,8 @@ struct Parameters {
   std::array<bool, 3> compareShown{true, true, true};
   Overlays overlays;
   double exploreOmegaOffsetRadS = 0.0;  // a semantic axis moves the explorer's stride too
+  Theme theme = Theme::Dark;
+  float uiScale = 1.0f;
   bool operator==(const Parameters&) const = default;
 };
 
