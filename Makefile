@@ -6,7 +6,7 @@ CMAKE_ARGS     ?=
 JOBS           ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS     ?=
 
-.PHONY: all deps configure build run test test-sanitize bench fuzz fuzz-build fuzz-regressions clean
+.PHONY: all deps configure build run test test-sanitize bench fuzz fuzz-build fuzz-regressions fuzz-sanitized clean
 
 all: build
 
@@ -69,6 +69,12 @@ fuzz: fuzz-build
 
 fuzz-regressions: fuzz-build
 	FUZZ_JOBS=$(FUZZ_JOBS) bash tests/fuzz/run_fuzz.sh $(FUZZ_DIR) 0
+
+# The same smoke fuzz on the libFuzzer harnesses of a sanitized build configured with
+# -DEW_SANITIZE_FUZZ=ON (CI: `make test-sanitize` builds them, so core is compiled with clang
+# once for both).
+fuzz-sanitized:
+	FUZZ_JOBS=$(FUZZ_JOBS) FUZZ_PREFIX=libfuzzer_ bash tests/fuzz/run_fuzz.sh $(SANITIZE_DIR) $(FUZZ_SECONDS)
 
 clean:
 	rm -rf $(BUILD_DIR) $(SANITIZE_DIR) $(FUZZ_DIR)

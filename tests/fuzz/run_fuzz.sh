@@ -12,7 +12,8 @@
 # seed corpora once. Prints executions per harness; exits 1 if any harness found something.
 #
 # Environment: FUZZ_JOBS (harnesses run at once, default 2), FUZZ_RSS_MB (1024),
-# FUZZ_TIMEOUT_S (10, per input).
+# FUZZ_TIMEOUT_S (10, per input), FUZZ_PREFIX (the harnesses' names before <harness>:
+# fuzz_ in a fuzz build, libfuzzer_ in a sanitized build with EW_SANITIZE_FUZZ).
 set -euo pipefail
 
 if [[ $# -lt 2 ]]; then
@@ -28,6 +29,7 @@ src=$(cd "$(dirname "$0")" && pwd)
 jobs=${FUZZ_JOBS:-2}
 rss=${FUZZ_RSS_MB:-1024}
 timeout=${FUZZ_TIMEOUT_S:-10}
+prefix=${FUZZ_PREFIX:-fuzz_}
 
 "$build/bin/fuzz_seeds" "$build/seeds"
 mkdir -p "$build/logs" "$build/dict"
@@ -49,7 +51,7 @@ run_one() {
     args+=(-max_total_time="$seconds")
   fi
   # The work corpus first: libFuzzer adds new inputs to the first folder only.
-  "$build/bin/fuzz_$h" "${args[@]}" "$corpus" "$build/seeds/$h" "$src/regressions/$h" \
+  "$build/bin/$prefix$h" "${args[@]}" "$corpus" "$build/seeds/$h" "$src/regressions/$h" \
     > "$log" 2>&1
 }
 
@@ -58,8 +60,8 @@ touch "$stamp"
 declare -A pid_of status_of
 running=0
 for h in "${harnesses[@]}"; do
-  if [[ ! -x "$build/bin/fuzz_$h" ]]; then
-    echo "fuzz: no harness $build/bin/fuzz_$h" >&2
+  if [[ ! -x "$build/bin/$prefix$h" ]]; then
+    echo "fuzz: no harness $build/bin/$prefix$h" >&2
     exit 2
   fi
   if [[ $running -ge $jobs ]]; then
