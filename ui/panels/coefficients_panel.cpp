@@ -56,13 +56,10 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
     }
     const int n = actions::coefficientCount(s);
     if (explore) {
-      const auto buttonW = [](const char* label) {
-        return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
-      };
       if (ImGui::Button("Reset")) actions::resetCoefficients(s);
-      sameLineOrWrap(buttonW("Randomise"));
+      sameLineOrWrap(buttonWidth("Randomise"));
       if (ImGui::Button("Randomise")) actions::randomiseCoefficients(s, randomSeed++);
-      sameLineOrWrap(buttonW("From subject"));
+      sameLineOrWrap(buttonWidth("From subject"));
       if (ImGui::Button("From subject") && s.doc.selectedWalker())
         actions::coefficientsFromWalker(s);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("the selected walker's coefficients in the full model");

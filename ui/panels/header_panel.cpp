@@ -11,6 +11,7 @@
 #include "ui/app/app_state.h"
 #include "ui/app/held_model.h"
 #include "ui/app/undo.h"
+#include "ui/widgets/flow.h"
 #include "ui/widgets/text_fit.h"
 
 namespace ew::ui {
@@ -120,10 +121,6 @@ std::vector<HeaderButton> headerButtons(AppState& s, HeaderPanel& h) {
       {"↷", "Redo (Ctrl+Shift+Z or Ctrl+Y)", canRedo(s), [&s] { redo(s); }},
       {"?", "Keyboard and mouse (F1)", true, [&s] { s.panels.help.open = !s.panels.help.open; }},
   };
-}
-
-float buttonWidth(const char* label) {
-  return ImGui::CalcTextSize(label).x + 2.0f * ImGui::GetStyle().FramePadding.x;
 }
 
 void drawHeaderButton(const HeaderButton& b) {

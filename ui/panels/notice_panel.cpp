@@ -1,3 +1,4 @@
+#include "ui/widgets/flow.h"
 #include "ui/panels/notice_panel.h"
 
 #include <imgui.h>
@@ -22,10 +23,6 @@ const ImVec4 kWarningBg{0.22f, 0.16f, 0.05f, 1.0f};
 const ImVec4 kWarningAccent{0.98f, 0.8f, 0.35f, 1.0f};
 const ImVec4 kDetailText{0.95f, 0.93f, 0.93f, 1.0f};
 const ImVec4 kKeptText{0.62f, 0.88f, 0.8f, 1.0f};
-
-float buttonWidth(const char* label) {
-  return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
-}
 
 // A "name: " prefix that names a file or folder (no spaces, a dot or a slash in it).
 std::size_t filePrefixEnd(const std::string& line) {

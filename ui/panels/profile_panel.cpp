@@ -216,8 +216,7 @@ void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
       ImGui::TextDisabled("reconstruct mode only");
     } else if (!s.doc.recon.unknownAngle) {
       textDisabledWrapped("The view angle is known: J(α) is scanned when it is not.");
-      const char* label = ImGui::CalcTextSize("Estimate it (unknown view angle)").x + 2.0f * ImGui::GetStyle().FramePadding.x <=
-                                  ImGui::GetContentRegionAvail().x
+      const char* label = buttonWidth("Estimate it (unknown view angle)") <= ImGui::GetContentRegionAvail().x
                               ? "Estimate it (unknown view angle)"
                               : "Estimate α";
       if (ImGui::Button(label)) actions::setUnknownAngle(s, true);

@@ -152,14 +152,14 @@ std::vector<LegendItem> reconstructionLegend(const AppState& s, std::deque<std::
 // when the caption's title would cover the walker's head, or up when the legend would cover its
 // feet, where there is room (a small view, a large UI scale). Else as it is: the legend then
 // folds into its tab.
-CameraMatrices clearOfOverlays(const AppState& s, CameraMatrices camera, const char* title, ImVec2 legendPlate,
-                               ImVec2 p0, ImVec2 size, float scale) {
+// `walker` is where the walker is through `camera`; it is moved with the picture.
+CameraMatrices clearOfOverlays(CameraMatrices camera, ImRect& walker, const char* title, ImVec2 legendPlate, ImVec2 p0,
+                               ImVec2 size, float scale) {
   const float pad = 10.0f * scale;
   const ImVec2 plate = smallCaptionPlate(title, scale, size.x - 2.0f * pad);
   const ImRect caption(ImVec2(p0.x + pad, p0.y + pad), ImVec2(p0.x + pad + plate.x, p0.y + pad + plate.y));
   const float bottom = p0.y + size.y - pad;
   const ImRect legend(ImVec2(p0.x + pad, bottom - legendPlate.y), ImVec2(p0.x + pad + legendPlate.x, bottom));
-  const ImRect walker = walkerOnScreen(s, camera, p0, size, scale);
   const auto shifted = [&](float down) {
     return ImRect(ImVec2(walker.Min.x, walker.Min.y + down), ImVec2(walker.Max.x, walker.Max.y + down));
   };
@@ -178,6 +178,7 @@ CameraMatrices clearOfOverlays(const AppState& s, CameraMatrices camera, const c
     return camera;
   }
   camera.projection = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, -2.0f * down / size.y, 0.0f)) * camera.projection;
+  walker = shifted(down);
   return camera;
 }
 
@@ -320,10 +321,13 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       std::deque<std::string> legendLabels;
       const std::vector<LegendItem> legend = reconstructionLegend(s, legendLabels);
       const float pad = 10.0f * ctx.scale;
-      const CameraMatrices camera =
-          clipMode || !drawn ? view.matrices(aspect)
-                             : clearOfOverlays(s, view.matrices(aspect), title, legendSize(legend, ctx.scale, size.x), p0,
-                                               size, ctx.scale);
+      // Where the walker is over its cycle (what the annotations keep clear of), once a frame.
+      ImRect walker(p0, p0);
+      CameraMatrices camera = view.matrices(aspect);
+      if (!clipMode && drawn) {
+        walker = walkerOnScreen(s, camera, p0, size, ctx.scale);
+        camera = clearOfOverlays(camera, walker, title, legendSize(legend, ctx.scale, size.x), p0, size, ctx.scale);
+      }
       ctx.renderer.render(target, scene, camera);
       lastImage = {p0, size};
 
@@ -366,7 +370,6 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       if (reconstruct && r && s.doc.compareEngines)
         std::snprintf(sub, sizeof sub, "compare: the three engines %s α = %.1f°",
                       s.doc.recon.unknownAngle ? "with α unknown, true" : "at the known", r->alphaTrueDeg);
-      const ImRect walker = drawn ? walkerOnScreen(s, camera, p0, size, ctx.scale) : ImRect(p0, p0);
       const ImRect captionRect =
           drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), title, sub,
                       s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), walker);

@@ -6,6 +6,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/widgets/flow.h"
 #include "ui/widgets/text_fit.h"
 
 namespace ew::ui {
@@ -145,8 +146,7 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       actions::open(s, {std::filesystem::path(openPath.data())});
       scrollToSelection = true;
     }
-    const char* back = ImGui::CalcTextSize("Synthetic default population").x + 2.0f * ImGui::GetStyle().FramePadding.x <=
-                               ImGui::GetContentRegionAvail().x
+    const char* back = buttonWidth("Synthetic default population") <= ImGui::GetContentRegionAvail().x
                            ? "Synthetic default population"
                            : "Default population";
     if (ImGui::SmallButton(back)) actions::open(s, {});

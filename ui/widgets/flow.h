@@ -5,8 +5,9 @@
 
 namespace ew::ui {
 
-// The width of a radio button or checkbox with its label.
+// The width of a radio button or checkbox with its label, and of a button.
 float toggleWidth(const char* label);
+float buttonWidth(const char* label);
 // Before an item `width` wide that would follow the previous one: the same line when it fits,
 // else the next.
 void sameLineOrWrap(float width);
