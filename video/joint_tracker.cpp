@@ -5,12 +5,14 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/video/tracking.hpp>
 #include <optional>
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
+#include "video/appearance_tracker.h"
 #include "video/segment_search.h"
 
 namespace ew {
@@ -101,16 +103,17 @@ struct JointFilter {
 
 class FrameSupply {
  public:
-  FrameSupply(VideoSource& video, std::size_t capacity)
-      : video_(video), capacity_(std::max<std::size_t>(capacity, 2)) {}
+  // Grey frames for the flow, colour ones (BGR) for the appearance tracker.
+  FrameSupply(VideoSource& video, std::size_t capacity, bool colour)
+      : video_(video), capacity_(std::max<std::size_t>(capacity, 2)), colour_(colour) {}
 
-  // The grey frame `f`, where `lowest` is the lowest frame the caller will ask for next
-  // (so a backward pass decodes the piece [max(lowest, f − capacity + 1), f] at once).
-  const cv::Mat& grey(int f, int lowest) {
+  // Frame `f`, where `lowest` is the lowest frame the caller will ask for next (so a
+  // backward pass decodes the piece [max(lowest, f − capacity + 1), f] at once).
+  const cv::Mat& image(int f, int lowest) {
     if (auto it = frames_.find(f); it != frames_.end()) return it->second;
     if (f < newestRead_ || frames_.size() >= capacity_) frames_.clear();
     const int from = f < newestRead_ ? std::max(lowest, f - static_cast<int>(capacity_) + 1) : f;
-    for (int k = from; k <= f; ++k) frames_[k] = toGrey(video_.frame(k));
+    for (int k = from; k <= f; ++k) frames_[k] = colour_ ? video_.frame(k) : toGrey(video_.frame(k));
     newestRead_ = f;
     return frames_.at(f);
   }
@@ -118,9 +121,16 @@ class FrameSupply {
  private:
   VideoSource& video_;
   std::size_t capacity_;
+  bool colour_;
   std::map<int, cv::Mat> frames_;
   int newestRead_ = -1;
 };
+
+std::vector<cv::Mat> pyramidOf(const cv::Mat& grey, const Geometry& g, int levels) {
+  std::vector<cv::Mat> pyramid;
+  cv::buildOpticalFlowPyramid(grey, pyramid, cv::Size(g.windowPx, g.windowPx), levels);
+  return pyramid;
+}
 
 // [SECTION] One pass from a keyframe ----------------------------------------------------
 
@@ -134,10 +144,10 @@ struct Step {
   std::vector<float> error;
 };
 
-class Pass {
+class FlowPass final : public TrackingPass {
  public:
-  Pass(const Geometry& g, const TrackerOptions& o, const Keyframe& key, const cv::Mat& keyGrey)
-      : g_(g), o_(o) {
+  FlowPass(const Geometry& g, const TrackerOptions& o, const Keyframe& key, const cv::Mat& keyGrey)
+      : g_(g), o_(o), fromPyramid_(pyramidOf(keyGrey, g, o.pyramidLevels)) {
     for (int j = 0; j < kJointCount; ++j) {
       const double x = key.jointsPx(2 * j), y = key.jointsPx(2 * j + 1);
       if (std::isnan(x) || std::isnan(y)) continue;
@@ -153,9 +163,17 @@ class Pass {
     }
   }
 
-  bool tracks(int j) const { return filters_[j].active; }
-  cv::Point2f position(int j) const { return filters_[j].position(); }
+  bool tracks(int j) const override { return filters_[j].active; }
+  cv::Point2f position(int j) const override { return filters_[j].position(); }
 
+  std::array<double, kJointCount> advance(const cv::Mat& toGrey) override {
+    std::vector<cv::Mat> toPyramid = pyramidOf(toGrey, g_, o_.pyramidLevels);
+    const auto confidence = advance(fromPyramid_, toPyramid, toGrey);
+    fromPyramid_ = std::move(toPyramid);
+    return confidence;
+  }
+
+ private:
   // Moves every joint from the from-frame to `toGrey`; confidence per joint out.
   std::array<double, kJointCount> advance(const std::vector<cv::Mat>& fromPyramid,
                                           const std::vector<cv::Mat>& toPyramid,
@@ -209,7 +227,6 @@ class Pass {
     return confidence;
   }
 
- private:
   cv::Mat patchAround(const cv::Mat& grey, cv::Point2f centre) const {
     cv::Mat patch;
     cv::getRectSubPix(grey, cv::Size(g_.patchPx, g_.patchPx), centre, patch);
@@ -275,13 +292,8 @@ class Pass {
   std::array<JointFilter, kJointCount> filters_{};
   std::array<cv::Mat, kJointCount> templates_{};
   std::array<SegmentStrip, kBones.size()> strips_{};
+  std::vector<cv::Mat> fromPyramid_;
 };
-
-std::vector<cv::Mat> pyramidOf(const cv::Mat& grey, const Geometry& g, int levels) {
-  std::vector<cv::Mat> pyramid;
-  cv::buildOpticalFlowPyramid(grey, pyramid, cv::Size(g.windowPx, g.windowPx), levels);
-  return pyramid;
-}
 
 // [SECTION] Blending the passes -----------------------------------------------------------
 
@@ -320,6 +332,8 @@ struct Range {
   Eigen::Index rows() const { return last - first + 1; }
 };
 
+std::size_t bytesPerPixel(const TrackerOptions& o) { return o.kind == TrackerKind::Appearance ? 3 : 1; }
+
 Range rangeFor(const VideoSource& video, const TrackerOptions& o) {
   const int count = video.info().frameCount;
   Range r{o.firstFrame, o.lastFrame < 0 ? count - 1 : o.lastFrame};
@@ -342,7 +356,8 @@ class RangeTracker {
                 std::max<std::size_t>(
                     2, o.frameBufferBytes /
                            std::max<std::size_t>(1, static_cast<std::size_t>(video.info().widthPx) *
-                                                        video.info().heightPx))) {
+                                                        video.info().heightPx * bytesPerPixel(o))),
+                o.kind == TrackerKind::Appearance) {
     for (const Keyframe& k : keys.keyframes)
       if (k.frame >= range_.first && k.frame <= range_.last) keys_.push_back(k);
     if (keys_.empty())
@@ -372,24 +387,29 @@ class RangeTracker {
     const int step = until >= key.frame ? 1 : -1;
     const int lowest = std::min(key.frame, until);
     // Headers, not copies: they keep the frame alive when the supply lets it go.
-    const cv::Mat keyGrey = supply_.grey(key.frame, lowest);
-    Pass pass(g_, o_, key, keyGrey);
-    record(pass, key.frame, std::array<double, kJointCount>{}, out, true);
+    const cv::Mat keyImage = supply_.image(key.frame, lowest);
+    const std::unique_ptr<TrackingPass> pass = passFrom(key, keyImage);
+    record(*pass, key.frame, std::array<double, kJointCount>{}, out, true);
     for (int j = 0; j < kJointCount; ++j)  // the marks themselves, not their float copies
-      if (pass.tracks(j))
+      if (pass->tracks(j))
         out.jointsPx.block<1, 2>(key.frame - range_.first, 2 * j) = key.jointsPx.segment<2>(2 * j);
-    std::vector<cv::Mat> fromPyramid = pyramidOf(keyGrey, g_, o_.pyramidLevels);
     for (int f = key.frame + step; f != until + step; f += step) {
-      const cv::Mat toGrey = supply_.grey(f, lowest);
-      std::vector<cv::Mat> toPyramid = pyramidOf(toGrey, g_, o_.pyramidLevels);
-      record(pass, f, pass.advance(fromPyramid, toPyramid, toGrey), out, false);
-      fromPyramid = std::move(toPyramid);
+      record(*pass, f, pass->advance(supply_.image(f, lowest)), out, false);
       if (progress_ && !progress_(++stepsDone_ / totalSteps_))
         throw Error(ErrorKind::BadArgument, video_.info().file, "", "tracking cancelled");
     }
   }
 
-  void record(const Pass& pass, int frame, const std::array<double, kJointCount>& confidence,
+  std::unique_ptr<TrackingPass> passFrom(const Keyframe& key, const cv::Mat& keyImage) const {
+    if (o_.kind == TrackerKind::Appearance) {
+      AppearanceOptions a;
+      a.personPx = g_.personPx;
+      return makeAppearancePass(key, keyImage, a);
+    }
+    return std::make_unique<FlowPass>(g_, o_, key, keyImage);
+  }
+
+  void record(const TrackingPass& pass, int frame, const std::array<double, kJointCount>& confidence,
               PassOutput& out, bool isKeyframe) {
     const Eigen::Index row = frame - range_.first;
     for (int j = 0; j < kJointCount; ++j) {
@@ -443,6 +463,16 @@ class RangeTracker {
 };
 
 }  // namespace
+
+const char* trackerName(TrackerKind kind) {
+  return kind == TrackerKind::Appearance ? "appearance" : "flow";
+}
+
+TrackerKind trackerFromName(const std::string& name) {
+  for (TrackerKind k : {TrackerKind::OpticalFlow, TrackerKind::Appearance})
+    if (name == trackerName(k)) return k;
+  throw Error(ErrorKind::BadArgument, "", "", "unknown tracker '" + name + "' (flow or appearance)");
+}
 
 JointTrack trackJoints(VideoSource& video, const Keyframes& keyframes,
                        const TrackerOptions& options, const TrackProgress& progress) {

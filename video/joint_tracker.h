@@ -18,7 +18,12 @@
 
 namespace ew {
 
+// The optical-flow tracker (below), or Zou et al.'s appearance tracker
+// (video/appearance_tracker.h) run through the same passes and blending.
+enum class TrackerKind { OpticalFlow, Appearance };
+
 struct TrackerOptions {
+  TrackerKind kind = TrackerKind::OpticalFlow;
   int firstFrame = 0;  // the frames tracked, inclusive
   int lastFrame = -1;  // -1: the video's last frame
   int pyramidLevels = 3;
@@ -36,6 +41,11 @@ struct TrackerOptions {
   // is decoded again in pieces of this size.
   std::size_t frameBufferBytes = std::size_t{512} << 20;
 };
+
+// "flow" or "appearance", as the CLI's --tracker and the track file say.
+const char* trackerName(TrackerKind kind);
+// Error(BadArgument) naming the choices for any other name.
+TrackerKind trackerFromName(const std::string& name);
 
 struct JointTrack {
   int firstFrame = 0;

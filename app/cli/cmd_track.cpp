@@ -36,15 +36,29 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 struct TrackArgs {
-  std::string video, keyframes, keyframesFrom, out, compare, reconstruct;
+  std::string video, keyframes, keyframesFrom, out, compare, reconstruct, tracker = "flow";
   std::vector<int> keyframeFrames{0};
   int first = 0, last = -1;
   int overlayEvery = 0;  // 0: no overlay pictures
-  bool json = false;
+  bool json = false, keyframeFramesGiven = false;
 };
 
+// The keyframes of `all` at `frames`; Error(BadArgument) naming the file for one it lacks.
+Keyframes keyframesAt(const Keyframes& all, const std::vector<int>& frames, const std::string& file) {
+  Keyframes kept{all.video, {}};
+  for (const Keyframe& k : all.keyframes)
+    if (std::find(frames.begin(), frames.end(), k.frame) != frames.end()) kept.keyframes.push_back(k);
+  for (int f : frames)
+    if (std::none_of(kept.keyframes.begin(), kept.keyframes.end(), [&](const Keyframe& k) { return k.frame == f; }))
+      throw Error(ErrorKind::BadArgument, file, "", "--keyframe-frames: no keyframe on frame " + std::to_string(f));
+  return kept;
+}
+
 Keyframes keyframesFor(const TrackArgs& a, double fps) {
-  if (!a.keyframes.empty()) return readKeyframes(a.keyframes);
+  if (!a.keyframes.empty()) {
+    const Keyframes all = readKeyframes(a.keyframes);
+    return a.keyframeFramesGiven ? keyframesAt(all, a.keyframeFrames, a.keyframes) : all;
+  }
   KeypointOptions k;
   k.fps = fps;
   const KeypointTrial trial = readKeypointTrial(a.keyframesFrom, k);
@@ -102,6 +116,24 @@ void printDistance(const TrackDistance& d, const std::string& against) {
   }
 }
 
+// What --compare measures against: a keypoint file's detections on every frame, or the
+// marks of a keyframe file on its frames that are not the track's own keyframes (those
+// are the marks themselves).
+Eigen::MatrixXd referenceFor(const TrackArgs& a, const VideoInfo& info, const Keyframes& used) {
+  if (!isKeyframeFile(a.compare)) {
+    KeypointOptions k;
+    k.fps = info.fps;
+    return readKeypointTrial(a.compare, k).jointsPx;
+  }
+  Eigen::MatrixXd reference = Eigen::MatrixXd::Constant(info.frameCount, kDims2, std::nan(""));
+  for (const Keyframe& k : readKeyframes(a.compare).keyframes) {
+    const bool own = std::any_of(used.keyframes.begin(), used.keyframes.end(),
+                                 [&](const Keyframe& u) { return u.frame == k.frame; });
+    if (!own && k.frame < info.frameCount) reference.row(k.frame) = k.jointsPx;
+  }
+  return reference;
+}
+
 // Every n-th tracked frame with the track drawn over it (and the --compare source, blue).
 void writeOverlays(VideoSource& video, const JointTrack& t, const Eigen::MatrixXd* referencePx,
                    int every, const fs::path& dir) {
@@ -126,6 +158,7 @@ int runTrack(const TrackArgs& a) {
   const VideoInfo& info = video.info();
   const Keyframes keys = keyframesFor(a, info.fps);
   TrackerOptions o;
+  o.kind = trackerFromName(a.tracker);
   o.firstFrame = a.first;
   o.lastFrame = a.last;
   const auto start = std::chrono::steady_clock::now();
@@ -137,10 +170,11 @@ int runTrack(const TrackArgs& a) {
   std::cout << "tracked " << frames << " frames (" << track.firstFrame << "-"
             << track.firstFrame + frames - 1 << ") of " << info.file << " (" << info.widthPx << "x"
             << info.heightPx << ", " << info.fps << " fps) from " << keys.keyframes.size()
-            << " keyframe(s) in " << std::fixed << std::setprecision(2) << seconds << " s ("
+            << " keyframe(s) by the " << trackerName(o.kind) << " tracker in " << std::fixed << std::setprecision(2) << seconds << " s ("
             << std::setprecision(1) << static_cast<double>(frames) / std::max(seconds, 1e-9)
             << " frames/s)\n";
   json report = {{"video", info.file},
+                 {"tracker", trackerName(o.kind)},
                  {"width_px", info.widthPx},
                  {"height_px", info.heightPx},
                  {"fps", info.fps},
@@ -151,9 +185,7 @@ int runTrack(const TrackArgs& a) {
                  {"mean_confidence", track.confidence.mean()}};
   std::optional<Eigen::MatrixXd> referencePx;
   if (!a.compare.empty()) {
-    KeypointOptions k;
-    k.fps = info.fps;
-    referencePx = readKeypointTrial(a.compare, k).jointsPx;
+    referencePx = referenceFor(a, info, keys);
     const TrackDistance d = compareTracks(track.jointsPx, track.firstFrame, *referencePx);
     printDistance(d, a.compare);
     report["compare"] = distanceJson(d);
@@ -187,21 +219,28 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
       "--keyframes-from", args->keyframesFrom,
       "take the keyframes from a keypoint file or folder (OpenPose, AlphaPose, MMPose, CSV)");
   keys->excludes(from);
-  cmd->add_option("--keyframe-frames", args->keyframeFrames,
-                  "with --keyframes-from: which frames (default 0)")
-      ->delimiter(',');
+  auto* keyframeFrames = cmd->add_option("--keyframe-frames", args->keyframeFrames,
+                                         "which frames are keyframes (default: with --keyframes "
+                                         "every keyframe of the file, with --keyframes-from 0)")
+                             ->delimiter(',');
   cmd->add_option("--out", args->out, "output folder")->required();
+  cmd->add_option("--tracker", args->tracker,
+                  "flow: optical flow with keyframe patches (default); appearance: Zou et al. "
+                  "2009's colour histograms of the segments' rectangles")
+      ->check(CLI::IsMember({"flow", "appearance"}));
   cmd->add_option("--first", args->first, "first frame tracked (default 0)");
   cmd->add_option("--last", args->last, "last frame tracked (default the video's last)");
   cmd->add_option("--compare", args->compare,
-                  "another 2D source of the clip to measure the track against");
+                  "measure the track against another 2D source of the clip (keypoints), or a "
+                  "keyframe file's marks on frames that are not keyframes of this track");
   cmd->add_option("--reconstruct", args->reconstruct,
                   "also write the 3D walker (eigenwalker, unknown camera) here");
   cmd->add_option("--overlay-every", args->overlayEvery,
                   "draw the track over every N-th frame into OUT/overlay/ (PNG)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--json", args->json, "print the report as JSON too");
-  cmd->callback([args, &exitCode, keys, from] {
+  cmd->callback([args, &exitCode, keys, from, keyframeFrames] {
+    args->keyframeFramesGiven = keyframeFrames->count() > 0;
     if (keys->count() == 0 && from->count() == 0)
       throw Error(ErrorKind::BadArgument, "", "",
                   "track needs --keyframes FILE or --keyframes-from KEYPOINTS");

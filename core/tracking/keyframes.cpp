@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -96,6 +97,15 @@ Keyframes parseKeyframes(const std::string& text, const std::string& name) {
   if (std::none_of(out.keyframes.begin(), out.keyframes.end(), hasAJoint))
     throwBadData(name, "", "no keyframe has a marked joint");
   return out;
+}
+
+bool isKeyframeFile(const std::filesystem::path& path) {
+  if (path.extension() != ".json") return false;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(4096, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return head.find("\"eigenwalker-keyframes\"") != std::string::npos;
 }
 
 Keyframes readKeyframes(const std::filesystem::path& file) {

@@ -32,6 +32,10 @@ inline constexpr int kMaxKeyframes = 100000;
 Keyframes readKeyframes(const std::filesystem::path& file);
 Keyframes parseKeyframes(const std::string& text, const std::string& name);
 
+// True for a .json file whose start says it is a keyframe file (its "format" field), so a
+// keyframe file and a pose estimator's JSON can be told apart without reading either whole.
+bool isKeyframeFile(const std::filesystem::path& path);
+
 // Writes atomically (core/io/atomic_write.h).
 void writeKeyframes(const std::filesystem::path& file, const Keyframes& keyframes);
 std::string formatKeyframes(const Keyframes& keyframes);

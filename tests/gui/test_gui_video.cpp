@@ -156,5 +156,28 @@ TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
   EXPECT_GT(sd[0], 20.0) << "the footage's texture behind the joints";
 }
 
+// Issue 16: Zou et al.'s appearance tracker is chosen in the Track section (the script's
+// "tracker") and the track says which tracker made it; the controls show the choice.
+TEST_F(GuiVideo, TracksWithTheAppearanceTrackerWhenChosen) {
+  const Footage f = writeWalkingFootage(dir);
+  const json script = json::array({
+      {{"open", json::array({f.video.string(), f.keyframes.string()})}},
+      {{"track_video", {{"first", 0}, {"last", 59}, {"tracker", "appearance"}}}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("appearance.json")}},
+      {{"screenshot", path("appearance.png")}},
+      {{"expect_failure", {{"track_video", {{"first", 0}, {"last", 59}, {"tracker", "sift"}}}}}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json video = state("appearance.json")["video"];
+  ASSERT_TRUE(video["track"].is_object()) << video;
+  EXPECT_EQ(video["tracker"], "appearance");
+  EXPECT_EQ(video["track"]["tracker"], "appearance");
+  EXPECT_EQ(video["track"]["last_frame"], 59);
+  EXPECT_GT(video["track"]["mean_confidence"].get<double>(), 0.5);
+}
+
 }  // namespace
 }  // namespace ew::test::gui

@@ -191,6 +191,8 @@ void undoKeyframes(AppState& s);
 void redoKeyframes(AppState& s);
 // The frames to track, inclusive (0-based; last -1: the video's end).
 void setTrackRange(AppState& s, int first, int last);
+// Which tracker the next track uses (optical flow, or Zou et al.'s appearance tracker).
+void setTracker(AppState& s, TrackerKind tracker);
 // Tracks the range from the keyframes on a worker; when done the track is fitted as a clip.
 void startTracking(AppState& s);
 void cancelTracking(AppState& s);

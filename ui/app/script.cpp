@@ -397,13 +397,18 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   if (n == "expect_failure") {
     applyExpectingFailure(s, a);
   } else if (n == "track_video") {
-    // {"first": F, "last": L} (L -1: the end): tracked and fitted in the background; a track
-    // or fit that fails fails the script like a failed open.
+    // {"first": F, "last": L[, "tracker": "flow" | "appearance"]} (L -1: the end): tracked
+    // and fitted in the background; a track or fit that fails fails the script like a failed
+    // open.
     const auto& arg = a.argument;
     if (!arg.is_object() || !arg.contains("first") || !arg["first"].is_number_integer() || !arg.contains("last") ||
         !arg["last"].is_number_integer())
       throw std::invalid_argument(R"(expects {"first": F, "last": L})");
     actions::setTrackRange(s, arg["first"].get<int>(), arg["last"].get<int>());
+    if (arg.contains("tracker")) {
+      if (!arg["tracker"].is_string()) throw std::invalid_argument(R"("tracker" is "flow" or "appearance")");
+      actions::setTracker(s, trackerFromName(arg["tracker"].get<std::string>()));
+    }
     failuresBefore_ = s.jobs.failures;
     checkLoad_ = true;
     actions::startTracking(s);

@@ -168,10 +168,12 @@ nlohmann::json videoJson(const AppState& s) {
                       {"undo_steps", v.undo.size()},
                       {"redo_steps", v.redo.size()},
                       {"cache_bytes", v.frames->bytesHeld()},
-                      {"track_error", v.trackError}};
+                      {"track_error", v.trackError},
+                      {"tracker", trackerName(v.tracker)}};
   if (v.tracked) {
     const auto& t = *v.tracked;
-    j["track"] = {{"first_frame", t.track.firstFrame},
+    j["track"] = {{"tracker", trackerName(t.tracker)},
+                  {"first_frame", t.track.firstFrame},
                   {"last_frame", t.lastFrame()},
                   {"seconds", t.seconds},
                   {"mean_confidence", t.track.confidence.mean()}};

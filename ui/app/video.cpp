@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
-#include <fstream>
 
 namespace ew::ui {
 
@@ -22,15 +21,17 @@ const Keyframe* VideoSession::keyframeAt(int f) const {
 }
 
 TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes, int first,
-                        int last, const std::function<bool(double)>& progress) {
+                        int last, TrackerKind tracker, const std::function<bool(double)>& progress) {
   const auto start = std::chrono::steady_clock::now();
   VideoSource source(video);
   TrackerOptions o;
+  o.kind = tracker;
   o.firstFrame = first;
   o.lastFrame = last;
   TrackedVideo t;
   t.video = video;
   t.keyframes = keyframes;
+  t.tracker = tracker;
   t.track = trackJoints(source, keyframes, o, progress);
   KeypointOptions k;
   k.fps = t.track.fps;
@@ -47,15 +48,6 @@ bool isVideoFile(const std::filesystem::path& path) {
   for (const char* e : {".mp4", ".avi", ".mov", ".mkv", ".webm", ".m4v", ".mpg", ".mpeg"})
     if (ext == e) return true;
   return false;
-}
-
-bool isKeyframeFile(const std::filesystem::path& path) {
-  if (path.extension() != ".json") return false;
-  std::ifstream in(path, std::ios::binary);
-  std::string head(4096, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
-  return head.find("\"eigenwalker-keyframes\"") != std::string::npos;
 }
 
 }  // namespace ew::ui

@@ -200,6 +200,8 @@ void setTrackRange(AppState& s, int first, int last) {
   v.lastFrame = last;
 }
 
+void setTracker(AppState& s, TrackerKind tracker) { session(s).tracker = tracker; }
+
 void startTracking(AppState& s) {
   VideoSession& v = session(s);
   if (s.jobs.track.running()) throw std::invalid_argument("a track is running");
@@ -213,10 +215,10 @@ void startTracking(AppState& s) {
                                 "-" + std::to_string(last) + ": mark them on one frame first");
   v.marking = false;
   v.trackError.clear();
-  const std::string title = "Tracking " + v.path.filename().string();
+  const std::string title = "Tracking " + v.path.filename().string() + " (" + trackerName(v.tracker) + ")";
   s.log.info(title + ", frames " + std::to_string(v.firstFrame) + "-" + std::to_string(last));
   s.jobs.track.start(
-      title, [path = v.path, keys = v.keyframes, first = v.firstFrame, last](JobProgress& p) {
+      title, [path = v.path, keys = v.keyframes, first = v.firstFrame, last, tracker = v.tracker](JobProgress& p) {
         const auto progress = [&p, first, last](double done) {
           try {
             const int frames = last - first + 1;
@@ -227,7 +229,7 @@ void startTracking(AppState& s) {
             return false;
           }
         };
-        return std::make_shared<const TrackedVideo>(trackVideo(path, keys, first, last, progress));
+        return std::make_shared<const TrackedVideo>(trackVideo(path, keys, first, last, tracker, progress));
       });
 }
 

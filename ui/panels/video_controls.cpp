@@ -8,6 +8,7 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/panels/clip_controls.h"
+#include "ui/widgets/flow.h"
 #include "ui/widgets/section_title.h"
 
 namespace ew::ui {
@@ -104,6 +105,19 @@ void marking(AppState& s, const VideoSession& v) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Forget the joints marked on this frame");
 }
 
+// Optical flow (video/joint_tracker.h) or Zou et al.'s appearance tracker
+// (video/appearance_tracker.h): the second is there to compare, as issue 16 asks.
+void trackerChoice(AppState& s, const VideoSession& v) {
+  static const char* const labels[] = {"Optical flow", "Appearance (Zou)"};
+  int choice = v.tracker == TrackerKind::Appearance ? 1 : 0;
+  if (radioRow(labels, 2, &choice))
+    apply(s, [&] { actions::setTracker(s, choice == 1 ? TrackerKind::Appearance : TrackerKind::OpticalFlow); });
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Optical flow: each joint's own flow, checked against its keyframe look.\n"
+                      "Appearance: Zou et al. 2009, each segment's colours from the marked frame,\n"
+                      "joints sought down the body's tree (slower, measured less accurate: docs/TRACKING.md).");
+}
+
 void tracking(AppState& s, const VideoSession& v) {
   sectionTitle("Track");
   int range[2] = {v.firstFrame, v.lastFrame < 0 ? v.frameCount() - 1 : v.lastFrame};
@@ -111,13 +125,18 @@ void tracking(AppState& s, const VideoSession& v) {
   if (ImGui::InputInt2("##range", range, ImGuiInputTextFlags_EnterReturnsTrue))
     apply(s, [&] { actions::setTrackRange(s, range[0], range[1]); });
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("The first and last frame to track (Enter)");
+  trackerChoice(s, v);
   const bool stale =
       v.tracked &&
       (v.tracked->keyframes.keyframes.size() != v.keyframes.keyframes.size() ||
+       v.tracked->tracker != v.tracker ||
        v.tracked->track.firstFrame != v.firstFrame ||
        !std::equal(v.keyframes.keyframes.begin(), v.keyframes.keyframes.end(),
                    v.tracked->keyframes.keyframes.begin(), [](const auto& a, const auto& b) {
-                     return a.frame == b.frame && a.jointsPx.cwiseEqual(b.jointsPx).all();
+                     // A joint not marked (NaN) on both is unchanged: NaN == NaN is false.
+                     const auto same = a.jointsPx.array() == b.jointsPx.array() ||
+                                       (a.jointsPx.array().isNaN() && b.jointsPx.array().isNaN());
+                     return a.frame == b.frame && same.all();
                    }));
   char label[96];
   std::snprintf(label, sizeof label, "%s frames %d-%d",
@@ -131,11 +150,14 @@ void tracking(AppState& s, const VideoSession& v) {
   } else if (buttonRow({{label, !v.keyframes.keyframes.empty()}}) == 0) {
     apply(s, [&] { actions::startTracking(s); });
   }
-  if (stale) ImGui::TextDisabled("the keyframes changed since the last track");
+  if (stale) textDisabledWrapped("the keyframes or the tracker changed since the last track");
   if (v.tracked) {
     const auto& t = *v.tracked;
-    ImGui::TextDisabled("tracked %d-%d in %.1f s (%.0f frames/s)", t.track.firstFrame,
-                        t.lastFrame(), t.seconds, t.frames() / std::max(t.seconds, 1e-9));
+    char done[128];
+    std::snprintf(done, sizeof done, "tracked %d-%d by %s in %.1f s (%.0f frames/s)", t.track.firstFrame,
+                  t.lastFrame(), t.tracker == TrackerKind::Appearance ? "appearance" : "optical flow",
+                  t.seconds, t.frames() / std::max(t.seconds, 1e-9));
+    textDisabledWrapped(done);
     ImGui::TextDisabled("mean confidence %.2f", t.track.confidence.mean());
   }
   if (!v.trackError.empty()) {

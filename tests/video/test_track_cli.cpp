@@ -1,0 +1,81 @@
+// `eigenwalker-cli track` end to end on synthetic footage with known truth: both trackers,
+// what the output folder holds, `--compare` against a keyframe file's other frames, and
+// the errors for an unknown tracker and a keyframe frame the file lacks.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "core/synth/population.h"
+#include "core/tracking/keyframes.h"
+#include "tests/common/test_support.h"
+#include "video/synthetic_footage.h"
+
+namespace ew {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+test::ShellRun runCli(const std::string& arguments, const fs::path& dir) {
+  return test::runShell("cd \"" + dir.string() + "\" && \"" + EW_CLI_PATH + "\" " + arguments, dir);
+}
+
+// A synthetic walker's first second (30 frames) filmed 6 m away, 30° off the side view, with
+// its true joints as keyframes on frames 0, 10 and 20.
+class TrackCli : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = test::makeTempDir("track_cli");
+    PopulationOptions o;
+    o.count = 1;
+    o.simulation.rateHz = 30.0;
+    const Eigen::MatrixXd frames = generatePopulation(o).front().trial.positionsMm.topRows(30);
+    truthPx_ = writeFootage(root_ / "walk.avi", frames, cameraBeside(frames, 30.0, 6000.0), 30.0);
+    writeKeyframes(root_ / "keys.json", keyframesFromTrack(truthPx_, {0, 10, 20}, "walk.avi"));
+  }
+  static void TearDownTestSuite() { fs::remove_all(root_); }
+  static fs::path root_;
+  static Eigen::MatrixXd truthPx_;
+};
+fs::path TrackCli::root_;
+Eigen::MatrixXd TrackCli::truthPx_;
+
+TEST_F(TrackCli, EachTrackerWritesTheTrackAndMeasuresItAgainstTheOtherKeyframes) {
+  for (const std::string tracker : {"flow", "appearance"}) {
+    const std::string out = "out_" + tracker;
+    const test::ShellRun r = runCli("track --video walk.avi --keyframes keys.json --keyframe-frames 0 --compare "
+                                    "keys.json --tracker " + tracker + " --out " + out + " --json",
+                                    root_);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const json report = json::parse(r.out.substr(r.out.find('{')));
+    EXPECT_EQ(report["tracker"], tracker);
+    EXPECT_EQ(report["frames"], 30);
+    EXPECT_EQ(report["keyframes"], 1);
+    // Frames 10 and 20 of the keyframe file are the reference; frame 0 is the track's own.
+    EXPECT_EQ(report["compare"]["joint_frames"], 2 * kJointCount);
+    EXPECT_GT(report["compare"]["median_px"].get<double>(), 0.0);
+    EXPECT_LT(report["compare"]["median_px"].get<double>(), 40.0) << tracker;  // a 250 px walker
+    EXPECT_EQ(json::parse(test::readTextFile(root_ / out / "track.json"))["tracker"], tracker);
+    EXPECT_TRUE(fs::exists(root_ / out / "track_2d.csv"));
+    EXPECT_TRUE(fs::exists(root_ / out / "confidence.csv"));
+    int keypointFiles = 0;
+    for (const auto& e : fs::directory_iterator(root_ / out / "keypoints")) keypointFiles += e.is_regular_file();
+    EXPECT_EQ(keypointFiles, 30);
+  }
+}
+
+TEST_F(TrackCli, RefusesAnUnknownTrackerAndAKeyframeFrameTheFileLacks) {
+  const test::ShellRun unknown =
+      runCli("track --video walk.avi --keyframes keys.json --tracker sift --out bad", root_);
+  EXPECT_NE(unknown.exitCode, 0);
+  EXPECT_NE(unknown.err.find("sift"), std::string::npos) << unknown.err;
+  const test::ShellRun missing =
+      runCli("track --video walk.avi --keyframes keys.json --keyframe-frames 7 --out bad", root_);
+  EXPECT_NE(missing.exitCode, 0);
+  EXPECT_NE(missing.err.find("keys.json"), std::string::npos) << missing.err;
+  EXPECT_NE(missing.err.find("no keyframe on frame 7"), std::string::npos) << missing.err;
+  EXPECT_FALSE(fs::exists(root_ / "bad" / "track.json"));
+}
+
+}  // namespace
+}  // namespace ew
