@@ -109,4 +109,11 @@ std::array<int, kBoneCount> branchSigns(const JointRays& rays, const JointMatrix
   return signs;
 }
 
+int boneBetween(Joint a, Joint b) {
+  for (std::size_t i = 0; i < kBones.size(); ++i)
+    if ((kBones[i].first == a && kBones[i].second == b) || (kBones[i].first == b && kBones[i].second == a))
+      return static_cast<int>(i);
+  return -1;
+}
+
 }  // namespace ew

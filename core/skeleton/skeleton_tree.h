@@ -46,6 +46,9 @@ inline constexpr std::array<TreeBone, kBoneCount> kTreeOrder = {{
     {Joint::LKnee, Joint::LAnkle, 13},
 }};
 
+// The index into kBones of the bone between a and b (either order); −1 when none.
+int boneBetween(Joint a, Joint b);
+
 // Lengths of the 14 bones of kBones, mm.
 struct BoneLengths {
   std::array<double, kBoneCount> mm{};

@@ -15,14 +15,7 @@
 namespace ew {
 namespace {
 
-int boneOf(Joint a, Joint b) {
-  for (int i = 0; i < kBoneCount; ++i)
-    if (kBones[static_cast<std::size_t>(i)] == std::pair{a, b} || kBones[static_cast<std::size_t>(i)] == std::pair{b, a})
-      return i;
-  return -1;
-}
-
-double length(const BoneLengths& bones, Joint a, Joint b) { return bones.mm[static_cast<std::size_t>(boneOf(a, b))]; }
+double length(const BoneLengths& bones, Joint a, Joint b) { return bones.mm[static_cast<std::size_t>(boneBetween(a, b))]; }
 
 TEST(BoneSources, Table2KeepsThePapersProportionsAndTheStature) {
   const BoneLengths b = boneLengthsFromZouTable2(1750, "me");
@@ -75,7 +68,7 @@ TEST(BoneSources, AReferenceFrameParallelToTheImageGivesEveryBone) {
     px[2 * j + 1] = 540 - 1200 * flat(0, 3 * j + 2) / 4000;
   }
   const BoneLengths truth = boneLengthsFromFrames(flat, "flat");
-  const int thigh = boneOf(Joint::RHip, Joint::RKnee);
+  const int thigh = boneBetween(Joint::RHip, Joint::RKnee);
   const BoneLengths b = boneLengthsFromReferenceFrame(px, thigh, truth.mm[static_cast<std::size_t>(thigh)], "frame 12");
   for (int i = 0; i < kBoneCount; ++i) EXPECT_NEAR(b.mm[static_cast<std::size_t>(i)], truth.mm[static_cast<std::size_t>(i)], 1e-9);
 
