@@ -60,6 +60,15 @@ struct ReconstructArgs {
   std::string prior;                // the snippet engine's prior (--prior)
   std::string reference;            // the skeleton engine's 3D reference (--reference)
   std::string angles;               // the skeleton engine's joint angles out (--angles)
+  // The skeleton engine's bone sources, guide and scale-depth camera (reconstruct_skeleton.h).
+  std::string bones, referenceBone, guide, scaleDepthChain;
+  std::optional<double> statureM;
+  std::optional<int> boneFrame, scaleDepthFrame;
+
+  bool skeletonOnlyGiven() const {
+    return !bones.empty() || !referenceBone.empty() || !guide.empty() || !scaleDepthChain.empty() || statureM ||
+           boneFrame || scaleDepthFrame;
+  }
 };
 
 // The model the user named, or the default one; truncated to --components (the viewer's
@@ -301,11 +310,14 @@ SkeletonArgs skeletonArgs(const ReconstructArgs& a) {
   refuse(!a.prior.empty(), "--prior");
   refuse(a.angleDeg.has_value() || a.unknownAngle, "--angle");
   refuse(a.projectAngleDeg.has_value(), "--project-angle");
-  refuse(a.focalPx.has_value() || a.elevationDeg.has_value() || a.orthographic, "--focal-px");
+  refuse(a.elevationDeg.has_value() || a.orthographic, "--elevation");
   refuse(!a.save2d.empty() || a.dataPreserving, "--save-2d");
   SkeletonArgs s;
   s.input = a.input, s.out = a.out, s.layout = a.layout, s.camera = a.camera, s.cameraName = a.cameraName;
   s.reference = a.reference, s.fps = a.fps, s.json = a.json, s.angles = a.angles;
+  s.focalPx = a.focalPx, s.imageSize = a.imageSize, s.scaleDepthFrame = a.scaleDepthFrame;
+  s.scaleDepthChain = a.scaleDepthChain, s.bones = a.bones, s.statureM = a.statureM, s.boneFrame = a.boneFrame;
+  s.referenceBone = a.referenceBone, s.guide = a.guide;
   return s;
 }
 
@@ -313,6 +325,9 @@ SkeletonArgs skeletonArgs(const ReconstructArgs& a) {
 
 int runReconstruct(const ReconstructArgs& a) {
   const EngineKind engine = parseEngineKind(a.engine, "--engine");
+  if (engine != EngineKind::Skeleton && a.skeletonOnlyGiven())
+    throw Error(ErrorKind::BadArgument, "--bones", "",
+                "--bones, --stature, --bone-frame, --reference-bone, --guide and --scale-depth-* apply to --engine skeleton only");
   if (engine == EngineKind::Snippet) return runReconstructSnippet(a);
   if (engine == EngineKind::Skeleton) return runReconstructSkeleton(skeletonArgs(a));
   if (!a.reference.empty())
@@ -430,6 +445,28 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--angles", args->angles,
                   "--engine skeleton: also write the result's joint angles (.mot for OpenSim, or .csv; "
                   "docs/ANGLES.md)");
+  cmd->add_option("--bones", args->bones,
+                  "--engine skeleton: where the bone lengths come from: reference (--reference, the default when "
+                  "given), table2 (Zou et al.'s Table 2 at --stature), eigenwalker (the eigenwalker's fit of this "
+                  "walker, scaled to --stature when given), frame (--bone-frame and --reference-bone)")
+      ->check(CLI::IsMember({"reference", "table2", "eigenwalker", "frame"}));
+  cmd->add_option("--stature", args->statureM, "--engine skeleton: the walker's stature in metres (--bones table2, eigenwalker)")
+      ->check(CLI::Range(0.5, 2.5));
+  cmd->add_option("--bone-frame", args->boneFrame,
+                  "--engine skeleton, --bones frame: a frame (0-based) with the body parallel to the image plane (§4.1)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--reference-bone", args->referenceBone,
+                  "--engine skeleton, --bones frame: the bone of known length, JOINT-JOINT=MM (e.g. r_elbow-r_wrist=260)");
+  cmd->add_option("--guide", args->guide,
+                  "--engine skeleton: choose each bone's depth branch nearer the eigenwalker's fit of the walker")
+      ->check(CLI::IsMember({"eigenwalker"}));
+  cmd->add_option("--scale-depth-frame", args->scaleDepthFrame,
+                  "--engine skeleton without --camera or --focal-px: the frame (0-based) for Zou et al.'s "
+                  "scale-depth relation T(dz), with --scale-depth-chain and --image-size")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--scale-depth-chain", args->scaleDepthChain,
+                  "--engine skeleton: four joints a,b,c,d of three linked segments, the outer two parallel to the "
+                  "image plane on --scale-depth-frame (e.g. sternum,r_shoulder,r_elbow,r_wrist)");
   cmd->add_option("--prior", args->prior,
                   "Snippet prior from `build --engine snippet` (default: learnt from the embedded synthetic "
                   "population)")

@@ -14,6 +14,12 @@
 #include "core/io/load_trial.h"
 #include "core/io/trc_writer.h"
 #include "core/keypoints/keypoint_trial.h"
+#include "core/camera/clip_reconstruction.h"
+#include "core/camera/walk_camera.h"
+#include "core/engine/default_model.h"
+#include "core/keypoints/keypoint_frames.h"
+#include "core/skeleton/bone_sources.h"
+#include "core/skeleton/scale_depth.h"
 #include "core/skeleton/skeleton_camera.h"
 
 namespace ew::cli {
@@ -56,47 +62,226 @@ void writeAngles(const SkeletonArgs& a, const Eigen::MatrixXd& framesMm, double 
   std::cerr << "wrote " << a.angles << "\n";
 }
 
-}  // namespace
 
-int runReconstructSkeleton(const SkeletonArgs& a) {
-  require(!a.camera.empty(), "--camera",
-          "the skeleton engine reconstructs through a calibrated pinhole camera: give --camera FILE (a "
-          "Pose2Sim calibration); orthographic 2D views are scored by 'evaluate --experiment snippet --engine skeleton'");
-  require(!a.reference.empty(), "--reference",
-          "the skeleton engine needs the bone lengths: give --reference FILE, a 3D trial of the same person");
+// [SECTION] The eigenwalker's fit of this walker: bones and a guide for the branches
+
+struct EigenwalkerOfClip {
+  BoneLengths bones;
+  std::vector<JointMatrix> poses;  // the fitted walker in its camera's frame, per input frame
+};
+
+EigenwalkerOfClip eigenwalkerOf(const KeypointTrial& keypoints, std::optional<double> focalPx, const std::string& name) {
+  CameraFitOptions f;
+  f.focalPx = focalPx;
+  f.file = name;
+  const ClipReconstruction clip = reconstructKeypointTrial(defaultRealModel(), keypoints, f);
+  EigenwalkerOfClip out{boneLengthsFromWalker(clip.fit.w, clip.fit.omegaRadS, name), {}};
+  const Eigen::MatrixXd camera = walkInCameraFrame(clip.framesMm, clip.timesS, clip.fit.camera);
+  for (Eigen::Index frame = 0; frame < camera.rows(); ++frame)
+    out.poses.push_back(Eigen::Map<const JointMatrix>(camera.row(frame).eval().data()));
+  std::cerr << std::fixed << std::setprecision(1) << "eigenwalker fit of " << name << ": azimuth "
+            << clip.fit.camera.alphaDeg << " deg, focal " << clip.fit.camera.focalPx << " px, reprojection RMS "
+            << clip.fit.reprojectionRmsPx << " px\n";
+  return out;
+}
+
+// [SECTION] Where the bone lengths come from
+
+struct ChosenBones {
+  BoneLengths lengths;
+  std::string source;
+};
+
+Joint jointNamed(const std::string& name, const char* option) {
+  const auto j = jointFromName(name);
+  if (!j) throw Error(ErrorKind::BadArgument, option, "", "'" + name + "' is no joint of SPEC §1 (e.g. r_elbow)");
+  return *j;
+}
+
+// "a-b=MM": the bone between joints a and b, and its length in mm.
+std::pair<int, double> referenceBoneOf(const std::string& text) {
+  const auto dash = text.find('-'), equals = text.find('=');
+  if (dash == std::string::npos || equals == std::string::npos || equals < dash)
+    throw Error(ErrorKind::BadArgument, "--reference-bone", "", "expects JOINT-JOINT=MM, e.g. r_elbow-r_wrist=260");
+  const Joint a = jointNamed(text.substr(0, dash), "--reference-bone");
+  const Joint b = jointNamed(text.substr(dash + 1, equals - dash - 1), "--reference-bone");
+  const int bone = boneBetween(a, b);
+  if (bone < 0) throw Error(ErrorKind::BadArgument, "--reference-bone", "", "no bone joins " + text.substr(0, equals));
+  double mm = 0.0;
+  try {
+    mm = std::stod(text.substr(equals + 1));
+  } catch (const std::exception&) {
+    throw Error(ErrorKind::BadArgument, "--reference-bone", "", "the length after '=' is not a number of mm");
+  }
+  return {bone, mm};
+}
+
+const Eigen::RowVectorXd frameRow(const KeypointTrial& k, int frame, const char* option) {
+  if (frame < 0 || frame >= k.jointsPx.rows())
+    throw Error(ErrorKind::BadArgument, option, "",
+                "frame " + std::to_string(frame) + " is not among the input's 0-" + std::to_string(k.jointsPx.rows() - 1));
+  return k.jointsPx.row(frame);
+}
+
+ChosenBones bonesFor(const SkeletonArgs& a, const KeypointTrial& keypoints, const std::optional<JointTrial>& reference,
+                     const std::optional<EigenwalkerOfClip>& fit) {
+  const std::string source = a.bones.empty() ? (reference ? "reference" : "") : a.bones;
+  if (source == "reference") {
+    require(reference.has_value(), "--reference", "--bones reference needs --reference FILE, a 3D trial of the same person");
+    return {boneLengthsFromFrames(reference->positionsMm, a.reference), "the reference " + a.reference};
+  }
+  if (source == "table2") {
+    require(a.statureM.has_value(), "--stature", "--bones table2 scales Zou et al.'s Table 2 to the walker's stature: give --stature M");
+    return {boneLengthsFromZouTable2(1000.0 * *a.statureM, "--stature"), "Zou et al.'s Table 2 at a stature of " + std::to_string(*a.statureM) + " m"};
+  }
+  if (source == "eigenwalker") {
+    const BoneLengths b = a.statureM ? scaledToStature(fit->bones, 1000.0 * *a.statureM, "--stature") : fit->bones;
+    return {b, a.statureM ? "the eigenwalker's fit, scaled to the stature" : "the eigenwalker's fit"};
+  }
+  if (source == "frame") {
+    require(a.boneFrame.has_value() && !a.referenceBone.empty(), "--bone-frame",
+            "--bones frame needs --bone-frame F (the body parallel to the image plane) and --reference-bone JOINT-JOINT=MM");
+    const auto [bone, mm] = referenceBoneOf(a.referenceBone);
+    return {boneLengthsFromReferenceFrame(frameRow(keypoints, *a.boneFrame, "--bone-frame"), bone, mm, a.input),
+            "frame " + std::to_string(*a.boneFrame) + " with " + a.referenceBone};
+  }
+  throw Error(ErrorKind::BadArgument, "--bones", "",
+              "the skeleton engine needs the bone lengths: give --reference FILE (a 3D trial of the same person), "
+              "or --bones table2|eigenwalker|frame");
+}
+
+// [SECTION] The camera
+
+struct ChosenCamera {
+  CalibratedCamera camera;
+  json description;
+};
+
+// A pinhole with the principal point in the middle of the image, no distortion, no extrinsics.
+CalibratedCamera plainPinhole(double focalPx, const std::string& imageSize) {
+  const KeypointImageSize size = parseKeypointImageSize(imageSize, "--image-size");
+  CalibratedCamera c;
+  c.name = c.table = "pinhole";
+  c.widthPx = size.width, c.heightPx = size.height;
+  c.fxPx = c.fyPx = focalPx;
+  c.cxPx = 0.5 * size.width, c.cyPx = 0.5 * size.height;
+  return c;
+}
+
+std::array<Joint, 4> chainOf(const std::string& text) {
+  std::array<Joint, 4> chain{};
+  std::size_t from = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const std::size_t comma = text.find(',', from);
+    if ((k < 3) == (comma == std::string::npos))
+      throw Error(ErrorKind::BadArgument, "--scale-depth-chain", "", "expects four joints a,b,c,d, e.g. sternum,r_shoulder,r_elbow,r_wrist");
+    chain[k] = jointNamed(text.substr(from, comma == std::string::npos ? std::string::npos : comma - from), "--scale-depth-chain");
+    from = comma + 1;
+  }
+  return chain;
+}
+
+ChosenCamera cameraFor(const SkeletonArgs& a, const KeypointTrial& keypoints, const BoneLengths& bones) {
+  const bool scaleDepth = a.scaleDepthFrame.has_value() || !a.scaleDepthChain.empty();
+  if (!a.camera.empty()) {
+    if (a.focalPx || scaleDepth)
+      throw Error(ErrorKind::BadArgument, "--camera", "", "the calibration gives the camera: --focal-px and --scale-depth-* do not apply");
+    const CalibratedCamera c =
+        readCalibratedCamera(a.camera, a.cameraName.empty() ? std::nullopt : std::optional<std::string>(a.cameraName));
+    return {c, {{"source", "calibration"}, {"file", a.camera}, {"focal_px", c.focalPx()}}};
+  }
+  require(!a.imageSize.empty(), "--image-size",
+          "without a calibration (--camera) the principal point is the middle of the image: give --image-size WxH");
+  if (a.focalPx) {
+    if (scaleDepth) throw Error(ErrorKind::BadArgument, "--focal-px", "", "a focal length given: --scale-depth-* do not apply");
+    return {plainPinhole(*a.focalPx, a.imageSize), {{"source", "user"}, {"focal_px", *a.focalPx}}};
+  }
+  require(a.scaleDepthFrame.has_value() && !a.scaleDepthChain.empty(), "--scale-depth-frame",
+          "the skeleton engine needs a camera: --camera FILE, --focal-px F, or Zou et al.'s scale-depth relation on a "
+          "frame with --scale-depth-frame F --scale-depth-chain a,b,c,d (the outer two segments parallel to the image)");
+  const CalibratedCamera middle = plainPinhole(1.0, a.imageSize);
+  const ScaleDepthFocal f = focalFromScaleDepth(frameRow(keypoints, *a.scaleDepthFrame, "--scale-depth-frame"),
+                                                middle.cxPx, middle.cyPx, chainOf(a.scaleDepthChain), bones, a.input);
+  std::cerr << std::fixed << std::setprecision(1) << "scale-depth relation on frame " << *a.scaleDepthFrame << " ("
+            << a.scaleDepthChain << "): depth step " << f.depthStepMm << " mm, focal length " << f.focalPx << " px\n";
+  return {plainPinhole(f.focalPx, a.imageSize),
+          {{"source", "scale-depth relation"}, {"frame", *a.scaleDepthFrame}, {"chain", a.scaleDepthChain},
+           {"focal_px", f.focalPx}, {"depth_step_mm", f.depthStepMm},
+           {"scales_mm_per_px", {f.nearScaleMmPerPx, f.farScaleMmPerPx}}}};
+}
+
+KeypointTrial readKeypoints(const SkeletonArgs& a) {
   KeypointOptions ko;
   if (!a.layout.empty()) ko.layout = a.layout;
   ko.fps = a.fps;
-  const KeypointTrial keypoints = readKeypointTrial(a.input, ko);
-  const CalibratedCamera camera =
-      readCalibratedCamera(a.camera, a.cameraName.empty() ? std::nullopt : std::optional<std::string>(a.cameraName));
-  const JointTrial reference = readReference(a.reference);
+  return readKeypointTrial(a.input, ko);
+}
+
+std::optional<JointTrial> referenceFor(const SkeletonArgs& a) {
+  if (a.reference.empty()) return std::nullopt;
+  JointTrial reference = readReference(a.reference);
   if (a.fps && reference.rateHz > 0.0 && std::abs(reference.rateHz - *a.fps) > 1e-6 * *a.fps)
     throw Error(ErrorKind::BadArgument, a.reference, "--fps",
                 "the reference is at " + std::to_string(reference.rateHz) + " Hz, the keypoints at --fps " +
                     std::to_string(*a.fps) + " Hz: frames would not correspond");
-  const BoneLengths bones = boneLengthsFromFrames(reference.positionsMm, a.reference);
-  const SkeletonCameraResult r = reconstructThroughCamera(keypoints.jointsPx, camera, bones, keypoints.rateHz, a.input);
+  return reference;
+}
+
+// The eigenwalker's fit, when the bones or the guide ask for it, with the focal length
+// the calibration or the user gives (else it estimates its own).
+std::optional<EigenwalkerOfClip> eigenwalkerIfAsked(const SkeletonArgs& a, const KeypointTrial& keypoints) {
+  if (a.bones != "eigenwalker" && a.guide != "eigenwalker") return std::nullopt;
+  std::optional<double> focal = a.focalPx;
+  if (!a.camera.empty())
+    focal = readCalibratedCamera(a.camera, a.cameraName.empty() ? std::nullopt : std::optional<std::string>(a.cameraName)).focalPx();
+  return eigenwalkerOf(keypoints, focal, a.input);
+}
+
+}  // namespace
+
+int runReconstructSkeleton(const SkeletonArgs& a) {
+  // What is missing is said before any file is read.
+  require(!a.camera.empty() || a.focalPx || a.scaleDepthFrame, "--camera",
+          "the skeleton engine reconstructs through a pinhole camera: give --camera FILE (a Pose2Sim calibration), "
+          "--focal-px F or --scale-depth-frame F with --image-size WxH; orthographic 2D views are scored by "
+          "'evaluate --experiment snippet --engine skeleton'");
+  require(!a.bones.empty() || !a.reference.empty(), "--reference",
+          "the skeleton engine needs the bone lengths: give --reference FILE, a 3D trial of the same person, or "
+          "--bones table2|eigenwalker|frame");
+  const KeypointTrial keypoints = readKeypoints(a);
+  const std::optional<JointTrial> reference = referenceFor(a);
+  const std::optional<EigenwalkerOfClip> fit = eigenwalkerIfAsked(a, keypoints);
+  const ChosenBones bones = bonesFor(a, keypoints, reference, fit);
+  const ChosenCamera chosen = cameraFor(a, keypoints, bones.lengths);
+  const CalibratedCamera& camera = chosen.camera;
+  SkeletonCameraOptions options;
+  if (fit && a.guide == "eigenwalker") options.solve.guideMm = fit->poses;
+  const SkeletonCameraResult r =
+      reconstructThroughCamera(keypoints.jointsPx, camera, bones.lengths, keypoints.rateHz, a.input, options);
   const bool world = camera.hasExtrinsics;
+  const std::string cameraText = a.camera.empty() ? "a pinhole of " + std::to_string(camera.focalPx()) + " px"
+                                                  : "camera " + camera.name + " of " + a.camera;
   writeJointTrajectories(a.out, world ? r.worldMm : r.sequence.framesMm, keypoints.rateHz,
-                {"skeleton engine (Zou et al. 2009) of " + a.input + " through camera " + camera.name + " of " + a.camera,
+                {"skeleton engine (Zou et al. 2009) of " + a.input + " through " + cameraText,
                  world ? "frame: the calibration's world (mm)" : "frame: the camera's (x right, y down, z forward; mm)"});
   json report = {{"engine", "skeleton"}, {"input", a.input}, {"camera", camera.name}, {"frames", r.sequence.framesMm.rows()},
                  {"rate_hz", keypoints.rateHz}, {"clamped_bone_frames", r.sequence.clampedBoneFrames},
-                 {"filled_points", r.filledPoints}, {"frame", world ? "world" : "camera"}};
+                 {"filled_points", r.filledPoints}, {"frame", world ? "world" : "camera"},
+                 {"bones", bones.source}, {"camera_source", chosen.description},
+                 {"guide", a.guide.empty() ? "none" : a.guide}};
   const double depthMm = median(r.rootDistanceMm);
   report["pelvis_distance_median_mm"] = depthMm;
   std::cerr << std::fixed << std::setprecision(1) << "skeleton: " << r.sequence.framesMm.rows() << " frames through "
-            << camera.name << ", pelvis at " << depthMm << " mm (median), "
+            << camera.name << ", bones from " << bones.source << ", pelvis at " << depthMm << " mm (median), "
             << r.sequence.clampedBoneFrames << " clamped bone-frames, " << r.filledPoints << " joint-frames filled\n";
-  if (world) {
-    const ReferenceComparison c = compareWithReference(r.worldMm, reference.positionsMm, a.reference);
+  if (world && reference) {
+    const ReferenceComparison c = compareWithReference(r.worldMm, reference->positionsMm, a.reference);
     report["reference"] = comparisonJson(c);
     std::cerr << "against " << a.reference << " (" << c.frames << " frames): MPJPE " << c.rawMm << " mm as is, "
               << c.meanTranslationMm << " mm without the mean translation, " << c.procrustesMm
               << " mm after Procrustes\n";
-  } else {
-    std::cerr << "no extrinsics in " << a.camera << ": the result stays in the camera's frame and is not scored\n";
+  } else if (!world) {
+    std::cerr << "no extrinsics: the result stays in the camera's frame" << (reference ? " and is not scored" : "") << "\n";
   }
   std::cerr << "wrote " << a.out << "\n";
   if (!a.angles.empty()) writeAngles(a, world ? r.worldMm : r.sequence.framesMm, keypoints.rateHz, world);
