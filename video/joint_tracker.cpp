@@ -111,7 +111,9 @@ class FrameSupply {
   // backward pass decodes the piece [max(lowest, f − capacity + 1), f] at once).
   const cv::Mat& image(int f, int lowest) {
     if (auto it = frames_.find(f); it != frames_.end()) return it->second;
-    if (f < newestRead_ || frames_.size() >= capacity_) frames_.clear();
+    // Forward, a frame is not asked for again once passed (a pass holds what it still needs):
+    // one is kept. Backward, a piece is decoded at once and then handed out downwards.
+    frames_.clear();
     const int from = f < newestRead_ ? std::max(lowest, f - static_cast<int>(capacity_) + 1) : f;
     for (int k = from; k <= f; ++k) frames_[k] = colour_ ? video_.frame(k) : toGrey(video_.frame(k));
     newestRead_ = f;
