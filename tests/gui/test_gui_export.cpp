@@ -119,6 +119,41 @@ TEST_F(GuiExport, ScriptExportsPngVideoCsvBvhAndModel) {
   for (const auto& id : model.walkerIds) EXPECT_EQ(id.find("SYN005"), std::string::npos) << id;
 }
 
+// Issue 14: the exported video says what the viewer says: each view's title and subtitle, the
+// metrics, and each legend, burnt into every frame (ui/app/export_captions.h); "captions":
+// false leaves the views bare. Text is counted as near-white pixels in the caption's corner
+// (the title), under the 3D view's title (the metrics) and in the bottom-left corner (the legend).
+TEST_F(GuiExport, VideoCaptionsAreBurntIntoTheFrames) {
+  const auto d = dir.string();
+  const auto script = writeScript(dir, R"([
+    {"select_subject": "SYN005"},
+    {"export_video": {"path": ")" + d + R"(/captioned.avi", "cycles": 0.3, "fps": 24, "width": 1280, "height": 720}},
+    {"export_video": {"path": ")" + d + R"(/bare.avi", "cycles": 0.3, "fps": 24, "width": 1280, "height": 720, "captions": false}}
+  ])");
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto firstFrame = [&](const char* name) {
+    cv::VideoCapture cap((dir / name).string());
+    cv::Mat frame;
+    cap.read(frame);
+    return frame;
+  };
+  const cv::Mat captioned = firstFrame("captioned.avi"), bare = firstFrame("bare.avi");
+  ASSERT_FALSE(captioned.empty() || bare.empty());
+  const auto text = [](const cv::Mat& frame, cv::Rect where) {
+    return countPixels(frame(where), [](int rr, int g, int b) { return rr > 200 && g > 200 && b > 200; });
+  };
+  const cv::Rect title(10, 10, 200, 40), metrics(650, 60, 500, 40), legend(10, 640, 220, 70);
+  std::printf("near-white pixels captioned / bare: title %d / %d, metrics %d / %d, legend %d / %d\n",
+              text(captioned, title), text(bare, title), text(captioned, metrics), text(bare, metrics),
+              text(captioned, legend), text(bare, legend));
+  EXPECT_GT(text(captioned, title), 150);
+  EXPECT_GT(text(captioned, metrics), 150);
+  EXPECT_GT(text(captioned, legend), 20);  // the input joints' white disc and dim labels
+  EXPECT_LT(text(bare, title), 20);
+  EXPECT_LT(text(bare, metrics), 20);
+}
+
 TEST_F(GuiExport, Mp4IsWrittenOrClearlyRefused) {
   const auto d = dir.string();
   const auto script = writeScript(dir, R"([

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
@@ -15,6 +16,7 @@
 #include "core/engine/fourier.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/app/export_captions.h"
 #include "ui/panels/clip_view.h"
 #include "ui/panels/input_view_panel.h"
 #include "ui/panels/reconstruction_view_panel.h"
@@ -82,6 +84,7 @@ struct VideoExport::Impl {
   std::filesystem::path temp;
   cv::VideoWriter writer;
   gl::RenderTarget left, right;
+  std::optional<CaptionPainter> captions;
   Scene scene;
   cv::Mat frame;  // BGR, width × height
   int total = 0, done = 0;
@@ -145,6 +148,15 @@ VideoExport::VideoExport(const VideoSettings& settings, double strideHz) : impl_
   }
   m.total = videoFrameCount(v.cycles, v.fps, strideHz);
   m.frame.create(v.height, v.width, CV_8UC3);
+  if (v.captions) {
+    try {
+      m.captions.emplace();
+    } catch (const std::exception&) {
+      m.writer.release();
+      std::filesystem::remove(m.temp, ec);
+      throw;
+    }
+  }
 }
 
 VideoExport::~VideoExport() {
@@ -166,9 +178,10 @@ bool VideoExport::step(const AppState& s, Renderer& renderer, double budgetMs) {
   while (m.done < m.total) {
     const double cycles = static_cast<double>(m.done) * m.strideHz / m.settings.fps;
     const float aspectLeft = static_cast<float>(wl) / static_cast<float>(h);
+    int frame = 0;
     if (s.doc.mode == Mode::Clip && s.clip) {
       // A keypoint clip: its input frames in image pixels, the walker where the camera saw it.
-      const int frame = clipFrameAt(*s.clip, cycles);
+      frame = clipFrameAt(*s.clip, cycles);
       const ClipImageFrame image = clipImageFrame(*s.clip, aspectLeft);
       buildClipInputScene(s, m.scene, lineScale, frame, image);
       renderer.render(m.left, m.scene, clipInputCamera(image, aspectLeft));
@@ -184,6 +197,11 @@ bool VideoExport::step(const AppState& s, Renderer& renderer, double budgetMs) {
     }
     blitRgb(m.left.readPixelsRgb(), wl, h, m.frame, 0);
     blitRgb(m.right.readPixelsRgb(), wr, h, m.frame, wl);
+    if (m.captions) {
+      cv::Mat left = m.frame(cv::Rect(0, 0, wl, h)), right = m.frame(cv::Rect(wl, 0, wr, h));
+      m.captions->paint(left, inputCaption(s, frame), {});
+      m.captions->paint(right, reconstructionCaption(s), s.view.overlays.metrics ? metricItems(s) : std::vector<MetricItem>{});
+    }
     try {
       m.writer.write(m.frame);
     } catch (const cv::Exception& e) {

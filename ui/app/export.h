@@ -31,6 +31,7 @@ struct VideoSettings {
   double cycles = 2.0;         // gait cycles of the displayed walker
   double fps = 30.0;
   int width = 1280, height = 720;  // the two views side by side, each width / 2 wide
+  bool captions = true;            // each view's title, subtitle, metrics and legend burnt in
 };
 
 // Frames of a video: round(cycles · fps / strideHz), at least 1. Frame i shows the gait

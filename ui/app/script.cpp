@@ -468,13 +468,17 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
     checkExport_ = true;
   } else if (n == "export_video") {
     if (!a.argument.is_object() || !a.argument.contains("path") || !a.argument["path"].is_string())
-      throw std::invalid_argument(R"(expects {"path": P, "cycles": N, "fps": F, "width": W, "height": H})");
+      throw std::invalid_argument(R"(expects {"path": P, "cycles": N, "fps": F, "width": W, "height": H, "captions": B})");
     VideoSettings v;
     v.path = a.argument["path"].get<std::string>();
     v.cycles = numberField(a.argument, "cycles", v.cycles);
     v.fps = numberField(a.argument, "fps", v.fps);
     v.width = static_cast<int>(numberField(a.argument, "width", v.width));
     v.height = static_cast<int>(numberField(a.argument, "height", v.height));
+    if (a.argument.contains("captions")) {
+      if (!a.argument["captions"].is_boolean()) throw std::invalid_argument(R"("captions" is true or false)");
+      v.captions = a.argument["captions"].get<bool>();
+    }
     s.derived.update(s.doc);
     actions::startVideoExport(s, v);
     exportFailuresBefore_ = s.exports.failures;

@@ -13,6 +13,8 @@ namespace {
 
 constexpr const char* kFontDirs[] = {"/usr/share/fonts/truetype/dejavu"};
 
+}  // namespace
+
 std::filesystem::path findFont(const char* file) {
   for (const char* dir : kFontDirs) {
     std::error_code ec;
@@ -21,6 +23,8 @@ std::filesystem::path findFont(const char* file) {
   }
   return {};
 }
+
+namespace {
 
 // Latin, Latin-1, Greek (α, σ, λ), punctuation and arrows, super/subscripts, math.
 // (Constant data that must outlive the atlas build, hence namespace scope.)

@@ -2,6 +2,7 @@
 // The look: a dark theme tuned for projectors, DejaVu Sans when installed (else ImGui's
 // built-in font), every size scaled by the monitor's content scale × the user's UI scale.
 
+#include <filesystem>
 #include <imgui.h>
 
 #include <string>
@@ -16,6 +17,9 @@ namespace ew::ui {
 // `presentation` gets the same fonts kPresentationTextScale times larger (the views' captions
 // and the bar in presentation mode).
 void applyTheme(Fonts& fonts, Fonts& presentation, float scale, Theme theme = Theme::Dark);
+
+// The installed font file `file` (e.g. "DejaVuSans.ttf"; fonts-dejavu-core), empty when absent.
+std::filesystem::path findFont(const char* file);
 
 // "dark", "light", "projector"; throws std::invalid_argument for anything else.
 Theme themeFromName(const std::string& name);

@@ -71,6 +71,8 @@ void ExportPanel::draw(AppState& s, const FrameContext& ctx) {
   ImGui::RadioButton(".avi (MJPG)", &videoFormat, 0);
   ImGui::SameLine();
   ImGui::RadioButton(".mp4 (mp4v)", &videoFormat, 1);
+  ImGui::Checkbox("captions, metrics and legends", &videoCaptions);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Each view's title, what it shows and its legend, burnt into the frames");
   if (s.exports.video) {
     ImGui::ProgressBar(s.exports.video->fraction(), ImVec2(-1.0f, 0.0f));
     if (ImGui::Button("Cancel")) actions::cancelVideoExport(s);
@@ -82,6 +84,7 @@ void ExportPanel::draw(AppState& s, const FrameContext& ctx) {
       v.fps = videoFps;
       v.width = videoWidth;
       v.height = videoHeight;
+      v.captions = videoCaptions;
       actions::startVideoExport(s, v);
     });
     if (s.exports.video) status = "video: rendering…";

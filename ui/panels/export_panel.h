@@ -21,6 +21,7 @@ struct ExportPanel {
   int videoFps = 30;
   int videoWidth = 1280, videoHeight = 720;
   int videoFormat = 0;     // 0 = .avi (MJPG), 1 = .mp4 (mp4v)
+  bool videoCaptions = true;  // titles, metrics and legends burnt into the frames
   int motionCycles = 0;    // CSV / BVH: 0 = the walker's trial duration
   std::string status;      // the last export's outcome, shown in the window
 

@@ -9,6 +9,7 @@
 #include "ui/app/app_state.h"
 #include "ui/panels/clip_view.h"
 #include "ui/convert.h"
+#include "ui/panels/view_captions.h"
 #include "ui/panels/view_overlay.h"
 #include "ui/panels/walker_bounds.h"
 #include "ui/render/camera.h"
@@ -151,41 +152,16 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p1{p0.x + size.x, p0.y + size.y};
   const float pad = 10.0f * ctx.scale;
-  const ClipReconstruction& rec = s.clip->rec;
-  char sub[220];
-  std::snprintf(sub, sizeof sub, "%s · %s · frame %d / %d (%.2f s) · pixels, y down",
-                rec.trial.format.c_str(), rec.trial.layout->name.c_str(), shown + 1, rec.trial.frameCount,
-                shown / rec.trial.rateHz);
-  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input (keypoints)", sub, s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
-  // The largest residual of this frame, named.
-  int worst = -1;
-  double worstPx = 0.0;
-  for (int j = 0; j < kJointCount; ++j) {
-    const double du = rec.reprojectedPx(shown, 2 * j) - rec.trial.jointsPx(shown, 2 * j);
-    const double dv = rec.reprojectedPx(shown, 2 * j + 1) - rec.trial.jointsPx(shown, 2 * j + 1);
-    const double d = std::hypot(du, dv);
-    if (std::isfinite(d) && d > worstPx) worst = j, worstPx = d;
-  }
+  const ViewCaption caption = clipInputCaption(s, shown);
+  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle, s.fonts.large, ctx.scale,
+              ImVec2(size.x - 2.0f * pad, size.y));
   const float screenPerPx = size.y / frame.heightPx;
   const float bar = roundPixels(0.18f * size.x / screenPerPx);
   char label[32];
   std::snprintf(label, sizeof label, "%.0f px", static_cast<double>(bar));
   const float len = bar * screenPerPx;
   drawScaleBar(dl, ImVec2(p1.x - pad - len - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale), len, label, ctx.scale);
-  std::vector<LegendItem> legend{{palette::kInputPoint, "keypoints (u, v px)", false},
-                                 {palette::kCamera, "principal point (est.)", true}};
-  if (s.view.overlays.reprojection && !s.view.overlays.pointLights) {
-    legend.push_back({palette::kReconRight, "3D walker through the est. camera", true});
-    char residual[96];
-    if (worst >= 0) {
-      const std::string name(jointName(static_cast<Joint>(worst)));
-      std::snprintf(residual, sizeof residual, "residual (largest: %s %.1f px)", name.c_str(), worstPx);
-    } else {
-      std::snprintf(residual, sizeof residual, "residual");
-    }
-    legend.push_back({palette::kError, residual, true});
-  }
-  drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale, size.x);
+  drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), caption.legend, ctx.scale, size.x);
 }
 
 }  // namespace
@@ -235,28 +211,9 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
   } else if (!reconstruct && e) {
     extent = e->projectedTrail;
   }
-  std::vector<LegendItem> legend{{palette::kInputPoint, "input joints (u, v)", false}};
-  const bool anyEstimated =
-      reconstruct && r && std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(), [](bool b) { return b; });
-  if (anyEstimated) legend.push_back({palette::kModelEstimated, "model-estimated (not measured)", false});
-  if (reconstruct && o.reprojection && !o.pointLights) {
-    legend.push_back({palette::kReconRight,
-                      s.doc.recon.unknownAngle ? "reconstruction seen at est. α" : "reconstruction seen at α", true});
-    legend.push_back({palette::kError, "2D residual", true});
-  }
-  char sub[160];
-  if (reconstruct) {
-    if (r && r->engine == EngineKind::Snippet)
-      std::snprintf(sub, sizeof sub, "orthographic, α = %.1f°, walking across at %.2f m/s",
-                    s.doc.recon.alphaDeg, r->speedMps);
-    else if (r && r->engine == EngineKind::Skeleton)
-      std::snprintf(sub, sizeof sub, "orthographic, α = %.1f°, walking in place", s.doc.recon.alphaDeg);
-    else
-      std::snprintf(sub, sizeof sub, "orthographic view at α = %.1f°, as the reconstruction sees it",
-                    s.doc.recon.alphaDeg);
-  } else {
-    std::snprintf(sub, sizeof sub, "the synthesised walker projected at α = %.1f°", s.doc.recon.alphaDeg);
-  }
+  const ViewCaption text = walkerInputCaption(s);
+  const std::vector<LegendItem>& legend = text.legend;
+  const std::string& sub = text.subtitle;
   // The walker framed clear of the whole caption and the whole legend when that shrinks it by a
   // fifth at most; else of the caption's title alone (its subtitle then goes) and the legend;
   // else of the title and the legend folded into its tab.

@@ -6,10 +6,21 @@
 
 #include "ui/app/app_state.h"
 #include "ui/app/theme.h"
+#include "ui/panels/metric_items.h"
 
 namespace ew::ui {
 
 namespace {
+
+ImVec4 toneColour(MetricTone tone) {
+  switch (tone) {
+    case MetricTone::Good: return goodTextColour();
+    case MetricTone::Bad: return ImVec4(1.0f, 0.45f, 0.55f, 1.0f);
+    case MetricTone::Edited: return ImVec4(1.0f, 0.72f, 0.38f, 1.0f);
+    case MetricTone::Normal: break;
+  }
+  return ImGui::GetStyleColorVec4(ImGuiCol_Text);
+}
 
 // A narrow strip (a small window or a large UI scale) drops a metric's note, then the metrics
 // that do not fit at all, rather than cutting them at the edge.
@@ -43,33 +54,10 @@ void metric(const AppState& s, bool first, const char* label, const char* value,
   if (used < width && room > 0.0f) ImGui::Dummy(ImVec2(std::min(width - used, room), 1.0f));
 }
 
-// A keypoint clip: the walk in metres and seconds (the prior knows how big people are) and
-// how well the walker drawn back through the camera meets the keypoints.
-void clipMetrics(const AppState& s, float width) {
-  const ClipReconstruction& rec = s.clip->rec;
-  const CameraFit& f = rec.fit;
-  char v[64], n[96];
-  std::snprintf(v, sizeof v, "%.2f m", f.headHeightMm / 1000.0);
-  metric(s, true, "height  head above ankles", v, "", width);
-  std::snprintf(v, sizeof v, "%.2f m/s", f.speedMps);
-  metric(s, false, "speed", v, rec.trial.rateAssumed ? "(30 fps?)" : "", width);
-  std::snprintf(v, sizeof v, "%.2f m", f.strideLengthM);
-  std::snprintf(n, sizeof n, "%.2f Hz", f.strideHz);
-  metric(s, false, "stride length", v, n, width);
-  std::snprintf(v, sizeof v, "%.0f /min", f.cadenceStepsPerMin);
-  metric(s, false, "cadence  steps", v, "", width);
-  std::snprintf(v, sizeof v, "%.1f px", f.reprojectionRmsPx);
-  n[0] = '\0';
-  if (f.outlierSamples > 0) std::snprintf(n, sizeof n, "%d glitches out", f.outlierSamples);
-  metric(s, false, "reprojection  RMS", v, n, width);
-}
-
 }  // namespace
 
 void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   if (beginPanel(ctx.backdrop, "##metrics", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
-    const ReconBase* r = s.derived.recon();
-    const ReconDisplay* d = s.derived.display();
     if (s.doc.mode == Mode::Explore) {
       ImGui::TextDisabled("Gait-space explorer");
       // The longest explanation the strip has room for.
@@ -83,45 +71,15 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
           break;
         }
       }
-    } else if (s.doc.mode == Mode::Clip && s.view.overlays.metrics) {
-      if (s.clip) {
-        clipMetrics(s, std::max(150.0f * ctx.scale, (ImGui::GetContentRegionAvail().x - 8.0f) / 5.0f));
-      } else {
-        ImGui::TextDisabled(s.jobs.clip.running() ? "fitting the camera…" : "no fit");
-      }
     } else if (!s.view.overlays.metrics) {
       ImGui::TextDisabled("metrics hidden (overlay \"metrics\")");
-    } else if (r && d) {
+    } else if (const std::vector<MetricItem> items = metricItems(s); !items.empty()) {
       const float w = std::max(150.0f * ctx.scale, (ImGui::GetContentRegionAvail().x - 8.0f) / 5.0f);
-      char v[64], n[64];
-      // Over the measured joints, as `reconstruct` reports: a model-estimated joint has no truth.
-      std::snprintf(v, sizeof v, "%.0f mm²", d->absScoredMm2);
-      std::snprintf(n, sizeof n, "(√ %.1f mm)", std::sqrt(std::max(d->absScoredMm2, 0.0)));
-      metric(s, true, "E_a  depth error", v, n, w);
-      std::snprintf(v, sizeof v, "%.3f", d->relScored);
-      std::snprintf(n, sizeof n, "σ_m² %.0f mm²", d->errors.sigmaM2Mm2);
-      metric(s, false, "E_r  relative", v, n, w);
-      std::snprintf(v, sizeof v, "%.1f mm", d->mpjpeMm);
-      // Joints estimated from a model are scored apart (their ground truth is the model's).
-      if (d->mpjpeModelEstimatedMm) {
-        std::snprintf(n, sizeof n, "%d measured joints · est. (%.1f)", d->jointsScored,
-                      *d->mpjpeModelEstimatedMm);
-      } else {
-        n[0] = '\0';
-      }
-      metric(s, false, "MPJPE  3D", v, n, w);
-      std::snprintf(v, sizeof v, "%.1f mm", d->residualRmsMm);
-      metric(s, false, "2D residual  RMS", v, d->edited ? "(edited k)" : "", w,
-             d->edited ? ImVec4(1.0f, 0.72f, 0.38f, 1.0f) : ImGui::GetStyleColorVec4(ImGuiCol_Text));
-      if (s.doc.recon.unknownAngle) {
-        std::snprintf(v, sizeof v, "%.1f°", r->alphaUsedDeg);
-        std::snprintf(n, sizeof n, "error %.1f°", d->angleErrorDeg);
-        metric(s, false, "est. α  (true α hidden)", v, n, w,
-               d->angleErrorDeg > 10.0 ? ImVec4(1.0f, 0.45f, 0.55f, 1.0f) : goodTextColour());
-      } else {
-        std::snprintf(v, sizeof v, "%.1f°", r->alphaTrueDeg);
-        metric(s, false, "α  known", v, "", w);
-      }
+      for (std::size_t k = 0; k < items.size(); ++k)
+        metric(s, k == 0, items[k].label.c_str(), items[k].value.c_str(), items[k].note.c_str(), w,
+               toneColour(items[k].tone));
+    } else if (s.doc.mode == Mode::Clip) {
+      ImGui::TextDisabled(s.jobs.clip.running() ? "fitting the camera…" : "no fit");
     } else {
       ImGui::TextDisabled(s.jobs.busy() ? "working…" : "no reconstruction");
     }

@@ -14,6 +14,7 @@
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
 #include "ui/panels/clip_view.h"
+#include "ui/panels/view_captions.h"
 #include "ui/panels/view_overlay.h"
 #include "ui/panels/walker_bounds.h"
 #include "ui/render/camera.h"
@@ -106,48 +107,6 @@ ImRect walkerOnScreen(const AppState& s, const CameraMatrices& camera, ImVec2 p0
   return bounds;
 }
 
-// The 3D view's legend: what it draws, in its colours. Labels made here live in `labels` (the
-// items point into it: a deque never moves them).
-std::vector<LegendItem> reconstructionLegend(const AppState& s, std::deque<std::string>& labels) {
-  const auto& o = s.view.overlays;
-  const bool reconstruct = s.doc.mode == Mode::Reconstruct;
-  const ReconBase* r = s.derived.recon();
-  std::vector<LegendItem> legend;
-  if (o.pointLights) {
-    legend.push_back({palette::kInputPoint, reconstruct ? "reconstructed joints (point-lights)" : "joints (point-lights)", false});
-  } else if (reconstruct && s.doc.compareEngines && s.derived.compare()) {
-    for (const auto& e : s.derived.compare()->engines) {
-      const auto k = static_cast<std::size_t>(e.engine);
-      if (!s.doc.compareShown[k]) continue;
-      char label[96];
-      if (e.display)
-        std::snprintf(label, sizeof label, "%s: MPJPE %.1f mm", engineName(e.engine), e.display->mpjpeMm);
-      else
-        std::snprintf(label, sizeof label, "%s: no answer", engineName(e.engine));
-      labels.emplace_back(label);
-      legend.push_back({palette::kEngineRight[k], labels.back().c_str(), false});
-    }
-    if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
-  } else if (reconstruct) {
-    legend.push_back({palette::kReconRight, "reconstruction (right side darker)", false});
-    if (o.ghost) legend.push_back({palette::kGhostRight, "ground truth (ghost)", false});
-    if (o.errorLines) legend.push_back({palette::kError, "3D error per joint", true});
-    if (reconstruct && r &&
-        std::any_of(r->modelEstimated.begin(), r->modelEstimated.end(),
-                    [](bool b) { return b; }))
-      legend.push_back(
-          {palette::kModelEstimated, "model-estimated joint (not measured)", false});
-  } else {
-    legend.push_back({palette::kReconRight, "synthesised walker", false});
-  }
-  if (o.cameraGlyph) {
-    legend.push_back({palette::kCamera, "camera of the 2D view", true});
-    if (reconstruct && s.doc.recon.unknownAngle)
-      legend.push_back({palette::kCameraEstimate, "estimated camera (est. α)", true});
-  }
-  return legend;
-}
-
 // The camera with its picture moved (a lens shift: the orbit stays as the user left it) down
 // when the caption's title would cover the walker's head, or up when the legend would cover its
 // feet, where there is room (a small view, a large UI scale). Else as it is: the legend then
@@ -186,25 +145,10 @@ CameraMatrices clearOfOverlays(CameraMatrices camera, ImRect& walker, const char
 void drawClipAnnotations(const AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float pad = 10.0f * ctx.scale;
-  const CameraFit& fit = s.clip->rec.fit;
-  const WalkCamera& c = fit.camera;
-  char sub[240];
-  if (c.model == CameraModel::Pinhole) {
-    const ClipWorld w = clipWorld(*s.clip, 0);
-    // The camera's distance to the walker's path (the line x = 0 of the walk).
-    std::snprintf(sub, sizeof sub, "camera %.2f m high, %.1f m from the walking line, azimuth %.1f°, %.1f° down",
-                  w.eye.z / 1000.0, std::abs(w.eye.x) / 1000.0, c.alphaDeg, c.elevationDeg);
-  } else {
-    std::snprintf(sub, sizeof sub, "scaled orthography: azimuth %.1f°, %.1f° down (distance not estimated; drawn at 5 m)",
-                  c.alphaDeg, c.elevationDeg);
-  }
-  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "3D reconstruction and the estimated camera", sub, s.fonts.large,
-              ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
-  std::vector<LegendItem> legend{{palette::kReconRight, "reconstruction (right side darker)", false},
-                                 {palette::kCamera, "estimated camera, its view of the walk", true},
-                                 {palette::kReconMid, "walking line over the clip", true}};
-  if (!fit.unseenJoints.empty()) legend.push_back({palette::kModelEstimated, "never seen: from the model", false});
-  drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), legend, ctx.scale, size.x);
+  const ViewCaption c = clipReconstructionCaption(s);
+  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), c.title, c.subtitle, s.fonts.large, ctx.scale,
+              ImVec2(size.x - 2.0f * pad, size.y));
+  drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), c.legend, ctx.scale, size.x);
 }
 
 }  // namespace
@@ -307,7 +251,6 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
                     ctx.renderer.samples());
       const auto& o = s.view.overlays;
       const bool reconstruct = s.doc.mode == Mode::Reconstruct;
-      const ReconBase* r = s.derived.recon();
       const ReconDisplay* d = s.derived.display();
       float errorScale = 1.0f;
       const bool clipMode = s.doc.mode == Mode::Clip;
@@ -317,9 +260,10 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       const float aspect = size.x / size.y;
       const OrbitCamera view = clipMode && s.clip ? clipViewCamera(s.view.camera, *s.clip, clipFrameAt(*s.clip, s.view.playback.cycles))
                                                   : s.view.camera;
-      const char* title = reconstruct ? "3D reconstruction" : "Gait space";
-      std::deque<std::string> legendLabels;
-      const std::vector<LegendItem> legend = reconstructionLegend(s, legendLabels);
+      const ViewCaption caption = walkerReconstructionCaption(s);
+      const char* title = caption.title.c_str();
+      const std::vector<LegendItem>& legend = caption.legend;
+      const std::string& sub = caption.subtitle;
       const float pad = 10.0f * ctx.scale;
       // Where the walker is over its cycle (what the annotations keep clear of), once a frame.
       ImRect walker(p0, p0);
@@ -337,39 +281,6 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       if (clipMode) {
         if (drawn) drawClipAnnotations(s, ctx, p0, size);
       } else {
-      char sub[200];
-      if (reconstruct && r) {
-        const char* est = s.doc.recon.estimator == Estimator::Lsq ? "LSQ" : "MAP";
-        if (s.doc.recon.unknownAngle) {
-          std::snprintf(sub, sizeof sub, "%s, view angle unknown: est. α = %.1f° (true %.1f°)", est, r->alphaUsedDeg,
-                        r->alphaTrueDeg);
-        } else {
-          std::snprintf(sub, sizeof sub, "%s at the known view angle α = %.1f°", est, r->alphaTrueDeg);
-        }
-        if (r->engine == EngineKind::Snippet) {
-          const std::size_t n = r->snippets ? r->snippets->starts.size() : 0;
-          if (s.doc.recon.unknownAngle)
-            std::snprintf(sub, sizeof sub, "snippets, α unknown: est. %.1f° (true %.1f°), %zu snippets",
-                          r->alphaUsedDeg, r->alphaTrueDeg, n);
-          else
-            std::snprintf(sub, sizeof sub, "snippets at the known α = %.1f°, %zu snippets",
-                          r->alphaTrueDeg, n);
-        } else if (r->engine == EngineKind::Skeleton) {
-          if (s.doc.recon.unknownAngle)
-            std::snprintf(sub, sizeof sub, "geometry alone, α unknown: est. %.1f° (true %.1f°)", r->alphaUsedDeg,
-                          r->alphaTrueDeg);
-          else
-            std::snprintf(sub, sizeof sub, "geometry alone at the known α = %.1f°", r->alphaTrueDeg);
-        } else if (s.doc.recon.estimator == Estimator::Map) {
-          const std::size_t len = std::strlen(sub);
-          std::snprintf(sub + len, sizeof sub - len, ", σ² = %.0f mm²", s.doc.recon.sigma2Mm2);
-        }
-      } else {
-        std::snprintf(sub, sizeof sub, "walker synthesised from the eigenwalker coefficients");
-      }
-      if (reconstruct && r && s.doc.compareEngines)
-        std::snprintf(sub, sizeof sub, "compare: the three engines %s α = %.1f°",
-                      s.doc.recon.unknownAngle ? "with α unknown, true" : "at the known", r->alphaTrueDeg);
       const ImRect captionRect =
           drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), title, sub,
                       s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), walker);

@@ -1,0 +1,35 @@
+#pragma once
+// What the two views say about themselves: each one's title, subtitle and legend for the
+// state shown. The panels draw them over the views; the video export burns the same words
+// into its frames (ui/app/export_captions.h), so a clip shown on a projector and its exported
+// video read alike.
+
+#include <string>
+#include <vector>
+
+#include "ui/panels/view_overlay.h"
+
+namespace ew::ui {
+
+struct AppState;
+
+struct ViewCaption {
+  std::string title, subtitle;
+  std::vector<LegendItem> legend;
+};
+
+// The 2D view of a walker (reconstruct and explore modes).
+ViewCaption walkerInputCaption(const AppState& s);
+// The 2D view of a keypoint clip at its frame `shown` (0-based): the largest residual of that
+// frame is named in the legend.
+ViewCaption clipInputCaption(const AppState& s, int shown);
+// The 3D view (reconstruct and explore modes; compare mode lists each engine's error).
+ViewCaption walkerReconstructionCaption(const AppState& s);
+// The 3D view of a keypoint clip: the walker and the estimated camera.
+ViewCaption clipReconstructionCaption(const AppState& s);
+
+// Whichever of the above the mode shows (`clipFrame`: a clip's frame shown).
+ViewCaption inputCaption(const AppState& s, int clipFrame);
+ViewCaption reconstructionCaption(const AppState& s);
+
+}  // namespace ew::ui
