@@ -12,6 +12,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 #include <string>
 
 #include "core/synth/population.h"
@@ -177,6 +178,33 @@ TEST_F(GuiVideo, TracksWithTheAppearanceTrackerWhenChosen) {
   EXPECT_EQ(video["track"]["tracker"], "appearance");
   EXPECT_EQ(video["track"]["last_frame"], 59);
   EXPECT_GT(video["track"]["mean_confidence"].get<double>(), 0.5);
+}
+
+// Issue 14: the exported video of a tracked clip has the footage under the track and the
+// walker drawn back, with the captions (the video's name and frame) burnt in.
+TEST_F(GuiVideo, TheExportedVideoHasTheFootageUnderTheTrackAndCaptions) {
+  const Footage f = writeWalkingFootage(dir);
+  const json script = json::array({
+      {{"open", json::array({f.video.string(), f.keyframes.string()})}},
+      {{"track_video", {{"first", 0}, {"last", -1}}}},
+      {{"wait_frames", 3}},
+      {{"export_video", {{"path", path("tracked.avi")}, {"cycles", 0.5}, {"width", 1280}, {"height", 720}}}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  cv::VideoCapture cap(path("tracked.avi"));
+  cv::Mat frame;
+  ASSERT_TRUE(cap.read(frame));
+  // The footage's mid-grey noise (values 40-200, mean 120; dimmed under the track) fills the
+  // middle of the left half, where the views' background is near black (about 20).
+  cv::Mat grey;
+  cv::cvtColor(frame(cv::Rect(80, 250, 480, 220)), grey, cv::COLOR_BGR2GRAY);
+  EXPECT_GT(cv::mean(grey)[0], 60.0) << "the footage under the track";
+  const int title = countPixels(frame(cv::Rect(10, 10, 220, 40)), [](int rr, int g, int b) {
+    return rr > 200 && g > 200 && b > 200;
+  });
+  EXPECT_GT(title, 150) << "the caption \"2D input (video)\"";
 }
 
 }  // namespace

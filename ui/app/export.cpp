@@ -17,9 +17,12 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/export_captions.h"
+#include "ui/app/video.h"
 #include "ui/panels/clip_view.h"
 #include "ui/panels/input_view_panel.h"
 #include "ui/panels/reconstruction_view_panel.h"
+#include "ui/panels/video_view.h"
+#include "ui/render/camera.h"
 #include "ui/render/renderer.h"
 
 namespace ew::ui {
@@ -85,6 +88,7 @@ struct VideoExport::Impl {
   cv::VideoWriter writer;
   gl::RenderTarget left, right;
   std::optional<CaptionPainter> captions;
+  std::optional<VideoSource> footage;  // a tracked video's frames, decoded in order
   Scene scene;
   cv::Mat frame;  // BGR, width × height
   int total = 0, done = 0;
@@ -106,6 +110,23 @@ void blitRgb(const std::vector<unsigned char>& rgb, int w, int h, cv::Mat& dst, 
   cv::Mat flipped;
   cv::flip(src, flipped, 0);
   cv::cvtColor(flipped, dst(cv::Rect(x0, 0, w, h)), cv::COLOR_RGB2BGR);
+}
+
+// A keypoint clip that is the fitted track of the open video: its footage goes under it.
+bool trackedFootage(const AppState& s) {
+  return s.video && s.clip && s.video->tracked && s.clip->settings.tracked == s.video->tracked->trial;
+}
+
+// The left half as the 2D view shows a tracked video: the frame at the video's aspect, the
+// tracked joints and the walker drawn back over it (ui/panels/video_view.h).
+void renderFootage(std::optional<VideoSource>& footage, gl::RenderTarget& target, Scene& scene, const AppState& s,
+                   Renderer& renderer, float lineScale, int videoFrame, float aspect) {
+  if (!footage) footage.emplace(s.video->path);
+  const cv::Mat picture = footage->frame(videoFrame);
+  const VideoInfo& info = footage->info();
+  const VideoViewFrame view = videoViewFrame(info.widthPx, info.heightPx, aspect);
+  buildVideoInputScene(s, scene, lineScale, view.heightPx / static_cast<float>(target.height()), videoFrame, &picture);
+  renderer.render(target, scene, imageCamera(aspect, view.centre, view.heightPx));
 }
 
 }  // namespace
@@ -180,11 +201,17 @@ bool VideoExport::step(const AppState& s, Renderer& renderer, double budgetMs) {
     const float aspectLeft = static_cast<float>(wl) / static_cast<float>(h);
     int frame = 0;
     if (s.doc.mode == Mode::Clip && s.clip) {
-      // A keypoint clip: its input frames in image pixels, the walker where the camera saw it.
+      // A keypoint clip: its input frames in image pixels, the walker where the camera saw it
+      // (over the footage, for a tracked video).
       frame = clipFrameAt(*s.clip, cycles);
-      const ClipImageFrame image = clipImageFrame(*s.clip, aspectLeft);
-      buildClipInputScene(s, m.scene, lineScale, frame, image);
-      renderer.render(m.left, m.scene, clipInputCamera(image, aspectLeft));
+      if (trackedFootage(s)) {
+        renderFootage(m.footage, m.left, m.scene, s, renderer, lineScale, s.video->tracked->track.firstFrame + frame,
+                      aspectLeft);
+      } else {
+        const ClipImageFrame image = clipImageFrame(*s.clip, aspectLeft);
+        buildClipInputScene(s, m.scene, lineScale, frame, image);
+        renderer.render(m.left, m.scene, clipInputCamera(image, aspectLeft));
+      }
       buildClipReconstructionScene(s, m.scene, lineScale, frame);
       renderer.render(m.right, m.scene,
                       clipViewCamera(s.view.camera, *s.clip, frame).matrices(static_cast<float>(wr) / static_cast<float>(h)));

@@ -13,6 +13,7 @@
 #include "ui/app/app_state.h"
 #include "ui/panels/input_view_panel.h"
 #include "ui/panels/video_view.h"
+#include "ui/panels/view_captions.h"
 #include "ui/panels/view_overlay.h"
 #include "ui/render/palette.h"
 #include "ui/render/renderer.h"
@@ -82,13 +83,9 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float pad = 10.0f * ctx.scale;
-  char sub[240];
-  std::snprintf(sub, sizeof sub, "%s · %d×%d · frame %d of %d (%.2f s)%s",
-                v.path.filename().string().c_str(), info.widthPx, info.heightPx, frame,
-                v.frameCount(), frame / std::max(info.fps, 1e-9),
-                v.shownIndex != frame ? " · decoding…" : "");
-  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), "2D input (video)", sub, s.fonts.large,
-              ctx.scale, ImVec2(size.x - 2.0f * pad, size.y));
+  const ViewCaption caption = videoInputCaption(s, frame, v.shownIndex != frame, true);
+  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle, s.fonts.large, ctx.scale,
+              ImVec2(size.x - 2.0f * pad, size.y));
   if (v.marking) {
     const auto& order = markingOrder();
     const std::string prompt =
@@ -98,22 +95,7 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
             : "All joints marked on this frame: drag one to correct it, or Done";
     drawPrompt(dl, s.fonts.large, p0, size, prompt, ctx.scale);
   }
-  std::vector<LegendItem> legend;
-  if (v.keyframeAt(frame))
-    legend.push_back({palette::kCamera, "marked by hand (keyframe; drag to correct)", false});
-  const bool fitted =
-      s.clip && v.tracked && s.clip->settings.tracked == v.tracked->trial && !v.marking;
-  if (fitted) {
-    legend.push_back({palette::kInputPoint, "tracked joints", false});
-    if (s.view.overlays.reprojection) {
-      legend.push_back({palette::kReconRight, "3D walker through the est. camera", true});
-      legend.push_back({palette::kError, "residual", true});
-    }
-  } else if (v.tracked) {
-    legend.push_back({glm::vec4(0.3f, 1.0f, 0.25f, 1.0f), "tracked: sure", false});
-    legend.push_back({glm::vec4(1.0f, 0.2f, 0.25f, 1.0f), "tracked: lost", false});
-  }
-  drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), legend, ctx.scale, size.x);
+  drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), caption.legend, ctx.scale, size.x);
 }
 
 void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size,

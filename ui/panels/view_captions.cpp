@@ -114,6 +114,31 @@ ViewCaption clipInputCaption(const AppState& s, int shown) {
   return {"2D input (keypoints)", sub, std::move(legend)};
 }
 
+ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool onScreen) {
+  const VideoSession& v = *s.video;
+  const VideoInfo& info = v.frames->info();
+  char sub[240];
+  std::snprintf(sub, sizeof sub, "%s · %d×%d · frame %d of %d (%.2f s)%s",
+                v.path.filename().string().c_str(), info.widthPx, info.heightPx, frame,
+                v.frameCount(), frame / std::max(info.fps, 1e-9), decoding ? " · decoding…" : "");
+  std::vector<LegendItem> legend;
+  if (v.keyframeAt(frame))
+    legend.push_back({palette::kCamera, onScreen ? "marked by hand (keyframe; drag to correct)" : "marked by hand (keyframe)", false});
+  const bool fitted =
+      s.clip && v.tracked && s.clip->settings.tracked == v.tracked->trial && !v.marking;
+  if (fitted) {
+    legend.push_back({palette::kInputPoint, "tracked joints", false});
+    if (s.view.overlays.reprojection) {
+      legend.push_back({palette::kReconRight, "3D walker through the est. camera", true});
+      legend.push_back({palette::kError, "residual", true});
+    }
+  } else if (v.tracked) {
+    legend.push_back({glm::vec4(0.3f, 1.0f, 0.25f, 1.0f), "tracked: sure", false});
+    legend.push_back({glm::vec4(1.0f, 0.2f, 0.25f, 1.0f), "tracked: lost", false});
+  }
+  return {"2D input (video)", sub, std::move(legend)};
+}
+
 ViewCaption walkerReconstructionCaption(const AppState& s) {
   const bool reconstruct = s.doc.mode == Mode::Reconstruct;
   const ReconBase* r = s.derived.recon();
@@ -174,6 +199,11 @@ ViewCaption clipReconstructionCaption(const AppState& s) {
 }
 
 ViewCaption inputCaption(const AppState& s, int clipFrame) {
+  if (s.doc.mode == Mode::Clip && s.video) {
+    const VideoSession& v = *s.video;
+    const bool fitted = s.clip && v.tracked && s.clip->settings.tracked == v.tracked->trial;
+    return videoInputCaption(s, fitted ? v.tracked->track.firstFrame + clipFrame : v.frame, false, false);
+  }
   return s.doc.mode == Mode::Clip && s.clip ? clipInputCaption(s, clipFrame) : walkerInputCaption(s);
 }
 

@@ -23,12 +23,16 @@ ViewCaption walkerInputCaption(const AppState& s);
 // The 2D view of a keypoint clip at its frame `shown` (0-based): the largest residual of that
 // frame is named in the legend.
 ViewCaption clipInputCaption(const AppState& s, int shown);
+// The 2D view of an open video at its frame `frame` (0-based video frame); `decoding`: the
+// frame shown is still the one before; `onScreen`: the legend may say what a drag does.
+ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool onScreen);
 // The 3D view (reconstruct and explore modes; compare mode lists each engine's error).
 ViewCaption walkerReconstructionCaption(const AppState& s);
 // The 3D view of a keypoint clip: the walker and the estimated camera.
 ViewCaption clipReconstructionCaption(const AppState& s);
 
-// Whichever of the above the mode shows (`clipFrame`: a clip's frame shown).
+// Whichever of the above the mode shows (`clipFrame`: a clip's frame shown; with a tracked
+// video, the video frame is the track's first plus it).
 ViewCaption inputCaption(const AppState& s, int clipFrame);
 ViewCaption reconstructionCaption(const AppState& s);
 
