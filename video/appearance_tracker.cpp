@@ -60,7 +60,7 @@ class AppearancePass final : public TrackingPass {
   bool tracks(int j) const override { return active_[j]; }
   cv::Point2f position(int j) const override { return now_[j]; }
 
-  std::array<double, kJointCount> advance(const cv::Mat& bgr) override {
+  std::array<double, kJointCount> advance(const cv::Mat& bgr, int /*frame*/) override {
     std::array<double, kJointCount> confidence{};
     std::array<cv::Point2f, kJointCount> next = now_;
     std::array<bool, kJointCount> placed{};

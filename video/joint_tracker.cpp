@@ -168,8 +168,9 @@ class FlowPass final : public TrackingPass {
   bool tracks(int j) const override { return filters_[j].active; }
   cv::Point2f position(int j) const override { return filters_[j].position(); }
 
-  std::array<double, kJointCount> advance(const cv::Mat& toGrey) override {
+  std::array<double, kJointCount> advance(const cv::Mat& toGrey, int frame) override {
     std::vector<cv::Mat> toPyramid = pyramidOf(toGrey, g_, o_.pyramidLevels);
+    frame_ = frame;
     const auto confidence = advance(fromPyramid_, toPyramid, toGrey);
     fromPyramid_ = std::move(toPyramid);
     return confidence;
@@ -266,8 +267,36 @@ class FlowPass final : public TrackingPass {
 
   // A segment that looks as it did on the keyframe places its joint; else the joint's own
   // flow; else the keyframe patch, if it is clearly there; else the joint coasts on the filter.
+  // The model's place for joint j on this frame, when the options have one.
+  std::optional<cv::Point2f> priorAt(int j) const {
+    const Eigen::Index row = frame_ - o_.firstFrame;
+    if (row < 0 || row >= o_.priorPx.rows() || o_.priorPx.cols() != kDims2) return std::nullopt;
+    const double x = o_.priorPx(row, 2 * j), y = o_.priorPx(row, 2 * j + 1);
+    if (!std::isfinite(x) || !std::isfinite(y)) return std::nullopt;
+    return cv::Point2f(static_cast<float>(x), static_cast<float>(y));
+  }
+
+  // The model loop: a flow that failed or strayed beyond the gate from the model's place is
+  // replaced by the keyframe patch found near that place, else by the place itself (a joint
+  // hidden behind the other leg is where the walk says it is). nullopt: the flow stands.
+  std::optional<double> measureAgainstPrior(int j, std::optional<cv::Point2f> flow, const cv::Mat& toGrey) {
+    const std::optional<cv::Point2f> prior = priorAt(j);
+    if (!prior) return std::nullopt;
+    const double gate = o_.priorGateShare * g_.personPx;
+    const auto distance = [](cv::Point2f a, cv::Point2f b) { return std::hypot(a.x - b.x, a.y - b.y); };
+    if (flow && distance(*flow, *prior) <= gate) return std::nullopt;
+    const Match m = matchAround(j, toGrey, *prior);
+    if (m.bestScore > 0.7 && distance(m.best, *prior) <= gate) {
+      filters_[j].update(m.best.x, m.best.y, 1.0 / m.bestScore);
+      return 0.5 * m.bestScore;
+    }
+    filters_[j].update(prior->x, prior->y, 0.5 * gate);
+    return 0.2;
+  }
+
   double measure(int j, cv::Point2f guess, std::optional<cv::Point2f> flow, cv::Point2f segmentAt,
                  double segmentMatch, const cv::Mat& toGrey) {
+    if (const std::optional<double> c = measureAgainstPrior(j, flow, toGrey)) return *c;
     if (segmentMatch >= kSegmentMatchHolds) {
       filters_[j].update(segmentAt.x, segmentAt.y, 0.5 / segmentMatch);
       return segmentMatch;
@@ -295,6 +324,7 @@ class FlowPass final : public TrackingPass {
   std::array<cv::Mat, kJointCount> templates_{};
   std::array<SegmentStrip, kBones.size()> strips_{};
   std::vector<cv::Mat> fromPyramid_;
+  int frame_ = 0;  // the video frame being tracked onto
 };
 
 // [SECTION] Blending the passes -----------------------------------------------------------
@@ -396,7 +426,7 @@ class RangeTracker {
       if (pass->tracks(j))
         out.jointsPx.block<1, 2>(key.frame - range_.first, 2 * j) = key.jointsPx.segment<2>(2 * j);
     for (int f = key.frame + step; f != until + step; f += step) {
-      record(*pass, f, pass->advance(supply_.image(f, lowest)), out, false);
+      record(*pass, f, pass->advance(supply_.image(f, lowest), f), out, false);
       if (progress_ && !progress_(++stepsDone_ / totalSteps_))
         throw Error(ErrorKind::BadArgument, video_.info().file, "", "tracking cancelled");
     }

@@ -37,6 +37,13 @@ struct TrackerOptions {
   // Off by default: measured worse than each joint's own flow on both the synthetic
   // footage and Pose2Sim's cam01 (docs/TRACKING.md, "Measured").
   bool searchSegments = false;
+  // The model loop's prior (video/model_loop.h): where a model fitted to an earlier track
+  // puts each joint, one row per tracked frame from firstFrame (30 columns, pixels; NaN or no
+  // rows: no say). A joint whose flow fails, or lands more than priorGateShare × the
+  // person's height from it, is sought again around it with its keyframe patch, and else
+  // placed there at a low confidence. The flow tracker only.
+  Eigen::MatrixXd priorPx;
+  double priorGateShare = 0.05;
   // Grey frames held at once for the backward passes; a longer stretch between keyframes
   // is decoded again in pieces of this size.
   std::size_t frameBufferBytes = std::size_t{512} << 20;

@@ -17,9 +17,9 @@ class TrackingPass {
   // Whether joint j is followed (marked on the keyframe and not yet out of the picture).
   virtual bool tracks(int j) const = 0;
   virtual cv::Point2f position(int j) const = 0;
-  // Moves every followed joint onto `image` (the next frame in the pass's direction, in the
-  // pass's image kind); a confidence per joint, 0-1.
-  virtual std::array<double, kJointCount> advance(const cv::Mat& image) = 0;
+  // Moves every followed joint onto `image`, video frame `frame` (the next frame in the pass's
+  // direction, in the pass's image kind); a confidence per joint, 0-1.
+  virtual std::array<double, kJointCount> advance(const cv::Mat& image, int frame) = 0;
 };
 
 }  // namespace ew

@@ -27,6 +27,7 @@
 #include "core/tracking/keyframes.h"
 #include "core/tracking/track_compare.h"
 #include "video/joint_tracker.h"
+#include "video/model_loop.h"
 #include "video/track_overlay.h"
 
 namespace ew::cli {
@@ -40,6 +41,7 @@ struct TrackArgs {
   std::vector<int> keyframeFrames{0};
   int first = 0, last = -1;
   int overlayEvery = 0;  // 0: no overlay pictures
+  int modelLoop = 0;     // rounds of the model loop (video/model_loop.h)
   bool json = false, keyframeFramesGiven = false;
 };
 
@@ -134,6 +136,18 @@ Eigen::MatrixXd referenceFor(const TrackArgs& a, const VideoInfo& info, const Ke
   return reference;
 }
 
+// Each fit of the model loop: how well it met the track it was fitted to, and the walk it saw.
+json modelLoopJson(const ModelLoopResult& r, int asked) {
+  json rounds = json::array();
+  for (const ModelLoopRound& q : r.rounds)
+    rounds.push_back({{"reprojection_rms_px", q.reprojectionRmsPx}, {"stride_hz", q.strideHz}, {"alpha_deg", q.alphaDeg}});
+  std::cout << "model loop: " << r.rounds.size() << " of " << asked << " rounds";
+  for (const ModelLoopRound& q : r.rounds) std::cout << " [fit " << q.reprojectionRmsPx << " px, " << q.strideHz << " Hz]";
+  if (!r.stoppedBecause.empty()) std::cout << "; stopped: " << r.stoppedBecause;
+  std::cout << "\n";
+  return {{"rounds_asked", asked}, {"rounds", rounds}, {"stopped_because", r.stoppedBecause}};
+}
+
 // Every n-th tracked frame with the track drawn over it (and the --compare source, blue).
 void writeOverlays(VideoSource& video, const JointTrack& t, const Eigen::MatrixXd* referencePx,
                    int every, const fs::path& dir) {
@@ -162,7 +176,12 @@ int runTrack(const TrackArgs& a) {
   o.firstFrame = a.first;
   o.lastFrame = a.last;
   const auto start = std::chrono::steady_clock::now();
-  const JointTrack track = trackJoints(video, keys, o);
+  if (a.modelLoop > 0 && o.kind != TrackerKind::OpticalFlow)
+    throw Error(ErrorKind::BadArgument, "--model-loop", "", "the model loop guides the flow tracker only");
+  ModelLoopOptions loop;
+  loop.rounds = a.modelLoop;
+  const ModelLoopResult looped = trackWithModel(video, keys, defaultRealModel(), o, loop);
+  const JointTrack& track = looped.track;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeTrack(a.out, track);
@@ -183,6 +202,7 @@ int runTrack(const TrackArgs& a) {
                  {"keyframes", keys.keyframes.size()},
                  {"seconds", seconds},
                  {"mean_confidence", track.confidence.mean()}};
+  if (a.modelLoop > 0) report["model_loop"] = modelLoopJson(looped, a.modelLoop);
   std::optional<Eigen::MatrixXd> referencePx;
   if (!a.compare.empty()) {
     referencePx = referenceFor(a, info, keys);
@@ -228,6 +248,10 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
                   "flow: optical flow with keyframe patches (default); appearance: Zou et al. "
                   "2009's colour histograms of the segments' rectangles")
       ->check(CLI::IsMember({"flow", "appearance"}));
+  cmd->add_option("--model-loop", args->modelLoop,
+                  "rounds of the model loop: fit the eigenwalker through the unknown camera to the track, "
+                  "track again guided by it (flow tracker; default 0)")
+      ->check(CLI::Range(0, 10));
   cmd->add_option("--first", args->first, "first frame tracked (default 0)");
   cmd->add_option("--last", args->last, "last frame tracked (default the video's last)");
   cmd->add_option("--compare", args->compare,

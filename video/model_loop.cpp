@@ -1,0 +1,40 @@
+#include "video/model_loop.h"
+
+#include "core/camera/clip_reconstruction.h"
+#include "core/common/errors.h"
+#include "core/keypoints/keypoint_trial.h"
+
+namespace ew {
+
+ModelLoopResult trackWithModel(VideoSource& video, const Keyframes& keyframes, const EigenwalkerModel& model,
+                               TrackerOptions options, const ModelLoopOptions& loop, const TrackProgress& progress) {
+  if (loop.rounds < 0 || loop.rounds > 10)
+    throw Error(ErrorKind::BadArgument, video.info().file, "", "model loop rounds must lie in 0-10");
+  // Each track is a share of the progress: round r of R+1 tracks.
+  const double tracks = 1.0 + loop.rounds;
+  int done = 0;
+  const auto share = [&](double p) { return !progress || progress((done + p) / tracks); };
+  ModelLoopResult result;
+  result.track = trackJoints(video, keyframes, options, share);
+  for (int round = 0; round < loop.rounds; ++round) {
+    ++done;
+    KeypointOptions k;
+    k.fps = result.track.fps;
+    ClipReconstruction fit;
+    try {
+      fit = reconstructKeypointTrial(
+          model, trialFromJoints(result.track.jointsPx, result.track.confidence, video.info().file, "tracked video", k),
+          {});
+    } catch (const Error& e) {
+      result.stoppedBecause = e.what();
+      break;
+    }
+    result.rounds.push_back({fit.fit.reprojectionRmsPx, fit.fit.strideHz, fit.fit.camera.alphaDeg});
+    options.firstFrame = result.track.firstFrame;
+    options.priorPx = fit.reprojectedPx;
+    result.track = trackJoints(video, keyframes, options, share);
+  }
+  return result;
+}
+
+}  // namespace ew
