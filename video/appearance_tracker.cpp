@@ -26,7 +26,7 @@ int binOf(const cv::Vec3b& c) {
 std::array<int, kJointCount> treeParents() {
   std::array<int, kJointCount> parent;
   parent.fill(-1);
-  for (const TreeBone& b : kSearchTree) parent[index(b.child)] = index(b.parent);
+  for (const SearchBone& b : kSearchTree) parent[index(b.child)] = index(b.parent);
   return parent;
 }
 
@@ -134,7 +134,7 @@ class AppearancePass final : public TrackingPass {
   Candidate searchChild(const cv::Mat& bgr, cv::Point2f parent, cv::Point2f centre, int h,
                         std::size_t bone) const {
     Candidate best;
-    if (!bgrHasReference(bone)) return best;
+    if (!hasReference(bone)) return best;
     const int step = std::max(1, (h + 5) / 6);
     const auto sweep = [&](cv::Point2f around, int reach, int stride) {
       Candidate found = best;
@@ -152,7 +152,7 @@ class AppearancePass final : public TrackingPass {
     return best;
   }
 
-  bool bgrHasReference(std::size_t bone) const {
+  bool hasReference(std::size_t bone) const {
     const auto& r = reference_[bone];
     return std::any_of(r.begin(), r.end(), [](float v) { return v > 0.0f; });
   }
@@ -168,7 +168,7 @@ class AppearancePass final : public TrackingPass {
 }  // namespace
 
 ColourHistogram segmentHistogram(const cv::Mat& bgr, cv::Point2f parent, cv::Point2f child,
-                                 const TreeBone& bone, double personPx) {
+                                 const SearchBone& bone, double personPx) {
   ColourHistogram h{};
   const cv::Point2f along = child - parent;
   const float length = std::hypot(along.x, along.y);

@@ -33,7 +33,7 @@ using ColourHistogram = std::array<float, kColourLevels * kColourLevels * kColou
 // to either side), sampled on a grid in the segment's axes in an 8-bit BGR image. Empty when
 // fewer than half the samples fall in the image or the segment is under a pixel long.
 ColourHistogram segmentHistogram(const cv::Mat& bgr, cv::Point2f parent, cv::Point2f child,
-                                 const TreeBone& bone, double personPx);
+                                 const SearchBone& bone, double personPx);
 
 // Eq. 16: sqrt(1 − Σ sqrt(H1·H2)), 0 for the same colours, 1 for none in common or an
 // empty histogram.

@@ -35,7 +35,7 @@ struct Placement {
 constexpr double kAngleRangeDeg = 40.0;
 
 Placement placeChild(const cv::Mat& grey, cv::Point2f parent, cv::Point2f start,
-                     const SegmentStrip& reference, const TreeBone& bone,
+                     const SegmentStrip& reference, const SearchBone& bone,
                      const SegmentSearchOptions& o) {
   Placement best{start, stripMatch(segmentStrip(grey, parent, start, bone, o.personPx), reference)};
   const cv::Point2f d = start - parent;
@@ -67,7 +67,7 @@ Placement placeChild(const cv::Mat& grey, cv::Point2f parent, cv::Point2f start,
 // The pelvis with the trunk: pelvis and sternum moved together, the trunk strip compared,
 // in a square `radiusPx` around the prediction on a 2 px grid, then 0.5 px around the best.
 Placement placeRoot(const cv::Mat& grey, cv::Point2f pelvis, cv::Point2f sternum,
-                    const SegmentStrip& trunk, const TreeBone& bone,
+                    const SegmentStrip& trunk, const SearchBone& bone,
                     const SegmentSearchOptions& o) {
   Placement best{pelvis, -2.0};
   for (float step : {2.0f, 0.5f}) {
@@ -94,7 +94,7 @@ SearchResult::SearchResult() {
   match.fill(-1.0);
 }
 
-const std::array<TreeBone, kBones.size()> kSearchTree = {{
+const std::array<SearchBone, kBones.size()> kSearchTree = {{
     {Joint::Pelvis, Joint::Sternum, 0.07, 0.0},
     {Joint::Sternum, Joint::Head, 0.04, 0.5},
     {Joint::Sternum, Joint::RShoulder, 0.025, 0.0},
@@ -112,7 +112,7 @@ const std::array<TreeBone, kBones.size()> kSearchTree = {{
 }};
 
 SegmentStrip segmentStrip(const cv::Mat& grey, cv::Point2f parent, cv::Point2f child,
-                          const TreeBone& bone, double personPx) {
+                          const SearchBone& bone, double personPx) {
   const cv::Point2f along = child - parent;
   const float length = std::hypot(along.x, along.y);
   if (!(length > 1.0f)) return {};
@@ -163,7 +163,7 @@ SearchResult searchSegments(const cv::Mat& grey,
     }
   }
   for (std::size_t b = 0; b < kSearchTree.size(); ++b) {
-    const TreeBone& bone = kSearchTree[b];
+    const SearchBone& bone = kSearchTree[b];
     const int parent = index(bone.parent), child = index(bone.child);
     if (!valid(predicted[child])) continue;
     // The root moved the trunk: its child starts shifted with it.

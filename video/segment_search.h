@@ -16,20 +16,22 @@
 
 namespace ew {
 
-// Parent → child in search order (depth-first from the pelvis).
-struct TreeBone {
+// Parent → child in search order (depth-first from the pelvis). (Not core's TreeBone of
+// skeleton_tree.h: two classes of one name in one program break the one-definition rule —
+// measured: the sanitized CLI indexed one's array with the other's stride.)
+struct SearchBone {
   Joint parent, child;
   double halfWidthShare;  // the segment's half-width, share of the person's height
   double beyondShare;  // how far the strip reaches past the child (hand, foot, head), share of the
                        // bone
 };
-extern const std::array<TreeBone, kBones.size()> kSearchTree;
+extern const std::array<SearchBone, kBones.size()> kSearchTree;
 
 // A segment's look: its strip, zero mean and unit norm (empty when off the frame or degenerate).
 using SegmentStrip = cv::Mat;  // CV_32F, kStripAlong × kStripAcross
 
 SegmentStrip segmentStrip(const cv::Mat& grey, cv::Point2f parent, cv::Point2f child,
-                          const TreeBone& bone, double personPx);
+                          const SearchBone& bone, double personPx);
 
 // Normalised cross-correlation of two strips (−1-1); −1 when either is empty.
 double stripMatch(const SegmentStrip& a, const SegmentStrip& b);

@@ -116,7 +116,7 @@ std::pair<int, double> referenceBoneOf(const std::string& text) {
   return {bone, mm};
 }
 
-const Eigen::RowVectorXd frameRow(const KeypointTrial& k, int frame, const char* option) {
+Eigen::RowVectorXd frameRow(const KeypointTrial& k, int frame, const char* option) {
   if (frame < 0 || frame >= k.jointsPx.rows())
     throw Error(ErrorKind::BadArgument, option, "",
                 "frame " + std::to_string(frame) + " is not among the input's 0-" + std::to_string(k.jointsPx.rows() - 1));

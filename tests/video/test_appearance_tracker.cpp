@@ -16,8 +16,8 @@
 namespace ew {
 namespace {
 
-const TreeBone& shank() {
-  for (const TreeBone& b : kSearchTree)
+const SearchBone& shank() {
+  for (const SearchBone& b : kSearchTree)
     if (b.child == Joint::RAnkle) return b;
   throw std::logic_error("no shank in the search tree");
 }
