@@ -265,8 +265,6 @@ class FlowPass final : public TrackingPass {
     return m;
   }
 
-  // A segment that looks as it did on the keyframe places its joint; else the joint's own
-  // flow; else the keyframe patch, if it is clearly there; else the joint coasts on the filter.
   // The model's place for joint j on this frame, when the options have one.
   std::optional<cv::Point2f> priorAt(int j) const {
     const Eigen::Index row = frame_ - o_.firstFrame;
@@ -294,6 +292,9 @@ class FlowPass final : public TrackingPass {
     return 0.2;
   }
 
+  // The model's prior first, when it has one and the flow strayed from it (above). Then a
+  // segment that looks as it did on the keyframe places its joint; else the joint's own flow;
+  // else the keyframe patch, if it is clearly there; else the joint coasts on the filter.
   double measure(int j, cv::Point2f guess, std::optional<cv::Point2f> flow, cv::Point2f segmentAt,
                  double segmentMatch, const cv::Mat& toGrey) {
     if (const std::optional<double> c = measureAgainstPrior(j, flow, toGrey)) return *c;

@@ -44,6 +44,14 @@ struct ShellRun {
 };
 ShellRun runShell(const std::string& commandLine, const std::filesystem::path& dir);
 
+#ifdef EW_CLI_PATH
+// eigenwalker-cli (this build's: every test program is given its path) with `arguments`, run
+// by the shell in `dir`, so relative paths in the arguments are `dir`'s.
+inline ShellRun runCli(const std::string& arguments, const std::filesystem::path& dir) {
+  return runShell("cd \"" + dir.string() + "\" && \"" + EW_CLI_PATH + "\" " + arguments, dir);
+}
+#endif
+
 // A whole text file ("" when it cannot be read).
 std::string readTextFile(const std::filesystem::path& file);  // byte for byte
 

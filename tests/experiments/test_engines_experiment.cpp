@@ -19,9 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-test::ShellRun runCli(const std::string& arguments, const fs::path& dir) {
-  return test::runShell("cd \"" + dir.string() + "\" && \"" + EW_CLI_PATH + "\" " + arguments, dir);
-}
+using test::runCli;
 
 // A CSV line split at commas outside quotes.
 std::vector<std::string> cells(const std::string& line) {

@@ -13,9 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-test::ShellRun runCli(const std::string& arguments, const fs::path& dir) {
-  return test::runShell("cd \"" + dir.string() + "\" && \"" + EW_CLI_PATH + "\" " + arguments, dir);
-}
+using test::runCli;
 
 class GaitCli : public ::testing::Test {
  protected:

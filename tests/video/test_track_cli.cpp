@@ -16,9 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-test::ShellRun runCli(const std::string& arguments, const fs::path& dir) {
-  return test::runShell("cd \"" + dir.string() + "\" && \"" + EW_CLI_PATH + "\" " + arguments, dir);
-}
+using test::runCli;
 
 // A synthetic walker's first second (30 frames) filmed 6 m away, 30° off the side view, with
 // its true joints as keyframes on frames 0, 10 and 20.

@@ -199,6 +199,8 @@ void cancelTracking(AppState& s);
 void closeVideo(AppState& s);
 // The video frame the 2D view shows: the tracked clip's playback frame, else the scrubbed one.
 int shownVideoFrame(const AppState& s);
+// The clip shown is the fit of the open video's last track.
+bool showsTrackFit(const AppState& s);
 
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).
 int coefficientCount(const AppState& s);

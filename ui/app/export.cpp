@@ -112,11 +112,6 @@ void blitRgb(const std::vector<unsigned char>& rgb, int w, int h, cv::Mat& dst, 
   cv::cvtColor(flipped, dst(cv::Rect(x0, 0, w, h)), cv::COLOR_RGB2BGR);
 }
 
-// A keypoint clip that is the fitted track of the open video: its footage goes under it.
-bool trackedFootage(const AppState& s) {
-  return s.video && s.clip && s.video->tracked && s.clip->settings.tracked == s.video->tracked->trial;
-}
-
 // The left half as the 2D view shows a tracked video: the frame at the video's aspect, the
 // tracked joints and the walker drawn back over it (ui/panels/video_view.h).
 void renderFootage(std::optional<VideoSource>& footage, gl::RenderTarget& target, Scene& scene, const AppState& s,
@@ -204,7 +199,7 @@ bool VideoExport::step(const AppState& s, Renderer& renderer, double budgetMs) {
       // A keypoint clip: its input frames in image pixels, the walker where the camera saw it
       // (over the footage, for a tracked video).
       frame = clipFrameAt(*s.clip, cycles);
-      if (trackedFootage(s)) {
+      if (actions::showsTrackFit(s)) {  // its footage goes under it
         renderFootage(m.footage, m.left, m.scene, s, renderer, lineScale, s.video->tracked->track.firstFrame + frame,
                       aspectLeft);
       } else {

@@ -122,9 +122,7 @@ void setVideoFrame(AppState& s, int frame) {
   v.frame = std::clamp(frame, 0, std::max(v.frameCount() - 1, 0));
   if (v.marking) v.markStep = nextUnmarked(v, 0);
   // A tracked clip shows this frame too, when it covers it.
-  if (s.clip && s.clip->settings.tracked && v.tracked &&
-      s.clip->settings.tracked == v.tracked->trial && v.frame >= v.tracked->track.firstFrame &&
-      v.frame <= v.tracked->lastFrame())
+  if (showsTrackFit(s) && v.frame >= v.tracked->track.firstFrame && v.frame <= v.tracked->lastFrame())
     setClipFrame(s, v.frame - v.tracked->track.firstFrame + 1);
   s.view.playback.playing = false;
 }
@@ -242,10 +240,15 @@ void closeVideo(AppState& s) {
   s.video.reset();
 }
 
+bool showsTrackFit(const AppState& s) {
+  return s.video && s.clip && s.video->tracked && s.clip->settings.tracked &&
+         s.clip->settings.tracked == s.video->tracked->trial;
+}
+
 int shownVideoFrame(const AppState& s) {
   if (!s.video) return 0;
   const VideoSession& v = *s.video;
-  if (!v.marking && s.clip && v.tracked && s.clip->settings.tracked == v.tracked->trial)
+  if (!v.marking && showsTrackFit(s))
     return v.tracked->track.firstFrame + clipFrameAt(*s.clip, s.view.playback.cycles);
   return v.frame;
 }

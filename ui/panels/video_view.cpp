@@ -90,8 +90,7 @@ bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,
   if (!s.video) return false;
   const VideoSession& v = *s.video;
   const float radius = 5.0f * lineScale * videoPxPerScreenPx;
-  const bool fitted =
-      s.clip && v.tracked && s.clip->settings.tracked == v.tracked->trial && !v.marking;
+  const bool fitted = actions::showsTrackFit(s) && !v.marking;
   const int clipFrame = fitted ? frame - v.tracked->track.firstFrame : -1;
   if (fitted && clipFrame >= 0 && clipFrame < s.clip->rec.trial.frameCount) {
     buildClipInputScene(s, scene, lineScale, clipFrame, clipImageFrame(*s.clip, 1.0f));

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/panels/clip_view.h"
 #include "ui/render/palette.h"
@@ -124,8 +125,7 @@ ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool 
   std::vector<LegendItem> legend;
   if (v.keyframeAt(frame))
     legend.push_back({palette::kCamera, onScreen ? "marked by hand (keyframe; drag to correct)" : "marked by hand (keyframe)", false});
-  const bool fitted =
-      s.clip && v.tracked && s.clip->settings.tracked == v.tracked->trial && !v.marking;
+  const bool fitted = actions::showsTrackFit(s) && !v.marking;
   if (fitted) {
     legend.push_back({palette::kInputPoint, "tracked joints", false});
     if (s.view.overlays.reprojection) {
@@ -201,8 +201,8 @@ ViewCaption clipReconstructionCaption(const AppState& s) {
 ViewCaption inputCaption(const AppState& s, int clipFrame) {
   if (s.doc.mode == Mode::Clip && s.video) {
     const VideoSession& v = *s.video;
-    const bool fitted = s.clip && v.tracked && s.clip->settings.tracked == v.tracked->trial;
-    return videoInputCaption(s, fitted ? v.tracked->track.firstFrame + clipFrame : v.frame, false, false);
+    return videoInputCaption(s, actions::showsTrackFit(s) ? v.tracked->track.firstFrame + clipFrame : v.frame, false,
+                             false);
   }
   return s.doc.mode == Mode::Clip && s.clip ? clipInputCaption(s, clipFrame) : walkerInputCaption(s);
 }
