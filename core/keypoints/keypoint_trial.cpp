@@ -165,13 +165,30 @@ std::vector<const Eigen::MatrixX3d*> detectionsOf(const KeypointFrames& frames, 
   return out;
 }
 
-Eigen::MatrixXd personJoints(const KeypointLayout& layout, const KeypointFrames& frames, const PersonTrack& t,
-                             double minConfidence, JointChoice* choiceOut = nullptr) {
+// The person's joints, one row per frame it is in (PersonTrack::jointsPx).
+Eigen::MatrixXd presentJoints(const KeypointLayout& layout, const KeypointFrames& frames, const PersonTrack& t,
+                              double minConfidence) {
   const auto person = detectionsOf(frames, t);
   const JointChoice c = chooseAlternatives(layout, person, minConfidence);
-  if (choiceOut) *choiceOut = c;
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(t.frames.size()), 2 * kJointCount);
+  for (std::size_t i = 0; i < t.frames.size(); ++i)
+    out.row(static_cast<Eigen::Index>(i)) = jointsOf(layout, c, *person[i], minConfidence);
+  return out;
+}
+
+// The same over the whole clip: NaN where the person is not.
+Eigen::MatrixXd personJoints(const KeypointLayout& layout, const KeypointFrames& frames, const PersonTrack& t,
+                             double minConfidence) {
+  const Eigen::MatrixXd present = presentJoints(layout, frames, t, minConfidence);
   Eigen::MatrixXd out = Eigen::MatrixXd::Constant(frames.frameCount(), 2 * kJointCount, kNaN);
-  for (std::size_t i = 0; i < t.frames.size(); ++i) out.row(t.frames[i]) = jointsOf(layout, c, *person[i], minConfidence);
+  for (std::size_t i = 0; i < t.frames.size(); ++i) out.row(t.frames[i]) = present.row(static_cast<Eigen::Index>(i));
+  return out;
+}
+
+// The rows of a whole-clip joint matrix for the frames the person is in.
+Eigen::MatrixXd presentRows(const Eigen::MatrixXd& joints, const PersonTrack& t) {
+  Eigen::MatrixXd out(static_cast<Eigen::Index>(t.frames.size()), joints.cols());
+  for (std::size_t i = 0; i < t.frames.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = joints.row(t.frames[i]);
   return out;
 }
 
@@ -352,8 +369,14 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
   const PersonTrack& walker = t.people[static_cast<std::size_t>(t.chosen)];
   t.layout = &chooseLayout(frames, walker, options, t.layoutSource, t.warnings, t.builtLayout);
   t.jointsPx = personJoints(*t.layout, frames, walker, options.minConfidence);
+  for (auto& person : t.people) person.jointsPx = presentJoints(*t.layout, frames, person, options.minConfidence);
   checkSeenJoints(t, options);
   return t;
+}
+
+int personRowAt(const PersonTrack& person, int frame) {
+  const auto it = std::lower_bound(person.frames.begin(), person.frames.end(), frame);
+  return it != person.frames.end() && *it == frame ? static_cast<int>(it - person.frames.begin()) : -1;
 }
 
 KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options) {
@@ -386,6 +409,7 @@ KeypointTrial trialFromJoints(const Eigen::MatrixXd& jointsPx, const Eigen::Matr
     if (t.jointsPx.row(f).array().isFinite().any()) person.frames.push_back(static_cast<int>(f));
   }
   person.detection.assign(person.frames.size(), 0);
+  person.jointsPx = presentRows(t.jointsPx, person);
   t.maxPeople = person.frames.empty() ? 0 : 1;
   t.people.push_back(std::move(person));
   t.chosenReason = "the tracked person";

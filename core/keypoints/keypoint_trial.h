@@ -37,6 +37,9 @@ struct PersonTrack {
   std::vector<int> detection;         // its detection index in each of those frames
   double travelPx = 0.0;              // how far its centre moves from where it starts (max)
   double sizePx = 0.0;                // median height of its keypoints' bounding box
+  // Its 15 joints (u, v per joint, SPEC §1 order, NaN = missing), one row per entry of
+  // `frames`, built by the clip's layout: what the viewer draws of the people not chosen.
+  Eigen::MatrixXd jointsPx;
 };
 
 struct KeypointTrial {
@@ -61,6 +64,9 @@ struct KeypointTrial {
 // Follows people across frames: a detection joins the track whose last centre is nearest,
 // within half that person's size and 15 frames; else it starts a track.
 std::vector<PersonTrack> trackPeople(const KeypointFrames& frames);
+
+// The row of `person.jointsPx` for `frame`, or -1 when the person is not in that frame.
+int personRowAt(const PersonTrack& person, int frame);
 
 // Cleans what a reader gave. Throws Error(BadArgument) for an unknown --layout, a layout
 // whose point count differs from the file's, or a --person out of range; Error(BadData)

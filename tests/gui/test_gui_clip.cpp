@@ -26,6 +26,8 @@ using nlohmann::json;
 
 // The estimated camera's teal (palette::kCamera).
 bool isTeal(int r, int g, int b) { return g > 170 && b > 140 && r < 150 && g - r > 80; }
+// The people not fitted (palette::kOtherPerson, a violet): blue and red above green.
+bool isViolet(int r, int g, int b) { return b > 110 && r > 85 && b - g > 35 && r - g > 15; }
 
 fs::path writeClip(const fs::path& dir) {
   const fs::path folder = dir / "clip_json";
@@ -87,6 +89,7 @@ TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
   EXPECT_EQ(fit["format"], "OpenPose JSON");
   EXPECT_EQ(fit["frames"], 150);
   EXPECT_EQ(fit["people"], 2u);
+  EXPECT_EQ(fit["people_in_frame"], json::array({0, 1}));
   // What `reconstruct --unknown-camera` measures on this walk (tests/camera): 1e-3-exact
   // is not expected, the detector's sternum is the shoulders' midpoint.
   EXPECT_NEAR(fit["alpha_deg"].get<double>(), 40.0, 2.0);
@@ -106,6 +109,9 @@ TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
   EXPECT_GT(amber, 200);
   EXPECT_LT(amberOff, amber / 10) << amber;
   EXPECT_GT(countPixels(input, isMagenta), 10);
+  // The standing person is drawn (violet), left of the walker's first steps, labelled.
+  EXPECT_GT(countPixels(input, isViolet), 150);
+  EXPECT_GT(countPixels(inputOff, isViolet), 150);
   const int teal = countPixels(recon, isTeal), tealOff = countPixels(reconOff, isTeal);
   EXPECT_GT(teal, 150);
   EXPECT_LT(tealOff, teal / 3) << teal;  // the legend keeps its teal line

@@ -165,6 +165,16 @@ TEST(Keypoints, OpenPoseFolderFollowsTheWalkerAndGuessesBody25) {
   EXPECT_TRUE(t.derived[static_cast<std::size_t>(index(Joint::Head))]);
   EXPECT_FALSE(t.derived[static_cast<std::size_t>(index(Joint::RKnee))]);
   for (double s : t.seenShare) EXPECT_DOUBLE_EQ(s, 1.0);
+  // The bystander keeps his joints too (what the viewer draws of the people not chosen):
+  // the same layout's reading, one row per frame he is in.
+  const PersonTrack& bystander = t.people[static_cast<std::size_t>(1 - t.chosen)];
+  ASSERT_EQ(bystander.jointsPx.rows(), 40);
+  EXPECT_EQ(personRowAt(bystander, 10), 10);
+  EXPECT_EQ(personRowAt(bystander, 40), -1);
+  EXPECT_DOUBLE_EQ(bystander.jointsPx(10, 2 * index(Joint::Pelvis)), 1500);
+  EXPECT_DOUBLE_EQ(bystander.jointsPx(10, 2 * index(Joint::Head) + 1), 100);
+  const PersonTrack& walker = t.people[static_cast<std::size_t>(t.chosen)];
+  EXPECT_TRUE(walker.jointsPx.row(10).isApprox(t.jointsPx.row(10)));
 }
 
 TEST(Keypoints, Body25bIsToldFromBody25AndLayoutOverrides) {

@@ -45,6 +45,9 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   extend(r.keypointBounds, r.rec.trial.jointsPx);
   r.shownBounds = r.keypointBounds;
   extend(r.shownBounds, r.rec.reprojectedPx);
+  // The other people the picker offers, when they stay long enough to be picked.
+  for (const PersonTrack& person : r.rec.trial.people)
+    if (10 * person.frames.size() >= static_cast<std::size_t>(r.rec.trial.frameCount)) extend(r.shownBounds, person.jointsPx);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -105,6 +105,14 @@ nlohmann::json reconstructionJson(const Derived& derived) {
 nlohmann::json optionalJson(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
 std::optional<double> finiteOr(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
 
+// The tracks (0-based) the clip's frame `frame` shows, the fitted one among them.
+std::vector<int> peopleInFrame(const KeypointTrial& trial, int frame) {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < trial.people.size(); ++i)
+    if (personRowAt(trial.people[i], frame) >= 0) out.push_back(static_cast<int>(i));
+  return out;
+}
+
 // The keypoint clip: what the user chose, and the last fit (camera, walk, residuals).
 nlohmann::json clipJson(const AppState& s) {
   if (!s.doc.clip) return nullptr;
@@ -132,6 +140,7 @@ nlohmann::json clipJson(const AppState& s) {
               {"rate_hz", r.rec.trial.rateHz},
               {"people", r.rec.trial.people.size()},
               {"person", r.rec.trial.chosen},
+              {"people_in_frame", peopleInFrame(r.rec.trial, clipFrameAt(r, s.view.playback.cycles))},
               {"alpha_deg", f.camera.alphaDeg},
               {"elevation_deg", f.camera.elevationDeg},
               {"focal_px", pinhole ? nlohmann::json(f.camera.focalPx) : nlohmann::json(nullptr)},

@@ -60,6 +60,23 @@ void addInputPose(Scene& scene, const Eigen::MatrixXd& px, int frame, float radi
     if (seen(px, frame, j)) scene.glows.push_back({glm::vec3(pointAt(px, frame, j), 0.0f), radiusPx, palette::kInputPoint});
 }
 
+// The people not fitted, as thin bones between their seen joints: so the user sees whom the
+// person picker offers.
+void addOtherPeople(Scene& scene, const KeypointTrial& trial, int frame, float radiusPx, float width) {
+  for (const OtherPerson& o : otherPeopleAt(trial, frame)) {
+    const PersonTrack& person = trial.people[static_cast<std::size_t>(o.track - 1)];
+    const int row = personRowAt(person, frame);
+    const Eigen::MatrixXd& px = person.jointsPx;
+    for (const auto& [ja, jb] : kBones) {
+      if (!seen(px, row, index(ja)) || !seen(px, row, index(jb))) continue;
+      scene.lines.push_back({glm::vec3(pointAt(px, row, index(ja)), -0.5f), width,
+                             glm::vec3(pointAt(px, row, index(jb)), -0.5f), 0.0f, palette::kOtherPerson});
+    }
+    for (int j = 0; j < kJointCount; ++j)
+      if (seen(px, row, j)) scene.glows.push_back({glm::vec3(pointAt(px, row, j), -0.5f), radiusPx, palette::kOtherPerson});
+  }
+}
+
 // The reprojected walker's bones and, for each seen joint, the residual to the input.
 void addReprojection(Scene& scene, const ClipReconstruction& rec, int frame, float lineScale) {
   const Eigen::MatrixXd& re = rec.reprojectedPx;
@@ -95,6 +112,26 @@ std::vector<glm::vec3> viewRays(const ClipResult& clip, const ClipWorld& w) {
 }
 
 }  // namespace
+
+std::vector<OtherPerson> otherPeopleAt(const KeypointTrial& trial, int frame) {
+  std::vector<OtherPerson> out;
+  for (std::size_t i = 0; i < trial.people.size(); ++i) {
+    if (static_cast<int>(i) == trial.chosen) continue;
+    const PersonTrack& person = trial.people[i];
+    const int row = personRowAt(person, frame);
+    if (row < 0 || person.jointsPx.rows() <= row) continue;
+    OtherPerson o{static_cast<int>(i) + 1, {}};
+    bool any = false;
+    for (int j = 0; j < kJointCount; ++j) {
+      if (!seen(person.jointsPx, row, j)) continue;
+      const glm::vec2 p = pointAt(person.jointsPx, row, j);
+      if (!any || p.y > o.top.y) o.top = p;  // scene y runs up: the highest point
+      any = true;
+    }
+    if (any) out.push_back(o);
+  }
+  return out;
+}
 
 ClipWorld clipWorld(const ClipResult& clip, int frame) {
   const WalkCamera& c = clip.rec.fit.camera;
@@ -156,6 +193,7 @@ bool buildClipInputScene(const AppState& s, Scene& scene, float lineScale, int f
     const int stride = static_cast<int>(rec.trial.rateHz / std::max(rec.fit.strideHz, 0.1));
     addInputTrails(scene, rec.trial.jointsPx, frame, stride, 1.5f * lineScale);
   }
+  if (!o.pointLights) addOtherPeople(scene, rec.trial, frame, 0.6f * glow, 1.5f * lineScale);
   addInputPose(scene, rec.trial.jointsPx, frame, glow, o.stickFigure && !o.pointLights, 2.5f * lineScale);
   if (o.reprojection && !o.pointLights) addReprojection(scene, rec, frame, lineScale);
   // The estimated principal point (where the optical axis meets the image).

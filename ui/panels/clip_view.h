@@ -5,6 +5,7 @@
 // input frame (clipFrameAt).
 
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "ui/app/clip.h"
 #include "ui/render/camera.h"
@@ -22,6 +23,14 @@ struct ClipImageFrame {
 };
 ClipImageFrame clipImageFrame(const ClipResult& clip, float aspect);
 CameraMatrices clipInputCamera(const ClipImageFrame& frame, float aspect);
+
+// The people in `frame` besides the one fitted: their track number (1-based, as the person
+// picker names them) and the top of their keypoints (scene coordinates), for their label.
+struct OtherPerson {
+  int track = 0;
+  glm::vec2 top{0.0f};
+};
+std::vector<OtherPerson> otherPeopleAt(const KeypointTrial& trial, int frame);
 
 // `frame`: the input frame shown; `view`: the image region shown (points are sized to it).
 // Return false when there is no fit to show.

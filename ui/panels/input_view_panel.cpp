@@ -147,6 +147,21 @@ float roundPixels(float px) {
 }
 
 // The clip's view: its input in image pixels, the reprojection, the residuals named.
+// "track N" above each person the clip has besides the one fitted, as the picker names them.
+void drawOtherPeopleLabels(ImDrawList* dl, const KeypointTrial& trial, int shown, ImVec2 p0, ImVec2 size,
+                           const ClipImageFrame& frame) {
+  const float screenPerPx = size.y / frame.heightPx;
+  const ImU32 colour = toImU32(glm::vec4(glm::vec3(palette::kOtherPerson), 1.0f));
+  for (const OtherPerson& o : otherPeopleAt(trial, shown)) {
+    char label[32];
+    std::snprintf(label, sizeof label, "track %d", o.track);
+    const ImVec2 ts = ImGui::CalcTextSize(label);
+    const ImVec2 at(p0.x + 0.5f * size.x + (o.top.x - frame.centre.x) * screenPerPx - 0.5f * ts.x,
+                    p0.y + 0.5f * size.y - (o.top.y - frame.centre.y) * screenPerPx - 1.6f * ts.y);
+    dl->AddText(at, colour, label);
+  }
+}
+
 void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size, const ClipImageFrame& frame,
                          int shown) {
   ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -162,6 +177,7 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
   const float len = bar * screenPerPx;
   drawScaleBar(dl, ImVec2(p1.x - pad - len - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale), len, label, ctx.scale);
   drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), caption.legend, ctx.scale, size.x);
+  drawOtherPeopleLabels(dl, s.clip->rec.trial, shown, p0, size, frame);
 }
 
 }  // namespace

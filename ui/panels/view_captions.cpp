@@ -101,6 +101,8 @@ ViewCaption clipInputCaption(const AppState& s, int shown) {
   }
   std::vector<LegendItem> legend{{palette::kInputPoint, "keypoints (u, v px)", false},
                                  {palette::kCamera, "principal point (est.)", true}};
+  if (!s.view.overlays.pointLights && !otherPeopleAt(rec.trial, shown).empty())
+    legend.push_back({palette::kOtherPerson, "other people (Clip: person)", true});
   if (s.view.overlays.reprojection && !s.view.overlays.pointLights) {
     legend.push_back({palette::kReconRight, "3D walker through the est. camera", true});
     char residual[96];

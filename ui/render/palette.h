@@ -24,6 +24,8 @@ inline constexpr glm::vec4 kInputBoneLeft{0.42f, 0.47f, 0.56f, 0.85f};
 inline constexpr glm::vec4 kError{1.00f, 0.28f, 0.62f, 0.95f};
 inline constexpr glm::vec4 kCamera{0.32f, 0.88f, 0.76f, 1.0f};
 inline constexpr glm::vec4 kCameraEstimate{1.00f, 0.36f, 0.55f, 1.0f};
+// The people of a keypoint clip besides the one fitted (the person picker's other tracks).
+inline constexpr glm::vec4 kOtherPerson{0.70f, 0.56f, 0.86f, 0.75f};
 inline constexpr glm::vec4 kTrail{0.55f, 0.75f, 1.00f, 0.30f};
 inline constexpr glm::vec4 kAxis{0.40f, 0.44f, 0.50f, 0.8f};
 
