@@ -40,6 +40,11 @@ constexpr double kMaxRmsOfHeight = 0.10;
 // Above this share of the walker's height, the fit looks for a better basin from a grid of
 // azimuths (good fits: 1-3 %; 7 % for a 140 px walker at 5 px noise).
 constexpr double kRetryRmsOfHeight = 0.08;
+// Stride frequencies a walk can have (Hz): a fit outside strides backwards in time or runs
+// its legs through the image faster than anyone walks, a wrong basin however well it fits.
+constexpr double kMinStrideHz = 0.3, kMaxStrideHz = 2.5;
+// Candidates finished on every frame before the fit gives up on a start list.
+constexpr int kFinishedCandidates = 3;
 // Detector glitches (a swapped limb, a jump to another person; withoutOutliers) are rejected
 // rather than averaged in; two rounds at most. A glitch jumps away from the joint's misses in
 // the neighbouring frames; a systematic miss (a detector's neck is not the sternum, a head
@@ -416,6 +421,12 @@ namespace {
 
 using Candidate = std::pair<VectorXd, CameraStart>;
 
+// A walker moving forward at a stride frequency people walk at.
+bool plausibleWalk(const Problem& p, const VectorXd& theta) {
+  const double strideHz = theta[p.layout.omega()] / (2 * std::numbers::pi);
+  return theta[p.layout.speed()] > 0 && strideHz >= kMinStrideHz && strideHz <= kMaxStrideHz;
+}
+
 // Every start (azimuth × elevation) screened for a few iterations on the coarse frames, the
 // best few refined there; sorted with walkers moving forward first (a walker walking
 // backwards is the reflected reading of the image), then by cost.
@@ -441,8 +452,8 @@ std::vector<Candidate> tryStarts(const Problem& p, const Problem& coarse, const 
                                                trial.camera.elevationDeg, lm.cost, trial.reprojectionRmsPx,
                                                trial.camera.speedMmS, lm.iterations + (refine ? kScreeningIterations : 0)});
   }
-  std::stable_sort(results.begin(), results.end(), [](const auto& a, const auto& b) {
-    const bool fa = a.second.speedMmS > 0, fb = b.second.speedMmS > 0;
+  std::stable_sort(results.begin(), results.end(), [&p](const auto& a, const auto& b) {
+    const bool fa = plausibleWalk(p, a.first), fb = plausibleWalk(p, b.first);
     return fa != fb ? fa : a.second.objective < b.second.objective;
   });
   return results;
@@ -450,14 +461,24 @@ std::vector<Candidate> tryStarts(const Problem& p, const Problem& coarse, const 
 
 // The best candidate (a forward walker) finished on every frame, in place; false if none.
 bool finishBest(const Problem& p, std::vector<Candidate>& results, const CameraFitOptions& o, CameraFit& fit) {
-  if (results.empty() || !(results.front().second.speedMmS > 0)) return false;
-  const LmResult best = levenbergMarquardt(p, results.front().first, o.maxIterations);
-  results.front().first = best.theta;
-  results.front().second.objective = best.cost;
-  results.front().second.iterations += best.iterations;
-  fillOutputs(p, best.theta, fit);
-  results.front().second.reprojectionRmsPx = fit.reprojectionRmsPx;
-  return true;
+  const int tries = std::min(static_cast<int>(results.size()), kFinishedCandidates);
+  for (int i = 0; i < tries; ++i) {
+    Candidate& c = results[static_cast<std::size_t>(i)];
+    if (!plausibleWalk(p, c.first)) return false;  // sorted: the plausible ones come first
+    const LmResult best = levenbergMarquardt(p, c.first, o.maxIterations);
+    c.first = best.theta;
+    c.second.objective = best.cost;
+    c.second.iterations += best.iterations;
+    if (!plausibleWalk(p, best.theta)) continue;
+    fillOutputs(p, best.theta, fit);
+    c.second.reprojectionRmsPx = fit.reprojectionRmsPx;
+    c.second.alphaDeg = wrapDeg(fit.camera.alphaDeg);
+    c.second.elevationDeg = fit.camera.elevationDeg;
+    c.second.speedMmS = fit.camera.speedMmS;
+    std::rotate(results.begin(), results.begin() + i, results.begin() + i + 1);  // the finished fit first
+    return true;
+  }
+  return false;
 }
 
 // `px` with the detector's glitches set to NaN; `rejected` counts them. A glitch jumps: its
