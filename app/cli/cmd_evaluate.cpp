@@ -31,6 +31,8 @@ struct EvaluateArgs {
   std::vector<std::string> experiments{"all"};
   std::string angles;      // empty: each experiment's default views
   int cameras = 0;         // experiment "engines": random cameras per walker (0 = its default)
+  std::optional<double> detectorHipOffsetMm;  // experiment "camera": the simulated detector's hips
+  bool noDetectorOffsets = false;              // experiment "camera": the reader ignores the offsets
   std::string method = "both";
   double sigma2Mm2 = 0.0;  // 0 = the sweep's optimum
   int components = 0;      // 0 = 95 % of the variance
@@ -135,6 +137,8 @@ EvaluationOptions evaluationOptions(const EvaluateArgs& a, ProgressPrinter& prin
   if (a.components > 0) o.model.components = a.components;
   o.cameraSkeleton = asksFor(a, EngineKind::Skeleton);
   o.cameraSnippet = asksFor(a, EngineKind::Snippet);
+  o.cameraDetectorHipOffsetMm = a.detectorHipOffsetMm;
+  o.cameraAllowForDetectorOffsets = !a.noDetectorOffsets;
   o.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   o.progress = [&printer](int done, int total, const std::string& what) { printer(done, total, what); };
   return o;
@@ -331,6 +335,12 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--angles", args->angles,
                   "View angles in degrees: FROM:TO:STEP or a list a,b,c (default -90:90:1; experiment 'engines' "
                   "0,30,60,90)");
+  cmd->add_option("--detector-hip-offset", args->detectorHipOffsetMm,
+                  "Experiment 'camera': the simulated detector puts each hip this many mm out from its joint centre "
+                  "(default: the keypoint tables' offset, docs/KEYPOINTS.md \"Detector hips\")")
+      ->check(CLI::Range(-200.0, 200.0));
+  cmd->add_flag("--no-detector-offsets", args->noDetectorOffsets,
+                "Experiment 'camera': read the clips taking the detector's hips for joint centres");
   cmd->add_option("--cameras", args->cameras, "Experiment 'engines': random cameras per held-out walker (default 3)")
       ->check(CLI::Range(1, 100));
   cmd->add_option("--method", args->method, "lsq, map or both")

@@ -54,6 +54,7 @@ struct ReconstructArgs {
   std::string layout;               // keypoint layout (--layout)
   std::optional<double> fps, focalPx, elevationDeg;
   bool orthographic = false;
+  bool noDetectorOffsets = false;   // take a detector's hips for joint centres
   std::string imageSize;
   std::string camera, cameraName;   // a calibration file (--camera) and which of its cameras
   std::string engine = "eigenwalker";
@@ -312,6 +313,7 @@ SkeletonArgs skeletonArgs(const ReconstructArgs& a) {
   refuse(a.projectAngleDeg.has_value(), "--project-angle");
   refuse(a.elevationDeg.has_value() || a.orthographic, "--elevation");
   refuse(!a.save2d.empty() || a.dataPreserving, "--save-2d");
+  refuse(a.noDetectorOffsets, "--no-detector-offsets");
   SkeletonArgs s;
   s.input = a.input, s.out = a.out, s.layout = a.layout, s.camera = a.camera, s.cameraName = a.cameraName;
   s.reference = a.reference, s.fps = a.fps, s.json = a.json, s.angles = a.angles;
@@ -347,6 +349,7 @@ int runReconstruct(const ReconstructArgs& a) {
     c.input = a.input, c.out = a.out, c.layout = a.layout, c.method = a.method, c.modelName = chosen.name;
     c.mapping = a.mapping, c.imageSize = a.imageSize, c.fps = a.fps, c.focalPx = a.focalPx;
     c.sigma2Mm2 = a.sigma2Mm2, c.json = a.json, c.orthographic = a.orthographic;
+    c.detectorOffsets = !a.noDetectorOffsets;
     c.alphaDeg = a.angleDeg, c.elevationDeg = a.elevationDeg;
     c.camera = a.camera, c.cameraName = a.cameraName;
     return runReconstructCamera(chosen.model, c);
@@ -354,6 +357,8 @@ int runReconstruct(const ReconstructArgs& a) {
   if (a.elevationDeg || !a.camera.empty())
     throw Error(ErrorKind::BadArgument, a.elevationDeg ? "--elevation" : "--camera", "",
                 "a camera elevation or calibration applies to --unknown-camera only");
+  if (a.noDetectorOffsets)
+    throw Error(ErrorKind::BadArgument, "--no-detector-offsets", "", "applies to --unknown-camera only");
   if (a.angleDeg.has_value() == a.unknownAngle) {
     throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
   }
@@ -506,6 +511,9 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_flag("--orthographic", args->orthographic,
                 "With --unknown-camera and no --focal-px: scaled orthography instead of a pinhole "
                 "whose focal length is estimated (a distant camera)");
+  cmd->add_flag("--no-detector-offsets", args->noDetectorOffsets,
+                "With --unknown-camera: take the detector's hips for hip-joint centres instead of allowing for "
+                "the layout's detector offsets (docs/KEYPOINTS.md, \"Detector hips\")");
   cmd->add_option("--mapping", args->mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md) for a 3D marker input whose set "
                   "the program does not know, or a DeepLabCut keypoint file's body parts");

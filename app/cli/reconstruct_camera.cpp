@@ -29,6 +29,16 @@ json startsJson(const CameraFit& fit) {
   return out;
 }
 
+// The offsets the fit allowed for, per joint that has one.
+json offsetsJson(const JointOffsetsMm& offsets) {
+  json out = json::object();
+  for (int j = 0; j < kJointCount; ++j) {
+    const auto& o = offsets[static_cast<std::size_t>(j)];
+    if (o[0] != 0.0 || o[1] != 0.0 || o[2] != 0.0) out[std::string(jointName(static_cast<Joint>(j)))] = o;
+  }
+  return out;
+}
+
 json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fit) {
   const WalkCamera& c = fit.camera;
   const bool pinhole = c.model == CameraModel::Pinhole;
@@ -50,7 +60,8 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
           {"stride_hz", fit.strideHz}, {"cadence_steps_per_min", fit.cadenceStepsPerMin},
           {"speed_mps", fit.speedMps}, {"stride_length_m", fit.strideLengthM},
           {"head_height_m", fit.headHeightMm / 1000.0}, {"k", std::vector<double>(fit.k.data(), fit.k.data() + fit.k.size())},
-          {"joints_model_estimated", unseen}, {"minima", startsJson(fit)}};
+          {"joints_model_estimated", unseen}, {"minima", startsJson(fit)},
+          {"detector_offsets_mm", offsetsJson(t.detectorOffsetMm)}};
 }
 
 void printSummary(const json& r) {
@@ -103,6 +114,7 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   if (!a.mapping.empty()) k.mappingFile = a.mapping;
   if (!a.imageSize.empty()) k.imageSize = parseKeypointImageSize(a.imageSize, "--image-size");
   k.fps = a.fps;
+  k.detectorOffsets = a.detectorOffsets;
   CameraFitOptions o;
   o.estimator = {a.method == "map" ? Estimator::Map : Estimator::Lsq, a.sigma2Mm2.value_or(defaultSigma2Mm2(model))};
   std::string focalSource;

@@ -17,6 +17,7 @@ struct CameraArgs {
   std::string camera, cameraName;                // a calibration file and its camera
   bool json = false;
   bool orthographic = false;  // scaled orthography instead of estimating the focal length
+  bool detectorOffsets = true;  // allow for the layout's detector offsets (KeypointLayout)
 };
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args);

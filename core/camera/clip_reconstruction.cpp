@@ -4,6 +4,7 @@
 #include <limits>
 #include <utility>
 
+#include "core/camera/detector_offsets.h"
 #include "core/engine/fourier.h"
 #include "core/engine/projection.h"
 
@@ -43,7 +44,7 @@ ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, Keypo
   c.gait = imageGaitCycles(c.trial);
   fitOptions.strideHzHint = c.gait.strideHz;
   if (fitOptions.file.empty()) fitOptions.file = c.trial.file;
-  c.fit = reconstructUnknownCamera(model, c.trial.jointsPx, c.trial.rateHz, fitOptions);
+  c.fit = reconstructDetectedWalker(model, c.trial, fitOptions);
   c.timesS = frameTimes(c.trial.frameCount, c.trial.rateHz);
   c.framesMm = synthesizeFrames(c.fit.w, c.fit.omegaRadS, c.fit.phaseRad, c.timesS);
   c.reprojectedPx = projectWalk(c.framesMm, c.timesS, c.fit.camera);

@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "core/camera/camera_reconstruction.h"
+#include "core/camera/detector_offsets.h"
 #include "core/camera/walk_camera.h"
 #include "core/common/errors.h"
 #include "core/engine/fourier.h"
@@ -55,13 +56,25 @@ void checkOptions(const CameraExperimentOptions& o) {
     bad("shares must be within [0, 1]");
   if (!(std::isfinite(o.sigma2Mm2) && o.sigma2Mm2 >= 0)) bad("sigma2 must be finite and >= 0");
   if (!(o.fps >= 1 && o.fps <= 240)) bad("the frame rate must be 1-240 fps");
+  if (o.detectorHipOffsetMm && !(std::abs(*o.detectorHipOffsetMm) <= kMaxDetectorOffsetMm))
+    bad("the detector's hip offset must be within ±200 mm");
+}
+
+// Where the simulated detector puts its points relative to the joint centres.
+JointOffsetsMm simulatedDetector(const CameraExperimentOptions& o) {
+  const JointOffsetsMm table = keypointLayoutNamed("BODY_25").detectorOffsetMm;
+  if (!o.detectorHipOffsetMm) return table;
+  JointOffsetsMm hips{};
+  hips[static_cast<std::size_t>(index(Joint::RHip))] = {*o.detectorHipOffsetMm, 0.0, 0.0};
+  hips[static_cast<std::size_t>(index(Joint::LHip))] = {-*o.detectorHipOffsetMm, 0.0, 0.0};
+  return hips;
 }
 
 struct Clip {
   WalkCamera camera;
   VectorXd times;    // of the kept frames
   MatrixXd truth;    // T × 45 canonical frames of the walker
-  MatrixXd px;       // T × 30 clean image positions
+  MatrixXd px;       // T × 30 clean image positions, where the detector puts the points
 };
 
 // The longest run of frames whose pelvis is inside the image.
@@ -81,11 +94,13 @@ std::pair<Eigen::Index, Eigen::Index> longestInside(const MatrixXd& px) {
 }
 
 // A random camera filming the walker; redrawn until the clip holds kMinStrides strides.
-Clip filmWalker(const ExperimentWalker& w, double fps, std::mt19937& rng) {
+Clip filmWalker(const ExperimentWalker& w, double fps, const JointOffsetsMm& detector, std::mt19937& rng) {
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   const int n = static_cast<int>(kClipS * fps);
   const VectorXd all = frameTimes(n, fps);
   const MatrixXd frames = synthesizeFrames(w.fit.w, w.fit.omegaRadS, 0.0, all);
+  MatrixXd detected = frames;  // where the detector puts the points
+  addOffsets(detected, detector);
   const double strideS = 2 * std::numbers::pi / w.fit.omegaRadS;
   for (int draw = 0; draw < kMaxCameraDraws; ++draw) {
     WalkCamera c;
@@ -101,7 +116,7 @@ Clip filmWalker(const ExperimentWalker& w, double fps, std::mt19937& rng) {
     c.lookAtHeightMm = 1000.0;
     c.speedMmS = 1100.0 + 400.0 * uni(rng);
     c.startOffsetMm = -c.speedMmS * kClipS / 2;
-    const MatrixXd px = projectWalk(frames, all, c);
+    const MatrixXd px = projectWalk(detected, all, c);
     const auto [a, b] = longestInside(px);
     if (static_cast<double>(b - a) / fps < kMinStrides * strideS) continue;
     return {c, all.segment(a, b - a), frames.middleRows(a, b - a), px.middleRows(a, b - a)};
@@ -177,7 +192,7 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   f.strideHzHint = imageGaitCycles(t).strideHz;
   f.file = folder;
   const auto t0 = std::chrono::steady_clock::now();
-  const CameraFit fit = reconstructUnknownCamera(fold.model, t.jointsPx, t.rateHz, f);
+  const CameraFit fit = reconstructDetectedWalker(fold.model, t, f);
   row.seconds = secondsSince(t0);
   row.alphaDeg = fit.camera.alphaDeg;
   row.elevationDeg = fit.camera.elevationDeg;
@@ -343,6 +358,7 @@ void reconstructClip(const Fold& fold, const ExperimentWalker& w, const Clip& cl
   try {
     KeypointOptions k;
     k.fps = o.fps;
+    k.detectorOffsets = o.allowForDetectorOffsets;
     const KeypointTrial t = readKeypointTrial(folder, k);
     std::optional<EigenwalkerClip> walker;
     try {
@@ -392,6 +408,7 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
       for (int c = 0; c < o.camerasPerWalker; ++c) jobs.push_back({static_cast<int>(f), w, c});
     }
   const std::size_t levels = o.noisePx.size();
+  const JointOffsetsMm detector = simulatedDetector(o);
   std::vector<std::string> noPrior;
   const auto priors = o.snippet ? snippetPriors(walkers, folds, o.threads, noPrior)
                                 : std::vector<std::shared_ptr<const PreparedSnippetPrior>>(folds.size());
@@ -401,7 +418,7 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
     const ExperimentWalker& w = walkers[static_cast<std::size_t>(job.walker)];
     // One generator per (walker, camera): the same camera and bystander at every noise level.
     std::mt19937 rng(o.seed + 7919u * static_cast<unsigned>(job.walker) + 104729u * static_cast<unsigned>(job.camera));
-    const Clip clip = filmWalker(w, o.fps, rng);
+    const Clip clip = filmWalker(w, o.fps, detector, rng);
     std::uniform_real_distribution<double> uni(0.0, 1.0);
     const bool withBystander = uni(rng) < o.bystanderShare;
     const MatrixXd other = withBystander ? bystander(clip.px, rng) : MatrixXd();

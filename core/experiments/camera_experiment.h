@@ -54,6 +54,11 @@ struct CameraExperimentOptions {
   // Measure the gait of every engine's reconstruction beside the walker's own
   // (gait_agreement.h; setting "camera", noise in px): CameraRow::gait.
   bool gait = false;
+  // The simulated detector puts each hip this far out from its joint centre (mm; the pelvis
+  // between them): unset, the BODY_25 table's offset, the one the reader allows for
+  // (docs/KEYPOINTS.md, "Detector hips"). The truth stays the joint centres.
+  std::optional<double> detectorHipOffsetMm;
+  bool allowForDetectorOffsets = true;  // false: the reader takes the hips for centres
 };
 
 // Another engine's result on a clip: NaN MPJPE and the reason when it gave none.

@@ -549,6 +549,8 @@ EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
     camera.threads = options.threads;
     camera.skeleton = options.cameraSkeleton;
     camera.snippet = options.cameraSnippet;
+    camera.detectorHipOffsetMm = options.cameraDetectorHipOffsetMm;
+    camera.allowForDetectorOffsets = options.cameraAllowForDetectorOffsets;
     res.camera = cameraErrors(walkers, folds, camera);
   });
   return res;

@@ -65,6 +65,10 @@ struct EvaluationOptions {
   ModelOptions model;                   // N per fold (default 95 %, ≤ R − 2 in LOO)
   // Experiment "camera": the other engines scored beside the eigenwalker (camera_experiment.h).
   bool cameraSkeleton = true, cameraSnippet = true;
+  // Its simulated detector's hips and whether the reader allows for the layout's offsets
+  // (CameraExperimentOptions::detectorHipOffsetMm, allowForDetectorOffsets).
+  std::optional<double> cameraDetectorHipOffsetMm;
+  bool cameraAllowForDetectorOffsets = true;
   int threads = 1;
   ExperimentProgressFn progress;
 };

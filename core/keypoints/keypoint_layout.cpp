@@ -1,6 +1,7 @@
 #include "core/keypoints/keypoint_layout.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -59,7 +60,30 @@ std::vector<int> alternative(const json& a, const std::vector<std::string>& poin
   return out;
 }
 
+void parseDetectorOffsets(const json& doc, const std::string& file, KeypointLayout& l) {
+  if (!doc.contains("detector_offsets_mm")) return;
+  const json& offsets = doc["detector_offsets_mm"];
+  if (!offsets.is_object()) bad(file, "detector_offsets_mm", "must be an object joint -> [x, y, z] mm");
+  for (const auto& [name, v] : offsets.items()) {
+    const std::string key = "detector_offsets_mm." + name;
+    const int j = jointIndex(name, file, key);
+    if (!v.is_array() || v.size() != 3) bad(file, key, "must be three numbers [x, y, z] in mm");
+    for (std::size_t c = 0; c < 3; ++c) {
+      if (!v[c].is_number() || !std::isfinite(v[c].get<double>()) || std::abs(v[c].get<double>()) > kMaxDetectorOffsetMm)
+        bad(file, key, "each coordinate must be a finite number within ±" + std::to_string(static_cast<int>(kMaxDetectorOffsetMm)) + " mm");
+      l.detectorOffsetMm[static_cast<std::size_t>(j)][c] = v[c].get<double>();
+    }
+  }
+  l.detectorOffsetSource = doc.value("detector_offsets_source", "");
+}
+
 }  // namespace
+
+bool anyOffset(const JointOffsetsMm& offsets) {
+  for (const auto& o : offsets)
+    if (o[0] != 0.0 || o[1] != 0.0 || o[2] != 0.0) return true;
+  return false;
+}
 
 KeypointLayout parseKeypointLayout(std::string_view text, const std::string& file) {
   json doc;
@@ -95,6 +119,7 @@ KeypointLayout parseKeypointLayout(std::string_view text, const std::string& fil
       l.derived[static_cast<std::size_t>(j)] = why.get<std::string>();
     }
   }
+  parseDetectorOffsets(doc, file, l);
   return l;
 }
 

@@ -18,6 +18,10 @@
 
 namespace ew {
 
+// Per joint, a displacement in the walker's canonical frame (SPEC §2), mm.
+using JointOffsetsMm = std::array<std::array<double, 3>, kJointCount>;
+bool anyOffset(const JointOffsetsMm& offsets);
+
 struct KeypointLayout {
   std::string name;                 // "BODY_25B"
   std::string about;                // what writes it, where it is defined
@@ -26,7 +30,15 @@ struct KeypointLayout {
   // Per joint: alternatives, each a list of point indices whose mean is the joint.
   std::array<std::vector<std::vector<int>>, kJointCount> joints;
   std::array<std::string, kJointCount> derived;  // non-empty: how the joint is derived
+  // Where the detector puts a joint relative to motion capture's joint centre, in the walker's
+  // canonical frame (SPEC §2: x right, y forward, z up), mm; zero where the two agree. Only
+  // the hips have one in the shipped tables (docs/KEYPOINTS.md, "Detector hips").
+  JointOffsetsMm detectorOffsetMm{};
+  std::string detectorOffsetSource;  // where the offsets come from, for the user
 };
+
+// The largest detector offset a table may state, mm per coordinate.
+inline constexpr double kMaxDetectorOffsetMm = 200.0;
 
 // Parses one layout table; Error(Malformed) naming `file` and the key on any problem
 // (unknown joint, a point not among "points", a repeated point name, an empty list).

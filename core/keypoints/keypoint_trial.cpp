@@ -369,6 +369,7 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
   const PersonTrack& walker = t.people[static_cast<std::size_t>(t.chosen)];
   t.layout = &chooseLayout(frames, walker, options, t.layoutSource, t.warnings, t.builtLayout);
   t.jointsPx = personJoints(*t.layout, frames, walker, options.minConfidence);
+  if (options.detectorOffsets) t.detectorOffsetMm = t.layout->detectorOffsetMm;
   for (auto& person : t.people) person.jointsPx = presentJoints(*t.layout, frames, person, options.minConfidence);
   checkSeenJoints(t, options);
   return t;

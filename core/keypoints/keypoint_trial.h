@@ -27,6 +27,9 @@ struct KeypointOptions {
   // Which named points make each joint, for files that name their own (DeepLabCut).
   std::optional<std::filesystem::path> mappingFile;
   std::optional<KeypointImageSize> imageSize;  // a MediaPipe CSV's image (--image-size)
+  // Take the layout's detector offsets into account (KeypointLayout::detectorOffsetMm);
+  // false (--no-detector-offsets): the detector's points are taken for joint centres.
+  bool detectorOffsets = true;
 };
 
 inline constexpr double kDefaultKeypointFps = 30.0;
@@ -56,6 +59,9 @@ struct KeypointTrial {
   std::string chosenReason;
   Eigen::MatrixXd jointsPx;           // frames x 30: u, v per joint (SPEC §1 order), NaN = missing
   std::array<bool, kJointCount> derived{};  // built from other points (head from the ears, …)
+  // Where the points sit relative to joint centres: the layout's detector offsets, or zero
+  // (options.detectorOffsets false, or the tracker's own joints). Used by the camera fit.
+  JointOffsetsMm detectorOffsetMm{};
   std::array<bool, kJointCount> missing{};  // never seen: for the model to estimate
   std::array<double, kJointCount> seenShare{};  // share of the clip's frames the joint has
   std::vector<std::string> warnings;
