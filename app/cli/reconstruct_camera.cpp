@@ -8,6 +8,7 @@
 
 #include "core/camera/calibration_file.h"
 #include "core/camera/clip_reconstruction.h"
+#include "core/camera/lens_distortion.h"
 #include "core/common/errors.h"
 #include "core/engine/model_file.h"
 #include "core/io/joint_csv.h"
@@ -86,27 +87,39 @@ void printSummary(const json& r) {
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
 }
 
-}  // namespace
+// The calibration file's camera (--camera), if any.
+std::optional<CalibratedCamera> calibrationOf(const CameraArgs& a) {
+  if (a.camera.empty()) return std::nullopt;
+  if (a.focalPx) throw Error(ErrorKind::BadArgument, "--camera", "", "give --focal-px or --camera, not both");
+  return readCalibratedCamera(a.camera, a.cameraName.empty() ? std::nullopt : std::optional<std::string>(a.cameraName));
+}
 
 // The focal length the user knows: --focal-px, or a calibration file's camera (which also
-// gives a MediaPipe CSV's image size). Says what it took, and warns about lens distortion,
-// which the camera model leaves out.
-std::optional<double> knownFocal(const CameraArgs& a, KeypointOptions& k, std::string& source) {
-  if (a.camera.empty()) {
+// gives a MediaPipe CSV's image size). Says what it took.
+std::optional<double> knownFocal(const CameraArgs& a, const std::optional<CalibratedCamera>& c, KeypointOptions& k,
+                                 std::string& source) {
+  if (!c) {
     source = a.focalPx ? "given (--focal-px)" : "estimated";
     return a.focalPx;
   }
-  if (a.focalPx) throw Error(ErrorKind::BadArgument, "--camera", "", "give --focal-px or --camera, not both");
-  const CalibratedCamera c =
-      readCalibratedCamera(a.camera, a.cameraName.empty() ? std::nullopt : std::optional<std::string>(a.cameraName));
-  source = "calibration file (" + c.name + ")";
-  if (!k.imageSize && c.widthPx > 0) k.imageSize = KeypointImageSize{static_cast<int>(c.widthPx), static_cast<int>(c.heightPx)};
-  if (std::abs(c.distortions[0]) > 0.05 || std::abs(c.distortions[1]) > 0.05)
-    std::cerr << "warning: " << a.camera << " [" << c.table << "]: lens distortion (k1 " << c.distortions[0] << ", k2 "
-              << c.distortions[1] << ") is not modelled (docs/CAMERA.md)\n";
-  std::cerr << "camera " << c.name << " of " << a.camera << ": focal " << c.focalPx() << " px\n";
-  return c.focalPx();
+  source = "calibration file (" + c->name + ")";
+  if (!k.imageSize && c->widthPx > 0) k.imageSize = KeypointImageSize{static_cast<int>(c->widthPx), static_cast<int>(c->heightPx)};
+  std::cerr << "camera " << c->name << " of " << a.camera << ": focal " << c->focalPx() << " px\n";
+  return c->focalPx();
 }
+
+// A calibrated camera's lens distortion taken out of the keypoints (core/camera/lens_distortion.h).
+json undistorted(const CameraArgs& a, const std::optional<CalibratedCamera>& c, KeypointTrial& t) {
+  if (!c || !hasDistortion(*c)) return nullptr;
+  const int lost = undistortTrial(*c, t);
+  std::cerr << "keypoints undistorted with " << a.camera << " [" << c->table << "] (k1 " << c->distortions[0] << ", k2 "
+            << c->distortions[1] << ", p1 " << c->distortions[2] << ", p2 " << c->distortions[3] << ")";
+  if (lost > 0) std::cerr << "; " << lost << " points outside the calibrated field dropped";
+  std::cerr << "\n";
+  return {{"k1_k2_p1_p2", c->distortions}, {"points_dropped", lost}};
+}
+
+}  // namespace
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   KeypointOptions k;
@@ -118,11 +131,15 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   CameraFitOptions o;
   o.estimator = {a.method == "map" ? Estimator::Map : Estimator::Lsq, a.sigma2Mm2.value_or(defaultSigma2Mm2(model))};
   std::string focalSource;
-  o.focalPx = knownFocal(a, k, focalSource);
+  const std::optional<CalibratedCamera> calibration = calibrationOf(a);
+  o.focalPx = knownFocal(a, calibration, k, focalSource);
   o.estimateFocal = !a.orthographic;
   o.alphaDeg = a.alphaDeg;
   o.elevationDeg = a.elevationDeg;
-  const ClipReconstruction clip = reconstructKeypointClip(model, a.input, k, o);
+  o.file = a.input;
+  KeypointTrial keypoints = readKeypointTrial(a.input, k);
+  const json lens = undistorted(a, calibration, keypoints);
+  const ClipReconstruction clip = reconstructKeypointTrial(model, std::move(keypoints), o);
   const KeypointTrial& t = clip.trial;
   const CameraFit& fit = clip.fit;
   const Eigen::MatrixXd& frames = clip.framesMm;
@@ -132,6 +149,7 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   writeJointTrajectories(a.out, frames, t.rateHz, {what.str()});
   json report = reportJson(a, t, fit);
   if (report["focal_source"].is_string()) report["focal_source"] = focalSource;
+  report["lens_undistorted"] = lens;
   printSummary(report);
   if (a.json) std::cout << report.dump(2) << "\n";
   return 0;

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "core/camera/lens_distortion.h"
 #include "core/common/errors.h"
 #include "core/common/statistics.h"
 #include "core/gait/gaps.h"
@@ -55,27 +56,6 @@ Eigen::Matrix3d rotationFromRodrigues(const std::array<double, 3>& rotation) {
 
 PinholeIntrinsics intrinsicsOf(const CalibratedCamera& c) { return {c.fxPx, c.fyPx, c.cxPx, c.cyPx}; }
 
-Eigen::RowVectorXd undistortPixels(const Eigen::Ref<const Eigen::RowVectorXd>& uvPx, const CalibratedCamera& c) {
-  const auto [k1, k2, p1, p2] = c.distortions;
-  Eigen::RowVectorXd out = uvPx;
-  for (Eigen::Index j = 0; j + 1 < uvPx.size(); j += 2) {
-    const double xd = (uvPx(j) - c.cxPx) / c.fxPx, yd = (uvPx(j + 1) - c.cyPx) / c.fyPx;
-    if (!std::isfinite(xd) || !std::isfinite(yd)) continue;
-    double x = xd, y = yd;
-    // Fixed point of x = (x_d − tangential(x, y)) / radial(x, y): converges for the small
-    // distortions of calibrated lenses (|k r²| ≪ 1) in a few steps.
-    for (int it = 0; it < 20; ++it) {
-      const double r2 = x * x + y * y;
-      const double radial = 1.0 + k1 * r2 + k2 * r2 * r2;
-      x = (xd - (2.0 * p1 * x * y + p2 * (r2 + 2.0 * x * x))) / radial;
-      y = (yd - (p1 * (r2 + 2.0 * y * y) + 2.0 * p2 * x * y)) / radial;
-    }
-    out(j) = c.fxPx * x + c.cxPx;
-    out(j + 1) = c.fyPx * y + c.cyPx;
-  }
-  return out;
-}
-
 std::vector<double> rootDistancesFromBones(const std::vector<JointRays>& rays, const BoneLengths& bones,
                                            int windowFrames) {
   std::vector<double> bound;
@@ -101,6 +81,7 @@ SkeletonCameraResult reconstructThroughCamera(const Eigen::Ref<const Eigen::Matr
   if (!(rateHz > 0.0 && std::isfinite(rateHz))) throw Error(ErrorKind::BadArgument, name, "", "the rate must be positive");
   SkeletonCameraResult result;
   Eigen::MatrixXd px = jointsPx;
+  undistortPixels(camera, px);  // a point outside the calibrated field becomes a gap
   for (int j = 0; j < kJointCount; ++j) {
     const auto unseen = static_cast<int>(px.col(2 * j).array().isNaN().count());
     if (unseen == px.rows())
@@ -110,7 +91,7 @@ SkeletonCameraResult reconstructThroughCamera(const Eigen::Ref<const Eigen::Matr
     fillAllGapsLinearly(px.col(2 * j + 1));
   }
   std::vector<JointRays> rays;
-  for (Eigen::Index t = 0; t < px.rows(); ++t) rays.push_back(pinholeRays(undistortPixels(px.row(t), camera), intrinsicsOf(camera)));
+  for (Eigen::Index t = 0; t < px.rows(); ++t) rays.push_back(pinholeRays(px.row(t), intrinsicsOf(camera)));
   const int window = std::max(1, static_cast<int>(std::lround(options.depthWindowS * rateHz)) | 1);
   result.rootDistanceMm = rootDistancesFromBones(rays, bones, window);
   std::vector<Eigen::Vector3d> roots;

@@ -25,10 +25,6 @@ Eigen::Matrix3d rotationFromRodrigues(const std::array<double, 3>& rotation);
 
 PinholeIntrinsics intrinsicsOf(const CalibratedCamera& camera);
 
-// One frame's pixel coordinates (u, v per joint; NaN kept) with the radial and tangential
-// distortion (OpenCV's k1, k2, p1, p2) taken out, by fixed-point iteration.
-Eigen::RowVectorXd undistortPixels(const Eigen::Ref<const Eigen::RowVectorXd>& uvPx, const CalibratedCamera& camera);
-
 // The tightest bone bound on the pelvis's distance along its ray, per frame (mm); then a
 // running median over `windowFrames` (odd; 1 = none).
 std::vector<double> rootDistancesFromBones(const std::vector<JointRays>& rays, const BoneLengths& bones,
