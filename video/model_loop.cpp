@@ -2,6 +2,7 @@
 
 #include "core/camera/clip_reconstruction.h"
 #include "core/common/errors.h"
+#include "core/keypoints/image_gait.h"
 #include "core/keypoints/keypoint_trial.h"
 
 namespace ew {
@@ -22,9 +23,14 @@ ModelLoopResult trackWithModel(VideoSource& video, const Keyframes& keyframes, c
     k.fps = result.track.fps;
     ClipReconstruction fit;
     try {
-      fit = reconstructKeypointTrial(
-          model, trialFromJoints(result.track.jointsPx, result.track.confidence, video.info().file, "tracked video", k),
-          {});
+      KeypointTrial trial =
+          trialFromJoints(result.track.jointsPx, result.track.confidence, video.info().file, "tracked video", k);
+      // The tracker keeps the trunk where it loses the crossing feet: their strikes can read
+      // as twice the steps, the trunk's bob does not.
+      CameraFitOptions fitOptions;
+      fitOptions.strideHzHint = trunkBobStrideHz(trial);
+      fitOptions.holdStrideHz = fitOptions.strideHzHint.has_value();
+      fit = reconstructKeypointTrial(model, std::move(trial), fitOptions);
     } catch (const Error& e) {
       result.stoppedBecause = e.what();
       break;

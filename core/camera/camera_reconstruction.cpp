@@ -9,6 +9,7 @@
 #include "core/common/errors.h"
 #include "core/common/statistics.h"
 #include "core/engine/fourier.h"
+#include "core/gait/gait_cycles.h"
 #include "core/engine/joint_completion.h"
 #include "core/engine/projection.h"
 #include "core/gait/gaps.h"
@@ -40,9 +41,8 @@ constexpr double kMaxRmsOfHeight = 0.10;
 // Above this share of the walker's height, the fit looks for a better basin from a grid of
 // azimuths (good fits: 1-3 %; 7 % for a 140 px walker at 5 px noise).
 constexpr double kRetryRmsOfHeight = 0.08;
-// Stride frequencies a walk can have (Hz): a fit outside strides backwards in time or runs
-// its legs through the image faster than anyone walks, a wrong basin however well it fits.
-constexpr double kMinStrideHz = 0.3, kMaxStrideHz = 2.5;
+// A fit striding outside kMinStrideHz–kMaxStrideHz (SPEC §3's ω range) runs backwards in
+// time or its legs faster than anyone walks: a wrong basin however well it fits.
 // Candidates finished on every frame before the fit gives up on a start list.
 constexpr int kFinishedCandidates = 3;
 // Detector glitches (a swapped limb, a jump to another person; withoutOutliers) are rejected
@@ -68,6 +68,7 @@ struct Layout {
   bool pinhole = false;
   bool focalFree = false;  // pinhole whose focal length is estimated
   bool alphaFixed = false, elevationFixed = false;  // held at their start values
+  bool omegaFixed = false;                          // held at the stride hint
   int alpha() const { return n; }
   int elevation() const { return n + 1; }
   int logScale() const { return n + 2; }
@@ -80,7 +81,9 @@ struct Layout {
   int offset() const { return n + 9; }
   int logFocal() const { return n + 10; }
   int size() const { return n + (pinhole ? (focalFree ? 11 : 10) : 8); }
-  bool fixed(Eigen::Index i) const { return (alphaFixed && i == alpha()) || (elevationFixed && i == elevation()); }
+  bool fixed(Eigen::Index i) const {
+    return (alphaFixed && i == alpha()) || (elevationFixed && i == elevation()) || (omegaFixed && i == omega());
+  }
 };
 
 struct Problem {
@@ -555,7 +558,7 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
   const OrthoStart start = orthographicStart(model, jointsPx, times, unseen, o);
   const bool pinhole = o.focalPx.has_value() || o.estimateFocal;
   const Layout layout{static_cast<int>(model.eigenvalues.size()), pinhole, pinhole && !o.focalPx,
-                      o.alphaDeg.has_value(), o.elevationDeg.has_value()};
+                      o.alphaDeg.has_value(), o.elevationDeg.has_value(), o.holdStrideHz && o.strideHzHint.has_value()};
   const Problem p = makeProblem(model, layout, o.focalPx.value_or(0.0), jointsPx, times, 1.0 / start.pxPerMm,
                                 o.estimator, 1);
   // Screening sees every few frames (the walk is smooth; ~8 frames a stride are plenty).

@@ -25,6 +25,9 @@ struct CameraFitOptions {
   std::optional<double> alphaDeg;       // azimuth, SPEC §5
   std::optional<double> elevationDeg;   // camera looking down by this much
   std::optional<double> strideHzHint;   // from the image's foot strikes (image_gait.h)
+  // Hold the stride frequency at the hint instead of refining it: a hint more trustworthy than
+  // the image's limbs (the model loop's trunk bob, when the tracker has lost the feet).
+  bool holdStrideHz = false;
   int startCount = 4;                   // view-angle minima tried as starts
   int maxIterations = 300;
   std::string file;                     // named in errors

@@ -42,7 +42,7 @@ ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, Keypo
   ClipReconstruction c;
   c.trial = std::move(trial);
   c.gait = imageGaitCycles(c.trial);
-  fitOptions.strideHzHint = c.gait.strideHz;
+  if (!fitOptions.strideHzHint) fitOptions.strideHzHint = c.gait.strideHz;
   if (fitOptions.file.empty()) fitOptions.file = c.trial.file;
   c.fit = reconstructDetectedWalker(model, c.trial, fitOptions);
   c.timesS = frameTimes(c.trial.frameCount, c.trial.rateHz);

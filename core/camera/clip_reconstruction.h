@@ -25,7 +25,8 @@ struct ClipReconstruction {
   std::array<double, kJointCount> residualRmsPx{};
 };
 
-// The camera fit's options (file, stride hint) are completed here; `fitOptions.file` names
+// The camera fit's options are completed here: the stride hint from the image's foot strikes
+// unless the caller gives one (the model loop's trunk bob); `fitOptions.file` names
 // the input in errors when left empty. Throws what the reader, the gait finder and the fit
 // throw (typed errors naming the file).
 ClipReconstruction reconstructKeypointClip(const EigenwalkerModel& model, const std::filesystem::path& input,

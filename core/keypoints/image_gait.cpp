@@ -1,7 +1,13 @@
 #include "core/keypoints/image_gait.h"
 
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
+#include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <optional>
+#include <vector>
 #include <sstream>
 
 #include "core/common/errors.h"
@@ -90,6 +96,70 @@ ImageGait imageGaitCycles(const KeypointTrial& t) {
     throw Error(ErrorKind::BadData, t.file, "",
                 "shorter than one gait cycle (" + fixed1(g.cycles) + " cycles): at least one full cycle is needed");
   return g;
+}
+
+namespace {
+
+constexpr double kBobSeenShare = 0.6;
+constexpr std::size_t kBobMinJoints = 2;
+// Walking cadence, 60-190 steps a minute: below, the trunk's slow drifts (a walker nearing
+// the camera sinks in the image) would pass for a bob.
+constexpr double kBobMinStrideHz = 0.5, kBobMaxStrideHz = 1.6;
+constexpr double kBobStepHz = 0.005;
+
+// A joint's vertical path (v, px) where it is seen, detrended by a straight line in time.
+struct BobSamples {
+  Eigen::VectorXd t, v;
+};
+
+std::optional<BobSamples> bobSamples(const Eigen::MatrixXd& px, Joint joint, double rateHz) {
+  const Eigen::Index col = 2 * index(joint) + 1;
+  std::vector<double> ts, vs;
+  for (Eigen::Index f = 0; f < px.rows(); ++f)
+    if (std::isfinite(px(f, col))) ts.push_back(static_cast<double>(f) / rateHz), vs.push_back(px(f, col));
+  if (static_cast<double>(ts.size()) < kBobSeenShare * static_cast<double>(px.rows()) || ts.size() < 8) return std::nullopt;
+  BobSamples b{Eigen::Map<Eigen::VectorXd>(ts.data(), static_cast<Eigen::Index>(ts.size())),
+               Eigen::Map<Eigen::VectorXd>(vs.data(), static_cast<Eigen::Index>(vs.size()))};
+  Eigen::MatrixXd line(b.t.size(), 2);
+  line.col(0).setOnes();
+  line.col(1) = b.t;
+  b.v -= line * line.colPivHouseholderQr().solve(b.v);
+  return b;
+}
+
+// The variance a sinusoid of frequency f explains in the samples (least squares).
+double explained(const BobSamples& b, double f) {
+  Eigen::MatrixXd basis(b.t.size(), 2);
+  basis.col(0) = (2 * std::numbers::pi * f * b.t).array().sin();
+  basis.col(1) = (2 * std::numbers::pi * f * b.t).array().cos();
+  const Eigen::Matrix2d gram = basis.transpose() * basis;
+  const Eigen::Vector2d rhs = basis.transpose() * b.v;
+  if (std::abs(gram.determinant()) < 1e-12) return 0.0;
+  return rhs.dot(gram.ldlt().solve(rhs));
+}
+
+}  // namespace
+
+std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minShare) {
+  std::vector<BobSamples> paths;
+  double variance = 0.0;
+  for (Joint j : {Joint::Head, Joint::Sternum, Joint::Pelvis, Joint::RHip, Joint::LHip, Joint::RShoulder,
+                  Joint::LShoulder}) {
+    const auto b = bobSamples(trial.jointsPx, j, trial.rateHz);
+    if (!b) continue;
+    variance += b->v.squaredNorm();
+    paths.push_back(*b);
+  }
+  if (paths.size() < kBobMinJoints || !(variance > 0.0)) return std::nullopt;
+  double bestHz = 0.0, bestShare = 0.0;
+  for (double f = 2 * kBobMinStrideHz; f <= 2 * kBobMaxStrideHz; f += kBobStepHz) {
+    double sum = 0.0;
+    for (const BobSamples& b : paths) sum += explained(b, f);
+    if (sum > bestShare * variance) bestShare = sum / variance, bestHz = f;
+  }
+  const double durationS = static_cast<double>(trial.frameCount) / trial.rateHz;
+  if (bestShare < minShare || durationS * bestHz < 2.0) return std::nullopt;
+  return 0.5 * bestHz;
 }
 
 }  // namespace ew

@@ -6,6 +6,7 @@
 // strikes give the stride frequency.
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,5 +31,15 @@ struct ImageGait {
 // cross the image, an ankle does not swing, or the strikes give no stride frequency in
 // kMinStrideHz-kMaxStrideHz, and "shorter than one gait cycle" below one cycle.
 ImageGait imageGaitCycles(const KeypointTrial& trial);
+
+// The stride frequency from the trunk's bob: head, sternum, pelvis, hips and shoulders rise
+// and fall twice a stride (once a step), in any view. The vertical image paths of those seen
+// in at least 60 % of the frames, each detrended, are fitted with a sinusoid over step
+// frequencies 1.0 … 3.2 Hz (strides of 0.5 … 1.6 Hz, 0.005 Hz apart); the frequency whose fit
+// takes the largest share of their summed variance, halved. Unset when fewer than two such
+// joints, the clip is shorter than two steps at that frequency, or the best fit takes less
+// than `minShare` of the variance (no clear bob). For a joint tracker's output, whose trunk holds where the feet are lost
+// (docs/TRACKING.md, "The model loop").
+std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minShare = 0.3);
 
 }  // namespace ew

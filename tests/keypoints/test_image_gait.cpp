@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <random>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -75,6 +76,29 @@ TEST(ImageGait, StrideFrequencyOfAWalkerCrossingTheImage) {
     EXPECT_GE(g.rightStrikesS.size(), 3u);
     EXPECT_GE(g.leftStrikesS.size(), 3u);
   }
+}
+
+// The trunk bobs once a step: its frequency halved is the stride's, from behind, at 45° and
+// in profile (within 2 %: the bob is not a pure sinusoid over a few cycles); with both
+// ankles lost the feet can no longer say it, the trunk still does. A still person has no bob.
+TEST(ImageGait, TrunkBobGivesTheStrideFrequency) {
+  for (const double alpha : {0.0, 45.0, 90.0}) {
+    SCOPED_TRACE(alpha);
+    const Clip clip = meanWalkerClip("bob_" + std::to_string(static_cast<int>(alpha)), alpha, 1300, 4.0);
+    KeypointTrial t = readKeypointTrial(clip.folder, at30Fps());
+    const auto bob = trunkBobStrideHz(t);
+    ASSERT_TRUE(bob.has_value());
+    EXPECT_NEAR(*bob, clip.strideHz, 0.02 * clip.strideHz);
+    for (Joint j : {Joint::RAnkle, Joint::LAnkle}) t.jointsPx.middleCols(2 * index(j), 2).setConstant(std::nan(""));
+    EXPECT_NEAR(trunkBobStrideHz(t).value_or(0.0), clip.strideHz, 0.02 * clip.strideHz);
+  }
+  const Clip still = meanWalkerClip("bob_still", 90.0, 0.0, 3.0);
+  KeypointTrial t = readKeypointTrial(still.folder, at30Fps());
+  t.jointsPx = t.jointsPx.row(0).replicate(t.jointsPx.rows(), 1);
+  std::mt19937 rng(7);
+  std::normal_distribution<double> noise(0.0, 1.5);  // a detector's jitter on someone standing
+  for (Eigen::Index i = 0; i < t.jointsPx.size(); ++i) t.jointsPx.data()[i] += noise(rng);
+  EXPECT_FALSE(trunkBobStrideHz(t).has_value());
 }
 
 TEST(ImageGait, WalkingOnTheSpotIsNotWalking) {
