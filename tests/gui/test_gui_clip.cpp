@@ -17,6 +17,7 @@
 
 #include "tests/camera/filmed_walk.h"
 #include "tests/gui/gui_run.h"
+#include "tests/gui/layout_checks.h"
 
 namespace ew::test::gui {
 namespace {
@@ -135,6 +136,22 @@ TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
       << standing["clip"].dump(1);
   EXPECT_EQ(standing["clip"]["fit"]["person"], fit["person"]);
   EXPECT_FALSE(standing["clip"]["fit"]["current"].get<bool>());
+}
+
+// Issue 18's layout in clip mode (issue 13): at the teaching sizes every drawer tab holds and
+// the 2D view's caption and legend stay off the walker.
+TEST_F(GuiClip, ClipModeHoldsAtTheTeachingSizes) {
+  const fs::path clip = writeClip(dir);
+  for (const LayoutCell& c : teachingCells()) {
+    const std::string cell = std::string(c.size) + " scale " + c.scale + " " + c.theme;
+    json script = json::array({{{"set_theme", c.theme}}, {{"open", clip.string()}}, {{"set_frame", 10}}});
+    for (const json& step : everyTabStates(dir, "clip")) script.push_back(step);
+    const RunResult r = runViewer(dir, std::string("--size ") + c.size + " --ui-scale " + c.scale + " --script " +
+                                           quote(writeScript(dir, script.dump()).string()));
+    ASSERT_EQ(r.exitCode, 0) << cell << "\n" << r.err;
+    for (const auto& tab : drawerTabs())
+      expectLayoutHolds(state("clip_" + tab + ".json"), cell + ", clip, " + tab, {"input"});
+  }
 }
 
 // A keypoint file that cannot be read is a failed open naming the file, and what was shown

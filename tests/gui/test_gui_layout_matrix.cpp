@@ -14,54 +14,17 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/gui/gui_run.h"
+#include "tests/gui/layout_checks.h"
 
 namespace ew::test::gui {
 namespace {
 
 using GuiLayoutMatrix = GuiTest;
 
-struct Cell {
-  const char* size;
-  const char* scale;
-  const char* theme;
-};
-
-// [x, y, w, h] rectangles.
-bool overlap(const nlohmann::json& a, const nlohmann::json& b) {
-  const double ax = a[0], ay = a[1], aw = a[2], ah = a[3], bx = b[0], by = b[1], bw = b[2], bh = b[3];
-  return ax < bx + bw && bx < ax + aw && ay < by + bh && by < ay + ah;
-}
-
-// What one exported state shows: nothing cut, nothing over a walker.
-void expectHolds(const nlohmann::json& state, const std::string& where) {
-  const auto& layout = state.at("layout");
-  for (const auto& [window, px] : layout.at("overflow").items())
-    ADD_FAILURE() << where << ": " << window << " is cut by " << px.get<double>() << " px";
-  const auto& o = layout.at("overlays");
-  for (const char* view : {"input", "reconstruction"}) {
-    const std::string v(view);
-    // Both views draw a walker in every state here: its rectangle must be there to check against.
-    if (!o.contains(v + ".walker")) {
-      ADD_FAILURE() << where << ": no " << v << ".walker reported";
-      continue;
-    }
-    for (const char* what : {"caption", "legend", "colour_bar"}) {
-      const std::string key = v + "." + what;
-      if (o.contains(key)) {
-        EXPECT_FALSE(overlap(o.at(key), o.at(v + ".walker"))) << where << ": the " << key << " covers the walker";
-      }
-    }
-  }
-}
-
 TEST_F(GuiLayoutMatrix, NothingIsCutAndNothingCoversTheWalker) {
   // (The tests' X screen is 1920×1080: the 3840×2160 cells are in the contact sheets.)
-  const std::vector<Cell> cells = {{"1024x768", "2", "projector"},
-                                   {"1280x720", "2", "dark"},
-                                   {"1366x768", "1", "light"},
-                                   {"1920x1080", "1.5", "projector"}};
-  const std::vector<std::string> tabs = {"subjects", "controls", "coefficients", "errors", "view", "log"};
-  for (const Cell& c : cells) {
+  const std::vector<std::string>& tabs = drawerTabs();
+  for (const LayoutCell& c : teachingCells()) {
     const std::string cell = std::string(c.size) + " scale " + c.scale + " " + c.theme;
     std::string script = R"([{"set_theme": ")" + std::string(c.theme) +
                          R"("}, {"select_subject": "SYN005"}, {"set_angle": 45}, {"play": false}, {"set_phase": 0.3})";
@@ -80,7 +43,7 @@ TEST_F(GuiLayoutMatrix, NothingIsCutAndNothingCoversTheWalker) {
     const RunResult r = runViewer(dir, std::string("--size ") + c.size + " --ui-scale " + c.scale + " --script " +
                                            quote(writeScript(dir, script).string()));
     ASSERT_EQ(r.exitCode, 0) << cell << "\n" << r.err;
-    for (const auto& s : states) expectHolds(nlohmann::json::parse(readAll(dir / (s + ".json"))), cell + ", " + s);
+    for (const auto& s : states) expectLayoutHolds(nlohmann::json::parse(readAll(dir / (s + ".json"))), cell + ", " + s);
   }
 }
 

@@ -18,6 +18,7 @@
 #include "core/synth/population.h"
 #include "core/tracking/keyframes.h"
 #include "tests/gui/gui_run.h"
+#include "tests/gui/layout_checks.h"
 #include "video/synthetic_footage.h"
 
 namespace ew::test::gui {
@@ -205,6 +206,27 @@ TEST_F(GuiVideo, TheExportedVideoHasTheFootageUnderTheTrackAndCaptions) {
     return rr > 200 && g > 200 && b > 200;
   });
   EXPECT_GT(title, 150) << "the caption \"2D input (video)\"";
+}
+
+// Issue 18's layout in video mode (issue 14): at the teaching sizes, with a track and its fit,
+// every drawer tab holds (nothing cut), and the 2D view's caption and legend stay off the
+// walker: the footage is framed between them, or they give way (the subtitle to a tooltip,
+// the legend to its tab).
+TEST_F(GuiVideo, VideoModeHoldsAtTheTeachingSizes) {
+  const Footage f = writeWalkingFootage(dir);
+  for (const LayoutCell& c : teachingCells()) {
+    const std::string cell = std::string(c.size) + " scale " + c.scale + " " + c.theme;
+    json script = json::array({{{"set_theme", c.theme}},
+                               {{"open", json::array({f.video.string(), f.keyframes.string()})}},
+                               {{"track_video", {{"first", 0}, {"last", -1}}}},
+                               {{"video_frame", 45}}});
+    for (const json& step : everyTabStates(dir, "video")) script.push_back(step);
+    const RunResult r = runViewer(dir, std::string("--size ") + c.size + " --ui-scale " + c.scale + " --script " +
+                                           quote(writeScript(dir, script.dump()).string()));
+    ASSERT_EQ(r.exitCode, 0) << cell << "\n" << r.err;
+    for (const auto& tab : drawerTabs())
+      expectLayoutHolds(state("video_" + tab + ".json"), cell + ", video, " + tab, {"input"});
+  }
 }
 
 }  // namespace

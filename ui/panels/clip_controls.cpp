@@ -10,6 +10,7 @@
 #include "core/keypoints/keypoint_layout.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/widgets/flow.h"
 #include "ui/widgets/section_title.h"
 
 namespace ew::ui {
@@ -99,14 +100,16 @@ void drawClipControls(AppState& s) {
 
 static void drawClipSource(AppState& s, const ClipSettings& c, const ClipResult* r) {
   sectionTitle("Keypoint clip");
-  ImGui::TextUnformatted(c.path.filename().string().c_str());
+  ImGui::TextWrapped("%s", c.path.filename().string().c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.path.string().c_str());
   if (r) {
     const auto& t = r->rec.trial;
-    ImGui::TextDisabled("%s · %d frames · %d %s", t.format.c_str(), t.frameCount, t.maxPeople,
-                        t.maxPeople == 1 ? "person" : "people at most");
+    char summary[160];
+    std::snprintf(summary, sizeof summary, "%s · %d frames · %d %s", t.format.c_str(), t.frameCount, t.maxPeople,
+                  t.maxPeople == 1 ? "person" : "people at most");
+    textDisabledWrapped(summary);
   }
-  ImGui::TextDisabled("layout");
+  textDisabledWrapped("layout");
   layoutCombo(s, c, r);
   float fps = static_cast<float>(c.fps);
   ImGui::SetNextItemWidth(-1.0f);
@@ -121,14 +124,14 @@ static void drawCameraHolds(AppState& s, const ClipSettings& c, const ClipResult
   sectionTitle("Camera (tick to hold a value)");
   const WalkCamera* cam = r ? &r->rec.fit.camera : nullptr;
   if (!cam || cam->model == CameraModel::Pinhole) {
-    ImGui::TextDisabled("focal length (type, Enter)");
+    textDisabledWrapped("focal length (type, Enter)");
     heldValue(s, "focal", "the focal length", c.focalPx, cam ? cam->focalPx : 1500.0, 50.0f, 100000.0f, "%.0f px", true,
               [&](std::optional<double> v) { actions::setClipFocal(s, v); });
   }
-  ImGui::TextDisabled("elevation (looking down)");
+  textDisabledWrapped("elevation (looking down)");
   heldValue(s, "elevation", "the elevation", c.elevationDeg, cam ? cam->elevationDeg : 10.0, -10.0f, 60.0f, "%.1f°",
             false, [&](std::optional<double> v) { actions::setClipElevation(s, v); });
-  ImGui::TextDisabled("azimuth α");
+  textDisabledWrapped("azimuth α");
   heldValue(s, "azimuth", "the azimuth", c.alphaDeg, cam ? cam->alphaDeg : 0.0, -180.0f, 180.0f, "%.1f°", false,
             [&](std::optional<double> v) { actions::setClipAzimuth(s, v); });
 

@@ -126,15 +126,9 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
 void ControlsPanel::drawViewControls(AppState& s, const FrameContext& /*ctx*/) {
   {
     sectionTitle("3D camera");
-    const float bw =
-        (ImGui::GetContentRegionAvail().x - 3.0f * ImGui::GetStyle().ItemSpacing.x) / 4.0f;
-    if (ImGui::Button("3/4", ImVec2(bw, 0))) actions::setCamera(s, "three_quarter");
-    ImGui::SameLine();
-    if (ImGui::Button("Front", ImVec2(bw, 0))) actions::setCamera(s, "front");
-    ImGui::SameLine();
-    if (ImGui::Button("Side", ImVec2(bw, 0))) actions::setCamera(s, "side");
-    ImGui::SameLine();
-    if (ImGui::Button("Top", ImVec2(bw, 0))) actions::setCamera(s, "top");
+    constexpr const char* kPresets[] = {"three_quarter", "front", "side", "top"};
+    const int preset = buttonRow({{"3/4", true}, {"Front", true}, {"Side", true}, {"Top", true}});
+    if (preset >= 0) actions::setCamera(s, kPresets[preset]);
     textDisabledWrapped("drag: orbit · right-drag: pan · wheel: zoom · double-click: reset");
 
     sectionTitle("Overlays");

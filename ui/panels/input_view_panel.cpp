@@ -147,6 +147,26 @@ float roundPixels(float px) {
 }
 
 // The clip's view: its input in image pixels, the reprojection, the residuals named.
+// The clip's walker on the screen at `shown`: its keypoints and its reprojection.
+ImRect clipWalkerRect(const ClipResult& clip, int shown, ImVec2 p0, ImVec2 size, const ClipImageFrame& frame) {
+  const float screenPerPx = size.y / frame.heightPx;
+  ImRect box = kNothing;
+  bool any = false;
+  for (const Eigen::MatrixXd* px : {&clip.rec.trial.jointsPx, &clip.rec.reprojectedPx}) {
+    if (shown < 0 || shown >= px->rows()) continue;
+    for (int j = 0; j < kJointCount; ++j) {
+      const double u = (*px)(shown, 2 * j), v = (*px)(shown, 2 * j + 1);
+      if (!std::isfinite(u) || !std::isfinite(v)) continue;
+      const ImVec2 p(p0.x + 0.5f * size.x + (static_cast<float>(u) - frame.centre.x) * screenPerPx,
+                     p0.y + 0.5f * size.y + (static_cast<float>(v) + frame.centre.y) * screenPerPx);
+      if (!any) box = ImRect(p, p);
+      box.Add(p);
+      any = true;
+    }
+  }
+  return box;
+}
+
 // "track N" above each person the clip has besides the one fitted, as the picker names them.
 void drawOtherPeopleLabels(ImDrawList* dl, const KeypointTrial& trial, int shown, ImVec2 p0, ImVec2 size,
                            const ClipImageFrame& frame) {
@@ -168,16 +188,26 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
   const ImVec2 p1{p0.x + size.x, p0.y + size.y};
   const float pad = 10.0f * ctx.scale;
   const ViewCaption caption = clipInputCaption(s, shown);
-  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle, s.fonts.large, ctx.scale,
-              ImVec2(size.x - 2.0f * pad, size.y));
+  const ImRect walker = clipWalkerRect(*s.clip, shown, p0, size, frame);
+  const ImRect captionRect = drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle,
+                                         s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), walker);
   const float screenPerPx = size.y / frame.heightPx;
   const float bar = roundPixels(0.18f * size.x / screenPerPx);
   char label[32];
   std::snprintf(label, sizeof label, "%.0f px", static_cast<double>(bar));
   const float len = bar * screenPerPx;
-  drawScaleBar(dl, ImVec2(p1.x - pad - len - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale), len, label, ctx.scale);
-  drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), caption.legend, ctx.scale, size.x);
+  const ImRect legendRect = drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), caption.legend, ctx.scale, size.x, walker);
+  // The scale bar at the bottom right, when the legend and the walker leave it room.
+  const ImVec2 barLeft(p1.x - pad - len - 4.0f * ctx.scale, p1.y - pad - 4.0f * ctx.scale);
+  const ImRect barRect(ImVec2(barLeft.x, barLeft.y - ImGui::GetTextLineHeight() - 6.0f * ctx.scale),
+                       ImVec2(barLeft.x + len, barLeft.y + 5.0f * ctx.scale));
+  if (!overlaps(barRect, legendRect) && !overlaps(barRect, walker)) drawScaleBar(dl, barLeft, len, label, ctx.scale);
   drawOtherPeopleLabels(dl, s.clip->rec.trial, shown, p0, size, frame);
+  if (walker.GetWidth() > 0.0f) {
+    s.lastFrame.overlay("input.walker", toPanelRect(walker));
+    s.lastFrame.overlay("input.caption", toPanelRect(captionRect));
+    s.lastFrame.overlay("input.legend", toPanelRect(legendRect));
+  }
 }
 
 }  // namespace

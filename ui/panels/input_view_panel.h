@@ -5,6 +5,7 @@
 
 #include "ui/gl/gl.h"
 #include "ui/panels/panel_window.h"
+#include "ui/panels/video_view.h"
 #include "ui/render/camera.h"
 #include "ui/render/scene.h"
 
@@ -37,6 +38,7 @@ struct InputViewPanel {
   void handleVideoMouse(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size, int frame);
 
   int dragJoint_ = -1;  // the keyframe joint being dragged (-1: none)
+  VideoViewFrame videoFrame_;  // the video view's framing, as drawn (clicks map through it)
 };
 
 }  // namespace ew::ui

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -64,6 +66,52 @@ int nearestJoint(const VideoSession& v, int frame, glm::vec2 px, float reach) {
   return nearest;
 }
 
+// The footage framed clear of the whole caption and the whole legend when that keeps it at
+// 0.8 of its size at least; else of the caption's title alone and the legend; else of the
+// title and the legend's folded tab (the view's other framings choose so too).
+VideoViewFrame videoFraming(const ViewCaption& caption, const VideoInfo& info, ImVec2 size, float scale,
+                            ImFont* titleFont) {
+  const float pad = 10.0f * scale, aspect = size.x / size.y;
+  const auto framed = [&](ImVec2 top, ImVec2 bottom) {
+    return videoViewFrame(info.widthPx, info.heightPx, aspect, (1.5f * pad + top.y) / size.y,
+                          (1.5f * pad + bottom.y) / size.y);
+  };
+  const float largest = framed({0.0f, 0.0f}, {0.0f, 0.0f}).heightPx;  // smaller heightPx: larger footage
+  const ImVec2 full = drawCaption(nullptr, ImVec2(0.0f, 0.0f), caption.title, caption.subtitle, titleFont, scale,
+                                  ImVec2(size.x - 2.0f * pad, size.y))
+                          .GetSize();
+  const ImVec2 title = smallCaptionPlate(caption.title, scale, size.x - 2.0f * pad);
+  const ImVec2 legend = legendSize(caption.legend, scale, size.x);
+  for (const auto& [top, bottom] : {std::pair{full, legend}, std::pair{title, legend}}) {
+    const VideoViewFrame f = framed(top, bottom);
+    if (f.heightPx <= largest / 0.8f) return f;
+  }
+  return framed(title, legendTabSize(scale));
+}
+
+// Video pixels [low, high] (x right, y down) on the screen.
+ImRect screenRect(const VideoViewFrame& view, float aspect, ImVec2 p0, ImVec2 size, glm::vec2 low, glm::vec2 high) {
+  const glm::vec2 a = view.toViewShare(low, aspect), b = view.toViewShare(high, aspect);
+  return ImRect(ImVec2(p0.x + a.x * size.x, p0.y + a.y * size.y), ImVec2(p0.x + b.x * size.x, p0.y + b.y * size.y));
+}
+
+// Where the walker shown on `frame` is, in video pixels: its marks, else its tracked joints.
+std::optional<std::pair<glm::vec2, glm::vec2>> walkerExtentPx(const VideoSession& v, int frame) {
+  Eigen::RowVectorXd points;
+  if (const Keyframe* k = v.keyframeAt(frame)) {
+    points = k->jointsPx;
+  } else if (v.tracked && frame >= v.tracked->track.firstFrame && frame <= v.tracked->lastFrame()) {
+    points = v.tracked->track.jointsPx.row(frame - v.tracked->track.firstFrame);
+  }
+  std::optional<std::pair<glm::vec2, glm::vec2>> box;
+  for (Eigen::Index j = 0; j + 1 < points.size(); j += 2) {
+    const glm::vec2 p(static_cast<float>(points(j)), static_cast<float>(points(j + 1)));
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+    box = box ? std::pair{glm::min(box->first, p), glm::max(box->second, p)} : std::pair{p, p};
+  }
+  return box;
+}
+
 }  // namespace
 
 void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
@@ -75,7 +123,9 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
   }
   const float aspect = size.x / size.y;
   const VideoInfo& info = v.frames->info();
-  const VideoViewFrame view = videoViewFrame(info.widthPx, info.heightPx, aspect);
+  const ViewCaption caption = videoInputCaption(s, frame, v.shownIndex != frame, true);
+  videoFrame_ = videoFraming(caption, info, size, ctx.scale, s.fonts.large);
+  const VideoViewFrame& view = videoFrame_;
   handleVideoMouse(s, ctx, p0, size, frame);
   buildVideoInputScene(s, scene, ctx.scale, view.heightPx / size.y, frame, v.shown.get());
   ctx.renderer.render(target, scene, imageCamera(aspect, view.centre, view.heightPx));
@@ -83,9 +133,12 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float pad = 10.0f * ctx.scale;
-  const ViewCaption caption = videoInputCaption(s, frame, v.shownIndex != frame, true);
-  drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle, s.fonts.large, ctx.scale,
-              ImVec2(size.x - 2.0f * pad, size.y));
+  // The caption and the legend keep clear of the footage: they lose the subtitle, or fold,
+  // when the view has no room for them above and below it.
+  const ImRect footage = screenRect(view, aspect, p0, size, {0.0f, 0.0f},
+                                    {static_cast<float>(info.widthPx), static_cast<float>(info.heightPx)});
+  const ImRect captionRect = drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle,
+                                         s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), footage);
   if (v.marking) {
     const auto& order = markingOrder();
     const std::string prompt =
@@ -95,7 +148,13 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
             : "All joints marked on this frame: drag one to correct it, or Done";
     drawPrompt(dl, s.fonts.large, p0, size, prompt, ctx.scale);
   }
-  drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), caption.legend, ctx.scale, size.x);
+  const ImRect legendRect =
+      drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), caption.legend, ctx.scale, size.x, footage);
+  if (const auto walker = walkerExtentPx(v, frame)) {
+    s.lastFrame.overlay("input.walker", toPanelRect(screenRect(view, aspect, p0, size, walker->first, walker->second)));
+    s.lastFrame.overlay("input.caption", toPanelRect(captionRect));
+    s.lastFrame.overlay("input.legend", toPanelRect(legendRect));
+  }
 }
 
 void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size,
@@ -103,7 +162,7 @@ void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVe
   VideoSession& v = *s.video;
   const VideoInfo& info = v.frames->info();
   const float aspect = size.x / size.y;
-  const VideoViewFrame view = videoViewFrame(info.widthPx, info.heightPx, aspect);
+  const VideoViewFrame& view = videoFrame_;
   ImGui::SetCursorScreenPos(p0);
   ImGui::InvisibleButton("##video", size);
   const ImVec2 m = ImGui::GetIO().MousePos;

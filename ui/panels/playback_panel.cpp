@@ -36,10 +36,12 @@ void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       const int shown = clipFrameAt(c, p.cycles);
       int frame = shown + 1;  // counted from 1, as the 2D view's caption says
       char format[64];
-      std::snprintf(format, sizeof format, "frame %%d / %d (%.2f s)", c.rec.trial.frameCount, shown / c.rec.trial.rateHz);
+      std::snprintf(format, sizeof format, narrow ? "%%d / %d" : "frame %%d / %d (%.2f s)", c.rec.trial.frameCount,
+                    shown / c.rec.trial.rateHz);
       if (ImGui::SliderInt("##frame", &frame, 1, c.rec.trial.frameCount, format, ImGuiSliderFlags_AlwaysClamp)) {
         actions::setClipFrame(s, frame);
       }
+      if (narrow && ImGui::IsItemHovered()) ImGui::SetTooltip("frame (%.2f s)", shown / c.rec.trial.rateHz);
     } else {
       float phase = static_cast<float>(p.phase());
       if (ImGui::SliderFloat("##phase", &phase, 0.0f, 1.0f, narrow ? "phase %.2f" : "gait phase %.3f",

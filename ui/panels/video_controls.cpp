@@ -24,22 +24,6 @@ void apply(AppState& s, F&& f) {
   }
 }
 
-// A row of equal buttons filling the width; returns the index clicked (-1: none).
-int buttonRow(std::initializer_list<std::pair<const char*, bool>> buttons) {
-  const float spacing = ImGui::GetStyle().ItemSpacing.x;
-  const float n = static_cast<float>(buttons.size());
-  const float w = (ImGui::GetContentRegionAvail().x - (n - 1.0f) * spacing) / n;
-  int clicked = -1, i = 0;
-  for (const auto& [label, enabled] : buttons) {
-    if (i > 0) ImGui::SameLine();
-    ImGui::BeginDisabled(!enabled);
-    if (ImGui::Button(label, ImVec2(w, 0.0f))) clicked = i;
-    ImGui::EndDisabled();
-    ++i;
-  }
-  return clicked;
-}
-
 void scrubber(AppState& s, const VideoSession& v) {
   int frame = actions::shownVideoFrame(s);
   ImGui::SetNextItemWidth(-1.0f);
@@ -71,10 +55,12 @@ void marking(AppState& s, const VideoSession& v) {
   const int shown = actions::shownVideoFrame(s);
   const Keyframe* k = v.keyframeAt(shown);
   const int marked = k ? static_cast<int>(k->jointsPx.array().isFinite().count() / 2) : 0;
-  ImGui::TextDisabled("%zu keyframe%s · this frame: %d of 15 joints", v.keyframes.keyframes.size(),
-                      v.keyframes.keyframes.size() == 1 ? "" : "s", marked);
+  char status[96];
+  std::snprintf(status, sizeof status, "%zu keyframe%s · this frame: %d of 15 joints", v.keyframes.keyframes.size(),
+                v.keyframes.keyframes.size() == 1 ? "" : "s", marked);
+  textDisabledWrapped(status);
   if (!v.marking) {
-    if (buttonRow({{"Mark joints on this frame", true}}) == 0)
+    if (buttonRow({{"Mark this frame", true}}) == 0)
       apply(s, [&] { actions::startMarking(s); });
   } else {
     switch (buttonRow({{"Skip joint", v.markStep < kJointCount}, {"Done", true}})) {
@@ -174,10 +160,12 @@ void drawVideoControls(AppState& s, float scale) {
   if (!s.video) return;
   const VideoSession& v = *s.video;
   sectionTitle("Video");
-  ImGui::TextUnformatted(v.path.filename().string().c_str());
+  ImGui::TextWrapped("%s", v.path.filename().string().c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.path.string().c_str());
   const VideoInfo& i = v.frames->info();
-  ImGui::TextDisabled("%d×%d · %.4g fps · %d frames", i.widthPx, i.heightPx, i.fps, v.frameCount());
+  char info[128];
+  std::snprintf(info, sizeof info, "%d×%d · %.4g fps · %d frames", i.widthPx, i.heightPx, i.fps, v.frameCount());
+  textDisabledWrapped(info);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("codec %s", i.codec.empty() ? "unknown" : i.codec.c_str());
   scrubber(s, v);

@@ -72,12 +72,13 @@ glm::vec2 VideoViewFrame::toViewShare(glm::vec2 px, float aspect) const {
   return {(px.x - (centre.x - w)) / (2.0f * w), ((centre.y + h) + px.y) / (2.0f * h)};
 }
 
-VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect) {
+VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect, float topShare, float bottomShare) {
   VideoViewFrame f;
   const float w = static_cast<float>(widthPx), h = static_cast<float>(heightPx);
-  // Room above for the caption and below for the legend.
-  f.heightPx = std::max({h * 1.22f, w * 1.02f / std::max(aspect, 0.1f), 16.0f});
-  f.centre = {0.5f * w, -0.5f * h + 0.02f * f.heightPx};
+  const float band = std::max(1.0f - topShare - bottomShare, 0.2f);
+  f.heightPx = std::max({h / band, w * 1.02f / std::max(aspect, 0.1f), 16.0f});
+  // The band's middle (scene y, up) on the video's middle.
+  f.centre = {0.5f * w, -0.5f * h + 0.5f * (topShare - bottomShare) * f.heightPx};
   return f;
 }
 

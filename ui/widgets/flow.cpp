@@ -1,5 +1,7 @@
 #include "ui/widgets/flow.h"
 
+#include <algorithm>
+
 #include <imgui.h>
 
 #include <string>
@@ -67,6 +69,26 @@ void textDisabledWrapped(const char* text) {
   ImGui::TextUnformatted(text);
   ImGui::PopTextWrapPos();
   ImGui::PopStyleColor();
+}
+
+int buttonRow(std::initializer_list<std::pair<const char*, bool>> buttons) {
+  const float spacing = ImGui::GetStyle().ItemSpacing.x, avail = ImGui::GetContentRegionAvail().x;
+  float widest = 0.0f;
+  for (const auto& b : buttons) widest = std::max(widest, buttonWidth(b.first));
+  const int count = static_cast<int>(buttons.size());
+  const int perRow = std::clamp(static_cast<int>((avail + spacing) / (widest + spacing)), 1, count);
+  const int rows = (count + perRow - 1) / perRow;
+  const int across = (count + rows - 1) / rows;  // rows as even as they can be
+  const float w = (avail - static_cast<float>(across - 1) * spacing) / static_cast<float>(across);
+  int clicked = -1, i = 0;
+  for (const auto& [label, enabled] : buttons) {
+    if (i % across != 0) ImGui::SameLine();
+    ImGui::BeginDisabled(!enabled);
+    if (ImGui::Button(label, ImVec2(w, 0.0f))) clicked = i;
+    ImGui::EndDisabled();
+    ++i;
+  }
+  return clicked;
 }
 
 }  // namespace ew::ui

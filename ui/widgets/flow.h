@@ -3,6 +3,9 @@
 // scale cuts no label at the panel's edge). Toggles go on the same line while they fit and
 // wrap onto the next otherwise; a label too long for the panel wraps between words.
 
+#include <initializer_list>
+#include <utility>
+
 namespace ew::ui {
 
 // The width of a radio button or checkbox with its label, and of a button.
@@ -19,5 +22,8 @@ bool radioWrapped(const char* label, bool active);
 bool radioRow(const char* const* labels, int count, int* value);
 // Greyed text that wraps between words at the panel's edge.
 void textDisabledWrapped(const char* text);
+// Equal buttons (label, enabled) filling the width, on as many rows as their labels need;
+// returns the index clicked (-1: none).
+int buttonRow(std::initializer_list<std::pair<const char*, bool>> buttons);
 
 }  // namespace ew::ui
