@@ -14,6 +14,7 @@
 #include "core/common/skeleton.h"
 #include "video/appearance_tracker.h"
 #include "video/segment_search.h"
+#include "video/static_background.h"
 
 namespace ew {
 namespace {
@@ -115,9 +116,14 @@ class FrameSupply {
     // one is kept. Backward, a piece is decoded at once and then handed out downwards.
     frames_.clear();
     const int from = f < newestRead_ ? std::max(lowest, f - static_cast<int>(capacity_) + 1) : f;
-    for (int k = from; k <= f; ++k) frames_[k] = colour_ ? video_.frame(k) : toGrey(video_.frame(k));
+    for (int k = from; k <= f; ++k) frames_[k] = prepared(video_.frame(k));
     newestRead_ = f;
     return frames_.at(f);
+  }
+
+  void flatten(StaticBackground background) {
+    frames_.clear();
+    background_ = std::move(background);
   }
 
  private:
@@ -126,6 +132,12 @@ class FrameSupply {
   bool colour_;
   std::map<int, cv::Mat> frames_;
   int newestRead_ = -1;
+  std::optional<StaticBackground> background_;
+
+  cv::Mat prepared(const cv::Mat& bgr) const {
+    if (colour_) return bgr;
+    return background_ ? withoutBackground(toGrey(bgr), *background_) : toGrey(bgr);
+  }
 };
 
 std::vector<cv::Mat> pyramidOf(const cv::Mat& grey, const Geometry& g, int levels) {
@@ -398,6 +410,11 @@ class RangeTracker {
                   "no keyframe within the tracked frames " + std::to_string(range_.first) + "-" +
                       std::to_string(range_.last));
     g_ = geometryFor(personHeightPx(keys, video.info().heightPx), o);
+    if (o.kind == TrackerKind::OpticalFlow && o.flattenStaticBackground) {
+      BackgroundCheck check = estimateStaticBackground(video, range_.first, range_.last, keys_.front());
+      background_ = check.background ? "flattened" : check.why;
+      if (check.background) supply_.flatten(std::move(*check.background));
+    }
     const PassOutput empty{Eigen::MatrixXd::Constant(range_.rows(), kDims2, kNaN),
                            Eigen::MatrixXd::Zero(range_.rows(), kJointCount)};
     forward_ = backward_ = empty;
@@ -458,6 +475,7 @@ class RangeTracker {
     JointTrack t;
     t.firstFrame = range_.first;
     t.fps = video_.info().fps;
+    t.background = background_;
     t.jointsPx = Eigen::MatrixXd::Constant(range_.rows(), kDims2, kNaN);
     t.confidence = Eigen::MatrixXd::Zero(range_.rows(), kJointCount);
     const double agreePx = 0.03 * g_.personPx;
@@ -492,6 +510,7 @@ class RangeTracker {
   std::vector<Keyframe> keys_;
   Geometry g_;
   PassOutput forward_, backward_;
+  std::string background_ = "off";
   double stepsDone_ = 0.0, totalSteps_ = 1.0;
 };
 

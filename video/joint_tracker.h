@@ -44,6 +44,9 @@ struct TrackerOptions {
   // placed there at a low confidence. The flow tracker only.
   Eigen::MatrixXd priorPx;
   double priorGateShare = 0.05;
+  // Flatten a fixed camera's still background before the flow (video/static_background.h),
+  // when the footage shows one. The flow tracker only.
+  bool flattenStaticBackground = false;
   // Grey frames held at once for the backward passes; a longer stretch between keyframes
   // is decoded again in pieces of this size.
   std::size_t frameBufferBytes = std::size_t{512} << 20;
@@ -59,6 +62,8 @@ struct JointTrack {
   double fps = 0.0;
   Eigen::MatrixXd jointsPx;    // frames × 30: x, y per joint (SPEC §1), NaN = never marked
   Eigen::MatrixXd confidence;  // frames × 15, 0-1 (1 on a keyframe)
+  // "flattened", "off", or why the footage has no still background to flatten.
+  std::string background = "off";
 };
 
 // Called with the share done (0-1); returning false cancels (Error(BadArgument) "cancelled").

@@ -42,7 +42,7 @@ struct TrackArgs {
   int first = 0, last = -1;
   int overlayEvery = 0;  // 0: no overlay pictures
   int modelLoop = 0;     // rounds of the model loop (video/model_loop.h)
-  bool json = false, keyframeFramesGiven = false;
+  bool json = false, keyframeFramesGiven = false, flattenBackground = false;
 };
 
 // The keyframes of `all` at `frames`; Error(BadArgument) naming the file for one it lacks.
@@ -175,6 +175,7 @@ int runTrack(const TrackArgs& a) {
   o.kind = trackerFromName(a.tracker);
   o.firstFrame = a.first;
   o.lastFrame = a.last;
+  o.flattenStaticBackground = a.flattenBackground;
   const auto start = std::chrono::steady_clock::now();
   if (a.modelLoop > 0 && o.kind != TrackerKind::OpticalFlow)
     throw Error(ErrorKind::BadArgument, "--model-loop", "", "the model loop guides the flow tracker only");
@@ -194,6 +195,7 @@ int runTrack(const TrackArgs& a) {
             << " frames/s)\n";
   json report = {{"video", info.file},
                  {"tracker", trackerName(o.kind)},
+                 {"background", track.background},
                  {"width_px", info.widthPx},
                  {"height_px", info.heightPx},
                  {"fps", info.fps},
@@ -262,6 +264,9 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--overlay-every", args->overlayEvery,
                   "draw the track over every N-th frame into OUT/overlay/ (PNG)")
       ->check(CLI::PositiveNumber);
+  cmd->add_flag("--flatten-background", args->flattenBackground,
+                "flatten a fixed camera's still background before the flow, when the footage has one "
+                "(docs/TRACKING.md, \"The still background\")");
   cmd->add_flag("--json", args->json, "print the report as JSON too");
   cmd->callback([args, &exitCode, keys, from, keyframeFrames] {
     args->keyframeFramesGiven = keyframeFrames->count() > 0;

@@ -181,6 +181,27 @@ TEST_F(GuiVideo, TracksWithTheAppearanceTrackerWhenChosen) {
   EXPECT_GT(video["track"]["mean_confidence"].get<double>(), 0.5);
 }
 
+// The flow tracker flattens the still background when asked (the script's
+// "flatten_background", the Track section's checkbox) and the track says it did; a wrong value
+// fails the script.
+TEST_F(GuiVideo, FlattensTheStillBackgroundWhenAsked) {
+  const Footage f = writeWalkingFootage(dir);
+  const json script = json::array({
+      {{"open", json::array({f.video.string(), f.keyframes.string()})}},
+      {{"track_video", {{"first", 0}, {"last", 59}, {"flatten_background", true}}}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("flattened.json")}},
+      {{"expect_failure", {{"track_video", {{"first", 0}, {"last", 59}, {"flatten_background", "yes"}}}}}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json video = state("flattened.json")["video"];
+  ASSERT_TRUE(video["track"].is_object()) << video;
+  EXPECT_EQ(video["flatten_background"], true);
+  EXPECT_EQ(video["track"]["background"], "flattened");
+}
+
 // Issue 14: the exported video of a tracked clip has the footage under the track and the
 // walker drawn back, with the captions (the video's name and frame) burnt in.
 TEST_F(GuiVideo, TheExportedVideoHasTheFootageUnderTheTrackAndCaptions) {

@@ -62,6 +62,17 @@ TEST_F(TrackCli, EachTrackerWritesTheTrackAndMeasuresItAgainstTheOtherKeyframes)
   }
 }
 
+TEST_F(TrackCli, FlattensTheStillBackgroundWhenAskedAndSaysSo) {
+  for (const bool flatten : {false, true}) {
+    const test::ShellRun r = runCli(std::string("track --video walk.avi --keyframes keys.json --keyframe-frames 0 "
+                                                "--out flat --json") + (flatten ? " --flatten-background" : ""),
+                                    root_);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const json report = json::parse(r.out.substr(r.out.find('{')));
+    EXPECT_EQ(report["background"], flatten ? "flattened" : "off");
+  }
+}
+
 TEST_F(TrackCli, RefusesAnUnknownTrackerAndAKeyframeFrameTheFileLacks) {
   const test::ShellRun unknown =
       runCli("track --video walk.avi --keyframes keys.json --tracker sift --out bad", root_);

@@ -193,6 +193,9 @@ void redoKeyframes(AppState& s);
 void setTrackRange(AppState& s, int first, int last);
 // Which tracker the next track uses (optical flow, or Zou et al.'s appearance tracker).
 void setTracker(AppState& s, TrackerKind tracker);
+// Whether the next optical-flow track flattens a fixed camera's still background first
+// (video/static_background.h).
+void setFlattenBackground(AppState& s, bool flatten);
 // Tracks the range from the keyframes on a worker; when done the track is fitted as a clip.
 void startTracking(AppState& s);
 void cancelTracking(AppState& s);

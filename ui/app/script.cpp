@@ -397,7 +397,8 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   if (n == "expect_failure") {
     applyExpectingFailure(s, a);
   } else if (n == "track_video") {
-    // {"first": F, "last": L[, "tracker": "flow" | "appearance"]} (L -1: the end): tracked
+    // {"first": F, "last": L[, "tracker": "flow" | "appearance"][, "flatten_background": B]}
+    // (L -1: the end): tracked
     // and fitted in the background; a track or fit that fails fails the script like a failed
     // open.
     const auto& arg = a.argument;
@@ -408,6 +409,10 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
     if (arg.contains("tracker")) {
       if (!arg["tracker"].is_string()) throw std::invalid_argument(R"("tracker" is "flow" or "appearance")");
       actions::setTracker(s, trackerFromName(arg["tracker"].get<std::string>()));
+    }
+    if (arg.contains("flatten_background")) {
+      if (!arg["flatten_background"].is_boolean()) throw std::invalid_argument(R"("flatten_background" is true or false)");
+      actions::setFlattenBackground(s, arg["flatten_background"].get<bool>());
     }
     failuresBefore_ = s.jobs.failures;
     checkLoad_ = true;

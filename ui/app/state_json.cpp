@@ -178,10 +178,12 @@ nlohmann::json videoJson(const AppState& s) {
                       {"redo_steps", v.redo.size()},
                       {"cache_bytes", v.frames->bytesHeld()},
                       {"track_error", v.trackError},
-                      {"tracker", trackerName(v.tracker)}};
+                      {"tracker", trackerName(v.tracker)},
+                      {"flatten_background", v.flattenBackground}};
   if (v.tracked) {
     const auto& t = *v.tracked;
     j["track"] = {{"tracker", trackerName(t.tracker)},
+                  {"background", t.track.background},
                   {"first_frame", t.track.firstFrame},
                   {"last_frame", t.lastFrame()},
                   {"seconds", t.seconds},

@@ -21,17 +21,20 @@ const Keyframe* VideoSession::keyframeAt(int f) const {
 }
 
 TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes, int first,
-                        int last, TrackerKind tracker, const std::function<bool(double)>& progress) {
+                        int last, TrackerKind tracker, bool flattenBackground,
+                        const std::function<bool(double)>& progress) {
   const auto start = std::chrono::steady_clock::now();
   VideoSource source(video);
   TrackerOptions o;
   o.kind = tracker;
   o.firstFrame = first;
   o.lastFrame = last;
+  o.flattenStaticBackground = flattenBackground;
   TrackedVideo t;
   t.video = video;
   t.keyframes = keyframes;
   t.tracker = tracker;
+  t.flattenBackground = flattenBackground;
   t.track = trackJoints(source, keyframes, o, progress);
   KeypointOptions k;
   k.fps = t.track.fps;

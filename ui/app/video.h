@@ -24,6 +24,7 @@ struct TrackedVideo {
   std::filesystem::path video;
   Keyframes keyframes;  // as they were when tracking started
   TrackerKind tracker = TrackerKind::OpticalFlow;
+  bool flattenBackground = false;  // asked for; track.background says whether it was done
   JointTrack track;
   std::shared_ptr<const KeypointTrial> trial;  // the track's confident points (trialFromJoints)
   double seconds = 0.0;
@@ -45,6 +46,7 @@ struct VideoSession {
   int markStep = 0;                    // index into markingOrder(): the joint asked for next
   int firstFrame = 0, lastFrame = -1;  // the range to track (-1: the video's end)
   TrackerKind tracker = TrackerKind::OpticalFlow;  // which tracker the next track uses
+  bool flattenBackground = false;  // the next flow track flattens a still background
   std::shared_ptr<const TrackedVideo> tracked;  // the last finished track
   std::string trackError;                       // why the last track failed ("" when none)
   // The frame last drawn and its number: shown while the frame asked for is decoding.
@@ -60,7 +62,8 @@ struct VideoSession {
 // Reads and tracks (blocking; the viewer runs it as a background job). `progress` gets the
 // share done and returns false to cancel. Throws the tracker's and trialFromJoints' errors.
 TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes, int first,
-                        int last, TrackerKind tracker, const std::function<bool(double)>& progress);
+                        int last, TrackerKind tracker, bool flattenBackground,
+                        const std::function<bool(double)>& progress);
 
 // True for the file names a video has (.mp4, .avi, .mov, .mkv, .webm, .m4v, .mpg, .mpeg).
 bool isVideoFile(const std::filesystem::path& path);

@@ -200,6 +200,8 @@ void setTrackRange(AppState& s, int first, int last) {
 
 void setTracker(AppState& s, TrackerKind tracker) { session(s).tracker = tracker; }
 
+void setFlattenBackground(AppState& s, bool flatten) { session(s).flattenBackground = flatten; }
+
 void startTracking(AppState& s) {
   VideoSession& v = session(s);
   if (s.jobs.track.running()) throw std::invalid_argument("a track is running");
@@ -216,7 +218,8 @@ void startTracking(AppState& s) {
   const std::string title = "Tracking " + v.path.filename().string() + " (" + trackerName(v.tracker) + ")";
   s.log.info(title + ", frames " + std::to_string(v.firstFrame) + "-" + std::to_string(last));
   s.jobs.track.start(
-      title, [path = v.path, keys = v.keyframes, first = v.firstFrame, last, tracker = v.tracker](JobProgress& p) {
+      title, [path = v.path, keys = v.keyframes, first = v.firstFrame, last, tracker = v.tracker,
+              flatten = v.flattenBackground](JobProgress& p) {
         const auto progress = [&p, first, last](double done) {
           try {
             const int frames = last - first + 1;
@@ -227,7 +230,7 @@ void startTracking(AppState& s) {
             return false;
           }
         };
-        return std::make_shared<const TrackedVideo>(trackVideo(path, keys, first, last, tracker, progress));
+        return std::make_shared<const TrackedVideo>(trackVideo(path, keys, first, last, tracker, flatten, progress));
       });
 }
 

@@ -104,6 +104,25 @@ void trackerChoice(AppState& s, const VideoSession& v) {
                       "joints sought down the body's tree (slower, measured less accurate: docs/TRACKING.md).");
 }
 
+// The flow tracker can flatten a fixed camera's still background first: thin limbs over a
+// textured background then move the flow by their own texture (docs/TRACKING.md).
+void backgroundChoice(AppState& s, const VideoSession& v) {
+  ImGui::BeginDisabled(v.tracker != TrackerKind::OpticalFlow);
+  bool flatten = v.flattenBackground;
+  if (ImGui::Checkbox("Flatten background", &flatten))
+    apply(s, [&] { actions::setFlattenBackground(s, flatten); });
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("For a camera that does not move: each pixel's median over the clip is the\n"
+                      "background, set to one grey before the optical flow, so that only the person\n"
+                      "moves it. Skipped, with the reason, when the camera moves or the person\n"
+                      "stays in place. Optical flow only.");
+}
+
+std::string backgroundNote(const std::string& background) {
+  return background == "flattened" ? "background flattened" : "background kept: " + background;
+}
+
 void tracking(AppState& s, const VideoSession& v) {
   sectionTitle("Track");
   int range[2] = {v.firstFrame, v.lastFrame < 0 ? v.frameCount() - 1 : v.lastFrame};
@@ -112,10 +131,11 @@ void tracking(AppState& s, const VideoSession& v) {
     apply(s, [&] { actions::setTrackRange(s, range[0], range[1]); });
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("The first and last frame to track (Enter)");
   trackerChoice(s, v);
+  backgroundChoice(s, v);
   const bool stale =
       v.tracked &&
       (v.tracked->keyframes.keyframes.size() != v.keyframes.keyframes.size() ||
-       v.tracked->tracker != v.tracker ||
+       v.tracked->tracker != v.tracker || v.tracked->flattenBackground != v.flattenBackground ||
        v.tracked->track.firstFrame != v.firstFrame ||
        !std::equal(v.keyframes.keyframes.begin(), v.keyframes.keyframes.end(),
                    v.tracked->keyframes.keyframes.begin(), [](const auto& a, const auto& b) {
@@ -145,6 +165,7 @@ void tracking(AppState& s, const VideoSession& v) {
                   t.seconds, t.frames() / std::max(t.seconds, 1e-9));
     textDisabledWrapped(done);
     ImGui::TextDisabled("mean confidence %.2f", t.track.confidence.mean());
+    if (t.flattenBackground) textDisabledWrapped(backgroundNote(t.track.background).c_str());
   }
   if (!v.trackError.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.55f, 1.0f));
