@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <map>
+#include <string>
 #include <tuple>
 
 #include "core/synth/population.h"
@@ -71,9 +72,12 @@ BENCHMARK(BM_Decode)->Arg(720)->Arg(1080)->Unit(benchmark::kMillisecond);
 
 void BM_DecodeAndTrack(benchmark::State& state) {
   const Footage& f = footageOf(static_cast<int>(state.range(0)));
+  // range(1): 0 the flow tracker, 1 the appearance tracker, 2 the flow over a flattened
+  // background (--flatten-background: the range decoded once more to find it).
   ew::TrackerOptions o;
-  o.kind = state.range(1) == 0 ? ew::TrackerKind::OpticalFlow : ew::TrackerKind::Appearance;
-  state.SetLabel(ew::trackerName(o.kind));
+  o.kind = state.range(1) == 1 ? ew::TrackerKind::Appearance : ew::TrackerKind::OpticalFlow;
+  o.flattenStaticBackground = state.range(1) == 2;
+  state.SetLabel(std::string(ew::trackerName(o.kind)) + (o.flattenStaticBackground ? ", flattened" : ""));
   const ew::Keyframes keys = ew::keyframesFromTrack(f.truthPx, {0}, f.file.string());
   for (auto _ : state) {
     ew::VideoSource video(f.file);
@@ -86,6 +90,8 @@ BENCHMARK(BM_DecodeAndTrack)
     ->Args({1080, 0})
     ->Args({720, 1})
     ->Args({1080, 1})
+    ->Args({720, 2})
+    ->Args({1080, 2})
     ->Unit(benchmark::kMillisecond);
 
 // range(0): 0 keyframe on the first frame, 1 on the last.
