@@ -105,7 +105,11 @@ std::string percent(double share) { return std::to_string(static_cast<int>(std::
 }  // namespace
 
 BackgroundCheck estimateStaticBackground(VideoSource& video, int first, int last, const Keyframe& key,
-                                         int samples) {
+                                         std::size_t maxBytes, int samples) {
+  const std::size_t frameBytes =
+      std::max<std::size_t>(1, static_cast<std::size_t>(video.info().widthPx) * video.info().heightPx);
+  samples = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(samples), maxBytes / frameBytes));
+  if (samples < 3) return {std::nullopt, "the frames are too large to sample for a background in the frame buffer"};
   std::vector<cv::Mat> greys;
   for (int f : sampledFrames(first, last, samples)) greys.push_back(toGrey(video.frame(f)));
   if (greys.size() < 3) return {std::nullopt, "too few frames for a background"};

@@ -11,6 +11,7 @@
 // who stays in place becomes part of the median, and would be flattened away.
 
 #include <opencv2/core.hpp>
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -31,10 +32,11 @@ struct BackgroundCheck {
   std::string why;  // when there is none: the reason, for the track's report
 };
 
-// Samples up to `samples` frames evenly over [first, last] (grey) and checks the two
-// conditions above against `key` (the first keyframe's marks, on its own frame).
+// Samples up to `samples` frames evenly over [first, last] (grey; no more than fit in
+// `maxBytes`, the tracker's frame buffer) and checks the two conditions above against `key` (the
+// first keyframe's marks, on its own frame).
 BackgroundCheck estimateStaticBackground(VideoSource& video, int first, int last, const Keyframe& key,
-                                         int samples = 15);
+                                         std::size_t maxBytes = std::size_t{512} << 20, int samples = 15);
 
 // `grey` with every pixel near the background set to its fill grey (foreground kept as is,
 // its outline grown by a pixel so the person's edge stays whole).

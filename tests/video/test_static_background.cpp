@@ -1,6 +1,7 @@
 // The still background of a fixed camera (video/static_background.h): found and flattened on
 // footage of a walker crossing the picture; refused, with the reason, when the camera pans or
-// the walker stays in place (a treadmill: the person is part of every frame's median).
+// the walker stays in place (a treadmill: the person is part of every frame's median); never more
+// frames sampled than the tracker's frame buffer holds.
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
@@ -96,6 +97,19 @@ TEST(StaticBackground, APanningCameraHasNone) {
   const BackgroundCheck check = estimateStaticBackground(video, 0, 29, key);
   EXPECT_FALSE(check.background);
   EXPECT_NE(check.why.find("camera moves"), std::string::npos) << check.why;
+}
+
+TEST(StaticBackground, NoMoreFramesAreSampledThanFitTheFrameBuffer) {
+  const test::WalkingFootage& footage = test::walkingFootage();
+  VideoSource video(footage.file);
+  const std::size_t frameBytes = static_cast<std::size_t>(video.info().widthPx) * video.info().heightPx;
+  const BackgroundCheck check =
+      estimateStaticBackground(video, 0, video.info().frameCount - 1, keyOn(footage.truthPx, 0), 2 * frameBytes);
+  EXPECT_FALSE(check.background);
+  EXPECT_NE(check.why.find("too large"), std::string::npos) << check.why;
+  EXPECT_TRUE(estimateStaticBackground(video, 0, video.info().frameCount - 1, keyOn(footage.truthPx, 0),
+                                       3 * frameBytes)
+                  .background);
 }
 
 }  // namespace
