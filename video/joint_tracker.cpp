@@ -411,7 +411,8 @@ class RangeTracker {
                       std::to_string(range_.last));
     g_ = geometryFor(personHeightPx(keys, video.info().heightPx), o);
     if (o.kind == TrackerKind::OpticalFlow && o.flattenStaticBackground) {
-      BackgroundCheck check = estimateStaticBackground(video, range_.first, range_.last, keys_.front(), o.frameBufferBytes);
+      BackgroundCheck check = estimateStaticBackground(video, range_.first, range_.last,
+                                                       keys_.front(), o.frameBufferBytes);
       background_ = check.background ? "flattened" : check.why;
       if (check.background) supply_.flatten(std::move(*check.background));
     }

@@ -81,18 +81,21 @@ double skeletonStandingOut(const cv::Mat& keyGrey, const StaticBackground& b, co
   const cv::Mat mask = foregroundMask(keyGrey, b);
   const auto foregroundNear = [&](double x, double y) {
     const cv::Rect around(static_cast<int>(std::lround(x)) - radiusPx,
-                          static_cast<int>(std::lround(y)) - radiusPx, 2 * radiusPx + 1, 2 * radiusPx + 1);
+                          static_cast<int>(std::lround(y)) - radiusPx, 2 * radiusPx + 1,
+                          2 * radiusPx + 1);
     const cv::Rect inside = around & cv::Rect(0, 0, mask.cols, mask.rows);
     return inside.area() > 0 && cv::countNonZero(mask(inside)) > 0;
   };
   constexpr int kPointsPerBone = 8;
   int points = 0, out = 0;
   for (const auto& [from, to] : kBones) {
-    const Eigen::Vector2d a = key.jointsPx.segment<2>(2 * index(from)), c = key.jointsPx.segment<2>(2 * index(to));
+    const Eigen::Vector2d a = key.jointsPx.segment<2>(2 * index(from)),
+                          c = key.jointsPx.segment<2>(2 * index(to));
     if (!a.allFinite() || !c.allFinite()) continue;
     for (int k = 0; k <= kPointsPerBone; ++k) {
       const Eigen::Vector2d p = a + (c - a) * (static_cast<double>(k) / kPointsPerBone);
-      if (!(p.x() >= 0 && p.y() >= 0 && p.x() < mask.cols && p.y() < mask.rows)) continue;  // out of the picture
+      if (!(p.x() >= 0 && p.y() >= 0 && p.x() < mask.cols && p.y() < mask.rows))
+        continue;  // out of the picture
       ++points;
       if (foregroundNear(p.x(), p.y())) ++out;
     }
@@ -100,16 +103,21 @@ double skeletonStandingOut(const cv::Mat& keyGrey, const StaticBackground& b, co
   return points ? static_cast<double>(out) / points : 0.0;
 }
 
-std::string percent(double share) { return std::to_string(static_cast<int>(std::lround(100.0 * share))) + " %"; }
+std::string percent(double share) {
+  return std::to_string(static_cast<int>(std::lround(100.0 * share))) + " %";
+}
 
 }  // namespace
 
-BackgroundCheck estimateStaticBackground(VideoSource& video, int first, int last, const Keyframe& key,
-                                         std::size_t maxBytes, int samples) {
-  const std::size_t frameBytes =
-      std::max<std::size_t>(1, static_cast<std::size_t>(video.info().widthPx) * video.info().heightPx);
-  samples = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(samples), maxBytes / frameBytes));
-  if (samples < 3) return {std::nullopt, "the frames are too large to sample for a background in the frame buffer"};
+BackgroundCheck estimateStaticBackground(VideoSource& video, int first, int last,
+                                         const Keyframe& key, std::size_t maxBytes, int samples) {
+  const std::size_t frameBytes = std::max<std::size_t>(
+      1, static_cast<std::size_t>(video.info().widthPx) * video.info().heightPx);
+  samples = static_cast<int>(
+      std::min<std::size_t>(static_cast<std::size_t>(samples), maxBytes / frameBytes));
+  if (samples < 3)
+    return {std::nullopt,
+            "the frames are too large to sample for a background in the frame buffer"};
   std::vector<cv::Mat> greys;
   for (int f : sampledFrames(first, last, samples)) greys.push_back(toGrey(video.frame(f)));
   if (greys.size() < 3) return {std::nullopt, "too few frames for a background"};
@@ -122,18 +130,22 @@ BackgroundCheck estimateStaticBackground(VideoSource& video, int first, int last
     cv::absdiff(g, b.grey, difference);
     noise.push_back(1.4826 * medianValue(difference));
   }
-  std::nth_element(noise.begin(), noise.begin() + static_cast<std::ptrdiff_t>(noise.size() / 2), noise.end());
+  std::nth_element(noise.begin(), noise.begin() + static_cast<std::ptrdiff_t>(noise.size() / 2),
+                   noise.end());
   const double sigma = noise[noise.size() / 2];
   if (sigma > kMaxStillNoiseGrey)
     return {std::nullopt, "the camera moves (its frames differ from their median by " +
-                              std::to_string(static_cast<int>(std::lround(sigma))) + " grey levels)"};
+                              std::to_string(static_cast<int>(std::lround(sigma))) +
+                              " grey levels)"};
   b.thresholdGrey = std::max(kMinThresholdGrey, kNoiseSigmas * sigma);
   for (const cv::Mat& g : greys) shares.push_back(foregroundShare(g, b));
   std::sort(shares.begin(), shares.end());
   const double share = shares[shares.size() / 2];
   if (share > kMaxForegroundShare)
-    return {std::nullopt, "the camera moves (" + percent(share) + " of the picture differs from the median)"};
-  const double standing = skeletonStandingOut(toGrey(video.frame(key.frame)), b, key, kJointRadiusPx);
+    return {std::nullopt,
+            "the camera moves (" + percent(share) + " of the picture differs from the median)"};
+  const double standing =
+      skeletonStandingOut(toGrey(video.frame(key.frame)), b, key, kJointRadiusPx);
   if (standing < kMinSkeletonStandingOut)
     return {std::nullopt, "the person stays in place (" + percent(standing) +
                               " of the keyframe's skeleton stands out from the median)"};

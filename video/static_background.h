@@ -10,8 +10,8 @@
 // and the person moved through the range (the keyframe's joints stand out from it): a person
 // who stays in place becomes part of the median, and would be flattened away.
 
-#include <opencv2/core.hpp>
 #include <cstddef>
+#include <opencv2/core.hpp>
 #include <optional>
 #include <string>
 
@@ -22,8 +22,8 @@
 namespace ew {
 
 struct StaticBackground {
-  cv::Mat grey;              // CV_8U, each pixel's median over the sampled frames
-  double thresholdGrey = 0;  // a pixel further than this from the background is foreground
+  cv::Mat grey;                  // CV_8U, each pixel's median over the sampled frames
+  double thresholdGrey = 0;      // a pixel further than this from the background is foreground
   unsigned char fillGrey = 128;  // what background pixels become (the background's median)
 };
 
@@ -35,8 +35,10 @@ struct BackgroundCheck {
 // Samples up to `samples` frames evenly over [first, last] (grey; no more than fit in
 // `maxBytes`, the tracker's frame buffer) and checks the two conditions above against `key` (the
 // first keyframe's marks, on its own frame).
-BackgroundCheck estimateStaticBackground(VideoSource& video, int first, int last, const Keyframe& key,
-                                         std::size_t maxBytes = std::size_t{512} << 20, int samples = 15);
+BackgroundCheck estimateStaticBackground(VideoSource& video, int first, int last,
+                                         const Keyframe& key,
+                                         std::size_t maxBytes = std::size_t{512} << 20,
+                                         int samples = 15);
 
 // `grey` with every pixel near the background set to its fill grey (foreground kept as is,
 // its outline grown by a pixel so the person's edge stays whole).

@@ -58,7 +58,7 @@ TEST(StaticBackground, AWalkerCrossingTheFixedCamerasPictureLeavesTheBackgroundF
   for (int frame : {0, last / 2, last}) {
     const cv::Mat flattened = withoutBackground(toGrey(video.frame(frame)), *check.background);
     const Kept kept = keptShares(flattened, check.background->fillGrey, footage.truthPx.row(frame));
-    EXPECT_GT(kept.onBones, 0.9) << "frame " << frame;     // the walker stays
+    EXPECT_GT(kept.onBones, 0.9) << "frame " << frame;    // the walker stays
     EXPECT_LT(kept.farAway, 0.001) << "frame " << frame;  // the background goes
   }
 }
@@ -72,7 +72,8 @@ TEST(StaticBackground, AWalkerOnATreadmillIsPartOfTheMedianAndIsNotFlattened) {
   const Eigen::VectorXd forward = frames.col(3 * index(Joint::Pelvis) + 1);
   for (int j = 0; j < kJointCount; ++j) frames.col(3 * j + 1) -= forward;  // walking in place
   const std::filesystem::path file = test::makeTempDir("static_background") / "treadmill.avi";
-  const Eigen::MatrixXd truthPx = writeFootage(file, frames, cameraBeside(frames, 30.0, 6000.0), 30.0);
+  const Eigen::MatrixXd truthPx =
+      writeFootage(file, frames, cameraBeside(frames, 30.0, 6000.0), 30.0);
   VideoSource video(file);
   const BackgroundCheck check =
       estimateStaticBackground(video, 0, video.info().frameCount - 1, keyOn(truthPx, 0));
@@ -86,7 +87,8 @@ TEST(StaticBackground, APanningCameraHasNone) {
   cv::GaussianBlur(texture, texture, cv::Size(5, 5), 1.5);
   const std::filesystem::path file = test::makeTempDir("static_background") / "pan.avi";
   {
-    cv::VideoWriter out(file.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 30.0, cv::Size(320, 240));
+    cv::VideoWriter out(file.string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 30.0,
+                        cv::Size(320, 240));
     ASSERT_TRUE(out.isOpened());
     for (int f = 0; f < 30; ++f) out.write(texture(cv::Rect(10 * f, 20, 320, 240)));
   }
@@ -102,13 +104,14 @@ TEST(StaticBackground, APanningCameraHasNone) {
 TEST(StaticBackground, NoMoreFramesAreSampledThanFitTheFrameBuffer) {
   const test::WalkingFootage& footage = test::walkingFootage();
   VideoSource video(footage.file);
-  const std::size_t frameBytes = static_cast<std::size_t>(video.info().widthPx) * video.info().heightPx;
-  const BackgroundCheck check =
-      estimateStaticBackground(video, 0, video.info().frameCount - 1, keyOn(footage.truthPx, 0), 2 * frameBytes);
+  const std::size_t frameBytes =
+      static_cast<std::size_t>(video.info().widthPx) * video.info().heightPx;
+  const BackgroundCheck check = estimateStaticBackground(video, 0, video.info().frameCount - 1,
+                                                         keyOn(footage.truthPx, 0), 2 * frameBytes);
   EXPECT_FALSE(check.background);
   EXPECT_NE(check.why.find("too large"), std::string::npos) << check.why;
-  EXPECT_TRUE(estimateStaticBackground(video, 0, video.info().frameCount - 1, keyOn(footage.truthPx, 0),
-                                       3 * frameBytes)
+  EXPECT_TRUE(estimateStaticBackground(video, 0, video.info().frameCount - 1,
+                                       keyOn(footage.truthPx, 0), 3 * frameBytes)
                   .background);
 }
 
