@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/common/skeleton.h"
 #include "core/gait/gait_cycles.h"
@@ -9,7 +10,9 @@
 namespace ew {
 namespace {
 
-int smoothingHalfWidth(double rateHz) { return std::max(0, static_cast<int>(std::lround(0.025 * rateHz))); }
+int smoothingHalfWidth(double rateHz) {
+  return std::max(0, static_cast<int>(std::lround(0.025 * rateHz)));
+}
 
 Joint ankleOf(Side side) { return side == Side::Left ? Joint::LAnkle : Joint::RAnkle; }
 
@@ -74,7 +77,8 @@ double refinedExtreme(const Eigen::VectorXd& s, int i) {
   return i + std::clamp(shift, -0.5, 0.5);
 }
 
-GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& m, double rateHz) {
+GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& m, double rateHz,
+                                      double footOffLag) {
   GaitEventSet events;
   events.method = "kinematics";
   if (m.rows() < 3 || m.cols() != kDims3 || !(rateHz > 0) || !std::isfinite(rateHz)) return events;
@@ -83,10 +87,31 @@ GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& m
     if (!lead.allFinite()) continue;
     const Eigen::VectorXd trail = -lead;
     FootEvents& foot = side == Side::Right ? events.right : events.left;
-    foot.strikesS = rowsToSeconds(lead, awayFromEnds(dominantPeaks(lead, rateHz), lead.size(), rateHz), rateHz);
-    foot.offsS = rowsToSeconds(trail, awayFromEnds(dominantPeaks(trail, rateHz), trail.size(), rateHz), rateHz);
+    foot.strikesS =
+        rowsToSeconds(lead, awayFromEnds(dominantPeaks(lead, rateHz), lead.size(), rateHz), rateHz);
+    foot.offsS = rowsToSeconds(
+        trail, awayFromEnds(dominantPeaks(trail, rateHz), trail.size(), rateHz), rateHz);
   }
+  const double strideS = medianStrideS(events);
+  if (!std::isfinite(strideS)) return events;
+  const double lastS = static_cast<double>(m.rows() - 1) / rateHz;
+  for (FootEvents* foot : {&events.right, &events.left})
+    for (double& off : foot->offsS) off = std::min(off + footOffLag * strideS, lastS);
   return events;
+}
+
+double medianStrideS(const GaitEventSet& events) {
+  std::vector<double> strides;
+  for (const FootEvents* foot : {&events.right, &events.left})
+    for (size_t i = 0; i + 1 < foot->strikesS.size(); ++i) {
+      const double s = foot->strikesS[i + 1] - foot->strikesS[i];
+      if (s >= 1.0 / kMaxStrideHz && s <= 1.0 / kMinStrideHz) strides.push_back(s);
+    }
+  if (strides.empty()) return std::numeric_limits<double>::quiet_NaN();
+  const auto middle = strides.begin() + static_cast<std::ptrdiff_t>(strides.size() / 2);
+  std::nth_element(strides.begin(), middle, strides.end());
+  if (strides.size() % 2 == 1) return *middle;
+  return 0.5 * (*middle + *std::max_element(strides.begin(), middle));
 }
 
 GaitEventSet gaitEventsFromFile(const std::vector<GaitEvent>& events, double durationS) {

@@ -5,10 +5,8 @@
 // Kinematic events follow Zeni, Richards & Higginson (2008, Gait & Posture 27:710): in the
 // walker's own frame, a foot strikes where its forward distance from the pelvis is largest and
 // leaves the floor where it is smallest. Zeni use the heel for the strike and the toe for the
-// foot off; the 15 joints have neither, so both come from the ankle centre (the foot off is
-// then found a little early: measured against the Schreiber-Moissenet force-plate events in
-// docs/RESULTS.md, "Gait measures"). Extremes are located to a fraction of a frame by a
-// parabola through the three samples around them.
+// foot off; the 15 joints have neither, so both come from the ankle centre. Extremes are
+// located to a fraction of a frame by a parabola through the three samples around them.
 
 #include <Eigen/Core>
 #include <string>
@@ -43,10 +41,24 @@ std::vector<int> dominantPeaks(const Eigen::VectorXd& signal, double rateHz);
 // i itself at the ends), in rows.
 double refinedExtreme(const Eigen::VectorXd& signal, int i);
 
+// The ankle is at its rearmost while the toe still pushes: against the Schreiber-Moissenet
+// C3D events (18 trials; docs/GAIT.md), Zeni's foot off from the ankle comes 52.4 ± 18.2 ms
+// early and his strike 30.9 ± 14.7 ms early. Stance and swing are the time between the two,
+// so the foot off is put this fraction of the stride after the ankle's rearmost point: the
+// difference of the two, each as a fraction of its trial's stride (a slow walker's lag is
+// longer). tests/gait/test_gait_measures.cpp measures it again, and again leaving each trial out.
+inline constexpr double kAnkleFootOffLagOfStride = 0.0185;
+
 // framesX45 in a canonical frame (x right, y forward, z up; progression may be removed).
-// Empty lists when the trial is too short or not finite.
+// Empty lists when the trial is too short or not finite. footOffLag: see
+// kAnkleFootOffLagOfStride, scaled by the median stride of both feet's strikes (0 gives Zeni's
+// foot off from the ankle as it is; so does a trial with no complete stride).
 GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
-                                      double rateHz);
+                                      double rateHz, double footOffLag = kAnkleFootOffLagOfStride);
+
+// The median time between consecutive strikes of one foot, over both feet, counting only
+// plausible strides (SPEC §3's stride frequencies); NaN without one.
+double medianStrideS(const GaitEventSet& events);
 
 // The file's foot strikes and foot offs between 0 and durationS, sorted per side.
 GaitEventSet gaitEventsFromFile(const std::vector<GaitEvent>& events, double durationS);

@@ -3,12 +3,13 @@
 // measures, bad input, and the shared walkers' kinematic events against their C3D's own.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <numbers>
 #include <numeric>
-#include <algorithm>
 
 #include "core/common/errors.h"
 #include "core/gait/dataset.h"
@@ -46,8 +47,10 @@ struct Stance {
   double strikeS, offS, forwardMm;
 };
 constexpr double kSpeedMps = 1.3;
-const std::vector<Stance> kRightStances = {{-0.9, -0.28, -1300}, {0.1, 0.72, 0}, {1.1, 1.74, 1300}, {2.1, 2.72, 2600}, {3.1, 3.72, 3900}};
-const std::vector<Stance> kLeftStances = {{-0.4, 0.2, -650}, {0.6, 1.22, 650}, {1.6, 2.22, 1950}, {2.6, 3.2, 3250}};
+const std::vector<Stance> kRightStances = {
+    {-0.9, -0.28, -1300}, {0.1, 0.72, 0}, {1.1, 1.74, 1300}, {2.1, 2.72, 2600}, {3.1, 3.72, 3900}};
+const std::vector<Stance> kLeftStances = {
+    {-0.4, 0.2, -650}, {0.6, 1.22, 650}, {1.6, 2.22, 1950}, {2.6, 3.2, 3250}};
 
 double floorPosition(const std::vector<Stance>& stances, double t) {
   for (size_t k = 0; k < stances.size(); ++k) {
@@ -102,7 +105,8 @@ TEST(GaitMeasures, HandPlacedEventsGiveTheMeasuresComputedByHand) {
 }
 
 TEST(GaitMeasures, WithoutProgressionTheSpeedComesFromTheStanceFeet) {
-  const GaitMeasures g = measureGait(walkerOnStances(250), 100.0, handEvents(), std::nullopt, "hand");
+  const GaitMeasures g =
+      measureGait(walkerOnStances(250), 100.0, handEvents(), std::nullopt, "hand");
   EXPECT_EQ(g.speedSource, "stance feet");
   EXPECT_NEAR(g.speedMps, kSpeedMps, 1e-9);
 }
@@ -129,19 +133,26 @@ TEST(GaitMeasures, AStrideWithoutItsFootOffCountsForTimeButNotStance) {
 }
 
 TEST(GaitMeasures, BadInputIsAnErrorNamingTheTrial) {
-  EXPECT_NE(errorOf([] { measureGait(Eigen::MatrixXd::Zero(10, 44), 100, handEvents(), {}, "t.c3d"); },
-                    ErrorKind::BadArgument).find("t.c3d"), std::string::npos);
+  EXPECT_NE(
+      errorOf([] { measureGait(Eigen::MatrixXd::Zero(10, 44), 100, handEvents(), {}, "t.c3d"); },
+              ErrorKind::BadArgument)
+          .find("t.c3d"),
+      std::string::npos);
   EXPECT_NE(errorOf([] { measureGait(walkerOnStances(250), 0.0, handEvents(), {}, "t.c3d"); },
-                    ErrorKind::BadArgument).find("rate"), std::string::npos);
+                    ErrorKind::BadArgument)
+                .find("rate"),
+            std::string::npos);
   Eigen::MatrixXd gap = walkerOnStances(250);
   gap(40, 3 * index(Joint::LAnkle) + 1) = NAN;
   EXPECT_NE(errorOf([&] { measureGait(gap, 100, handEvents(), {}, "t.c3d"); }, ErrorKind::BadData)
-                .find(std::string(jointName(Joint::LAnkle))), std::string::npos);
+                .find(std::string(jointName(Joint::LAnkle))),
+            std::string::npos);
   GaitEventSet one;
   one.method = "kinematics";
   one.right.strikesS = {0.3};
   one.left.strikesS = {0.8};
-  const std::string msg = errorOf([&] { measureGait(walkerOnStances(250), 100, one, {}, "t.c3d"); }, ErrorKind::BadData);
+  const std::string msg = errorOf([&] { measureGait(walkerOnStances(250), 100, one, {}, "t.c3d"); },
+                                  ErrorKind::BadData);
   EXPECT_NE(msg.find("t.c3d"), std::string::npos);
   EXPECT_NE(msg.find("no complete stride"), std::string::npos);
 }
@@ -149,7 +160,9 @@ TEST(GaitMeasures, BadInputIsAnErrorNamingTheTrial) {
 TEST(GaitMeasures, StrikesTooFarApartForWalkingMakeNoStride) {
   GaitEventSet e;
   e.right.strikesS = {0.0, 4.0};  // 0.25 Hz: below walking's stride frequencies
-  EXPECT_TRUE(errorOf([&] { measureGait(walkerOnStances(500), 100, e, {}, "slow"); }, ErrorKind::BadData).size() > 0);
+  EXPECT_TRUE(
+      errorOf([&] { measureGait(walkerOnStances(500), 100, e, {}, "slow"); }, ErrorKind::BadData)
+          .size() > 0);
 }
 
 TEST(GaitEvents, FileEventsAreSortedPerSideAndKeptInsideTheTrial) {
@@ -184,13 +197,16 @@ TEST(GaitMeasures, SyntheticWalkersMeasureAsTheyWereGenerated) {
     const GaitMeasures g = measureGait(m, rate, events, t.speedMps, w.id);
     const GaitMeasures feet = measureGait(m, rate, events, std::nullopt, w.id);
     const auto& floor = w.trial.positionsMm;  // overground: the feet stand still in these axes
-    const GaitMeasures onFloor = measureGait(floor, rate, gaitEventsFromKinematics(floor, rate), std::nullopt, w.id);
-    const double cadence = w.attributes.at("cadence_spm"), stride = w.attributes.at("stride_length_m");
+    const GaitMeasures onFloor =
+        measureGait(floor, rate, gaitEventsFromKinematics(floor, rate), std::nullopt, w.id);
+    const double cadence = w.attributes.at("cadence_spm"),
+                 stride = w.attributes.at("stride_length_m");
     const double speed = w.attributes.at("speed_mps");
-    std::cout << w.id << ": cadence " << g.cadenceSpm << " (" << cadence << "), stride " << g.strideLengthM
-              << " m / from the feet " << feet.strideLengthM << " (" << stride << "), width " << g.stepWidthM * 1000
-              << " mm / on the floor " << onFloor.stepWidthM * 1000 << ", speed from the feet " << feet.speedMps
-              << " (" << speed << "), stance " << g.stancePct << " %, strides " << g.strides.size() << "\n";
+    std::cout << w.id << ": cadence " << g.cadenceSpm << " (" << cadence << "), stride "
+              << g.strideLengthM << " m / from the feet " << feet.strideLengthM << " (" << stride
+              << "), width " << g.stepWidthM * 1000 << " mm / on the floor "
+              << onFloor.stepWidthM * 1000 << ", speed from the feet " << feet.speedMps << " ("
+              << speed << "), stance " << g.stancePct << " %, strides " << g.strides.size() << "\n";
     EXPECT_NEAR(g.cadenceSpm, cadence, 0.02 * cadence) << w.id;
     EXPECT_NEAR(g.strideLengthM, stride, 0.01 * stride) << w.id;
     EXPECT_NEAR(g.stepWidthM, onFloor.stepWidthM, 0.005) << w.id;
@@ -198,8 +214,10 @@ TEST(GaitMeasures, SyntheticWalkersMeasureAsTheyWereGenerated) {
     EXPECT_EQ(feet.speedSource, "stance feet");
     EXPECT_NEAR(feet.speedMps, speed, 0.08 * speed) << w.id;
     EXPECT_NEAR(feet.strideLengthM, stride, 0.08 * stride) << w.id;
+    // Walking adults' stance: the shared walkers' C3D events give 61–69 %, and these walkers
+    // are drawn from a model of such walkers (measured here: 57–68 %).
     EXPECT_GT(g.stancePct, 55.0) << w.id;
-    EXPECT_LT(g.stancePct, 66.0) << w.id;
+    EXPECT_LT(g.stancePct, 70.0) << w.id;
     EXPECT_GE(g.strides.size(), 4u) << w.id;
   }
 }
@@ -211,7 +229,8 @@ TEST(GaitCurves, EachStrideIsResampledFromStrikeToStrike) {
   Eigen::MatrixXd angles(frames, 3);
   for (int i = 0; i < frames; ++i) {
     const double t = i / rate;
-    angles(i, 0) = 30.0 + 25.0 * std::sin(2.0 * std::numbers::pi * (t - 0.1));  // period 1 s from 0.1 s
+    angles(i, 0) =
+        30.0 + 25.0 * std::sin(2.0 * std::numbers::pi * (t - 0.1));  // period 1 s from 0.1 s
     angles(i, 1) = 0.0;
     angles(i, 2) = NAN;  // never measured: no curve
   }
@@ -221,7 +240,8 @@ TEST(GaitCurves, EachStrideIsResampledFromStrikeToStrike) {
   EXPECT_EQ(curves[0].name, "knee_angle_r");
   EXPECT_EQ(curves[0].strides, 2);
   for (int k = 0; k < 11; ++k) {
-    EXPECT_NEAR(curves[0].meanDeg[k], 30.0 + 25.0 * std::sin(2.0 * std::numbers::pi * k / 10.0), 0.05);
+    EXPECT_NEAR(curves[0].meanDeg[k], 30.0 + 25.0 * std::sin(2.0 * std::numbers::pi * k / 10.0),
+                0.05);
     EXPECT_NEAR(curves[0].sdDeg[k], 0.0, 0.05);
   }
 }
@@ -232,41 +252,120 @@ TEST(GaitCurves, EachStrideIsResampledFromStrikeToStrike) {
 // trial holds one stride per foot and each event scatters ±15 ms about the C3D's (the
 // per-trial counts are in docs/RESULTS.md, "Gait measures"). The per-trial guard is the
 // worst measured plus a frame.
-TEST(GaitMeasuresOnSharedWalkers, KinematicEventsAgreeWithTheC3dEvents) {
-  EW_REQUIRE_SHARED_DATA();
+// The Schreiber-Moissenet walkers, whole trials (each about 1.5 strides, with its C3D events).
+struct SharedC3dTrial {
+  std::string subject, path;
+  Eigen::MatrixXd framesMm;
+  double rateHz = 0, speedMps = 0;
+  GaitEventSet file;
+};
+
+std::vector<SharedC3dTrial> sharedC3dTrials() {
   std::vector<std::string> warnings;
-  std::vector<double> strideDiffs, cadenceDiffs, stanceDiffs;
   PrepareOptions whole;
   whole.cropToSteadyWindow = false;
+  std::vector<SharedC3dTrial> trials;
   for (const auto& f : collectTrialFiles({test::sharedDataDir() / "walkers.csv"}, warnings)) {
     if (f.path.extension() != ".c3d") continue;
     const WalkingTrial t = loadWalkingTrial(f.path, {}, whole);
-    const auto& m = t.joints.positionsMm;
-    const double rate = t.joints.rateHz;
-    const GaitEventSet file = gaitEventsFromFile(t.joints.events, static_cast<double>(m.rows() - 1) / rate);
-    const GaitMeasures a = measureGait(m, rate, file, t.speedMps, f.path.string());
-    const GaitMeasures b = measureGait(m, rate, gaitEventsFromKinematics(m, rate), t.speedMps, f.path.string());
+    const double duration = static_cast<double>(t.joints.positionsMm.rows() - 1) / t.joints.rateHz;
+    trials.push_back({f.info.subject, f.path.string(), t.joints.positionsMm, t.joints.rateHz,
+                      t.speedMps, gaitEventsFromFile(t.joints.events, duration)});
+  }
+  return trials;
+}
+
+// Kinematic − file stance (points) of one trial, with the given foot-off lag (of the stride).
+double stanceDifference(const SharedC3dTrial& t, double footOffLag) {
+  const GaitMeasures a = measureGait(t.framesMm, t.rateHz, t.file, t.speedMps, t.path);
+  const GaitMeasures b =
+      measureGait(t.framesMm, t.rateHz, gaitEventsFromKinematics(t.framesMm, t.rateHz, footOffLag),
+                  t.speedMps, t.path);
+  return b.stancePct - a.stancePct;
+}
+
+// Each kinematic event's time less the file's nearest event of the same kind and foot (within
+// 0.15 s: the same event), as a fraction of the stride, appended to `out`.
+void eventErrors(const std::vector<double>& kinematic, const std::vector<double>& file,
+                 double strideS, std::vector<double>& out) {
+  for (double f : file) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (double k : kinematic)
+      if (std::abs(k - f) < std::abs(nearest)) nearest = k - f;
+    if (std::abs(nearest) < 0.15) out.push_back(nearest / strideS);
+  }
+}
+
+// How much earlier Zeni's foot off from the ankle comes than his strike, against the files'
+// events, over the given trials (a fraction of the stride).
+double footOffLagOf(const std::vector<const SharedC3dTrial*>& trials) {
+  std::vector<double> strikes, offs;
+  for (const auto* t : trials) {
+    const GaitEventSet zeni = gaitEventsFromKinematics(t->framesMm, t->rateHz, 0.0);
+    const double strideS = medianStrideS(zeni);
+    for (Side side : {Side::Right, Side::Left}) {
+      eventErrors(zeni.of(side).strikesS, t->file.of(side).strikesS, strideS, strikes);
+      eventErrors(zeni.of(side).offsS, t->file.of(side).offsS, strideS, offs);
+    }
+  }
+  const auto mean = [](const std::vector<double>& v) {
+    return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+  };
+  return mean(strikes) - mean(offs);
+}
+
+TEST(GaitMeasuresOnSharedWalkers, KinematicEventsAgreeWithTheC3dEvents) {
+  EW_REQUIRE_SHARED_DATA();
+  std::vector<double> strideDiffs, cadenceDiffs, stanceDiffs;
+  for (const auto& t : sharedC3dTrials()) {
+    const GaitMeasures a = measureGait(t.framesMm, t.rateHz, t.file, t.speedMps, t.path);
+    const GaitMeasures b = measureGait(
+        t.framesMm, t.rateHz, gaitEventsFromKinematics(t.framesMm, t.rateHz), t.speedMps, t.path);
     strideDiffs.push_back(100.0 * (b.strideTimeS - a.strideTimeS) / a.strideTimeS);
     cadenceDiffs.push_back(100.0 * (b.cadenceSpm - a.cadenceSpm) / a.cadenceSpm);
     stanceDiffs.push_back(b.stancePct - a.stancePct);
-    std::cout << f.info.subject << ": stride " << a.strideTimeS << " / " << b.strideTimeS << " s ("
-              << strideDiffs.back() << " %), stance " << a.stancePct << " / " << b.stancePct << " % ("
-              << stanceDiffs.back() << ")\n";
-    EXPECT_LE(std::abs(strideDiffs.back()), 4.3) << f.path;
-    EXPECT_LE(std::abs(stanceDiffs.back()), 5.5) << f.path;
+    std::cout << t.subject << ": stride " << a.strideTimeS << " / " << b.strideTimeS << " s ("
+              << strideDiffs.back() << " %), stance " << a.stancePct << " / " << b.stancePct
+              << " % (" << stanceDiffs.back() << ")\n";
+    EXPECT_LE(std::abs(strideDiffs.back()), 3.5) << t.path;
+    EXPECT_LE(std::abs(stanceDiffs.back()), 3.0) << t.path;  // issue 17's bar, every trial
   }
   ASSERT_EQ(strideDiffs.size(), 18u);
-  const auto mean = [](const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size()); };
+  const auto mean = [](const std::vector<double>& v) {
+    return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+  };
   EXPECT_LE(std::abs(mean(strideDiffs)), 2.0);
   EXPECT_LE(std::abs(mean(cadenceDiffs)), 2.0);
-  EXPECT_LE(std::abs(mean(stanceDiffs)), 3.0);
+  EXPECT_LE(std::abs(mean(stanceDiffs)), 1.0);
   const auto within = [](const std::vector<double>& v, double bar) {
     return std::count_if(v.begin(), v.end(), [&](double d) { return std::abs(d) <= bar; });
   };
-  std::cout << "within the bar: stride time " << within(strideDiffs, 2.0) << ", cadence " << within(cadenceDiffs, 2.0)
-            << ", stance " << within(stanceDiffs, 3.0) << " of 18\n";
-  EXPECT_GE(within(strideDiffs, 2.0), 12);
-  EXPECT_GE(within(stanceDiffs, 3.0), 12);
+  std::cout << "within the bar: stride time " << within(strideDiffs, 2.0) << ", cadence "
+            << within(cadenceDiffs, 2.0) << ", stance " << within(stanceDiffs, 3.0) << " of 18\n";
+  // A single stride per foot: each strike scatters ±15 ms, ±2 % of the stride (docs/GAIT.md).
+  EXPECT_GE(within(strideDiffs, 2.0), 14);
+  EXPECT_GE(within(cadenceDiffs, 2.0), 14);
+}
+
+// kAnkleFootOffLagOfStride is the lag these trials measure; leaving each trial out of the
+// measuring, the lag of the other 17 still puts that trial's stance within 3 points of its C3D's.
+TEST(GaitMeasuresOnSharedWalkers, TheFootOffLagHoldsForATrialItWasNotMeasuredOn) {
+  EW_REQUIRE_SHARED_DATA();
+  const std::vector<SharedC3dTrial> trials = sharedC3dTrials();
+  ASSERT_EQ(trials.size(), 18u);
+  std::vector<const SharedC3dTrial*> all;
+  for (const auto& t : trials) all.push_back(&t);
+  EXPECT_NEAR(footOffLagOf(all), kAnkleFootOffLagOfStride, 0.0005);
+  for (const auto& t : trials) {
+    std::vector<const SharedC3dTrial*> others;
+    for (const auto* o : all)
+      if (o != &t) others.push_back(o);
+    const double lag = footOffLagOf(others);
+    const double zeni = stanceDifference(t, 0.0), heldOut = stanceDifference(t, lag);
+    std::cout << t.subject << ": lag of the others " << lag * 100
+              << " % of the stride; stance − C3D's " << zeni << " → " << heldOut << " points\n";
+    EXPECT_LE(std::abs(heldOut), 3.0) << t.path;
+  }
 }
 
 }  // namespace
