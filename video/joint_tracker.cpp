@@ -289,11 +289,14 @@ class FlowPass final : public TrackingPass {
   // The model loop: a flow that failed or strayed beyond the gate from the model's place is
   // replaced by the keyframe patch found near that place, else by the place itself (a joint
   // hidden behind the other leg is where the walk says it is). nullopt: the flow stands.
-  std::optional<double> measureAgainstPrior(int j, std::optional<cv::Point2f> flow, const cv::Mat& toGrey) {
+  std::optional<double> measureAgainstPrior(int j, std::optional<cv::Point2f> flow,
+                                            const cv::Mat& toGrey) {
     const std::optional<cv::Point2f> prior = priorAt(j);
     if (!prior) return std::nullopt;
     const double gate = o_.priorGateShare * g_.personPx;
-    const auto distance = [](cv::Point2f a, cv::Point2f b) { return std::hypot(a.x - b.x, a.y - b.y); };
+    const auto distance = [](cv::Point2f a, cv::Point2f b) {
+      return std::hypot(a.x - b.x, a.y - b.y);
+    };
     if (flow && distance(*flow, *prior) <= gate) return std::nullopt;
     const Match m = matchAround(j, toGrey, *prior);
     if (m.bestScore > 0.7 && distance(m.best, *prior) <= gate) {
@@ -377,7 +380,9 @@ struct Range {
   Eigen::Index rows() const { return last - first + 1; }
 };
 
-std::size_t bytesPerPixel(const TrackerOptions& o) { return o.kind == TrackerKind::Appearance ? 3 : 1; }
+std::size_t bytesPerPixel(const TrackerOptions& o) {
+  return o.kind == TrackerKind::Appearance ? 3 : 1;
+}
 
 Range rangeFor(const VideoSource& video, const TrackerOptions& o) {
   const int count = video.info().frameCount;
@@ -460,8 +465,8 @@ class RangeTracker {
     return std::make_unique<FlowPass>(g_, o_, key, keyImage);
   }
 
-  void record(const TrackingPass& pass, int frame, const std::array<double, kJointCount>& confidence,
-              PassOutput& out, bool isKeyframe) {
+  void record(const TrackingPass& pass, int frame,
+              const std::array<double, kJointCount>& confidence, PassOutput& out, bool isKeyframe) {
     const Eigen::Index row = frame - range_.first;
     for (int j = 0; j < kJointCount; ++j) {
       if (!pass.tracks(j)) continue;
@@ -524,12 +529,19 @@ const char* trackerName(TrackerKind kind) {
 TrackerKind trackerFromName(const std::string& name) {
   for (TrackerKind k : {TrackerKind::OpticalFlow, TrackerKind::Appearance})
     if (name == trackerName(k)) return k;
-  throw Error(ErrorKind::BadArgument, "", "", "unknown tracker '" + name + "' (flow or appearance)");
+  throw Error(ErrorKind::BadArgument, "", "",
+              "unknown tracker '" + name + "' (flow or appearance)");
 }
 
 JointTrack trackJoints(VideoSource& video, const Keyframes& keyframes,
                        const TrackerOptions& options, const TrackProgress& progress) {
   return RangeTracker(video, keyframes, options, progress).run();
+}
+
+KeypointTrial keypointTrialOf(const JointTrack& track, const std::string& file) {
+  KeypointOptions k;
+  k.fps = track.fps;
+  return trialFromJoints(track.jointsPx, track.confidence, file, "tracked video", k);
 }
 
 }  // namespace ew

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/keypoints/keypoint_trial.h"
 #include "core/tracking/keyframes.h"
 #include "video/video_source.h"
 
@@ -74,5 +75,10 @@ using TrackProgress = std::function<bool(double)>;
 // before the frames asked for.
 JointTrack trackJoints(VideoSource& video, const Keyframes& keyframes,
                        const TrackerOptions& options = {}, const TrackProgress& progress = {});
+
+// The track as 2D joints to fit (at the video's frame rate, each joint's confidence as a
+// detector's score), as the viewer, the model loop and `track --reconstruct` all fit it.
+// `file` names the video in errors.
+KeypointTrial keypointTrialOf(const JointTrack& track, const std::string& file);
 
 }  // namespace ew

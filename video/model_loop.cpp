@@ -7,10 +7,12 @@
 
 namespace ew {
 
-ModelLoopResult trackWithModel(VideoSource& video, const Keyframes& keyframes, const EigenwalkerModel& model,
-                               TrackerOptions options, const ModelLoopOptions& loop, const TrackProgress& progress) {
+ModelLoopResult trackWithModel(VideoSource& video, const Keyframes& keyframes,
+                               const EigenwalkerModel& model, TrackerOptions options,
+                               const ModelLoopOptions& loop, const TrackProgress& progress) {
   if (loop.rounds < 0 || loop.rounds > 10)
-    throw Error(ErrorKind::BadArgument, video.info().file, "", "model loop rounds must lie in 0-10");
+    throw Error(ErrorKind::BadArgument, video.info().file, "",
+                "model loop rounds must lie in 0-10");
   // Each track is a share of the progress: round r of R+1 tracks.
   const double tracks = 1.0 + loop.rounds;
   int done = 0;
@@ -19,12 +21,9 @@ ModelLoopResult trackWithModel(VideoSource& video, const Keyframes& keyframes, c
   result.track = trackJoints(video, keyframes, options, share);
   for (int round = 0; round < loop.rounds; ++round) {
     ++done;
-    KeypointOptions k;
-    k.fps = result.track.fps;
     ClipReconstruction fit;
     try {
-      KeypointTrial trial =
-          trialFromJoints(result.track.jointsPx, result.track.confidence, video.info().file, "tracked video", k);
+      KeypointTrial trial = keypointTrialOf(result.track, video.info().file);
       // The tracker keeps the trunk where it loses the crossing feet: their strikes can read
       // as twice the steps, the trunk's bob does not.
       CameraFitOptions fitOptions;

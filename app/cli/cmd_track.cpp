@@ -46,13 +46,17 @@ struct TrackArgs {
 };
 
 // The keyframes of `all` at `frames`; Error(BadArgument) naming the file for one it lacks.
-Keyframes keyframesAt(const Keyframes& all, const std::vector<int>& frames, const std::string& file) {
+Keyframes keyframesAt(const Keyframes& all, const std::vector<int>& frames,
+                      const std::string& file) {
   Keyframes kept{all.video, {}};
   for (const Keyframe& k : all.keyframes)
-    if (std::find(frames.begin(), frames.end(), k.frame) != frames.end()) kept.keyframes.push_back(k);
+    if (std::find(frames.begin(), frames.end(), k.frame) != frames.end())
+      kept.keyframes.push_back(k);
   for (int f : frames)
-    if (std::none_of(kept.keyframes.begin(), kept.keyframes.end(), [&](const Keyframe& k) { return k.frame == f; }))
-      throw Error(ErrorKind::BadArgument, file, "", "--keyframe-frames: no keyframe on frame " + std::to_string(f));
+    if (std::none_of(kept.keyframes.begin(), kept.keyframes.end(),
+                     [&](const Keyframe& k) { return k.frame == f; }))
+      throw Error(ErrorKind::BadArgument, file, "",
+                  "--keyframe-frames: no keyframe on frame " + std::to_string(f));
   return kept;
 }
 
@@ -140,9 +144,12 @@ Eigen::MatrixXd referenceFor(const TrackArgs& a, const VideoInfo& info, const Ke
 json modelLoopJson(const ModelLoopResult& r, int asked) {
   json rounds = json::array();
   for (const ModelLoopRound& q : r.rounds)
-    rounds.push_back({{"reprojection_rms_px", q.reprojectionRmsPx}, {"stride_hz", q.strideHz}, {"alpha_deg", q.alphaDeg}});
+    rounds.push_back({{"reprojection_rms_px", q.reprojectionRmsPx},
+                      {"stride_hz", q.strideHz},
+                      {"alpha_deg", q.alphaDeg}});
   std::cout << "model loop: " << r.rounds.size() << " of " << asked << " rounds";
-  for (const ModelLoopRound& q : r.rounds) std::cout << " [fit " << q.reprojectionRmsPx << " px, " << q.strideHz << " Hz]";
+  for (const ModelLoopRound& q : r.rounds)
+    std::cout << " [fit " << q.reprojectionRmsPx << " px, " << q.strideHz << " Hz]";
   if (!r.stoppedBecause.empty()) std::cout << "; stopped: " << r.stoppedBecause;
   std::cout << "\n";
   return {{"rounds_asked", asked}, {"rounds", rounds}, {"stopped_because", r.stoppedBecause}};
@@ -178,7 +185,8 @@ int runTrack(const TrackArgs& a) {
   o.flattenStaticBackground = a.flattenBackground;
   const auto start = std::chrono::steady_clock::now();
   if (a.modelLoop > 0 && o.kind != TrackerKind::OpticalFlow)
-    throw Error(ErrorKind::BadArgument, "--model-loop", "", "the model loop guides the flow tracker only");
+    throw Error(ErrorKind::BadArgument, "--model-loop", "",
+                "the model loop guides the flow tracker only");
   ModelLoopOptions loop;
   loop.rounds = a.modelLoop;
   const ModelLoopResult looped = trackWithModel(video, keys, defaultRealModel(), o, loop);
@@ -190,9 +198,9 @@ int runTrack(const TrackArgs& a) {
   std::cout << "tracked " << frames << " frames (" << track.firstFrame << "-"
             << track.firstFrame + frames - 1 << ") of " << info.file << " (" << info.widthPx << "x"
             << info.heightPx << ", " << info.fps << " fps) from " << keys.keyframes.size()
-            << " keyframe(s) by the " << trackerName(o.kind) << " tracker in " << std::fixed << std::setprecision(2) << seconds << " s ("
-            << std::setprecision(1) << static_cast<double>(frames) / std::max(seconds, 1e-9)
-            << " frames/s)\n";
+            << " keyframe(s) by the " << trackerName(o.kind) << " tracker in " << std::fixed
+            << std::setprecision(2) << seconds << " s (" << std::setprecision(1)
+            << static_cast<double>(frames) / std::max(seconds, 1e-9) << " frames/s)\n";
   json report = {{"video", info.file},
                  {"tracker", trackerName(o.kind)},
                  {"background", track.background},
@@ -220,12 +228,13 @@ int runTrack(const TrackArgs& a) {
                       [&](std::ostream& out) { out << report.dump(2) << "\n"; });
   if (a.json) std::cout << report.dump(2) << "\n";
   if (a.reconstruct.empty()) return 0;
+  // The track itself, as the viewer fits it: read back from the OpenPose files it would pass
+  // through BODY_25's mapping and detector offsets, which are not what was tracked.
   CameraArgs c;
-  c.input = (fs::path(a.out) / "keypoints").string();
+  c.input = info.file + " (tracked)";
   c.out = a.reconstruct;
-  c.fps = info.fps;
   c.modelName = defaultRealModelName();
-  return runReconstructCamera(defaultRealModel(), c);
+  return runReconstructCamera(defaultRealModel(), c, keypointTrialOf(track, info.file));
 }
 
 }  // namespace
@@ -250,9 +259,10 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
                   "flow: optical flow with keyframe patches (default); appearance: Zou et al. "
                   "2009's colour histograms of the segments' rectangles")
       ->check(CLI::IsMember({"flow", "appearance"}));
-  cmd->add_option("--model-loop", args->modelLoop,
-                  "rounds of the model loop: fit the eigenwalker through the unknown camera to the track, "
-                  "track again guided by it (flow tracker; default 0)")
+  cmd->add_option(
+         "--model-loop", args->modelLoop,
+         "rounds of the model loop: fit the eigenwalker through the unknown camera to the track, "
+         "track again guided by it (flow tracker; default 0)")
       ->check(CLI::Range(0, 10));
   cmd->add_option("--first", args->first, "first frame tracked (default 0)");
   cmd->add_option("--last", args->last, "last frame tracked (default the video's last)");
@@ -264,9 +274,10 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--overlay-every", args->overlayEvery,
                   "draw the track over every N-th frame into OUT/overlay/ (PNG)")
       ->check(CLI::PositiveNumber);
-  cmd->add_flag("--flatten-background", args->flattenBackground,
-                "flatten a fixed camera's still background before the flow, when the footage has one "
-                "(docs/TRACKING.md, \"The still background\")");
+  cmd->add_flag(
+      "--flatten-background", args->flattenBackground,
+      "flatten a fixed camera's still background before the flow, when the footage has one "
+      "(docs/TRACKING.md, \"The still background\")");
   cmd->add_flag("--json", args->json, "print the report as JSON too");
   cmd->callback([args, &exitCode, keys, from, keyframeFrames] {
     args->keyframeFramesGiven = keyframeFrames->count() > 0;

@@ -22,9 +22,12 @@ using nlohmann::json;
 json startsJson(const CameraFit& fit) {
   json out = json::array();
   for (const auto& s : fit.starts) {
-    out.push_back({{"start_alpha_deg", s.startAlphaDeg}, {"alpha_deg", s.alphaDeg},
-                   {"elevation_deg", s.elevationDeg}, {"objective", s.objective},
-                   {"reprojection_rms_px", s.reprojectionRmsPx}, {"speed_mps", s.speedMmS / 1000.0},
+    out.push_back({{"start_alpha_deg", s.startAlphaDeg},
+                   {"alpha_deg", s.alphaDeg},
+                   {"elevation_deg", s.elevationDeg},
+                   {"objective", s.objective},
+                   {"reprojection_rms_px", s.reprojectionRmsPx},
+                   {"speed_mps", s.speedMmS / 1000.0},
                    {"iterations", s.iterations}});
   }
   return out;
@@ -35,7 +38,8 @@ json offsetsJson(const JointOffsetsMm& offsets) {
   json out = json::object();
   for (int j = 0; j < kJointCount; ++j) {
     const auto& o = offsets[static_cast<std::size_t>(j)];
-    if (o[0] != 0.0 || o[1] != 0.0 || o[2] != 0.0) out[std::string(jointName(static_cast<Joint>(j)))] = o;
+    if (o[0] != 0.0 || o[1] != 0.0 || o[2] != 0.0)
+      out[std::string(jointName(static_cast<Joint>(j)))] = o;
   }
   return out;
 }
@@ -45,65 +49,86 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
   const bool pinhole = c.model == CameraModel::Pinhole;
   std::vector<std::string> unseen;
   for (int j : fit.unseenJoints) unseen.emplace_back(jointName(static_cast<Joint>(j)));
-  return {{"input", a.input}, {"format", t.format}, {"layout", t.layout->name},
-          {"layout_source", t.layoutSource}, {"person", t.chosenReason}, {"frames", t.frameCount},
-          {"rate_hz", t.rateHz}, {"rate_assumed", t.rateAssumed}, {"output", a.out},
+  return {{"input", a.input},
+          {"format", t.format},
+          {"layout", t.layout->name},
+          {"layout_source", t.layoutSource},
+          {"person", t.chosenReason},
+          {"frames", t.frameCount},
+          {"rate_hz", t.rateHz},
+          {"rate_assumed", t.rateAssumed},
+          {"output", a.out},
           {"camera_model", pinhole ? "pinhole" : "scaled orthographic"},
-          {"alpha_deg", c.alphaDeg}, {"alpha_source", a.alphaDeg ? "given (--angle)" : "estimated"},
+          {"alpha_deg", c.alphaDeg},
+          {"alpha_source", a.alphaDeg ? "given (--angle)" : "estimated"},
           {"elevation_deg", c.elevationDeg},
           {"elevation_source", a.elevationDeg ? "given (--elevation)" : "estimated"},
           {"focal_px", pinhole ? json(c.focalPx) : json(nullptr)},
-          {"focal_source", pinhole ? json(a.focalPx ? "given (--focal-px)" : "estimated") : json(nullptr)},
+          {"focal_source",
+           pinhole ? json(a.focalPx ? "given (--focal-px)" : "estimated") : json(nullptr)},
           {"distance_m", pinhole ? json(c.distanceMm / 1000.0) : json(nullptr)},
           {"px_per_mm", pinhole ? json(nullptr) : json(c.pxPerMm)},
-          {"image_centre_px", {c.cxPx, c.cyPx}}, {"reprojection_rms_px", fit.reprojectionRmsPx},
+          {"image_centre_px", {c.cxPx, c.cyPx}},
+          {"reprojection_rms_px", fit.reprojectionRmsPx},
           {"outlier_samples", fit.outlierSamples},
-          {"stride_hz", fit.strideHz}, {"cadence_steps_per_min", fit.cadenceStepsPerMin},
-          {"speed_mps", fit.speedMps}, {"stride_length_m", fit.strideLengthM},
-          {"head_height_m", fit.headHeightMm / 1000.0}, {"k", std::vector<double>(fit.k.data(), fit.k.data() + fit.k.size())},
-          {"joints_model_estimated", unseen}, {"minima", startsJson(fit)},
+          {"stride_hz", fit.strideHz},
+          {"cadence_steps_per_min", fit.cadenceStepsPerMin},
+          {"speed_mps", fit.speedMps},
+          {"stride_length_m", fit.strideLengthM},
+          {"head_height_m", fit.headHeightMm / 1000.0},
+          {"k", std::vector<double>(fit.k.data(), fit.k.data() + fit.k.size())},
+          {"joints_model_estimated", unseen},
+          {"minima", startsJson(fit)},
           {"detector_offsets_mm", offsetsJson(t.detectorOffsetMm)}};
 }
 
 void printSummary(const json& r) {
   std::cerr << std::fixed << std::setprecision(1) << r["format"].get<std::string>() << ", layout "
-            << r["layout"].get<std::string>() << " (" << r["layout_source"].get<std::string>() << "); "
-            << r["person"].get<std::string>() << "\n";
-  std::cerr << "camera (" << r["camera_model"].get<std::string>() << "): azimuth " << r["alpha_deg"].get<double>()
-            << " deg, elevation " << r["elevation_deg"].get<double>() << " deg";
+            << r["layout"].get<std::string>() << " (" << r["layout_source"].get<std::string>()
+            << "); " << r["person"].get<std::string>() << "\n";
+  std::cerr << "camera (" << r["camera_model"].get<std::string>() << "): azimuth "
+            << r["alpha_deg"].get<double>() << " deg, elevation "
+            << r["elevation_deg"].get<double>() << " deg";
   if (r["distance_m"].is_number())
-    std::cerr << ", distance " << std::setprecision(2) << r["distance_m"].get<double>() << " m, focal "
-              << std::setprecision(0) << r["focal_px"].get<double>() << " px (" << r["focal_source"].get<std::string>()
-              << ")";
-  std::cerr << "; reprojection RMS " << std::setprecision(2) << r["reprojection_rms_px"].get<double>() << " px";
+    std::cerr << ", distance " << std::setprecision(2) << r["distance_m"].get<double>()
+              << " m, focal " << std::setprecision(0) << r["focal_px"].get<double>() << " px ("
+              << r["focal_source"].get<std::string>() << ")";
+  std::cerr << "; reprojection RMS " << std::setprecision(2)
+            << r["reprojection_rms_px"].get<double>() << " px";
   if (r["outlier_samples"].get<int>() > 0)
-    std::cerr << " (" << r["outlier_samples"].get<int>() << " samples rejected as detector glitches)";
+    std::cerr << " (" << r["outlier_samples"].get<int>()
+              << " samples rejected as detector glitches)";
   std::cerr << "\n";
   std::cerr << "walk: stride " << std::setprecision(3) << r["stride_hz"].get<double>() << " Hz ("
-            << std::setprecision(0) << r["cadence_steps_per_min"].get<double>() << " steps/min), speed "
-            << std::setprecision(2) << r["speed_mps"].get<double>() << " m/s, stride length "
-            << r["stride_length_m"].get<double>() << " m, head height " << r["head_height_m"].get<double>() << " m";
-  if (r["rate_assumed"].get<bool>()) std::cerr << " (at an assumed " << r["rate_hz"].get<double>() << " fps: give --fps)";
+            << std::setprecision(0) << r["cadence_steps_per_min"].get<double>()
+            << " steps/min), speed " << std::setprecision(2) << r["speed_mps"].get<double>()
+            << " m/s, stride length " << r["stride_length_m"].get<double>() << " m, head height "
+            << r["head_height_m"].get<double>() << " m";
+  if (r["rate_assumed"].get<bool>())
+    std::cerr << " (at an assumed " << r["rate_hz"].get<double>() << " fps: give --fps)";
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
 }
 
 // The calibration file's camera (--camera), if any.
 std::optional<CalibratedCamera> calibrationOf(const CameraArgs& a) {
   if (a.camera.empty()) return std::nullopt;
-  if (a.focalPx) throw Error(ErrorKind::BadArgument, "--camera", "", "give --focal-px or --camera, not both");
-  return readCalibratedCamera(a.camera, a.cameraName.empty() ? std::nullopt : std::optional<std::string>(a.cameraName));
+  if (a.focalPx)
+    throw Error(ErrorKind::BadArgument, "--camera", "", "give --focal-px or --camera, not both");
+  return readCalibratedCamera(
+      a.camera, a.cameraName.empty() ? std::nullopt : std::optional<std::string>(a.cameraName));
 }
 
 // The focal length the user knows: --focal-px, or a calibration file's camera (which also
 // gives a MediaPipe CSV's image size). Says what it took.
-std::optional<double> knownFocal(const CameraArgs& a, const std::optional<CalibratedCamera>& c, KeypointOptions& k,
-                                 std::string& source) {
+std::optional<double> knownFocal(const CameraArgs& a, const std::optional<CalibratedCamera>& c,
+                                 KeypointOptions& k, std::string& source) {
   if (!c) {
     source = a.focalPx ? "given (--focal-px)" : "estimated";
     return a.focalPx;
   }
   source = "calibration file (" + c->name + ")";
-  if (!k.imageSize && c->widthPx > 0) k.imageSize = KeypointImageSize{static_cast<int>(c->widthPx), static_cast<int>(c->heightPx)};
+  if (!k.imageSize && c->widthPx > 0)
+    k.imageSize = KeypointImageSize{static_cast<int>(c->widthPx), static_cast<int>(c->heightPx)};
   std::cerr << "camera " << c->name << " of " << a.camera << ": focal " << c->focalPx() << " px\n";
   return c->focalPx();
 }
@@ -112,11 +137,46 @@ std::optional<double> knownFocal(const CameraArgs& a, const std::optional<Calibr
 json undistorted(const CameraArgs& a, const std::optional<CalibratedCamera>& c, KeypointTrial& t) {
   if (!c || !hasDistortion(*c)) return nullptr;
   const int lost = undistortTrial(*c, t);
-  std::cerr << "keypoints undistorted with " << a.camera << " [" << c->table << "] (k1 " << c->distortions[0] << ", k2 "
-            << c->distortions[1] << ", p1 " << c->distortions[2] << ", p2 " << c->distortions[3] << ")";
+  std::cerr << "keypoints undistorted with " << a.camera << " [" << c->table << "] (k1 "
+            << c->distortions[0] << ", k2 " << c->distortions[1] << ", p1 " << c->distortions[2]
+            << ", p2 " << c->distortions[3] << ")";
   if (lost > 0) std::cerr << "; " << lost << " points outside the calibrated field dropped";
   std::cerr << "\n";
   return {{"k1_k2_p1_p2", c->distortions}, {"points_dropped", lost}};
+}
+
+// The fit's options from the command line (the focal length's source said in `focalSource`).
+CameraFitOptions fitOptionsOf(const EigenwalkerModel& model, const CameraArgs& a,
+                              const std::optional<CalibratedCamera>& calibration,
+                              KeypointOptions& k, std::string& focalSource) {
+  CameraFitOptions o;
+  o.estimator = {a.method == "map" ? Estimator::Map : Estimator::Lsq,
+                 a.sigma2Mm2.value_or(defaultSigma2Mm2(model))};
+  o.focalPx = knownFocal(a, calibration, k, focalSource);
+  o.estimateFocal = !a.orthographic;
+  o.alphaDeg = a.alphaDeg;
+  o.elevationDeg = a.elevationDeg;
+  o.file = a.input;
+  return o;
+}
+
+int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
+                 const CameraFitOptions& o, const std::string& focalSource, const json& lens) {
+  const ClipReconstruction clip = reconstructKeypointTrial(model, std::move(keypoints), o);
+  const KeypointTrial& t = clip.trial;
+  const CameraFit& fit = clip.fit;
+  const Eigen::MatrixXd& frames = clip.framesMm;
+  std::ostringstream what;
+  what << "eigenwalker reconstruction of " << a.input << " through an unknown camera (azimuth "
+       << fit.camera.alphaDeg << " deg, elevation " << fit.camera.elevationDeg << " deg), model "
+       << a.modelName;
+  writeJointTrajectories(a.out, frames, t.rateHz, {what.str()});
+  json report = reportJson(a, t, fit);
+  if (report["focal_source"].is_string()) report["focal_source"] = focalSource;
+  report["lens_undistorted"] = lens;
+  printSummary(report);
+  if (a.json) std::cout << report.dump(2) << "\n";
+  return 0;
 }
 
 }  // namespace
@@ -128,31 +188,21 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   if (!a.imageSize.empty()) k.imageSize = parseKeypointImageSize(a.imageSize, "--image-size");
   k.fps = a.fps;
   k.detectorOffsets = a.detectorOffsets;
-  CameraFitOptions o;
-  o.estimator = {a.method == "map" ? Estimator::Map : Estimator::Lsq, a.sigma2Mm2.value_or(defaultSigma2Mm2(model))};
   std::string focalSource;
   const std::optional<CalibratedCamera> calibration = calibrationOf(a);
-  o.focalPx = knownFocal(a, calibration, k, focalSource);
-  o.estimateFocal = !a.orthographic;
-  o.alphaDeg = a.alphaDeg;
-  o.elevationDeg = a.elevationDeg;
-  o.file = a.input;
+  const CameraFitOptions o = fitOptionsOf(model, a, calibration, k, focalSource);
   KeypointTrial keypoints = readKeypointTrial(a.input, k);
   const json lens = undistorted(a, calibration, keypoints);
-  const ClipReconstruction clip = reconstructKeypointTrial(model, std::move(keypoints), o);
-  const KeypointTrial& t = clip.trial;
-  const CameraFit& fit = clip.fit;
-  const Eigen::MatrixXd& frames = clip.framesMm;
-  std::ostringstream what;
-  what << "eigenwalker reconstruction of " << a.input << " through an unknown camera (azimuth " << fit.camera.alphaDeg
-       << " deg, elevation " << fit.camera.elevationDeg << " deg), model " << a.modelName;
-  writeJointTrajectories(a.out, frames, t.rateHz, {what.str()});
-  json report = reportJson(a, t, fit);
-  if (report["focal_source"].is_string()) report["focal_source"] = focalSource;
-  report["lens_undistorted"] = lens;
-  printSummary(report);
-  if (a.json) std::cout << report.dump(2) << "\n";
-  return 0;
+  return fitAndReport(model, a, std::move(keypoints), o, focalSource, lens);
+}
+
+int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial joints) {
+  KeypointOptions k;
+  std::string focalSource;
+  const std::optional<CalibratedCamera> calibration = calibrationOf(a);
+  const CameraFitOptions o = fitOptionsOf(model, a, calibration, k, focalSource);
+  const json lens = undistorted(a, calibration, joints);
+  return fitAndReport(model, a, std::move(joints), o, focalSource, lens);
 }
 
 }  // namespace ew::cli

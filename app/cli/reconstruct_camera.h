@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/engine/model.h"
+#include "core/keypoints/keypoint_trial.h"
 
 namespace ew::cli {
 
@@ -16,10 +17,15 @@ struct CameraArgs {
   std::optional<double> alphaDeg, elevationDeg;  // known: held, not estimated
   std::string camera, cameraName;                // a calibration file and its camera
   bool json = false;
-  bool orthographic = false;  // scaled orthography instead of estimating the focal length
+  bool orthographic = false;    // scaled orthography instead of estimating the focal length
   bool detectorOffsets = true;  // allow for the layout's detector offsets (KeypointLayout)
 };
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args);
+
+// The same for joints already in hand (a joint tracker's track, read as the viewer reads it):
+// args.input only names them in the report; layout, mapping and detector offsets do not apply.
+int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args,
+                         KeypointTrial joints);
 
 }  // namespace ew::cli

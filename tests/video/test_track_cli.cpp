@@ -5,9 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/camera/clip_reconstruction.h"
+#include "core/engine/default_model.h"
 #include "core/synth/population.h"
 #include "core/tracking/keyframes.h"
 #include "tests/common/test_support.h"
+#include "video/joint_tracker.h"
 #include "video/synthetic_footage.h"
 
 namespace ew {
@@ -41,9 +44,11 @@ Eigen::MatrixXd TrackCli::truthPx_;
 TEST_F(TrackCli, EachTrackerWritesTheTrackAndMeasuresItAgainstTheOtherKeyframes) {
   for (const std::string tracker : {"flow", "appearance"}) {
     const std::string out = "out_" + tracker;
-    const test::ShellRun r = runCli("track --video walk.avi --keyframes keys.json --keyframe-frames 0 --compare "
-                                    "keys.json --tracker " + tracker + " --out " + out + " --json",
-                                    root_);
+    const test::ShellRun r = runCli(
+        "track --video walk.avi --keyframes keys.json --keyframe-frames 0 --compare "
+        "keys.json --tracker " +
+            tracker + " --out " + out + " --json",
+        root_);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const json report = json::parse(r.out.substr(r.out.find('{')));
     EXPECT_EQ(report["tracker"], tracker);
@@ -57,16 +62,19 @@ TEST_F(TrackCli, EachTrackerWritesTheTrackAndMeasuresItAgainstTheOtherKeyframes)
     EXPECT_TRUE(fs::exists(root_ / out / "track_2d.csv"));
     EXPECT_TRUE(fs::exists(root_ / out / "confidence.csv"));
     int keypointFiles = 0;
-    for (const auto& e : fs::directory_iterator(root_ / out / "keypoints")) keypointFiles += e.is_regular_file();
+    for (const auto& e : fs::directory_iterator(root_ / out / "keypoints"))
+      keypointFiles += e.is_regular_file();
     EXPECT_EQ(keypointFiles, 30);
   }
 }
 
 TEST_F(TrackCli, FlattensTheStillBackgroundWhenAskedAndSaysSo) {
   for (const bool flatten : {false, true}) {
-    const test::ShellRun r = runCli(std::string("track --video walk.avi --keyframes keys.json --keyframe-frames 0 "
-                                                "--out flat --json") + (flatten ? " --flatten-background" : ""),
-                                    root_);
+    const test::ShellRun r =
+        runCli(std::string("track --video walk.avi --keyframes keys.json --keyframe-frames 0 "
+                           "--out flat --json") +
+                   (flatten ? " --flatten-background" : ""),
+               root_);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const json report = json::parse(r.out.substr(r.out.find('{')));
     EXPECT_EQ(report["background"], flatten ? "flattened" : "off");
@@ -84,6 +92,36 @@ TEST_F(TrackCli, RefusesAnUnknownTrackerAndAKeyframeFrameTheFileLacks) {
   EXPECT_NE(missing.err.find("keys.json"), std::string::npos) << missing.err;
   EXPECT_NE(missing.err.find("no keyframe on frame 7"), std::string::npos) << missing.err;
   EXPECT_FALSE(fs::exists(root_ / "bad" / "track.json"));
+}
+
+// `--reconstruct` fits the track itself, as the viewer and the model loop do
+// (keypointTrialOf), not the OpenPose files it writes: the walk it writes is the walk the
+// same fit finds in-process. Three gait cycles, keyframes every second.
+TEST_F(TrackCli, ReconstructsTheTrackAsTheViewerFitsIt) {
+  PopulationOptions o;
+  o.count = 1;
+  o.simulation.rateHz = 30.0;
+  const Eigen::MatrixXd frames = generatePopulation(o).front().trial.positionsMm.topRows(100);
+  const Eigen::MatrixXd truth =
+      writeFootage(root_ / "walk3.avi", frames, cameraBeside(frames, 30.0, 6000.0), 30.0);
+  const Keyframes keys = keyframesFromTrack(truth, {0, 30, 60, 90}, "walk3.avi");
+  writeKeyframes(root_ / "keys3.json", keys);
+  const test::ShellRun r = runCli(
+      "track --video walk3.avi --keyframes keys3.json --out out3 --reconstruct walk3d.csv", root_);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("the tracker's own joints"), std::string::npos) << r.err;
+  const std::string written = test::readTextFile(root_ / "walk3d.csv");
+  const auto at = written.find("(azimuth ");
+  ASSERT_NE(at, std::string::npos) << written.substr(0, 300);
+  const double cliAlphaDeg = std::stod(written.substr(at + 9));
+
+  VideoSource video(root_ / "walk3.avi");
+  const JointTrack track = trackJoints(video, keys);
+  CameraFitOptions asTheViewer;
+  asTheViewer.estimator = {Estimator::Map, defaultSigma2Mm2(defaultRealModel())};
+  const ClipReconstruction fit = reconstructKeypointTrial(
+      defaultRealModel(), keypointTrialOf(track, (root_ / "walk3.avi").string()), asTheViewer);
+  EXPECT_NEAR(cliAlphaDeg, fit.fit.camera.alphaDeg, 0.01);
 }
 
 }  // namespace

@@ -36,10 +36,7 @@ TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& key
   t.tracker = tracker;
   t.flattenBackground = flattenBackground;
   t.track = trackJoints(source, keyframes, o, progress);
-  KeypointOptions k;
-  k.fps = t.track.fps;
-  t.trial = std::make_shared<const KeypointTrial>(
-      trialFromJoints(t.track.jointsPx, t.track.confidence, video.string(), "tracked video", k));
+  t.trial = std::make_shared<const KeypointTrial>(keypointTrialOf(t.track, video.string()));
   t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return t;
 }
