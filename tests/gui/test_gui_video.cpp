@@ -158,6 +158,47 @@ TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
   EXPECT_GT(sd[0], 20.0) << "the footage's texture behind the joints";
 }
 
+// Issue 14's real footage: the sports2d demo (a woman walking right to left in profile, a man
+// jumping behind her). Her joints are marked by the script on frame 120 only (the coordinates
+// read off that frame by hand, tests/data/sports2d_demo_keyframes.json), frames 40–200 are
+// tracked over the flattened still background, and the walk is fitted through the unknown
+// camera: her stride frequency (counted by eye, about 0.80 Hz) and a profile view.
+TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideAndProfile) {
+  EW_REQUIRE_SHARED_DATA();
+  const fs::path clip = sharedDataDir() / "video" / "sports2d-demo" / "demo.mp4";
+  const Keyframes marks = readKeyframes(sourceDir() / "tests" / "data" / "sports2d_demo_keyframes.json");
+  const auto k120 = std::find_if(marks.keyframes.begin(), marks.keyframes.end(),
+                                 [](const Keyframe& k) { return k.frame == 120; });
+  ASSERT_NE(k120, marks.keyframes.end());
+  const json script = json::array({
+      {{"open", json::array({clip.string()})}},
+      {{"video_frame", 120}},
+      {{"start_marking", true}},
+      {{"mark_joints", jointsAt(k120->jointsPx, 0)}},
+      {{"stop_marking", true}},
+      {{"track_video", {{"first", 40}, {"last", 200}, {"flatten_background", true}}}},
+      {{"video_frame", 100}},
+      {{"wait_frames", 3}},
+      {{"export_state", path("sports2d.json")}},
+      {{"export_png", {{"path", path("sports2d_input.png")}, {"view", "input"}}}},
+      {{"screenshot", path("sports2d.png")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1600x900 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json s = state("sports2d.json");
+  ASSERT_TRUE(s["video"]["track"].is_object()) << s["video"];
+  EXPECT_EQ(s["video"]["keyframes"].size(), 1u);
+  EXPECT_EQ(s["video"]["track"]["background"], "flattened");
+  const json fit = s["clip"]["fit"];
+  ASSERT_TRUE(fit.is_object()) << s["clip"];
+  std::cout << "sports2d, one keyframe: alpha " << fit["alpha_deg"] << " deg, elevation " << fit["elevation_deg"]
+            << " deg, stride " << fit["stride_hz"] << " Hz, head height " << fit["head_height_m"] << " m\n";
+  EXPECT_GE(fit["stride_hz"].get<double>(), 0.7);  // issue 14's bar
+  EXPECT_LE(fit["stride_hz"].get<double>(), 1.3);
+  EXPECT_NEAR(fit["alpha_deg"].get<double>(), -90.0, 20.0) << "a profile view, walking left";
+}
+
 // Issue 16: Zou et al.'s appearance tracker is chosen in the Track section (the script's
 // "tracker") and the track says which tracker made it; the controls show the choice.
 TEST_F(GuiVideo, TracksWithTheAppearanceTrackerWhenChosen) {
