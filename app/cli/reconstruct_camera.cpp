@@ -75,7 +75,7 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
           {"cadence_steps_per_min", fit.cadenceStepsPerMin},
           {"speed_mps", fit.speedMps},
           {"stride_length_m", fit.strideLengthM},
-          {"head_height_m", fit.headHeightMm / 1000.0},
+          {"head_height_m", fit.headHeightMm / 1000.0}, {"stature_m", fit.statureMm / 1000.0},
           {"k", std::vector<double>(fit.k.data(), fit.k.data() + fit.k.size())},
           {"joints_model_estimated", unseen},
           {"minima", startsJson(fit)},

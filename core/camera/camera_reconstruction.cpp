@@ -9,6 +9,7 @@
 #include "core/common/errors.h"
 #include "core/common/statistics.h"
 #include "core/engine/fourier.h"
+#include "core/gait/body_size.h"
 #include "core/gait/gait_cycles.h"
 #include "core/engine/joint_completion.h"
 #include "core/engine/projection.h"
@@ -381,6 +382,7 @@ void fillOutputs(const Problem& p, const VectorXd& t, CameraFit& fit) {
   for (int i : p.seen) sq += std::pow(image.data()[i] - p.observed.data()[i], 2);
   fit.reprojectionRmsPx = std::sqrt(sq / static_cast<double>(p.seen.size()));
   fit.headHeightMm = walkerHeadHeightMm(fit.w);
+  fit.statureMm = statureFromHeadAboveAnklesMm(fit.headHeightMm);
   fit.strideHz = fit.omegaRadS / (2 * std::numbers::pi);
   fit.speedMps = fit.camera.speedMmS / 1000.0;
   fit.strideLengthM = fit.strideHz > 0 ? fit.speedMps / fit.strideHz : 0.0;

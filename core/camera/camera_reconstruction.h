@@ -46,7 +46,8 @@ struct CameraFit {
   double objective = 0.0;         // mean squared reprojection error in mm (+ prior)
   double reprojectionRmsPx = 0.0; // over every seen joint sample the fit kept
   int outlierSamples = 0;         // seen samples rejected as detector glitches (far off the fit)
-  double headHeightMm = 0.0;      // head centre above the ankles' lowest level, cycle mean
+  double headHeightMm = 0.0;      // head centre above the mean of the two ankles, cycle mean
+  double statureMm = 0.0;         // the stature that head height implies (core/gait/body_size.h)
   double strideHz = 0.0, speedMps = 0.0, strideLengthM = 0.0, cadenceStepsPerMin = 0.0;
   std::vector<CameraStart> starts;  // every start, best first
   std::vector<int> unseenJoints;    // joints with no image data (estimated by the model)

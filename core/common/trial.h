@@ -50,6 +50,8 @@ struct RawTrial {
   Eigen::MatrixXd positionsMm;      // frames x 3*labels, file axes, millimetres, NaN = missing
   std::optional<SignedAxis> upAxis; // vertical axis if the format or file states it
   std::vector<GaitEvent> events;
+  // The subject's stature as the file records it (a C3D's SUBJECT group), mm.
+  std::optional<double> subjectStatureMm;
   std::vector<std::string> warnings;
 
   int frameCount() const { return static_cast<int>(positionsMm.rows()); }

@@ -625,6 +625,33 @@ void readEvents(const C3dBytes& b, const C3dParameters& params, const C3dLayout&
             [](const GaitEvent& a, const GaitEvent& c) { return a.timeS < c.timeS; });
 }
 
+// [SECTION] Subject -------------------------------------------------------------------
+
+// Some labs keep the subject's measures with the trial: SUBJECT:LABELS, SUBJECT:UNITS and
+// SUBJECT:VALUES (the Schreiber-Moissenet files: age, gender, weight, height in m, leg
+// lengths). The stature is kept when its unit is a length and its value a person's.
+void readSubjectStature(const C3dBytes& b, const C3dParameters& params, RawTrial& trial) {
+  const auto* values = findParameter(params, "SUBJECT:VALUES");
+  if (!values || values->type == -1) return;
+  const auto labels = optionalStrings(b, params, "SUBJECT:LABELS");
+  const auto units = optionalStrings(b, params, "SUBJECT:UNITS");
+  for (std::size_t i = 0; i < labels.size() && i < values->count; ++i) {
+    const std::string label = upper(trimLabel(labels[i]));
+    if (label != "HEIGHT" && label != "STATURE") continue;
+    const std::string unit = i < units.size() ? upper(trimLabel(units[i])) : std::string();
+    const double toMm = unit == "M" ? 1000.0 : unit == "CM" ? 10.0 : unit == "MM" ? 1.0 : 0.0;
+    const double mm = parameterNumber(b, *values, i) * toMm;
+    if (mm >= 300.0 && mm <= 3000.0) {
+      trial.subjectStatureMm = mm;
+    } else {
+      trial.warnings.push_back("SUBJECT:VALUES holds a " + printable(labels[i]) + " of " +
+                               std::to_string(parameterNumber(b, *values, i)) + " '" + printable(unit) +
+                               "', not a person's stature in m, cm or mm: ignored");
+    }
+    return;
+  }
+}
+
 // [SECTION] Point data -----------------------------------------------------------------
 
 // One point sample: x, y, z in file units and whether the residual word marks it valid.
@@ -732,6 +759,7 @@ RawTrial parseC3d(std::span<const std::uint8_t> bytes, const std::string& name,
   const double toMm = lengthFactor(b, params, options, trial);
   upAxisFromScreen(b, params, trial);
   readEvents(b, params, layout, trial);
+  readSubjectStature(b, params, trial);
   readPoints(b, layout, toMm, trial);
   return trial;
 }

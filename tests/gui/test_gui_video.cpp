@@ -162,8 +162,9 @@ TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
 // jumping behind her). Her joints are marked by the script on frame 120 only (the coordinates
 // read off that frame by hand, tests/data/sports2d_demo_keyframes.json), frames 40–200 are
 // tracked over the flattened still background, and the walk is fitted through the unknown
-// camera: her stride frequency (counted by eye, about 0.80 Hz) and a profile view.
-TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideAndProfile) {
+// camera: issue 14's bars, her stride frequency (counted by eye, about 0.80 Hz), a person's
+// stature and a profile view.
+TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideStatureAndProfile) {
   EW_REQUIRE_SHARED_DATA();
   const fs::path clip = sharedDataDir() / "video" / "sports2d-demo" / "demo.mp4";
   const Keyframes marks = readKeyframes(sourceDir() / "tests" / "data" / "sports2d_demo_keyframes.json");
@@ -193,9 +194,12 @@ TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideAndProfile) {
   const json fit = s["clip"]["fit"];
   ASSERT_TRUE(fit.is_object()) << s["clip"];
   std::cout << "sports2d, one keyframe: alpha " << fit["alpha_deg"] << " deg, elevation " << fit["elevation_deg"]
-            << " deg, stride " << fit["stride_hz"] << " Hz, head height " << fit["head_height_m"] << " m\n";
-  EXPECT_GE(fit["stride_hz"].get<double>(), 0.7);  // issue 14's bar
+            << " deg, stride " << fit["stride_hz"] << " Hz, head height " << fit["head_height_m"] << " m, stature "
+            << fit["stature_m"] << " m\n";
+  EXPECT_GE(fit["stride_hz"].get<double>(), 0.7);  // issue 14's bars
   EXPECT_LE(fit["stride_hz"].get<double>(), 1.3);
+  EXPECT_GE(fit["stature_m"].get<double>(), 1.45);
+  EXPECT_LE(fit["stature_m"].get<double>(), 1.95);
   EXPECT_NEAR(fit["alpha_deg"].get<double>(), -90.0, 20.0) << "a profile view, walking left";
 }
 

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -227,6 +229,31 @@ TEST(C3dEvents, SchreiberFootStrikesMatchTheDocumentedTimes) {
   int footOff = 0;
   for (const auto& e : t.events) footOff += e.type == GaitEventType::FootOff;
   EXPECT_EQ(footOff, 3);
+}
+
+// The Schreiber-Moissenet files keep the subject's measures in a SUBJECT group (LABELS, UNITS,
+// VALUES): the stature is read (metres there), and a value that is no person's stature in its
+// unit is left out with a warning.
+TEST(C3dSubject, TheRecordedStatureIsReadAndAnAbsurdOneWarns) {
+  EW_REQUIRE_SHARED_DATA();
+  const auto file = schreiber() / "2014001/2014001_C4_05.c3d";
+  const RawTrial t = readC3d(file);
+  ASSERT_TRUE(t.subjectStatureMm.has_value());
+  EXPECT_NEAR(*t.subjectStatureMm, 1655.0, 0.01);
+  EXPECT_FALSE(readC3d(schreiber() / "2014001/2014001_ST.c3d").subjectStatureMm.has_value());
+
+  // The same file with its height (1.655 m, the fourth of six floats) made 1655 "m".
+  std::vector<std::uint8_t> bytes = readFileBytes(file);
+  const float height = 1.655f, absurd = 1655.0f;
+  std::uint8_t from[4], to[4];
+  std::memcpy(from, &height, 4);
+  std::memcpy(to, &absurd, 4);
+  const auto at = std::search(bytes.begin(), bytes.end(), std::begin(from), std::end(from));
+  ASSERT_NE(at, bytes.end());
+  std::copy(std::begin(to), std::end(to), at);
+  const RawTrial patched = parseC3d(bytes, "patched.c3d");
+  EXPECT_FALSE(patched.subjectStatureMm.has_value());
+  EXPECT_TRUE(hasWarningContaining(patched, "not a person's stature")) << patched.warnings.size();
 }
 
 TEST(C3dSchreiber, EveryTrialLoadsComplete) {

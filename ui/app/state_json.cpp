@@ -148,7 +148,7 @@ nlohmann::json clipJson(const AppState& s) {
               {"reprojection_rms_px", f.reprojectionRmsPx},
               {"outlier_samples", f.outlierSamples},
               {"residual_rms_px", residuals},
-              {"head_height_m", f.headHeightMm / 1000.0},
+              {"head_height_m", f.headHeightMm / 1000.0}, {"stature_m", f.statureMm / 1000.0},
               {"speed_mps", f.speedMps},
               {"stride_hz", f.strideHz},
               {"stride_length_m", f.strideLengthM},

@@ -20,7 +20,8 @@ std::string formatted(const char* format, double value) {
 std::vector<MetricItem> clipItems(const AppState& s) {
   const ClipReconstruction& rec = s.clip->rec;
   const CameraFit& f = rec.fit;
-  return {{"height  head above ankles", formatted("%.2f m", f.headHeightMm / 1000.0), ""},
+  return {{"stature  est.", formatted("%.2f m", f.statureMm / 1000.0),
+           formatted("head %.2f m", f.headHeightMm / 1000.0)},
           {"speed", formatted("%.2f m/s", f.speedMps), rec.trial.rateAssumed ? "(30 fps?)" : ""},
           {"stride length", formatted("%.2f m", f.strideLengthM), formatted("%.2f Hz", f.strideHz)},
           {"cadence  steps", formatted("%.0f /min", f.cadenceStepsPerMin), ""},
