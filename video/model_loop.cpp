@@ -24,11 +24,8 @@ ModelLoopResult trackWithModel(VideoSource& video, const Keyframes& keyframes,
     ClipReconstruction fit;
     try {
       KeypointTrial trial = keypointTrialOf(result.track, video.info().file);
-      // The tracker keeps the trunk where it loses the crossing feet: their strikes can read
-      // as twice the steps, the trunk's bob does not.
       CameraFitOptions fitOptions;
-      fitOptions.strideHzHint = trunkBobStrideHz(trial);
-      fitOptions.holdStrideHz = fitOptions.strideHzHint.has_value();
+      holdTheTrunksStride(trial, fitOptions);
       fit = reconstructKeypointTrial(model, std::move(trial), fitOptions);
     } catch (const Error& e) {
       result.stoppedBecause = e.what();

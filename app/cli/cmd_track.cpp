@@ -234,6 +234,7 @@ int runTrack(const TrackArgs& a) {
   c.input = info.file + " (tracked)";
   c.out = a.reconstruct;
   c.modelName = defaultRealModelName();
+  c.strideFromTrunk = true;
   return runReconstructCamera(defaultRealModel(), c, keypointTrialOf(track, info.file));
 }
 

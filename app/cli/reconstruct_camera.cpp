@@ -75,7 +75,8 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
           {"cadence_steps_per_min", fit.cadenceStepsPerMin},
           {"speed_mps", fit.speedMps},
           {"stride_length_m", fit.strideLengthM},
-          {"head_height_m", fit.headHeightMm / 1000.0}, {"stature_m", fit.statureMm / 1000.0},
+          {"head_height_m", fit.headHeightMm / 1000.0},
+          {"stature_m", fit.statureMm / 1000.0},
           {"k", std::vector<double>(fit.k.data(), fit.k.data() + fit.k.size())},
           {"joints_model_estimated", unseen},
           {"minima", startsJson(fit)},
@@ -103,7 +104,8 @@ void printSummary(const json& r) {
             << std::setprecision(0) << r["cadence_steps_per_min"].get<double>()
             << " steps/min), speed " << std::setprecision(2) << r["speed_mps"].get<double>()
             << " m/s, stride length " << r["stride_length_m"].get<double>() << " m, head height "
-            << r["head_height_m"].get<double>() << " m";
+            << r["head_height_m"].get<double>() << " m (stature about "
+            << r["stature_m"].get<double>() << " m)";
   if (r["rate_assumed"].get<bool>())
     std::cerr << " (at an assumed " << r["rate_hz"].get<double>() << " fps: give --fps)";
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
@@ -200,8 +202,10 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a, Key
   KeypointOptions k;
   std::string focalSource;
   const std::optional<CalibratedCamera> calibration = calibrationOf(a);
-  const CameraFitOptions o = fitOptionsOf(model, a, calibration, k, focalSource);
+  CameraFitOptions o = fitOptionsOf(model, a, calibration, k, focalSource);
   const json lens = undistorted(a, calibration, joints);
+  if (a.strideFromTrunk && holdTheTrunksStride(joints, o))
+    std::cerr << "stride held at the trunk's bob: " << *o.strideHzHint << " Hz\n";
   return fitAndReport(model, a, std::move(joints), o, focalSource, lens);
 }
 

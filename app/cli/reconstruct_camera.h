@@ -17,8 +17,9 @@ struct CameraArgs {
   std::optional<double> alphaDeg, elevationDeg;  // known: held, not estimated
   std::string camera, cameraName;                // a calibration file and its camera
   bool json = false;
-  bool orthographic = false;    // scaled orthography instead of estimating the focal length
-  bool detectorOffsets = true;  // allow for the layout's detector offsets (KeypointLayout)
+  bool orthographic = false;     // scaled orthography instead of estimating the focal length
+  bool detectorOffsets = true;   // allow for the layout's detector offsets (KeypointLayout)
+  bool strideFromTrunk = false;  // a tracker's joints: hold the trunk's bob as the stride
 };
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args);

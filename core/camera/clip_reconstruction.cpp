@@ -12,7 +12,8 @@ namespace ew {
 
 namespace {
 
-std::array<double, kJointCount> residualRms(const Eigen::MatrixXd& reprojected, const Eigen::MatrixXd& observed) {
+std::array<double, kJointCount> residualRms(const Eigen::MatrixXd& reprojected,
+                                            const Eigen::MatrixXd& observed) {
   std::array<double, kJointCount> rms{};
   for (int j = 0; j < kJointCount; ++j) {
     double sum = 0.0;
@@ -24,24 +25,29 @@ std::array<double, kJointCount> residualRms(const Eigen::MatrixXd& reprojected, 
       sum += du * du + dv * dv;
       ++n;
     }
-    rms[static_cast<std::size_t>(j)] = n > 0 ? std::sqrt(sum / n) : std::numeric_limits<double>::quiet_NaN();
+    rms[static_cast<std::size_t>(j)] =
+        n > 0 ? std::sqrt(sum / n) : std::numeric_limits<double>::quiet_NaN();
   }
   return rms;
 }
 
 }  // namespace
 
-ClipReconstruction reconstructKeypointClip(const EigenwalkerModel& model, const std::filesystem::path& input,
-                                           const KeypointOptions& keypointOptions, CameraFitOptions fitOptions) {
+ClipReconstruction reconstructKeypointClip(const EigenwalkerModel& model,
+                                           const std::filesystem::path& input,
+                                           const KeypointOptions& keypointOptions,
+                                           CameraFitOptions fitOptions) {
   if (fitOptions.file.empty()) fitOptions.file = input.string();
-  return reconstructKeypointTrial(model, readKeypointTrial(input, keypointOptions), std::move(fitOptions));
+  return reconstructKeypointTrial(model, readKeypointTrial(input, keypointOptions),
+                                  std::move(fitOptions));
 }
 
 ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, KeypointTrial trial,
                                             CameraFitOptions fitOptions) {
   ClipReconstruction c;
   c.trial = std::move(trial);
-  c.gait = imageGaitCycles(c.trial);
+  c.gait =
+      imageGaitCycles(c.trial, fitOptions.holdStrideHz ? fitOptions.strideHzHint : std::nullopt);
   if (!fitOptions.strideHzHint) fitOptions.strideHzHint = c.gait.strideHz;
   if (fitOptions.file.empty()) fitOptions.file = c.trial.file;
   c.fit = reconstructDetectedWalker(model, c.trial, fitOptions);
@@ -52,13 +58,22 @@ ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, Keypo
   return c;
 }
 
+bool holdTheTrunksStride(const KeypointTrial& trial, CameraFitOptions& fitOptions) {
+  const std::optional<double> bob = trunkBobStrideHz(trial);
+  if (!bob) return false;
+  fitOptions.strideHzHint = bob;
+  fitOptions.holdStrideHz = true;
+  return true;
+}
+
 Eigen::Vector3d walkerOriginFromLookAt(const WalkCamera& camera, double timeS) {
   if (camera.model == CameraModel::ScaledOrthographic) return {0.0, camera.speedMmS * timeS, 0.0};
   return {0.0, camera.startOffsetMm + camera.speedMmS * timeS, -camera.lookAtHeightMm};
 }
 
 Eigen::Vector3d cameraFromLookAt(const WalkCamera& camera, double orthographicDistanceMm) {
-  const double d = camera.model == CameraModel::Pinhole ? camera.distanceMm : orthographicDistanceMm;
+  const double d =
+      camera.model == CameraModel::Pinhole ? camera.distanceMm : orthographicDistanceMm;
   const double a = degToRad(camera.alphaDeg), e = degToRad(camera.elevationDeg);
   // The camera looks along the depth axis (−sin α, cos α, 0) tilted down by ε: it stands at
   // depth −D cos ε and height D sin ε from the look-at point (docs/CAMERA.md).

@@ -18,8 +18,8 @@ struct ClipReconstruction {
   KeypointTrial trial;
   ImageGait gait;
   CameraFit fit;
-  Eigen::VectorXd timesS;         // T: each input frame's time
-  Eigen::MatrixXd framesMm;       // T × 45: the walker at each input frame (SPEC §2 canonical frame)
+  Eigen::VectorXd timesS;    // T: each input frame's time
+  Eigen::MatrixXd framesMm;  // T × 45: the walker at each input frame (SPEC §2 canonical frame)
   Eigen::MatrixXd reprojectedPx;  // T × 30: the 3D walker through the camera, pixels, y down
   // Per joint, RMS over the frames that see it of |reprojected − input| (px); NaN if never seen.
   std::array<double, kJointCount> residualRmsPx{};
@@ -29,11 +29,19 @@ struct ClipReconstruction {
 // unless the caller gives one (the model loop's trunk bob); `fitOptions.file` names
 // the input in errors when left empty. Throws what the reader, the gait finder and the fit
 // throw (typed errors naming the file).
-ClipReconstruction reconstructKeypointClip(const EigenwalkerModel& model, const std::filesystem::path& input,
-                                           const KeypointOptions& keypointOptions, CameraFitOptions fitOptions);
+ClipReconstruction reconstructKeypointClip(const EigenwalkerModel& model,
+                                           const std::filesystem::path& input,
+                                           const KeypointOptions& keypointOptions,
+                                           CameraFitOptions fitOptions);
 // The same from a trial already read (a joint tracker's, core/keypoints trialFromJoints).
 ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, KeypointTrial trial,
                                             CameraFitOptions fitOptions);
+
+// For a joint tracker's output: the stride frequency from the trunk's bob, held
+// (core/keypoints/image_gait.h trunkBobStrideHz). A tracker keeps the trunk where it loses
+// the crossing feet, whose strikes can read as twice the steps or none; with no clear bob the
+// options are left as they are (the feet's strikes). Returns whether it held a stride.
+bool holdTheTrunksStride(const KeypointTrial& trial, CameraFitOptions& fitOptions);
 
 // Where the walker's canonical origin stands at time t relative to the camera's look-at point
 // (docs/CAMERA.md): (0, y0 + v t, −h); orthography has no y0 or h (zero).

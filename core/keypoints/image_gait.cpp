@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <vector>
 #include <sstream>
+#include <vector>
 
 #include "core/common/errors.h"
 #include "core/gait/gait_cycles.h"
@@ -55,15 +55,16 @@ std::string fixed1(double v) {
 
 }  // namespace
 
-ImageGait imageGaitCycles(const KeypointTrial& t) {
+ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStrideHz) {
   ImageGait g;
   const double height = std::max(t.people.at(static_cast<std::size_t>(t.chosen)).sizePx, 1.0);
   const Eigen::Vector2d travel = pelvisAtEnd(t, true) - pelvisAtEnd(t, false);
   g.travelPx = travel.norm();
   if (!(g.travelPx >= kMinImageTravelOfHeight * height))
-    notWalking(t, "the pelvis crosses " + fixed1(g.travelPx / height) +
-                      " of the walker's height in the image (walking across or towards the camera: > " +
-                      fixed1(kMinImageTravelOfHeight) + ")");
+    notWalking(
+        t, "the pelvis crosses " + fixed1(g.travelPx / height) +
+               " of the walker's height in the image (walking across or towards the camera: > " +
+               fixed1(kMinImageTravelOfHeight) + ")");
   g.direction = travel / g.travelPx;
   // The leads as the forward coordinate of canonical frames, so the 3D strike finder applies.
   Eigen::MatrixXd frames = Eigen::MatrixXd::Zero(t.jointsPx.rows(), 3 * kJointCount);
@@ -73,28 +74,31 @@ ImageGait imageGaitCycles(const KeypointTrial& t) {
     fillAllGapsLinearly(frames.col(3 * index(j) + 1));
   }
   for (Joint ankle : {Joint::RAnkle, Joint::LAnkle}) {
-    const Eigen::VectorXd lead = frames.col(3 * index(ankle) + 1) - frames.col(3 * index(Joint::Pelvis) + 1);
+    const Eigen::VectorXd lead =
+        frames.col(3 * index(ankle) + 1) - frames.col(3 * index(Joint::Pelvis) + 1);
     double lo = INFINITY, hi = -INFINITY;
     for (double x : lead) {
       if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
     }
     if (!(hi - lo >= kMinImageAnkleLeadOfHeight * height))
-      notWalking(t, std::string("the ") + (ankle == Joint::RAnkle ? "right" : "left") + " ankle swings " +
+      notWalking(t, std::string("the ") + (ankle == Joint::RAnkle ? "right" : "left") +
+                        " ankle swings " +
                         fixed1(std::isfinite(hi - lo) ? (hi - lo) / height : 0.0) +
                         " of the walker's height about the pelvis (walking: > " +
                         fixed1(kMinImageAnkleLeadOfHeight) + ")");
   }
   g.rightStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Right);
   g.leftStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Left);
-  g.strideHz = strideHz(g.rightStrikesS, g.leftStrikesS);
+  g.strideHz = heldStrideHz.value_or(strideHz(g.rightStrikesS, g.leftStrikesS));
   if (g.strideHz < kMinStrideHz || g.strideHz > kMaxStrideHz)
-    notWalking(t, "no regular foot strikes (" + std::to_string(g.rightStrikesS.size()) + " right, " +
-                      std::to_string(g.leftStrikesS.size()) + " left at " + fixed1(t.rateHz) +
-                      " fps; give the video's --fps if it is not that)");
+    notWalking(t, "no regular foot strikes (" + std::to_string(g.rightStrikesS.size()) +
+                      " right, " + std::to_string(g.leftStrikesS.size()) + " left at " +
+                      fixed1(t.rateHz) + " fps; give the video's --fps if it is not that)");
   g.cycles = static_cast<double>(t.frameCount) / t.rateHz * g.strideHz;
   if (g.cycles < 1.0)
     throw Error(ErrorKind::BadData, t.file, "",
-                "shorter than one gait cycle (" + fixed1(g.cycles) + " cycles): at least one full cycle is needed");
+                "shorter than one gait cycle (" + fixed1(g.cycles) +
+                    " cycles): at least one full cycle is needed");
   return g;
 }
 
@@ -116,8 +120,11 @@ std::optional<BobSamples> bobSamples(const Eigen::MatrixXd& px, Joint joint, dou
   const Eigen::Index col = 2 * index(joint) + 1;
   std::vector<double> ts, vs;
   for (Eigen::Index f = 0; f < px.rows(); ++f)
-    if (std::isfinite(px(f, col))) ts.push_back(static_cast<double>(f) / rateHz), vs.push_back(px(f, col));
-  if (static_cast<double>(ts.size()) < kBobSeenShare * static_cast<double>(px.rows()) || ts.size() < 8) return std::nullopt;
+    if (std::isfinite(px(f, col)))
+      ts.push_back(static_cast<double>(f) / rateHz), vs.push_back(px(f, col));
+  if (static_cast<double>(ts.size()) < kBobSeenShare * static_cast<double>(px.rows()) ||
+      ts.size() < 8)
+    return std::nullopt;
   BobSamples b{Eigen::Map<Eigen::VectorXd>(ts.data(), static_cast<Eigen::Index>(ts.size())),
                Eigen::Map<Eigen::VectorXd>(vs.data(), static_cast<Eigen::Index>(vs.size()))};
   Eigen::MatrixXd line(b.t.size(), 2);
@@ -143,8 +150,8 @@ double explained(const BobSamples& b, double f) {
 std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minShare) {
   std::vector<BobSamples> paths;
   double variance = 0.0;
-  for (Joint j : {Joint::Head, Joint::Sternum, Joint::Pelvis, Joint::RHip, Joint::LHip, Joint::RShoulder,
-                  Joint::LShoulder}) {
+  for (Joint j : {Joint::Head, Joint::Sternum, Joint::Pelvis, Joint::RHip, Joint::LHip,
+                  Joint::RShoulder, Joint::LShoulder}) {
     const auto b = bobSamples(trial.jointsPx, j, trial.rateHz);
     if (!b) continue;
     variance += b->v.squaredNorm();

@@ -21,16 +21,19 @@ inline constexpr double kMinImageAnkleLeadOfHeight = 0.08;
 
 struct ImageGait {
   Eigen::Vector2d direction = Eigen::Vector2d::Zero();  // progression in the image, unit
-  double travelPx = 0.0;                                 // pelvis, first to last tenth
-  std::vector<double> rightStrikesS, leftStrikesS;       // seconds from frame 0
+  double travelPx = 0.0;                                // pelvis, first to last tenth
+  std::vector<double> rightStrikesS, leftStrikesS;      // seconds from frame 0
   double strideHz = 0.0;
-  double cycles = 0.0;                                   // clip duration × stride frequency
+  double cycles = 0.0;  // clip duration × stride frequency
 };
 
 // Throws Error(BadData) naming the file with "not walking: …" when the pelvis does not
 // cross the image, an ankle does not swing, or the strikes give no stride frequency in
 // kMinStrideHz-kMaxStrideHz, and "shorter than one gait cycle" below one cycle.
-ImageGait imageGaitCycles(const KeypointTrial& trial);
+// `heldStrideHz`: the stride frequency known otherwise (the trunk's bob, below), which then
+// stands for the strikes' (a tracker's lost ankles may strike irregularly or not at all).
+ImageGait imageGaitCycles(const KeypointTrial& trial,
+                          std::optional<double> heldStrideHz = std::nullopt);
 
 // The stride frequency from the trunk's bob: head, sternum, pelvis, hips and shoulders rise
 // and fall twice a stride (once a step), in any view. The vertical image paths of those seen
@@ -38,8 +41,8 @@ ImageGait imageGaitCycles(const KeypointTrial& trial);
 // frequencies 1.0 … 3.2 Hz (strides of 0.5 … 1.6 Hz, 0.005 Hz apart); the frequency whose fit
 // takes the largest share of their summed variance, halved. Unset when fewer than two such
 // joints, the clip is shorter than two steps at that frequency, or the best fit takes less
-// than `minShare` of the variance (no clear bob). For a joint tracker's output, whose trunk holds where the feet are lost
-// (docs/TRACKING.md, "The model loop").
+// than `minShare` of the variance (no clear bob). For a joint tracker's output, whose trunk holds
+// where the feet are lost (docs/TRACKING.md, "The model loop").
 std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minShare = 0.3);
 
 }  // namespace ew

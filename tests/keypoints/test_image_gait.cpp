@@ -7,8 +7,8 @@
 
 #include <cmath>
 #include <fstream>
-#include <random>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <string>
 
 #include "core/camera/walk_camera.h"
@@ -51,7 +51,8 @@ Clip meanWalkerClip(const std::string& stem, double alphaDeg, double speedMmS, d
   camera.cyPx = 1000;
   camera.speedMmS = speedMmS;
   clip.folder = test::makeTempDir(stem);
-  writeOpenPoseBody25(clip.folder, {{projectWalk(synthesizeFrames(model.mean, omega, 0.0, t), t, camera), {}}});
+  writeOpenPoseBody25(clip.folder,
+                      {{projectWalk(synthesizeFrames(model.mean, omega, 0.0, t), t, camera), {}}});
   return clip;
 }
 
@@ -67,7 +68,8 @@ KeypointOptions at30Fps() {
 TEST(ImageGait, StrideFrequencyOfAWalkerCrossingTheImage) {
   for (const double alpha : {90.0, 45.0}) {
     SCOPED_TRACE(alpha);
-    const Clip clip = meanWalkerClip("gait_" + std::to_string(static_cast<int>(alpha)), alpha, 1300, 4.0);
+    const Clip clip =
+        meanWalkerClip("gait_" + std::to_string(static_cast<int>(alpha)), alpha, 1300, 4.0);
     const KeypointTrial t = readKeypointTrial(clip.folder, at30Fps());
     const ImageGait g = imageGaitCycles(t);
     EXPECT_NEAR(g.strideHz, clip.strideHz, 0.03 * clip.strideHz);
@@ -84,12 +86,14 @@ TEST(ImageGait, StrideFrequencyOfAWalkerCrossingTheImage) {
 TEST(ImageGait, TrunkBobGivesTheStrideFrequency) {
   for (const double alpha : {0.0, 45.0, 90.0}) {
     SCOPED_TRACE(alpha);
-    const Clip clip = meanWalkerClip("bob_" + std::to_string(static_cast<int>(alpha)), alpha, 1300, 4.0);
+    const Clip clip =
+        meanWalkerClip("bob_" + std::to_string(static_cast<int>(alpha)), alpha, 1300, 4.0);
     KeypointTrial t = readKeypointTrial(clip.folder, at30Fps());
     const auto bob = trunkBobStrideHz(t);
     ASSERT_TRUE(bob.has_value());
     EXPECT_NEAR(*bob, clip.strideHz, 0.02 * clip.strideHz);
-    for (Joint j : {Joint::RAnkle, Joint::LAnkle}) t.jointsPx.middleCols(2 * index(j), 2).setConstant(std::nan(""));
+    for (Joint j : {Joint::RAnkle, Joint::LAnkle})
+      t.jointsPx.middleCols(2 * index(j), 2).setConstant(std::nan(""));
     EXPECT_NEAR(trunkBobStrideHz(t).value_or(0.0), clip.strideHz, 0.02 * clip.strideHz);
   }
   const Clip still = meanWalkerClip("bob_still", 90.0, 0.0, 3.0);
@@ -99,6 +103,28 @@ TEST(ImageGait, TrunkBobGivesTheStrideFrequency) {
   std::normal_distribution<double> noise(0.0, 1.5);  // a detector's jitter on someone standing
   for (Eigen::Index i = 0; i < t.jointsPx.size(); ++i) t.jointsPx.data()[i] += noise(rng);
   EXPECT_FALSE(trunkBobStrideHz(t).has_value());
+}
+
+// A stride frequency known otherwise (the trunk's bob of a tracked clip) stands for feet that
+// do not strike: here each ankle slides once from behind the pelvis to before it, as a
+// tracker's lost ankle may. The walking checks still apply.
+TEST(ImageGait, AHeldStrideStandsForFeetThatDoNotStrike) {
+  const Clip clip = meanWalkerClip("gait_held", 90.0, 1300, 4.0);
+  KeypointTrial t = readKeypointTrial(clip.folder, at30Fps());
+  const auto n = t.jointsPx.rows();
+  for (Joint j : {Joint::RAnkle, Joint::LAnkle})
+    for (Eigen::Index f = 0; f < n; ++f)
+      t.jointsPx(f, 2 * index(j)) = t.jointsPx(f, 2 * index(Joint::Pelvis)) - 150.0 +
+                                    300.0 * static_cast<double>(f) / static_cast<double>(n - 1);
+  EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(t); }, ErrorKind::BadData,
+                                {"no regular foot strikes"}));
+  const ImageGait g = imageGaitCycles(t, clip.strideHz);
+  EXPECT_EQ(g.strideHz, clip.strideHz);
+  EXPECT_NEAR(g.cycles, static_cast<double>(t.frameCount) / t.rateHz * clip.strideHz, 1e-9);
+  const Clip spot = meanWalkerClip("gait_held_spot", 90.0, 0.0, 3.0);
+  const KeypointTrial still = readKeypointTrial(spot.folder, at30Fps());
+  EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(still, spot.strideHz); }, ErrorKind::BadData,
+                                {"not walking: the pelvis crosses"}));
 }
 
 TEST(ImageGait, WalkingOnTheSpotIsNotWalking) {
@@ -132,8 +158,9 @@ TEST(ImageGait, InfoSummarisesKeypointFolders) {
 // The CLI: `info --json --rate 30 FOLDER` on the walking clip, exit 0.
 TEST(ImageGait, CliInfoReadsAnOpenPoseFolder) {
   const Clip clip = meanWalkerClip("gait_cli", 90.0, 1300, 4.0);
-  const auto run = test::runProgram(EW_CLI_PATH, {"info", "--json", "--rate", "30", clip.folder.string()},
-                                    test::makeTempDir("gait_cli_run"));
+  const auto run =
+      test::runProgram(EW_CLI_PATH, {"info", "--json", "--rate", "30", clip.folder.string()},
+                       test::makeTempDir("gait_cli_run"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const auto begin = run.output.find('[');
   ASSERT_NE(begin, std::string::npos) << run.output;
@@ -146,7 +173,8 @@ TEST(ImageGait, CliInfoReadsAnOpenPoseFolder) {
 
 TEST(ImageGait, Pose2SimBalancingIsNotWalking) {
   EW_REQUIRE_SHARED_DATA();
-  const auto inputs = collectKeypointInputs({test::sharedDataDir() / "pose2sim-balancing" / "pose"});
+  const auto inputs =
+      collectKeypointInputs({test::sharedDataDir() / "pose2sim-balancing" / "pose"});
   ASSERT_EQ(inputs.size(), 4u);
   for (const auto& p : inputs) {
     const TrialSummary s = summarizeKeypoints(p);

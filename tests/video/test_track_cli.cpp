@@ -95,8 +95,9 @@ TEST_F(TrackCli, RefusesAnUnknownTrackerAndAKeyframeFrameTheFileLacks) {
 }
 
 // `--reconstruct` fits the track itself, as the viewer and the model loop do
-// (keypointTrialOf), not the OpenPose files it writes: the walk it writes is the walk the
-// same fit finds in-process. Three gait cycles, keyframes every second.
+// (keypointTrialOf, the stride held at the trunk's bob), not the OpenPose files it writes: the
+// walk it writes is the walk the same fit finds in-process. Three gait cycles, keyframes
+// every second.
 TEST_F(TrackCli, ReconstructsTheTrackAsTheViewerFitsIt) {
   PopulationOptions o;
   o.count = 1;
@@ -117,10 +118,11 @@ TEST_F(TrackCli, ReconstructsTheTrackAsTheViewerFitsIt) {
 
   VideoSource video(root_ / "walk3.avi");
   const JointTrack track = trackJoints(video, keys);
+  const KeypointTrial joints = keypointTrialOf(track, (root_ / "walk3.avi").string());
   CameraFitOptions asTheViewer;
   asTheViewer.estimator = {Estimator::Map, defaultSigma2Mm2(defaultRealModel())};
-  const ClipReconstruction fit = reconstructKeypointTrial(
-      defaultRealModel(), keypointTrialOf(track, (root_ / "walk3.avi").string()), asTheViewer);
+  EXPECT_TRUE(holdTheTrunksStride(joints, asTheViewer)) << "a walker tracked this well bobs clearly";
+  const ClipReconstruction fit = reconstructKeypointTrial(defaultRealModel(), joints, asTheViewer);
   EXPECT_NEAR(cliAlphaDeg, fit.fit.camera.alphaDeg, 0.01);
 }
 

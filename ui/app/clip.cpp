@@ -38,16 +38,22 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   o.focalPx = settings.focalPx;
   o.alphaDeg = settings.alphaDeg;
   o.elevationDeg = settings.elevationDeg;
-  ClipResult r{settings, model,
+  // A tracker's joints: its trunk holds where the crossing feet are lost (docs/TRACKING.md).
+  if (settings.tracked) holdTheTrunksStride(*settings.tracked, o);
+  ClipResult r{settings,
+               model,
                settings.tracked ? reconstructKeypointTrial(*model.model, *settings.tracked, o)
                                 : reconstructKeypointClip(*model.model, settings.path, k, o),
-               0.0, {}, {}};
+               0.0,
+               {},
+               {}};
   extend(r.keypointBounds, r.rec.trial.jointsPx);
   r.shownBounds = r.keypointBounds;
   extend(r.shownBounds, r.rec.reprojectedPx);
   // The other people the picker offers, when they stay long enough to be picked.
   for (const PersonTrack& person : r.rec.trial.people)
-    if (10 * person.frames.size() >= static_cast<std::size_t>(r.rec.trial.frameCount)) extend(r.shownBounds, person.jointsPx);
+    if (10 * person.frames.size() >= static_cast<std::size_t>(r.rec.trial.frameCount))
+      extend(r.shownBounds, person.jointsPx);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }
