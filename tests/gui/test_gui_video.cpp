@@ -88,7 +88,8 @@ TEST_F(GuiVideo, WhileMarkingCtrlZUndoesTheKeyframes) {
   ASSERT_TRUE(marked.is_object());
   EXPECT_EQ(undone["undo_steps"].get<int>(), marked["undo_steps"].get<int>() - 1);
   EXPECT_EQ(undone["redo_steps"], 1);
-  EXPECT_EQ(undone["keyframes"].size() + 1, marked["keyframes"].size()) << "frame 30 was a new keyframe";
+  EXPECT_EQ(undone["keyframes"].size() + 1, marked["keyframes"].size())
+      << "frame 30 was a new keyframe";
   EXPECT_EQ(redone["keyframes"], marked["keyframes"]);
 }
 
@@ -167,7 +168,8 @@ TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
 TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideStatureAndProfile) {
   EW_REQUIRE_SHARED_DATA();
   const fs::path clip = sharedDataDir() / "video" / "sports2d-demo" / "demo.mp4";
-  const Keyframes marks = readKeyframes(sourceDir() / "tests" / "data" / "sports2d_demo_keyframes.json");
+  const Keyframes marks =
+      readKeyframes(sourceDir() / "tests" / "data" / "sports2d_demo_keyframes.json");
   const auto k120 = std::find_if(marks.keyframes.begin(), marks.keyframes.end(),
                                  [](const Keyframe& k) { return k.frame == 120; });
   ASSERT_NE(k120, marks.keyframes.end());
@@ -193,9 +195,9 @@ TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideStatureAndProfile) {
   EXPECT_EQ(s["video"]["track"]["background"], "flattened");
   const json fit = s["clip"]["fit"];
   ASSERT_TRUE(fit.is_object()) << s["clip"];
-  std::cout << "sports2d, one keyframe: alpha " << fit["alpha_deg"] << " deg, elevation " << fit["elevation_deg"]
-            << " deg, stride " << fit["stride_hz"] << " Hz, head height " << fit["head_height_m"] << " m, stature "
-            << fit["stature_m"] << " m\n";
+  std::cout << "sports2d, one keyframe: alpha " << fit["alpha_deg"] << " deg, elevation "
+            << fit["elevation_deg"] << " deg, stride " << fit["stride_hz"] << " Hz, head height "
+            << fit["head_height_m"] << " m, stature " << fit["stature_m"] << " m\n";
   EXPECT_GE(fit["stride_hz"].get<double>(), 0.7);  // issue 14's bars
   EXPECT_LE(fit["stride_hz"].get<double>(), 1.3);
   EXPECT_GE(fit["stature_m"].get<double>(), 1.45);
@@ -236,7 +238,8 @@ TEST_F(GuiVideo, FlattensTheStillBackgroundWhenAsked) {
       {{"track_video", {{"first", 0}, {"last", 59}, {"flatten_background", true}}}},
       {{"wait_frames", 2}},
       {{"export_state", path("flattened.json")}},
-      {{"expect_failure", {{"track_video", {{"first", 0}, {"last", 59}, {"flatten_background", "yes"}}}}}},
+      {{"expect_failure",
+        {{"track_video", {{"first", 0}, {"last", 59}, {"flatten_background", "yes"}}}}}},
   });
   const auto file = writeScript(dir, script.dump(2));
   const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
@@ -247,6 +250,32 @@ TEST_F(GuiVideo, FlattensTheStillBackgroundWhenAsked) {
   EXPECT_EQ(video["track"]["background"], "flattened");
 }
 
+// The model loop (Howe, Leventon & Freeman's feedback; the Track section's slider, the
+// script's "model_loop"): the track says how many rounds it ran and the controls say so; an
+// out-of-range count fails the script.
+TEST_F(GuiVideo, RunsTheModelLoopWhenAsked) {
+  const Footage f = writeWalkingFootage(dir);
+  const json script = json::array({
+      {{"open", json::array({f.video.string(), f.keyframes.string()})}},
+      {{"track_video", {{"first", 0}, {"last", -1}, {"model_loop", 2}}}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("looped.json")}},
+      {{"screenshot", path("looped.png")}},
+      {{"expect_failure", {{"track_video", {{"first", 0}, {"last", -1}, {"model_loop", 11}}}}}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json s = state("looped.json");
+  ASSERT_TRUE(s["video"]["track"].is_object()) << s["video"];
+  EXPECT_EQ(s["video"]["model_loop"], 2);
+  EXPECT_EQ(s["video"]["track"]["model_loop"], 2);
+  EXPECT_EQ(s["video"]["track"]["model_loop_fits"], 2) << s["video"]["track"]["model_loop_stopped"];
+  const json fit = s["clip"]["fit"];
+  ASSERT_TRUE(fit.is_object()) << s["clip"];
+  EXPECT_NEAR(fit["stride_hz"].get<double>(), f.strideHz, 0.05 * f.strideHz);
+}
+
 // Issue 14: the exported video of a tracked clip has the footage under the track and the
 // walker drawn back, with the captions (the video's name and frame) burnt in.
 TEST_F(GuiVideo, TheExportedVideoHasTheFootageUnderTheTrackAndCaptions) {
@@ -255,7 +284,8 @@ TEST_F(GuiVideo, TheExportedVideoHasTheFootageUnderTheTrackAndCaptions) {
       {{"open", json::array({f.video.string(), f.keyframes.string()})}},
       {{"track_video", {{"first", 0}, {"last", -1}}}},
       {{"wait_frames", 3}},
-      {{"export_video", {{"path", path("tracked.avi")}, {"cycles", 0.5}, {"width", 1280}, {"height", 720}}}},
+      {{"export_video",
+        {{"path", path("tracked.avi")}, {"cycles", 0.5}, {"width", 1280}, {"height", 720}}}},
   });
   const auto file = writeScript(dir, script.dump(2));
   const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
@@ -287,8 +317,9 @@ TEST_F(GuiVideo, VideoModeHoldsAtTheTeachingSizes) {
                                {{"track_video", {{"first", 0}, {"last", -1}}}},
                                {{"video_frame", 45}}});
     for (const json& step : everyTabStates(dir, "video")) script.push_back(step);
-    const RunResult r = runViewer(dir, std::string("--size ") + c.size + " --ui-scale " + c.scale + " --script " +
-                                           quote(writeScript(dir, script.dump()).string()));
+    const RunResult r =
+        runViewer(dir, std::string("--size ") + c.size + " --ui-scale " + c.scale + " --script " +
+                           quote(writeScript(dir, script.dump()).string()));
     ASSERT_EQ(r.exitCode, 0) << cell << "\n" << r.err;
     for (const auto& tab : drawerTabs())
       expectLayoutHolds(state("video_" + tab + ".json"), cell + ", video, " + tab, {"input"});

@@ -440,6 +440,8 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
 
 }  // namespace
 
+std::shared_ptr<const EigenwalkerModel> modelForTracking(AppState& s) { return clipModel(s).model; }
+
 std::string describePaths(const std::vector<std::filesystem::path>& paths) {
   if (paths.empty()) return "the synthetic default population";
   std::vector<std::string> names;

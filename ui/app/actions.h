@@ -59,7 +59,8 @@ void coefficientsFromWalker(AppState& s);  // explorer starts from the selected 
 ExploreState exploreState(const AppState& s);
 // The explorer's walker = `from` moved by `delta` (the attribute's units) along the axis of
 // `attribute` (coefficients clamped to ±3 SD). Throws std::invalid_argument for an unknown axis.
-void moveAlongAxis(AppState& s, const std::string& attribute, const ExploreState& from, double delta);
+void moveAlongAxis(AppState& s, const std::string& attribute, const ExploreState& from,
+                   double delta);
 // The axis's predictor reading of the explorer's walker.
 double semanticReading(const AppState& s, const std::string& attribute);
 // Moves the walker along the axis by what it takes from its reading to `value`.
@@ -71,7 +72,7 @@ void setPlaying(AppState& s, bool playing);
 void setOverlay(AppState& s, const std::string& name, bool on);
 std::vector<std::string> overlayNames();
 bool overlay(const AppState& s, const std::string& name);  // throws for an unknown name
-void setCamera(AppState& s, const std::string& preset);  // three_quarter, front, side, top
+void setCamera(AppState& s, const std::string& preset);    // three_quarter, front, side, top
 
 // [SECTION] Export (ui/app/export.h). Paths are written atomically.
 // A PNG of the window or of one view, written after the next frames are drawn.
@@ -84,8 +85,10 @@ void cancelVideoExport(AppState& s);
 // The displayed walker (displayedWalkerMotion) as 15-joint CSV / BVH; the model the
 // reconstruction uses (the leave-one-out model of the held-out subject, every component;
 // explore mode: the model of every walker). Throw with a readable message on failure.
-void exportCsv(AppState& s, const std::filesystem::path& path, std::optional<double> cycles = std::nullopt);
-void exportBvh(AppState& s, const std::filesystem::path& path, std::optional<double> cycles = std::nullopt);
+void exportCsv(AppState& s, const std::filesystem::path& path,
+               std::optional<double> cycles = std::nullopt);
+void exportBvh(AppState& s, const std::filesystem::path& path,
+               std::optional<double> cycles = std::nullopt);
 void exportModel(AppState& s, const std::filesystem::path& path);
 // The document, the view settings, the banner and the log as JSON (ui/app/state_json.h), for
 // scripts and tests to check what the viewer holds.
@@ -117,7 +120,8 @@ void exportGaitReport(AppState& s, const std::filesystem::path& path);
 void drop(AppState& s, const std::vector<std::filesystem::path>& paths);
 // Unit ("" = the file's; mm, cm, m, in, cmu) and frame rate (0 = the file's) for one file;
 // takes effect at the next open (reloadWithOverrides reopens the current data).
-void setFileOverride(AppState& s, const std::filesystem::path& file, const std::string& units, double rateHz);
+void setFileOverride(AppState& s, const std::filesystem::path& file, const std::string& units,
+                     double rateHz);
 void reloadWithOverrides(AppState& s);
 // Writes `mapping` (core/mapping/mapping_file.h) to `out` and makes it `file`'s mapping for the
 // next open (a per-file override); `openNow`: opens `file` with it at once. Throws ew::Error
@@ -196,6 +200,10 @@ void setTracker(AppState& s, TrackerKind tracker);
 // Whether the next optical-flow track flattens a fixed camera's still background first
 // (video/static_background.h).
 void setFlattenBackground(AppState& s, bool flatten);
+// Rounds of the model loop the next flow track runs (0-10; std::invalid_argument outside).
+void setModelLoopRounds(AppState& s, int rounds);
+// The model a clip is fitted with, and the model loop guides a track with (throws when none).
+std::shared_ptr<const EigenwalkerModel> modelForTracking(AppState& s);
 // Tracks the range from the keyframes on a worker; when done the track is fitted as a clip.
 void startTracking(AppState& s);
 void cancelTracking(AppState& s);

@@ -4,8 +4,8 @@
 #include <fstream>
 #include <optional>
 #include <set>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
@@ -105,7 +105,8 @@ std::vector<std::filesystem::path> pathList(const ScriptAction& a) {
 
 int wholeNumber(const ScriptAction& a) {
   const double v = number(a);
-  if (v != std::floor(v) || std::abs(v) > 1e9) throw std::invalid_argument("expects a whole number");
+  if (v != std::floor(v) || std::abs(v) > 1e9)
+    throw std::invalid_argument("expects a whole number");
   return static_cast<int>(v);
 }
 
@@ -129,7 +130,8 @@ void markJoints(AppState& s, const ScriptAction& a) {
 void applyClipSettings(AppState& s, const ScriptAction& a) {
   if (!a.argument.is_object() || a.argument.empty())
     throw std::invalid_argument("expects an object of clip settings");
-  auto optionalNumber = [](const nlohmann::json& v, const std::string& key) -> std::optional<double> {
+  auto optionalNumber = [](const nlohmann::json& v,
+                           const std::string& key) -> std::optional<double> {
     if (v.is_null()) return std::nullopt;
     if (!v.is_number()) throw std::invalid_argument(key + " must be a number or null");
     return v.get<double>();
@@ -150,8 +152,9 @@ void applyClipSettings(AppState& s, const ScriptAction& a) {
       if (!v.is_number_integer()) throw std::invalid_argument("person must be a whole number");
       actions::setClipPerson(s, v.get<int>());
     } else {
-      throw std::invalid_argument("unknown clip setting \"" + key +
-                                  "\" (known: focal_px, azimuth_deg, elevation_deg, layout, fps, person)");
+      throw std::invalid_argument(
+          "unknown clip setting \"" + key +
+          "\" (known: focal_px, azimuth_deg, elevation_deg, layout, fps, person)");
     }
   }
 }
@@ -166,11 +169,13 @@ std::vector<ScriptAction> parseScript(const nlohmann::json& script, const std::s
     ++position;
     if (!item.is_object() || item.size() != 1)
       throw std::runtime_error(name + ": action " + std::to_string(position) +
-                               ": each action is an object with exactly one key, got " + item.dump());
+                               ": each action is an object with exactly one key, got " +
+                               item.dump());
     const auto entry = item.begin();
     const std::string key = entry.key();
     if (!knownActions().contains(key))
-      throw std::runtime_error(name + ": action " + std::to_string(position) + ": unknown action \"" + key + "\"");
+      throw std::runtime_error(name + ": action " + std::to_string(position) +
+                               ": unknown action \"" + key + "\"");
     actions.push_back({key, entry.value(), position});
     if (key == "expect_failure") {
       try {
@@ -295,11 +300,13 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::setCoefficient(s, a.argument[0].get<int>() - 1, a.argument[1].get<double>());
   } else if (n == "set_semantic") {
     // {"attribute": NAME, "value": V}: the explorer's walker moved along the attribute's axis.
-    if (!a.argument.is_object() || !a.argument.contains("attribute") || !a.argument["attribute"].is_string() ||
-        !a.argument.contains("value") || !a.argument["value"].is_number())
+    if (!a.argument.is_object() || !a.argument.contains("attribute") ||
+        !a.argument["attribute"].is_string() || !a.argument.contains("value") ||
+        !a.argument["value"].is_number())
       throw std::invalid_argument(R"(expects {"attribute": NAME, "value": V})");
     s.derived.update(s.doc);
-    actions::setSemanticValue(s, a.argument["attribute"].get<std::string>(), a.argument["value"].get<double>());
+    actions::setSemanticValue(s, a.argument["attribute"].get<std::string>(),
+                              a.argument["value"].get<double>());
   } else if (n == "set_phase") {
     actions::setPhase(s, number(a));
   } else if (n == "play") {
@@ -340,7 +347,8 @@ void applyAction(AppState& s, const ScriptAction& a) {
       if (!a.argument["units"].is_string()) throw std::invalid_argument("units must be a string");
       units = a.argument["units"].get<std::string>();
     }
-    actions::setFileOverride(s, a.argument["file"].get<std::string>(), units, numberField(a.argument, "rate", 0.0));
+    actions::setFileOverride(s, a.argument["file"].get<std::string>(), units,
+                             numberField(a.argument, "rate", 0.0));
   } else if (n == "export_data_summary") {
     actions::exportDataSummary(s, text(a));
   } else if (n == "export_state") {
@@ -357,7 +365,8 @@ void applyAction(AppState& s, const ScriptAction& a) {
   } else if (n == "key") {
     const auto chord = parseKeyChord(text(a));
     if (!chord || !applyShortcut(s, *chord))
-      throw std::invalid_argument("no key \"" + text(a) + "\" (the keys: docs/VIEWER.md, \"Keyboard\")");
+      throw std::invalid_argument("no key \"" + text(a) +
+                                  "\" (the keys: docs/VIEWER.md, \"Keyboard\")");
   } else if (n == "tour") {
     const std::string t = text(a);
     if (t == "start") {
@@ -397,22 +406,30 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   if (n == "expect_failure") {
     applyExpectingFailure(s, a);
   } else if (n == "track_video") {
-    // {"first": F, "last": L[, "tracker": "flow" | "appearance"][, "flatten_background": B]}
+    // {"first": F, "last": L[, "tracker": "flow" | "appearance"][, "flatten_background": B]
+    //  [, "model_loop": N]}
     // (L -1: the end): tracked
     // and fitted in the background; a track or fit that fails fails the script like a failed
     // open.
     const auto& arg = a.argument;
-    if (!arg.is_object() || !arg.contains("first") || !arg["first"].is_number_integer() || !arg.contains("last") ||
-        !arg["last"].is_number_integer())
+    if (!arg.is_object() || !arg.contains("first") || !arg["first"].is_number_integer() ||
+        !arg.contains("last") || !arg["last"].is_number_integer())
       throw std::invalid_argument(R"(expects {"first": F, "last": L})");
     actions::setTrackRange(s, arg["first"].get<int>(), arg["last"].get<int>());
     if (arg.contains("tracker")) {
-      if (!arg["tracker"].is_string()) throw std::invalid_argument(R"("tracker" is "flow" or "appearance")");
+      if (!arg["tracker"].is_string())
+        throw std::invalid_argument(R"("tracker" is "flow" or "appearance")");
       actions::setTracker(s, trackerFromName(arg["tracker"].get<std::string>()));
     }
     if (arg.contains("flatten_background")) {
-      if (!arg["flatten_background"].is_boolean()) throw std::invalid_argument(R"("flatten_background" is true or false)");
+      if (!arg["flatten_background"].is_boolean())
+        throw std::invalid_argument(R"("flatten_background" is true or false)");
       actions::setFlattenBackground(s, arg["flatten_background"].get<bool>());
+    }
+    if (arg.contains("model_loop")) {
+      if (!arg["model_loop"].is_number_integer())
+        throw std::invalid_argument(R"("model_loop" is a number of rounds, 0-10)");
+      actions::setModelLoopRounds(s, arg["model_loop"].get<int>());
     }
     failuresBefore_ = s.jobs.failures;
     checkLoad_ = true;
@@ -461,19 +478,23 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   } else if (n == "export_png") {
     if (a.argument.is_string()) {
       actions::requestPng(s, a.argument.get<std::string>(), CaptureView::Window);
-    } else if (a.argument.is_object() && a.argument.contains("path") && a.argument["path"].is_string()) {
+    } else if (a.argument.is_object() && a.argument.contains("path") &&
+               a.argument["path"].is_string()) {
       const std::string view = a.argument.contains("view") && a.argument["view"].is_string()
                                    ? a.argument["view"].get<std::string>()
                                    : std::string("window");
-      actions::requestPng(s, a.argument["path"].get<std::string>(), actions::captureViewFromName(view));
+      actions::requestPng(s, a.argument["path"].get<std::string>(),
+                          actions::captureViewFromName(view));
     } else {
-      throw std::invalid_argument(R"(expects a path or {"path": P, "view": "window"|"input"|"reconstruction"})");
+      throw std::invalid_argument(
+          R"(expects a path or {"path": P, "view": "window"|"input"|"reconstruction"})");
     }
     exportFailuresBefore_ = s.exports.failures;
     checkExport_ = true;
   } else if (n == "export_video") {
     if (!a.argument.is_object() || !a.argument.contains("path") || !a.argument["path"].is_string())
-      throw std::invalid_argument(R"(expects {"path": P, "cycles": N, "fps": F, "width": W, "height": H, "captions": B})");
+      throw std::invalid_argument(
+          R"(expects {"path": P, "cycles": N, "fps": F, "width": W, "height": H, "captions": B})");
     VideoSettings v;
     v.path = a.argument["path"].get<std::string>();
     v.cycles = numberField(a.argument, "cycles", v.cycles);
@@ -481,7 +502,8 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
     v.width = static_cast<int>(numberField(a.argument, "width", v.width));
     v.height = static_cast<int>(numberField(a.argument, "height", v.height));
     if (a.argument.contains("captions")) {
-      if (!a.argument["captions"].is_boolean()) throw std::invalid_argument(R"("captions" is true or false)");
+      if (!a.argument["captions"].is_boolean())
+        throw std::invalid_argument(R"("captions" is true or false)");
       v.captions = a.argument["captions"].get<bool>();
     }
     s.derived.update(s.doc);
@@ -528,8 +550,8 @@ void ScriptRunner::step(AppState& s) {
     if (expected) {
       s.log.info("script: failed as expected");
     } else if (s.jobs.failures != failuresBefore_) {
-      error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) + " (" + actions_[next_ - 1].name +
-               "): " + s.jobs.lastError;
+      error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) + " (" +
+               actions_[next_ - 1].name + "): " + s.jobs.lastError;
       return;
     }
   }
@@ -537,7 +559,8 @@ void ScriptRunner::step(AppState& s) {
     checkExport_ = false;
     if (s.exports.failures != exportFailuresBefore_) {
       const ScriptAction& last = actions_[next_ - 1];
-      error_ = name_ + ": action " + std::to_string(last.position) + " (" + last.name + "): " + s.exports.lastError;
+      error_ = name_ + ": action " + std::to_string(last.position) + " (" + last.name +
+               "): " + s.exports.lastError;
       return;
     }
   }
@@ -558,16 +581,16 @@ void ScriptRunner::step(AppState& s) {
     try {
       apply(s, a);
     } catch (const std::exception& e) {
-      error_ = name_ + ": action " + std::to_string(a.position) + " (" + a.name + " " + a.argument.dump() +
-               "): " + e.what();
+      error_ = name_ + ": action " + std::to_string(a.position) + " (" + a.name + " " +
+               a.argument.dump() + "): " + e.what();
       return;
     }
     s.log.info("script: " + a.name + " " + a.argument.dump());
     // Each action its own undo step, as each click is (the frame loop would merge a frame's).
     s.history.observe(captureParameters(s), captureParameterContext(s), true);
     if (a.name == "open" || a.name == "drop" || a.name == "reload" || a.name == "expect_failure" ||
-        a.name == "write_joint_mapping" || a.name == "wait_frames" || a.name == "screenshot" || a.name == "set_clip" ||
-        a.name == "export_png" || a.name == "export_video")
+        a.name == "write_joint_mapping" || a.name == "wait_frames" || a.name == "screenshot" ||
+        a.name == "set_clip" || a.name == "export_png" || a.name == "export_video")
       return;
   }
 }

@@ -102,8 +102,12 @@ nlohmann::json reconstructionJson(const Derived& derived) {
   return j;
 }
 
-nlohmann::json optionalJson(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
-std::optional<double> finiteOr(double v) { return std::isfinite(v) ? std::optional<double>(v) : std::nullopt; }
+nlohmann::json optionalJson(const std::optional<double>& v) {
+  return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+}
+std::optional<double> finiteOr(double v) {
+  return std::isfinite(v) ? std::optional<double>(v) : std::nullopt;
+}
 
 // The tracks (0-based) the clip's frame `frame` shows, the fitted one among them.
 std::vector<int> peopleInFrame(const KeypointTrial& trial, int frame) {
@@ -132,27 +136,30 @@ nlohmann::json clipJson(const AppState& s) {
   std::vector<double> residuals(r.rec.residualRmsPx.begin(), r.rec.residualRmsPx.end());
   for (double& v : residuals)
     if (!std::isfinite(v)) v = -1.0;  // JSON has no NaN: never seen
-  j["fit"] = {{"current", r.settings == c},
-              {"model", r.model.name},
-              {"format", r.rec.trial.format},
-              {"layout", r.rec.trial.layout->name},
-              {"frames", r.rec.trial.frameCount},
-              {"rate_hz", r.rec.trial.rateHz},
-              {"people", r.rec.trial.people.size()},
-              {"person", r.rec.trial.chosen},
-              {"people_in_frame", peopleInFrame(r.rec.trial, clipFrameAt(r, s.view.playback.cycles))},
-              {"alpha_deg", f.camera.alphaDeg},
-              {"elevation_deg", f.camera.elevationDeg},
-              {"focal_px", pinhole ? nlohmann::json(f.camera.focalPx) : nlohmann::json(nullptr)},
-              {"distance_m", pinhole ? nlohmann::json(f.camera.distanceMm / 1000.0) : nlohmann::json(nullptr)},
-              {"reprojection_rms_px", f.reprojectionRmsPx},
-              {"outlier_samples", f.outlierSamples},
-              {"residual_rms_px", residuals},
-              {"head_height_m", f.headHeightMm / 1000.0}, {"stature_m", f.statureMm / 1000.0},
-              {"speed_mps", f.speedMps},
-              {"stride_hz", f.strideHz},
-              {"stride_length_m", f.strideLengthM},
-              {"seconds", r.seconds}};
+  j["fit"] = {
+      {"current", r.settings == c},
+      {"model", r.model.name},
+      {"format", r.rec.trial.format},
+      {"layout", r.rec.trial.layout->name},
+      {"frames", r.rec.trial.frameCount},
+      {"rate_hz", r.rec.trial.rateHz},
+      {"people", r.rec.trial.people.size()},
+      {"person", r.rec.trial.chosen},
+      {"people_in_frame", peopleInFrame(r.rec.trial, clipFrameAt(r, s.view.playback.cycles))},
+      {"alpha_deg", f.camera.alphaDeg},
+      {"elevation_deg", f.camera.elevationDeg},
+      {"focal_px", pinhole ? nlohmann::json(f.camera.focalPx) : nlohmann::json(nullptr)},
+      {"distance_m",
+       pinhole ? nlohmann::json(f.camera.distanceMm / 1000.0) : nlohmann::json(nullptr)},
+      {"reprojection_rms_px", f.reprojectionRmsPx},
+      {"outlier_samples", f.outlierSamples},
+      {"residual_rms_px", residuals},
+      {"head_height_m", f.headHeightMm / 1000.0},
+      {"stature_m", f.statureMm / 1000.0},
+      {"speed_mps", f.speedMps},
+      {"stride_hz", f.strideHz},
+      {"stride_length_m", f.strideLengthM},
+      {"seconds", r.seconds}};
   return j;
 }
 
@@ -163,7 +170,8 @@ nlohmann::json videoJson(const AppState& s) {
   const VideoInfo& i = v.frames->info();
   nlohmann::json keyframes = nlohmann::json::array();
   for (const auto& k : v.keyframes.keyframes)
-    keyframes.push_back({{"frame", k.frame}, {"joints", k.jointsPx.array().isFinite().count() / 2}});
+    keyframes.push_back(
+        {{"frame", k.frame}, {"joints", k.jointsPx.array().isFinite().count() / 2}});
   nlohmann::json j = {{"path", v.path.string()},
                       {"width_px", i.widthPx},
                       {"height_px", i.heightPx},
@@ -179,7 +187,8 @@ nlohmann::json videoJson(const AppState& s) {
                       {"cache_bytes", v.frames->bytesHeld()},
                       {"track_error", v.trackError},
                       {"tracker", trackerName(v.tracker)},
-                      {"flatten_background", v.flattenBackground}};
+                      {"flatten_background", v.flattenBackground},
+                      {"model_loop", v.modelLoopRounds}};
   if (v.tracked) {
     const auto& t = *v.tracked;
     j["track"] = {{"tracker", trackerName(t.tracker)},
@@ -187,7 +196,10 @@ nlohmann::json videoJson(const AppState& s) {
                   {"first_frame", t.track.firstFrame},
                   {"last_frame", t.lastFrame()},
                   {"seconds", t.seconds},
-                  {"mean_confidence", t.track.confidence.mean()}};
+                  {"mean_confidence", t.track.confidence.mean()},
+                  {"model_loop", t.modelLoopRounds},
+                  {"model_loop_fits", t.loopRounds.size()},
+                  {"model_loop_stopped", t.loopStopped}};
   }
   return j;
 }
@@ -205,18 +217,26 @@ const char* levelName(LogLevel level) {
 // attributes predicted from the 2D view.
 nlohmann::json semanticJson(const AppState& s) {
   nlohmann::json j = nlohmann::json::object();
-  const auto finite = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  const auto finite = [](double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+  };
   if (const auto* e = s.derived.explore()) j["explore_stride_hz"] = e->strideHz;
   if (const auto* axes = s.derived.semantic(); axes && s.doc.mode == Mode::Explore) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& a : axes->axes)
-      list.push_back({{"attribute", a.axis.attribute}, {"reading", finite(actions::semanticReading(s, a.axis.attribute))},
-                      {"sd", finite(a.axis.sd)}, {"gain", finite(a.axis.gain)}, {"loo_r2", finite(a.quality.r2)}, {"loo_accuracy", finite(a.quality.accuracy)}});
+      list.push_back({{"attribute", a.axis.attribute},
+                      {"reading", finite(actions::semanticReading(s, a.axis.attribute))},
+                      {"sd", finite(a.axis.sd)},
+                      {"gain", finite(a.axis.gain)},
+                      {"loo_r2", finite(a.quality.r2)},
+                      {"loo_accuracy", finite(a.quality.accuracy)}});
     j["axes"] = list;
   }
   nlohmann::json fromView = nlohmann::json::array();
   for (const auto& f : s.derived.attributesFromView())
-    fromView.push_back({{"attribute", f.attribute}, {"from_2d", finite(f.from2d)}, {"from_3d", finite(f.from3d)},
+    fromView.push_back({{"attribute", f.attribute},
+                        {"from_2d", finite(f.from2d)},
+                        {"from_3d", finite(f.from3d)},
                         {"truth", finite(f.truth)}});
   j["from_view"] = fromView;
   return j;
@@ -247,21 +267,25 @@ nlohmann::json compareJson(const AppState& s) {
 nlohmann::json gaitJson(const AppState& s) {
   const GaitPanel& p = s.panels.gait;
   nlohmann::json rows = nlohmann::json::object();
-  nlohmann::json columns = nlohmann::json::object();  // each column's measures (compare mode: per engine)
+  nlohmann::json columns =
+      nlohmann::json::object();  // each column's measures (compare mode: per engine)
   for (const auto& c : p.columns) {
     nlohmann::json m = nlohmann::json::object();
-    for (const auto& row : gaitRows()) m[row.key] = optionalJson(finiteOr(gaitRowValue(c.summary, row.key)));
+    for (const auto& row : gaitRows())
+      m[row.key] = optionalJson(finiteOr(gaitRowValue(c.summary, row.key)));
     columns[c.name] = m;
   }
   for (size_t r = 0; r < gaitRows().size(); ++r) {
     const std::string key = gaitRows()[r].key;
-    rows[key] = {{"motion_capture", optionalJson(finiteOr(gaitRowValue(p.mocap, key)))},
-                 {"reconstruction", optionalJson(finiteOr(gaitRowValue(p.recon(), key)))},
-                 {"population_mean", optionalJson(p.band ? finiteOr(p.band->rowMean[r]) : std::nullopt)},
-                 {"population_sd", optionalJson(p.band ? finiteOr(p.band->rowSd[r]) : std::nullopt)}};
+    rows[key] = {
+        {"motion_capture", optionalJson(finiteOr(gaitRowValue(p.mocap, key)))},
+        {"reconstruction", optionalJson(finiteOr(gaitRowValue(p.recon(), key)))},
+        {"population_mean", optionalJson(p.band ? finiteOr(p.band->rowMean[r]) : std::nullopt)},
+        {"population_sd", optionalJson(p.band ? finiteOr(p.band->rowSd[r]) : std::nullopt)}};
   }
-  return {{"open", p.open}, {"band_walkers", p.band ? p.band->walkers : 0}, {"measures", rows},
-          {"reconstruction_error", p.recon().error}, {"columns", columns}, {"status", p.status}};
+  return {{"open", p.open},     {"band_walkers", p.band ? p.band->walkers : 0},
+          {"measures", rows},   {"reconstruction_error", p.recon().error},
+          {"columns", columns}, {"status", p.status}};
 }
 
 nlohmann::json rectJson(const PanelRect& r) { return {r.pos.x, r.pos.y, r.size.x, r.size.y}; }
@@ -317,22 +341,25 @@ nlohmann::json stateJson(const AppState& s) {
   j["unknown_angle"] = d.recon.unknownAngle;
   j["edited_sd"] = d.editedSd;
   j["explore_sd"] = d.exploreSd;
-  j["view"] = {{"phase", v.playback.phase()},
-               {"playing", v.playback.playing},
-               {"speed", v.playback.speed},
-               {"theme", themeName(v.theme)},
-               {"ui_scale", v.uiScale},
-               {"ui_scale_limit", v.uiScaleLimit > 0.0f ? nlohmann::json(v.uiScaleLimit) : nlohmann::json()},
-               {"camera",
-                {{"yaw_deg", v.camera.yawDeg},
-                 {"pitch_deg", v.camera.pitchDeg},
-                 {"distance_mm", v.camera.distanceMm}}},
-               {"point_lights", v.overlays.pointLights},
-               {"presentation", v.presentation}};
+  j["view"] = {
+      {"phase", v.playback.phase()},
+      {"playing", v.playback.playing},
+      {"speed", v.playback.speed},
+      {"theme", themeName(v.theme)},
+      {"ui_scale", v.uiScale},
+      {"ui_scale_limit", v.uiScaleLimit > 0.0f ? nlohmann::json(v.uiScaleLimit) : nlohmann::json()},
+      {"camera",
+       {{"yaw_deg", v.camera.yawDeg},
+        {"pitch_deg", v.camera.pitchDeg},
+        {"distance_mm", v.camera.distanceMm}}},
+      {"point_lights", v.overlays.pointLights},
+      {"presentation", v.presentation}};
   j["layout"] = layoutJson(s.lastFrame);
   j["undo"] = {{"steps", s.history.undoSteps()}, {"redo_steps", s.history.redoSteps()}};
   // The drawer layout (small window or large scale): the tab shown; null in the full layout.
-  j["view"]["drawer"] = s.panels.drawer.inUse ? nlohmann::json(drawerTabName(s.panels.drawer.active)) : nlohmann::json();
+  j["view"]["drawer"] = s.panels.drawer.inUse
+                            ? nlohmann::json(drawerTabName(s.panels.drawer.active))
+                            : nlohmann::json();
   j["busy"] = s.busy();
   j["failures"] = s.jobs.failures;
   j["error"] = s.jobs.lastError;

@@ -21,7 +21,8 @@ const Keyframe* VideoSession::keyframeAt(int f) const {
 }
 
 TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes, int first,
-                        int last, TrackerKind tracker, bool flattenBackground,
+                        int last, TrackerKind tracker, bool flattenBackground, int modelLoopRounds,
+                        std::shared_ptr<const EigenwalkerModel> model,
                         const std::function<bool(double)>& progress) {
   const auto start = std::chrono::steady_clock::now();
   VideoSource source(video);
@@ -35,7 +36,16 @@ TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& key
   t.keyframes = keyframes;
   t.tracker = tracker;
   t.flattenBackground = flattenBackground;
-  t.track = trackJoints(source, keyframes, o, progress);
+  t.modelLoopRounds = tracker == TrackerKind::OpticalFlow && model ? modelLoopRounds : 0;
+  if (t.modelLoopRounds > 0) {
+    ModelLoopResult looped =
+        trackWithModel(source, keyframes, *model, o, ModelLoopOptions{t.modelLoopRounds}, progress);
+    t.track = std::move(looped.track);
+    t.loopRounds = std::move(looped.rounds);
+    t.loopStopped = std::move(looped.stoppedBecause);
+  } else {
+    t.track = trackJoints(source, keyframes, o, progress);
+  }
   t.trial = std::make_shared<const KeypointTrial>(keypointTrialOf(t.track, video.string()));
   t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return t;

@@ -12,10 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "core/engine/model.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/tracking/keyframes.h"
 #include "video/frame_cache.h"
 #include "video/joint_tracker.h"
+#include "video/model_loop.h"
 
 namespace ew::ui {
 
@@ -24,7 +26,10 @@ struct TrackedVideo {
   std::filesystem::path video;
   Keyframes keyframes;  // as they were when tracking started
   TrackerKind tracker = TrackerKind::OpticalFlow;
-  bool flattenBackground = false;  // asked for; track.background says whether it was done
+  bool flattenBackground = false;          // asked for; track.background says whether it was done
+  int modelLoopRounds = 0;                 // asked for (video/model_loop.h); the flow tracker only
+  std::vector<ModelLoopRound> loopRounds;  // one per fit the loop made
+  std::string loopStopped;                 // why the loop stopped early ("" when it did not)
   JointTrack track;
   std::shared_ptr<const KeypointTrial> trial;  // the track's confident points (trialFromJoints)
   double seconds = 0.0;
@@ -47,6 +52,7 @@ struct VideoSession {
   int firstFrame = 0, lastFrame = -1;  // the range to track (-1: the video's end)
   TrackerKind tracker = TrackerKind::OpticalFlow;  // which tracker the next track uses
   bool flattenBackground = false;  // the next flow track flattens a still background
+  int modelLoopRounds = 0;         // rounds of the model loop the next flow track runs (0-10)
   std::shared_ptr<const TrackedVideo> tracked;  // the last finished track
   std::string trackError;                       // why the last track failed ("" when none)
   // The frame last drawn and its number: shown while the frame asked for is decoding.
@@ -61,8 +67,10 @@ struct VideoSession {
 
 // Reads and tracks (blocking; the viewer runs it as a background job). `progress` gets the
 // share done and returns false to cancel. Throws the tracker's and trialFromJoints' errors.
+// `modelLoopRounds` > 0 (the flow tracker): tracked with `model` in the loop (video/model_loop.h).
 TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes, int first,
-                        int last, TrackerKind tracker, bool flattenBackground,
+                        int last, TrackerKind tracker, bool flattenBackground, int modelLoopRounds,
+                        std::shared_ptr<const EigenwalkerModel> model,
                         const std::function<bool(double)>& progress);
 
 // True for the file names a video has (.mp4, .avi, .mov, .mkv, .webm, .m4v, .mpg, .mpeg).

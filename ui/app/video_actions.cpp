@@ -122,7 +122,8 @@ void setVideoFrame(AppState& s, int frame) {
   v.frame = std::clamp(frame, 0, std::max(v.frameCount() - 1, 0));
   if (v.marking) v.markStep = nextUnmarked(v, 0);
   // A tracked clip shows this frame too, when it covers it.
-  if (showsTrackFit(s) && v.frame >= v.tracked->track.firstFrame && v.frame <= v.tracked->lastFrame())
+  if (showsTrackFit(s) && v.frame >= v.tracked->track.firstFrame &&
+      v.frame <= v.tracked->lastFrame())
     setClipFrame(s, v.frame - v.tracked->track.firstFrame + 1);
   s.view.playback.playing = false;
 }
@@ -202,6 +203,11 @@ void setTracker(AppState& s, TrackerKind tracker) { session(s).tracker = tracker
 
 void setFlattenBackground(AppState& s, bool flatten) { session(s).flattenBackground = flatten; }
 
+void setModelLoopRounds(AppState& s, int rounds) {
+  if (rounds < 0 || rounds > 10) throw std::invalid_argument("the model loop runs 0-10 rounds");
+  session(s).modelLoopRounds = rounds;
+}
+
 void startTracking(AppState& s) {
   VideoSession& v = session(s);
   if (s.jobs.track.running()) throw std::invalid_argument("a track is running");
@@ -215,11 +221,16 @@ void startTracking(AppState& s) {
                                 "-" + std::to_string(last) + ": mark them on one frame first");
   v.marking = false;
   v.trackError.clear();
-  const std::string title = "Tracking " + v.path.filename().string() + " (" + trackerName(v.tracker) + ")";
+  const std::string title =
+      "Tracking " + v.path.filename().string() + " (" + trackerName(v.tracker) + ")";
   s.log.info(title + ", frames " + std::to_string(v.firstFrame) + "-" + std::to_string(last));
+  // The loop fits the model the clip is fitted with (the one walkers are inspected against).
+  const auto model = v.modelLoopRounds > 0 && v.tracker == TrackerKind::OpticalFlow
+                         ? modelForTracking(s)
+                         : nullptr;
   s.jobs.track.start(
       title, [path = v.path, keys = v.keyframes, first = v.firstFrame, last, tracker = v.tracker,
-              flatten = v.flattenBackground](JobProgress& p) {
+              flatten = v.flattenBackground, rounds = v.modelLoopRounds, model](JobProgress& p) {
         const auto progress = [&p, first, last](double done) {
           try {
             const int frames = last - first + 1;
@@ -230,7 +241,8 @@ void startTracking(AppState& s) {
             return false;
           }
         };
-        return std::make_shared<const TrackedVideo>(trackVideo(path, keys, first, last, tracker, flatten, progress));
+        return std::make_shared<const TrackedVideo>(
+            trackVideo(path, keys, first, last, tracker, flatten, rounds, model, progress));
       });
 }
 

@@ -56,12 +56,11 @@ void marking(AppState& s, const VideoSession& v) {
   const Keyframe* k = v.keyframeAt(shown);
   const int marked = k ? static_cast<int>(k->jointsPx.array().isFinite().count() / 2) : 0;
   char status[96];
-  std::snprintf(status, sizeof status, "%zu keyframe%s · this frame: %d of 15 joints", v.keyframes.keyframes.size(),
-                v.keyframes.keyframes.size() == 1 ? "" : "s", marked);
+  std::snprintf(status, sizeof status, "%zu keyframe%s · this frame: %d of 15 joints",
+                v.keyframes.keyframes.size(), v.keyframes.keyframes.size() == 1 ? "" : "s", marked);
   textDisabledWrapped(status);
   if (!v.marking) {
-    if (buttonRow({{"Mark this frame", true}}) == 0)
-      apply(s, [&] { actions::startMarking(s); });
+    if (buttonRow({{"Mark this frame", true}}) == 0) apply(s, [&] { actions::startMarking(s); });
   } else {
     switch (buttonRow({{"Skip joint", v.markStep < kJointCount}, {"Done", true}})) {
       case 0:
@@ -97,11 +96,14 @@ void trackerChoice(AppState& s, const VideoSession& v) {
   static const char* const labels[] = {"Optical flow", "Appearance (Zou)"};
   int choice = v.tracker == TrackerKind::Appearance ? 1 : 0;
   if (radioRow(labels, 2, &choice))
-    apply(s, [&] { actions::setTracker(s, choice == 1 ? TrackerKind::Appearance : TrackerKind::OpticalFlow); });
+    apply(s, [&] {
+      actions::setTracker(s, choice == 1 ? TrackerKind::Appearance : TrackerKind::OpticalFlow);
+    });
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Optical flow: each joint's own flow, checked against its keyframe look.\n"
-                      "Appearance: Zou et al. 2009, each segment's colours from the marked frame,\n"
-                      "joints sought down the body's tree (slower, measured less accurate: docs/TRACKING.md).");
+    ImGui::SetTooltip(
+        "Optical flow: each joint's own flow, checked against its keyframe look.\n"
+        "Appearance: Zou et al. 2009, each segment's colours from the marked frame,\n"
+        "joints sought down the body's tree (slower, measured less accurate: docs/TRACKING.md).");
 }
 
 // The flow tracker can flatten a fixed camera's still background first: thin limbs over a
@@ -113,10 +115,41 @@ void backgroundChoice(AppState& s, const VideoSession& v) {
     apply(s, [&] { actions::setFlattenBackground(s, flatten); });
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip("For a camera that does not move: each pixel's median over the clip is the\n"
-                      "background, set to one grey before the optical flow, so that only the person\n"
-                      "moves it. Skipped, with the reason, when the camera moves or the person\n"
-                      "stays in place. Optical flow only.");
+    ImGui::SetTooltip(
+        "For a camera that does not move: each pixel's median over the clip is the\n"
+        "background, set to one grey before the optical flow, so that only the person\n"
+        "moves it. Skipped, with the reason, when the camera moves or the person\n"
+        "stays in place. Optical flow only.");
+}
+
+// Howe, Leventon & Freeman's feedback: the walker fitted to a track guides the next one
+// (video/model_loop.h). Rounds 0-10; the flow tracker only.
+void modelLoopChoice(AppState& s, const VideoSession& v) {
+  ImGui::BeginDisabled(v.tracker != TrackerKind::OpticalFlow);
+  int rounds = v.modelLoopRounds;
+  ImGui::SetNextItemWidth(-1.0f);
+  if (ImGui::SliderInt("##loop", &rounds, 0, 10,
+                       rounds == 0 ? "model loop: off" : "model loop: %d rounds"))
+    apply(s, [&] { actions::setModelLoopRounds(s, rounds); });
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(
+        "Fit the walker through the camera to the track, draw it back, and track again\n"
+        "seeking each joint that strays where the walk puts it (Howe, Leventon &\n"
+        "Freeman 1999). Brings lost wrists and ankles back; each round costs a track\n"
+        "and a fit. Optical flow only.");
+}
+
+std::string loopNote(const TrackedVideo& t) {
+  if (t.modelLoopRounds == 0) return "";
+  char text[160];
+  if (t.loopRounds.empty()) return "model loop stopped: " + t.loopStopped;
+  std::snprintf(text, sizeof text, "model loop: %zu of %d rounds, fit %.1f → %.1f px",
+                t.loopRounds.size(), t.modelLoopRounds, t.loopRounds.front().reprojectionRmsPx,
+                t.loopRounds.back().reprojectionRmsPx);
+  std::string note = text;
+  if (!t.loopStopped.empty()) note += "; stopped: " + t.loopStopped;
+  return note;
 }
 
 std::string backgroundNote(const std::string& background) {
@@ -132,10 +165,13 @@ void tracking(AppState& s, const VideoSession& v) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("The first and last frame to track (Enter)");
   trackerChoice(s, v);
   backgroundChoice(s, v);
+  modelLoopChoice(s, v);
   const bool stale =
       v.tracked &&
       (v.tracked->keyframes.keyframes.size() != v.keyframes.keyframes.size() ||
        v.tracked->tracker != v.tracker || v.tracked->flattenBackground != v.flattenBackground ||
+       v.tracked->modelLoopRounds !=
+           (v.tracker == TrackerKind::OpticalFlow ? v.modelLoopRounds : 0) ||
        v.tracked->track.firstFrame != v.firstFrame ||
        !std::equal(v.keyframes.keyframes.begin(), v.keyframes.keyframes.end(),
                    v.tracked->keyframes.keyframes.begin(), [](const auto& a, const auto& b) {
@@ -156,16 +192,19 @@ void tracking(AppState& s, const VideoSession& v) {
   } else if (buttonRow({{label, !v.keyframes.keyframes.empty()}}) == 0) {
     apply(s, [&] { actions::startTracking(s); });
   }
-  if (stale) textDisabledWrapped("the keyframes or the tracker changed since the last track");
+  if (stale)
+    textDisabledWrapped("the keyframes or the tracker's settings changed since the last track");
   if (v.tracked) {
     const auto& t = *v.tracked;
     char done[128];
-    std::snprintf(done, sizeof done, "tracked %d-%d by %s in %.1f s (%.0f frames/s)", t.track.firstFrame,
-                  t.lastFrame(), t.tracker == TrackerKind::Appearance ? "appearance" : "optical flow",
-                  t.seconds, t.frames() / std::max(t.seconds, 1e-9));
+    std::snprintf(done, sizeof done, "tracked %d-%d by %s in %.1f s (%.0f frames/s)",
+                  t.track.firstFrame, t.lastFrame(),
+                  t.tracker == TrackerKind::Appearance ? "appearance" : "optical flow", t.seconds,
+                  t.frames() / std::max(t.seconds, 1e-9));
     textDisabledWrapped(done);
     ImGui::TextDisabled("mean confidence %.2f", t.track.confidence.mean());
     if (t.flattenBackground) textDisabledWrapped(backgroundNote(t.track.background).c_str());
+    if (t.modelLoopRounds > 0) textDisabledWrapped(loopNote(t).c_str());
   }
   if (!v.trackError.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.55f, 1.0f));
@@ -185,7 +224,8 @@ void drawVideoControls(AppState& s, float scale) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.path.string().c_str());
   const VideoInfo& i = v.frames->info();
   char info[128];
-  std::snprintf(info, sizeof info, "%d×%d · %.4g fps · %d frames", i.widthPx, i.heightPx, i.fps, v.frameCount());
+  std::snprintf(info, sizeof info, "%d×%d · %.4g fps · %d frames", i.widthPx, i.heightPx, i.fps,
+                v.frameCount());
   textDisabledWrapped(info);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("codec %s", i.codec.empty() ? "unknown" : i.codec.c_str());
