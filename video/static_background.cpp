@@ -21,9 +21,9 @@ constexpr double kNoiseSigmas = 5.0;
 // A still scene's frames differ from their median by compression noise alone (measured 3.0 grey
 // levels on the sports2d demo, under 2 on cam01 and on MJPG); a panning camera's by far more.
 constexpr double kMaxStillNoiseGrey = 6.0;
-// A joint stands out when a foreground pixel lies this near its mark (marks are good to a few
-// pixels).
-constexpr int kJointRadiusPx = 3;
+// A point along a keyframe's bone stands out when a foreground pixel lies this near it (marks
+// are good to a few pixels).
+constexpr int kPointRadiusPx = 3;
 
 std::vector<int> sampledFrames(int first, int last, int samples) {
   const int count = last - first + 1;
@@ -145,7 +145,7 @@ BackgroundCheck estimateStaticBackground(VideoSource& video, int first, int last
     return {std::nullopt,
             "the camera moves (" + percent(share) + " of the picture differs from the median)"};
   const double standing =
-      skeletonStandingOut(toGrey(video.frame(key.frame)), b, key, kJointRadiusPx);
+      skeletonStandingOut(toGrey(video.frame(key.frame)), b, key, kPointRadiusPx);
   if (standing < kMinSkeletonStandingOut)
     return {std::nullopt, "the person stays in place (" + percent(standing) +
                               " of the keyframe's skeleton stands out from the median)"};
