@@ -195,4 +195,17 @@ double viewAngleErrorDeg(double estimatedDeg, double trueDeg) {
   return std::abs(wrapDeg(estimatedDeg - trueDeg));
 }
 
+double mpjpeWithoutTranslation(const Eigen::Ref<const Eigen::MatrixXd>& rec,
+                               const Eigen::Ref<const Eigen::MatrixXd>& truth) {
+  const Eigen::MatrixXd d = rec - truth;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int j = 0; j < kJointCount; ++j) mean += d.middleCols<3>(3 * j).colwise().mean().transpose();
+  mean /= kJointCount;
+  double sum = 0;
+  for (Eigen::Index f = 0; f < d.rows(); ++f)
+    for (int j = 0; j < kJointCount; ++j)
+      sum += (d.block<1, 3>(f, 3 * j).transpose() - mean).norm();
+  return sum / static_cast<double>(d.rows() * kJointCount);
+}
+
 }  // namespace ew

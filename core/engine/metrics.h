@@ -67,6 +67,11 @@ double mpjpeFrames(const Eigen::Ref<const Eigen::MatrixXd>& framesTrue, double r
                    const Eigen::Ref<const Eigen::VectorXd>& wRec, double omegaRadS,
                    double phaseRad);
 
+// MPJPE (mm) of frames against frames (both T × 45) once their mean offset is taken out: a
+// camera fit places the walker up to a translation (the camera experiment's score).
+double mpjpeWithoutTranslation(const Eigen::Ref<const Eigen::MatrixXd>& rec,
+                               const Eigen::Ref<const Eigen::MatrixXd>& truth);
+
 // |α̂ − α| wrapped to [0°, 180°].
 double viewAngleErrorDeg(double estimatedDeg, double trueDeg);
 

@@ -13,6 +13,7 @@
 #include "core/camera/detector_offsets.h"
 #include "core/camera/walk_camera.h"
 #include "core/common/errors.h"
+#include "core/engine/metrics.h"
 #include "core/engine/fourier.h"
 #include "core/engines/engine.h"
 #include "core/experiments/engine_view_curves.h"
@@ -136,17 +137,6 @@ MatrixXd bystander(const MatrixXd& px, std::mt19937& rng) {
     moved[2 * j + 1] = v0 + scale * (pose[2 * j + 1] - v0);
   }
   return moved.replicate(px.rows(), 1);
-}
-
-double mpjpeWithoutTranslation(const MatrixXd& rec, const MatrixXd& truth) {
-  const MatrixXd d = rec - truth;
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (int j = 0; j < kJointCount; ++j) mean += d.middleCols<3>(3 * j).colwise().mean().transpose();
-  mean /= kJointCount;
-  double sum = 0;
-  for (Eigen::Index f = 0; f < d.rows(); ++f)
-    for (int j = 0; j < kJointCount; ++j) sum += (d.block<1, 3>(f, 3 * j).transpose() - mean).norm();
-  return sum / static_cast<double>(d.rows() * kJointCount);
 }
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {

@@ -13,6 +13,7 @@
 #include "core/camera/clip_reconstruction.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
+#include "core/engine/metrics.h"
 #include "core/engine/walker_set.h"
 #include "core/experiments/leave_one_out.h"
 #include "core/gait/dataset.h"
@@ -79,20 +80,6 @@ TEST(ModelLoop, AClipTheFitRefusesKeepsItsFirstTrackAndSaysWhy) {
   loop.rounds = 11;
   EXPECT_TRUE(test::throwsError([&] { trackWithModel(again, keys, defaultRealModel(), o, loop); },
                                 ErrorKind::BadArgument, {"0-10"}));
-}
-
-// Mean joint distance once the mean offset is taken out: a camera fit places the walker up to
-// a translation (as the camera experiment scores it, core/experiments/camera_experiment.cpp).
-double mpjpeWithoutTranslation(const Eigen::MatrixXd& rec, const Eigen::MatrixXd& truth) {
-  const Eigen::MatrixXd d = rec - truth;
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (int j = 0; j < kJointCount; ++j)
-    mean += d.middleCols<3>(3 * j).colwise().mean().transpose() / kJointCount;
-  double sum = 0.0;
-  for (Eigen::Index f = 0; f < d.rows(); ++f)
-    for (int j = 0; j < kJointCount; ++j)
-      sum += (d.block<1, 3>(f, 3 * j).transpose() - mean).norm();
-  return sum / static_cast<double>(d.rows() * kJointCount);
 }
 
 // Issue 14's bar for the walk from a track: within 1.3× the MPJPE of the same fit to the true
