@@ -40,12 +40,17 @@ test: build
 # 66 of 230 sanitized compilations in CI; they run unsanitized in `make test`.
 SANITIZE_CXX ?= clang++
 SANITIZE_GUI ?= OFF
+# Two tests left out of the sanitized run (`make test` runs them): their code runs sanitized in
+# lighter tests (the model loop's rounds in ModelLoopOnSharedWalkers, the engines experiment in
+# EnginesExperiment), and together they took 103 of its test seconds on two cores (65 + 38 s),
+# what kept CI near its 30-minute goal. SANITIZE_SKIP= runs everything.
+SANITIZE_SKIP ?= ^(ModelLoop\.OneRoundHalvesTheTrackersTailOnAWalker|EngineCli\.EvaluateScoresTheEnginesAskedFor)$$
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_CXX_COMPILER=$(SANITIZE_CXX) -DCMAKE_BUILD_TYPE=Debug -DEW_SANITIZE=ON \
 	  -DEW_BUILD_BENCH=OFF -DEW_BUILD_GUI=$(SANITIZE_GUI) $(CMAKE_ARGS)
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-	  ctest --test-dir $(SANITIZE_DIR) --output-on-failure -j $(JOBS) $(CTEST_ARGS)
+	  ctest --test-dir $(SANITIZE_DIR) --output-on-failure -j $(JOBS) $(if $(SANITIZE_SKIP),-E '$(SANITIZE_SKIP)') $(CTEST_ARGS)
 
 bench: build
 	@for b in $(BUILD_DIR)/bin/bench_*; do echo "== $$b"; $$b; done
