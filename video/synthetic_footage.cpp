@@ -37,9 +37,12 @@ cv::Vec3d boneColour(Joint a, Joint b) {
   return {110, 150, 170};
 }
 
-// Each limb's own texture: blurred noise in the limb's axes (512 px along × 64 across),
-// so it moves with the limb as a print or folds of clothing do, in both directions and
-// without repeating (a periodic pattern would let a matcher slip by a period).
+// Each limb's own texture: blurred noise in the limb's axes (512 texels along × 64 across, a
+// texel kTexelMm on the body), so it moves with the limb as a print or folds of clothing do, in
+// both directions and without repeating (a periodic pattern would let a matcher slip by a
+// period).
+constexpr double kTexelMm = 7.0;
+
 cv::Mat limbTexture(unsigned seed) {
   cv::Mat noise(64, 512, CV_32F);
   cv::RNG rng(seed);
@@ -49,9 +52,29 @@ cv::Mat limbTexture(unsigned seed) {
   return noise;
 }
 
-// One limb as a stadium of half-width `radiusPx` from a to b, its texture laid along it.
+// The texture between texels (bilinear), so that a limb moving by a fraction of a pixel
+// changes the picture by as much.
+double shadeAt(const cv::Mat& texture, double tu, double tv) {
+  tu = std::clamp(tu, 0.0, texture.cols - 1.001);
+  tv = std::clamp(tv, 0.0, texture.rows - 1.001);
+  const int u0 = static_cast<int>(tu), v0 = static_cast<int>(tv);
+  const double fu = tu - u0, fv = tv - v0;
+  const auto at = [&](int v, int u) { return static_cast<double>(texture.at<float>(v, u)); };
+  return (1 - fv) * ((1 - fu) * at(v0, u0) + fu * at(v0, u0 + 1)) +
+         fv * ((1 - fu) * at(v0 + 1, u0) + fu * at(v0 + 1, u0 + 1));
+}
+
+// How a limb's texture lies in the picture: texels per pixel along the drawn bone (the bone's
+// length on the body over its length in the picture, so a limb turned in depth shows its print
+// foreshortened) and across it (the body's scale at its distance). A print on the body grows as
+// the walker nears the camera; one laid in pixels would not.
+struct TextureScale {
+  double along = 1.0, across = 1.0;
+};
+
+// One limb as a stadium of half-width `radiusPx` from a to b, its texture laid along it from a.
 void paintLimb(cv::Mat& image, cv::Point2d a, cv::Point2d b, double radiusPx, cv::Vec3d colour,
-               const cv::Mat& texture) {
+               const cv::Mat& texture, TextureScale scale) {
   const cv::Point2d d = b - a;
   const double length = std::max(1e-6, std::hypot(d.x, d.y));
   const cv::Point2d u = d / length;
@@ -67,9 +90,8 @@ void paintLimb(cv::Mat& image, cv::Point2d a, cv::Point2d b, double radiusPx, cv
       const cv::Point2d nearest = u * std::clamp(along, 0.0, length);
       if (std::hypot(p.x - nearest.x, p.y - nearest.y) > radiusPx) continue;
       const double side = p.x * u.y - p.y * u.x;  // signed distance across the limb
-      const int tu = std::clamp(static_cast<int>(along + 64.0), 0, texture.cols - 1);
-      const int tv = std::clamp(static_cast<int>(side + 32.0), 0, texture.rows - 1);
-      const double shade = texture.at<float>(tv, tu);
+      const double shade =
+          shadeAt(texture, 64.0 + along * scale.along, 32.0 + side * scale.across);
       for (int k = 0; k < 3; ++k) row[x][k] = cv::saturate_cast<unsigned char>(colour[k] * shade);
     }
   }
@@ -143,12 +165,17 @@ Eigen::MatrixXd writeFootage(const std::filesystem::path& file,
           e(px(f, 2 * index(jb)), px(f, 2 * index(jb) + 1));
       if (std::isnan(a.x) || std::isnan(e.x)) continue;
       const bool trunk = ja == Joint::Sternum && jb == Joint::Pelvis;
-      paintLimb(image, a, e, (trunk ? 90.0 : 45.0) * pxPerMm, boneColour(ja, jb), textures[b]);
+      const double boneMm =
+          (jointAt(framesMm, f, index(jb)) - jointAt(framesMm, f, index(ja))).norm();
+      const double drawnPx = std::max(1e-6, std::hypot(e.x - a.x, e.y - a.y));
+      paintLimb(image, a, e, (trunk ? 90.0 : 45.0) * pxPerMm, boneColour(ja, jb), textures[b],
+                {boneMm / drawnPx / kTexelMm, 1.0 / (pxPerMm * kTexelMm)});
     }
     const cv::Point2d head(px(f, 0), px(f, 1));
+    const double texelsPerPx = 1.0 / (pxPerMm * kTexelMm);
     if (!std::isnan(head.x))
       paintLimb(image, head, head + cv::Point2d(0.0, 1.0), 100.0 * pxPerMm, {90, 120, 140},
-                textures.back());
+                textures.back(), {texelsPerPx, texelsPerPx});
     writer.write(image);
   }
   return px;

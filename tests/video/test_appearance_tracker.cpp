@@ -102,8 +102,8 @@ TrackDistance trackedBy(TrackerKind kind, const test::WalkingFootage& footage) {
 }
 
 // Issue 16: the appearance tracker beside the optical-flow tracker on the same clip, from
-// one keyframe with the true joints. Measured (docs/TRACKING.md): flow median 15.6 px, p95
-// 122 px; appearance median 21.0 px, p95 86.7 px. Guards against either getting worse
+// one keyframe with the true joints. Measured (docs/TRACKING.md): flow median 10.8 px, p95
+// 170 px; appearance median 19.8 px, p95 93.0 px. Guards against either getting worse
 // (about a quarter above the measured); neither meets issue 14's bar (3 px).
 TEST(AppearanceTracker, FollowsASyntheticWalkerBesideTheFlowTracker) {
   const test::WalkingFootage& footage = test::walkingFootage();
@@ -112,7 +112,7 @@ TEST(AppearanceTracker, FollowsASyntheticWalkerBesideTheFlowTracker) {
   EXPECT_EQ(appearance.jointFrames, flow.jointFrames);
   EXPECT_GT(appearance.jointFrames, 0);
   EXPECT_EQ(flow.jointFrames, kJointCount * footage.truthPx.rows());
-  EXPECT_LE(flow.medianAllPx, 20.0);
+  EXPECT_LE(flow.medianAllPx, 14.0);
   EXPECT_LE(appearance.medianAllPx, 26.0);
   EXPECT_LE(appearance.p95AllPx, 110.0);
 }
