@@ -150,20 +150,30 @@ double explained(const BobSamples& b, double f) {
 std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minShare) {
   std::vector<BobSamples> paths;
   double variance = 0.0;
-  for (Joint j : {Joint::Head, Joint::Sternum, Joint::Pelvis, Joint::RHip, Joint::LHip,
-                  Joint::RShoulder, Joint::LShoulder}) {
+  // The upper trunk only: a tracker's pelvis and hips, hidden under the thigh tops in a side
+  // view, are dragged down by the near thigh once a stride (docs/TRACKING.md); the head, the
+  // sternum and the shoulders bob with them and stay in sight.
+  for (Joint j : {Joint::Head, Joint::Sternum, Joint::RShoulder, Joint::LShoulder}) {
     const auto b = bobSamples(trial.jointsPx, j, trial.rateHz);
     if (!b) continue;
     variance += b->v.squaredNorm();
     paths.push_back(*b);
   }
   if (paths.size() < kBobMinJoints || !(variance > 0.0)) return std::nullopt;
-  double bestHz = 0.0, bestShare = 0.0;
+  std::vector<double> hz, share;
   for (double f = 2 * kBobMinStrideHz; f <= 2 * kBobMaxStrideHz; f += kBobStepHz) {
     double sum = 0.0;
     for (const BobSamples& b : paths) sum += explained(b, f);
-    if (sum > bestShare * variance) bestShare = sum / variance, bestHz = f;
+    hz.push_back(f);
+    share.push_back(sum / variance);
   }
+  // A peak inside the band, not its edge: a share still rising at the edge is something slower
+  // or faster than a step (a tracker's hip dragged down by the thigh once a stride, a walker
+  // sinking in the image as they near the camera), and would be read as a bob at the edge.
+  double bestHz = 0.0, bestShare = 0.0;
+  for (std::size_t i = 1; i + 1 < share.size(); ++i)
+    if (share[i] >= share[i - 1] && share[i] >= share[i + 1] && share[i] > bestShare)
+      bestShare = share[i], bestHz = hz[i];
   const double durationS = static_cast<double>(trial.frameCount) / trial.rateHz;
   if (bestShare < minShare || durationS * bestHz < 2.0) return std::nullopt;
   return 0.5 * bestHz;

@@ -35,13 +35,15 @@ struct ImageGait {
 ImageGait imageGaitCycles(const KeypointTrial& trial,
                           std::optional<double> heldStrideHz = std::nullopt);
 
-// The stride frequency from the trunk's bob: head, sternum, pelvis, hips and shoulders rise
-// and fall twice a stride (once a step), in any view. The vertical image paths of those seen
-// in at least 60 % of the frames, each detrended, are fitted with a sinusoid over step
-// frequencies 1.0 … 3.2 Hz (strides of 0.5 … 1.6 Hz, 0.005 Hz apart); the frequency whose fit
-// takes the largest share of their summed variance, halved. Unset when fewer than two such
-// joints, the clip is shorter than two steps at that frequency, or the best fit takes less
-// than `minShare` of the variance (no clear bob). For a joint tracker's output, whose trunk holds
+// The stride frequency from the trunk's bob: the head, the sternum and the shoulders rise and
+// fall twice a stride (once a step), in any view (the pelvis and hips too, but a tracker's
+// slip under the thigh tops once a stride; docs/TRACKING.md). The vertical image paths of
+// those seen in at least 60 % of the frames, each detrended, are fitted with a sinusoid over
+// step frequencies 1.0 … 3.2 Hz (strides of 0.5 … 1.6 Hz, 0.005 Hz apart); the frequency whose
+// fit takes the largest share of their summed variance among the band's inner peaks (not its
+// edges), halved. Unset when fewer than two such joints, no inner peak, the clip is shorter
+// than two steps at that frequency, or the best fit takes less than `minShare` of the variance
+// (no clear bob). For a joint tracker's output, whose trunk holds
 // where the feet are lost (docs/TRACKING.md, "The model loop").
 std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minShare = 0.3);
 

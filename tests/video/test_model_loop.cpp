@@ -47,11 +47,10 @@ TrackDistance loopedDistance(int rounds, ModelLoopResult* out = nullptr) {
   return d;
 }
 
-// Measured (docs/TRACKING.md): without the loop median 15.6 px, p95 122 px; one round 14.8 /
-// 54.6 px. The fit strides at the trunk's bob, 0.918 Hz against the walker's own 0.932 Hz
-// (its lost ankles alone read 2.03 Hz, and the fit then strode at 1.83 Hz); the tail halves,
-// the median barely moves (the far hip and shoulder, hidden, are 13-18 px off in both), and
-// issue 14's 3 px is not reached.
+// Measured (docs/TRACKING.md): without the loop median 10.8 px, p95 170 px; one round 10.7 /
+// 62.0 px. The fit strides at the trunk's bob, 0.915 Hz against the walker's own 0.932 Hz;
+// the tail falls to about a third, the median does not move (the hips and the far shoulder,
+// hidden, are 11-19 px off), and issue 14's 3 px is not reached.
 TEST(ModelLoop, OneRoundHalvesTheTrackersTailOnAWalker) {
   ModelLoopResult looped;
   const TrackDistance alone = loopedDistance(0), once = loopedDistance(1, &looped);
@@ -87,8 +86,8 @@ TEST(ModelLoop, AClipTheFitRefusesKeepsItsFirstTrackAndSaysWhy) {
 // three strides, filmed 6 m away 30° off the side view, tracked from its true joints on frame
 // 0; both fits at the default model's σ² with the stride held at the trunk's bob for the track,
 // as `track --reconstruct` and `reconstruct --unknown-camera` fit. The tracker alone misses
-// (1.7×; docs/TRACKING.md has four more walkers, 1.7–4.2×); three rounds of the model loop
-// bring it within the bar (measured 1.19).
+// (1.46×; docs/TRACKING.md has four more walkers, 1.8–2.5×); three rounds of the model loop
+// bring it within the bar (measured 1.18).
 TEST(ModelLoopOnSharedWalkers, ThreeRoundsBringAHeldOutWalkersFitWithinTheBar) {
   EW_REQUIRE_SHARED_DATA();
   const Dataset dataset = loadDataset({test::sharedDataDir() / "walkers.csv"});
