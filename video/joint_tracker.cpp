@@ -286,6 +286,18 @@ class FlowPass final : public TrackingPass {
     return cv::Point2f(static_cast<float>(x), static_cast<float>(y));
   }
 
+  // A joint the walk hides is where the walk puts it, at the fit's threshold (a detector's 0.3,
+  // KeypointOptions): the next fit keeps it there rather than losing it, as it would a lost
+  // joint at 0.2. (Dropping it lost the pelvis, hidden under the near thigh all through a side
+  // view, and with it the walking check.)
+  static constexpr double kHiddenConfidence = 0.3;
+
+  bool hiddenByTheWalk(int j) const {
+    const Eigen::Index row = frame_ - o_.firstFrame;
+    return row >= 0 && row < o_.priorHidden.rows() && o_.priorHidden.cols() == kJointCount &&
+           o_.priorHidden(row, j) > 0.5;
+  }
+
   // The model loop: a flow that failed or strayed beyond the gate from the model's place is
   // replaced by the keyframe patch found near that place, else by the place itself (a joint
   // hidden behind the other leg is where the walk says it is). nullopt: the flow stands.
@@ -294,6 +306,10 @@ class FlowPass final : public TrackingPass {
     const std::optional<cv::Point2f> prior = priorAt(j);
     if (!prior) return std::nullopt;
     const double gate = o_.priorGateShare * g_.personPx;
+    if (hiddenByTheWalk(j)) {
+      filters_[j].update(prior->x, prior->y, 0.5 * gate);
+      return kHiddenConfidence;
+    }
     const auto distance = [](cv::Point2f a, cv::Point2f b) {
       return std::hypot(a.x - b.x, a.y - b.y);
     };

@@ -45,6 +45,10 @@ struct TrackerOptions {
   // placed there at a low confidence. The flow tracker only.
   Eigen::MatrixXd priorPx;
   double priorGateShare = 0.05;
+  // Rows as priorPx, 15 columns: 1 where the model's walker hides the joint behind its own body
+  // (core/camera/self_occlusion.h). Such a joint is placed where the walk puts it whatever its
+  // flow says (its patch shows the segment in front). No rows: none hidden.
+  Eigen::MatrixXd priorHidden;
   // Flatten a fixed camera's still background before the flow (video/static_background.h),
   // when the footage shows one. The flow tracker only.
   bool flattenStaticBackground = false;

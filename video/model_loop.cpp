@@ -1,6 +1,7 @@
 #include "video/model_loop.h"
 
 #include "core/camera/clip_reconstruction.h"
+#include "core/camera/self_occlusion.h"
 #include "core/common/errors.h"
 #include "core/keypoints/image_gait.h"
 #include "core/keypoints/keypoint_trial.h"
@@ -34,6 +35,7 @@ ModelLoopResult trackWithModel(VideoSource& video, const Keyframes& keyframes,
     result.rounds.push_back({fit.fit.reprojectionRmsPx, fit.fit.strideHz, fit.fit.camera.alphaDeg});
     options.firstFrame = result.track.firstFrame;
     options.priorPx = fit.reprojectedPx;
+    options.priorHidden = hiddenJoints(fit.framesMm, fit.timesS, fit.fit.camera);
     result.track = trackJoints(video, keyframes, options, share);
   }
   return result;

@@ -92,6 +92,33 @@ TEST(JointTracker, KeyframesInTheMiddleAndAtTheEndTrackBackwardAndForward) {
   EXPECT_LE(d.p95AllPx, 8.0);
 }
 
+// The model loop's prior (TrackerOptions::priorPx) with a joint the walk hides behind the body
+// (priorHidden): that joint goes where the prior puts it, even where its flow holds (here the
+// prior is the truth shifted 8 px right), at confidence 0.3; a joint not hidden keeps to its
+// flow when the prior strays within the gate (the truth, here, beside a prior 8 px off).
+TEST(JointTracker, AJointTheWalkHidesIsPlacedWhereTheWalkPutsIt) {
+  const Footage& footage = glidingFigure();
+  VideoSource video(footage.file);
+  const Keyframes keys = keyframesFromTrack(footage.truthPx, {0}, footage.file.string());
+  TrackerOptions o;
+  o.priorPx = footage.truthPx;
+  o.priorPx.col(2 * index(Joint::LShoulder)).array() += 8.0;
+  o.priorPx.col(2 * index(Joint::Head)).array() += 8.0;
+  o.priorHidden = Eigen::MatrixXd::Zero(footage.truthPx.rows(), kJointCount);
+  o.priorHidden.col(index(Joint::LShoulder)).setOnes();
+  const JointTrack track = trackJoints(video, keys, o);
+  const Eigen::Index last = track.jointsPx.rows() - 1;
+  const auto missAt = [&](Joint j) {
+    return (track.jointsPx.row(last).segment<2>(2 * index(j)) -
+            footage.truthPx.row(last).segment<2>(2 * index(j)))
+        .eval();
+  };
+  EXPECT_NEAR(missAt(Joint::LShoulder).x(), 8.0, 1.0);
+  EXPECT_NEAR(missAt(Joint::LShoulder).y(), 0.0, 1.0);
+  EXPECT_DOUBLE_EQ(track.confidence(last, index(Joint::LShoulder)), 0.3);
+  EXPECT_LT(missAt(Joint::Head).norm(), 2.0);  // measured 0.7 px alone
+}
+
 TEST(JointTracker, RefusesARangeWithoutKeyframesOrOutsideTheVideo) {
   const Footage& footage = glidingFigure();
   VideoSource video(footage.file);

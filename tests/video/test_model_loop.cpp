@@ -47,10 +47,9 @@ TrackDistance loopedDistance(int rounds, ModelLoopResult* out = nullptr) {
   return d;
 }
 
-// Measured (docs/TRACKING.md): without the loop median 10.8 px, p95 170 px; one round 10.7 /
-// 62.0 px. The fit strides at the trunk's bob, 0.915 Hz against the walker's own 0.932 Hz;
-// the tail falls to about a third, the median does not move (the hips and the far shoulder,
-// hidden, are 11-19 px off), and issue 14's 3 px is not reached.
+// Measured (docs/TRACKING.md): without the loop median 10.8 px, p95 170 px; one round 10.5 /
+// 59.3 px. The fit strides at the trunk's bob, 0.915 Hz against the walker's own 0.932 Hz;
+// the tail falls to about a third, the median hardly moves, and issue 14's 3 px is not reached.
 TEST(ModelLoop, OneRoundHalvesTheTrackersTailOnAWalker) {
   ModelLoopResult looped;
   const TrackDistance alone = loopedDistance(0), once = loopedDistance(1, &looped);
@@ -87,7 +86,7 @@ TEST(ModelLoop, AClipTheFitRefusesKeepsItsFirstTrackAndSaysWhy) {
 // 0; both fits at the default model's σ² with the stride held at the trunk's bob for the track,
 // as `track --reconstruct` and `reconstruct --unknown-camera` fit. The tracker alone misses
 // (1.46×; docs/TRACKING.md has four more walkers, 1.8–2.5×); three rounds of the model loop
-// bring it within the bar (measured 1.18).
+// bring it within the bar (measured 1.19).
 TEST(ModelLoopOnSharedWalkers, ThreeRoundsBringAHeldOutWalkersFitWithinTheBar) {
   EW_REQUIRE_SHARED_DATA();
   const Dataset dataset = loadDataset({test::sharedDataDir() / "walkers.csv"});
