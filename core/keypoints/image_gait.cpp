@@ -167,9 +167,9 @@ std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minSha
     hz.push_back(f);
     share.push_back(sum / variance);
   }
-  // A peak inside the band, not its edge: a share still rising at the edge is something slower
-  // or faster than a step (a tracker's hip dragged down by the thigh once a stride, a walker
-  // sinking in the image as they near the camera), and would be read as a bob at the edge.
+  // A peak inside the band, not its edge: a share still rising at the edge belongs to something
+  // slower or faster than a step (a tracker's hips dragged down by the thigh once a stride read
+  // as a bob at the band's lower edge, half the stride).
   double bestHz = 0.0, bestShare = 0.0;
   for (std::size_t i = 1; i + 1 < share.size(); ++i)
     if (share[i] >= share[i - 1] && share[i] >= share[i + 1] && share[i] > bestShare)
