@@ -32,10 +32,11 @@ ModelLoopResult trackWithModel(VideoSource& video, const Keyframes& keyframes,
       result.stoppedBecause = e.what();
       break;
     }
-    result.rounds.push_back({fit.fit.reprojectionRmsPx, fit.fit.strideHz, fit.fit.camera.alphaDeg});
     options.firstFrame = result.track.firstFrame;
     options.priorPx = fit.reprojectedPx;
     options.priorHidden = hiddenJoints(fit.framesMm, fit.timesS, fit.fit.camera);
+    result.rounds.push_back({fit.fit.reprojectionRmsPx, fit.fit.strideHz, fit.fit.camera.alphaDeg,
+                             static_cast<int>(options.priorHidden.sum())});
     result.track = trackJoints(video, keyframes, options, share);
   }
   return result;

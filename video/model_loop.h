@@ -22,6 +22,9 @@ struct ModelLoopOptions {
 struct ModelLoopRound {
   double reprojectionRmsPx = 0.0;  // the fit to the track before this round
   double strideHz = 0.0, alphaDeg = 0.0;
+  // Joint-frames the fitted walker hides behind its own body (core/camera/self_occlusion.h),
+  // which this round's track placed where the walk puts them.
+  int hiddenJointFrames = 0;
 };
 
 struct ModelLoopResult {

@@ -146,10 +146,12 @@ json modelLoopJson(const ModelLoopResult& r, int asked) {
   for (const ModelLoopRound& q : r.rounds)
     rounds.push_back({{"reprojection_rms_px", q.reprojectionRmsPx},
                       {"stride_hz", q.strideHz},
-                      {"alpha_deg", q.alphaDeg}});
+                      {"alpha_deg", q.alphaDeg},
+                      {"hidden_joint_frames", q.hiddenJointFrames}});
   std::cout << "model loop: " << r.rounds.size() << " of " << asked << " rounds";
   for (const ModelLoopRound& q : r.rounds)
-    std::cout << " [fit " << q.reprojectionRmsPx << " px, " << q.strideHz << " Hz]";
+    std::cout << " [fit " << q.reprojectionRmsPx << " px, " << q.strideHz << " Hz, "
+              << q.hiddenJointFrames << " joint-frames hidden]";
   if (!r.stoppedBecause.empty()) std::cout << "; stopped: " << r.stoppedBecause;
   std::cout << "\n";
   return {{"rounds_asked", asked}, {"rounds", rounds}, {"stopped_because", r.stoppedBecause}};

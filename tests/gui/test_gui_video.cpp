@@ -271,6 +271,7 @@ TEST_F(GuiVideo, RunsTheModelLoopWhenAsked) {
   EXPECT_EQ(s["video"]["model_loop"], 2);
   EXPECT_EQ(s["video"]["track"]["model_loop"], 2);
   EXPECT_EQ(s["video"]["track"]["model_loop_fits"], 2) << s["video"]["track"]["model_loop_stopped"];
+  EXPECT_GT(s["video"]["track"]["model_loop_hidden_joint_frames"].get<int>(), 0);
   const json fit = s["clip"]["fit"];
   ASSERT_TRUE(fit.is_object()) << s["clip"];
   EXPECT_NEAR(fit["stride_hz"].get<double>(), f.strideHz, 0.05 * f.strideHz);

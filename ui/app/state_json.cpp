@@ -199,6 +199,8 @@ nlohmann::json videoJson(const AppState& s) {
                   {"mean_confidence", t.track.confidence.mean()},
                   {"model_loop", t.modelLoopRounds},
                   {"model_loop_fits", t.loopRounds.size()},
+                  {"model_loop_hidden_joint_frames",
+                   t.loopRounds.empty() ? 0 : t.loopRounds.back().hiddenJointFrames},
                   {"model_loop_stopped", t.loopStopped}};
   }
   return j;

@@ -144,9 +144,11 @@ std::string loopNote(const TrackedVideo& t) {
   if (t.modelLoopRounds == 0) return "";
   char text[160];
   if (t.loopRounds.empty()) return "model loop stopped: " + t.loopStopped;
-  std::snprintf(text, sizeof text, "model loop: %zu of %d rounds, fit %.1f → %.1f px",
+  std::snprintf(text, sizeof text,
+                "model loop: %zu of %d rounds, fit %.1f → %.1f px\n%d joint-frames behind the "
+                "body, placed by the walk",
                 t.loopRounds.size(), t.modelLoopRounds, t.loopRounds.front().reprojectionRmsPx,
-                t.loopRounds.back().reprojectionRmsPx);
+                t.loopRounds.back().reprojectionRmsPx, t.loopRounds.back().hiddenJointFrames);
   std::string note = text;
   if (!t.loopStopped.empty()) note += "; stopped: " + t.loopStopped;
   return note;
