@@ -108,6 +108,9 @@ void printSummary(const json& r) {
             << r["stature_m"].get<double>() << " m)";
   if (r["rate_assumed"].get<bool>())
     std::cerr << " (at an assumed " << r["rate_hz"].get<double>() << " fps: give --fps)";
+  // Said when the trunk stood in for feet that read another stride (a view from the front).
+  if (r.contains("stride_source") && r["stride_source"].get<std::string>().starts_with("trunk"))
+    std::cerr << "\nstride from the " << r["stride_source"].get<std::string>();
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
 }
 
@@ -176,6 +179,7 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
   json report = reportJson(a, t, fit);
   if (report["focal_source"].is_string()) report["focal_source"] = focalSource;
   report["lens_undistorted"] = lens;
+  report["stride_source"] = clip.strideSource;
   printSummary(report);
   if (a.json) std::cout << report.dump(2) << "\n";
   return 0;

@@ -1,7 +1,9 @@
 #include "core/camera/clip_reconstruction.h"
 
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <utility>
 
 #include "core/camera/detector_offsets.h"
@@ -42,13 +44,45 @@ ClipReconstruction reconstructKeypointClip(const EigenwalkerModel& model,
                                   std::move(fitOptions));
 }
 
+namespace {
+
+std::string strideText(double hz) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(2) << hz << " Hz";
+  return s.str();
+}
+
+}  // namespace
+
+ImageGait gaitForTheFit(const KeypointTrial& trial, CameraFitOptions& fitOptions,
+                        std::string& source) {
+  if (fitOptions.strideHzHint) {
+    source = fitOptions.holdStrideHz ? "held by the caller" : "the caller's hint";
+    return imageGaitCycles(trial, fitOptions.holdStrideHz ? fitOptions.strideHzHint : std::nullopt);
+  }
+  const std::optional<double> bob = trunkBobStrideHz(trial);
+  // With the bob held the walking checks still run, and the strikes are read beside it.
+  const ImageGait g = imageGaitCycles(trial, bob);
+  const bool feetAgree =
+      bob && std::abs(g.strikesStrideHz - *bob) <= kFeetDisagreeWithTheBobShare * *bob;
+  if (!bob || feetAgree) {
+    source = "foot strikes";
+    ImageGait feet = bob ? imageGaitCycles(trial) : g;
+    fitOptions.strideHzHint = feet.strideHz;
+    return feet;
+  }
+  source = "trunk's bob (the foot strikes read " +
+           (g.strikesStrideHz > 0.0 ? strideText(g.strikesStrideHz) : std::string("none")) + ")";
+  fitOptions.strideHzHint = bob;
+  fitOptions.holdStrideHz = true;
+  return g;
+}
+
 ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, KeypointTrial trial,
                                             CameraFitOptions fitOptions) {
   ClipReconstruction c;
   c.trial = std::move(trial);
-  c.gait =
-      imageGaitCycles(c.trial, fitOptions.holdStrideHz ? fitOptions.strideHzHint : std::nullopt);
-  if (!fitOptions.strideHzHint) fitOptions.strideHzHint = c.gait.strideHz;
+  c.gait = gaitForTheFit(c.trial, fitOptions, c.strideSource);
   if (fitOptions.file.empty()) fitOptions.file = c.trial.file;
   c.fit = reconstructDetectedWalker(model, c.trial, fitOptions);
   c.timesS = frameTimes(c.trial.frameCount, c.trial.rateHz);

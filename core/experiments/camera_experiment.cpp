@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "core/camera/camera_reconstruction.h"
+#include "core/camera/clip_reconstruction.h"
 #include "core/camera/detector_offsets.h"
 #include "core/camera/walk_camera.h"
 #include "core/common/errors.h"
@@ -179,7 +180,8 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
                                               const CameraExperimentOptions& o, CameraRow& row) {
   CameraFitOptions f;
   f.estimator = {Estimator::Map, o.sigma2Mm2};
-  f.strideHzHint = imageGaitCycles(t).strideHz;
+  std::string strideSource;
+  gaitForTheFit(t, f, strideSource);  // as `reconstruct --unknown-camera` starts its fit
   f.file = folder;
   const auto t0 = std::chrono::steady_clock::now();
   const CameraFit fit = reconstructDetectedWalker(fold.model, t, f);

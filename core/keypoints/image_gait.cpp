@@ -89,7 +89,8 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
   }
   g.rightStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Right);
   g.leftStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Left);
-  g.strideHz = heldStrideHz.value_or(strideHz(g.rightStrikesS, g.leftStrikesS));
+  g.strikesStrideHz = strideHz(g.rightStrikesS, g.leftStrikesS);
+  g.strideHz = heldStrideHz.value_or(g.strikesStrideHz);
   if (g.strideHz < kMinStrideHz || g.strideHz > kMaxStrideHz)
     notWalking(t, "no regular foot strikes (" + std::to_string(g.rightStrikesS.size()) +
                       " right, " + std::to_string(g.leftStrikesS.size()) + " left at " +
@@ -111,7 +112,7 @@ constexpr std::size_t kBobMinJoints = 2;
 constexpr double kBobMinStrideHz = 0.5, kBobMaxStrideHz = 1.6;
 constexpr double kBobStepHz = 0.005;
 
-// A joint's vertical path (v, px) where it is seen, detrended by a straight line in time.
+// A joint's vertical path (v, px) where it is seen, detrended by a parabola in time.
 struct BobSamples {
   Eigen::VectorXd t, v;
 };
@@ -127,10 +128,13 @@ std::optional<BobSamples> bobSamples(const Eigen::MatrixXd& px, Joint joint, dou
     return std::nullopt;
   BobSamples b{Eigen::Map<Eigen::VectorXd>(ts.data(), static_cast<Eigen::Index>(ts.size())),
                Eigen::Map<Eigen::VectorXd>(vs.data(), static_cast<Eigen::Index>(vs.size()))};
-  Eigen::MatrixXd line(b.t.size(), 2);
-  line.col(0).setOnes();
-  line.col(1) = b.t;
-  b.v -= line * line.colPivHouseholderQr().solve(b.v);
+  // A parabola, not a line: a walker nearing the camera grows in the image as one over its
+  // distance, a curve a line leaves behind to pass for a slow bob (read at a near-front view).
+  Eigen::MatrixXd trend(b.t.size(), 3);
+  trend.col(0).setOnes();
+  trend.col(1) = b.t;
+  trend.col(2) = b.t.array().square();
+  b.v -= trend * trend.colPivHouseholderQr().solve(b.v);
   return b;
 }
 

@@ -24,7 +24,8 @@ struct ImageGait {
   double travelPx = 0.0;                                // pelvis, first to last tenth
   std::vector<double> rightStrikesS, leftStrikesS;      // seconds from frame 0
   double strideHz = 0.0;
-  double cycles = 0.0;  // clip duration × stride frequency
+  double strikesStrideHz = 0.0;  // what the strikes alone read (0: none), held stride or not
+  double cycles = 0.0;           // clip duration × stride frequency
 };
 
 // Throws Error(BadData) naming the file with "not walking: …" when the pelvis does not
@@ -38,7 +39,8 @@ ImageGait imageGaitCycles(const KeypointTrial& trial,
 // The stride frequency from the trunk's bob: the head, the sternum and the shoulders rise and
 // fall twice a stride (once a step), in any view (the pelvis and hips too, but a tracker's
 // slip under the thigh tops once a stride; docs/TRACKING.md). The vertical image paths of
-// those seen in at least 60 % of the frames, each detrended, are fitted with a sinusoid over
+// those seen in at least 60 % of the frames, each detrended by a parabola in time (a walker
+// nearing the camera sinks along a curve), are fitted with a sinusoid over
 // step frequencies 1.0 … 3.2 Hz (strides of 0.5 … 1.6 Hz, 0.005 Hz apart); the frequency whose
 // fit takes the largest share of their summed variance among the band's inner peaks (not its
 // edges), halved. Unset when fewer than two such joints, no inner peak, the clip is shorter
