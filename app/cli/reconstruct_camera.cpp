@@ -208,8 +208,7 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a, Key
   const std::optional<CalibratedCamera> calibration = calibrationOf(a);
   CameraFitOptions o = fitOptionsOf(model, a, calibration, k, focalSource);
   const json lens = undistorted(a, calibration, joints);
-  if (a.strideFromTrunk && holdTheTrunksStride(joints, o))
-    std::cerr << "stride held at the trunk's bob: " << *o.strideHzHint << " Hz\n";
+  if (a.strideFromTrunk) holdTheTrunksStride(joints, o);  // the summary says when it held
   return fitAndReport(model, a, std::move(joints), o, focalSource, lens);
 }
 

@@ -28,6 +28,7 @@ struct CameraFitOptions {
   // Hold the stride frequency at the hint instead of refining it: a hint more trustworthy than
   // the image's limbs (the model loop's trunk bob, when the tracker has lost the feet).
   bool holdStrideHz = false;
+  std::string strideHintSource;         // where a given hint came from, for reports ("" unsaid)
   int startCount = 4;                   // view-angle minima tried as starts
   int maxIterations = 300;
   std::string file;                     // named in errors

@@ -57,7 +57,9 @@ std::string strideText(double hz) {
 ImageGait gaitForTheFit(const KeypointTrial& trial, CameraFitOptions& fitOptions,
                         std::string& source) {
   if (fitOptions.strideHzHint) {
-    source = fitOptions.holdStrideHz ? "held by the caller" : "the caller's hint";
+    source = !fitOptions.strideHintSource.empty() ? fitOptions.strideHintSource
+             : fitOptions.holdStrideHz                ? "held by the caller"
+                                                      : "the caller's hint";
     return imageGaitCycles(trial, fitOptions.holdStrideHz ? fitOptions.strideHzHint : std::nullopt);
   }
   const std::optional<double> bob = trunkBobStrideHz(trial);
@@ -97,6 +99,7 @@ bool holdTheTrunksStride(const KeypointTrial& trial, CameraFitOptions& fitOption
   if (!bob) return false;
   fitOptions.strideHzHint = bob;
   fitOptions.holdStrideHz = true;
+  fitOptions.strideHintSource = "trunk's bob (a track's, held)";
   return true;
 }
 

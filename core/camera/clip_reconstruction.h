@@ -24,8 +24,9 @@ struct ClipReconstruction {
   Eigen::MatrixXd reprojectedPx;  // T × 30: the 3D walker through the camera, pixels, y down
   // Per joint, RMS over the frames that see it of |reprojected − input| (px); NaN if never seen.
   std::array<double, kJointCount> residualRmsPx{};
-  // Where the stride frequency came from: "foot strikes", "held by the caller", or "trunk's
-  // bob (the foot strikes read … Hz)" (strideFromTheBobWhenTheFeetDisagree below).
+  // Where the stride frequency came from: "foot strikes", "trunk's bob (the foot strikes read
+  // … Hz)" (gaitForTheFit below), "trunk's bob (a track's, held)" (holdTheTrunksStride), or the
+  // caller's own hint.
   std::string strideSource;
 };
 
@@ -53,8 +54,8 @@ ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, Keypo
 // The image's gait cycles, and the stride the fit starts from or holds, set in `fitOptions`: the
 // caller's hint when it gives one; else the foot strikes' stride as a hint; else, when the
 // trunk's bob is clear and the strikes read none or one more than kFeetDisagreeWithTheBobShare
-// away, the bob, held. `source` says which ("foot strikes", "trunk's bob (…)", "held by the
-// caller", "the caller's hint"). Throws what imageGaitCycles throws.
+// away, the bob, held. `source` says which ("foot strikes", "trunk's bob (…)", the options'
+// strideHintSource, "held by the caller", "the caller's hint"). Throws what imageGaitCycles throws.
 ImageGait gaitForTheFit(const KeypointTrial& trial, CameraFitOptions& fitOptions,
                         std::string& source);
 

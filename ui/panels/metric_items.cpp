@@ -24,7 +24,8 @@ std::vector<MetricItem> clipItems(const AppState& s) {
            formatted("head %.2f m", f.headHeightMm / 1000.0)},
           {"speed", formatted("%.2f m/s", f.speedMps), rec.trial.rateAssumed ? "(30 fps?)" : ""},
           {"stride length", formatted("%.2f m", f.strideLengthM), formatted("%.2f Hz", f.strideHz)},
-          {"cadence  steps", formatted("%.0f /min", f.cadenceStepsPerMin), ""},
+          {"cadence  steps", formatted("%.0f /min", f.cadenceStepsPerMin),
+           rec.strideSource.starts_with("trunk") ? "trunk's bob" : ""},
           {"reprojection  RMS", formatted("%.1f px", f.reprojectionRmsPx),
            f.outlierSamples > 0 ? formatted("%.0f glitches out", static_cast<double>(f.outlierSamples)) : ""}};
 }
