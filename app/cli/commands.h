@@ -19,5 +19,6 @@ void addEvaluateCommand(CLI::App& app, int& exitCode);
 void addReconstructCommand(CLI::App& app, int& exitCode);
 // Only when the video library was built (OpenCV found): EW_HAVE_VIDEO.
 void addTrackCommand(CLI::App& app, int& exitCode);
+void addTrackStudyCommand(CLI::App& app, int& exitCode);
 
 }  // namespace ew::cli

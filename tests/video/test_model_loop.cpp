@@ -23,6 +23,7 @@
 #include "tests/video/walking_footage.h"
 #include "video/model_loop.h"
 #include "video/synthetic_footage.h"
+#include "video/track_study.h"
 
 namespace ew {
 namespace {
@@ -85,68 +86,18 @@ TEST(ModelLoop, AClipTheFitRefusesKeepsItsFirstTrackAndSaysWhy) {
                                 ErrorKind::BadArgument, {"0-10"}));
 }
 
-// A held-out shared walker (the model is built without it) carried forward at 1.2 m/s for three
-// strides and filmed 6 m away from `azimuthDeg` (cameraBeside: 0 a side view, −90 the front),
-// with the MPJPE of the fit to a 2D track of it (translation removed), as `track --reconstruct`
-// and `reconstruct --unknown-camera` fit: at the default model's σ², the stride held at the
-// trunk's bob for a track.
-class HeldOutWalkerFilmed {
- public:
-  HeldOutWalkerFilmed(const std::string& subject, double azimuthDeg) {
-    const Dataset dataset = loadDataset({test::sharedDataDir() / "walkers.csv"});
-    const std::vector<ExperimentWalker> walkers = experimentWalkers(makeWalkers(dataset), dataset);
-    const auto held = std::find_if(walkers.begin(), walkers.end(),
-                                   [&](const ExperimentWalker& w) { return w.subject == subject; });
-    if (held == walkers.end()) throw std::runtime_error("no shared walker " + subject);
-    std::vector<ExperimentWalker> others;
-    std::copy_if(walkers.begin(), walkers.end(), std::back_inserter(others),
-                 [&](const ExperimentWalker& w) { return w.subject != held->subject; });
-    model_ = buildFullModel(others);
-    const double strideS = 2.0 * std::numbers::pi / held->fit.omegaRadS;
-    const int frames = static_cast<int>(std::ceil(3.0 * strideS * kFps)) + 1;
-    times_ = frameTimes(frames, kFps);
-    inPlace_ = synthesizeFrames(held->fit.w, held->fit.omegaRadS, 0.0, times_);
-    Eigen::MatrixXd walking = inPlace_;
-    for (int f = 0; f < frames; ++f)
-      for (int j = 0; j < kJointCount; ++j) walking(f, 3 * j + 1) += 1200.0 * times_[f];
-    dir_ = test::makeTempDir("held_out_loop");
-    file_ = dir_ / "walk.avi";
-    truthPx_ = writeFootage(file_, walking, cameraBeside(walking, azimuthDeg, 6000.0), kFps);
-  }
-  ~HeldOutWalkerFilmed() { fs::remove_all(dir_); }
+std::vector<ExperimentWalker> sharedWalkers() {
+  const Dataset dataset = loadDataset({test::sharedDataDir() / "walkers.csv"});
+  return experimentWalkers(makeWalkers(dataset), dataset);
+}
 
-  const EigenwalkerModel& model() const { return model_; }
-  const fs::path& file() const { return file_; }
-  const Eigen::MatrixXd& truthPx() const { return truthPx_; }
-  Keyframes firstFrameMarked() const { return keyframesFromTrack(truthPx_, {0}, file_.string()); }
-
-  double mpjpeFromTruth() const {
-    KeypointOptions atFps;
-    atFps.fps = kFps;
-    return mpjpeOf(trialFromJoints(truthPx_, Eigen::MatrixXd::Ones(truthPx_.rows(), kJointCount),
-                                   file_.string(), "true 2D", atFps),
-                   false);
-  }
-  double mpjpeFromTrack(const JointTrack& track) const {
-    return mpjpeOf(keypointTrialOf(track, file_.string()), true);
-  }
-
- private:
-  static constexpr double kFps = 30.0;
-  EigenwalkerModel model_;
-  Eigen::VectorXd times_;
-  Eigen::MatrixXd inPlace_, truthPx_;
-  fs::path dir_, file_;
-
-  double mpjpeOf(const KeypointTrial& joints, bool tracked) const {
-    CameraFitOptions o;
-    o.estimator = {Estimator::Map, defaultSigma2Mm2(defaultRealModel())};
-    if (tracked) holdTheTrunksStride(joints, o);
-    const ClipReconstruction c = reconstructKeypointTrial(model_, joints, o);
-    const Eigen::MatrixXd walk = synthesizeFrames(c.fit.w, c.fit.omegaRadS, c.fit.phaseRad, times_);
-    return mpjpeWithoutTranslation(walk, inPlace_);
-  }
-};
+// A held-out shared walker filmed 6 m away (video/track_study.h, what `track-study` runs), fitted
+// at the default model's σ² as `track --reconstruct` and `reconstruct --unknown-camera` fit.
+TrackStudyOptions filmedAsTheStudy() {
+  TrackStudyOptions o;
+  o.sigma2Mm2 = defaultSigma2Mm2(defaultRealModel());
+  return o;
+}
 
 // Issue 14's bar for the walk from a track: within 1.3× the MPJPE of the same fit to the true
 // 2D. CMU06 filmed 30° off the side view and tracked from its true joints on frame 0. The
@@ -154,15 +105,15 @@ class HeldOutWalkerFilmed {
 // of the model loop bring it within the bar (measured 1.15).
 TEST(ModelLoopOnSharedWalkers, ThreeRoundsBringAHeldOutWalkersFitWithinTheBar) {
   EW_REQUIRE_SHARED_DATA();
-  const HeldOutWalkerFilmed walker("CMU06", 30.0);
-  const double fromTruth = walker.mpjpeFromTruth();
+  const FilmedHeldOutWalker walker(sharedWalkers(), "CMU06", 30.0, filmedAsTheStudy());
+  const double fromTruth = walker.mpjpeFromTruthMm();
   VideoSource alone(walker.file());
-  const double fromTrack = walker.mpjpeFromTrack(trackJoints(alone, walker.firstFrameMarked()));
+  const double fromTrack = walker.mpjpeFromTrackMm(trackJoints(alone, walker.firstFrameMarked()));
   VideoSource again(walker.file());
   const ModelLoopResult looped =
       trackWithModel(again, walker.firstFrameMarked(), walker.model(), {}, ModelLoopOptions{3});
   ASSERT_EQ(looped.rounds.size(), 3u) << looped.stoppedBecause;
-  const double fromLoop = walker.mpjpeFromTrack(looped.track);
+  const double fromLoop = walker.mpjpeFromTrackMm(looped.track);
   std::cout << "MPJPE from the true 2D " << fromTruth << " mm, from the track " << fromTrack
             << " mm (" << fromTrack / fromTruth << "x), after three rounds " << fromLoop << " mm ("
             << fromLoop / fromTruth << "x)\n";
@@ -178,13 +129,13 @@ TEST(ModelLoopOnSharedWalkers, ThreeRoundsBringAHeldOutWalkersFitWithinTheBar) {
 // the side the far limbs pass behind the body and the bar is not met (the test above).
 TEST(ModelLoopOnSharedWalkers, FromTheFrontOneRoundTracksAHeldOutWalkerWithinTheWholeBar) {
   EW_REQUIRE_SHARED_DATA();
-  const HeldOutWalkerFilmed walker("CMU06", -90.0);
+  const FilmedHeldOutWalker walker(sharedWalkers(), "CMU06", -90.0, filmedAsTheStudy());
   VideoSource video(walker.file());
   const ModelLoopResult looped =
       trackWithModel(video, walker.firstFrameMarked(), walker.model(), {}, ModelLoopOptions{1});
   ASSERT_EQ(looped.rounds.size(), 1u) << looped.stoppedBecause;
   const TrackDistance d = compareTracks(looped.track.jointsPx, 0, walker.truthPx());
-  const double ratio = walker.mpjpeFromTrack(looped.track) / walker.mpjpeFromTruth();
+  const double ratio = walker.mpjpeFromTrackMm(looped.track) / walker.mpjpeFromTruthMm();
   std::cout << "track median " << d.medianAllPx << " px, p95 " << d.p95AllPx << " px; MPJPE "
             << ratio << "x the true 2D's\n";
   EXPECT_EQ(d.jointFrames, static_cast<int>(walker.truthPx().size() / 2));  // every joint, every frame

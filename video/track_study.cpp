@@ -1,0 +1,165 @@
+#include "video/track_study.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <unistd.h>
+
+#include "core/camera/clip_reconstruction.h"
+#include "core/common/errors.h"
+#include "core/engine/fourier.h"
+#include "core/engine/metrics.h"
+#include "core/keypoints/keypoint_trial.h"
+#include "core/tracking/track_compare.h"
+#include "video/model_loop.h"
+#include "video/synthetic_footage.h"
+
+namespace ew {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<ExperimentWalker> othersThan(const std::vector<ExperimentWalker>& walkers,
+                                         const std::string& subject) {
+  std::vector<ExperimentWalker> others;
+  std::copy_if(walkers.begin(), walkers.end(), std::back_inserter(others),
+               [&](const ExperimentWalker& w) { return w.subject != subject; });
+  return others;
+}
+
+fs::path footageFolder(const TrackStudyOptions& o) {
+  static std::atomic<int> counter{0};
+  const fs::path base = o.scratchDir.empty() ? fs::temp_directory_path() : o.scratchDir;
+  const fs::path dir = base / ("eigenwalker_track_study_" + std::to_string(::getpid()) + "_" +
+                               std::to_string(counter++));
+  fs::create_directories(dir);
+  return dir;
+}
+
+}  // namespace
+
+FilmedHeldOutWalker::FilmedHeldOutWalker(const std::vector<ExperimentWalker>& walkers,
+                                         const std::string& subject, double azimuthDeg,
+                                         const TrackStudyOptions& options)
+    : options_(options) {
+  const auto held = std::find_if(walkers.begin(), walkers.end(),
+                                 [&](const ExperimentWalker& w) { return w.subject == subject; });
+  if (held == walkers.end())
+    throw Error(ErrorKind::BadArgument, "--subjects", "", "no walker of subject '" + subject + "'");
+  const std::vector<ExperimentWalker> others = othersThan(walkers, subject);
+  if (others.size() < 2)
+    throw Error(ErrorKind::BadArgument, "--subjects", "",
+                "holding out '" + subject + "' leaves fewer than two walkers to build a model");
+  model_ = buildFullModel(others);
+  strideHz_ = held->fit.omegaRadS / (2.0 * std::numbers::pi);
+  const int frames = static_cast<int>(std::ceil(options.strides / strideHz_ * options.fps)) + 1;
+  times_ = frameTimes(frames, options.fps);
+  inPlace_ = synthesizeFrames(held->fit.w, held->fit.omegaRadS, 0.0, times_);
+  Eigen::MatrixXd walking = inPlace_;
+  for (int f = 0; f < frames; ++f)
+    for (int j = 0; j < kJointCount; ++j) walking(f, 3 * j + 1) += options.speedMmS * times_[f];
+  dir_ = footageFolder(options);
+  file_ = dir_ / "walk.avi";
+  truthPx_ = writeFootage(file_, walking, cameraBeside(walking, azimuthDeg, options.distanceMm),
+                          options.fps);
+}
+
+FilmedHeldOutWalker::~FilmedHeldOutWalker() {
+  std::error_code ignored;
+  fs::remove_all(dir_, ignored);
+}
+
+Keyframes FilmedHeldOutWalker::firstFrameMarked() const {
+  return keyframesFromTrack(truthPx_, {0}, file_.string());
+}
+
+double FilmedHeldOutWalker::mpjpeFromTruthMm() const {
+  KeypointOptions atFps;
+  atFps.fps = options_.fps;
+  return mpjpeOf(trialFromJoints(truthPx_, Eigen::MatrixXd::Ones(truthPx_.rows(), kJointCount),
+                                 file_.string(), "true 2D", atFps),
+                 false);
+}
+
+double FilmedHeldOutWalker::mpjpeFromTrackMm(const JointTrack& track) const {
+  return mpjpeOf(keypointTrialOf(track, file_.string()), true);
+}
+
+double FilmedHeldOutWalker::mpjpeOf(const KeypointTrial& joints, bool tracked) const {
+  CameraFitOptions o;
+  o.estimator = {Estimator::Map, options_.sigma2Mm2};
+  if (tracked) holdTheTrunksStride(joints, o);
+  const ClipReconstruction c = reconstructKeypointTrial(model_, joints, o);
+  const Eigen::MatrixXd walk = synthesizeFrames(c.fit.w, c.fit.omegaRadS, c.fit.phaseRad, times_);
+  return mpjpeWithoutTranslation(walk, inPlace_);
+}
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// A fit's MPJPE, or NaN with the refusal kept (the first one) in `error`.
+template <typename Fit>
+double mpjpeOrRefusal(Fit fit, std::string& error) {
+  try {
+    return fit();
+  } catch (const Error& e) {
+    if (error.empty()) error = e.what();
+    return kNaN;
+  }
+}
+
+TrackStudyRow studyOne(const std::vector<ExperimentWalker>& walkers, const std::string& subject,
+                       double azimuthDeg, const TrackStudyOptions& o) {
+  const FilmedHeldOutWalker walker(walkers, subject, azimuthDeg, o);
+  VideoSource video(walker.file());
+  const ModelLoopResult looped =
+      trackWithModel(video, walker.firstFrameMarked(), walker.model(), {}, ModelLoopOptions{o.rounds});
+  const TrackDistance d = compareTracks(looped.track.jointsPx, 0, walker.truthPx());
+  TrackStudyRow row;
+  row.subject = subject;
+  row.azimuthDeg = azimuthDeg;
+  row.rounds = static_cast<int>(looped.rounds.size());
+  row.frames = static_cast<int>(walker.truthPx().rows());
+  row.medianPx = d.medianAllPx;
+  row.p95Px = d.p95AllPx;
+  row.strideHz = walker.strideHz();
+  row.error = looped.stoppedBecause;
+  row.mpjpeTruthMm = mpjpeOrRefusal([&] { return walker.mpjpeFromTruthMm(); }, row.error);
+  row.mpjpeTrackMm = mpjpeOrRefusal([&] { return walker.mpjpeFromTrackMm(looped.track); }, row.error);
+  return row;
+}
+
+std::vector<std::string> subjectsOf(const std::vector<ExperimentWalker>& walkers,
+                                    const TrackStudyOptions& o) {
+  if (!o.subjects.empty()) return o.subjects;
+  return walkerSubjects(walkers);
+}
+
+}  // namespace
+
+std::vector<TrackStudyRow> runTrackStudy(const std::vector<ExperimentWalker>& walkers,
+                                         const TrackStudyOptions& options,
+                                         const TrackStudyProgress& progress) {
+  if (options.azimuthsDeg.empty())
+    throw Error(ErrorKind::BadArgument, "--azimuths", "", "no azimuth to film from");
+  if (options.rounds < 0 || options.rounds > 10)
+    throw Error(ErrorKind::BadArgument, "--model-loop", "", "rounds must be 0-10");
+  const std::vector<std::string> subjects = subjectsOf(walkers, options);
+  for (const std::string& s : subjects)
+    if (std::none_of(walkers.begin(), walkers.end(),
+                     [&](const ExperimentWalker& w) { return w.subject == s; }))
+      throw Error(ErrorKind::BadArgument, "--subjects", "", "no walker of subject '" + s + "'");
+  std::vector<TrackStudyRow> rows;
+  const int total = static_cast<int>(subjects.size() * options.azimuthsDeg.size());
+  for (const std::string& subject : subjects)
+    for (double azimuth : options.azimuthsDeg) {
+      rows.push_back(studyOne(walkers, subject, azimuth, options));
+      if (progress) progress(rows.back(), static_cast<int>(rows.size()), total);
+    }
+  return rows;
+}
+
+}  // namespace ew

@@ -1,0 +1,88 @@
+#pragma once
+// Issue 14's synthetic footage as a study (`eigenwalker-cli track-study`, docs/TRACKING.md "By
+// view"): held-out shared walkers, each its own two-harmonic walk carried forward for a few
+// strides and filmed by writeFootage from chosen azimuths, tracked from its true joints on the
+// first frame with N rounds of the model loop; the track against the truth in pixels, and the
+// walk fitted to it through the unknown camera by the model built without that subject, beside
+// the same fit to the true 2D (MPJPE, translation removed): what `track --reconstruct` and
+// `reconstruct --unknown-camera` fit.
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/engine/model.h"
+#include "core/experiments/leave_one_out.h"
+#include "core/tracking/keyframes.h"
+#include "video/joint_tracker.h"
+
+namespace ew {
+
+struct TrackStudyOptions {
+  std::vector<std::string> subjects;  // held out one at a time; empty: every subject
+  std::vector<double> azimuthsDeg{-90, -60, -30, 0, 30, 60, 90};  // cameraBeside's azimuth
+  int rounds = 1;                     // of the model loop (0: the tracker alone)
+  double distanceMm = 6000.0;         // camera to the middle of the walk
+  double speedMmS = 1200.0;           // the walk carried forward
+  double strides = 3.0;
+  double fps = 30.0;
+  double sigma2Mm2 = 1000.0;          // MAP prior of both fits
+  std::filesystem::path scratchDir;   // footage written here and removed; empty: the temp dir
+};
+
+// One held-out walker filmed from one azimuth: its footage on disk while this lives.
+class FilmedHeldOutWalker {
+ public:
+  // Error(BadArgument) naming `subject` when `walkers` has no such subject or only it.
+  FilmedHeldOutWalker(const std::vector<ExperimentWalker>& walkers, const std::string& subject,
+                      double azimuthDeg, const TrackStudyOptions& options);
+  ~FilmedHeldOutWalker();
+  FilmedHeldOutWalker(const FilmedHeldOutWalker&) = delete;
+  FilmedHeldOutWalker& operator=(const FilmedHeldOutWalker&) = delete;
+
+  const EigenwalkerModel& model() const { return model_; }  // built without the subject
+  const std::filesystem::path& file() const { return file_; }
+  const Eigen::MatrixXd& truthPx() const { return truthPx_; }  // frames × 30
+  double strideHz() const { return strideHz_; }
+  Keyframes firstFrameMarked() const;
+
+  // The fits' MPJPE (mm, translation removed) against the walk filmed: from the true 2D as a
+  // keypoint file is fitted, and from a track as `track --reconstruct` fits it (the stride held
+  // at the trunk's bob when it is clear). Throw what the fit throws.
+  double mpjpeFromTruthMm() const;
+  double mpjpeFromTrackMm(const JointTrack& track) const;
+
+ private:
+  TrackStudyOptions options_;
+  EigenwalkerModel model_;
+  Eigen::VectorXd times_;
+  Eigen::MatrixXd inPlace_, truthPx_;
+  std::filesystem::path dir_, file_;
+  double strideHz_ = 0.0;
+
+  double mpjpeOf(const KeypointTrial& joints, bool tracked) const;
+};
+
+struct TrackStudyRow {
+  std::string subject;
+  double azimuthDeg = 0.0;
+  int rounds = 0;
+  int frames = 0;
+  double medianPx = 0.0, p95Px = 0.0;        // the track against the truth, every joint-frame
+  double mpjpeTruthMm = 0.0, mpjpeTrackMm = 0.0;  // NaN where that fit refused
+  double strideHz = 0.0;                     // the walker's own
+  std::string error;                         // a fit's refusal, else ""
+};
+
+// Called after each row with the rows done and the total.
+using TrackStudyProgress = std::function<void(const TrackStudyRow&, int done, int total)>;
+
+// Every subject × azimuth. Error(BadArgument) for an unknown subject, no azimuth, or rounds
+// outside 0-10; a fit that refuses a walker is a row with its error, not a stop.
+std::vector<TrackStudyRow> runTrackStudy(const std::vector<ExperimentWalker>& walkers,
+                                         const TrackStudyOptions& options,
+                                         const TrackStudyProgress& progress = {});
+
+}  // namespace ew
