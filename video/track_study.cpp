@@ -11,6 +11,7 @@
 #include "core/common/errors.h"
 #include "core/engine/fourier.h"
 #include "core/engine/metrics.h"
+#include "core/engine/projection.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/tracking/track_compare.h"
 #include "video/model_loop.h"
@@ -54,6 +55,7 @@ FilmedHeldOutWalker::FilmedHeldOutWalker(const std::vector<ExperimentWalker>& wa
                 "holding out '" + subject + "' leaves fewer than two walkers to build a model");
   model_ = buildFullModel(others);
   strideHz_ = held->fit.omegaRadS / (2.0 * std::numbers::pi);
+  alphaDeg_ = wrapDeg(90.0 - azimuthDeg);
   const int frames = static_cast<int>(std::ceil(options.strides / strideHz_ * options.fps)) + 1;
   times_ = frameTimes(frames, options.fps);
   inPlace_ = synthesizeFrames(held->fit.w, held->fit.omegaRadS, 0.0, times_);
@@ -75,39 +77,39 @@ Keyframes FilmedHeldOutWalker::firstFrameMarked() const {
   return keyframesFromTrack(truthPx_, {0}, file_.string());
 }
 
-double FilmedHeldOutWalker::mpjpeFromTruthMm() const {
+FilmedHeldOutWalker::Fit FilmedHeldOutWalker::fitToTruth() const {
   KeypointOptions atFps;
   atFps.fps = options_.fps;
-  return mpjpeOf(trialFromJoints(truthPx_, Eigen::MatrixXd::Ones(truthPx_.rows(), kJointCount),
-                                 file_.string(), "true 2D", atFps),
-                 false);
+  return fitOf(trialFromJoints(truthPx_, Eigen::MatrixXd::Ones(truthPx_.rows(), kJointCount),
+                               file_.string(), "true 2D", atFps),
+               false);
 }
 
-double FilmedHeldOutWalker::mpjpeFromTrackMm(const JointTrack& track) const {
-  return mpjpeOf(keypointTrialOf(track, file_.string()), true);
+FilmedHeldOutWalker::Fit FilmedHeldOutWalker::fitToTrack(const JointTrack& track) const {
+  return fitOf(keypointTrialOf(track, file_.string()), true);
 }
 
-double FilmedHeldOutWalker::mpjpeOf(const KeypointTrial& joints, bool tracked) const {
+FilmedHeldOutWalker::Fit FilmedHeldOutWalker::fitOf(const KeypointTrial& joints, bool tracked) const {
   CameraFitOptions o;
   o.estimator = {Estimator::Map, options_.sigma2Mm2};
   if (tracked) holdTheTrunksStride(joints, o);
   const ClipReconstruction c = reconstructKeypointTrial(model_, joints, o);
   const Eigen::MatrixXd walk = synthesizeFrames(c.fit.w, c.fit.omegaRadS, c.fit.phaseRad, times_);
-  return mpjpeWithoutTranslation(walk, inPlace_);
+  return {mpjpeWithoutTranslation(walk, inPlace_), c.fit.camera.alphaDeg};
 }
 
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// A fit's MPJPE, or NaN with the refusal kept (the first one) in `error`.
-template <typename Fit>
-double mpjpeOrRefusal(Fit fit, std::string& error) {
+// A fit, or NaNs with the refusal kept (the first one) in `error`.
+template <typename Fitting>
+FilmedHeldOutWalker::Fit fitOrRefusal(Fitting fit, std::string& error) {
   try {
     return fit();
   } catch (const Error& e) {
     if (error.empty()) error = e.what();
-    return kNaN;
+    return {kNaN, kNaN};
   }
 }
 
@@ -127,8 +129,13 @@ TrackStudyRow studyOne(const std::vector<ExperimentWalker>& walkers, const std::
   row.p95Px = d.p95AllPx;
   row.strideHz = walker.strideHz();
   row.error = looped.stoppedBecause;
-  row.mpjpeTruthMm = mpjpeOrRefusal([&] { return walker.mpjpeFromTruthMm(); }, row.error);
-  row.mpjpeTrackMm = mpjpeOrRefusal([&] { return walker.mpjpeFromTrackMm(looped.track); }, row.error);
+  row.alphaDeg = walker.alphaDeg();
+  const auto truth = fitOrRefusal([&] { return walker.fitToTruth(); }, row.error);
+  const auto track = fitOrRefusal([&] { return walker.fitToTrack(looped.track); }, row.error);
+  row.mpjpeTruthMm = truth.mpjpeMm;
+  row.mpjpeTrackMm = track.mpjpeMm;
+  row.alphaTruthFitDeg = truth.alphaDeg;
+  row.alphaTrackFitDeg = track.alphaDeg;
   return row;
 }
 

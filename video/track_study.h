@@ -48,11 +48,20 @@ class FilmedHeldOutWalker {
   double strideHz() const { return strideHz_; }
   Keyframes firstFrameMarked() const;
 
-  // The fits' MPJPE (mm, translation removed) against the walk filmed: from the true 2D as a
-  // keypoint file is fitted, and from a track as `track --reconstruct` fits it (the stride held
-  // at the trunk's bob when it is clear). Throw what the fit throws.
-  double mpjpeFromTruthMm() const;
-  double mpjpeFromTrackMm(const JointTrack& track) const;
+  // SPEC §5's azimuth of the camera that filmed it: 90° − cameraBeside's azimuth, in (−180, 180].
+  double alphaDeg() const { return alphaDeg_; }
+
+  // A fit's MPJPE (mm, translation removed) against the walk filmed, and the azimuth it found.
+  struct Fit {
+    double mpjpeMm = 0.0, alphaDeg = 0.0;
+  };
+  // The fits: to the true 2D as a keypoint file is fitted, and to a track as `track
+  // --reconstruct` fits it (the stride held at the trunk's bob when it is clear). Throw what
+  // the fit throws.
+  Fit fitToTruth() const;
+  Fit fitToTrack(const JointTrack& track) const;
+  double mpjpeFromTruthMm() const { return fitToTruth().mpjpeMm; }
+  double mpjpeFromTrackMm(const JointTrack& track) const { return fitToTrack(track).mpjpeMm; }
 
  private:
   TrackStudyOptions options_;
@@ -60,9 +69,9 @@ class FilmedHeldOutWalker {
   Eigen::VectorXd times_;
   Eigen::MatrixXd inPlace_, truthPx_;
   std::filesystem::path dir_, file_;
-  double strideHz_ = 0.0;
+  double strideHz_ = 0.0, alphaDeg_ = 0.0;
 
-  double mpjpeOf(const KeypointTrial& joints, bool tracked) const;
+  Fit fitOf(const KeypointTrial& joints, bool tracked) const;
 };
 
 struct TrackStudyRow {
@@ -72,6 +81,8 @@ struct TrackStudyRow {
   int frames = 0;
   double medianPx = 0.0, p95Px = 0.0;        // the track against the truth, every joint-frame
   double mpjpeTruthMm = 0.0, mpjpeTrackMm = 0.0;  // NaN where that fit refused
+  double alphaDeg = 0.0;                          // the camera's, SPEC §5
+  double alphaTruthFitDeg = 0.0, alphaTrackFitDeg = 0.0;  // what the fits found (NaN: refused)
   double strideHz = 0.0;                     // the walker's own
   std::string error;                         // a fit's refusal, else ""
 };

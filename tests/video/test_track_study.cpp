@@ -4,6 +4,7 @@
 // walkers to hold one out.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "tests/common/test_support.h"
@@ -45,14 +46,16 @@ TEST(TrackStudyCli, FilmsTracksAndFitsAHeldOutWalker) {
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[0].rfind("subject,azimuth_deg,rounds,frames,stride_hz,track_median_px,", 0), 0u);
   const std::vector<std::string> row = csvFields(lines[1]);
-  ASSERT_GE(row.size(), 11u) << lines[1];
+  ASSERT_GE(row.size(), 14u) << lines[1];
   EXPECT_EQ(row[0], "CMU06");
   EXPECT_EQ(std::stod(row[1]), -90.0);
   EXPECT_EQ(row[2], "0");
   EXPECT_NEAR(std::stod(row[5]), 2.0, 1.0);   // median px
   EXPECT_NEAR(std::stod(row[6]), 11.2, 1.0);  // p95 px
   EXPECT_NEAR(std::stod(row[9]), 1.04, 0.05);  // MPJPE ratio
-  EXPECT_EQ(row[10], "0");                      // the p95 misses the bar without the loop
+  EXPECT_EQ(std::stod(row[10]), 180.0);         // filmed from the front (SPEC §5)
+  EXPECT_LT(std::abs(std::remainder(std::stod(row[12]) - 180.0, 360.0)), 10.0);  // the track's fit
+  EXPECT_EQ(row[13], "0");                      // the p95 misses the bar without the loop
   fs::remove_all(dir);
 }
 
