@@ -127,6 +127,8 @@ TrackStudyRow studyOne(const std::vector<ExperimentWalker>& walkers, const std::
   row.frames = static_cast<int>(walker.truthPx().rows());
   row.medianPx = d.medianAllPx;
   row.p95Px = d.p95AllPx;
+  row.jointMedianPx = d.medianPx;
+  row.jointP95Px = d.p95Px;
   row.strideHz = walker.strideHz();
   row.error = looped.stoppedBecause;
   row.alphaDeg = walker.alphaDeg();

@@ -8,11 +8,13 @@
 // `reconstruct --unknown-camera` fit.
 
 #include <Eigen/Core>
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "core/common/skeleton.h"
 #include "core/engine/model.h"
 #include "core/experiments/leave_one_out.h"
 #include "core/tracking/keyframes.h"
@@ -80,6 +82,7 @@ struct TrackStudyRow {
   int rounds = 0;
   int frames = 0;
   double medianPx = 0.0, p95Px = 0.0;        // the track against the truth, every joint-frame
+  std::array<double, kJointCount> jointMedianPx{}, jointP95Px{};  // the same per joint
   double mpjpeTruthMm = 0.0, mpjpeTrackMm = 0.0;  // NaN where that fit refused
   double alphaDeg = 0.0;                          // the camera's, SPEC §5
   double alphaTruthFitDeg = 0.0, alphaTrackFitDeg = 0.0;  // what the fits found (NaN: refused)

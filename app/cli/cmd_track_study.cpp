@@ -30,6 +30,7 @@ struct TrackStudyArgs {
   int rounds = 1;
   double distanceM = 6.0;
   std::string out;
+  bool perJoint = false;
 };
 
 // Issue 14's bar for synthetic footage.
@@ -39,6 +40,21 @@ double ratioOf(const TrackStudyRow& r) { return r.mpjpeTrackMm / r.mpjpeTruthMm;
 
 bool meetsTheBar(const TrackStudyRow& r) {
   return r.medianPx <= kBarMedianPx && r.p95Px <= kBarP95Px && ratioOf(r) <= kBarRatio;
+}
+
+// Each joint's median / p95 (px), the worst p95 first: which joints make the tail.
+void printJoints(const TrackStudyRow& r) {
+  std::array<int, kJointCount> order{};
+  for (int j = 0; j < kJointCount; ++j) order[static_cast<std::size_t>(j)] = j;
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return r.jointP95Px[static_cast<std::size_t>(a)] > r.jointP95Px[static_cast<std::size_t>(b)];
+  });
+  std::cerr << "   ";
+  for (int j : order)
+    std::cerr << " " << jointName(static_cast<Joint>(j)) << " " << std::setprecision(1)
+              << r.jointMedianPx[static_cast<std::size_t>(j)] << "/"
+              << r.jointP95Px[static_cast<std::size_t>(j)];
+  std::cerr << "\n";
 }
 
 void printRow(const TrackStudyRow& r, int done, int total) {
@@ -117,8 +133,11 @@ int runTrackStudyCommand(const TrackStudyArgs& a) {
   if (!a.azimuths.empty()) o.azimuthsDeg = a.azimuths;
   o.rounds = a.rounds;
   o.distanceMm = 1000.0 * a.distanceM;
-  const std::vector<TrackStudyRow> rows =
-      runTrackStudy(experimentWalkers(walkers, dataset), o, printRow);
+  const std::vector<TrackStudyRow> rows = runTrackStudy(
+      experimentWalkers(walkers, dataset), o, [&a](const TrackStudyRow& r, int done, int total) {
+        printRow(r, done, total);
+        if (a.perJoint) printJoints(r);
+      });
   printSummary(rows);
   if (!a.out.empty()) {
     writeCsv(a.out, rows);
@@ -150,6 +169,8 @@ void addTrackStudyCommand(CLI::App& app, int& exitCode) {
                   "camera to the middle of the walk, metres (default 6)")
       ->check(CLI::Range(2.0, 50.0));
   cmd->add_option("--out", args->out, "write every row here (CSV)");
+  cmd->add_flag("--per-joint", args->perJoint,
+                "print each joint's median / p95 under its row, the worst first");
   cmd->callback([args, &exitCode] { exitCode = runTrackStudyCommand(*args); });
 }
 

@@ -37,11 +37,13 @@ TEST(TrackStudyCli, FilmsTracksAndFitsAHeldOutWalker) {
   const fs::path data = test::sharedDataDir() / "walkers.csv";
   const test::ShellRun run = runCli("track-study --data \"" + data.string() +
                                         "\" --subjects CMU06 --azimuths -90 --model-loop 0 "
-                                        "--out study.csv",
+                                        "--out study.csv --per-joint",
                                     dir);
   ASSERT_EQ(run.exitCode, 0) << run.err;
   EXPECT_NE(run.err.find("CMU06 from -90.0 deg, 0 round(s)"), std::string::npos) << run.err;
   EXPECT_NE(run.out.find("whole_bar"), std::string::npos) << run.out;
+  for (const char* joint : {" head ", " l_knee ", " r_ankle "})  // --per-joint's line
+    EXPECT_NE(run.err.find(joint), std::string::npos) << joint << " in " << run.err;
   const std::vector<std::string> lines = csvLines(dir / "study.csv");
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[0].rfind("subject,azimuth_deg,rounds,frames,stride_hz,track_median_px,", 0), 0u);
