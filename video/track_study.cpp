@@ -41,10 +41,7 @@ fs::path footageFolder(const TrackStudyOptions& o) {
 
 }  // namespace
 
-FilmedHeldOutWalker::FilmedHeldOutWalker(const std::vector<ExperimentWalker>& walkers,
-                                         const std::string& subject, double azimuthDeg,
-                                         const TrackStudyOptions& options)
-    : options_(options) {
+HeldOutSubject holdOut(const std::vector<ExperimentWalker>& walkers, const std::string& subject) {
   const auto held = std::find_if(walkers.begin(), walkers.end(),
                                  [&](const ExperimentWalker& w) { return w.subject == subject; });
   if (held == walkers.end())
@@ -53,12 +50,17 @@ FilmedHeldOutWalker::FilmedHeldOutWalker(const std::vector<ExperimentWalker>& wa
   if (others.size() < 2)
     throw Error(ErrorKind::BadArgument, "--subjects", "",
                 "holding out '" + subject + "' leaves fewer than two walkers to build a model");
-  model_ = buildFullModel(others);
-  strideHz_ = held->fit.omegaRadS / (2.0 * std::numbers::pi);
+  return {*held, std::make_shared<const EigenwalkerModel>(buildFullModel(others))};
+}
+
+FilmedHeldOutWalker::FilmedHeldOutWalker(const HeldOutSubject& held, double azimuthDeg,
+                                         const TrackStudyOptions& options)
+    : options_(options), model_(held.model) {
+  strideHz_ = held.walker.fit.omegaRadS / (2.0 * std::numbers::pi);
   alphaDeg_ = wrapDeg(90.0 - azimuthDeg);
   const int frames = static_cast<int>(std::ceil(options.strides / strideHz_ * options.fps)) + 1;
   times_ = frameTimes(frames, options.fps);
-  inPlace_ = synthesizeFrames(held->fit.w, held->fit.omegaRadS, 0.0, times_);
+  inPlace_ = synthesizeFrames(held.walker.fit.w, held.walker.fit.omegaRadS, 0.0, times_);
   Eigen::MatrixXd walking = inPlace_;
   for (int f = 0; f < frames; ++f)
     for (int j = 0; j < kJointCount; ++j) walking(f, 3 * j + 1) += options.speedMmS * times_[f];
@@ -93,7 +95,7 @@ FilmedHeldOutWalker::Fit FilmedHeldOutWalker::fitOf(const KeypointTrial& joints,
   CameraFitOptions o;
   o.estimator = {Estimator::Map, options_.sigma2Mm2};
   if (tracked) holdTheTrunksStride(joints, o);
-  const ClipReconstruction c = reconstructKeypointTrial(model_, joints, o);
+  const ClipReconstruction c = reconstructKeypointTrial(*model_, joints, o);
   const Eigen::MatrixXd walk = synthesizeFrames(c.fit.w, c.fit.omegaRadS, c.fit.phaseRad, times_);
   return {mpjpeWithoutTranslation(walk, inPlace_), c.fit.camera.alphaDeg};
 }
@@ -113,15 +115,14 @@ FilmedHeldOutWalker::Fit fitOrRefusal(Fitting fit, std::string& error) {
   }
 }
 
-TrackStudyRow studyOne(const std::vector<ExperimentWalker>& walkers, const std::string& subject,
-                       double azimuthDeg, const TrackStudyOptions& o) {
-  const FilmedHeldOutWalker walker(walkers, subject, azimuthDeg, o);
+TrackStudyRow studyOne(const HeldOutSubject& held, double azimuthDeg, const TrackStudyOptions& o) {
+  const FilmedHeldOutWalker walker(held, azimuthDeg, o);
   VideoSource video(walker.file());
   const ModelLoopResult looped =
       trackWithModel(video, walker.firstFrameMarked(), walker.model(), {}, ModelLoopOptions{o.rounds});
   const TrackDistance d = compareTracks(looped.track.jointsPx, 0, walker.truthPx());
   TrackStudyRow row;
-  row.subject = subject;
+  row.subject = held.walker.subject;
   row.azimuthDeg = azimuthDeg;
   row.rounds = static_cast<int>(looped.rounds.size());
   row.frames = static_cast<int>(walker.truthPx().rows());
@@ -163,11 +164,13 @@ std::vector<TrackStudyRow> runTrackStudy(const std::vector<ExperimentWalker>& wa
       throw Error(ErrorKind::BadArgument, "--subjects", "", "no walker of subject '" + s + "'");
   std::vector<TrackStudyRow> rows;
   const int total = static_cast<int>(subjects.size() * options.azimuthsDeg.size());
-  for (const std::string& subject : subjects)
+  for (const std::string& subject : subjects) {
+    const HeldOutSubject held = holdOut(walkers, subject);  // one model for every view
     for (double azimuth : options.azimuthsDeg) {
-      rows.push_back(studyOne(walkers, subject, azimuth, options));
+      rows.push_back(studyOne(held, azimuth, options));
       if (progress) progress(rows.back(), static_cast<int>(rows.size()), total);
     }
+  }
   return rows;
 }
 

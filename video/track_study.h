@@ -11,6 +11,7 @@
 #include <array>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,17 +35,29 @@ struct TrackStudyOptions {
   std::filesystem::path scratchDir;   // footage written here and removed; empty: the temp dir
 };
 
+// A subject held out: its first walker, and the model built without any of its walkers (shared
+// by every view it is filmed from).
+struct HeldOutSubject {
+  ExperimentWalker walker;
+  std::shared_ptr<const EigenwalkerModel> model;
+};
+// Error(BadArgument) naming `subject` when `walkers` has no such subject or only it.
+HeldOutSubject holdOut(const std::vector<ExperimentWalker>& walkers, const std::string& subject);
+
 // One held-out walker filmed from one azimuth: its footage on disk while this lives.
 class FilmedHeldOutWalker {
  public:
-  // Error(BadArgument) naming `subject` when `walkers` has no such subject or only it.
+  FilmedHeldOutWalker(const HeldOutSubject& held, double azimuthDeg,
+                      const TrackStudyOptions& options);
+  // holdOut(walkers, subject) filmed: its errors.
   FilmedHeldOutWalker(const std::vector<ExperimentWalker>& walkers, const std::string& subject,
-                      double azimuthDeg, const TrackStudyOptions& options);
+                      double azimuthDeg, const TrackStudyOptions& options)
+      : FilmedHeldOutWalker(holdOut(walkers, subject), azimuthDeg, options) {}
   ~FilmedHeldOutWalker();
   FilmedHeldOutWalker(const FilmedHeldOutWalker&) = delete;
   FilmedHeldOutWalker& operator=(const FilmedHeldOutWalker&) = delete;
 
-  const EigenwalkerModel& model() const { return model_; }  // built without the subject
+  const EigenwalkerModel& model() const { return *model_; }  // built without the subject
   const std::filesystem::path& file() const { return file_; }
   const Eigen::MatrixXd& truthPx() const { return truthPx_; }  // frames × 30
   double strideHz() const { return strideHz_; }
@@ -67,7 +80,7 @@ class FilmedHeldOutWalker {
 
  private:
   TrackStudyOptions options_;
-  EigenwalkerModel model_;
+  std::shared_ptr<const EigenwalkerModel> model_;
   Eigen::VectorXd times_;
   Eigen::MatrixXd inPlace_, truthPx_;
   std::filesystem::path dir_, file_;

@@ -18,6 +18,7 @@
 #include "core/keypoints/image_gait.h"
 #include "core/keypoints/keypoint_summary.h"
 #include "core/keypoints/openpose_writer.h"
+#include "tests/camera/filmed_walk.h"
 #include "tests/common/error_matchers.h"
 #include "tests/common/test_support.h"
 
@@ -117,16 +118,10 @@ TEST(ImageGait, TrunkBobOfAWalkerComingTowardsTheCamera) {
   const Eigen::MatrixXd walk = synthesizeFrames(model.mean, 2 * M_PI * strideHz, 0.0, t);
   for (const double alpha : {180.0, 165.0, 150.0}) {
     SCOPED_TRACE(alpha);
-    WalkCamera camera;
-    camera.model = CameraModel::Pinhole;
+    WalkCamera camera = test::crossingPinhole(1000, 4.0);  // 1.3 m/s, 4 s about the look-at
     camera.alphaDeg = alpha;
-    camera.focalPx = 1000;
+    camera.elevationDeg = 0;
     camera.distanceMm = 5000;
-    camera.cxPx = 640;
-    camera.cyPx = 360;
-    camera.lookAtHeightMm = 1100;
-    camera.speedMmS = 1300;
-    camera.startOffsetMm = -1300 * 2.0;
     const Eigen::MatrixXd px = projectWalk(walk, t, camera);
     KeypointOptions k;
     k.fps = kFps;
