@@ -67,7 +67,7 @@ FilmedHeldOutWalker::FilmedHeldOutWalker(const HeldOutSubject& held, double azim
   dir_ = footageFolder(options);
   file_ = dir_ / "walk.avi";
   truthPx_ = writeFootage(file_, walking, cameraBeside(walking, azimuthDeg, options.distanceMm),
-                          options.fps);
+                          options.fps, options.footageSeed);
 }
 
 FilmedHeldOutWalker::~FilmedHeldOutWalker() {

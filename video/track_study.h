@@ -32,6 +32,7 @@ struct TrackStudyOptions {
   double strides = 3.0;
   double fps = 30.0;
   double sigma2Mm2 = 1000.0;          // MAP prior of both fits
+  unsigned footageSeed = 7;           // writeFootage's background and limb prints
   std::filesystem::path scratchDir;   // footage written here and removed; empty: the temp dir
 };
 

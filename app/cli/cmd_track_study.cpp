@@ -29,6 +29,7 @@ struct TrackStudyArgs {
   std::vector<double> azimuths;
   int rounds = 1;
   double distanceM = 6.0;
+  unsigned footageSeed = 7;
   std::string out;
   bool perJoint = false;
 };
@@ -133,6 +134,7 @@ int runTrackStudyCommand(const TrackStudyArgs& a) {
   if (!a.azimuths.empty()) o.azimuthsDeg = a.azimuths;
   o.rounds = a.rounds;
   o.distanceMm = 1000.0 * a.distanceM;
+  o.footageSeed = a.footageSeed;
   const std::vector<TrackStudyRow> rows = runTrackStudy(
       experimentWalkers(walkers, dataset), o, [&a](const TrackStudyRow& r, int done, int total) {
         printRow(r, done, total);
@@ -168,6 +170,9 @@ void addTrackStudyCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--distance-m", args->distanceM,
                   "camera to the middle of the walk, metres (default 6)")
       ->check(CLI::Range(2.0, 50.0));
+  cmd->add_option("--footage-seed", args->footageSeed,
+                  "draws the footage's background and the print on each limb (default 7): "
+                  "another seed tells a finding about the tracker from one about a print");
   cmd->add_option("--out", args->out, "write every row here (CSV)");
   cmd->add_flag("--per-joint", args->perJoint,
                 "print each joint's median / p95 under its row, the worst first");

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
 
 #include "core/synth/population.h"
 #include "core/tracking/track_compare.h"
@@ -19,6 +21,7 @@ namespace ew {
 namespace {
 
 namespace fs = std::filesystem;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct Footage {
   fs::path file;
@@ -117,6 +120,59 @@ TEST(JointTracker, AJointTheWalkHidesIsPlacedWhereTheWalkPutsIt) {
   EXPECT_NEAR(missAt(Joint::LShoulder).y(), 0.0, 1.0);
   EXPECT_DOUBLE_EQ(track.confidence(last, index(Joint::LShoulder)), 0.3);
   EXPECT_LT(missAt(Joint::Head).norm(), 2.0);  // measured 0.7 px alone
+}
+
+// A square of blurred noise, grey levels lo-hi.
+cv::Mat printOf(cv::Size size, double lo, double hi) {
+  cv::Mat print(size, CV_8UC3);
+  cv::randu(print, cv::Scalar::all(lo), cv::Scalar::all(hi));
+  cv::GaussianBlur(print, print, cv::Size(0, 0), 1.5);
+  return print;
+}
+
+// Two still things on a grey field: a dark vertical stripe with a faint print (an edge each
+// side and little along it, as a leg seen from behind) and a square with a strong print.
+fs::path stripeAndPrint(int frames) {
+  cv::Mat image(720, 1280, CV_8UC3, cv::Scalar::all(200));
+  printOf({12, 300}, 40, 120).copyTo(image(cv::Rect(394, 200, 12, 300)));
+  printOf({80, 80}, 30, 220).copyTo(image(cv::Rect(760, 310, 80, 80)));
+  const fs::path file = test::makeTempDir("tracker_aperture") / "stripe.avi";
+  cv::VideoWriter writer(file.string(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
+                         30.0, image.size());
+  for (int f = 0; f < frames; ++f) writer.write(image);
+  return file;
+}
+
+// The model loop's prior within the gate: a joint on the stripe slides along it to where the
+// prior puts it (nothing in its window says where along), but not across it; a joint on the
+// print keeps to its flow. The prior is 8 px along the stripe and 3 px across from the marks.
+TEST(JointTracker, AJointOnAPlainEdgeSlidesAlongItToTheModelsPlace) {
+  constexpr int kFrames = 20;
+  const fs::path file = stripeAndPrint(kFrames);
+  VideoSource video(file);
+  Keyframes keys;
+  Keyframe key;
+  key.frame = 0;
+  key.jointsPx = Eigen::RowVectorXd::Constant(kDims2, kNaN);
+  key.jointsPx.segment<2>(2 * index(Joint::RKnee)) << 400.0, 350.0;
+  key.jointsPx.segment<2>(2 * index(Joint::LKnee)) << 800.0, 350.0;
+  keys.keyframes.push_back(key);
+  TrackerOptions o;
+  o.priorPx = Eigen::MatrixXd::Constant(kFrames, kDims2, kNaN);
+  for (Joint j : {Joint::RKnee, Joint::LKnee}) {
+    o.priorPx.col(2 * index(j)).setConstant(key.jointsPx(2 * index(j)) + 3.0);
+    o.priorPx.col(2 * index(j) + 1).setConstant(key.jointsPx(2 * index(j) + 1) + 8.0);
+  }
+  const JointTrack track = trackJoints(video, keys, o);
+  const auto movedBy = [&](Joint j) {
+    return (track.jointsPx.row(kFrames - 1).segment<2>(2 * index(j)) -
+            key.jointsPx.segment<2>(2 * index(j)))
+        .eval();
+  };
+
+  EXPECT_NEAR(movedBy(Joint::RKnee).y(), 8.0, 1.0);
+  EXPECT_NEAR(movedBy(Joint::RKnee).x(), 0.0, 0.5);
+  EXPECT_LT(movedBy(Joint::LKnee).norm(), 0.5);
 }
 
 TEST(JointTracker, RefusesARangeWithoutKeyframesOrOutsideTheVideo) {

@@ -49,8 +49,8 @@ TrackDistance loopedDistance(int rounds, ModelLoopResult* out = nullptr) {
   return d;
 }
 
-// Measured (docs/TRACKING.md): without the loop median 10.8 px, p95 170 px; one round 10.5 /
-// 59.3 px. The fit strides at the trunk's bob, 0.915 Hz against the walker's own 0.932 Hz;
+// Measured (docs/TRACKING.md): without the loop median 10.8 px, p95 170 px; one round 10.9 /
+// 61.9 px. The fit strides at the trunk's bob, 0.915 Hz against the walker's own 0.932 Hz;
 // the tail falls to about a third, the median hardly moves, and issue 14's 3 px is not reached.
 TEST(ModelLoop, OneRoundHalvesTheTrackersTailOnAWalker) {
   ModelLoopResult looped;
@@ -58,7 +58,7 @@ TEST(ModelLoop, OneRoundHalvesTheTrackersTailOnAWalker) {
   ASSERT_EQ(looped.rounds.size(), 1u);
   EXPECT_TRUE(looped.stoppedBecause.empty()) << looped.stoppedBecause;
   EXPECT_EQ(once.jointFrames, alone.jointFrames);
-  EXPECT_LT(once.p95AllPx, 0.6 * alone.p95AllPx);  // measured 0.46
+  EXPECT_LT(once.p95AllPx, 0.6 * alone.p95AllPx);  // measured 0.36
   EXPECT_LT(once.medianAllPx, alone.medianAllPx + 1.0);
   EXPECT_NEAR(looped.rounds[0].strideHz, test::walkingFootage().strideHz,
               0.03 * test::walkingFootage().strideHz);
@@ -102,7 +102,7 @@ TrackStudyOptions filmedAsTheStudy() {
 // Issue 14's bar for the walk from a track: within 1.3× the MPJPE of the same fit to the true
 // 2D. CMU06 filmed 30° off the side view and tracked from its true joints on frame 0. The
 // tracker alone misses (1.39×; docs/TRACKING.md has four more walkers, 1.8–2.5×); three rounds
-// of the model loop bring it within the bar (measured 1.15).
+// of the model loop bring it within the bar (measured 1.14).
 TEST(ModelLoopOnSharedWalkers, ThreeRoundsBringAHeldOutWalkersFitWithinTheBar) {
   EW_REQUIRE_SHARED_DATA();
   const FilmedHeldOutWalker walker(sharedWalkers(), "CMU06", 30.0, filmedAsTheStudy());
@@ -122,26 +122,40 @@ TEST(ModelLoopOnSharedWalkers, ThreeRoundsBringAHeldOutWalkersFitWithinTheBar) {
   EXPECT_LE(fromLoop / fromTruth, 1.3);
 }
 
-// Issue 14's whole bar for synthetic footage — the track from one keyframe within 3 px at the
-// median and 10 px at the 95th percentile, the walk from it within 1.3× the true 2D's MPJPE — met
-// from the front: CMU06 coming towards the camera, one round of the model loop (measured 1.9 /
-// 7.7 px, 1.00×; the five walkers of docs/TRACKING.md 1.4–2.1 / 5.1–7.7 px, 1.00–1.07×). From
-// the side the far limbs pass behind the body and the bar is not met (the test above).
-TEST(ModelLoopOnSharedWalkers, FromTheFrontOneRoundTracksAHeldOutWalkerWithinTheWholeBar) {
-  EW_REQUIRE_SHARED_DATA();
-  const FilmedHeldOutWalker walker(sharedWalkers(), "CMU06", -90.0, filmedAsTheStudy());
+// Issue 14's whole bar for synthetic footage: the track from one keyframe within 3 px at the
+// median and 10 px at the 95th percentile, the walk from it within 1.3× the true 2D's MPJPE.
+// `subject` filmed from `azimuthDeg` (track-study's azimuth), one round of the model loop.
+void expectTheWholeBarAfterOneRound(const std::string& subject, double azimuthDeg) {
+  const FilmedHeldOutWalker walker(sharedWalkers(), subject, azimuthDeg, filmedAsTheStudy());
   VideoSource video(walker.file());
   const ModelLoopResult looped =
       trackWithModel(video, walker.firstFrameMarked(), walker.model(), {}, ModelLoopOptions{1});
   ASSERT_EQ(looped.rounds.size(), 1u) << looped.stoppedBecause;
   const TrackDistance d = compareTracks(looped.track.jointsPx, 0, walker.truthPx());
   const double ratio = walker.mpjpeFromTrackMm(looped.track) / walker.mpjpeFromTruthMm();
-  std::cout << "track median " << d.medianAllPx << " px, p95 " << d.p95AllPx << " px; MPJPE "
-            << ratio << "x the true 2D's\n";
+  std::cout << subject << " from " << azimuthDeg << " deg: track median " << d.medianAllPx
+            << " px, p95 " << d.p95AllPx << " px; MPJPE " << ratio << "x the true 2D's\n";
   EXPECT_EQ(d.jointFrames, static_cast<int>(walker.truthPx().size() / 2));  // every joint, every frame
   EXPECT_LE(d.medianAllPx, 3.0);
   EXPECT_LE(d.p95AllPx, 10.0);
   EXPECT_LE(ratio, 1.3);
+}
+
+// Met from the front: CMU06 coming towards the camera (measured 1.7 / 6.3 px, 1.00×; the five
+// walkers of docs/TRACKING.md 1.4–1.8 / 5.0–6.6 px, 1.00–1.06×). From the side the far limbs
+// pass behind the body and the bar is not met (the test above).
+TEST(ModelLoopOnSharedWalkers, FromTheFrontOneRoundTracksAHeldOutWalkerWithinTheWholeBar) {
+  EW_REQUIRE_SHARED_DATA();
+  expectTheWholeBarAfterOneRound("CMU06", -90.0);
+}
+
+// From behind the legs are straight stripes whose knees the flow cannot place along them; the
+// model's place does (slideAlongTheAperture, video/joint_tracker.cpp). SM2014001 walking away
+// (measured 2.3 / 8.4 px, 0.98×; 3 of the five walkers meet the bar from behind, none did
+// before the slide: their knees drifted 7-20 px down the leg).
+TEST(ModelLoopOnSharedWalkers, FromBehindOneRoundTracksAHeldOutWalkerWithinTheWholeBar) {
+  EW_REQUIRE_SHARED_DATA();
+  expectTheWholeBarAfterOneRound("SM2014001", 90.0);
 }
 
 }  // namespace
