@@ -72,6 +72,10 @@ TEST(TrackStudyCli, RefusesWhatItCannotStudy) {
   const test::ShellRun far =
       runCli("track-study --data \"" + data.string() + "\" --azimuths 200 --out s.csv", dir);
   EXPECT_EQ(far.exitCode, 2) << far.err;
+  const test::ShellRun seed =
+      runCli("track-study --data \"" + data.string() + "\" --footage-seed -1 --out s.csv", dir);
+  EXPECT_EQ(seed.exitCode, 2) << seed.err;
+  EXPECT_NE(seed.err.find("--footage-seed"), std::string::npos) << seed.err;
   const fs::path oneTrial =
       test::sharedDataDir() / "schreiber-moissenet-2019/2014001/2014001_C4_05.c3d";
   const test::ShellRun alone =
