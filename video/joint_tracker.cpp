@@ -318,9 +318,7 @@ class FlowPass final : public TrackingPass {
     if (flow && distance(*flow, *prior) <= gate) {
       const std::optional<cv::Point2f> slid = slideAlongTheAperture(*flow, *prior, toGrey);
       if (!slid) return std::nullopt;
-      const double c = std::clamp(0.5 + 0.5 * scoreAt(j, toGrey, *slid), 0.05, 1.0) * 0.8;
-      filters_[j].update(slid->x, slid->y, 0.5 / c);
-      return c;
+      return takeTheFlow(j, *slid, toGrey);
     }
     const Match m = matchAround(j, toGrey, *prior);
     if (m.bestScore > 0.7 && distance(m.best, *prior) <= gate) {
@@ -357,6 +355,14 @@ class FlowPass final : public TrackingPass {
     return flow + cv::Point2f(static_cast<float>(moved.x()), static_cast<float>(moved.y()));
   }
 
+  // The flow's answer `at` as the joint's measurement, trusted as far as the keyframe patch
+  // still looks like the picture there; its confidence.
+  double takeTheFlow(int j, cv::Point2f at, const cv::Mat& toGrey) {
+    const double c = std::clamp(0.5 + 0.5 * scoreAt(j, toGrey, at), 0.05, 1.0) * 0.8;
+    filters_[j].update(at.x, at.y, 0.5 / c);
+    return c;
+  }
+
   // The model's prior first, when it has one and the flow strayed from it (above). Then a
   // segment that looks as it did on the keyframe places its joint; else the joint's own flow;
   // else the keyframe patch, if it is clearly there; else the joint coasts on the filter.
@@ -367,11 +373,7 @@ class FlowPass final : public TrackingPass {
       filters_[j].update(segmentAt.x, segmentAt.y, 0.5 / segmentMatch);
       return segmentMatch;
     }
-    if (flow) {
-      const double c = std::clamp(0.5 + 0.5 * scoreAt(j, toGrey, *flow), 0.05, 1.0) * 0.8;
-      filters_[j].update(flow->x, flow->y, 0.5 / c);
-      return c;
-    }
+    if (flow) return takeTheFlow(j, *flow, toGrey);
     const Match m = matchAround(j, toGrey, guess);
     if (m.bestScore > 0.7) {
       filters_[j].update(m.best.x, m.best.y, 1.0 / m.bestScore);
