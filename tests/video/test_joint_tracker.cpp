@@ -139,6 +139,7 @@ fs::path stripeAndPrint(int frames) {
   const fs::path file = test::makeTempDir("tracker_aperture") / "stripe.avi";
   cv::VideoWriter writer(file.string(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'),
                          30.0, image.size());
+  EXPECT_TRUE(writer.isOpened()) << file;
   for (int f = 0; f < frames; ++f) writer.write(image);
   return file;
 }
