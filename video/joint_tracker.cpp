@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <map>
 #include <memory>
@@ -20,6 +21,22 @@ namespace ew {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// [SECTION] The body's tree (video/segment_search.h): the pelvis, then each child after its parent
+
+std::array<int, kJointCount> parentsFirst() {
+  std::array<int, kJointCount> order{};
+  order[0] = index(kSearchTree[0].parent);
+  for (std::size_t b = 0; b < kSearchTree.size(); ++b) order[b + 1] = index(kSearchTree[b].child);
+  return order;
+}
+
+// The joints TrackerOptions::holdTheTrunk holds to the pelvis→sternum line. Not the head: on
+// cam01 its own flow was nearer OpenPose's (26 px median) than the trunk's place for it (37 px).
+bool heldWithTheTrunk(int j) {
+  return j == index(Joint::RShoulder) || j == index(Joint::LShoulder) ||
+         j == index(Joint::RHip) || j == index(Joint::LHip);
+}
 
 // [SECTION] Sizes from the person's height in the image ---------------------------------
 
@@ -162,10 +179,13 @@ class FlowPass final : public TrackingPass {
  public:
   FlowPass(const Geometry& g, const TrackerOptions& o, const Keyframe& key, const cv::Mat& keyGrey)
       : g_(g), o_(o), fromPyramid_(pyramidOf(keyGrey, g, o.pyramidLevels)) {
+    onKeyframe_.fill(cv::Point2f(std::numeric_limits<float>::quiet_NaN(),
+                                 std::numeric_limits<float>::quiet_NaN()));
     for (int j = 0; j < kJointCount; ++j) {
       const double x = key.jointsPx(2 * j), y = key.jointsPx(2 * j + 1);
       if (std::isnan(x) || std::isnan(y)) continue;
       filters_[j].start(x, y);
+      onKeyframe_[j] = cv::Point2f(static_cast<float>(x), static_cast<float>(y));
       templates_[j] =
           patchAround(keyGrey, cv::Point2f(static_cast<float>(x), static_cast<float>(y)));
     }
@@ -229,8 +249,14 @@ class FlowPass final : public TrackingPass {
         o_.searchSegments ? ew::searchSegments(toGrey, predicted, strips_,
                                                {g_.personPx, static_cast<double>(g_.searchPx)})
                           : SearchResult{};
-    for (std::size_t i = 0; i < joints.size(); ++i) {
-      const int j = joints[i];
+    // Parents first: the trunk's hold needs the pelvis and the sternum of this frame.
+    static const std::array<int, kJointCount> kParentsFirst = parentsFirst();
+    std::array<int, kJointCount> slot;
+    slot.fill(-1);
+    for (std::size_t i = 0; i < joints.size(); ++i) slot[joints[i]] = static_cast<int>(i);
+    for (const int j : kParentsFirst) {
+      const int i = slot[j];
+      if (i < 0) continue;
       confidence[j] = measure(j, s.guess[i], flowHolds[j] ? std::optional(s.flow[i]) : std::nullopt,
                               found.at[j], found.match[j], toGrey);
       // A joint that left the picture is lost for the rest of this pass, not extrapolated.
@@ -355,6 +381,36 @@ class FlowPass final : public TrackingPass {
     return flow + cv::Point2f(static_cast<float>(moved.x()), static_cast<float>(moved.y()));
   }
 
+  // With TrackerOptions::holdTheTrunk: where the trunk puts joint j on this frame — its place
+  // on the pass's keyframe relative to the pelvis, turned, stretched and carried as the
+  // pelvis→sternum line has been since. nullopt for the other joints, or without the line.
+  std::optional<cv::Point2f> heldByTheTrunk(int j) const {
+    const int pelvis = index(Joint::Pelvis), sternum = index(Joint::Sternum);
+    if (!o_.holdTheTrunk || !heldWithTheTrunk(j) || !filters_[pelvis].active ||
+        !filters_[sternum].active || std::isnan(onKeyframe_[j].x))
+      return std::nullopt;
+    const auto complexOf = [](cv::Point2f p) { return std::complex<double>(p.x, p.y); };
+    const std::complex<double> lineThen =
+        complexOf(onKeyframe_[sternum]) - complexOf(onKeyframe_[pelvis]);
+    const std::complex<double> lineNow =
+        complexOf(filters_[sternum].position()) - complexOf(filters_[pelvis].position());
+    if (!(std::abs(lineThen) >= 1.0)) return std::nullopt;
+    const std::complex<double> at =
+        complexOf(filters_[pelvis].position()) +
+        lineNow / lineThen * (complexOf(onKeyframe_[j]) - complexOf(onKeyframe_[pelvis]));
+    return cv::Point2f(static_cast<float>(at.real()), static_cast<float>(at.imag()));
+  }
+
+  // A flow near where the trunk puts the joint stands; one that strayed (a shoulder sliding
+  // along a bare arm) or failed is replaced by that place.
+  double measureAgainstTheTrunk(int j, std::optional<cv::Point2f> flow, cv::Point2f held,
+                                const cv::Mat& toGrey) {
+    if (flow && std::hypot(flow->x - held.x, flow->y - held.y) <= kTrunkGateShare * g_.personPx)
+      return takeTheFlow(j, *flow, toGrey);
+    filters_[j].update(held.x, held.y, 0.5);
+    return 0.5;
+  }
+
   // The flow's answer `at` as the joint's measurement, trusted as far as the keyframe patch
   // still looks like the picture there; its confidence.
   double takeTheFlow(int j, cv::Point2f at, const cv::Mat& toGrey) {
@@ -369,6 +425,8 @@ class FlowPass final : public TrackingPass {
   double measure(int j, cv::Point2f guess, std::optional<cv::Point2f> flow, cv::Point2f segmentAt,
                  double segmentMatch, const cv::Mat& toGrey) {
     if (const std::optional<double> c = measureAgainstPrior(j, flow, toGrey)) return *c;
+    if (const std::optional<cv::Point2f> held = heldByTheTrunk(j))
+      return measureAgainstTheTrunk(j, flow, *held, toGrey);
     if (segmentMatch >= kSegmentMatchHolds) {
       filters_[j].update(segmentAt.x, segmentAt.y, 0.5 / segmentMatch);
       return segmentMatch;
@@ -390,6 +448,9 @@ class FlowPass final : public TrackingPass {
   // left the knees drifting (0 of 5 within issue 14's bar), 0.2 brought 3 of 5 within it, 0.3
   // lost one walker's ankle (p95 22.8 px); from the front 5 of 5 with each.
   static constexpr double kApertureRatio = 0.2;
+  // How far (a share of the person's height) a held joint's flow may stand from the trunk's
+  // place. On cam01: 0.02 gave a median of 19.9 px, 0.03 19.3, 0.05 20.8 (docs/TRACKING.md).
+  static constexpr double kTrunkGateShare = 0.03;
 
   Geometry g_;
   TrackerOptions o_;
@@ -397,6 +458,7 @@ class FlowPass final : public TrackingPass {
   std::array<cv::Mat, kJointCount> templates_{};
   std::array<SegmentStrip, kBones.size()> strips_{};
   std::vector<cv::Mat> fromPyramid_;
+  std::array<cv::Point2f, kJointCount> onKeyframe_{};  // NaN: not marked there
   int frame_ = 0;  // the video frame being tracked onto
 };
 

@@ -52,6 +52,13 @@ struct TrackerOptions {
   // Flatten a fixed camera's still background before the flow (video/static_background.h),
   // when the footage shows one. The flow tracker only.
   bool flattenStaticBackground = false;
+  // Hold the shoulders and the hips to the trunk: where a joint's flow strays more
+  // than 3 % of the person's height from its keyframe place turned and carried with the
+  // pelvis→sternum line, it is put there. For a bare or plain upper body that bends but turns
+  // little (Pose2Sim's balancing trial); off by default, as it made the synthetic walkers'
+  // shoulders worse in side views, where the pelvis under the thighs is the joint tracked worst
+  // (docs/TRACKING.md, "Holding the trunk"). The flow tracker only.
+  bool holdTheTrunk = false;
   // Grey frames held at once for the backward passes; a longer stretch between keyframes
   // is decoded again in pieces of this size.
   std::size_t frameBufferBytes = std::size_t{512} << 20;

@@ -42,7 +42,7 @@ struct TrackArgs {
   int first = 0, last = -1;
   int overlayEvery = 0;  // 0: no overlay pictures
   int modelLoop = 0;     // rounds of the model loop (video/model_loop.h)
-  bool json = false, keyframeFramesGiven = false, flattenBackground = false;
+  bool json = false, keyframeFramesGiven = false, flattenBackground = false, holdTrunk = false;
 };
 
 // The keyframes of `all` at `frames`; Error(BadArgument) naming the file for one it lacks.
@@ -185,10 +185,13 @@ int runTrack(const TrackArgs& a) {
   o.firstFrame = a.first;
   o.lastFrame = a.last;
   o.flattenStaticBackground = a.flattenBackground;
+  o.holdTheTrunk = a.holdTrunk;
   const auto start = std::chrono::steady_clock::now();
   if (a.modelLoop > 0 && o.kind != TrackerKind::OpticalFlow)
     throw Error(ErrorKind::BadArgument, "--model-loop", "",
                 "the model loop guides the flow tracker only");
+  if (o.holdTheTrunk && o.kind != TrackerKind::OpticalFlow)
+    throw Error(ErrorKind::BadArgument, "--hold-trunk", "", "holds the flow tracker's joints only");
   ModelLoopOptions loop;
   loop.rounds = a.modelLoop;
   const ModelLoopResult looped = trackWithModel(video, keys, defaultRealModel(), o, loop);
@@ -206,6 +209,7 @@ int runTrack(const TrackArgs& a) {
   json report = {{"video", info.file},
                  {"tracker", trackerName(o.kind)},
                  {"background", track.background},
+                 {"trunk_held", o.holdTheTrunk},
                  {"width_px", info.widthPx},
                  {"height_px", info.heightPx},
                  {"fps", info.fps},
@@ -281,6 +285,10 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
       "--flatten-background", args->flattenBackground,
       "flatten a fixed camera's still background before the flow, when the footage has one "
       "(docs/TRACKING.md, \"The still background\")");
+  cmd->add_flag("--hold-trunk", args->holdTrunk,
+                "hold the shoulders and hips to the pelvis-sternum line where their flow "
+                "strays (a bare or plain upper body; flow tracker; docs/TRACKING.md, \"Holding the "
+                "trunk\")");
   cmd->add_flag("--json", args->json, "print the report as JSON too");
   cmd->callback([args, &exitCode, keys, from, keyframeFrames] {
     args->keyframeFramesGiven = keyframeFrames->count() > 0;

@@ -10,7 +10,9 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "core/keypoints/keypoint_trial.h"
 #include "core/synth/population.h"
+#include "core/tracking/keyframes.h"
 #include "core/tracking/track_compare.h"
 #include "tests/common/error_matchers.h"
 #include "tests/common/test_support.h"
@@ -174,6 +176,33 @@ TEST(JointTracker, AJointOnAPlainEdgeSlidesAlongItToTheModelsPlace) {
   EXPECT_NEAR(movedBy(Joint::RKnee).y(), 8.0, 1.0);
   EXPECT_NEAR(movedBy(Joint::RKnee).x(), 0.0, 0.5);
   EXPECT_LT(movedBy(Joint::LKnee).norm(), 0.5);
+}
+
+// Pose2Sim's balancing man bends forward with bare shoulders: their own flow slides along
+// the arms and stays 80 px from OpenPose's shoulders at the median; held to the pelvis→sternum
+// line they follow his trunk (16–18 px, docs/TRACKING.md, "Holding the trunk").
+TEST(JointTracker, HoldingTheTrunkKeepsTheBalancingMansShouldersOnHim) {
+  EW_REQUIRE_SHARED_DATA();
+  const auto dir = test::sharedDataDir() / "pose2sim-balancing";
+  VideoSource video(dir / "videos/cam01.mp4");
+  KeypointOptions k;
+  k.fps = video.info().fps;
+  const KeypointTrial openPose = readKeypointTrial(dir / "pose/cam01_json", k);
+  const Keyframes keys = keyframesFromTrack(openPose.jointsPx, {0}, "cam01");
+  std::array<bool, kJointCount> shoulders{};
+  shoulders[index(Joint::RShoulder)] = shoulders[index(Joint::LShoulder)] = true;
+  const auto shoulderMedianPx = [&](bool hold) {
+    TrackerOptions o;
+    o.lastFrame = 99;
+    o.holdTheTrunk = hold;
+    const JointTrack t = trackJoints(video, keys, o);
+    return compareTracks(t.jointsPx, t.firstFrame, openPose.jointsPx, shoulders).medianAllPx;
+  };
+  const double own = shoulderMedianPx(false), held = shoulderMedianPx(true);
+  std::cout << "cam01 shoulders to OpenPose's, median: own flow " << own << " px, held " << held
+            << " px\n";
+  EXPECT_GT(own, 50.0);
+  EXPECT_LT(held, 25.0);
 }
 
 TEST(JointTracker, RefusesARangeWithoutKeyframesOrOutsideTheVideo) {

@@ -81,6 +81,19 @@ TEST_F(TrackCli, FlattensTheStillBackgroundWhenAskedAndSaysSo) {
   }
 }
 
+TEST_F(TrackCli, SaysWhetherItHeldTheTrunk) {
+  for (const bool hold : {false, true}) {
+    const test::ShellRun r =
+        runCli(std::string("track --video walk.avi --keyframes keys.json --keyframe-frames 0 "
+                           "--out held --json") +
+                   (hold ? " --hold-trunk" : ""),
+               root_);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const json report = json::parse(r.out.substr(r.out.find('{')));
+    EXPECT_EQ(report["trunk_held"], hold);
+  }
+}
+
 TEST_F(TrackCli, RefusesAnUnknownTrackerAndAKeyframeFrameTheFileLacks) {
   const test::ShellRun unknown =
       runCli("track --video walk.avi --keyframes keys.json --tracker sift --out bad", root_);
@@ -91,6 +104,11 @@ TEST_F(TrackCli, RefusesAnUnknownTrackerAndAKeyframeFrameTheFileLacks) {
   EXPECT_NE(missing.exitCode, 0);
   EXPECT_NE(missing.err.find("keys.json"), std::string::npos) << missing.err;
   EXPECT_NE(missing.err.find("no keyframe on frame 7"), std::string::npos) << missing.err;
+  const test::ShellRun held = runCli(
+      "track --video walk.avi --keyframes keys.json --tracker appearance --hold-trunk --out bad",
+      root_);
+  EXPECT_NE(held.exitCode, 0);
+  EXPECT_NE(held.err.find("--hold-trunk"), std::string::npos) << held.err;
   EXPECT_FALSE(fs::exists(root_ / "bad" / "track.json"));
 }
 
