@@ -115,11 +115,18 @@ FilmedHeldOutWalker::Fit fitOrRefusal(Fitting fit, std::string& error) {
   }
 }
 
+TrackerOptions trackerOptions(const TrackStudyOptions& o) {
+  TrackerOptions t;
+  t.holdTheTrunk = o.holdTheTrunk;
+  return t;
+}
+
 TrackStudyRow studyOne(const HeldOutSubject& held, double azimuthDeg, const TrackStudyOptions& o) {
   const FilmedHeldOutWalker walker(held, azimuthDeg, o);
   VideoSource video(walker.file());
   const ModelLoopResult looped =
-      trackWithModel(video, walker.firstFrameMarked(), walker.model(), {}, ModelLoopOptions{o.rounds});
+      trackWithModel(video, walker.firstFrameMarked(), walker.model(), trackerOptions(o),
+                     ModelLoopOptions{o.rounds});
   const TrackDistance d = compareTracks(looped.track.jointsPx, 0, walker.truthPx());
   TrackStudyRow row;
   row.subject = held.walker.subject;

@@ -33,6 +33,7 @@ struct TrackStudyOptions {
   double fps = 30.0;
   double sigma2Mm2 = 1000.0;          // MAP prior of both fits
   unsigned footageSeed = 7;           // writeFootage's background and limb prints
+  bool holdTheTrunk = false;          // TrackerOptions::holdTheTrunk
   std::filesystem::path scratchDir;   // footage written here and removed; empty: the temp dir
 };
 

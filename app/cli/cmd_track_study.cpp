@@ -30,6 +30,7 @@ struct TrackStudyArgs {
   int rounds = 1;
   double distanceM = 6.0;
   unsigned footageSeed = 7;
+  bool holdTrunk = false;
   std::string out;
   bool perJoint = false;
 };
@@ -135,6 +136,7 @@ int runTrackStudyCommand(const TrackStudyArgs& a) {
   o.rounds = a.rounds;
   o.distanceMm = 1000.0 * a.distanceM;
   o.footageSeed = a.footageSeed;
+  o.holdTheTrunk = a.holdTrunk;
   const std::vector<TrackStudyRow> rows = runTrackStudy(
       experimentWalkers(walkers, dataset), o, [&a](const TrackStudyRow& r, int done, int total) {
         printRow(r, done, total);
@@ -173,6 +175,8 @@ void addTrackStudyCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--footage-seed", args->footageSeed,
                   "draws the footage's background and the print on each limb (default 7): "
                   "another seed tells a finding about the tracker from one about a print");
+  cmd->add_flag("--hold-trunk", args->holdTrunk,
+                "hold the shoulders and hips to the pelvis-sternum line, as track --hold-trunk");
   cmd->add_option("--out", args->out, "write every row here (CSV)");
   cmd->add_flag("--per-joint", args->perJoint,
                 "print each joint's median / p95 under its row, the worst first");
