@@ -228,18 +228,20 @@ TEST_F(GuiVideo, TracksWithTheAppearanceTrackerWhenChosen) {
   EXPECT_GT(video["track"]["mean_confidence"].get<double>(), 0.5);
 }
 
-// The flow tracker flattens the still background when asked (the script's
-// "flatten_background", the Track section's checkbox) and the track says it did; a wrong value
-// fails the script.
-TEST_F(GuiVideo, FlattensTheStillBackgroundWhenAsked) {
+// The flow tracker flattens the still background and holds the trunk when asked (the
+// script's "flatten_background" and "hold_trunk", the Track section's checkboxes) and the track
+// says it did; a wrong value fails the script.
+TEST_F(GuiVideo, FlattensTheStillBackgroundAndHoldsTheTrunkWhenAsked) {
   const Footage f = writeWalkingFootage(dir);
   const json script = json::array({
       {{"open", json::array({f.video.string(), f.keyframes.string()})}},
-      {{"track_video", {{"first", 0}, {"last", 59}, {"flatten_background", true}}}},
+      {{"track_video",
+        {{"first", 0}, {"last", 59}, {"flatten_background", true}, {"hold_trunk", true}}}},
       {{"wait_frames", 2}},
       {{"export_state", path("flattened.json")}},
       {{"expect_failure",
         {{"track_video", {{"first", 0}, {"last", 59}, {"flatten_background", "yes"}}}}}},
+      {{"expect_failure", {{"track_video", {{"first", 0}, {"last", 59}, {"hold_trunk", 1}}}}}},
   });
   const auto file = writeScript(dir, script.dump(2));
   const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
@@ -248,6 +250,8 @@ TEST_F(GuiVideo, FlattensTheStillBackgroundWhenAsked) {
   ASSERT_TRUE(video["track"].is_object()) << video;
   EXPECT_EQ(video["flatten_background"], true);
   EXPECT_EQ(video["track"]["background"], "flattened");
+  EXPECT_EQ(video["hold_trunk"], true);
+  EXPECT_EQ(video["track"]["trunk_held"], true);
 }
 
 // The model loop (Howe, Leventon & Freeman's feedback; the Track section's slider, the

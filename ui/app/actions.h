@@ -200,6 +200,8 @@ void setTracker(AppState& s, TrackerKind tracker);
 // Whether the next optical-flow track flattens a fixed camera's still background first
 // (video/static_background.h).
 void setFlattenBackground(AppState& s, bool flatten);
+// The next flow track holds the shoulders and hips to the trunk (TrackerOptions::holdTheTrunk).
+void setHoldTheTrunk(AppState& s, bool hold);
 // Rounds of the model loop the next flow track runs (0-10; std::invalid_argument outside).
 void setModelLoopRounds(AppState& s, int rounds);
 // The model a clip is fitted with, and the model loop guides a track with (throws when none).

@@ -407,7 +407,7 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
     applyExpectingFailure(s, a);
   } else if (n == "track_video") {
     // {"first": F, "last": L[, "tracker": "flow" | "appearance"][, "flatten_background": B]
-    //  [, "model_loop": N]}
+    //  [, "hold_trunk": B][, "model_loop": N]}
     // (L -1: the end): tracked
     // and fitted in the background; a track or fit that fails fails the script like a failed
     // open.
@@ -425,6 +425,11 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
       if (!arg["flatten_background"].is_boolean())
         throw std::invalid_argument(R"("flatten_background" is true or false)");
       actions::setFlattenBackground(s, arg["flatten_background"].get<bool>());
+    }
+    if (arg.contains("hold_trunk")) {
+      if (!arg["hold_trunk"].is_boolean())
+        throw std::invalid_argument(R"("hold_trunk" is true or false)");
+      actions::setHoldTheTrunk(s, arg["hold_trunk"].get<bool>());
     }
     if (arg.contains("model_loop")) {
       if (!arg["model_loop"].is_number_integer())

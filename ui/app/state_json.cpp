@@ -188,11 +188,13 @@ nlohmann::json videoJson(const AppState& s) {
                       {"track_error", v.trackError},
                       {"tracker", trackerName(v.tracker)},
                       {"flatten_background", v.flattenBackground},
+                      {"hold_trunk", v.holdTheTrunk},
                       {"model_loop", v.modelLoopRounds}};
   if (v.tracked) {
     const auto& t = *v.tracked;
     j["track"] = {{"tracker", trackerName(t.tracker)},
                   {"background", t.track.background},
+                  {"trunk_held", t.holdTheTrunk},
                   {"first_frame", t.track.firstFrame},
                   {"last_frame", t.lastFrame()},
                   {"seconds", t.seconds},

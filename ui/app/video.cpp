@@ -20,23 +20,31 @@ const Keyframe* VideoSession::keyframeAt(int f) const {
   return nullptr;
 }
 
-TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes, int first,
-                        int last, TrackerKind tracker, bool flattenBackground, int modelLoopRounds,
+TrackSettings trackSettingsOf(const VideoSession& v, int last) {
+  return {v.firstFrame,        last,           v.tracker,
+          v.flattenBackground, v.holdTheTrunk, v.modelLoopRounds};
+}
+
+TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes,
+                        const TrackSettings& settings,
                         std::shared_ptr<const EigenwalkerModel> model,
                         const std::function<bool(double)>& progress) {
   const auto start = std::chrono::steady_clock::now();
   VideoSource source(video);
+  const bool flow = settings.tracker == TrackerKind::OpticalFlow;
   TrackerOptions o;
-  o.kind = tracker;
-  o.firstFrame = first;
-  o.lastFrame = last;
-  o.flattenStaticBackground = flattenBackground;
+  o.kind = settings.tracker;
+  o.firstFrame = settings.first;
+  o.lastFrame = settings.last;
+  o.flattenStaticBackground = settings.flattenBackground;
+  o.holdTheTrunk = flow && settings.holdTheTrunk;
   TrackedVideo t;
   t.video = video;
   t.keyframes = keyframes;
-  t.tracker = tracker;
-  t.flattenBackground = flattenBackground;
-  t.modelLoopRounds = tracker == TrackerKind::OpticalFlow && model ? modelLoopRounds : 0;
+  t.tracker = settings.tracker;
+  t.flattenBackground = settings.flattenBackground;
+  t.holdTheTrunk = o.holdTheTrunk;
+  t.modelLoopRounds = flow && model ? settings.modelLoopRounds : 0;
   if (t.modelLoopRounds > 0) {
     ModelLoopResult looped =
         trackWithModel(source, keyframes, *model, o, ModelLoopOptions{t.modelLoopRounds}, progress);

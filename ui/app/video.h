@@ -27,6 +27,7 @@ struct TrackedVideo {
   Keyframes keyframes;  // as they were when tracking started
   TrackerKind tracker = TrackerKind::OpticalFlow;
   bool flattenBackground = false;          // asked for; track.background says whether it was done
+  bool holdTheTrunk = false;               // TrackerOptions::holdTheTrunk, as asked for
   int modelLoopRounds = 0;                 // asked for (video/model_loop.h); the flow tracker only
   std::vector<ModelLoopRound> loopRounds;  // one per fit the loop made
   std::string loopStopped;                 // why the loop stopped early ("" when it did not)
@@ -52,6 +53,7 @@ struct VideoSession {
   int firstFrame = 0, lastFrame = -1;  // the range to track (-1: the video's end)
   TrackerKind tracker = TrackerKind::OpticalFlow;  // which tracker the next track uses
   bool flattenBackground = false;  // the next flow track flattens a still background
+  bool holdTheTrunk = false;       // the next flow track holds the shoulders and hips to the trunk
   int modelLoopRounds = 0;         // rounds of the model loop the next flow track runs (0-10)
   std::shared_ptr<const TrackedVideo> tracked;  // the last finished track
   std::string trackError;                       // why the last track failed ("" when none)
@@ -65,11 +67,20 @@ struct VideoSession {
   const Keyframe* keyframeAt(int frame) const;
 };
 
+// What a track is asked for: a VideoSession's settings when it starts.
+struct TrackSettings {
+  int first = 0, last = -1;
+  TrackerKind tracker = TrackerKind::OpticalFlow;
+  bool flattenBackground = false, holdTheTrunk = false;
+  int modelLoopRounds = 0;
+};
+TrackSettings trackSettingsOf(const VideoSession& v, int last);
+
 // Reads and tracks (blocking; the viewer runs it as a background job). `progress` gets the
 // share done and returns false to cancel. Throws the tracker's and trialFromJoints' errors.
 // `modelLoopRounds` > 0 (the flow tracker): tracked with `model` in the loop (video/model_loop.h).
-TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes, int first,
-                        int last, TrackerKind tracker, bool flattenBackground, int modelLoopRounds,
+TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes,
+                        const TrackSettings& settings,
                         std::shared_ptr<const EigenwalkerModel> model,
                         const std::function<bool(double)>& progress);
 

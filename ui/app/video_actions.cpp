@@ -203,6 +203,8 @@ void setTracker(AppState& s, TrackerKind tracker) { session(s).tracker = tracker
 
 void setFlattenBackground(AppState& s, bool flatten) { session(s).flattenBackground = flatten; }
 
+void setHoldTheTrunk(AppState& s, bool hold) { session(s).holdTheTrunk = hold; }
+
 void setModelLoopRounds(AppState& s, int rounds) {
   if (rounds < 0 || rounds > 10) throw std::invalid_argument("the model loop runs 0-10 rounds");
   session(s).modelLoopRounds = rounds;
@@ -229,9 +231,9 @@ void startTracking(AppState& s) {
                          ? modelForTracking(s)
                          : nullptr;
   s.jobs.track.start(
-      title, [path = v.path, keys = v.keyframes, first = v.firstFrame, last, tracker = v.tracker,
-              flatten = v.flattenBackground, rounds = v.modelLoopRounds, model](JobProgress& p) {
-        const auto progress = [&p, first, last](double done) {
+      title, [path = v.path, keys = v.keyframes, settings = trackSettingsOf(v, last),
+              model](JobProgress& p) {
+        const auto progress = [&p, first = settings.first, last = settings.last](double done) {
           try {
             const int frames = last - first + 1;
             p.set(static_cast<int>(done * frames), frames,
@@ -242,7 +244,7 @@ void startTracking(AppState& s) {
           }
         };
         return std::make_shared<const TrackedVideo>(
-            trackVideo(path, keys, first, last, tracker, flatten, rounds, model, progress));
+            trackVideo(path, keys, settings, model, progress));
       });
 }
 

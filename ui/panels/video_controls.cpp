@@ -122,6 +122,21 @@ void backgroundChoice(AppState& s, const VideoSession& v) {
         "stays in place. Optical flow only.");
 }
 
+// A bare upper body gives the shoulders' flow nothing to hold along the arms; the trunk can
+// (docs/TRACKING.md, "Holding the trunk").
+void trunkChoice(AppState& s, const VideoSession& v) {
+  bool hold = v.holdTheTrunk;
+  ImGui::BeginDisabled(v.tracker != TrackerKind::OpticalFlow);
+  if (ImGui::Checkbox("Hold the trunk", &hold)) apply(s, [&] { actions::setHoldTheTrunk(s, hold); });
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(
+        "The shoulders and hips move with the pelvis-sternum line, as on the first\n"
+        "keyframe: where their own flow strays from there, they are put there.\n"
+        "For a bare or plain upper body that bends but turns little; measured worse\n"
+        "on walkers filmed from the side (docs/TRACKING.md). Optical flow only.");
+}
+
 // Howe, Leventon & Freeman's feedback: the walker fitted to a track guides the next one
 // (video/model_loop.h). Rounds 0-10; the flow tracker only.
 void modelLoopChoice(AppState& s, const VideoSession& v) {
@@ -167,11 +182,13 @@ void tracking(AppState& s, const VideoSession& v) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("The first and last frame to track (Enter)");
   trackerChoice(s, v);
   backgroundChoice(s, v);
+  trunkChoice(s, v);
   modelLoopChoice(s, v);
   const bool stale =
       v.tracked &&
       (v.tracked->keyframes.keyframes.size() != v.keyframes.keyframes.size() ||
        v.tracked->tracker != v.tracker || v.tracked->flattenBackground != v.flattenBackground ||
+       v.tracked->holdTheTrunk != (v.tracker == TrackerKind::OpticalFlow && v.holdTheTrunk) ||
        v.tracked->modelLoopRounds !=
            (v.tracker == TrackerKind::OpticalFlow ? v.modelLoopRounds : 0) ||
        v.tracked->track.firstFrame != v.firstFrame ||
@@ -206,6 +223,7 @@ void tracking(AppState& s, const VideoSession& v) {
     textDisabledWrapped(done);
     ImGui::TextDisabled("mean confidence %.2f", t.track.confidence.mean());
     if (t.flattenBackground) textDisabledWrapped(backgroundNote(t.track.background).c_str());
+    if (t.holdTheTrunk) ImGui::TextDisabled("shoulders and hips held to the trunk");
     if (t.modelLoopRounds > 0) textDisabledWrapped(loopNote(t).c_str());
   }
   if (!v.trackError.empty()) {
