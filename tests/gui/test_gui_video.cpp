@@ -15,6 +15,7 @@
 #include <opencv2/videoio.hpp>
 #include <string>
 
+#include "core/keypoints/openpose_writer.h"
 #include "core/synth/population.h"
 #include "core/tracking/keyframes.h"
 #include "tests/gui/gui_run.h"
@@ -252,6 +253,67 @@ TEST_F(GuiVideo, FlattensTheStillBackgroundAndHoldsTheTrunkWhenAsked) {
   EXPECT_EQ(video["track"]["background"], "flattened");
   EXPECT_EQ(video["hold_trunk"], true);
   EXPECT_EQ(video["track"]["trunk_held"], true);
+}
+
+// A pose estimator's detections mark a frame (the Mark section's keypoint field, the script's
+// "mark_from_keypoints"): every joint it found, one edit, and the track runs from it; a folder
+// that is not there fails the script, naming it.
+TEST_F(GuiVideo, MarksAFrameFromAPoseEstimatorsKeypoints) {
+  const Footage f = writeWalkingFootage(dir);
+  const fs::path detected = dir / "detected";
+  writeOpenPoseBody25(detected, {{f.truthPx, Eigen::MatrixXd::Ones(f.truthPx.rows(), 15)}});
+  const json script = json::array({
+      {{"open", f.video.string()}},
+      {{"video_frame", 12}},
+      {{"mark_from_keypoints", detected.string()}},
+      {{"export_state", path("marked.json")}},
+      {{"expect_failure", {{"mark_from_keypoints", path("nowhere")}}}},
+      {{"track_video", {{"first", 0}, {"last", 59}}}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("tracked.json")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json marked = state("marked.json")["video"];
+  ASSERT_EQ(marked["keyframes"].size(), 1u) << marked;
+  EXPECT_EQ(marked["keyframes"][0]["frame"], 12);
+  EXPECT_EQ(marked["keyframes"][0]["joints"], 15);
+  EXPECT_EQ(marked["undo_steps"], 1);
+  EXPECT_NE(r.err.find("nowhere"), std::string::npos) << r.err;
+  const json tracked = state("tracked.json")["video"];
+  ASSERT_TRUE(tracked["track"].is_object()) << tracked;
+  EXPECT_EQ(tracked["track"]["first_frame"], 0);
+  EXPECT_EQ(tracked["track"]["last_frame"], 59);
+}
+
+// Pose2Sim's balancing man, marked from OpenPose's detections on frame 0 and tracked: no walk
+// fits a balancing trial, and the viewer says so and keeps the video and its track on screen
+// (before, it went back to the model's walkers and the track could not be seen).
+TEST_F(GuiVideo, KeepsATrackNoWalkFitsOnScreenAndSaysWhy) {
+  EW_REQUIRE_SHARED_DATA();
+  const fs::path trial = sharedDataDir() / "pose2sim-balancing";
+  const json script = json::array({
+      {{"open", (trial / "videos" / "cam01.mp4").string()}},
+      {{"mark_from_keypoints", (trial / "pose" / "cam01_json").string()}},
+      {{"expect_failure", {{"track_video", {{"first", 0}, {"last", 99}, {"hold_trunk", true}}}}}},
+      {{"video_frame", 40}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("balancing.json")}},
+      {{"screenshot", path("balancing.png")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json s = state("balancing.json");
+  EXPECT_EQ(s["mode"], "clip");
+  EXPECT_EQ(s["video"]["keyframes"][0]["joints"], 15) << s["video"];
+  ASSERT_TRUE(s["video"]["track"].is_object()) << s["video"];
+  EXPECT_EQ(s["video"]["track"]["trunk_held"], true);
+  ASSERT_TRUE(s["notice"].is_object()) << s;
+  EXPECT_EQ(s["notice"]["title"], "No walk fits the track of cam01.mp4");
+  EXPECT_NE(s["notice"]["detail"].get<std::string>().find("not walking"), std::string::npos)
+      << s["notice"];
 }
 
 // The model loop (Howe, Leventon & Freeman's feedback; the Track section's slider, the

@@ -371,7 +371,15 @@ void clipFailed(AppState& s, const std::string& error) {
   }
   if (s.doc.clip == s.jobs.clipRunning) {
     s.doc.clip = s.clip ? std::optional<ClipSettings>(s.clip->settings) : std::nullopt;
-    if (!s.doc.clip && s.doc.mode == Mode::Clip) s.doc.mode = Mode::Reconstruct;
+    // A video stays shown with its track when the walk cannot be fitted to it (a clip that
+    // is not walking): the track is still worth seeing over the footage.
+    if (!s.doc.clip && !s.video && s.doc.mode == Mode::Clip) s.doc.mode = Mode::Reconstruct;
+  }
+  if (s.jobs.clipRunning.tracked) {
+    // The video opened and tracked; opening it again would not fit the walk either.
+    reportError(s, "No walk fits the track of " + s.jobs.clipRunning.path.filename().string(),
+                error);
+    return;
   }
   reportOpenError(s, {s.jobs.clipRunning.path}, error);
 }

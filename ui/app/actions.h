@@ -190,6 +190,11 @@ void skipMarkedJoint(AppState& s);  // the joint asked for is not visible: ask f
 // that is no keyframe yet becomes one, starting from the track's confident joints there.
 // `newEdit` false: part of the edit before (a drag), not a step of its own for undo.
 void markJoint(AppState& s, Joint joint, double xPx, double yPx, bool newEdit = true);
+// Marks the frame shown with a pose estimator's detections on that frame (a keypoint file or
+// folder, core/keypoints: OpenPose, AlphaPose, MMPose, CSV; the file's first frame is the
+// video's first): the joints it found, replacing what was marked there, as one edit. Throws,
+// naming the file, when it does not read or has no joint on that frame.
+void markFromKeypoints(AppState& s, const std::filesystem::path& keypoints);
 void removeKeyframe(AppState& s, int frame);
 void undoKeyframes(AppState& s);
 void redoKeyframes(AppState& s);

@@ -158,6 +158,26 @@ void markJoint(AppState& s, Joint joint, double xPx, double yPx, bool newEdit) {
   if (v.marking) v.markStep = nextUnmarked(v, 0);
 }
 
+void markFromKeypoints(AppState& s, const std::filesystem::path& keypoints) {
+  VideoSession& v = session(s);
+  Keyframes detected;
+  try {
+    KeypointOptions o;
+    o.fps = v.fps();
+    detected = keyframesFromTrack(readKeypointTrial(keypoints, o).jointsPx, {v.frame},
+                                  keypoints.string());
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(e.what());
+  }
+  pushUndo(v);
+  s.view.playback.playing = false;
+  keyframeHere(v).jointsPx = detected.keyframes.front().jointsPx;
+  if (v.marking) v.markStep = nextUnmarked(v, 0);
+  const auto found = detected.keyframes.front().jointsPx.array().isFinite().count() / 2;
+  s.log.info("Marked frame " + std::to_string(v.frame) + " with " + std::to_string(found) +
+             " joints from " + keypoints.string());
+}
+
 void removeKeyframe(AppState& s, int frame) {
   VideoSession& v = session(s);
   auto& list = v.keyframes.keyframes;

@@ -297,8 +297,11 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       }
       }
       if (!drawn) {
+        const bool tracked = s.video && s.video->tracked;
         const char* msg = clipMode && s.video && !s.doc.clip
-                              ? (s.jobs.track.running() ? "tracking…" : "mark the walker's joints on one frame, then Track")
+                              ? (s.jobs.track.running() ? "tracking…"
+                                 : tracked          ? "no walk fits this track (see the message above)"
+                                                    : "mark the walker's joints on one frame, then Track")
                           : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : "the clip could not be fitted")
                           : s.jobs.busy() ? "building models…" : "nothing to show";
         const ImVec2 ts = ImGui::CalcTextSize(msg);

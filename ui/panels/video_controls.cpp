@@ -1,6 +1,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -50,6 +51,24 @@ void scrubber(AppState& s, const VideoSession& v) {
   }
 }
 
+// The keypoint file or folder typed in the Mark section.
+std::array<char, 1024> keypointsField{};
+
+// A pose estimator's detections on the frame shown as its keyframe (actions::markFromKeypoints).
+void markingFromKeypoints(AppState& s) {
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::InputTextWithHint("##keypoints", "keypoint file or folder", keypointsField.data(),
+                           keypointsField.size());
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("OpenPose, AlphaPose or MMPose JSON, or a keypoint CSV, of this video\n"
+                      "(its first frame the video's first)");
+  if (buttonRow({{"Mark this frame from it", keypointsField[0] != '\0'}}) == 0)
+    apply(s, [&] { actions::markFromKeypoints(s, keypointsField.data()); });
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("This frame's joints as the pose estimator found them: a keyframe to\n"
+                      "track from, instead of clicking each joint");
+}
+
 void marking(AppState& s, const VideoSession& v) {
   sectionTitle("Mark the joints");
   const int shown = actions::shownVideoFrame(s);
@@ -88,6 +107,7 @@ void marking(AppState& s, const VideoSession& v) {
       break;
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Forget the joints marked on this frame");
+  markingFromKeypoints(s);
 }
 
 // Optical flow (video/joint_tracker.h) or Zou et al.'s appearance tracker
