@@ -287,6 +287,31 @@ TEST_F(GuiVideo, MarksAFrameFromAPoseEstimatorsKeypoints) {
   EXPECT_EQ(tracked["track"]["last_frame"], 59);
 }
 
+// A tracked joint dragged on a frame that is no keyframe and let go (the script's "drag_joint",
+// as the mouse does): the frame becomes a keyframe and the track is redone from the keyframes
+// as they now are, with no button pressed.
+TEST_F(GuiVideo, DraggingATrackedJointTracksAgainFromTheNewKeyframe) {
+  const Footage f = writeWalkingFootage(dir);
+  const json script = json::array({
+      {{"open", json::array({f.video.string(), f.keyframes.string()})}},
+      {{"track_video", {{"first", 0}, {"last", -1}}}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("before.json")}},
+      {{"video_frame", 30}},
+      {{"drag_joint", {{"r_knee", {f.truthPx(30, 20), f.truthPx(30, 21)}}}}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("after.json")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json before = state("before.json")["video"], after = state("after.json")["video"];
+  ASSERT_TRUE(before["track"].is_object() && after["track"].is_object()) << after;
+  EXPECT_EQ(after["keyframes"].size(), before["keyframes"].size() + 1);
+  EXPECT_EQ(after["track"]["keyframes"], before["track"]["keyframes"].get<int>() + 1);
+  EXPECT_EQ(after["undo_steps"], before["undo_steps"].get<int>() + 1);
+}
+
 // Pose2Sim's balancing man, marked from OpenPose's detections on frame 0 and tracked: no walk
 // fits a balancing trial, and the viewer says so and keeps the video and its track on screen
 // (before, it went back to the model's walkers and the track could not be seen).

@@ -190,6 +190,10 @@ void skipMarkedJoint(AppState& s);  // the joint asked for is not visible: ask f
 // that is no keyframe yet becomes one, starting from the track's confident joints there.
 // `newEdit` false: part of the edit before (a drag), not a step of its own for undo.
 void markJoint(AppState& s, Joint joint, double xPx, double yPx, bool newEdit = true);
+// A joint dragged (markJoint) and let go: on a tracked video, while not marking, the track is
+// redone from the keyframes as they now are (issue 14: "drag a joint on any frame, it becomes a
+// keyframe and the track is redone around it"). True when tracking started.
+bool letGoOfJoint(AppState& s);
 // Marks the frame shown with a pose estimator's detections on that frame (a keypoint file or
 // folder, core/keypoints: OpenPose, AlphaPose, MMPose, CSV; the file's first frame is the
 // video's first): the joints it found, replacing what was marked there, as one edit. Throws,

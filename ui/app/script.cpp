@@ -28,7 +28,7 @@ const std::set<std::string>& knownActions() {
       "drop",         "set_file_override", "reload", "export_data_summary", "export_state",
       "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame",
       "set_engine", "video_frame", "mark_joints", "start_marking", "stop_marking", "skip_joint",
-      "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "mark_from_keypoints", "track_video",
+      "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "mark_from_keypoints", "drag_joint", "track_video",
       "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab",
       "set_semantic", "presentation", "key", "undo", "redo"};
   // clang-format on
@@ -441,6 +441,14 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
     failuresBefore_ = s.jobs.failures;
     checkLoad_ = true;
     actions::startTracking(s);
+  } else if (n == "drag_joint") {
+    // {"r_knee": [x, y]}: one joint dragged there on the frame shown and let go; a tracked
+    // video is tracked again, and the script waits for it as for track_video.
+    if (!a.argument.is_object() || a.argument.size() != 1)
+      throw std::invalid_argument(R"(expects {"joint name": [x, y]})");
+    markJoints(s, a);
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = actions::letGoOfJoint(s);
   } else if (n == "set_clip") {
     // The refit runs in the background: its failure fails the script like a failed open.
     applyAction(s, a);

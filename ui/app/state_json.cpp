@@ -199,6 +199,7 @@ nlohmann::json videoJson(const AppState& s) {
                   {"last_frame", t.lastFrame()},
                   {"seconds", t.seconds},
                   {"mean_confidence", t.track.confidence.mean()},
+                  {"keyframes", t.keyframes.keyframes.size()},
                   {"model_loop", t.modelLoopRounds},
                   {"model_loop_fits", t.loopRounds.size()},
                   {"model_loop_hidden_joint_frames",

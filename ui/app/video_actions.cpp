@@ -158,6 +158,13 @@ void markJoint(AppState& s, Joint joint, double xPx, double yPx, bool newEdit) {
   if (v.marking) v.markStep = nextUnmarked(v, 0);
 }
 
+bool letGoOfJoint(AppState& s) {
+  const VideoSession& v = session(s);
+  if (!v.tracked || v.marking || s.jobs.track.running()) return false;
+  startTracking(s);
+  return true;
+}
+
 void markFromKeypoints(AppState& s, const std::filesystem::path& keypoints) {
   VideoSession& v = session(s);
   Keyframes detected;

@@ -183,6 +183,11 @@ void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVe
       place(static_cast<Joint>(dragJoint_), false);
     } else {
       dragJoint_ = -1;
+      try {
+        actions::letGoOfJoint(s);
+      } catch (const std::exception& e) {
+        s.log.error(e.what());
+      }
     }
     return;
   }
