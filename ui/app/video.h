@@ -56,6 +56,7 @@ struct VideoSession {
   bool holdTheTrunk = false;       // the next flow track holds the shoulders and hips to the trunk
   int modelLoopRounds = 0;         // rounds of the model loop the next flow track runs (0-10)
   std::shared_ptr<const TrackedVideo> tracked;  // the last finished track
+  bool trackAgainWhenStopped = false;  // a joint let go while tracking: the running one stops
   std::string trackError;                       // why the last track failed ("" when none)
   // The frame last drawn and its number: shown while the frame asked for is decoding.
   std::shared_ptr<const cv::Mat> shown;

@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/common/errors.h"
 #include "ui/app/actions.h"
@@ -159,8 +160,14 @@ void markJoint(AppState& s, Joint joint, double xPx, double yPx, bool newEdit) {
 }
 
 bool letGoOfJoint(AppState& s) {
-  const VideoSession& v = session(s);
-  if (!v.tracked || v.marking || s.jobs.track.running()) return false;
+  VideoSession& v = session(s);
+  if (!v.tracked || v.marking) return false;
+  if (s.jobs.track.running()) {
+    // The running track is of the keyframes before this edit: stopped, and started again.
+    v.trackAgainWhenStopped = true;
+    s.jobs.track.cancel();
+    return false;
+  }
   startTracking(s);
   return true;
 }
@@ -301,6 +308,20 @@ int shownVideoFrame(const AppState& s) {
 
 namespace ew::ui {
 
+namespace {
+
+// The track asked for again after an edit that came while one ran (actions::letGoOfJoint).
+void trackAgain(AppState& s) {
+  s.video->trackAgainWhenStopped = false;
+  try {
+    actions::startTracking(s);
+  } catch (const std::exception& e) {
+    s.log.error(e.what());
+  }
+}
+
+}  // namespace
+
 void pollVideo(AppState& s) {
   auto outcome = s.jobs.track.poll();
   if (!outcome || !s.video) return;
@@ -310,6 +331,10 @@ void pollVideo(AppState& s) {
   if (!outcome->value) {
     const bool cancelled = outcome->error.find("cancelled") != std::string::npos;
     v.trackError = cancelled ? "" : outcome->error;
+    if (cancelled && v.trackAgainWhenStopped) {
+      trackAgain(s);
+      return;
+    }
     if (cancelled) {
       s.log.info("Tracking cancelled");
     } else {
@@ -331,6 +356,8 @@ void pollVideo(AppState& s) {
   s.doc.clip = c;
   s.doc.mode = Mode::Clip;
   s.jobs.clipFailed.reset();
+  // A joint let go while this track ran, which finished before it saw the cancel.
+  if (v.trackAgainWhenStopped) trackAgain(s);
 }
 
 }  // namespace ew::ui

@@ -1,0 +1,65 @@
+// The viewer's video actions without a window (ui/app/video_actions.cpp): a joint let go while a
+// track runs stops that track and tracks again with the new keyframe, whether the running track
+// sees the cancel or finishes first.
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include "core/synth/population.h"
+#include "core/tracking/keyframes.h"
+#include "tests/common/test_support.h"
+#include "ui/app/actions.h"
+#include "ui/app/app_state.h"
+#include "ui/app/video_poll.h"
+#include "video/synthetic_footage.h"
+
+namespace ew::ui {
+namespace {
+
+// Polls until no track runs and none is waiting to start (at most a minute).
+void settle(AppState& s) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::minutes(1);
+  while ((s.jobs.track.running() || s.video->trackAgainWhenStopped) &&
+         std::chrono::steady_clock::now() < until) {
+    pollVideo(s);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
+TEST(VideoActions, AJointLetGoWhileTrackingTracksAgainWithIt) {
+  const auto dir = test::makeTempDir("video_actions");
+  PopulationOptions o;
+  o.count = 1;
+  o.simulation.rateHz = 30.0;
+  const Eigen::MatrixXd frames = generatePopulation(o).front().trial.positionsMm.topRows(90);
+  const auto video = dir / "walk.avi";
+  const Eigen::MatrixXd truthPx =
+      writeFootage(video, frames, cameraBeside(frames, 30.0, 4500.0), 30.0);
+  const auto keys = dir / "keys.json";
+  writeKeyframes(keys, keyframesFromTrack(truthPx, {0, 60}, "walk.avi"));
+
+  AppState s;
+  actions::openVideo(s, video);
+  actions::loadKeyframes(s, keys);
+  actions::startTracking(s);
+  settle(s);
+  ASSERT_TRUE(s.video->tracked);
+  EXPECT_EQ(s.video->tracked->keyframes.keyframes.size(), 2u);
+
+  actions::startTracking(s);
+  s.video->frame = 30;
+  const int knee = index(Joint::RKnee);
+  actions::markJoint(s, Joint::RKnee, truthPx(30, 2 * knee), truthPx(30, 2 * knee + 1));
+  EXPECT_FALSE(actions::letGoOfJoint(s)) << "a track was running: it is asked to stop first";
+  EXPECT_TRUE(s.video->trackAgainWhenStopped);
+  settle(s);
+  ASSERT_TRUE(s.video->tracked);
+  EXPECT_FALSE(s.jobs.track.running());
+  EXPECT_EQ(s.video->tracked->keyframes.keyframes.size(), 3u);
+  EXPECT_EQ(s.video->trackError, "");
+}
+
+}  // namespace
+}  // namespace ew::ui
