@@ -26,6 +26,20 @@ namespace ew::ui {
 
 namespace {
 
+// Under "no walk fits this track": why, without the video's path (the fit's message, wrapped to
+// the view).
+void drawWhyNoWalkFits(ImDrawList* dl, const AppState& s, ImVec2 p0, ImVec2 size, float lineHeight) {
+  std::string why = s.jobs.clipError;
+  const std::string file = s.video->path.string() + ": ";
+  if (why.rfind(file, 0) == 0) why.erase(0, file.size());
+  if (why.empty()) return;
+  const float wrap = 0.8f * size.x;
+  const ImVec2 ws = ImGui::CalcTextSize(why.c_str(), nullptr, false, wrap);
+  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
+              ImVec2(p0.x + 0.5f * (size.x - ws.x), p0.y + 0.5f * size.y + 1.5f * lineHeight),
+              IM_COL32(130, 138, 150, 255), why.c_str(), nullptr, wrap);
+}
+
 void handleMouse(OrbitCamera& camera, const ImVec2& size) {
   const ImGuiIO& io = ImGui::GetIO();
   if (ImGui::IsItemActive()) {
@@ -298,14 +312,16 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       }
       if (!drawn) {
         const bool tracked = s.video && s.video->tracked;
+        const bool unfitted = clipMode && s.video && !s.doc.clip && tracked && !s.jobs.track.running();
         const char* msg = clipMode && s.video && !s.doc.clip
                               ? (s.jobs.track.running() ? "tracking…"
-                                 : tracked          ? "no walk fits this track (see the message above)"
+                                 : tracked          ? "no walk fits this track"
                                                     : "mark the walker's joints on one frame, then Track")
                           : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : "the clip could not be fitted")
                           : s.jobs.busy() ? "building models…" : "nothing to show";
         const ImVec2 ts = ImGui::CalcTextSize(msg);
         dl->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y), IM_COL32(160, 168, 180, 255), msg);
+        if (unfitted) drawWhyNoWalkFits(dl, s, p0, size, ts.y);
       }
     }
   }
