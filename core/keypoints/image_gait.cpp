@@ -94,7 +94,9 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
   if (g.strideHz < kMinStrideHz || g.strideHz > kMaxStrideHz)
     notWalking(t, "no regular foot strikes (" + std::to_string(g.rightStrikesS.size()) +
                       " right, " + std::to_string(g.leftStrikesS.size()) + " left at " +
-                      fixed1(t.rateHz) + " fps; give the video's --fps if it is not that)");
+                      fixed1(t.rateHz) + " fps" +
+                      // A video's own rate (a track) is no guess to correct.
+                      (t.rateAssumed ? ", assumed: give the video's --fps if it is not that)" : ")"));
   g.cycles = static_cast<double>(t.frameCount) / t.rateHz * g.strideHz;
   if (g.cycles < 1.0)
     throw Error(ErrorKind::BadData, t.file, "",

@@ -162,6 +162,16 @@ TEST(ImageGait, AHeldStrideStandsForFeetThatDoNotStrike) {
                                     300.0 * static_cast<double>(f) / static_cast<double>(n - 1);
   EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(t); }, ErrorKind::BadData,
                                 {"no regular foot strikes"}));
+  // The rate given (a video's own, or --fps): no advice to give it.
+  try {
+    imageGaitCycles(t);
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).find("--fps"), std::string::npos) << e.what();
+  }
+  KeypointTrial guessed = t;
+  guessed.rateAssumed = true;
+  EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(guessed); }, ErrorKind::BadData,
+                                {"no regular foot strikes", "30.0 fps, assumed", "--fps"}));
   const ImageGait g = imageGaitCycles(t, clip.strideHz);
   EXPECT_EQ(g.strideHz, clip.strideHz);
   EXPECT_NEAR(g.cycles, static_cast<double>(t.frameCount) / t.rateHz * clip.strideHz, 1e-9);
