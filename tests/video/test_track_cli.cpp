@@ -35,6 +35,15 @@ class TrackCli : public ::testing::Test {
     writeKeyframes(root_ / "keys.json", keyframesFromTrack(truthPx_, {0, 10, 20}, "walk.avi"));
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
+  // `track … --json` from keyframe 0 into `out`, with `flag` added: its JSON report.
+  static json reportOfTrackWith(const std::string& out, const std::string& flag) {
+    const test::ShellRun r = runCli(
+        "track --video walk.avi --keyframes keys.json --keyframe-frames 0 --out " + out +
+            " --json " + flag,
+        root_);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return json::parse(r.out.substr(r.out.find('{')));
+  }
   static fs::path root_;
   static Eigen::MatrixXd truthPx_;
 };
@@ -70,26 +79,14 @@ TEST_F(TrackCli, EachTrackerWritesTheTrackAndMeasuresItAgainstTheOtherKeyframes)
 
 TEST_F(TrackCli, FlattensTheStillBackgroundWhenAskedAndSaysSo) {
   for (const bool flatten : {false, true}) {
-    const test::ShellRun r =
-        runCli(std::string("track --video walk.avi --keyframes keys.json --keyframe-frames 0 "
-                           "--out flat --json") +
-                   (flatten ? " --flatten-background" : ""),
-               root_);
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const json report = json::parse(r.out.substr(r.out.find('{')));
+    const json report = reportOfTrackWith("flat", flatten ? "--flatten-background" : "");
     EXPECT_EQ(report["background"], flatten ? "flattened" : "off");
   }
 }
 
 TEST_F(TrackCli, SaysWhetherItHeldTheTrunk) {
   for (const bool hold : {false, true}) {
-    const test::ShellRun r =
-        runCli(std::string("track --video walk.avi --keyframes keys.json --keyframe-frames 0 "
-                           "--out held --json") +
-                   (hold ? " --hold-trunk" : ""),
-               root_);
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    const json report = json::parse(r.out.substr(r.out.find('{')));
+    const json report = reportOfTrackWith("held", hold ? "--hold-trunk" : "");
     EXPECT_EQ(report["trunk_held"], hold);
   }
 }
