@@ -46,7 +46,13 @@ VideoSource::VideoSource(const std::filesystem::path& path) {
   if (!std::isfinite(info_.fps) || info_.fps < 1.0 || info_.fps > 10000.0)
     throwBadData(info_.file, "",
                  "frame rate " + std::to_string(info_.fps) + " is outside 1-10000 fps");
-  if (!std::isfinite(count) || count < 1.0 || count > kMaxVideoFrames)
+  // FFmpeg estimates the count from the container's duration; a still image or a raw stream
+  // has none, and the estimate comes back negative or not a number.
+  if (!std::isfinite(count) || count < 1.0)
+    throwBadData(info_.file, "",
+                 "it does not say how many frames it holds (a still image, or a raw stream "
+                 "without a container: put the stream in an MP4, MKV or AVI)");
+  if (count > kMaxVideoFrames)
     throwBadData(info_.file, "",
                  "frame count " + std::to_string(count) + " is outside 1-" +
                      std::to_string(kMaxVideoFrames));

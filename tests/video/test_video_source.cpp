@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
@@ -82,6 +83,11 @@ TEST(VideoSource, WhatIsNotAVideoIsNamedWithTheProblem) {
   test::writeBinaryFile(dir / "text.mp4", "this is not a video\n");
   EXPECT_TRUE(test::throwsError([&] { VideoSource v(dir / "text.mp4"); }, ErrorKind::Malformed,
                                 {"text.mp4"}));
+  // A photo handed in as a video: FFmpeg opens it, with no frame count.
+  cv::imwrite((dir / "photo.png").string(), cv::Mat(48, 64, CV_8UC3, cv::Scalar(40, 90, 200)));
+  fs::rename(dir / "photo.png", dir / "photo.mp4");
+  EXPECT_TRUE(test::throwsError([&] { VideoSource v(dir / "photo.mp4"); }, ErrorKind::BadData,
+                                {"photo.mp4", "does not say how many frames"}));
   test::writeBinaryFile(dir / "empty.avi", "");
   EXPECT_TRUE(test::throwsError([&] { VideoSource v(dir / "empty.avi"); }, ErrorKind::Malformed,
                                 {"empty.avi"}));
