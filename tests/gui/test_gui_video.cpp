@@ -341,6 +341,40 @@ TEST_F(GuiVideo, KeepsATrackNoWalkFitsOnScreenAndSaysWhy) {
       << s["notice"];
 }
 
+// Footage filmed with a phone held upright stands beside a column with the caption and the
+// legend, at nearly the view's full height, rather than between them at three quarters of it.
+TEST_F(GuiVideo, UprightFootageStandsBesideItsCaptionAtFullHeight) {
+  const fs::path video = dir / "upright.avi";
+  {
+    cv::VideoWriter writer(video.string(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 30.0,
+                           cv::Size(360, 640));
+    ASSERT_TRUE(writer.isOpened());
+    for (int k = 0; k < 10; ++k) {
+      cv::Mat image(640, 360, CV_8UC3, cv::Scalar(60, 90, 120));
+      cv::circle(image, cv::Point(180, 100 + 40 * k), 30, cv::Scalar(230, 230, 230), cv::FILLED);
+      writer.write(image);
+    }
+  }
+  const json script = json::array({
+      {{"open", video.string()}},
+      {{"video_frame", 3}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("upright.json")}},
+      {{"screenshot", path("upright.png")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1920x1080 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json layout = state("upright.json")["layout"];
+  const json& o = layout["overlays"];
+  ASSERT_TRUE(o.contains("input.footage") && o.contains("input.caption")) << o;
+  const double panelHeight = layout["input"][3], footageWidth = o["input.footage"][2],
+               footageHeight = o["input.footage"][3];
+  EXPECT_GE(footageHeight, 0.9 * panelHeight) << o;
+  EXPECT_NEAR(footageWidth / footageHeight, 360.0 / 640.0, 0.01) << o;
+  EXPECT_FALSE(overlap(o["input.caption"], o["input.footage"])) << o;
+}
+
 // The model loop (Howe, Leventon & Freeman's feedback; the Track section's slider, the
 // script's "model_loop"): the track says how many rounds it ran and the controls say so; an
 // out-of-range count fails the script.

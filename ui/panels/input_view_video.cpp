@@ -24,6 +24,10 @@ namespace ew::ui {
 
 namespace {
 
+// Beside footage narrower than the view, the caption and the legend may take this share of its
+// width, on the left.
+constexpr float kVideoCaptionColumnShare = 0.4f;
+
 // "the walker's right knee", as the guided marking asks for it.
 std::string spokenJoint(Joint j) {
   std::string name(jointName(j));
@@ -33,13 +37,14 @@ std::string spokenJoint(Joint j) {
   return "the " + name;
 }
 
-void drawPrompt(ImDrawList* dl, ImFont* font, ImVec2 p0, ImVec2 size, const std::string& text,
+// The guided marking's prompt, centred across the view, its top at `top` (below the caption).
+void drawPrompt(ImDrawList* dl, ImFont* font, ImVec2 p0, ImVec2 size, float top, const std::string& text,
                 float scale) {
   const float fontSize = font ? font->FontSize * ImGui::GetIO().FontGlobalScale : ImGui::GetFontSize();
   const ImVec2 ts = font ? font->CalcTextSizeA(fontSize, size.x, 0.0f, text.c_str())
                          : ImGui::CalcTextSize(text.c_str());
   const float pad = 8.0f * scale;
-  const ImVec2 at(p0.x + std::max(pad, 0.5f * (size.x - ts.x)), p0.y + 64.0f * scale);
+  const ImVec2 at(p0.x + std::max(pad, 0.5f * (size.x - ts.x)), std::max(top + pad, p0.y + 64.0f * scale));
   dl->AddRectFilled(ImVec2(at.x - pad, at.y - 0.5f * pad),
                     ImVec2(at.x + ts.x + pad, at.y + ts.y + 0.5f * pad), IM_COL32(10, 40, 36, 225),
                     6.0f * scale);
@@ -68,25 +73,47 @@ int nearestJoint(const VideoSession& v, int frame, glm::vec2 px, float reach) {
 
 // The footage framed clear of the whole caption and the whole legend when that keeps it at
 // 0.8 of its size at least; else of the caption's title alone and the legend; else of the
-// title and the legend's folded tab (the view's other framings choose so too).
-VideoViewFrame videoFraming(const ViewCaption& caption, const VideoInfo& info, ImVec2 size, float scale,
-                            ImFont* titleFont) {
+// title and the legend's folded tab (the view's other framings choose so too). Footage
+// narrower than the view (a phone held upright) is rather framed right of a column that holds
+// the whole caption, wrapped to the column, and the legend, when that makes it larger.
+struct VideoFraming {
+  VideoViewFrame view;
+  float captionWidth = 0.0f;  // the caption's lines wrap within this (screen px)
+  float narrowBelowPx = kNarrowViewPx;  // drawCaption's: 0 in the column, which is sized for it
+};
+
+VideoFraming videoFraming(const ViewCaption& caption, const VideoInfo& info, ImVec2 size, float scale,
+                          ImFont* titleFont) {
   const float pad = 10.0f * scale, aspect = size.x / size.y;
   const auto framed = [&](ImVec2 top, ImVec2 bottom) {
     return videoViewFrame(info.widthPx, info.heightPx, aspect, (1.5f * pad + top.y) / size.y,
                           (1.5f * pad + bottom.y) / size.y);
   };
+  const auto captionSize = [&](float width, float narrowBelowPx) {
+    return drawCaption(nullptr, ImVec2(0.0f, 0.0f), caption.title, caption.subtitle, titleFont, scale,
+                       ImVec2(width, size.y), kNothing, narrowBelowPx)
+        .GetSize();
+  };
   const float largest = framed({0.0f, 0.0f}, {0.0f, 0.0f}).heightPx;  // smaller heightPx: larger footage
-  const ImVec2 full = drawCaption(nullptr, ImVec2(0.0f, 0.0f), caption.title, caption.subtitle, titleFont, scale,
-                                  ImVec2(size.x - 2.0f * pad, size.y))
-                          .GetSize();
+  const ImVec2 full = captionSize(size.x - 2.0f * pad, kNarrowViewPx);
   const ImVec2 title = smallCaptionPlate(caption.title, scale, size.x - 2.0f * pad);
   const ImVec2 legend = legendSize(caption.legend, scale, size.x);
-  for (const auto& [top, bottom] : {std::pair{full, legend}, std::pair{title, legend}}) {
-    const VideoViewFrame f = framed(top, bottom);
-    if (f.heightPx <= largest / 0.8f) return f;
-  }
-  return framed(title, legendTabSize(scale));
+  const VideoFraming stacked{[&] {
+                               for (const auto& [top, bottom] : {std::pair{full, legend}, std::pair{title, legend}}) {
+                                 const VideoViewFrame f = framed(top, bottom);
+                                 if (f.heightPx <= largest / 0.8f) return f;
+                               }
+                               return framed(title, legendTabSize(scale));
+                             }(),
+                             size.x - 2.0f * pad};
+  const float columnWidth = kVideoCaptionColumnShare * size.x - 2.5f * pad;
+  const ImVec2 wrapped = captionSize(columnWidth, 0.0f);
+  if (legend.x > columnWidth || wrapped.y + legend.y + 3.0f * pad > size.y) return stacked;
+  const float column = (std::max(wrapped.x, legend.x) + 2.5f * pad) / size.x;
+  const VideoFraming beside{
+      videoViewFrame(info.widthPx, info.heightPx, aspect, pad / size.y, pad / size.y, column), columnWidth, 0.0f};
+  // A few per cent are not worth the caption's move.
+  return beside.view.heightPx < 0.95f * stacked.view.heightPx ? beside : stacked;
 }
 
 // Video pixels [low, high] (x right, y down) on the screen.
@@ -124,7 +151,8 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
   const float aspect = size.x / size.y;
   const VideoInfo& info = v.frames->info();
   const ViewCaption caption = videoInputCaption(s, frame, v.shownIndex != frame, true);
-  videoFrame_ = videoFraming(caption, info, size, ctx.scale, s.fonts.large);
+  const VideoFraming framing = videoFraming(caption, info, size, ctx.scale, s.fonts.large);
+  videoFrame_ = framing.view;
   const VideoViewFrame& view = videoFrame_;
   handleVideoMouse(s, ctx, p0, size, frame);
   buildVideoInputScene(s, scene, ctx.scale, view.heightPx / size.y, frame, v.shown.get());
@@ -138,7 +166,8 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
   const ImRect footage = screenRect(view, aspect, p0, size, {0.0f, 0.0f},
                                     {static_cast<float>(info.widthPx), static_cast<float>(info.heightPx)});
   const ImRect captionRect = drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle,
-                                         s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), footage);
+                                         s.fonts.large, ctx.scale, ImVec2(framing.captionWidth, size.y), footage,
+                                         framing.narrowBelowPx);
   if (v.marking) {
     const auto& order = markingOrder();
     const std::string prompt =
@@ -146,15 +175,15 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
             ? "Click " + spokenJoint(order[static_cast<std::size_t>(v.markStep)]) +
                   " (Skip if hidden)"
             : "All joints marked on this frame: drag one to correct it, or Done";
-    drawPrompt(dl, s.fonts.large, p0, size, prompt, ctx.scale);
+    drawPrompt(dl, s.fonts.large, p0, size, captionRect.Max.y, prompt, ctx.scale);
   }
   const ImRect legendRect =
       drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), caption.legend, ctx.scale, size.x, footage);
-  if (const auto walker = walkerExtentPx(v, frame)) {
+  if (const auto walker = walkerExtentPx(v, frame))
     s.lastFrame.overlay("input.walker", toPanelRect(screenRect(view, aspect, p0, size, walker->first, walker->second)));
-    s.lastFrame.overlay("input.caption", toPanelRect(captionRect));
-    s.lastFrame.overlay("input.legend", toPanelRect(legendRect));
-  }
+  s.lastFrame.overlay("input.caption", toPanelRect(captionRect));
+  s.lastFrame.overlay("input.legend", toPanelRect(legendRect));
+  s.lastFrame.overlay("input.footage", toPanelRect(footage));
 }
 
 void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size,

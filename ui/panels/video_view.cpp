@@ -72,13 +72,17 @@ glm::vec2 VideoViewFrame::toViewShare(glm::vec2 px, float aspect) const {
   return {(px.x - (centre.x - w)) / (2.0f * w), ((centre.y + h) + px.y) / (2.0f * h)};
 }
 
-VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect, float topShare, float bottomShare) {
+VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect, float topShare, float bottomShare,
+                              float leftShare) {
   VideoViewFrame f;
   const float w = static_cast<float>(widthPx), h = static_cast<float>(heightPx);
   const float band = std::max(1.0f - topShare - bottomShare, 0.2f);
-  f.heightPx = std::max({h / band, w * 1.02f / std::max(aspect, 0.1f), 16.0f});
-  // The band's middle (scene y, up) on the video's middle.
-  f.centre = {0.5f * w, -0.5f * h + 0.5f * (topShare - bottomShare) * f.heightPx};
+  const float across = std::max(1.0f - leftShare, 0.2f);
+  f.heightPx = std::max({h / band, w * 1.02f / (std::max(aspect, 0.1f) * across), 16.0f});
+  // The box's middle (scene x right, y up) on the video's middle.
+  const float viewWidth = f.heightPx * aspect;
+  f.centre = {0.5f * w - 0.5f * leftShare * viewWidth,
+              -0.5f * h + 0.5f * (topShare - bottomShare) * f.heightPx};
   return f;
 }
 

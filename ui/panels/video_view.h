@@ -22,10 +22,11 @@ struct VideoViewFrame {
   // A video pixel as a view share (the inverse).
   glm::vec2 toViewShare(glm::vec2 videoPx, float aspect) const;
 };
-// The video as large as fits in the view's width and in the band between `topShare` and
-// `bottomShare` of its height (the caption above, the legend below), centred in that band.
+// The video as large as fits in the view right of `leftShare` of its width and in the band
+// between `topShare` and `bottomShare` of its height (the caption above, the legend below, or
+// both in a column on the left), centred in that box.
 VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect, float topShare = 0.11f,
-                              float bottomShare = 0.07f);
+                              float bottomShare = 0.07f, float leftShare = 0.0f);
 
 // Builds the scene for video frame `frame` whose pixels are `bgrMat` (a cv::Mat; null: no
 // picture yet); `videoPxPerScreenPx` sizes the marks on screen. Returns false when no video

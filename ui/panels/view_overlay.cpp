@@ -80,11 +80,12 @@ ImRect unite(const ImRect& a, const ImRect& b) {
 }
 
 ImRect drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
-                 ImFont* titleFont, float scale, ImVec2 viewSize, const ImRect& keepClear) {
+                 ImFont* titleFont, float scale, ImVec2 viewSize, const ImRect& keepClear,
+                 float narrowBelowPx) {
   const float maxWidth = viewSize.x;
   // A narrow view (a small window, a large UI scale) gets the caption in smaller type, and so
   // does one where the large title would cover the walker.
-  const bool narrow = maxWidth < 330.0f * scale;
+  const bool narrow = maxWidth < narrowBelowPx * scale;
   ImFont* body = ImGui::GetFont();
   const float bodySize = ImGui::GetFontSize() * (narrow ? 0.8f : 1.0f);
   const float pad = 8.0f * scale;
@@ -146,11 +147,13 @@ LegendLayout layOutLegend(std::span<const LegendItem> items, float scale, float 
 }  // namespace
 
 ImVec2 legendSize(std::span<const LegendItem> items, float scale, float viewWidth) {
+  if (items.empty()) return {0.0f, 0.0f};
   return layOutLegend(items, scale, viewWidth).size;
 }
 
 ImRect drawLegend(ImDrawList* dl, ImVec2 bottomLeft, std::span<const LegendItem> items, float scale,
                   float viewWidth, const ImRect& keepClear) {
+  if (items.empty()) return ImRect(bottomLeft, bottomLeft);  // nothing to explain: no plate
   const LegendLayout l = layOutLegend(items, scale, viewWidth);
   const float shrink = l.scale / scale;
   scale = l.scale;

@@ -48,9 +48,12 @@ ImVec2 legendSize(std::span<const LegendItem> items, float scale, float viewWidt
 // the caption would take more than 0.3 of the view's height (it would meet the legend) or
 // would cover `keepClear` (the walker: the subtitle is then the caption's tooltip). The
 // plate's rectangle is returned (the colour bar keeps clear of it); with no draw list, only
-// that (the caption measured, not drawn).
+// that (the caption measured, not drawn). A view narrower than `narrowBelowPx` (unscaled)
+// gets smaller type; a column set aside for the caption passes 0.
+inline constexpr float kNarrowViewPx = 330.0f;
 ImRect drawCaption(ImDrawList* dl, ImVec2 at, const std::string& title, const std::string& subtitle,
-                 ImFont* titleFont, float scale, ImVec2 viewSize = {1e9f, 1e9f}, const ImRect& keepClear = kNothing);
+                 ImFont* titleFont, float scale, ImVec2 viewSize = {1e9f, 1e9f}, const ImRect& keepClear = kNothing,
+                 float narrowBelowPx = kNarrowViewPx);
 // Legend rows, bottom-left corner upwards; the plate's rectangle is returned (so other
 // overlays can keep clear of it). In a view `viewWidth` wide, a legend wider than 0.55 of it
 // is drawn in smaller text (down to 0.6 of the body size) so it covers less of the walker,
