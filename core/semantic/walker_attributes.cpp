@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <utility>
 #include <variant>
 
 #include "core/common/skeleton.h"
@@ -113,9 +114,17 @@ const std::vector<AttributeWords>& numericWords() {
       {"lateral_sway", "lateral sway (mm)", "less sway", "more sway"},
       {"pelvis_rotation", "pelvis rotation (°)", "less pelvis rotation", "more pelvis rotation"},
       {"pelvis_obliquity", "pelvis obliquity (°)", "less pelvis tilt", "more pelvis tilt"},
+      // The synthetic population's left arm's swing over the right's, less 1 (docs/SYNTHETIC.md).
+      {"asymmetry_arm", "arm swing asymmetry (left ÷ right − 1)", "right arm swings more",
+       "left arm swings more"},
   };
   return words;
 }
+
+// A column name's unit suffix and the unit's words in a label.
+constexpr std::pair<const char*, const char*> kUnitSuffixes[] = {
+    {"_mps", "m/s"}, {"_spm", "steps/min"}, {"_deg", "°"}, {"_pct", "%"}, {"_kg", "kg"},
+    {"_mm", "mm"},   {"_cm", "cm"},         {"_m", "m"},   {"_s", "s"}};
 
 void setNumericWords(WalkerAttribute& a) {
   for (const auto& w : numericWords()) {
@@ -126,17 +135,18 @@ void setNumericWords(WalkerAttribute& a) {
       return;
     }
   }
-  // "knee_loading_deg" → "less knee loading" ↔ "more knee loading".
-  std::string words = a.name;
-  for (const char* unit : {"_mps", "_spm", "_deg", "_pct", "_kg", "_mm", "_cm", "_m", "_s"}) {
-    const std::string u = unit;
+  // "knee_loading_deg" → "knee loading (°)", "less knee loading" ↔ "more knee loading".
+  std::string words = a.name, unitWords;
+  for (const auto& [suffix, unit] : kUnitSuffixes) {
+    const std::string u = suffix;
     if (words.size() > u.size() && words.compare(words.size() - u.size(), u.size(), u) == 0) {
       words.resize(words.size() - u.size());
+      unitWords = unit;
       break;
     }
   }
   std::replace(words.begin(), words.end(), '_', ' ');
-  a.label = a.name;
+  a.label = unitWords.empty() ? words : words + " (" + unitWords + ")";
   a.lowWord = "less " + words;
   a.highWord = "more " + words;
 }

@@ -120,7 +120,8 @@ TEST(SemanticAxes, ManifestColumnsBecomeNumericOrTwoClassAttributes) {
   const std::vector<std::string> group{"a", "b", "c", "a", "b", "c"};
   for (size_t i = 0; i < walkers.size(); ++i) {
     walkers[i].attributes = {{"sex", sex[i]}, {"group", group[i]}, {"site", "lab"},
-                             {"mass_kg", i == 2 ? "NaN" : std::to_string(60 + i)}};
+                             {"mass_kg", i == 2 ? "NaN" : std::to_string(60 + i)},
+                             {"knee_loading_deg", std::to_string(10 + i)}};
     if (i == 0) walkers[i].attributes["odd"] = "x";
     if (i > 0) walkers[i].attributes["odd"] = "y";
   }
@@ -137,6 +138,11 @@ TEST(SemanticAxes, ManifestColumnsBecomeNumericOrTwoClassAttributes) {
   EXPECT_EQ(mass->highWord, "heavier");
   EXPECT_TRUE(std::isnan(mass->values[2]));  // "NaN" is no value, not a class
   EXPECT_EQ(mass->known(), 5);
+  // A column the field has no words for is read from its name and its unit's suffix.
+  const WalkerAttribute* loading = table.find("knee_loading_deg");
+  ASSERT_NE(loading, nullptr);
+  EXPECT_EQ(loading->label, "knee loading (°)");
+  EXPECT_EQ(loading->highWord, "more knee loading");
   EXPECT_EQ(table.find("group"), nullptr);
   EXPECT_EQ(table.find("site"), nullptr);
   EXPECT_EQ(table.find("odd"), nullptr);

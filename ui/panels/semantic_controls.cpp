@@ -245,7 +245,10 @@ void SemanticControls::drawFromView(const AppState& s, float scale) {
   const bool with3d = ImGui::CalcTextSize("stride length").x + 3.0f * numberW <= 0.9f * ImGui::GetContentRegionAvail().x;
   if (!ImGui::BeginTable("from_view", with3d ? 4 : 3, flags)) return;
   ImGui::TableSetupColumn("attribute", ImGuiTableColumnFlags_WidthStretch, 2.2f);
-  ImGui::TableSetupColumn("2D view", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  // "2D view" where the column has room for it (beside "3D" the short name reads the same).
+  const float columnW = ImGui::GetContentRegionAvail().x / (with3d ? 5.2f : 4.2f);
+  const bool roomy = ImGui::CalcTextSize("2D view").x + 2.0f * ImGui::GetStyle().CellPadding.x <= columnW;
+  ImGui::TableSetupColumn(roomy ? "2D view" : "2D", ImGuiTableColumnFlags_WidthStretch, 1.0f);
   if (with3d) ImGui::TableSetupColumn("3D", ImGuiTableColumnFlags_WidthStretch, 1.0f);
   ImGui::TableSetupColumn("true", ImGuiTableColumnFlags_WidthStretch, 1.0f);
   ImGui::TableHeadersRow();
