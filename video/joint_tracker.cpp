@@ -533,6 +533,7 @@ class RangeTracker {
       throw Error(ErrorKind::BadArgument, video.info().file, "",
                   "no keyframe within the tracked frames " + std::to_string(range_.first) + "-" +
                       std::to_string(range_.last));
+    checkMarksWithin(keys, video.info().widthPx, video.info().heightPx, video.info().file);
     g_ = geometryFor(personHeightPx(keys, video.info().heightPx), o);
     if (o.kind == TrackerKind::OpticalFlow && o.flattenStaticBackground) {
       BackgroundCheck check = estimateStaticBackground(video, range_.first, range_.last,

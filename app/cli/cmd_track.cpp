@@ -180,6 +180,7 @@ int runTrack(const TrackArgs& a) {
   VideoSource video(a.video);
   const VideoInfo& info = video.info();
   const Keyframes keys = keyframesFor(a, info.fps);
+  checkMarksWithin(keys, info.widthPx, info.heightPx, a.keyframes.empty() ? a.keyframesFrom : a.keyframes);
   TrackerOptions o;
   o.kind = trackerFromName(a.tracker);
   o.firstFrame = a.first;

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
+#include <sstream>
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
@@ -62,6 +64,13 @@ void sortByFrame(std::vector<Keyframe>& keyframes) {
 
 bool hasAJoint(const Keyframe& k) { return !k.jointsPx.array().isNaN().all(); }
 
+// "812.5", "-10", "1e+300": six significant digits at most, for an error message.
+std::string shortNumber(double v) {
+  std::ostringstream out;
+  out << std::setprecision(6) << v;
+  return out.str();
+}
+
 }  // namespace
 
 Keyframes parseKeyframes(const std::string& text, const std::string& name) {
@@ -97,6 +106,22 @@ Keyframes parseKeyframes(const std::string& text, const std::string& name) {
   if (std::none_of(out.keyframes.begin(), out.keyframes.end(), hasAJoint))
     throwBadData(name, "", "no keyframe has a marked joint");
   return out;
+}
+
+void checkMarksWithin(const Keyframes& keyframes, int widthPx, int heightPx, const std::string& file) {
+  const double marginX = kMarkMarginShare * widthPx, marginY = kMarkMarginShare * heightPx;
+  const auto within = [](double v, double size, double margin) { return v >= -margin && v <= size + margin; };
+  for (const Keyframe& k : keyframes.keyframes) {
+    for (int j = 0; j < kJointCount; ++j) {
+      const double x = k.jointsPx(2 * j), y = k.jointsPx(2 * j + 1);
+      if (std::isnan(x) || std::isnan(y) || (within(x, widthPx, marginX) && within(y, heightPx, marginY)))
+        continue;
+      throwBadData(file, "keyframe on frame " + std::to_string(k.frame) + " " + std::string(kJointNames[j]),
+                   "marked at (" + shortNumber(x) + ", " + shortNumber(y) + "), far outside the " +
+                       std::to_string(widthPx) + "x" + std::to_string(heightPx) +
+                       " picture (not marked on this video?)");
+    }
+  }
 }
 
 bool isKeyframeFile(const std::filesystem::path& path) {

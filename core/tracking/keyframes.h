@@ -32,6 +32,15 @@ inline constexpr int kMaxKeyframes = 100000;
 Keyframes readKeyframes(const std::filesystem::path& file);
 Keyframes parseKeyframes(const std::string& text, const std::string& name);
 
+// How far outside the picture a mark may lie, as a share of the picture's width and height: a
+// foot the frame's edge cuts off is marked a little outside it; further out, the keyframes were
+// not marked on this video (or a coordinate was typed wrong).
+inline constexpr double kMarkMarginShare = 0.25;
+
+// Throws Error(BadData) naming `file`, the keyframe's frame and the joint for a mark further
+// outside a widthPx × heightPx picture than kMarkMarginShare of its size.
+void checkMarksWithin(const Keyframes& keyframes, int widthPx, int heightPx, const std::string& file);
+
 // True for a .json file whose start says it is a keyframe file (its "format" field), so a
 // keyframe file and a pose estimator's JSON can be told apart without reading either whole.
 bool isKeyframeFile(const std::filesystem::path& path);

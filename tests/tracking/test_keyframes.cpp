@@ -81,6 +81,24 @@ TEST(Keyframes, MalformedFilesAreNamedWithTheirProblem) {
                           {"/nonexistent/k.json"}));
 }
 
+// A mark far outside the picture (a keyframe file of another video, a coordinate typed wrong,
+// a hostile 1e300) is an error naming the file, the frame and the joint; one a little outside
+// (a foot the edge cuts off) is kept.
+TEST(Keyframes, MarksFarOutsideThePictureAreRefused) {
+  const auto marked = [](double x, double y) {
+    return parseKeyframes(withKeyframes(R"([{"frame": 7, "joints": {"l_ankle": [)" + std::to_string(x) + ", " +
+                                        std::to_string(y) + "]}}]"),
+                          "k.json");
+  };
+  EXPECT_NO_THROW(checkMarksWithin(marked(-10.0, 730.0), 1280, 720, "k.json"));
+  EXPECT_NO_THROW(checkMarksWithin(marked(1280.0 + 319.0, -179.0), 1280, 720, "k.json"));
+  for (const auto& [x, y] : {std::pair{1e300, 5.0}, std::pair{5.0, -1e300}, std::pair{-321.0, 5.0},
+                             std::pair{5.0, 720.0 + 181.0}})
+    EXPECT_TRUE(test::throwsError([&] { checkMarksWithin(marked(x, y), 1280, 720, "k.json"); },
+                                  ErrorKind::BadData, {"k.json", "frame 7 l_ankle", "outside the 1280x720 picture"}))
+        << x << ", " << y;
+}
+
 TEST(Keyframes, FromATrackAtChosenFrames) {
   Eigen::MatrixXd track = Eigen::MatrixXd::Constant(10, kDims2, kNaN);
   track.row(2).setLinSpaced(kDims2, 0.0, 29.0);

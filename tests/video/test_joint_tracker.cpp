@@ -219,6 +219,11 @@ TEST(JointTracker, RefusesARangeWithoutKeyframesOrOutsideTheVideo) {
   o.lastFrame = -1;
   EXPECT_TRUE(test::throwsError([&] { trackJoints(video, keys, o, [](double) { return false; }); },
                                 ErrorKind::BadArgument, {"cancelled"}));
+  // A mark far outside the picture (once a crash in OpenCV's patch cut): an error.
+  Keyframes far = keys;
+  far.keyframes.front().jointsPx(0) = 1e300;
+  EXPECT_TRUE(test::throwsError([&] { trackJoints(video, far, o); }, ErrorKind::BadData,
+                                {"frame 50 head", "far outside"}));
 }
 
 }  // namespace

@@ -99,6 +99,12 @@ void loadKeyframes(AppState& s, const std::filesystem::path& path) {
     if (f.frame >= v.frameCount())
       throw std::invalid_argument(path.string() + ": keyframe on frame " + std::to_string(f.frame) +
                                   ", the video has " + std::to_string(v.frameCount()) + " frames");
+  try {
+    const VideoInfo& info = v.frames->info();
+    checkMarksWithin(k, info.widthPx, info.heightPx, path.string());
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(e.what());
+  }
   pushUndo(v);
   k.video = v.path.filename().string();
   v.keyframes = std::move(k);
