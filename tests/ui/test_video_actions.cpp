@@ -5,8 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <functional>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
+#include "core/keypoints/openpose_writer.h"
 #include "core/synth/population.h"
 #include "core/tracking/keyframes.h"
 #include "tests/common/test_support.h"
@@ -59,6 +63,36 @@ TEST(VideoActions, AJointLetGoWhileTrackingTracksAgainWithIt) {
   EXPECT_FALSE(s.jobs.track.running());
   EXPECT_EQ(s.video->tracked->keyframes.keyframes.size(), 3u);
   EXPECT_EQ(s.video->trackError, "");
+}
+
+// Marks far outside the picture, from a keyframe file or a pose estimator's keypoints, are
+// refused with the reason and leave the keyframes as they were (once, a track from them crashed).
+TEST(VideoActions, MarksFarOutsideThePictureAreRefusedWhereverTheyComeFrom) {
+  const auto dir = test::makeTempDir("video_actions_far");
+  PopulationOptions o;
+  o.count = 1;
+  o.simulation.rateHz = 30.0;
+  const Eigen::MatrixXd frames = generatePopulation(o).front().trial.positionsMm.topRows(12);
+  const auto video = dir / "walk.avi";
+  Eigen::MatrixXd far = writeFootage(video, frames, cameraBeside(frames, 30.0, 4500.0), 30.0);
+  far.col(0).array() += 1e6;  // the head, a million pixels to the right
+  const auto keys = dir / "far.json";
+  writeKeyframes(keys, keyframesFromTrack(far, {0}, "walk.avi"));
+  writeOpenPoseBody25(dir / "far_keypoints", {OpenPosePerson{far, {}}});
+
+  AppState s;
+  actions::openVideo(s, video);
+  const auto refused = [](const std::function<void()>& action) {
+    try {
+      action();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what()).find("far outside") != std::string::npos;
+    }
+    return false;
+  };
+  EXPECT_TRUE(refused([&] { actions::loadKeyframes(s, keys); }));
+  EXPECT_TRUE(refused([&] { actions::markFromKeypoints(s, dir / "far_keypoints"); }));
+  EXPECT_TRUE(s.video->keyframes.keyframes.empty());
 }
 
 }  // namespace

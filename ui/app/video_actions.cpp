@@ -186,6 +186,8 @@ void markFromKeypoints(AppState& s, const std::filesystem::path& keypoints) {
     o.fps = v.fps();
     detected = keyframesFromTrack(readKeypointTrial(keypoints, o).jointsPx, {v.frame},
                                   keypoints.string());
+    const VideoInfo& info = v.frames->info();
+    checkMarksWithin(detected, info.widthPx, info.heightPx, keypoints.string());
   } catch (const std::exception& e) {
     throw std::invalid_argument(e.what());
   }
