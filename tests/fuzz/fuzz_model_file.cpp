@@ -1,6 +1,7 @@
-// libFuzzer harness: .ewm model bytes -> ew::parseModel (core/engine/model_file.h, the
-// in-memory half of loadModel): header lines, JSON metadata, sizes, checksums, payload.
-// Each input is parsed twice: as it is, then with line 3 rewritten to hold the right
+// libFuzzer harness: the two binary files of the project's own layout (header lines, JSON
+// metadata, sizes, checksums, payload) -> ew::parseModel (.ewm, core/engine/model_file.h, the
+// in-memory half of loadModel) and ew::parseSnippetPrior (.ewsp, core/snippet/snippet_file.h).
+// Each input goes to both readers, twice: as it is, then with line 3 rewritten to hold the right
 // FNV-1a 64 checksum of line 2, so that mutated metadata gets past the header checksum
 // and reaches the size and shape checks (a fuzzer rarely forges a 64-bit hash itself).
 // A typed ew::Error is the correct outcome; anything else is a finding (fuzz_common.h).
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "core/engine/model_file.h"
+#include "core/snippet/snippet_file.h"
 #include "tests/fuzz/fuzz_common.h"
 
 namespace {
@@ -45,8 +47,12 @@ std::string withHeaderChecksumFixed(std::string_view bytes) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string_view bytes = ew::fuzz::asText(data, size);
-  ew::fuzz::acceptTypedErrors([&] { ew::parseModel(bytes, "fuzz.ewm"); });
+  const auto readBoth = [](std::string_view input) {
+    ew::fuzz::acceptTypedErrors([&] { ew::parseModel(input, "fuzz.ewm"); });
+    ew::fuzz::acceptTypedErrors([&] { ew::parseSnippetPrior(input, "fuzz.ewsp"); });
+  };
+  readBoth(bytes);
   const std::string fixed = withHeaderChecksumFixed(bytes);
-  if (!fixed.empty()) ew::fuzz::acceptTypedErrors([&] { ew::parseModel(fixed, "fuzz.ewm"); });
+  if (!fixed.empty()) readBoth(fixed);
   return 0;
 }

@@ -37,6 +37,8 @@
 
 #include "core/common/errors.h"
 #include "core/engine/model_file.h"
+#include "core/snippet/snippet_file.h"
+#include "core/snippet/snippet_prior.h"
 #include "core/mapping/mapping_file.h"
 #include "core/engine/walker_set.h"
 #include "core/io/bvh_writer.h"
@@ -554,6 +556,19 @@ void modelSeeds(SeedWriter& out, const fs::path& tmp) {
   const fs::path file = tmp / "synthetic_three_walkers.ewm";
   ew::saveModel(ew::buildModel(walkers, options), file);
   out.write("model_file", "synthetic_three_walkers.ewm", readText(file));
+  // A snippet prior of the same layout (the harness reads every input both ways): two
+  // clusters over one-frame snippets.
+  Eigen::MatrixXd snippets(45, 40);
+  for (Eigen::Index i = 0; i < snippets.cols(); ++i)
+    for (Eigen::Index r = 0; r < snippets.rows(); ++r)
+      snippets(r, i) = 30.0 * static_cast<double>(i % 2) + static_cast<double>((r * 7 + i * 13) % 11);
+  ew::SnippetPriorOptions snippet;
+  snippet.frames = 1;
+  snippet.clusters = 2;
+  snippet.components = 2;
+  const fs::path prior = tmp / "two_clusters.ewsp";
+  ew::saveSnippetPrior(ew::fitSnippetMixture(snippets, snippet), prior);
+  out.write("model_file", "two_clusters.ewsp", readText(prior));
 }
 
 void sharedDataSeeds(SeedWriter& out, const fs::path& data) {
