@@ -98,14 +98,14 @@ VideoFraming videoFraming(const ViewCaption& caption, const VideoInfo& info, ImV
   const ImVec2 full = captionSize(size.x - 2.0f * pad, kNarrowViewPx);
   const ImVec2 title = smallCaptionPlate(caption.title, scale, size.x - 2.0f * pad);
   const ImVec2 legend = legendSize(caption.legend, scale, size.x);
-  const VideoFraming stacked{[&] {
-                               for (const auto& [top, bottom] : {std::pair{full, legend}, std::pair{title, legend}}) {
-                                 const VideoViewFrame f = framed(top, bottom);
-                                 if (f.heightPx <= largest / 0.8f) return f;
-                               }
-                               return framed(title, legendTabSize(scale));
-                             }(),
-                             size.x - 2.0f * pad};
+  const auto stackedView = [&] {
+    for (const auto& [top, bottom] : {std::pair{full, legend}, std::pair{title, legend}}) {
+      const VideoViewFrame f = framed(top, bottom);
+      if (f.heightPx <= largest / 0.8f) return f;
+    }
+    return framed(title, legendTabSize(scale));
+  };
+  const VideoFraming stacked{stackedView(), size.x - 2.0f * pad};
   const float columnWidth = kVideoCaptionColumnShare * size.x - 2.5f * pad;
   const ImVec2 wrapped = captionSize(columnWidth, 0.0f);
   if (legend.x > columnWidth || wrapped.y + legend.y + 3.0f * pad > size.y) return stacked;
