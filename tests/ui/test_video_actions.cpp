@@ -95,5 +95,35 @@ TEST(VideoActions, MarksFarOutsideThePictureAreRefusedWhereverTheyComeFrom) {
   EXPECT_TRUE(s.video->keyframes.keyframes.empty());
 }
 
+// A video cut short: the frame past the cut is said once in the banner, with the length the
+// video is now taken to have (the frame cache's error was once seen by nobody).
+TEST(VideoActions, AVideoCutShortSaysSoInTheBanner) {
+  const auto dir = test::makeTempDir("video_actions_cut");
+  PopulationOptions o;
+  o.count = 1;
+  o.simulation.rateHz = 30.0;
+  const Eigen::MatrixXd frames = generatePopulation(o).front().trial.positionsMm.topRows(60);
+  const auto whole = dir / "whole.avi";
+  writeFootage(whole, frames, cameraBeside(frames, 30.0, 4500.0), 30.0);
+  const std::string bytes = test::readTextFile(whole);
+  const auto cut = dir / "cut.avi";
+  test::writeBinaryFile(cut, bytes.substr(0, bytes.size() / 2));
+
+  AppState s;
+  actions::openVideo(s, cut);
+  const int announced = s.video->frameCount();
+  for (int k = 0; k < announced && s.video->frames->error().empty(); ++k) s.video->frames->waitFrame(k);
+  ASSERT_FALSE(s.video->frames->error().empty()) << "half the file decoded whole";
+  pollVideo(s);
+  ASSERT_TRUE(s.jobs.notice.has_value());
+  EXPECT_EQ(s.jobs.notice->title, "Part of cut.avi cannot be decoded");
+  EXPECT_NE(s.jobs.notice->detail.find("taken to end after " + std::to_string(s.video->frameCount())),
+            std::string::npos)
+      << s.jobs.notice->detail;
+  actions::dismissNotice(s);
+  pollVideo(s);
+  EXPECT_FALSE(s.jobs.notice.has_value()) << "said once";
+}
+
 }  // namespace
 }  // namespace ew::ui

@@ -116,6 +116,10 @@ TEST(VideoSource, AClipCutShortEndsWithAnErrorAtTheFirstMissingFrame) {
   EXPECT_GE(decoded, 20);
   EXPECT_LE(decoded, 40);
   EXPECT_LE(video.info().frameCount, std::max(decoded, announced));
+  // After the failed read, the frames before it still decode, sought to from anywhere.
+  for (const int k : {decoded - 1, 3, decoded / 2, 0})
+    EXPECT_EQ(barColumn(video.frame(k)), k) << "frame " << k << " after the end was met";
+  EXPECT_GE(video.info().frameCount, decoded);
 }
 
 TEST(FrameCache, FramesComeBackRightWithinTheBudget) {

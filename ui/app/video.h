@@ -58,6 +58,7 @@ struct VideoSession {
   std::shared_ptr<const TrackedVideo> tracked;  // the last finished track
   bool trackAgainWhenStopped = false;  // a joint let go while tracking: the running one stops
   std::string trackError;                       // why the last track failed ("" when none)
+  std::string decodeErrorShown;  // the frame cache's decoding error last put in the banner
   // The frame last drawn and its number: shown while the frame asked for is decoding.
   std::shared_ptr<const cv::Mat> shown;
   int shownIndex = -1;

@@ -330,7 +330,21 @@ void trackAgain(AppState& s) {
 
 }  // namespace
 
+// A frame the stream does not have (a file cut short, a damaged frame) is said once, in the
+// banner, with how long the video now is: scrubbing never shows it, it only stops short.
+void reportDecodingError(AppState& s) {
+  if (!s.video || !s.video->frames) return;
+  VideoSession& v = *s.video;
+  const std::string error = v.frames->error();
+  if (error.empty() || error == v.decodeErrorShown) return;
+  v.decodeErrorShown = error;
+  actions::reportError(s, "Part of " + v.path.filename().string() + " cannot be decoded",
+                       error + "; the video is taken to end after " + std::to_string(v.frameCount()) +
+                           (v.frameCount() == 1 ? " frame" : " frames"));
+}
+
 void pollVideo(AppState& s) {
+  reportDecodingError(s);
   auto outcome = s.jobs.track.poll();
   if (!outcome || !s.video) return;
   VideoSession& v = *s.video;
