@@ -86,15 +86,25 @@ std::vector<PendingTrial> manifestTrials(const fs::path& manifest,
   return trials;
 }
 
-std::vector<PendingTrial> folderTrials(const fs::path& folder, std::vector<std::string>& warnings) {
+std::vector<PendingTrial> folderTrials(const fs::path& folder, std::vector<std::string>& warnings,
+                                       const FolderLimits& limits) {
   std::vector<fs::path> files;
   std::error_code ec;
+  long entries = 0;
   for (fs::recursive_directory_iterator
            it(folder, fs::directory_options::skip_permission_denied, ec),
        end;
        it != end; it.increment(ec)) {
     if (ec) break;
+    if (++entries > limits.entries)
+      throw Error(ErrorKind::BadArgument, folder.string(), "",
+                  "more than " + std::to_string(limits.entries) +
+                      " files and folders under it: open the folder that holds the trials");
     if (it->is_regular_file(ec) && isTrialFile(it->path())) files.push_back(it->path());
+    if (static_cast<long>(files.size()) > limits.trialFiles)
+      throw Error(ErrorKind::BadArgument, folder.string(), "",
+                  "more than " + std::to_string(limits.trialFiles) +
+                      " trial files (.c3d, .bvh, .amc, .trc, .csv) under it: open the folder that holds the trials");
   }
   if (ec) warnings.push_back(folder.string() + ": " + ec.message());
   std::sort(files.begin(), files.end());
@@ -144,7 +154,8 @@ std::vector<PendingTrial> asfTrials(const fs::path& asf, const std::vector<fs::p
 }  // namespace
 
 std::vector<TrialFile> collectTrialFiles(const std::vector<fs::path>& paths,
-                                         std::vector<std::string>& warnings) {
+                                         std::vector<std::string>& warnings,
+                                         const FolderLimits& limits) {
   std::vector<PendingTrial> all;
   for (const auto& p : paths) {
     std::error_code ec;
@@ -154,7 +165,7 @@ std::vector<TrialFile> collectTrialFiles(const std::vector<fs::path>& paths,
                   "is a folder, not a " + p.extension().string() + " file");
     }
     if (fs::is_directory(p, ec))
-      more = folderTrials(p, warnings);
+      more = folderTrials(p, warnings, limits);
     else if (hasExtension(p, ".asf") && fs::exists(p, ec))
       more = asfTrials(p, paths, warnings);
     else if (toLower(p.extension().string()) == ".csv" && fs::exists(p, ec) && isManifest(p))

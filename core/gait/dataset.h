@@ -34,15 +34,26 @@ struct Dataset {
   std::vector<std::string> subjects() const;  // distinct, in first-seen order
 };
 
+// A folder walked for trials may hold this many entries (files and folders, at any depth) and
+// this many trial files at most: past them the user opened the wrong folder (a home or the
+// whole disk), and the walk stops with an error rather than read everything there. (CMU's
+// whole motion capture database is 2,605 trials.)
+struct FolderLimits {
+  long entries = 200000;
+  long trialFiles = 20000;
+};
+
 // The trial files the paths name (folders recursively, manifests row by row), in order,
-// without loading them. `required` is false for files found by walking a folder.
+// without loading them. `required` is false for files found by walking a folder. Throws
+// Error(BadArgument) naming a folder past the limits.
 struct TrialFile {
   std::filesystem::path path;
   TrialInfo info;
   bool required = true;
 };
 std::vector<TrialFile> collectTrialFiles(const std::vector<std::filesystem::path>& paths,
-                                         std::vector<std::string>& warnings);
+                                         std::vector<std::string>& warnings,
+                                         const FolderLimits& limits = {});
 
 // Items opened one by one (the viewer's drop): an .asf given with an .amc of its own folder
 // is not an item of its own (the .amc opens with it), so "x.asf + y.amc" dropped together

@@ -5,6 +5,7 @@
 #include "core/common/errors.h"
 #include "core/gait/dataset.h"
 #include "core/io/joint_csv.h"
+#include "tests/common/error_matchers.h"
 #include "tests/common/synthetic_gait.h"
 #include "tests/common/test_support.h"
 
@@ -65,6 +66,20 @@ TEST(Dataset, FolderIsRecursiveAndSkipsUnusableFilesWithWarnings) {
   EXPECT_EQ(d.trials[0].info.subject, "07");
   ASSERT_EQ(d.warnings.size(), 1u);
   EXPECT_NE(d.warnings[0].find("broken.c3d"), std::string::npos) << d.warnings[0];
+}
+
+// A folder with more under it than any dataset (a home, the whole disk, opened by mistake)
+// stops the walk with an error naming it, rather than reading everything there.
+TEST(Dataset, AFolderPastTheLimitsIsRefusedNotRead) {
+  const auto dir = test::makeTempDir("folder_limits");
+  for (int i = 0; i < 6; ++i) std::ofstream(dir / ("t" + std::to_string(i) + ".csv")) << "x\n";
+  for (int i = 0; i < 6; ++i) std::ofstream(dir / ("notes" + std::to_string(i) + ".txt")) << "x\n";
+  std::vector<std::string> warnings;
+  EXPECT_EQ(collectTrialFiles({dir}, warnings, {20, 6}).size(), 6u);
+  EXPECT_TRUE(test::throwsError([&] { collectTrialFiles({dir}, warnings, {20, 5}); }, ErrorKind::BadArgument,
+                                {dir.string(), "more than 5 trial files", "open the folder that holds the trials"}));
+  EXPECT_TRUE(test::throwsError([&] { collectTrialFiles({dir}, warnings, {11, 100}); }, ErrorKind::BadArgument,
+                                {"more than 11 files and folders"}));
 }
 
 TEST(Dataset, ManifestRowThatFailsIsAnError) {

@@ -92,11 +92,14 @@ TEST(Keyframes, MarksFarOutsideThePictureAreRefused) {
   };
   EXPECT_NO_THROW(checkMarksWithin(marked(-10.0, 730.0), 1280, 720, "k.json"));
   EXPECT_NO_THROW(checkMarksWithin(marked(1280.0 + 319.0, -179.0), 1280, 720, "k.json"));
-  for (const auto& [x, y] : {std::pair{1e300, 5.0}, std::pair{5.0, -1e300}, std::pair{-321.0, 5.0},
-                             std::pair{5.0, 720.0 + 181.0}})
+  // (The pair's members copied: clang 14 cannot capture a structured binding in a lambda.)
+  for (const std::pair<double, double>& at : {std::pair{1e300, 5.0}, std::pair{5.0, -1e300},
+                                              std::pair{-321.0, 5.0}, std::pair{5.0, 720.0 + 181.0}}) {
+    const double x = at.first, y = at.second;
     EXPECT_TRUE(test::throwsError([&] { checkMarksWithin(marked(x, y), 1280, 720, "k.json"); },
                                   ErrorKind::BadData, {"k.json", "frame 7 l_ankle", "outside the 1280x720 picture"}))
         << x << ", " << y;
+  }
 }
 
 TEST(Keyframes, FromATrackAtChosenFrames) {
