@@ -32,15 +32,20 @@ void settle(AppState& s) {
   }
 }
 
-TEST(VideoActions, AJointLetGoWhileTrackingTracksAgainWithIt) {
-  const auto dir = test::makeTempDir("video_actions");
+// A synthetic walker's first `rows` frames (30 fps) filmed 30° off the side into `video`; the
+// true joints in pixels.
+Eigen::MatrixXd filmWalker(const std::filesystem::path& video, Eigen::Index rows) {
   PopulationOptions o;
   o.count = 1;
   o.simulation.rateHz = 30.0;
-  const Eigen::MatrixXd frames = generatePopulation(o).front().trial.positionsMm.topRows(90);
+  const Eigen::MatrixXd frames = generatePopulation(o).front().trial.positionsMm.topRows(rows);
+  return writeFootage(video, frames, cameraBeside(frames, 30.0, 4500.0), 30.0);
+}
+
+TEST(VideoActions, AJointLetGoWhileTrackingTracksAgainWithIt) {
+  const auto dir = test::makeTempDir("video_actions");
   const auto video = dir / "walk.avi";
-  const Eigen::MatrixXd truthPx =
-      writeFootage(video, frames, cameraBeside(frames, 30.0, 4500.0), 30.0);
+  const Eigen::MatrixXd truthPx = filmWalker(video, 90);
   const auto keys = dir / "keys.json";
   writeKeyframes(keys, keyframesFromTrack(truthPx, {0, 60}, "walk.avi"));
 
@@ -69,12 +74,8 @@ TEST(VideoActions, AJointLetGoWhileTrackingTracksAgainWithIt) {
 // refused with the reason and leave the keyframes as they were (once, a track from them crashed).
 TEST(VideoActions, MarksFarOutsideThePictureAreRefusedWhereverTheyComeFrom) {
   const auto dir = test::makeTempDir("video_actions_far");
-  PopulationOptions o;
-  o.count = 1;
-  o.simulation.rateHz = 30.0;
-  const Eigen::MatrixXd frames = generatePopulation(o).front().trial.positionsMm.topRows(12);
   const auto video = dir / "walk.avi";
-  Eigen::MatrixXd far = writeFootage(video, frames, cameraBeside(frames, 30.0, 4500.0), 30.0);
+  Eigen::MatrixXd far = filmWalker(video, 12);
   far.col(0).array() += 1e6;  // the head, a million pixels to the right
   const auto keys = dir / "far.json";
   writeKeyframes(keys, keyframesFromTrack(far, {0}, "walk.avi"));
@@ -99,12 +100,8 @@ TEST(VideoActions, MarksFarOutsideThePictureAreRefusedWhereverTheyComeFrom) {
 // video is now taken to have (the frame cache's error was once seen by nobody).
 TEST(VideoActions, AVideoCutShortSaysSoInTheBanner) {
   const auto dir = test::makeTempDir("video_actions_cut");
-  PopulationOptions o;
-  o.count = 1;
-  o.simulation.rateHz = 30.0;
-  const Eigen::MatrixXd frames = generatePopulation(o).front().trial.positionsMm.topRows(60);
   const auto whole = dir / "whole.avi";
-  writeFootage(whole, frames, cameraBeside(frames, 30.0, 4500.0), 30.0);
+  filmWalker(whole, 60);
   const std::string bytes = test::readTextFile(whole);
   const auto cut = dir / "cut.avi";
   test::writeBinaryFile(cut, bytes.substr(0, bytes.size() / 2));
