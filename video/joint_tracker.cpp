@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "core/common/errors.h"
+#include "core/common/nan.h"
 #include "core/common/skeleton.h"
 #include "video/appearance_tracker.h"
 #include "video/segment_search.h"
@@ -20,7 +21,6 @@
 namespace ew {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // [SECTION] The body's tree (video/segment_search.h): the pelvis, then each child after its parent
 

@@ -9,6 +9,7 @@
 
 #include "core/camera/clip_reconstruction.h"
 #include "core/common/errors.h"
+#include "core/common/nan.h"
 #include "core/engine/fourier.h"
 #include "core/engine/metrics.h"
 #include "core/engine/projection.h"
@@ -102,7 +103,6 @@ FilmedHeldOutWalker::Fit FilmedHeldOutWalker::fitOf(const KeypointTrial& joints,
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A fit, or NaNs with the refusal kept (the first one) in `error`.
 template <typename Fitting>

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "core/common/errors.h"
+#include "core/common/nan.h"
 #include "core/common/statistics.h"
 #include "core/engine/fourier.h"
 #include "core/gait/body_size.h"
@@ -22,7 +23,6 @@ namespace {
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Elevations each view-angle start is tried at: the orthographic search cannot see the
 // camera's tilt, and a tilted view of a walker coming closer misleads a level start.
 constexpr double kStartElevationsDeg[] = {5.0, 25.0};

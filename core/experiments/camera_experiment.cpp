@@ -14,6 +14,7 @@
 #include "core/camera/detector_offsets.h"
 #include "core/camera/walk_camera.h"
 #include "core/common/errors.h"
+#include "core/common/wall_time.h"
 #include "core/engine/metrics.h"
 #include "core/engine/fourier.h"
 #include "core/engines/engine.h"
@@ -47,19 +48,19 @@ constexpr double kMinStrides = 1.5;
 constexpr double kWalkerFitHeightMm = 1900;  // head top plus margin must fit 85 % of the image
 constexpr int kMaxCameraDraws = 50;
 
-[[noreturn]] void bad(const std::string& what) { throw Error(ErrorKind::BadArgument, "", "", "camera: " + what); }
+[[noreturn]] void badCameraOption(const std::string& what) { throw Error(ErrorKind::BadArgument, "", "", "camera: " + what); }
 
 void checkOptions(const CameraExperimentOptions& o) {
-  if (o.camerasPerWalker < 1) bad("at least one camera per walker");
+  if (o.camerasPerWalker < 1) badCameraOption("at least one camera per walker");
   for (double n : o.noisePx)
-    if (!(std::isfinite(n) && n >= 0)) bad("noise levels must be finite and >= 0");
-  if (o.noisePx.empty()) bad("no noise level");
+    if (!(std::isfinite(n) && n >= 0)) badCameraOption("noise levels must be finite and >= 0");
+  if (o.noisePx.empty()) badCameraOption("no noise level");
   if (!(o.dropShare >= 0 && o.dropShare <= 1) || !(o.bystanderShare >= 0 && o.bystanderShare <= 1))
-    bad("shares must be within [0, 1]");
-  if (!(std::isfinite(o.sigma2Mm2) && o.sigma2Mm2 >= 0)) bad("sigma2 must be finite and >= 0");
-  if (!(o.fps >= 1 && o.fps <= 240)) bad("the frame rate must be 1-240 fps");
+    badCameraOption("shares must be within [0, 1]");
+  if (!(std::isfinite(o.sigma2Mm2) && o.sigma2Mm2 >= 0)) badCameraOption("sigma2 must be finite and >= 0");
+  if (!(o.fps >= 1 && o.fps <= 240)) badCameraOption("the frame rate must be 1-240 fps");
   if (o.detectorHipOffsetMm && !(std::abs(*o.detectorHipOffsetMm) <= kMaxDetectorOffsetMm))
-    bad("the detector's hip offset must be within ±200 mm");
+    badCameraOption("the detector's hip offset must be within ±200 mm");
 }
 
 // Where the simulated detector puts its points relative to the joint centres.
@@ -138,10 +139,6 @@ MatrixXd bystander(const MatrixXd& px, std::mt19937& rng) {
     moved[2 * j + 1] = v0 + scale * (pose[2 * j + 1] - v0);
   }
   return moved.replicate(px.rows(), 1);
-}
-
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 // Where an engine's gait rows go when options.gait asks for them: beside the walker's own
@@ -396,7 +393,7 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
   std::vector<Job> jobs;
   for (std::size_t f = 0; f < folds.size(); ++f)
     for (int w : folds[f].testWalkers) {
-      if (w < 0 || w >= static_cast<int>(walkers.size())) bad("a fold's test walker is not among the walkers");
+      if (w < 0 || w >= static_cast<int>(walkers.size())) badCameraOption("a fold's test walker is not among the walkers");
       for (int c = 0; c < o.camerasPerWalker; ++c) jobs.push_back({static_cast<int>(f), w, c});
     }
   const std::size_t levels = o.noisePx.size();

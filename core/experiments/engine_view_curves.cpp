@@ -16,16 +16,16 @@ namespace {
 
 constexpr double kRateHz = 30.0;
 
-[[noreturn]] void bad(const std::string& what) {
+[[noreturn]] void badCurvesOption(const std::string& what) {
   throw Error(ErrorKind::BadArgument, "", "", "engine curves: " + what);
 }
 
 void checkOptions(const std::vector<ExperimentWalker>& walkers, const EngineViewOptions& o) {
-  if (o.anglesDeg.empty()) bad("no view angle");
+  if (o.anglesDeg.empty()) badCurvesOption("no view angle");
   for (double a : o.anglesDeg)
-    if (!std::isfinite(a)) bad("view angles must be finite");
+    if (!std::isfinite(a)) badCurvesOption("view angles must be finite");
   if (hasEngine(o.engines, EngineKind::Eigenwalker))
-    bad("the eigenwalker's curves are the known-view experiment's");
+    badCurvesOption("the eigenwalker's curves are the known-view experiment's");
   if (walkerSubjects(walkers).size() < 3) throwBadData("engine curves", "", "leave-one-subject-out needs 3 subjects");
 }
 

@@ -12,20 +12,20 @@
 namespace ew {
 namespace {
 
-[[noreturn]] void bad(const std::string& what) { throw Error(ErrorKind::BadArgument, "", "", "engines: " + what); }
+[[noreturn]] void badEnginesOption(const std::string& what) { throw Error(ErrorKind::BadArgument, "", "", "engines: " + what); }
 
 void checkOptions(const EnginesExperimentOptions& o) {
-  if (o.engines.empty()) bad("no engine to compare");
-  if (!o.views && !o.cameras) bad("neither views nor cameras: nothing to compare on");
-  if (o.views && o.anglesDeg.empty()) bad("no view angle");
+  if (o.engines.empty()) badEnginesOption("no engine to compare");
+  if (!o.views && !o.cameras) badEnginesOption("neither views nor cameras: nothing to compare on");
+  if (o.views && o.anglesDeg.empty()) badEnginesOption("no view angle");
   for (double a : o.anglesDeg)
-    if (!std::isfinite(a)) bad("view angles must be finite");
+    if (!std::isfinite(a)) badEnginesOption("view angles must be finite");
   for (const auto* levels : {&o.noiseMm, &o.noisePx}) {
-    if (levels->empty()) bad("no noise level");
+    if (levels->empty()) badEnginesOption("no noise level");
     for (double n : *levels)
-      if (!(std::isfinite(n) && n >= 0.0)) bad("noise levels must be finite and >= 0");
+      if (!(std::isfinite(n) && n >= 0.0)) badEnginesOption("noise levels must be finite and >= 0");
   }
-  if (o.cameras && o.camerasPerWalker < 1) bad("at least one camera per walker");
+  if (o.cameras && o.camerasPerWalker < 1) badEnginesOption("at least one camera per walker");
 }
 
 // Experiment "snippet"'s engine labels → (engine, variant, the gait table's label).

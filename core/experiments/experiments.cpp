@@ -11,6 +11,7 @@
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
+#include "core/common/wall_time.h"
 #include "core/engine/metrics.h"
 #include "core/engine/projection.h"
 
@@ -451,10 +452,6 @@ std::vector<ViewErrorRow> missingJointErrors(const std::vector<ExperimentWalker>
 // [SECTION] The whole evaluation
 
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The eigenwalker folds: every experiment but the variance table and the snippet ones
 // (which build their own folds from the dataset's trials).

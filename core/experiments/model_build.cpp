@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/common/errors.h"
+#include "core/common/wall_time.h"
 #include "core/engine/walker_set.h"
 #include "core/experiments/experiments.h"
 #include "core/gait/dataset.h"
@@ -108,8 +109,7 @@ ModelBuildResult buildModelFromData(const std::vector<fs::path>& data,
     const std::vector<ExperimentWalker> sweepWalkers = experimentWalkers(walkers, dataset);
     result.model.sigma2Optimum =
         measureSigma2Optimum(sweepWalkers, options.model, options.sigma2Plan, options.threads);
-    result.sweepSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.sweepSeconds = secondsSince(start);
   }
   for (Walker& w : walkers) {
     for (std::string& f : w.files) f = relativeToData(f, data);

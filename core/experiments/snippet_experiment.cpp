@@ -8,6 +8,7 @@
 #include <random>
 
 #include "core/common/errors.h"
+#include "core/common/wall_time.h"
 #include "core/engine/fourier.h"
 #include "core/engine/projection.h"
 #include "core/engine/reconstruction.h"
@@ -95,7 +96,7 @@ EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const st
   const bool phase = scoring.phase && noiseMm == 0.0;
   EngineRow row{fold.subject, engine, clipName, alpha, noiseMm, static_cast<int>(truth.rows()), 0.0, 0.0, "", 0.0};
   const auto t0 = std::chrono::steady_clock::now();
-  const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  const auto elapsed = [&] { return secondsSince(t0); };
   try {
     const Eigen::MatrixXd frames = reconstruct();
     row.seconds = elapsed();
@@ -228,7 +229,7 @@ SnippetExperimentResults snippetComparison(const Dataset& dataset, const std::ve
     if (hasEngine(o.engines, EngineKind::Snippet)) {
       const auto t0 = std::chrono::steady_clock::now();
       const SnippetPrior prior = trainSnippetPrior(snippetTrainingTrials(dataset, fold.subject), o.prior);
-      trainS[static_cast<size_t>(i)] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      trainS[static_cast<size_t>(i)] = secondsSince(t0);
       snippets[static_cast<size_t>(i)] = prior.trainingSnippets;
       fold.snippet = {std::make_shared<const PreparedSnippetPrior>(prepareSnippetPrior(prior)), o.sequence};
     }

@@ -12,9 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "core/common/skeleton.h"
 #include "core/common/trial.h"
 
 namespace ew {
+
+inline Joint ankleOf(Side side) { return side == Side::Left ? Joint::LAnkle : Joint::RAnkle; }
 
 struct FootEvents {
   std::vector<double> strikesS;  // seconds from row 0, ascending

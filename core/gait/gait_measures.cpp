@@ -9,11 +9,11 @@
 #include "core/common/skeleton.h"
 #include "core/common/statistics.h"
 #include "core/gait/gait_cycles.h"
+#include "core/gait/gait_events.h"
 
 namespace ew {
 namespace {
 
-Joint ankleOf(Side side) { return side == Side::Right ? Joint::RAnkle : Joint::LAnkle; }
 
 // A column of the frames at a time in seconds, linear between rows (clamped to the trial).
 double sampleAt(const Eigen::Ref<const Eigen::MatrixXd>& m, int column, double timeS, double rateHz) {

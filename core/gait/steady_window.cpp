@@ -6,17 +6,11 @@
 #include <vector>
 
 #include "core/common/skeleton.h"
+#include "core/common/statistics.h"
 #include "core/gait/gaps.h"
 
 namespace ew {
 namespace {
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  auto mid = v.begin() + static_cast<long>(v.size() / 2);
-  std::nth_element(v.begin(), mid, v.end());
-  return *mid;
-}
 
 double wrapPi(double a) { return std::remainder(a, 2.0 * M_PI); }
 

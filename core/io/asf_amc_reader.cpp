@@ -14,6 +14,7 @@
 #include "core/common/errors.h"
 #include "core/io/file_bytes.h"
 #include "core/io/reader_limits.h"
+#include "core/io/rotation_arrays.h"
 #include "core/io/text_table.h"
 
 namespace ew {
@@ -24,39 +25,6 @@ constexpr size_t kMaxBones = 1024;        // CMU: 30; anything far beyond is cor
 constexpr double kDefaultRateHz = 120.0;  // CMU captures at 120 Hz; AMC stores no rate
 
 // [SECTION] Words and numbers
-
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-std::vector<std::string_view> splitWords(std::string_view line) {
-  std::vector<std::string_view> words;
-  words.reserve(8);
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && isBlank(line[i])) ++i;
-    const size_t start = i;
-    while (i < line.size() && !isBlank(line[i])) ++i;
-    if (i > start) words.push_back(line.substr(start, i - start));
-  }
-  return words;
-}
-
-// A word for an error message: at most 40 characters, control bytes shown as '?'.
-std::string shown(std::string_view s) {
-  std::string out(s.substr(0, 40));
-  for (char& c : out) {
-    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) == 127) c = '?';
-  }
-  if (s.size() > 40) out += "...";
-  return "'" + out + "'";
-}
-
-// Finite numbers only: "nan", "inf", overflow and trailing junk are all errors.
-bool parseFinite(std::string_view s, double& out) {
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  if (s.empty()) return false;
-  auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-  return ec == std::errc() && ptr == s.data() + s.size() && std::isfinite(out);
-}
 
 bool parseInteger(std::string_view s, long long& out) {
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
@@ -98,7 +66,7 @@ class LineReader {
     double v = 0.0;
     if (k >= words.w.size()) fail(words.line, std::string("missing ") + what);
     if (!parseFinite(words.w[k], v)) {
-      fail(words.line, std::string("bad ") + what + ": " + shown(words.w[k]));
+      fail(words.line, std::string("bad ") + what + ": " + shownWord(words.w[k]));
     }
     return v;
   }
@@ -127,38 +95,6 @@ std::optional<Dof> dofFromName(std::string_view name) {
 bool isRotation(Dof d) { return d == Dof::RX || d == Dof::RY || d == Dof::RZ; }
 
 // [SECTION] Rotations
-// Plain row-major arrays, not Eigen: forward kinematics runs frames x bones times and
-// the malformed-input tests parse skeletons thousands of times; Eigen's fixed-size
-// products are tens of times slower in the Debug/ASan builds tests run in.
-
-using Mat3 = std::array<double, 9>;  // row-major
-
-constexpr Mat3 kIdentity3{1, 0, 0, 0, 1, 0, 0, 0, 1};
-
-Mat3 transposed(const Mat3& m) {
-  return {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]};
-}
-
-Mat3 multiply(const Mat3& a, const Mat3& b) {
-  Mat3 out;
-  for (size_t r = 0; r < 3; ++r) {
-    for (size_t c = 0; c < 3; ++c) {
-      out[3 * r + c] = a[3 * r] * b[c] + a[3 * r + 1] * b[3 + c] + a[3 * r + 2] * b[6 + c];
-    }
-  }
-  return out;
-}
-
-// m <- m · R_axis(radians): only the two columns orthogonal to the axis change.
-void postRotate(Mat3& m, int axis, double radians) {
-  const double c = std::cos(radians), s = std::sin(radians);
-  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-  for (int row = 0; row < 3; ++row) {
-    const double a = m[static_cast<size_t>(3 * row + i)], b = m[static_cast<size_t>(3 * row + j)];
-    m[static_cast<size_t>(3 * row + i)] = c * a + s * b;
-    m[static_cast<size_t>(3 * row + j)] = c * b - s * a;
-  }
-}
 
 // Rotations applied in the listed order (first listed first): R = R(last)…R(first),
 // so they are post-multiplied last first. `axes` holds 0,1,2 for X,Y,Z.
@@ -196,12 +132,12 @@ std::vector<int> axisOrder(std::string_view s, const LineReader& in, int line) {
   std::vector<int> axes;
   const auto u = toLower(s);
   for (char c : u) {
-    if (c < 'x' || c > 'z') in.fail(line, "bad rotation order " + shown(s));
+    if (c < 'x' || c > 'z') in.fail(line, "bad rotation order " + shownWord(s));
     axes.push_back(c - 'x');
   }
   auto sorted = axes;
   std::sort(sorted.begin(), sorted.end());
-  if (sorted != std::vector<int>{0, 1, 2}) in.fail(line, "bad rotation order " + shown(s));
+  if (sorted != std::vector<int>{0, 1, 2}) in.fail(line, "bad rotation order " + shownWord(s));
   return axes;
 }
 
@@ -227,7 +163,8 @@ class AsfParser {
       else if (key == ":bonedata") readBones(), sawBones = true;
       else if (key == ":hierarchy") readHierarchy(), sawHierarchy = true;
       else if (key.front() == ':') skipSection();  // :version, :name, :documentation, :skin
-      else in_.fail(words.line, "unexpected " + shown(words.w[0]) + " outside a section");
+      else
+        in_.fail(words.line, "unexpected " + shownWord(words.w[0]) + " outside a section");
     }
     if (!sawBones) in_.fail(in_.lastLine(), "no :bonedata section: not an ASF skeleton");
     if (!sawHierarchy) in_.fail(in_.lastLine(), "no :hierarchy section");
@@ -271,7 +208,7 @@ class AsfParser {
       } else if (key == "mass") {
         in_.number(words, 1, "mass unit");
       } else {
-        in_.fail(words.line, "unknown unit " + shown(words.w[0]));
+        in_.fail(words.line, "unknown unit " + shownWord(words.w[0]));
       }
     }
   }
@@ -287,7 +224,7 @@ class AsfParser {
         for (size_t k = 1; k < words.w.size(); ++k) {
           auto dof = dofFromName(words.w[k]);
           if (!dof || std::count(sk_.rootOrder.begin(), sk_.rootOrder.end(), *dof) > 0) {
-            in_.fail(words.line, "bad root order entry " + shown(words.w[k]));
+            in_.fail(words.line, "bad root order entry " + shownWord(words.w[k]));
           }
           sk_.rootOrder.push_back(*dof);
         }
@@ -299,7 +236,7 @@ class AsfParser {
         for (int k = 0; k < 3; ++k) v[k] = in_.number(words, static_cast<size_t>(k + 1), key.c_str());
         (key == "position" ? sk_.rootPosition : orientation) = v;
       } else {
-        in_.fail(words.line, "unknown root field " + shown(words.w[0]));
+        in_.fail(words.line, "unknown root field " + shownWord(words.w[0]));
       }
     }
     sk_.rootAxis = axisMatrix(orientation, order, sk_.angleToRad);
@@ -309,7 +246,7 @@ class AsfParser {
     Words words;
     while (nextInSection(words)) {
       if (toLower(words.w[0]) != "begin") {
-        in_.fail(words.line, "expected 'begin' of a bone, found " + shown(words.w[0]));
+        in_.fail(words.line, "expected 'begin' of a bone, found " + shownWord(words.w[0]));
       }
       if (sk_.bones.size() >= kMaxBones) {
         in_.fail(words.line, "more than " + std::to_string(kMaxBones) + " bones");
@@ -350,7 +287,7 @@ class AsfParser {
         readLimits(words, bone.dofs.size());
         hasLimits = true;
       } else {
-        in_.fail(words.line, "unknown bone field " + shown(words.w[0]));
+        in_.fail(words.line, "unknown bone field " + shownWord(words.w[0]));
       }
     }
     finishBone(std::move(bone), hasDirection, hasLength, hasLimits);
@@ -359,16 +296,17 @@ class AsfParser {
   void finishBone(AsfBone bone, bool hasDirection, bool hasLength, bool hasLimits) {
     if (bone.name.empty()) in_.fail(bone.line, "bone without a name");
     if (!hasDirection || !hasLength) {
-      in_.fail(bone.line, "bone " + shown(bone.name) + " needs a direction and a length");
+      in_.fail(bone.line, "bone " + shownWord(bone.name) + " needs a direction and a length");
     }
     if (!bone.dofs.empty() && !hasLimits) {
-      in_.fail(bone.line, "bone " + shown(bone.name) + " has dofs but no limits");
+      in_.fail(bone.line, "bone " + shownWord(bone.name) + " has dofs but no limits");
     }
     const double norm = bone.direction.norm();
     if (norm > 0.0) bone.direction /= norm;
-    else if (bone.length > 0.0) in_.fail(bone.line, "bone " + shown(bone.name) + " has a zero direction");
+    else if (bone.length > 0.0)
+      in_.fail(bone.line, "bone " + shownWord(bone.name) + " has a zero direction");
     if (toLower(bone.name) == "root" || sk_.boneIndex.count(bone.name) != 0) {
-      in_.fail(bone.line, "bone name " + shown(bone.name) + " used twice");
+      in_.fail(bone.line, "bone name " + shownWord(bone.name) + " used twice");
     }
     bone.firstValue = sk_.valueCount;
     sk_.valueCount += static_cast<int>(bone.dofs.size());
@@ -382,14 +320,14 @@ class AsfParser {
       if (!dof) {
         // Acclaim also allows a length dof 'l'; CMU never uses it.
         throw Error(ErrorKind::Unsupported, in_.file(), linePosition(words.line),
-                    "dof " + shown(words.w[k]) + " is not supported (rx ry rz only)");
+                    "dof " + shownWord(words.w[k]) + " is not supported (rx ry rz only)");
       }
       if (!isRotation(*dof)) {
         throw Error(ErrorKind::Unsupported, in_.file(), linePosition(words.line),
-                    "translation dof " + shown(words.w[k]) + " on a bone is not supported");
+                    "translation dof " + shownWord(words.w[k]) + " on a bone is not supported");
       }
       if (std::count(bone.dofs.begin(), bone.dofs.end(), *dof) > 0) {
-        in_.fail(words.line, "dof " + shown(words.w[k]) + " repeated");
+        in_.fail(words.line, "dof " + shownWord(words.w[k]) + " repeated");
       }
       bone.dofs.push_back(*dof);
     }
@@ -411,7 +349,7 @@ class AsfParser {
         double x = 0.0;
         const auto lower = toLower(v);
         if (lower != "inf" && lower != "-inf" && !parseFinite(v, x)) {
-          in_.fail(words.line, "bad limit " + shown(v));
+          in_.fail(words.line, "bad limit " + shownWord(v));
         }
       }
     }
@@ -430,7 +368,7 @@ class AsfParser {
       for (size_t k = 1; k < words.w.size(); ++k) {
         AsfBone& child = sk_.bones[static_cast<size_t>(boneAt(words, k))];
         if (child.parent != -1 || hasRootParent(child.name)) {
-          in_.fail(words.line, "bone " + shown(child.name) + " has two parents");
+          in_.fail(words.line, "bone " + shownWord(child.name) + " has two parents");
         }
         child.parent = parent;
         if (fromRoot) rootChildren_.push_back(child.name);
@@ -445,7 +383,7 @@ class AsfParser {
   int boneAt(const Words& words, size_t k) const {
     auto it = sk_.boneIndex.find(words.w[k]);
     if (it == sk_.boneIndex.end()) {
-      in_.fail(words.line, "hierarchy names unknown bone " + shown(words.w[k]));
+      in_.fail(words.line, "hierarchy names unknown bone " + shownWord(words.w[k]));
     }
     return it->second;
   }
@@ -457,7 +395,7 @@ class AsfParser {
     for (size_t b = 0; b < sk_.bones.size(); ++b) {
       const int parent = sk_.bones[b].parent;
       if (parent == -1 && !hasRootParent(sk_.bones[b].name)) {
-        in_.fail(sk_.bones[b].line, "bone " + shown(sk_.bones[b].name) +
+        in_.fail(sk_.bones[b].line, "bone " + shownWord(sk_.bones[b].name) +
                                         " is not connected to the root in :hierarchy");
       }
       children[static_cast<size_t>(parent + 1)].push_back(static_cast<int>(b));
@@ -519,7 +457,7 @@ class AmcParser {
         continue;
       }
       if (motion_.frames == 0) {
-        in_.fail(words.line, "expected a frame number, found " + shown(words.w[0]));
+        in_.fail(words.line, "expected a frame number, found " + shownWord(words.w[0]));
       }
       boneValues(words);
     }
@@ -529,11 +467,13 @@ class AmcParser {
 
  private:
   void keyword(const Words& words, std::vector<std::string>& warnings) {
-    if (motion_.frames > 0) in_.fail(words.line, "keyword " + shown(words.w[0]) + " after the frames");
+    if (motion_.frames > 0)
+      in_.fail(words.line, "keyword " + shownWord(words.w[0]) + " after the frames");
     const auto key = toLower(words.w[0]);
     if (key == ":degrees") angleToRad_ = std::numbers::pi / 180.0;
     else if (key == ":radians") angleToRad_ = 1.0;
-    else if (key != ":fully-specified") warnings.push_back("ignored AMC keyword " + shown(words.w[0]));
+    else if (key != ":fully-specified")
+      warnings.push_back("ignored AMC keyword " + shownWord(words.w[0]));
   }
 
   void startFrame(const Words& words, long long number) {
@@ -554,7 +494,8 @@ class AmcParser {
     if (!isRoot) {
       auto it = sk_.boneIndex.find(words.w[0]);
       if (it == sk_.boneIndex.end()) {
-        in_.fail(words.line, "unknown bone " + shown(words.w[0]) + " (not in the ASF skeleton)");
+        in_.fail(words.line,
+                 "unknown bone " + shownWord(words.w[0]) + " (not in the ASF skeleton)");
       }
       const AsfBone& bone = sk_.bones[static_cast<size_t>(it->second)];
       slot = it->second + 1;
@@ -562,10 +503,11 @@ class AmcParser {
       count = static_cast<int>(bone.dofs.size());
     }
     if (static_cast<int>(words.w.size()) - 1 != count) {
-      in_.fail(words.line, shown(words.w[0]) + " has " + std::to_string(words.w.size() - 1) +
+      in_.fail(words.line, shownWord(words.w[0]) + " has " + std::to_string(words.w.size() - 1) +
                                " values, the skeleton gives it " + std::to_string(count) + " dofs");
     }
-    if (seen_[static_cast<size_t>(slot)]) in_.fail(words.line, shown(words.w[0]) + " twice in one frame");
+    if (seen_[static_cast<size_t>(slot)])
+      in_.fail(words.line, shownWord(words.w[0]) + " twice in one frame");
     seen_[static_cast<size_t>(slot)] = true;
     double* row = &motion_.values[motion_.values.size() - static_cast<size_t>(rootCount_ + sk_.valueCount)];
     for (int k = 0; k < count; ++k) {

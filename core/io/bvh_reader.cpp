@@ -14,6 +14,7 @@
 #include "core/common/errors.h"
 #include "core/io/file_bytes.h"
 #include "core/io/reader_limits.h"
+#include "core/io/rotation_arrays.h"
 #include "core/io/text_table.h"
 
 namespace ew {
@@ -30,31 +31,6 @@ struct Word {
   std::string_view text;
   int line = 0;
 };
-
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
-std::vector<std::string_view> splitWords(std::string_view line) {
-  std::vector<std::string_view> words;
-  words.reserve(8);
-  size_t i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && isBlank(line[i])) ++i;
-    const size_t start = i;
-    while (i < line.size() && !isBlank(line[i])) ++i;
-    if (i > start) words.push_back(line.substr(start, i - start));
-  }
-  return words;
-}
-
-// A word for an error message: at most 40 characters, control bytes shown as '?'.
-std::string shown(std::string_view s) {
-  std::string out(s.substr(0, 40));
-  for (char& c : out) {
-    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) == 127) c = '?';
-  }
-  if (s.size() > 40) out += "...";
-  return "'" + out + "'";
-}
 
 bool sameWord(std::string_view a, std::string_view b) { return toLower(a) == toLower(b); }
 
@@ -111,14 +87,6 @@ class WordCursor {
   size_t lineIndex_ = 0;
 };
 
-// Finite numbers only: "nan", "inf", overflow and trailing junk are all errors.
-bool parseFinite(std::string_view s, double& out) {
-  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
-  if (s.empty()) return false;
-  auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
-  return ec == std::errc() && ptr == s.data() + s.size() && std::isfinite(out);
-}
-
 bool parseCount(std::string_view s, long long& out) {
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
@@ -166,11 +134,12 @@ class HierarchyParser {
     Word first = in_.next("HIERARCHY");
     if (!sameWord(first.text, "HIERARCHY")) {
       throwMalformed(file_, linePosition(first.line),
-                     "not a BVH file: expected HIERARCHY, found " + shown(first.text));
+                     "not a BVH file: expected HIERARCHY, found " + shownWord(first.text));
     }
     Word root = in_.next("ROOT");
     if (!sameWord(root.text, "ROOT")) {
-      throwMalformed(file_, linePosition(root.line), "expected ROOT, found " + shown(root.text));
+      throwMalformed(file_, linePosition(root.line),
+                     "expected ROOT, found " + shownWord(root.text));
     }
     parseJoint(root, -1, 0);
     if (!in_.atEnd() && sameWord(in_.peek().text, "ROOT")) {
@@ -190,7 +159,7 @@ class HierarchyParser {
     if (!braceOpened_) expect("{", "'{' after the joint name");
     bool hasOffset = false, hasChannels = false;
     while (true) {
-      Word w = in_.next("'}' closing joint " + shown(skeleton_.joints[self].name));
+      Word w = in_.next("'}' closing joint " + shownWord(skeleton_.joints[self].name));
       if (w.text == "}") break;
       if (sameWord(w.text, "OFFSET")) {
         if (hasOffset) throwMalformed(file_, linePosition(w.line), "a second OFFSET");
@@ -209,14 +178,14 @@ class HierarchyParser {
                     "a second ROOT: BVH files with several skeletons are not supported");
       } else {
         throwMalformed(file_, linePosition(w.line),
-                       "unexpected " + shown(w.text) + " in joint " +
-                           shown(skeleton_.joints[self].name) +
+                       "unexpected " + shownWord(w.text) + " in joint " +
+                           shownWord(skeleton_.joints[self].name) +
                            " (expected OFFSET, CHANNELS, JOINT, End Site or '}')");
       }
     }
     if (!hasOffset) {
       throwMalformed(file_, linePosition(skeleton_.joints[self].line),
-                     "joint " + shown(skeleton_.joints[self].name) + " has no OFFSET");
+                     "joint " + shownWord(skeleton_.joints[self].name) + " has no OFFSET");
     }
   }
 
@@ -224,7 +193,7 @@ class HierarchyParser {
     Word site = in_.next("'Site' after 'End'");
     if (!sameWord(site.text, "Site")) {
       throwMalformed(file_, linePosition(site.line),
-                     "expected 'Site' after 'End', found " + shown(site.text));
+                     "expected 'Site' after 'End', found " + shownWord(site.text));
     }
     // Anything else on the line is an (ignored) name, or the opening brace.
     auto rest = in_.restOfLine();
@@ -234,7 +203,7 @@ class HierarchyParser {
     Word w = in_.next("OFFSET in End Site");
     if (!sameWord(w.text, "OFFSET")) {
       throwMalformed(file_, linePosition(w.line),
-                     "expected OFFSET in End Site, found " + shown(w.text));
+                     "expected OFFSET in End Site, found " + shownWord(w.text));
     }
     skeleton_.joints[self].offset = readVector();
     expect("}", "'}' closing End Site");
@@ -275,7 +244,7 @@ class HierarchyParser {
     for (int k = 0; k < 3; ++k) {
       Word w = in_.next("an OFFSET coordinate");
       if (!parseFinite(w.text, v[k])) {
-        throwMalformed(file_, linePosition(w.line), "bad OFFSET coordinate " + shown(w.text));
+        throwMalformed(file_, linePosition(w.line), "bad OFFSET coordinate " + shownWord(w.text));
       }
     }
     return v;
@@ -286,7 +255,7 @@ class HierarchyParser {
     long long count = 0;
     if (!parseCount(countWord.text, count) || count > 6) {
       throwMalformed(file_, linePosition(countWord.line),
-                     "CHANNELS count " + shown(countWord.text) + " is not 0-6");
+                     "CHANNELS count " + shownWord(countWord.text) + " is not 0-6");
     }
     auto& joint = skeleton_.joints[self];
     joint.firstChannel = skeleton_.channelCount;
@@ -294,11 +263,11 @@ class HierarchyParser {
       Word w = in_.next("a channel name");
       auto channel = channelFromName(w.text);
       if (!channel) {
-        throwMalformed(file_, linePosition(w.line), "unknown channel " + shown(w.text));
+        throwMalformed(file_, linePosition(w.line), "unknown channel " + shownWord(w.text));
       }
       if (std::find(joint.channels.begin(), joint.channels.end(), *channel) !=
           joint.channels.end()) {
-        throwMalformed(file_, linePosition(w.line), "channel " + shown(w.text) + " repeated");
+        throwMalformed(file_, linePosition(w.line), "channel " + shownWord(w.text) + " repeated");
       }
       joint.channels.push_back(*channel);
     }
@@ -309,7 +278,7 @@ class HierarchyParser {
     Word w = in_.next(what);
     if (w.text != token) {
       throwMalformed(file_, linePosition(w.line),
-                     "expected " + std::string(what) + ", found " + shown(w.text));
+                     "expected " + std::string(what) + ", found " + shownWord(w.text));
     }
   }
 
@@ -354,7 +323,7 @@ std::string_view headerValue(const std::vector<TextLine>& lines, size_t& i,
   std::string_view value;
   if (!splitHeader(lines[i].text, key, value) || key != toLower(wantKey)) {
     throwMalformed(file, linePosition(lines[i].number),
-                   "expected '" + wantKey + ": <value>', found " + shown(trim(lines[i].text)));
+                   "expected '" + wantKey + ": <value>', found " + shownWord(trim(lines[i].text)));
   }
   return value;
 }
@@ -366,13 +335,13 @@ Motion readMotion(const std::vector<TextLine>& lines, size_t i, int channels,
   const int framesLine = lines[i].number;
   if (!parseCount(framesText, m.frames) || m.frames == 0) {
     throwMalformed(file, linePosition(framesLine),
-                   "Frames: " + shown(framesText) + " is not a positive whole number");
+                   "Frames: " + shownWord(framesText) + " is not a positive whole number");
   }
   ++i;
   std::string_view timeText = headerValue(lines, i, "Frame Time", file);
   if (!parseFinite(timeText, m.frameTimeS) || m.frameTimeS <= 0.0) {
     throwMalformed(file, linePosition(lines[i].number),
-                   "Frame Time: " + shown(timeText) + " is not a positive number of seconds");
+                   "Frame Time: " + shownWord(timeText) + " is not a positive number of seconds");
   }
   ++i;
   // Every value needs at least one digit and one separator: bound the count by the text
@@ -405,7 +374,7 @@ Motion readMotion(const std::vector<TextLine>& lines, size_t i, int channels,
     for (size_t k = 0; k < words.size(); ++k) {
       if (!parseFinite(words[k], out[k])) {
         throwMalformed(file, linePosition(lines[i].number, static_cast<int>(k + 1)),
-                       "not a finite number: " + shown(words[k]));
+                       "not a finite number: " + shownWord(words[k]));
       }
     }
     ++row;
@@ -424,24 +393,6 @@ Motion readMotion(const std::vector<TextLine>& lines, size_t i, int channels,
 }
 
 // [SECTION] Forward kinematics
-// Plain arrays, not Eigen, in this loop: it runs frames x joints times, and Eigen's
-// fixed-size products are tens of times slower in the Debug/ASan builds tests run in.
-
-using Mat3 = std::array<double, 9>;  // row-major
-constexpr Mat3 kIdentity3{1, 0, 0, 0, 1, 0, 0, 0, 1};
-
-// m <- m · R_axis(degrees): only the two columns orthogonal to the axis change.
-void postRotate(Mat3& m, int axis, double degrees) {
-  const double rad = degrees * std::numbers::pi / 180.0;
-  const double c = std::cos(rad), s = std::sin(rad);
-  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
-  for (int row = 0; row < 3; ++row) {
-    const double a = m[static_cast<size_t>(3 * row + i)], b = m[static_cast<size_t>(3 * row + j)];
-    m[static_cast<size_t>(3 * row + i)] = c * a + s * b;
-    m[static_cast<size_t>(3 * row + j)] = c * b - s * a;
-  }
-}
-
 int rotationAxis(Channel c) { return c == Channel::XRot ? 0 : c == Channel::YRot ? 1 : 2; }
 
 // Global positions of every point for one motion row (nullptr: the rest pose, offsets
@@ -475,7 +426,9 @@ void forwardKinematics(const BvhSkeleton& sk, const double* row, std::vector<Mat
     if (row == nullptr) continue;
     for (size_t k = 0; k < joint.channels.size(); ++k) {
       const Channel c = joint.channels[k];
-      if (isRotation(c)) postRotate(r, rotationAxis(c), row[joint.firstChannel + static_cast<int>(k)]);
+      if (isRotation(c))
+        postRotate(r, rotationAxis(c),
+                   row[joint.firstChannel + static_cast<int>(k)] * std::numbers::pi / 180.0);
     }
   }
 }
@@ -556,7 +509,7 @@ RawTrial parseBvh(std::string_view text, const std::string& name, const LoadOpti
   Word motionWord = cursor.next("MOTION");
   if (!sameWord(motionWord.text, "MOTION")) {
     throwMalformed(name, linePosition(motionWord.line),
-                   "expected MOTION after the hierarchy, found " + shown(motionWord.text));
+                   "expected MOTION after the hierarchy, found " + shownWord(motionWord.text));
   }
   if (!cursor.restOfLine().empty()) {
     throwMalformed(name, linePosition(motionWord.line), "text after MOTION on its line");

@@ -22,6 +22,17 @@ std::vector<std::string_view> splitFields(std::string_view line, char delimiter)
 // Splits on runs of tabs/spaces (TRC headers); empty fields are kept only for tabs.
 std::vector<std::string_view> splitTabs(std::string_view line);
 
+// Splits on runs of spaces, tabs and other blanks except line breaks (BVH, ASF/AMC).
+std::vector<std::string_view> splitWords(std::string_view line);
+
+// A word as an error message shows it: quoted, at most 40 characters, control bytes as '?'
+// (a hostile file cannot put terminal escapes into the message).
+std::string shownWord(std::string_view s);
+
+// Finite numbers only, an optional leading '+': "nan", "inf", overflow and trailing junk are
+// all refused.
+bool parseFinite(std::string_view s, double& out);
+
 std::string_view trim(std::string_view s);
 std::string toLower(std::string_view s);
 

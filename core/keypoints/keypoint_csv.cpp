@@ -11,6 +11,7 @@
 #include <map>
 
 #include "core/common/errors.h"
+#include "core/common/nan.h"
 #include "core/io/file_bytes.h"
 #include "core/io/reader_limits.h"
 #include "core/io/text_table.h"
@@ -22,16 +23,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // Enough for any real header line (a multi-animal DLC scorer row is a few KB).
 constexpr std::size_t kSniffBytes = 64 * 1024;
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
 // [SECTION] Shared ---------------------------------------------------------------------------
-
-[[noreturn]] void malformed(const std::string& file, const std::string& where, const std::string& what) {
-  throw Error(ErrorKind::Malformed, file, where, what);
-}
 
 bool isBlankOrComment(std::string_view line) {
   line = trim(line);
@@ -57,7 +53,7 @@ std::vector<TextLine> contentLines(const std::vector<TextLine>& lines, std::size
 std::vector<std::string_view> rowCells(const TextLine& line, std::size_t expected, const std::string& file) {
   auto cells = splitFields(line.text, ',');
   if (cells.size() != expected)
-    malformed(file, linePosition(line.number),
+    throwMalformed(file, linePosition(line.number),
               std::string(cells.size() < expected ? "short row: " : "") + std::to_string(cells.size()) +
                   " fields where the header has " + std::to_string(expected));
   return cells;
@@ -69,7 +65,7 @@ double cellNumber(const std::vector<std::string_view>& cells, std::size_t column
                   const std::string& file) {
   double v = kNaN;
   if (!parseDouble(cells[column], v, true))
-    malformed(file, linePosition(line.number, static_cast<int>(column) + 1),
+    throwMalformed(file, linePosition(line.number, static_cast<int>(column) + 1),
               "'" + std::string(cells[column]) + "' is not a finite number");
   return v;
 }
@@ -87,7 +83,7 @@ bool anyPointSeen(const Eigen::MatrixX3d& points) { return (points.col(2).array(
 
 void addFrame(KeypointFrames& out, const TextLine& line) {
   if (out.frameCount() >= kMaxKeypointFrames)
-    malformed(out.file, linePosition(line.number), "more than " + std::to_string(kMaxKeypointFrames) + " frames");
+    throwMalformed(out.file, linePosition(line.number), "more than " + std::to_string(kMaxKeypointFrames) + " frames");
   out.frames.emplace_back();
 }
 
@@ -128,7 +124,7 @@ std::optional<KeypointImageSize> imageSizeComment(const TextLine& line, const st
     size.height = positiveSide(std::string_view(body).substr(x + 1));
   }
   if (size.width == 0 || size.height == 0)
-    malformed(file, linePosition(line.number),
+    throwMalformed(file, linePosition(line.number),
               "image_size must be WIDTHxHEIGHT in pixels (1 to " + std::to_string(kMaxKeypointImageSidePx) +
                   "), e.g. 1920x1080");
   return size;
@@ -139,7 +135,7 @@ MediaPipeColumns mediaPipeColumns(const TextLine& header, const std::string& fil
   std::map<std::string, int> at;
   for (std::size_t i = 0; i < names.size(); ++i) {
     if (!at.emplace(toLower(names[i]), static_cast<int>(i)).second)
-      malformed(file, linePosition(header.number, static_cast<int>(i) + 1),
+      throwMalformed(file, linePosition(header.number, static_cast<int>(i) + 1),
                 "column '" + std::string(names[i]) + "' appears twice");
   }
   const auto column = [&](const std::string& name) { return at.contains(name) ? at.at(name) : -1; };
@@ -151,7 +147,7 @@ MediaPipeColumns mediaPipeColumns(const TextLine& header, const std::string& fil
     if (c.landmarks.back()[0] < 0 || c.landmarks.back()[1] < 0) missing.push_back(landmark + "_x/_y");
   }
   if (!missing.empty())
-    malformed(file, linePosition(header.number), "MediaPipe landmark columns missing: " + listForMessage(missing, 8));
+    throwMalformed(file, linePosition(header.number), "MediaPipe landmark columns missing: " + listForMessage(missing, 8));
   c.frame = column("frame");
   for (const auto& [name, scale] : {std::pair{"time_s", 1.0}, std::pair{"timestamp", 1.0}, std::pair{"timestamp_ms", 1e-3}}) {
     if (c.time < 0 && column(name) >= 0) c.time = column(name), c.timeToSeconds = scale;
@@ -194,7 +190,7 @@ std::optional<double> rateFromTimes(const std::vector<double>& times, const std:
   if (steps.empty()) return std::nullopt;
   std::nth_element(steps.begin(), steps.begin() + static_cast<long>(steps.size() / 2), steps.end());
   const double step = steps[steps.size() / 2];
-  if (!(step > 0.0)) malformed(file, "time column", "the times do not increase: no frame rate");
+  if (!(step > 0.0)) throwMalformed(file, "time column", "the times do not increase: no frame rate");
   return checkedFileRateHz(1.0 / step, file, "time column");
 }
 
@@ -218,7 +214,7 @@ struct DlcGroup {
 std::string tripleName(const std::vector<std::string_view>& cells, std::size_t x, const TextLine& line,
                        const std::string& file, const char* what) {
   if (cells[x] != cells[x + 1] || cells[x] != cells[x + 2])
-    malformed(file, linePosition(line.number, static_cast<int>(x) + 1),
+    throwMalformed(file, linePosition(line.number, static_cast<int>(x) + 1),
               std::string("each ") + what + " names three columns (x, y, likelihood)");
   return std::string(cells[x]);
 }
@@ -229,18 +225,18 @@ std::vector<std::vector<std::string_view>> dlcHeaderRows(const std::vector<TextL
   if (lines.size() > 1 && toLower(splitFields(lines[1].text, ',')[0]) == "individuals")
     expected.insert(expected.begin() + 1, "individuals");
   if (lines.size() < expected.size())
-    malformed(file, "", "the DeepLabCut header (scorer, bodyparts, coords rows) is incomplete");
+    throwMalformed(file, "", "the DeepLabCut header (scorer, bodyparts, coords rows) is incomplete");
   std::vector<std::vector<std::string_view>> rows;
   for (std::size_t r = 0; r < expected.size(); ++r) {
     rows.push_back(splitFields(lines[r].text, ','));
     if (toLower(rows[r][0]) != expected[r])
-      malformed(file, linePosition(lines[r].number), "a DeepLabCut header row here starts with '" + expected[r] + "'");
+      throwMalformed(file, linePosition(lines[r].number), "a DeepLabCut header row here starts with '" + expected[r] + "'");
     if (rows[r].size() != rows[0].size())
-      malformed(file, linePosition(lines[r].number), std::to_string(rows[r].size()) +
+      throwMalformed(file, linePosition(lines[r].number), std::to_string(rows[r].size()) +
                                                          " fields where the scorer row has " + std::to_string(rows[0].size()));
   }
   if (rows[0].size() < 4 || (rows[0].size() - 1) % 3 != 0)
-    malformed(file, linePosition(lines[0].number), "after the first column DeepLabCut writes x, y, likelihood triples");
+    throwMalformed(file, linePosition(lines[0].number), "after the first column DeepLabCut writes x, y, likelihood triples");
   return rows;
 }
 
@@ -253,13 +249,13 @@ std::vector<DlcGroup> dlcGroups(const std::vector<std::vector<std::string_view>>
   for (std::size_t x = 1; x + 2 < rows[0].size(); x += 3) {
     const auto& coords = rows[coordsRow];
     if (toLower(coords[x]) != "x" || toLower(coords[x + 1]) != "y" || toLower(coords[x + 2]) != "likelihood")
-      malformed(file, linePosition(lines[coordsRow].number, static_cast<int>(x) + 1),
+      throwMalformed(file, linePosition(lines[coordsRow].number, static_cast<int>(x) + 1),
                 "DeepLabCut coords repeat x, y, likelihood");
     const std::string individual = multi ? tripleName(rows[1], x, lines[1], file, "individual") : "";
     if (groups.empty() || groups.back().individual != individual) {
       for (const auto& g : groups) {
         if (g.individual == individual)
-          malformed(file, linePosition(lines[1].number, static_cast<int>(x) + 1),
+          throwMalformed(file, linePosition(lines[1].number, static_cast<int>(x) + 1),
                     "the columns of individual '" + individual + "' are not together");
       }
       groups.push_back(DlcGroup{individual, {}, {}});
@@ -272,12 +268,12 @@ std::vector<DlcGroup> dlcGroups(const std::vector<std::vector<std::string_view>>
 
 void checkPointNames(const std::vector<std::string>& names, const TextLine& line, const std::string& file) {
   if (names.size() > static_cast<std::size_t>(kMaxKeypointsPerPerson))
-    malformed(file, linePosition(line.number), std::to_string(names.size()) + " body parts, more than " +
+    throwMalformed(file, linePosition(line.number), std::to_string(names.size()) + " body parts, more than " +
                                                    std::to_string(kMaxKeypointsPerPerson));
   for (std::size_t i = 0; i < names.size(); ++i) {
     for (std::size_t k = 0; k < i; ++k) {
       if (toLower(names[k]) == toLower(names[i]))
-        malformed(file, linePosition(line.number), "body part '" + names[i] + "' appears twice");
+        throwMalformed(file, linePosition(line.number), "body part '" + names[i] + "' appears twice");
     }
   }
 }
@@ -297,13 +293,13 @@ DlcHeader dlcHeader(const std::vector<TextLine>& lines, const std::string& file)
     } else if (toLower(g.individual) == "single") {  // multi-animal "unique bodyparts": nobody's
       h.warnings.push_back("DeepLabCut unique body parts not used (no individual's): " + listForMessage(g.parts, 10));
     } else {
-      malformed(file, linePosition(partsLine.number),
+      throwMalformed(file, linePosition(partsLine.number),
                 "individual '" + g.individual + "' has body parts " + listForMessage(g.parts, 10) + " where '" +
                     groups.front().individual + "' has " + listForMessage(h.pointNames, 10));
     }
   }
   if (h.xColumn.size() > static_cast<std::size_t>(kMaxPeoplePerFrame))
-    malformed(file, linePosition(lines[1].number), "more than " + std::to_string(kMaxPeoplePerFrame) + " individuals");
+    throwMalformed(file, linePosition(lines[1].number), "more than " + std::to_string(kMaxPeoplePerFrame) + " individuals");
   return h;
 }
 
@@ -312,7 +308,7 @@ void addDlcRow(KeypointFrames& out, const TextLine& line, const DlcHeader& h) {
   addFrame(out, line);
   double frameIndex = kNaN;
   if (!parseDouble(cells[0], frameIndex, false) || std::isnan(frameIndex))
-    malformed(out.file, linePosition(line.number, 1), "frame index '" + std::string(cells[0]) + "' is not a number");
+    throwMalformed(out.file, linePosition(line.number, 1), "frame index '" + std::string(cells[0]) + "' is not a number");
   for (std::size_t k = 0; k < h.xColumn.size(); ++k) {
     Eigen::MatrixX3d points(static_cast<Eigen::Index>(h.pointNames.size()), 3);
     for (std::size_t i = 0; i < h.pointNames.size(); ++i) {
@@ -365,7 +361,7 @@ KeypointFrames readKeypointCsv(const fs::path& path, std::optional<KeypointImage
     case KeypointCsvKind::NotKeypoints:
       break;
   }
-  malformed(path.string(), "",
+  throwMalformed(path.string(), "",
             "not a keypoint CSV we read: expected DeepLabCut (a first row 'scorer,…') or MediaPipe Pose "
             "(a header with nose_x, nose_y, …)");
 }
@@ -380,7 +376,7 @@ KeypointFrames parseMediaPipeCsv(const std::string& text, const std::string& nam
       if (auto size = imageSizeComment(lines[header], name)) stated = size;
     }
   }
-  if (header == lines.size()) malformed(name, "", "no header row");
+  if (header == lines.size()) throwMalformed(name, "", "no header row");
   const MediaPipeColumns columns = mediaPipeColumns(lines[header], name);
   if (!imageSize && !stated)
     throw Error(ErrorKind::BadArgument, name, "",
@@ -401,7 +397,7 @@ KeypointFrames parseMediaPipeCsv(const std::string& text, const std::string& nam
 
 KeypointFrames parseDeepLabCutCsv(const std::string& text, const std::string& name) {
   const auto lines = contentLines(splitLines(withoutBom(text)), 0);
-  if (lines.empty()) malformed(name, "", "empty file");
+  if (lines.empty()) throwMalformed(name, "", "empty file");
   const DlcHeader header = dlcHeader(lines, name);
   KeypointFrames out;
   out.file = name;

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/common/errors.h"
+#include "core/common/nan.h"
 #include "core/io/file_bytes.h"
 
 namespace ew {
@@ -16,24 +17,19 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-[[noreturn]] void malformed(const std::string& file, const std::string& where, const std::string& what) {
-  throw Error(ErrorKind::Malformed, file, where, what);
-}
 
 json parseJson(const std::string& text, const std::string& file) {
   try {
     return json::parse(text);
   } catch (const json::exception& e) {
-    malformed(file, "", std::string("not JSON: ") + e.what());
+    throwMalformed(file, "", std::string("not JSON: ") + e.what());
   }
 }
 
 double number(const json& v, const std::string& file, const std::string& where) {
-  if (!v.is_number()) malformed(file, where, "keypoint values must be numbers, found " + v.dump());
+  if (!v.is_number()) throwMalformed(file, where, "keypoint values must be numbers, found " + v.dump());
   const double x = v.get<double>();
-  if (!std::isfinite(x)) malformed(file, where, "keypoint value is not finite");
+  if (!std::isfinite(x)) throwMalformed(file, where, "keypoint value is not finite");
   return x;
 }
 
@@ -41,10 +37,10 @@ double number(const json& v, const std::string& file, const std::string& where) 
 // not find: any point with confidence 0 is absent.
 Eigen::MatrixX3d fromTriples(const json& flat, const std::string& file, const std::string& where) {
   if (!flat.is_array() || flat.size() % 3 != 0)
-    malformed(file, where, "keypoints must be a list of x, y, confidence triples");
+    throwMalformed(file, where, "keypoints must be a list of x, y, confidence triples");
   const auto p = static_cast<Eigen::Index>(flat.size() / 3);
   if (p > kMaxKeypointsPerPerson)
-    malformed(file, where, std::to_string(p) + " keypoints per person, more than " +
+    throwMalformed(file, where, std::to_string(p) + " keypoints per person, more than " +
                                std::to_string(kMaxKeypointsPerPerson));
   Eigen::MatrixX3d out(p, 3);
   for (Eigen::Index i = 0; i < p; ++i) {
@@ -60,10 +56,10 @@ void addDetection(KeypointFrames& out, std::vector<KeypointDetection>& frame, Ke
   const int p = static_cast<int>(d.points.rows());
   if (out.pointCount == 0) out.pointCount = p;
   if (p != out.pointCount)
-    malformed(out.file, where, std::to_string(p) + " keypoints where earlier detections had " +
+    throwMalformed(out.file, where, std::to_string(p) + " keypoints where earlier detections had " +
                                    std::to_string(out.pointCount));
   if (static_cast<int>(frame.size()) >= kMaxPeoplePerFrame)
-    malformed(out.file, where, "more than " + std::to_string(kMaxPeoplePerFrame) + " people in one frame");
+    throwMalformed(out.file, where, "more than " + std::to_string(kMaxPeoplePerFrame) + " people in one frame");
   frame.push_back(std::move(d));
 }
 
@@ -76,7 +72,7 @@ void checkNotEmpty(const KeypointFrames& out) {
 
 void addFrame(KeypointFrames& out) {
   if (out.frameCount() >= kMaxKeypointFrames)
-    malformed(out.file, "", "more than " + std::to_string(kMaxKeypointFrames) + " frames");
+    throwMalformed(out.file, "", "more than " + std::to_string(kMaxKeypointFrames) + " frames");
   out.frames.emplace_back();
 }
 
@@ -101,13 +97,13 @@ long frameNumber(const std::string& name) {
 
 void addOpenPoseFrame(KeypointFrames& out, const json& doc, const std::string& where) {
   if (!doc.is_object() || !doc.contains("people") || !doc["people"].is_array())
-    malformed(out.file, where, "an OpenPose frame must be an object with a \"people\" list");
+    throwMalformed(out.file, where, "an OpenPose frame must be an object with a \"people\" list");
   addFrame(out);
   for (std::size_t k = 0; k < doc["people"].size(); ++k) {
     const json& person = doc["people"][k];
     const std::string at = where + " people[" + std::to_string(k) + "]";
     if (!person.is_object() || !person.contains("pose_keypoints_2d"))
-      malformed(out.file, at, "a person must have \"pose_keypoints_2d\"");
+      throwMalformed(out.file, at, "a person must have \"pose_keypoints_2d\"");
     KeypointDetection d{fromTriples(person["pose_keypoints_2d"], out.file, at), -1};
     if (d.points.rows() == 0) continue;  // OpenPose writes [] when the body model was off
     if (person.contains("person_id")) {
@@ -126,7 +122,7 @@ std::vector<std::pair<std::string, std::string>> readOpenPoseFolder(const fs::pa
   for (const auto& e : fs::directory_iterator(folder, ec)) {
     if (e.path().extension() == ".json") files.push_back(e.path());
     if (static_cast<int>(files.size()) > kMaxKeypointFrames)
-      malformed(folder.string(), "", "more than " + std::to_string(kMaxKeypointFrames) + " JSON files");
+      throwMalformed(folder.string(), "", "more than " + std::to_string(kMaxKeypointFrames) + " JSON files");
   }
   if (ec) throw Error(ErrorKind::Io, folder.string(), "", "cannot list the folder: " + ec.message());
   if (files.empty()) throw Error(ErrorKind::BadData, folder.string(), "", "no .json files in the folder");
@@ -155,17 +151,17 @@ long imageKey(const json& id, std::map<std::string, long>& seen) {
 
 Eigen::MatrixX3d fromPairsAndScores(const json& kp, const json* scores, const std::string& file,
                                     const std::string& where) {
-  if (!kp.is_array()) malformed(file, where, "\"keypoints\" must be a list of [x, y] pairs");
+  if (!kp.is_array()) throwMalformed(file, where, "\"keypoints\" must be a list of [x, y] pairs");
   const auto p = static_cast<Eigen::Index>(kp.size());
   if (p > kMaxKeypointsPerPerson)
-    malformed(file, where, std::to_string(p) + " keypoints per person, more than " +
+    throwMalformed(file, where, std::to_string(p) + " keypoints per person, more than " +
                                std::to_string(kMaxKeypointsPerPerson));
   if (scores && (!scores->is_array() || scores->size() != kp.size()))
-    malformed(file, where, "\"keypoint_scores\" must list one score per keypoint");
+    throwMalformed(file, where, "\"keypoint_scores\" must list one score per keypoint");
   Eigen::MatrixX3d out(p, 3);
   for (Eigen::Index i = 0; i < p; ++i) {
     const json& xy = kp[static_cast<std::size_t>(i)];
-    if (!xy.is_array() || xy.size() < 2) malformed(file, where, "a keypoint must be [x, y]");
+    if (!xy.is_array() || xy.size() < 2) throwMalformed(file, where, "a keypoint must be [x, y]");
     out(i, 0) = number(xy[0], file, where);
     out(i, 1) = number(xy[1], file, where);
     out(i, 2) = scores ? number((*scores)[static_cast<std::size_t>(i)], file, where) : 1.0;
@@ -175,11 +171,11 @@ Eigen::MatrixX3d fromPairsAndScores(const json& kp, const json* scores, const st
 }
 
 void addMmposeInstances(KeypointFrames& out, const json& instances, const std::string& where) {
-  if (!instances.is_array()) malformed(out.file, where, "\"instances\" must be a list");
+  if (!instances.is_array()) throwMalformed(out.file, where, "\"instances\" must be a list");
   for (std::size_t k = 0; k < instances.size(); ++k) {
     const json& inst = instances[k];
     const std::string at = where + " instances[" + std::to_string(k) + "]";
-    if (!inst.is_object() || !inst.contains("keypoints")) malformed(out.file, at, "an instance needs \"keypoints\"");
+    if (!inst.is_object() || !inst.contains("keypoints")) throwMalformed(out.file, at, "an instance needs \"keypoints\"");
     const json* scores = inst.contains("keypoint_scores") ? &inst["keypoint_scores"] : nullptr;
     KeypointDetection d{fromPairsAndScores(inst["keypoints"], scores, out.file, at), -1};
     if (inst.contains("track_id") && inst["track_id"].is_number_integer())
@@ -226,7 +222,7 @@ KeypointFrames parseOpenPoseFrames(const std::vector<std::pair<std::string, std:
 
 KeypointFrames parseAlphaPoseJson(const std::string& text, const std::string& name) {
   const json doc = parseJson(text, name);
-  if (!doc.is_array()) malformed(name, "", "AlphaPose results are a list of detections");
+  if (!doc.is_array()) throwMalformed(name, "", "AlphaPose results are a list of detections");
   KeypointFrames out;
   out.file = name;
   out.format = "AlphaPose JSON";
@@ -235,7 +231,7 @@ KeypointFrames parseAlphaPoseJson(const std::string& text, const std::string& na
   for (std::size_t k = 0; k < doc.size(); ++k) {
     const json& d = doc[k];
     if (!d.is_object() || !d.contains("image_id") || !d.contains("keypoints"))
-      malformed(name, "detection " + std::to_string(k), "needs \"image_id\" and \"keypoints\"");
+      throwMalformed(name, "detection " + std::to_string(k), "needs \"image_id\" and \"keypoints\"");
     byFrame[imageKey(d["image_id"], seen)].push_back(k);
   }
   for (const auto& [frame, detections] : byFrame) {
@@ -262,11 +258,11 @@ KeypointFrames parseMmposeJson(const std::string& text, const std::string& name)
     out.layoutHint = layoutFromDatasetName(doc["meta_info"]["dataset_name"].get<std::string>());
   if (doc.is_object() && doc.contains("instance_info")) {  // a video: frames with frame_id
     const json& frames = doc["instance_info"];
-    if (!frames.is_array()) malformed(name, "instance_info", "must be a list of frames");
+    if (!frames.is_array()) throwMalformed(name, "instance_info", "must be a list of frames");
     for (std::size_t f = 0; f < frames.size(); ++f) {
       const std::string at = "instance_info[" + std::to_string(f) + "]";
       if (!frames[f].is_object() || !frames[f].contains("instances"))
-        malformed(name, at, "a frame needs \"instances\"");
+        throwMalformed(name, at, "a frame needs \"instances\"");
       addFrame(out);
       addMmposeInstances(out, frames[f]["instances"], at);
     }
@@ -274,7 +270,7 @@ KeypointFrames parseMmposeJson(const std::string& text, const std::string& name)
     addFrame(out);
     addMmposeInstances(out, doc, "instances");
   } else {
-    malformed(name, "", "MMPose results need \"instance_info\" (a video) or a list of instances");
+    throwMalformed(name, "", "MMPose results need \"instance_info\" (a video) or a list of instances");
   }
   checkNotEmpty(out);
   return out;
@@ -326,7 +322,7 @@ KeypointFrames readKeypointFrames(const fs::path& path, const std::optional<Keyp
   if ((doc.is_object() && doc.contains("instance_info")) ||
       (doc.is_array() && !doc.empty() && doc[0].is_object() && doc[0].contains("keypoint_scores")))
     return parseMmposeJson(text, path.string());
-  malformed(path.string(), "",
+  throwMalformed(path.string(), "",
             "not a keypoint file we read: expected OpenPose (\"people\"), AlphaPose (a list with "
             "\"image_id\") or MMPose (\"instance_info\") JSON");
 }

@@ -14,10 +14,6 @@ namespace {
 
 using nlohmann::json;
 
-[[noreturn]] void bad(const std::string& file, const std::string& key, const std::string& what) {
-  throw Error(ErrorKind::Malformed, file, key, what);
-}
-
 // Lower case without '_', '-' or spaces: "BODY_25B", "body25b" and "Body-25B" are one name.
 std::string nameKey(std::string_view s) {
   std::string out;
@@ -30,12 +26,12 @@ std::string nameKey(std::string_view s) {
 
 std::vector<std::string> pointNames(const json& doc, const std::string& file) {
   if (!doc.contains("points") || !doc["points"].is_array() || doc["points"].empty())
-    bad(file, "points", "must be a non-empty list of point names");
+    throwMalformed(file, "points", "must be a non-empty list of point names");
   std::vector<std::string> points;
   for (const auto& p : doc["points"]) {
-    if (!p.is_string() || p.get<std::string>().empty()) bad(file, "points", "names must be strings");
+    if (!p.is_string() || p.get<std::string>().empty()) throwMalformed(file, "points", "names must be strings");
     if (std::find(points.begin(), points.end(), p.get<std::string>()) != points.end())
-      bad(file, "points", "'" + p.get<std::string>() + "' appears twice");
+      throwMalformed(file, "points", "'" + p.get<std::string>() + "' appears twice");
     points.push_back(p.get<std::string>());
   }
   return points;
@@ -45,16 +41,16 @@ int jointIndex(const std::string& name, const std::string& file, const std::stri
   for (int j = 0; j < kJointCount; ++j) {
     if (kJointNames[static_cast<std::size_t>(j)] == name) return j;
   }
-  bad(file, key, "unknown joint name '" + name + "'");
+  throwMalformed(file, key, "unknown joint name '" + name + "'");
 }
 
 std::vector<int> alternative(const json& a, const std::vector<std::string>& points,
                              const std::string& file, const std::string& key) {
-  if (!a.is_array() || a.empty()) bad(file, key, "an alternative must be a non-empty list of point names");
+  if (!a.is_array() || a.empty()) throwMalformed(file, key, "an alternative must be a non-empty list of point names");
   std::vector<int> out;
   for (const auto& p : a) {
     const auto it = p.is_string() ? std::find(points.begin(), points.end(), p.get<std::string>()) : points.end();
-    if (it == points.end()) bad(file, key, "'" + p.dump() + "' is not one of the layout's points");
+    if (it == points.end()) throwMalformed(file, key, "'" + p.dump() + "' is not one of the layout's points");
     out.push_back(static_cast<int>(it - points.begin()));
   }
   return out;
@@ -63,14 +59,14 @@ std::vector<int> alternative(const json& a, const std::vector<std::string>& poin
 void parseDetectorOffsets(const json& doc, const std::string& file, KeypointLayout& l) {
   if (!doc.contains("detector_offsets_mm")) return;
   const json& offsets = doc["detector_offsets_mm"];
-  if (!offsets.is_object()) bad(file, "detector_offsets_mm", "must be an object joint -> [x, y, z] mm");
+  if (!offsets.is_object()) throwMalformed(file, "detector_offsets_mm", "must be an object joint -> [x, y, z] mm");
   for (const auto& [name, v] : offsets.items()) {
     const std::string key = "detector_offsets_mm." + name;
     const int j = jointIndex(name, file, key);
-    if (!v.is_array() || v.size() != 3) bad(file, key, "must be three numbers [x, y, z] in mm");
+    if (!v.is_array() || v.size() != 3) throwMalformed(file, key, "must be three numbers [x, y, z] in mm");
     for (std::size_t c = 0; c < 3; ++c) {
       if (!v[c].is_number() || !std::isfinite(v[c].get<double>()) || std::abs(v[c].get<double>()) > kMaxDetectorOffsetMm)
-        bad(file, key, "each coordinate must be a finite number within ±" + std::to_string(static_cast<int>(kMaxDetectorOffsetMm)) + " mm");
+        throwMalformed(file, key, "each coordinate must be a finite number within ±" + std::to_string(static_cast<int>(kMaxDetectorOffsetMm)) + " mm");
       l.detectorOffsetMm[static_cast<std::size_t>(j)][c] = v[c].get<double>();
     }
   }
@@ -90,32 +86,32 @@ KeypointLayout parseKeypointLayout(std::string_view text, const std::string& fil
   try {
     doc = json::parse(text);
   } catch (const json::exception& e) {
-    bad(file, "", std::string("not JSON: ") + e.what());
+    throwMalformed(file, "", std::string("not JSON: ") + e.what());
   }
-  if (!doc.is_object()) bad(file, "", "a keypoint layout must be a JSON object");
+  if (!doc.is_object()) throwMalformed(file, "", "a keypoint layout must be a JSON object");
   KeypointLayout l;
   l.file = file;
   if (!doc.contains("name") || !doc["name"].is_string() || doc["name"].get<std::string>().empty())
-    bad(file, "name", "must be a non-empty string");
+    throwMalformed(file, "name", "must be a non-empty string");
   l.name = doc["name"].get<std::string>();
   l.about = doc.value("about", "");
   l.points = pointNames(doc, file);
-  if (!doc.contains("joints") || !doc["joints"].is_object()) bad(file, "joints", "missing object");
+  if (!doc.contains("joints") || !doc["joints"].is_object()) throwMalformed(file, "joints", "missing object");
   for (const auto& [name, alternatives] : doc["joints"].items()) {
     const std::string key = "joints." + name;
     const int j = jointIndex(name, file, key);
     if (!alternatives.is_array() || alternatives.empty())
-      bad(file, key, "must be a list of alternatives (lists of point names)");
+      throwMalformed(file, key, "must be a list of alternatives (lists of point names)");
     for (std::size_t k = 0; k < alternatives.size(); ++k) {
       l.joints[static_cast<std::size_t>(j)].push_back(
           alternative(alternatives[k], l.points, file, key + "[" + std::to_string(k) + "]"));
     }
   }
   if (doc.contains("derived")) {
-    if (!doc["derived"].is_object()) bad(file, "derived", "must be an object joint -> reason");
+    if (!doc["derived"].is_object()) throwMalformed(file, "derived", "must be an object joint -> reason");
     for (const auto& [name, why] : doc["derived"].items()) {
       const int j = jointIndex(name, file, "derived." + name);
-      if (!why.is_string()) bad(file, "derived." + name, "must be a string");
+      if (!why.is_string()) throwMalformed(file, "derived." + name, "must be a string");
       l.derived[static_cast<std::size_t>(j)] = why.get<std::string>();
     }
   }

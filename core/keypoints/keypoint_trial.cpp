@@ -6,6 +6,8 @@
 #include <sstream>
 
 #include "core/common/errors.h"
+#include "core/common/nan.h"
+#include "core/common/statistics.h"
 #include "core/io/reader_limits.h"
 
 namespace ew {
@@ -13,7 +15,6 @@ namespace {
 
 using Eigen::Vector2d;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // A detection joins a track when its centre is within this share of the person's size.
 constexpr double kMaxStepOfSize = 0.5;
 constexpr int kMaxTrackGapFrames = 15;
@@ -43,12 +44,6 @@ Shape shapeOf(const Eigen::MatrixX3d& p) {
   }
   if (s.points > 0) s.centre = sum / s.points, s.heightPx = bottom - top;
   return s;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::nth_element(v.begin(), v.begin() + static_cast<long>(v.size() / 2), v.end());
-  return v[v.size() / 2];
 }
 
 struct Active {

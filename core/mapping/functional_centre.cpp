@@ -5,10 +5,11 @@
 #include <cmath>
 #include <limits>
 
+#include "core/common/nan.h"
+
 namespace ew {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // A singular value below this fraction of the largest marks a free direction (a hinge's axis).
 constexpr double kHingeRatio = 0.05;
 // |cos| between a hinge axis and the joint->anchor direction above which the axis is taken

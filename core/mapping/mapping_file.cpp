@@ -18,10 +18,6 @@ using nlohmann::json;
 
 constexpr const char* kVersionKey = "eigenwalker_joint_mapping";
 
-[[noreturn]] void bad(const std::string& file, const std::string& key, const std::string& what) {
-  throw Error(ErrorKind::Malformed, file, key, what);
-}
-
 int jointIndex(const std::string& name) {
   for (int j = 0; j < kJointCount; ++j) {
     if (kJointNames[static_cast<std::size_t>(j)] == name) return j;
@@ -33,19 +29,19 @@ std::vector<std::string> parseJointValue(const json& v, const std::string& file,
                                          const std::string& key) {
   if (v.is_null()) return {};
   if (v.is_string()) {
-    if (v.get<std::string>().empty()) bad(file, key, "empty label");
+    if (v.get<std::string>().empty()) throwMalformed(file, key, "empty label");
     return {v.get<std::string>()};
   }
-  if (!v.is_array()) bad(file, key, "must be a label, a list of labels (their mean) or null");
-  if (v.empty()) bad(file, key, "empty list: give at least one label, or null for absent");
+  if (!v.is_array()) throwMalformed(file, key, "must be a label, a list of labels (their mean) or null");
+  if (v.empty()) throwMalformed(file, key, "empty list: give at least one label, or null for absent");
   std::vector<std::string> labels;
   std::set<std::string> seen;
   for (const auto& item : v) {
     if (!item.is_string() || item.get<std::string>().empty())
-      bad(file, key, "list items must be non-empty label strings");
+      throwMalformed(file, key, "list items must be non-empty label strings");
     const std::string label = item.get<std::string>();
     if (!seen.insert(normaliseMarkerLabel(label)).second)
-      bad(file, key, "label '" + label + "' given twice");
+      throwMalformed(file, key, "label '" + label + "' given twice");
     labels.push_back(label);
   }
   return labels;
@@ -150,20 +146,20 @@ JointMapping parseJointMapping(std::string_view text, const std::string& file) {
   try {
     doc = json::parse(text);
   } catch (const json::exception& e) {
-    bad(file, "", std::string("not JSON: ") + e.what());
+    throwMalformed(file, "", std::string("not JSON: ") + e.what());
   }
-  if (!doc.is_object()) bad(file, "", "a joint mapping file is a JSON object");
-  if (!doc.contains(kVersionKey)) bad(file, kVersionKey, "missing (expected 1)");
+  if (!doc.is_object()) throwMalformed(file, "", "a joint mapping file is a JSON object");
+  if (!doc.contains(kVersionKey)) throwMalformed(file, kVersionKey, "missing (expected 1)");
   if (!doc[kVersionKey].is_number_integer() || doc[kVersionKey].get<int>() != kJointMappingVersion)
-    bad(file, kVersionKey, "unsupported version " + doc[kVersionKey].dump() + " (expected 1)");
+    throwMalformed(file, kVersionKey, "unsupported version " + doc[kVersionKey].dump() + " (expected 1)");
   if (!doc.contains("joints") || !doc["joints"].is_object())
-    bad(file, "joints", "missing: an object with the 15 joint names as keys");
+    throwMalformed(file, "joints", "missing: an object with the 15 joint names as keys");
   JointMapping m;
   std::array<bool, kJointCount> given{};
   for (const auto& [name, value] : doc["joints"].items()) {
     const int j = jointIndex(name);
     if (j < 0) {
-      bad(file, "joints." + name,
+      throwMalformed(file, "joints." + name,
           "unknown joint name (expected one of " +
               listForMessage(std::vector<std::string>(kJointNames.begin(), kJointNames.end()), 15) +
               ")");
@@ -173,7 +169,7 @@ JointMapping parseJointMapping(std::string_view text, const std::string& file) {
   }
   for (int j = 0; j < kJointCount; ++j) {
     if (!given[static_cast<std::size_t>(j)]) {
-      bad(file, "joints." + std::string(kJointNames[static_cast<std::size_t>(j)]),
+      throwMalformed(file, "joints." + std::string(kJointNames[static_cast<std::size_t>(j)]),
           "missing: every joint must be listed (null when the file does not measure it)");
     }
   }

@@ -11,6 +11,7 @@
 
 #include "core/assets/embedded_assets.h"
 #include "core/common/errors.h"
+#include "core/common/nan.h"
 #include "core/mapping/functional_centre.h"
 #include "core/mapping/joint_mapping.h"
 #include "core/mapping/marker_sets.h"
@@ -21,7 +22,6 @@ namespace {
 using Eigen::Vector3d;
 using nlohmann::json;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Joints are built in this order so a rule only reads joints built before it: hips, then
 // pelvis (mid-hips), legs, trunk, head (needs pelvis and sternum), arms.
@@ -87,25 +87,21 @@ class Markers {
 
 // [SECTION] Parsing -----------------------------------------------------------------------
 
-[[noreturn]] void bad(const std::string& file, const std::string& key, const std::string& what) {
-  throw Error(ErrorKind::Malformed, file, key, what);
-}
-
 Joint jointFromName(const std::string& name, const std::string& file, const std::string& key) {
   for (int j = 0; j < kJointCount; ++j) {
     if (kJointNames[static_cast<std::size_t>(j)] == name) return static_cast<Joint>(j);
   }
-  bad(file, key, "unknown joint name '" + name + "'");
+  throwMalformed(file, key, "unknown joint name '" + name + "'");
 }
 
 std::string str(const json& o, const char* name, const std::string& file, const std::string& key,
                 bool optional = false) {
   if (!o.contains(name)) {
     if (optional) return {};
-    bad(file, key + "." + name, "missing");
+    throwMalformed(file, key + "." + name, "missing");
   }
   if (!o[name].is_string() || o[name].get<std::string>().empty())
-    bad(file, key + "." + name, "must be a non-empty string");
+    throwMalformed(file, key + "." + name, "must be a non-empty string");
   return o[name].get<std::string>();
 }
 
@@ -113,10 +109,10 @@ std::vector<std::string> strings(const json& o, const char* name, const std::str
                                  const std::string& key) {
   const std::string k = key + "." + name;
   if (!o.contains(name) || !o[name].is_array() || o[name].empty())
-    bad(file, k, "must be a non-empty list of labels");
+    throwMalformed(file, k, "must be a non-empty list of labels");
   std::vector<std::string> out;
   for (const auto& v : o[name]) {
-    if (!v.is_string() || v.get<std::string>().empty()) bad(file, k, "labels must be strings");
+    if (!v.is_string() || v.get<std::string>().empty()) throwMalformed(file, k, "labels must be strings");
     out.push_back(v.get<std::string>());
   }
   return out;
@@ -127,7 +123,7 @@ std::vector<Joint> jointList(const json& o, const char* name, std::size_t count,
   std::vector<Joint> out;
   for (const auto& s : strings(o, name, file, key)) out.push_back(jointFromName(s, file, key));
   if (count && out.size() != count)
-    bad(file, key + "." + name, "needs " + std::to_string(count) + " joint names");
+    throwMalformed(file, key + "." + name, "needs " + std::to_string(count) + " joint names");
   return out;
 }
 
@@ -135,12 +131,12 @@ HalfWidth halfWidthFrom(const std::string& s, const std::string& file, const std
   if (s == "knee") return HalfWidth::Knee;
   if (s == "ankle") return HalfWidth::Ankle;
   if (s == "elbow") return HalfWidth::Elbow;
-  bad(file, key + ".half_width", "must be knee, ankle or elbow, not '" + s + "'");
+  throwMalformed(file, key + ".half_width", "must be knee, ankle or elbow, not '" + s + "'");
 }
 
 Side sideFrom(const json& o, const std::string& file, const std::string& key) {
   const std::string side = str(o, "side", file, key);
-  if (side != "left" && side != "right") bad(file, key + ".side", "must be left or right");
+  if (side != "left" && side != "right") throwMalformed(file, key + ".side", "must be left or right");
   return side == "left" ? Side::Left : Side::Right;
 }
 
@@ -155,16 +151,16 @@ void parseFunctionalHip(const json& o, const std::string& file, const std::strin
   r.distal = strings(o, "thigh", file, key);
   r.otherDistal = strings(o, "other_thigh", file, key);
   if (r.markers.size() < 3 || r.distal.size() < 3 || r.otherDistal.size() < 3)
-    bad(file, key, "a functional hip needs 3 or more markers in each cluster");
+    throwMalformed(file, key, "a functional hip needs 3 or more markers in each cluster");
   if (!o.contains("width_mm") || !o["width_mm"].is_number())
-    bad(file, key + ".width_mm", "must be a number (mm between the hip centres)");
+    throwMalformed(file, key + ".width_mm", "must be a number (mm between the hip centres)");
   r.widthMm = o["width_mm"].get<double>();
   if (!(r.widthMm >= kMinHipWidthMm && r.widthMm <= kMaxHipWidthMm))
-    bad(file, key + ".width_mm", "must be between 80 and 400 mm");
+    throwMalformed(file, key + ".width_mm", "must be between 80 and 400 mm");
 }
 
 MarkerRule parseRule(const json& o, const std::string& file, const std::string& key) {
-  if (!o.is_object()) bad(file, key, "a rule must be an object with \"op\"");
+  if (!o.is_object()) throwMalformed(file, key, "a rule must be an object with \"op\"");
   MarkerRule r;
   const std::string op = str(o, "op", file, key);
   r.estimated = str(o, "estimated", file, key, true);
@@ -197,13 +193,13 @@ MarkerRule parseRule(const json& o, const std::string& file, const std::string& 
     r.markers = strings(o, "proximal", file, key);
     r.distal = strings(o, "distal", file, key);
     if (r.markers.size() < 3 || r.distal.size() < 3)
-      bad(file, key, "a functional centre needs 3 or more markers in each cluster");
+      throwMalformed(file, key, "a functional centre needs 3 or more markers in each cluster");
     const std::string anchor = str(o, "anchor", file, key, true);
     if (!anchor.empty()) r.anchor = jointFromName(anchor, file, key + ".anchor");
   } else if (op == "functional_hip") {
     parseFunctionalHip(o, file, key, r);
   } else {
-    bad(file, key + ".op", "unknown rule '" + op + "'");
+    throwMalformed(file, key + ".op", "unknown rule '" + op + "'");
   }
   return r;
 }
@@ -249,11 +245,6 @@ bool usable(const MarkerRule& r, const Markers& m, const std::array<int, kJointC
 
 // [SECTION] Rule evaluation -------------------------------------------------------------------
 
-Vector3d unit(const Vector3d& v) {
-  const double n = v.norm();
-  return n > 1e-9 ? Vector3d(v / n) : Vector3d::Constant(kNaN);
-}
-
 double halfWidthMm(HalfWidth h) {
   switch (h) {
     case HalfWidth::Knee:
@@ -286,9 +277,9 @@ struct FrameContext {
 Vector3d lateralMedial(const MarkerRule& r, const FrameContext& c) {
   const Vector3d lateral = c.marker(r.lateral);
   if (!r.medial.empty() && c.m.resolve(r.medial) >= 0) return 0.5 * (lateral + c.marker(r.medial));
-  const Vector3d axis = unit(lateral - c.joint(r.joints[0]));
+  const Vector3d axis = unitOrNaN(lateral - c.joint(r.joints[0]));
   const Vector3d toward = c.joint(r.joints[2]) - c.joint(r.joints[1]);
-  const Vector3d medial = unit(toward - toward.dot(axis) * axis);
+  const Vector3d medial = unitOrNaN(toward - toward.dot(axis) * axis);
   return lateral + halfWidthMm(r.halfWidth) * medial;
 }
 
@@ -311,7 +302,7 @@ Vector3d evaluate(const MarkerRule& r, const FrameContext& c) {
     case RuleOp::ShoulderDrop: {
       const Vector3d acromion = c.marker(r.acromion);
       const double biacromial = (acromion - c.marker(r.otherAcromion)).norm();
-      const Vector3d down = unit(c.joint(Joint::Pelvis) - c.joint(Joint::Sternum));
+      const Vector3d down = unitOrNaN(c.joint(Joint::Pelvis) - c.joint(Joint::Sternum));
       return acromion + kShoulderDropFraction * biacromial * down;
     }
     case RuleOp::HeadAboveSternum:
@@ -429,18 +420,18 @@ MarkerSetTable parseMarkerSetTable(std::string_view text, const std::string& fil
   try {
     doc = json::parse(text);
   } catch (const json::exception& e) {
-    bad(file, "", std::string("not JSON: ") + e.what());
+    throwMalformed(file, "", std::string("not JSON: ") + e.what());
   }
-  if (!doc.is_object()) bad(file, "", "a marker-set table must be a JSON object");
+  if (!doc.is_object()) throwMalformed(file, "", "a marker-set table must be a JSON object");
   MarkerSetTable t;
   t.file = file;
   t.name = str(doc, "name", file, "");
   t.identify = strings(doc, "identify", file, "");
-  if (!doc.contains("joints") || !doc["joints"].is_object()) bad(file, "joints", "missing object");
+  if (!doc.contains("joints") || !doc["joints"].is_object()) throwMalformed(file, "joints", "missing object");
   for (const auto& [name, rules] : doc["joints"].items()) {
     const std::string key = "joints." + name;
     const Joint j = jointFromName(name, file, key);
-    if (!rules.is_array()) bad(file, key, "must be a list of rules (tried in order)");
+    if (!rules.is_array()) throwMalformed(file, key, "must be a list of rules (tried in order)");
     for (std::size_t k = 0; k < rules.size(); ++k) {
       t.joints[at(j)].push_back(parseRule(rules[k], file, key + "[" + std::to_string(k) + "]"));
     }
@@ -537,6 +528,11 @@ std::vector<std::string> missingMinimumJoints(const TablePlan& plan) {
     if (plan.rule[at(j)] < 0) out.emplace_back(jointName(j));
   }
   return out;
+}
+
+Vector3d unitOrNaN(const Vector3d& v) {
+  const double n = v.norm();
+  return n > 1e-9 ? Vector3d(v / n) : Vector3d::Constant(kNaN);
 }
 
 }  // namespace ew

@@ -10,6 +10,7 @@
 // compare case-insensitively with "Subject:" prefixes dropped (normaliseMarkerLabel). A
 // marker counts as present only when it has a position in at least one frame.
 
+#include <Eigen/Core>
 #include <array>
 #include <optional>
 #include <string>
@@ -86,5 +87,8 @@ inline constexpr std::array<Joint, 5> kMinimumJoints = {Joint::Pelvis, Joint::LK
                                                         Joint::LAnkle, Joint::RAnkle};
 // Names of the minimum joints the plan lacks (empty: enough).
 std::vector<std::string> missingMinimumJoints(const TablePlan& plan);
+
+// v / |v|, or NaN where v is too short to have a direction (two markers on one spot).
+Eigen::Vector3d unitOrNaN(const Eigen::Vector3d& v);
 
 }  // namespace ew

@@ -17,11 +17,6 @@ namespace {
 
 using Eigen::Vector3d;
 
-Vector3d unit(const Vector3d& v) {
-  const double n = v.norm();
-  return n > 1e-9 ? Vector3d(v / n) : Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
-}
-
 // [SECTION] Set choice and errors -------------------------------------------------------------
 
 struct Candidate {
@@ -150,9 +145,9 @@ const std::vector<MarkerSetInfo>& knownMarkerSets() {
 HipCentres harringtonHipCentres(const Vector3d& leftAsis, const Vector3d& rightAsis,
                                 const Vector3d& midPsis) {
   const Vector3d origin = 0.5 * (leftAsis + rightAsis);
-  const Vector3d z = unit(rightAsis - leftAsis);
+  const Vector3d z = unitOrNaN(rightAsis - leftAsis);
   const Vector3d back = origin - midPsis;
-  const Vector3d x = unit(back - back.dot(z) * z);
+  const Vector3d x = unitOrNaN(back - back.dot(z) * z);
   const Vector3d y = z.cross(x);
   const double pw = (rightAsis - leftAsis).norm();
   const double pd = back.norm();

@@ -18,6 +18,7 @@
 #include <string_view>
 
 #include "core/common/errors.h"
+#include "core/common/nan.h"
 #include "core/common/skeleton.h"
 #include "core/engine/fourier.h"
 #include "core/engine/metrics.h"
@@ -34,7 +35,6 @@
 namespace ew {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kOmega = 2.0 * std::numbers::pi * 0.9;  // rad/s
 constexpr double kRateHz = 120.0;

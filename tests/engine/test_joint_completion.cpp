@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "core/common/errors.h"
+#include "core/common/nan.h"
 #include "core/engine/joint_completion.h"
 #include "core/engine/metrics.h"
 #include "core/engine/projection.h"
@@ -24,7 +25,6 @@
 namespace ew {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 JointMask upperBody() {
   JointMask m{};

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/common/nan.h"
 #include "core/engine/fourier.h"
 #include "core/engine/projection.h"
 #include "core/engine/synthetic_walkers.h"
@@ -21,7 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string readText(const fs::path& file) {
   std::ifstream in(file);

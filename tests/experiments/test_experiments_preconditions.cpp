@@ -14,6 +14,7 @@
 #include <string_view>
 
 #include "core/common/errors.h"
+#include "core/common/nan.h"
 #include "core/engine/fourier.h"
 #include "core/engine/synthetic_walkers.h"
 #include "core/experiments/experiments.h"
@@ -28,7 +29,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kOmega = 2.0 * std::numbers::pi * 0.9;
 constexpr double kRateHz = 60.0;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/common/nan.h"
 #include "core/tracking/keyframes.h"
 #include "core/tracking/track_compare.h"
 #include "tests/common/error_matchers.h"
@@ -16,7 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string withKeyframes(const std::string& list) {
   return R"({"format": "eigenwalker-keyframes", "version": 1, "video": "clip.mp4", "keyframes": )" +

@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "core/common/nan.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/synth/population.h"
 #include "core/tracking/keyframes.h"
@@ -23,7 +24,6 @@ namespace ew {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct Footage {
   fs::path file;
