@@ -8,10 +8,6 @@
 namespace ew {
 namespace {
 
-constexpr float kNaNf = std::numeric_limits<float>::quiet_NaN();
-
-bool valid(cv::Point2f p) { return std::isfinite(p.x) && std::isfinite(p.y); }
-
 bool inside(cv::Point2f p, const cv::Mat& image) {
   return p.x >= 0.0f && p.y >= 0.0f && p.x < static_cast<float>(image.cols) &&
          p.y < static_cast<float>(image.rows);

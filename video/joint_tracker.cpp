@@ -21,7 +21,6 @@
 namespace ew {
 namespace {
 
-
 // [SECTION] The body's tree (video/segment_search.h): the pelvis, then each child after its parent
 
 std::array<int, kJointCount> parentsFirst() {

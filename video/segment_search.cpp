@@ -9,9 +9,6 @@ namespace {
 
 constexpr int kStripAlong = 20;
 constexpr int kStripAcross = 7;
-constexpr float kNaNf = std::numeric_limits<float>::quiet_NaN();
-
-bool valid(cv::Point2f p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 float sampleBilinear(const cv::Mat& grey, float x, float y) {
   const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));

@@ -10,11 +10,17 @@
 // flow of a thin limb's joint window cannot avoid.
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <opencv2/core.hpp>
 
 #include "core/common/skeleton.h"
 
 namespace ew {
+
+// A point not placed (a joint not tracked or not found).
+inline constexpr float kNaNf = std::numeric_limits<float>::quiet_NaN();
+inline bool valid(cv::Point2f p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 // Parent → child in search order (depth-first from the pelvis). (Not core's TreeBone of
 // skeleton_tree.h: two classes of one name in one program break the one-definition rule —

@@ -103,7 +103,6 @@ FilmedHeldOutWalker::Fit FilmedHeldOutWalker::fitOf(const KeypointTrial& joints,
 
 namespace {
 
-
 // A fit, or NaNs with the refusal kept (the first one) in `error`.
 template <typename Fitting>
 FilmedHeldOutWalker::Fit fitOrRefusal(Fitting fit, std::string& error) {

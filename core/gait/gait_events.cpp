@@ -14,7 +14,6 @@ int smoothingHalfWidth(double rateHz) {
   return std::max(0, static_cast<int>(std::lround(0.025 * rateHz)));
 }
 
-
 std::vector<double> rowsToSeconds(const Eigen::VectorXd& signal, const std::vector<int>& rows,
                                   double rateHz) {
   std::vector<double> seconds;

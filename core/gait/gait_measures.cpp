@@ -14,7 +14,6 @@
 namespace ew {
 namespace {
 
-
 // A column of the frames at a time in seconds, linear between rows (clamped to the trial).
 double sampleAt(const Eigen::Ref<const Eigen::MatrixXd>& m, int column, double timeS, double rateHz) {
   const double row = std::clamp(timeS * rateHz, 0.0, static_cast<double>(m.rows() - 1));

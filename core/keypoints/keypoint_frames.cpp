@@ -17,7 +17,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-
 json parseJson(const std::string& text, const std::string& file) {
   try {
     return json::parse(text);

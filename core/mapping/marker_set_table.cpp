@@ -22,7 +22,6 @@ namespace {
 using Eigen::Vector3d;
 using nlohmann::json;
 
-
 // Joints are built in this order so a rule only reads joints built before it: hips, then
 // pelvis (mid-hips), legs, trunk, head (needs pelvis and sternum), arms.
 constexpr std::array<Joint, kJointCount> kBuildOrder = {

@@ -25,7 +25,6 @@
 namespace ew {
 namespace {
 
-
 JointMask upperBody() {
   JointMask m{};
   for (Joint j : {Joint::Head, Joint::Sternum, Joint::RShoulder, Joint::RElbow, Joint::RWrist,

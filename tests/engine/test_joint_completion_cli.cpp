@@ -22,7 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
 std::string readText(const fs::path& file) {
   std::ifstream in(file);
   std::ostringstream s;

@@ -17,7 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
 std::string withKeyframes(const std::string& list) {
   return R"({"format": "eigenwalker-keyframes", "version": 1, "video": "clip.mp4", "keyframes": )" +
          list + "}";

@@ -61,7 +61,9 @@ SemanticAxes fitPopulationAxes(const AttributeTable& table, const Population& po
   }
   for (const auto& a : table.attributes) {
     try {
-      SemanticAxisView v{fitSemanticAxis(a, exploreModel.eigenvalues, walkers), {}, a.source};
+      SemanticAxisView v;
+      v.axis = fitSemanticAxis(a, exploreModel.eigenvalues, walkers);
+      v.source = a.source;
       if (!v.axis.steerable) {
         out.notes.push_back(a.name + ": not predictable from the walker (gain " + std::to_string(v.axis.gain).substr(0, 4) + ")");
         continue;
