@@ -600,6 +600,7 @@ class RangeTracker {
     JointTrack t;
     t.firstFrame = range_.first;
     t.fps = video_.info().fps;
+    t.imageSize = {video_.info().widthPx, video_.info().heightPx};
     t.background = background_;
     t.jointsPx = Eigen::MatrixXd::Constant(range_.rows(), kDims2, kNaN);
     t.confidence = Eigen::MatrixXd::Zero(range_.rows(), kJointCount);
@@ -660,6 +661,7 @@ JointTrack trackJoints(VideoSource& video, const Keyframes& keyframes,
 KeypointTrial keypointTrialOf(const JointTrack& track, const std::string& file) {
   KeypointOptions k;
   k.fps = track.fps;
+  if (track.imageSize.width > 0 && track.imageSize.height > 0) k.imageSize = track.imageSize;
   return trialFromJoints(track.jointsPx, track.confidence, file, "tracked video", k);
 }
 

@@ -76,6 +76,7 @@ struct JointTrack {
   Eigen::MatrixXd confidence;  // frames × 15, 0-1 (1 on a keyframe)
   // "flattened", "off", or why the footage has no still background to flatten.
   std::string background = "off";
+  KeypointImageSize imageSize;  // the video's frame (zero: unknown)
 };
 
 // Called with the share done (0-1); returning false cancels (Error(BadArgument) "cancelled").

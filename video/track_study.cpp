@@ -67,8 +67,9 @@ FilmedHeldOutWalker::FilmedHeldOutWalker(const HeldOutSubject& held, double azim
     for (int j = 0; j < kJointCount; ++j) walking(f, 3 * j + 1) += options.speedMmS * times_[f];
   dir_ = footageFolder(options);
   file_ = dir_ / "walk.avi";
-  truthPx_ = writeFootage(file_, walking, cameraBeside(walking, azimuthDeg, options.distanceMm),
-                          options.fps, options.footageSeed);
+  const FootageCamera camera = cameraBeside(walking, azimuthDeg, options.distanceMm);
+  imageSize_ = {camera.widthPx, camera.heightPx};
+  truthPx_ = writeFootage(file_, walking, camera, options.fps, options.footageSeed);
 }
 
 FilmedHeldOutWalker::~FilmedHeldOutWalker() {
@@ -83,6 +84,7 @@ Keyframes FilmedHeldOutWalker::firstFrameMarked() const {
 FilmedHeldOutWalker::Fit FilmedHeldOutWalker::fitToTruth() const {
   KeypointOptions atFps;
   atFps.fps = options_.fps;
+  atFps.imageSize = imageSize_;  // as the track's fit knows it
   return fitOf(trialFromJoints(truthPx_, Eigen::MatrixXd::Ones(truthPx_.rows(), kJointCount),
                                file_.string(), "true 2D", atFps),
                false);

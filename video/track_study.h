@@ -85,6 +85,7 @@ class FilmedHeldOutWalker {
   std::shared_ptr<const EigenwalkerModel> model_;
   Eigen::VectorXd times_;
   Eigen::MatrixXd inPlace_, truthPx_;
+  KeypointImageSize imageSize_;  // the footage's frame
   std::filesystem::path dir_, file_;
   double strideHz_ = 0.0, alphaDeg_ = 0.0;
 

@@ -503,11 +503,13 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(-30.0, 80.0));
   cmd->add_option("--camera", args->camera,
                   "With --unknown-camera: a calibration file (Pose2Sim Calib_*.toml, Sports2D Calib_demo.toml) "
-                  "giving the focal length (and a MediaPipe CSV's image size)")
+                  "giving the focal length and principal point (and a MediaPipe CSV's image size)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--camera-name", args->cameraName, "Which camera of a --camera file with several (its name)");
   cmd->add_option("--image-size", args->imageSize,
-                  "WxH in pixels of the video behind a MediaPipe CSV keypoint input");
+                  "WxH in pixels of the video behind the keypoints: a MediaPipe CSV's coordinates are "
+                  "fractions of it; with --unknown-camera the fit expects the camera's principal point near "
+                  "its centre (docs/CAMERA.md)");
   cmd->add_flag("--orthographic", args->orthographic,
                 "With --unknown-camera and no --focal-px: scaled orthography instead of a pinhole "
                 "whose focal length is estimated (a distant camera)");

@@ -94,6 +94,8 @@ void printSummary(const json& r) {
     std::cerr << ", distance " << std::setprecision(2) << r["distance_m"].get<double>()
               << " m, focal " << std::setprecision(0) << r["focal_px"].get<double>() << " px ("
               << r["focal_source"].get<std::string>() << ")";
+  if (r["camera_model"] == "pinhole")
+    std::cerr << ", principal point prior: " << r["principal_point_prior"].get<std::string>();
   std::cerr << "; reprojection RMS " << std::setprecision(2)
             << r["reprojection_rms_px"].get<double>() << " px";
   if (r["outlier_samples"].get<int>() > 0)
@@ -162,7 +164,18 @@ CameraFitOptions fitOptionsOf(const EigenwalkerModel& model, const CameraArgs& a
   o.alphaDeg = a.alphaDeg;
   o.elevationDeg = a.elevationDeg;
   o.file = a.input;
+  if (calibration && calibration->widthPx > 0 && calibration->heightPx > 0) {
+    o.imageSizePx = Eigen::Vector2d(calibration->widthPx, calibration->heightPx);
+    o.principalPointPx = Eigen::Vector2d(calibration->cxPx, calibration->cyPx);
+  }
   return o;
+}
+
+// Where the fit expected the principal point, for the report.
+std::string principalPointPrior(const CameraFitOptions& o, const KeypointTrial& t) {
+  if (o.principalPointPx) return "the calibration's";
+  if (o.imageSizePx || t.imageSize) return "the image's centre";
+  return "none (the image's size unknown: --image-size gives it)";
 }
 
 int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
@@ -180,6 +193,7 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
   if (report["focal_source"].is_string()) report["focal_source"] = focalSource;
   report["lens_undistorted"] = lens;
   report["stride_source"] = clip.strideSource;
+  report["principal_point_prior"] = principalPointPrior(o, t);
   printSummary(report);
   if (a.json) std::cout << report.dump(2) << "\n";
   return 0;

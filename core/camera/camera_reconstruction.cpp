@@ -97,21 +97,30 @@ struct Problem {
   double dataWeight = 1.0;  // 1 / sqrt(seen samples / 2): a mean over joint-frames
   VectorXd priorWeight;     // sqrt(σ² / λ_n) for MAP, empty for LSQ
   std::vector<int> seen;    // indices into observed (column-major) of seen samples
+  // The principal point's prior: sqrt(σ²) / SD per pixel off it (zero: none), and where it is.
+  double principalPointWeight = 0.0;
+  Eigen::Vector2d principalPointPx = Eigen::Vector2d::Zero();
 };
 
 // The problem on every `stride`-th frame: the seen samples, the data weight and the prior.
-Problem makeProblem(const EigenwalkerModel& model, Layout layout, double focalPx, const MatrixXd& px,
-                    const VectorXd& times, double mmPerPx, const EstimatorOptions& estimator, int stride) {
+Problem makeProblem(const EigenwalkerModel& model, Layout layout, const CameraFitOptions& o, const MatrixXd& px,
+                    const VectorXd& times, double mmPerPx, int stride) {
   const auto rows = (px.rows() + stride - 1) / stride;
   MatrixXd observed(rows, px.cols());
   VectorXd t(rows);
   for (Eigen::Index i = 0; i < rows; ++i) observed.row(i) = px.row(i * stride), t[i] = times[i * stride];
-  Problem p{model, layout, focalPx, observed, t, mmPerPx, 1.0, {}, {}};
+  Problem p{model, layout, o.focalPx.value_or(0.0), observed, t, mmPerPx, 1.0, {}, {}};
   for (Eigen::Index i = 0; i < observed.size(); ++i)
     if (std::isfinite(observed.data()[i])) p.seen.push_back(static_cast<int>(i));
   p.dataWeight = 1.0 / std::sqrt(std::max(1.0, 0.5 * static_cast<double>(p.seen.size()) / kJointCount));
-  if (estimator.estimator == Estimator::Map)
-    p.priorWeight = (estimator.sigma2Mm2 / model.eigenvalues.cwiseMax(1e-12).array()).sqrt().matrix();
+  if (o.estimator.estimator == Estimator::Map)
+    p.priorWeight = (o.estimator.sigma2Mm2 / model.eigenvalues.cwiseMax(1e-12).array()).sqrt().matrix();
+  // In the currency of the coefficients' prior: a principal point one SD off costs what a
+  // coefficient one SD from the mean does. Orthography has no principal point.
+  if (o.imageSizePx && layout.pinhole) {
+    p.principalPointWeight = std::sqrt(o.estimator.sigma2Mm2) / (kPrincipalPointSdShare * o.imageSizePx->maxCoeff());
+    p.principalPointPx = o.principalPointPx.value_or(0.5 * *o.imageSizePx);
+  }
   return p;
 }
 
@@ -149,7 +158,7 @@ MatrixXd imageOf(const Problem& p, const VectorXd& t) { return projectWalk(frame
 // by the camera of θ, then the prior's and the elevation bound's.
 VectorXd residualsOfFrames(const Problem& p, const MatrixXd& frames, const VectorXd& t) {
   const MatrixXd image = projectWalk(frames, p.timesS, cameraOf(p, t));
-  VectorXd r(static_cast<Eigen::Index>(p.seen.size()) + p.priorWeight.size() + 1);
+  VectorXd r(static_cast<Eigen::Index>(p.seen.size()) + p.priorWeight.size() + 3);
   for (std::size_t i = 0; i < p.seen.size(); ++i) {
     const double d = image.data()[p.seen[i]] - p.observed.data()[p.seen[i]];
     // A point behind a pinhole camera: a large, smooth penalty rather than NaN.
@@ -158,6 +167,8 @@ VectorXd residualsOfFrames(const Problem& p, const MatrixXd& frames, const Vecto
   if (p.priorWeight.size() > 0)
     r.segment(static_cast<Eigen::Index>(p.seen.size()), p.priorWeight.size()) =
         p.priorWeight.cwiseProduct(t.head(p.layout.n));
+  const Eigen::Vector2d c(t[p.layout.cx()], t[p.layout.cy()]);
+  r.segment<2>(r.size() - 3) = p.principalPointWeight * (c - p.principalPointPx);
   const double e = t[p.layout.elevation()];
   r[r.size() - 1] = 1e3 * (std::max(0.0, e - kMaxElevationDeg) + std::max(0.0, kMinElevationDeg - e));
   return r;
@@ -412,6 +423,10 @@ std::vector<double> startAngles(const ViewSearch& search, const CameraFitOptions
 void checkOptions(const CameraFitOptions& o) {
   if (o.focalPx && !(std::isfinite(*o.focalPx) && *o.focalPx > 0))
     throw Error(ErrorKind::BadArgument, o.file, "--focal-px", "the focal length must be positive and finite");
+  if (o.imageSizePx && !(o.imageSizePx->allFinite() && o.imageSizePx->minCoeff() > 0))
+    throw Error(ErrorKind::BadArgument, o.file, "image size", "the image's width and height must be positive");
+  if (o.principalPointPx && !o.principalPointPx->allFinite())
+    throw Error(ErrorKind::BadArgument, o.file, "principal point", "the principal point must be finite");
   if (o.alphaDeg && !std::isfinite(*o.alphaDeg))
     throw Error(ErrorKind::BadArgument, o.file, "azimuth", "a fixed azimuth must be finite");
   if (o.elevationDeg && !(*o.elevationDeg >= kMinElevationDeg && *o.elevationDeg <= kMaxElevationDeg))
@@ -561,12 +576,10 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
   const bool pinhole = o.focalPx.has_value() || o.estimateFocal;
   const Layout layout{static_cast<int>(model.eigenvalues.size()), pinhole, pinhole && !o.focalPx,
                       o.alphaDeg.has_value(), o.elevationDeg.has_value(), o.holdStrideHz && o.strideHzHint.has_value()};
-  const Problem p = makeProblem(model, layout, o.focalPx.value_or(0.0), jointsPx, times, 1.0 / start.pxPerMm,
-                                o.estimator, 1);
+  const Problem p = makeProblem(model, layout, o, jointsPx, times, 1.0 / start.pxPerMm, 1);
   // Screening sees every few frames (the walk is smooth; ~8 frames a stride are plenty).
   const int stride = std::max(1, static_cast<int>(rateHz / (kScreeningFramesPerStride * start.fit.omegaRadS / (2 * std::numbers::pi))));
-  const Problem coarse = makeProblem(model, layout, o.focalPx.value_or(0.0), jointsPx, times, 1.0 / start.pxPerMm,
-                                     o.estimator, stride);
+  const Problem coarse = makeProblem(model, layout, o, jointsPx, times, 1.0 / start.pxPerMm, stride);
   const std::vector<double> elevations =
       o.elevationDeg ? std::vector<double>{*o.elevationDeg}
                      : std::vector<double>(std::begin(kStartElevationsDeg), std::end(kStartElevationsDeg));
@@ -598,8 +611,7 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
     if (g.count == 0 || g.shareOfSquares < kGlitchShareToRefit) break;
     kept = g.kept;
     fit.outlierSamples += g.count;
-    const Problem robust = makeProblem(model, layout, o.focalPx.value_or(0.0), kept, times, 1.0 / start.pxPerMm,
-                                       o.estimator, 1);
+    const Problem robust = makeProblem(model, layout, o, kept, times, 1.0 / start.pxPerMm, 1);
     const LmResult again = levenbergMarquardt(robust, theta, o.maxIterations);
     theta = again.theta;
     fillOutputs(robust, theta, fit);

@@ -24,6 +24,12 @@ struct CameraFitOptions {
   // Known view: held at these values instead of estimated (the viewer's "fix" controls).
   std::optional<double> alphaDeg;       // azimuth, SPEC §5
   std::optional<double> elevationDeg;   // camera looking down by this much
+  // The image the joints were found in (width, height px), when known. A pinhole's c_x, c_y
+  // are its principal point, which trades against the tilt when perspective is weak: a
+  // Gaussian prior holds it near principalPointPx (a calibration's), else the image's centre,
+  // with an SD of kPrincipalPointSdShare of the image's longer side (docs/CAMERA.md).
+  std::optional<Eigen::Vector2d> imageSizePx;
+  std::optional<Eigen::Vector2d> principalPointPx;
   std::optional<double> strideHzHint;   // from the image's foot strikes (image_gait.h)
   // Hold the stride frequency at the hint instead of refining it: a hint more trustworthy than
   // the image's limbs (the model loop's trunk bob, when the tracker has lost the feet).
@@ -33,6 +39,11 @@ struct CameraFitOptions {
   int maxIterations = 300;
   std::string file;                     // named in errors
 };
+
+// A real camera's principal point lies near its image's centre (within a few percent); this
+// looser SD also lets the fit's camera, whose axis must cross the walking line and which has
+// no roll, stand for one that does not quite.
+inline constexpr double kPrincipalPointSdShare = 0.25;
 
 struct CameraStart {
   double startAlphaDeg = 0.0, alphaDeg = 0.0, elevationDeg = 0.0;

@@ -388,6 +388,7 @@ KeypointFrames parseMediaPipeCsv(const std::string& text, const std::string& nam
   out.format = "MediaPipe CSV";
   out.pointCount = static_cast<int>(columns.landmarks.size());
   out.layoutHint = "MediaPipe-33";
+  out.imageSize = size;
   std::vector<double> times;
   for (const auto& line : contentLines(lines, header + 1)) addMediaPipeRow(out, line, columns, size, times);
   requireSomebody(out);

@@ -21,6 +21,13 @@ struct KeypointDetection {
   int trackId = -1;  // the estimator's own person id across frames, when it wrote one
 };
 
+// An image's size in pixels: what a MediaPipe CSV's normalised (0-1) coordinates refer to,
+// and where a camera's principal point is expected (its centre).
+struct KeypointImageSize {
+  int width = 0;
+  int height = 0;
+};
+
 struct KeypointFrames {
   std::string file;    // the file or folder as given
   std::string format;  // "OpenPose JSON", "AlphaPose JSON", "MMPose JSON", "MediaPipe CSV", "DeepLabCut CSV"
@@ -28,6 +35,7 @@ struct KeypointFrames {
   std::optional<std::string> layoutHint;  // a layout name the file states (MMPose meta_info)
   std::optional<double> rateHz;           // a frame rate the file states (a CSV time column)
   std::vector<std::string> pointNames;    // the file's own point names (DeepLabCut); else empty
+  std::optional<KeypointImageSize> imageSize;  // the image the points were found in, when stated
   std::vector<std::vector<KeypointDetection>> frames;
   std::vector<std::string> warnings;
 
@@ -50,12 +58,6 @@ bool looksLikeKeypointInput(const std::filesystem::path& path);
 // point count that changes, a keypoint list not a multiple of 3 (2 for MMPose), non-numeric
 // or non-finite values, more frames / points / people than the bounds above, and
 // Error(BadData) when no frame has anybody in it. A .csv path goes to readKeypointCsv.
-// The image a MediaPipe CSV's normalised (0-1) coordinates refer to, in pixels.
-struct KeypointImageSize {
-  int width = 0;
-  int height = 0;
-};
-
 KeypointFrames readKeypointFrames(const std::filesystem::path& path,
                                   const std::optional<KeypointImageSize>& imageSize = std::nullopt);
 

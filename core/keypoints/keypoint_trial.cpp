@@ -344,6 +344,7 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
   t.format = frames.format;
   t.frameCount = frames.frameCount();
   t.warnings = frames.warnings;
+  t.imageSize = options.imageSize ? options.imageSize : frames.imageSize;
   if (options.fps) t.rateHz = checkedFileRateHz(*options.fps, frames.file, "--fps"), t.rateAssumed = false;
   else if (frames.rateHz) t.rateHz = *frames.rateHz, t.rateAssumed = false;
   for (const auto& f : frames.frames) t.maxPeople = std::max(t.maxPeople, static_cast<int>(f.size()));
@@ -395,6 +396,7 @@ KeypointTrial trialFromJoints(const Eigen::MatrixXd& jointsPx, const Eigen::Matr
   t.builtLayout = jointLayout();
   t.layout = t.builtLayout.get();
   t.layoutSource = "the tracker's own joints";
+  t.imageSize = options.imageSize;
   t.jointsPx = jointsPx;
   PersonTrack person;
   for (Eigen::Index f = 0; f < jointsPx.rows(); ++f) {

@@ -65,6 +65,9 @@ struct KeypointTrial {
   std::array<bool, kJointCount> missing{};  // never seen: for the model to estimate
   std::array<double, kJointCount> seenShare{};  // share of the clip's frames the joint has
   std::vector<std::string> warnings;
+  // The image the points were found in (a video's, --image-size, a MediaPipe file's), when
+  // known: the camera fit then expects its principal point near the centre.
+  std::optional<KeypointImageSize> imageSize;
 };
 
 // Follows people across frames: a detection joins the track whose last centre is nearest,

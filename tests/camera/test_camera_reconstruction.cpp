@@ -270,6 +270,38 @@ TEST(CameraReconstruction, SeenFromBehindTheTrunksBobGivesTheStride) {
   }
 }
 
+// A known image (a video's size, or a calibration's principal point): c_x, c_y are the
+// principal point, held near the image's centre by a prior (they trade against the tilt when
+// perspective is weak: the sports2d demo's fit looked 44° down from 43 m until it knew its
+// image; tests/gui/test_gui_video.cpp). A true principal point costs nothing: the camera is
+// recovered exactly; a calibration's principal point 300 px off pulls the fit's towards it at
+// the price of reprojection; an image without a size is refused.
+TEST(CameraReconstruction, AKnownImageHoldsThePrincipalPointNearItsCentre) {
+  const Scene s = filmed(test::crossingPinhole(1500, 5.0));
+  CameraFitOptions o;
+  // Least squares (no prior on the walker, which is not the mean one), the noise scale σ² the
+  // principal point's prior is weighed in.
+  o.estimator = {Estimator::Lsq, defaultSigma2Mm2(defaultRealModel())};
+  o.strideHzHint = 0.95;
+  o.focalPx = 1500;
+  o.imageSizePx = Eigen::Vector2d(1920, 1080);  // its centre is the camera's (960, 540)
+  const CameraFit right = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o);
+  EXPECT_NEAR(right.camera.elevationDeg, 12, 0.05);
+  EXPECT_NEAR(right.camera.distanceMm, 6000, 0.002 * 6000);
+  EXPECT_LT(right.reprojectionRmsPx, 0.1);
+  o.principalPointPx = Eigen::Vector2d(1260, 540);
+  const CameraFit pulled = reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o);
+  EXPECT_GT(pulled.camera.cxPx, 960 + 10) << "pulled towards the calibration's principal point";
+  EXPECT_GT(pulled.reprojectionRmsPx, right.reprojectionRmsPx + 0.1);
+  o.imageSizePx = Eigen::Vector2d(0, 1080);
+  EXPECT_TRUE(test::throwsError([&] { reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o); },
+                                ErrorKind::BadArgument, {"image"}));
+  o.imageSizePx = Eigen::Vector2d(1920, 1080);
+  o.principalPointPx = Eigen::Vector2d(std::numeric_limits<double>::quiet_NaN(), 540);
+  EXPECT_TRUE(test::throwsError([&] { reconstructUnknownCamera(defaultRealModel(), s.px, 30.0, o); },
+                                ErrorKind::BadArgument, {"principal point"}));
+}
+
 // The camera's centre (what the viewer draws): every point on the line from it through the
 // look-at point is imaged at the look-at point's pixel, for any azimuth and elevation.
 TEST(WalkCamera, CentreLiesOnTheOpticalAxis) {

@@ -165,7 +165,9 @@ TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
 // read off that frame by hand, tests/data/sports2d_demo_keyframes.json), frames 40–200 are
 // tracked over the flattened still background, and the walk is fitted through the unknown
 // camera: issue 14's bars, her stride frequency (counted by eye, about 0.80 Hz), a person's
-// stature and a profile view.
+// stature and a profile view; and the camera Sports2D estimated for its demo (Calib_demo.toml:
+// level, focal about 2520 px), which the fit finds only when it knows the image's centre
+// (before: 4046 px; docs/CAMERA.md, "The principal point").
 TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideStatureAndProfile) {
   EW_REQUIRE_SHARED_DATA();
   const fs::path clip = sharedDataDir() / "video" / "sports2d-demo" / "demo.mp4";
@@ -198,12 +200,15 @@ TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideStatureAndProfile) {
   ASSERT_TRUE(fit.is_object()) << s["clip"];
   std::cout << "sports2d, one keyframe: alpha " << fit["alpha_deg"] << " deg, elevation "
             << fit["elevation_deg"] << " deg, stride " << fit["stride_hz"] << " Hz, head height "
-            << fit["head_height_m"] << " m, stature " << fit["stature_m"] << " m\n";
+            << fit["head_height_m"] << " m, stature " << fit["stature_m"] << " m, focal "
+            << fit["focal_px"] << " px, " << fit["distance_m"] << " m away\n";
   EXPECT_GE(fit["stride_hz"].get<double>(), 0.7);  // issue 14's bars
   EXPECT_LE(fit["stride_hz"].get<double>(), 1.3);
   EXPECT_GE(fit["stature_m"].get<double>(), 1.45);
   EXPECT_LE(fit["stature_m"].get<double>(), 1.95);
   EXPECT_NEAR(fit["alpha_deg"].get<double>(), -90.0, 20.0) << "a profile view, walking left";
+  EXPECT_NEAR(fit["elevation_deg"].get<double>(), 0.0, 5.0) << "a level camera";
+  EXPECT_NEAR(fit["focal_px"].get<double>(), 2520.0, 0.25 * 2520.0) << "Sports2D's own estimate";
 }
 
 // Issue 16: Zou et al.'s appearance tracker is chosen in the Track section (the script's
