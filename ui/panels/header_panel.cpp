@@ -11,6 +11,7 @@
 #include "ui/app/app_state.h"
 #include "ui/app/held_model.h"
 #include "ui/app/undo.h"
+#include "ui/panels/camera_text.h"
 #include "ui/widgets/flow.h"
 #include "ui/widgets/text_fit.h"
 
@@ -169,15 +170,15 @@ std::vector<std::string> clipLines(const ClipResult& c) {
   const WalkCamera& cam = f.camera;
   char camera[200], brief[120];
   if (cam.model == CameraModel::Pinhole) {
-    std::snprintf(camera, sizeof camera, "camera: azimuth %.1f° · %.1f° down · focal %.0f px%s · %.2f m away · reprojection %.1f px RMS",
-                  cam.alphaDeg, cam.elevationDeg, cam.focalPx, c.settings.focalPx ? "" : " (est.)",
+    std::snprintf(camera, sizeof camera, "camera: azimuth %.1f° · %s · focal %.0f px%s · %.2f m away · reprojection %.1f px RMS",
+                  cam.alphaDeg, tiltText(cam.elevationDeg).c_str(), cam.focalPx, c.settings.focalPx ? "" : " (est.)",
                   cam.distanceMm / 1000.0, f.reprojectionRmsPx);
-    std::snprintf(brief, sizeof brief, "az %.1f° · %.1f° down · f %.0f px · %.1f m · %.1f px", cam.alphaDeg,
-                  cam.elevationDeg, cam.focalPx, cam.distanceMm / 1000.0, f.reprojectionRmsPx);
+    std::snprintf(brief, sizeof brief, "az %.1f° · %s · f %.0f px · %.1f m · %.1f px", cam.alphaDeg,
+                  tiltText(cam.elevationDeg).c_str(), cam.focalPx, cam.distanceMm / 1000.0, f.reprojectionRmsPx);
   } else {
-    std::snprintf(camera, sizeof camera, "camera (scaled orthography): azimuth %.1f° · %.1f° down · %.3f px/mm · reprojection %.1f px RMS",
-                  cam.alphaDeg, cam.elevationDeg, cam.pxPerMm, f.reprojectionRmsPx);
-    std::snprintf(brief, sizeof brief, "az %.1f° · %.1f° down · %.1f px", cam.alphaDeg, cam.elevationDeg,
+    std::snprintf(camera, sizeof camera, "camera (scaled orthography): azimuth %.1f° · %s · %.3f px/mm · reprojection %.1f px RMS",
+                  cam.alphaDeg, tiltText(cam.elevationDeg).c_str(), cam.pxPerMm, f.reprojectionRmsPx);
+    std::snprintf(brief, sizeof brief, "az %.1f° · %s · %.1f px", cam.alphaDeg, tiltText(cam.elevationDeg).c_str(),
                   f.reprojectionRmsPx);
   }
   const std::string held = heldCameraValues(c.settings);

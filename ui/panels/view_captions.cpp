@@ -7,6 +7,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/panels/camera_text.h"
 #include "ui/panels/clip_view.h"
 #include "ui/render/palette.h"
 
@@ -187,11 +188,12 @@ ViewCaption clipReconstructionCaption(const AppState& s) {
   if (c.model == CameraModel::Pinhole) {
     const ClipWorld w = clipWorld(*s.clip, 0);
     // The camera's distance to the walker's path (the line x = 0 of the walk).
-    std::snprintf(sub, sizeof sub, "camera %.2f m high, %.1f m from the walking line, azimuth %.1f°, %.1f° down",
-                  w.eye.z / 1000.0, std::abs(w.eye.x) / 1000.0, c.alphaDeg, c.elevationDeg);
+    std::snprintf(sub, sizeof sub, "camera %s, %.1f m from the walking line, azimuth %.1f°, %s",
+                  heightOverAnklesText(w.eye.z).c_str(), std::abs(w.eye.x) / 1000.0, c.alphaDeg,
+                  tiltText(c.elevationDeg).c_str());
   } else {
-    std::snprintf(sub, sizeof sub, "scaled orthography: azimuth %.1f°, %.1f° down (distance not estimated; drawn at 5 m)",
-                  c.alphaDeg, c.elevationDeg);
+    std::snprintf(sub, sizeof sub, "scaled orthography: azimuth %.1f°, %s (distance not estimated; drawn at 5 m)",
+                  c.alphaDeg, tiltText(c.elevationDeg).c_str());
   }
   std::vector<LegendItem> legend{{palette::kReconRight, "reconstruction (right side darker)", false},
                                  {palette::kCamera, "estimated camera, its view of the walk", true},
