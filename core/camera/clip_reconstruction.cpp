@@ -86,8 +86,6 @@ ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, Keypo
   c.trial = std::move(trial);
   c.gait = gaitForTheFit(c.trial, fitOptions, c.strideSource);
   if (fitOptions.file.empty()) fitOptions.file = c.trial.file;
-  if (!fitOptions.imageSizePx && c.trial.imageSize)
-    fitOptions.imageSizePx = Eigen::Vector2d(c.trial.imageSize->width, c.trial.imageSize->height);
   c.fit = reconstructDetectedWalker(model, c.trial, fitOptions);
   c.timesS = frameTimes(c.trial.frameCount, c.trial.rateHz);
   c.framesMm = synthesizeFrames(c.fit.w, c.fit.omegaRadS, c.fit.phaseRad, c.timesS);

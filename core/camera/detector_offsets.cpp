@@ -28,7 +28,9 @@ void addOffsets(Eigen::MatrixXd& framesMm, const JointOffsetsMm& offsets) {
 }
 
 CameraFit reconstructDetectedWalker(const EigenwalkerModel& model, const KeypointTrial& trial,
-                                    const CameraFitOptions& options) {
+                                    CameraFitOptions options) {
+  if (!options.imageSizePx && trial.imageSize)
+    options.imageSizePx = Eigen::Vector2d(trial.imageSize->width, trial.imageSize->height);
   if (!anyOffset(trial.detectorOffsetMm)) return reconstructUnknownCamera(model, trial.jointsPx, trial.rateHz, options);
   CameraFit fit = reconstructUnknownCamera(modelAsDetected(model, trial.detectorOffsetMm), trial.jointsPx,
                                            trial.rateHz, options);

@@ -28,8 +28,10 @@ void addOffsets(Eigen::MatrixXd& framesMm, const JointOffsetsMm& offsets);
 
 // reconstructUnknownCamera on the trial's joints, with the trial's detector offsets
 // (KeypointTrial::detectorOffsetMm) accounted for: CameraFit::w is the walker of joint centres.
+// The trial's image, when known and the options give none, is the fit's image (the principal
+// point's prior: CameraFitOptions::imageSizePx).
 CameraFit reconstructDetectedWalker(const EigenwalkerModel& model, const KeypointTrial& trial,
-                                    const CameraFitOptions& options);
+                                    CameraFitOptions options);
 
 // The detector's lateral hip offset learned against the model (docs/KEYPOINTS.md, "Detector
 // hips"): half of how much wider a detector's hips stand than the model's walkers' hip-joint
