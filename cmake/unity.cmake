@@ -31,8 +31,10 @@ function(ew_unity_by_folder target)
     endif()
     math(EXPR filesInGroup "${filesInGroup} + 1")
     get_filename_component(folderName ${folder} NAME)
-    # Sources outside the tree (the generated asset data) are left out of every group.
-    if(src MATCHES "^${PROJECT_SOURCE_DIR}/")
+    # Generated sources (the embedded asset data, in the build tree) are left out of every
+    # group. A prefix test, not a regular expression: a path may hold '+' or '.'.
+    string(FIND "${src}" "${PROJECT_BINARY_DIR}/" inBuildTree)
+    if(NOT inBuildTree EQUAL 0)
       set_source_files_properties(${src} TARGET_DIRECTORY ${target}
         PROPERTIES UNITY_GROUP ${folderName}_${groupIndex})
     endif()
