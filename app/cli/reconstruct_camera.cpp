@@ -173,6 +173,7 @@ CameraFitOptions fitOptionsOf(const EigenwalkerModel& model, const CameraArgs& a
 
 // Where the fit expected the principal point, for the report.
 std::string principalPointPrior(const CameraFitOptions& o, const KeypointTrial& t) {
+  if (!o.focalPx && !o.estimateFocal) return "none (scaled orthography has no principal point)";
   if (o.principalPointPx) return "the calibration's";
   if (o.imageSizePx || t.imageSize) return "the image's centre";
   return "none (the image's size unknown: --image-size gives it)";

@@ -67,6 +67,20 @@ TEST(ReconstructCameraCli, OpenPoseFolderWithTheFocalLengthUnknown) {
   EXPECT_NEAR(r["focal_px"].get<double>(), 1400, 0.05 * 1400);
   EXPECT_NEAR(r["distance_m"].get<double>(), 6.0, 0.05 * 6.0);
   EXPECT_NEAR(r["alpha_deg"].get<double>(), 40, 2.0);
+  EXPECT_EQ(r["principal_point_prior"].get<std::string>().rfind("none", 0), 0u) << "an OpenPose folder has no size";
+  // Given the video's size, the principal point is expected at its centre (where the camera's
+  // is): the same camera comes out.
+  const auto sized = test::runProgram(EW_CLI_PATH,
+                                      {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
+                                       "--image-size", "1920x1080", "--out",
+                                       (clip.parent_path() / "camera_cli_f_sized.csv").string(), "--json"},
+                                      test::makeTempDir("camera_cli_f_sized_run"));
+  ASSERT_EQ(sized.exitCode, 0) << sized.output;
+  const json s = json::parse(sized.output.substr(sized.output.find("{\n")));
+  EXPECT_EQ(s["principal_point_prior"], "the image's centre");
+  EXPECT_NEAR(s["focal_px"].get<double>(), 1400, 0.05 * 1400);
+  EXPECT_NEAR(s["alpha_deg"].get<double>(), 40, 2.0);
+  EXPECT_NEAR(s["image_centre_px"][1].get<double>(), 540, 0.05 * 1080);
 }
 
 TEST(ReconstructCameraCli, UnknownAngleAndProjectAngleDoNotApply) {
@@ -114,6 +128,7 @@ TEST(ReconstructCameraCli, CalibrationFileGivesTheFocalLength) {
   const json r = json::parse(run.output.substr(run.output.find("{\n")));
   EXPECT_EQ(r["focal_px"].get<double>(), 1400.0);
   EXPECT_EQ(r["focal_source"], "calibration file (side)");
+  EXPECT_EQ(r["principal_point_prior"], "the calibration's");
   EXPECT_NEAR(r["distance_m"].get<double>(), 6.0, 0.05 * 6.0);
   // Several cameras and no name, or a focal length twice: refused, naming the choice.
   const auto which = test::runProgram(EW_CLI_PATH,
