@@ -191,6 +191,17 @@ void fillStance(GaitMeasures& g) {
   g.swingPct = 100.0 - g.stancePct;
 }
 
+// Strike-to-strike durations and each foot's off-to-off intervals a plausible stride apart.
+std::vector<double> withFootOffIntervals(std::vector<double> durations, const GaitEventSet& events) {
+  for (const FootEvents* foot : {&events.right, &events.left}) {
+    for (std::size_t i = 0; i + 1 < foot->offsS.size(); ++i) {
+      const double d = foot->offsS[i + 1] - foot->offsS[i];
+      if (d >= 1.0 / kMaxStrideHz && d <= 1.0 / kMinStrideHz) durations.push_back(d);
+    }
+  }
+  return durations;
+}
+
 }  // namespace
 
 GaitMeasures measureGait(const Eigen::Ref<const Eigen::MatrixXd>& m, double rateHz,
@@ -215,6 +226,7 @@ GaitMeasures measureGait(const Eigen::Ref<const Eigen::MatrixXd>& m, double rate
   std::vector<double> durations;
   for (const auto& s : g.strides) durations.push_back(s.nextStrikeS - s.strikeS);
   g.strideTimeS = meanOf(durations);
+  g.strideTimeAllEventsS = meanOf(withFootOffIntervals(durations, events));
   g.cadenceSpm = 120.0 / g.strideTimeS;
   // The frame may carry the walker forward (overground) or not (progression removed): speed
   // is the pelvis's mean velocity relative to the stance feet either way.
@@ -261,6 +273,7 @@ const std::vector<std::string>& flexionCurveNames() {
 double gaitMeasureByName(const GaitMeasures& g, const std::vector<CycleCurve>& curves, const std::string& key) {
   if (key == "cadence_spm") return g.cadenceSpm;
   if (key == "stride_time_s") return g.strideTimeS;
+  if (key == "stride_time_all_events_s") return g.strideTimeAllEventsS;
   if (key == "stride_length_m") return g.strideLengthM;
   if (key == "step_length_r_m") return g.stepLengthRightM;
   if (key == "step_length_l_m") return g.stepLengthLeftM;

@@ -46,7 +46,10 @@ struct StrideRecord {
 struct GaitMeasures {
   GaitEventSet events;
   std::vector<StrideRecord> strides;  // complete strides of both feet, in time order
-  double strideTimeS = NAN;
+  double strideTimeS = NAN;  // strike to strike (the clinical definition)
+  // The gait cycle's period from every event: each foot's strike-to-strike and off-to-off
+  // intervals a stride apart, mean. Twice the intervals of a short trial (docs/GAIT.md).
+  double strideTimeAllEventsS = NAN;
   double cadenceSpm = NAN;
   double stepLengthRightM = NAN;  // the right foot's step (right ankle ahead at right strike)
   double stepLengthLeftM = NAN;
