@@ -56,6 +56,17 @@ TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
       {{"set_frame", 10}},
       {{"wait_frames", 2}},
       {{"export_state", path("opened.json")}},
+      // The arrow keys step the clip's own frames (1/30 s here, not the walker's 1/60 s),
+      // round its ends.
+      {{"key", "right"}},
+      {{"key", "right"}},
+      {{"export_state", path("stepped.json")}},
+      {{"set_frame", 150}},
+      {{"key", "right"}},
+      {{"export_state", path("wrapped.json")}},
+      {{"key", "left"}},
+      {{"export_state", path("wrapped_back.json")}},
+      {{"set_frame", 10}},
       {{"export_png", {{"path", path("input.png")}, {"view", "input"}}}},
       {{"export_png", {{"path", path("recon.png")}, {"view", "reconstruction"}}}},
       {{"screenshot", path("window.png")}},
@@ -91,6 +102,10 @@ TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
   EXPECT_EQ(fit["frames"], 150);
   EXPECT_EQ(fit["people"], 2u);
   EXPECT_EQ(fit["people_in_frame"], json::array({0, 1}));
+  EXPECT_EQ(fit["frame"], 10);
+  EXPECT_EQ(state("stepped.json")["clip"]["fit"]["frame"], 12);
+  EXPECT_EQ(state("wrapped.json")["clip"]["fit"]["frame"], 1);
+  EXPECT_EQ(state("wrapped_back.json")["clip"]["fit"]["frame"], 150);
   // What `reconstruct --unknown-camera` measures on this walk (tests/camera): 1e-3-exact
   // is not expected, the detector's sternum is the shoulders' midpoint.
   EXPECT_NEAR(fit["alpha_deg"].get<double>(), 40.0, 2.0);

@@ -67,12 +67,17 @@ class GuiVideo : public GuiTest {
 };
 
 // While the joints are being marked, Ctrl+Z and Ctrl+Shift+Z undo and redo the keyframe edits
-// (as the marking panel's buttons do), not the settings.
+// (as the marking panel's buttons do), not the settings. Before, the arrow keys step the
+// video's own frames.
 TEST_F(GuiVideo, WhileMarkingCtrlZUndoesTheKeyframes) {
   const Footage f = writeWalkingFootage(dir);
   const json script = json::array({
       {{"open", json::array({f.video.string(), f.keyframes.string()})}},
       {{"video_frame", 30}},
+      // Before a track the arrow keys step the video's own frames.
+      {{"key", "right"}},
+      {{"export_state", path("stepped_untracked.json")}},
+      {{"key", "left"}},
       {{"start_marking", true}},
       {{"mark_joints", {{"head", {10.0, 10.0}}}}},
       {{"export_state", path("marked.json")}},
@@ -87,6 +92,8 @@ TEST_F(GuiVideo, WhileMarkingCtrlZUndoesTheKeyframes) {
   const json marked = state("marked.json")["video"], undone = state("undone.json")["video"];
   const json redone = state("redone.json")["video"];
   ASSERT_TRUE(marked.is_object());
+  EXPECT_EQ(state("stepped_untracked.json")["video"]["shown_frame"], 31);
+  EXPECT_EQ(marked["frame"], 30) << "the left arrow stepped back";
   EXPECT_EQ(undone["undo_steps"].get<int>(), marked["undo_steps"].get<int>() - 1);
   EXPECT_EQ(undone["redo_steps"], 1);
   EXPECT_EQ(undone["keyframes"].size() + 1, marked["keyframes"].size())
@@ -115,6 +122,9 @@ TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
       {{"export_state", path("tracked.json")}},
       {{"export_png", {{"path", path("input.png")}, {"view", "input"}}}},
       {{"screenshot", path("window.png")}},
+      {{"key", "right"}},
+      {{"key", "right"}},
+      {{"export_state", path("stepped_tracked.json")}},
       {{"expect_failure", {{"mark_joints", {{"l_knee", {5000.0, 10.0}}}}}}},
       {{"expect_failure", {{"mark_joints", {{"nose", {10.0, 10.0}}}}}}},
   });
@@ -146,6 +156,8 @@ TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
   EXPECT_NEAR(fit["stride_hz"].get<double>(), f.strideHz, 0.05 * f.strideHz);
   EXPECT_LT(fit["reprojection_rms_px"].get<double>(), 12.0);
   EXPECT_EQ(tracked["video"]["shown_frame"], 45);
+  // One frame of the footage per arrow key (before a track: WhileMarkingCtrlZUndoesTheKeyframes).
+  EXPECT_EQ(state("stepped_tracked.json")["video"]["shown_frame"], 47);
 
   // The 2D view shows the footage (its noise background is no flat dark panel) and the
   // reprojected walker's orange.

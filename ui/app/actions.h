@@ -223,6 +223,12 @@ void closeVideo(AppState& s);
 int shownVideoFrame(const AppState& s);
 // The clip shown is the fit of the open video's last track.
 bool showsTrackFit(const AppState& s);
+// One frame on (delta > 0) or back, of what the views show: the video's own frames while its
+// joints are marked or before it is tracked, the clip's frames (round its ends, as playback
+// loops), else 1/60 s of the synthesised walker's cycle. Pauses a clip or video.
+void stepFrame(AppState& s, int delta);
+// The time one stepFrame moves, in seconds.
+double frameStepS(const AppState& s);
 
 // Number of coefficient sliders in the current mode (0 when nothing is loaded).
 int coefficientCount(const AppState& s);

@@ -50,7 +50,6 @@ void clipMode(AppState& s) {
   if (s.doc.clip || s.video) actions::setMode(s, Mode::Clip);
 }
 
-void stepFrame(AppState& s, int frames) { s.view.playback.step(frames, actions::playbackStrideHz(s)); }
 
 // F12: a PNG of the window in the export folder, named with the time so none is overwritten.
 void screenshot(AppState& s) {
@@ -84,9 +83,9 @@ std::vector<ShortcutRow> makeRows() {
   constexpr bool kRepeats = true;
   return {
       {"Space", "play / pause", {key(GLFW_KEY_SPACE, [](AppState& s) { s.view.playback.playing = !s.view.playback.playing; })}},
-      {"← / →", "step the gait phase by one 1/60 s frame",
-       {key(GLFW_KEY_LEFT, [](AppState& s) { stepFrame(s, -1); }, kRepeats),
-        key(GLFW_KEY_RIGHT, [](AppState& s) { stepFrame(s, 1); }, kRepeats)}},
+      {"← / →", "one frame back / on",
+       {key(GLFW_KEY_LEFT, [](AppState& s) { actions::stepFrame(s, -1); }, kRepeats),
+        key(GLFW_KEY_RIGHT, [](AppState& s) { actions::stepFrame(s, 1); }, kRepeats)}},
       {"[ / ]", "view angle α −1° / +1°",
        {key(GLFW_KEY_LEFT_BRACKET, [](AppState& s) { nudgeAngle(s, -kAngleFineStepDeg); }, kRepeats),
         key(GLFW_KEY_RIGHT_BRACKET, [](AppState& s) { nudgeAngle(s, kAngleFineStepDeg); }, kRepeats)}},

@@ -145,6 +145,7 @@ nlohmann::json clipJson(const AppState& s) {
       {"rate_hz", r.rec.trial.rateHz},
       {"people", r.rec.trial.people.size()},
       {"person", r.rec.trial.chosen},
+      {"frame", clipFrameAt(r, s.view.playback.cycles) + 1},  // counted from 1, as the caption
       {"people_in_frame", peopleInFrame(r.rec.trial, clipFrameAt(r, s.view.playback.cycles))},
       {"alpha_deg", f.camera.alphaDeg},
       {"elevation_deg", f.camera.elevationDeg},

@@ -312,6 +312,38 @@ int shownVideoFrame(const AppState& s) {
   return v.frame;
 }
 
+namespace {
+
+// The video's own frames are stepped (not the clip's): it is marked, or not tracked yet.
+bool stepsVideoFrames(const AppState& s) {
+  return s.doc.mode == Mode::Clip && s.video && (s.video->marking || !showsTrackFit(s));
+}
+
+bool stepsClipFrames(const AppState& s) {
+  return s.doc.mode == Mode::Clip && s.clip && s.clip->rec.trial.frameCount > 0 &&
+         s.clip->rec.fit.strideHz > 0.0;
+}
+
+}  // namespace
+
+void stepFrame(AppState& s, int delta) {
+  if (stepsVideoFrames(s)) {
+    setVideoFrame(s, shownVideoFrame(s) + delta);
+  } else if (stepsClipFrames(s)) {
+    const int n = s.clip->rec.trial.frameCount;
+    const int shown = clipFrameAt(*s.clip, s.view.playback.cycles);
+    setClipFrame(s, ((shown + delta) % n + n) % n + 1);
+  } else {
+    s.view.playback.step(delta, playbackStrideHz(s));
+  }
+}
+
+double frameStepS(const AppState& s) {
+  if (stepsVideoFrames(s) && s.video->fps() > 0.0) return 1.0 / s.video->fps();
+  if (stepsClipFrames(s) && s.clip->rec.trial.rateHz > 0.0) return 1.0 / s.clip->rec.trial.rateHz;
+  return 1.0 / 60.0;
+}
+
 }  // namespace ew::ui::actions
 
 namespace ew::ui {

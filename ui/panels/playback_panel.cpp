@@ -7,19 +7,57 @@
 
 namespace ew::ui {
 
+namespace {
+
+// A frame step's tooltip: how long the frame is (a clip's or video's own, or 1/60 s).
+void stepTooltip(const AppState& s, const char* way) {
+  if (!ImGui::IsItemHovered()) return;
+  const double stepS = actions::frameStepS(s);
+  ImGui::SetTooltip("step %s one frame (1/%.0f s; %s)", way, 1.0 / stepS, way[0] == 'b' ? "←" : "→");
+}
+
+// A keypoint clip plays its frames: the slider picks one (the 3D view follows), counted from 1
+// as the 2D view's caption counts them.
+void clipFrameSlider(AppState& s, const ClipResult& c, bool narrow) {
+  const int shown = clipFrameAt(c, s.view.playback.cycles);
+  int frame = shown + 1;
+  char format[64];
+  std::snprintf(format, sizeof format, narrow ? "%%d / %d" : "frame %%d / %d (%.2f s)", c.rec.trial.frameCount,
+                shown / c.rec.trial.rateHz);
+  if (ImGui::SliderInt("##frame", &frame, 1, c.rec.trial.frameCount, format, ImGuiSliderFlags_AlwaysClamp))
+    actions::setClipFrame(s, frame);
+  if (narrow && ImGui::IsItemHovered()) ImGui::SetTooltip("frame (%.2f s)", shown / c.rec.trial.rateHz);
+}
+
+// A tracked video's clip is played in the video's own frame numbers (from 0, as the video's
+// scrubber, the keyframe files and `track --first/--last` count them), over the tracked range.
+void trackedVideoFrameSlider(AppState& s, bool narrow) {
+  const VideoSession& v = *s.video;
+  int frame = actions::shownVideoFrame(s);
+  const double seconds = v.fps() > 0.0 ? frame / v.fps() : 0.0;
+  char format[64];
+  std::snprintf(format, sizeof format, narrow ? "%%d of %d" : "frame %%d of %d (%.2f s)", v.frameCount(), seconds);
+  if (ImGui::SliderInt("##frame", &frame, v.tracked->track.firstFrame, v.tracked->lastFrame(), format,
+                       ImGuiSliderFlags_AlwaysClamp))
+    actions::setVideoFrame(s, frame);
+  if (narrow && ImGui::IsItemHovered()) ImGui::SetTooltip("video frame (%.2f s)", seconds);
+}
+
+}  // namespace
+
 void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   auto& p = s.view.playback;
   const double strideHz = actions::playbackStrideHz(s);
   if (beginPanel(ctx.backdrop, "##playback", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
     const float bw = 36.0f * ctx.scale;
-    if (ImGui::Button("|<", ImVec2(bw, 0))) p.step(-1, strideHz);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("step back one frame (1/60 s)");
+    if (ImGui::Button("|<", ImVec2(bw, 0))) actions::stepFrame(s, -1);
+    stepTooltip(s, "back");
     ImGui::SameLine();
     if (ImGui::Button(p.playing ? "||" : ">", ImVec2(bw * 1.4f, 0))) p.playing = !p.playing;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("play / pause (space)");
     ImGui::SameLine();
-    if (ImGui::Button(">|", ImVec2(bw, 0))) p.step(1, strideHz);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("step forward one frame (1/60 s)");
+    if (ImGui::Button(">|", ImVec2(bw, 0))) actions::stepFrame(s, 1);
+    stepTooltip(s, "on");
     ImGui::SameLine();
     // A narrow row (a small window, a large UI scale) shares what is left between the two
     // sliders and shortens their labels rather than pushing the phase slider off the edge.
@@ -31,17 +69,10 @@ void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
     if (s.doc.mode == Mode::Clip && s.clip && strideHz > 0.0) {
-      // A keypoint clip plays its frames: the slider picks one (the 3D view follows).
-      const ClipResult& c = *s.clip;
-      const int shown = clipFrameAt(c, p.cycles);
-      int frame = shown + 1;  // counted from 1, as the 2D view's caption says
-      char format[64];
-      std::snprintf(format, sizeof format, narrow ? "%%d / %d" : "frame %%d / %d (%.2f s)", c.rec.trial.frameCount,
-                    shown / c.rec.trial.rateHz);
-      if (ImGui::SliderInt("##frame", &frame, 1, c.rec.trial.frameCount, format, ImGuiSliderFlags_AlwaysClamp)) {
-        actions::setClipFrame(s, frame);
-      }
-      if (narrow && ImGui::IsItemHovered()) ImGui::SetTooltip("frame (%.2f s)", shown / c.rec.trial.rateHz);
+      if (actions::showsTrackFit(s))
+        trackedVideoFrameSlider(s, narrow);
+      else
+        clipFrameSlider(s, *s.clip, narrow);
     } else {
       float phase = static_cast<float>(p.phase());
       if (ImGui::SliderFloat("##phase", &phase, 0.0f, 1.0f, narrow ? "phase %.2f" : "gait phase %.3f",

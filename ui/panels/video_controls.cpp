@@ -164,7 +164,7 @@ void modelLoopChoice(AppState& s, const VideoSession& v) {
   int rounds = v.modelLoopRounds;
   ImGui::SetNextItemWidth(-1.0f);
   if (ImGui::SliderInt("##loop", &rounds, 0, 10,
-                       rounds == 0 ? "model loop: off" : "model loop: %d rounds"))
+                       rounds == 0 ? "model loop: off" : rounds == 1 ? "model loop: 1 round" : "model loop: %d rounds"))
     apply(s, [&] { actions::setModelLoopRounds(s, rounds); });
   ImGui::EndDisabled();
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
