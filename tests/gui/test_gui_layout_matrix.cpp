@@ -1,7 +1,8 @@
 // Issue 18's layout matrix, in the real viewer: at the teaching sizes where the layout is
 // tightest (a small window, a large UI scale, the projector theme) no window or table column
 // has content cut at its edge, and no caption, legend or colour bar covers the walker of its
-// view — in both modes, with every drawer tab shown in turn, and in presentation mode. The
+// view — in both modes, with every drawer tab shown in turn, with the three engines' gait
+// report open, and in presentation mode. The
 // viewer reports what it laid out (export_state's layout.overflow and layout.overlays); the
 // whole matrix's screenshots are docs/screenshots/layout_matrix_*.png
 // (docs/tools/layout_contact_sheet.sh).
@@ -37,8 +38,13 @@ TEST_F(GuiLayoutMatrix, NothingIsCutAndNothingCoversTheWalker) {
                   (dir / (states.back() + ".json")).string() + R"("})";
       }
     }
+    // The gait report of the three engines: the widest table the viewer draws.
+    states.push_back("gait_report");
+    script += R"(, {"set_mode": "reconstruct"}, {"compare_engines": true}, {"show_panel": ["gait", true]},
+                 {"wait_frames": 3}, {"export_state": ")" +
+              (dir / "gait_report.json").string() + R"("}, {"show_panel": ["gait", false]}, {"compare_engines": false})";
     states.push_back("presentation");
-    script += R"(, {"set_mode": "reconstruct"}, {"presentation": true}, {"wait_frames": 2}, {"export_state": ")" +
+    script += R"(, {"presentation": true}, {"wait_frames": 2}, {"export_state": ")" +
               (dir / "presentation.json").string() + R"("}])";
     const RunResult r = runViewer(dir, std::string("--size ") + c.size + " --ui-scale " + c.scale + " --script " +
                                            quote(writeScript(dir, script).string()));

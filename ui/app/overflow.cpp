@@ -26,15 +26,18 @@ std::vector<std::pair<std::string, float>> windowsCutOnTheRight() {
     if ((w->Flags & ImGuiWindowFlags_NoScrollbar) && w->DC.CursorMaxPos.y > clipBottom + 1.0f)
       cut.emplace_back(std::string(w->Name) + " (bottom)", w->DC.CursorMaxPos.y - clipBottom);
   }
-  // A table's cells clip their content at the column's edge, unseen by its window's reach.
+  // A table's cells clip their content at the column's edge, unseen by its window's reach, and
+  // its headings end in an ellipsis. (A table that scrolls sideways shows the rest when
+  // scrolled, as a window with a horizontal scroll bar does.)
   ImGuiContext& g = *ImGui::GetCurrentContext();
   for (int i = 0; i < g.Tables.GetMapSize(); ++i) {
     const ImGuiTable* t = g.Tables.TryGetMapData(i);
-    if (!t || t->LastFrameActive != g.FrameCount || !t->OuterWindow) continue;
+    if (!t || t->LastFrameActive != g.FrameCount || !t->OuterWindow || (t->Flags & ImGuiTableFlags_ScrollX)) continue;
     for (int c = 0; c < t->ColumnsCount; ++c) {
       const ImGuiTableColumn& col = t->Columns[c];
       if (!col.IsEnabled || !col.IsVisibleX) continue;
-      const float over = std::max(col.ContentMaxXUnfrozen, col.ContentMaxXFrozen) - col.ClipRect.Max.x;
+      const float reach = std::max({col.ContentMaxXUnfrozen, col.ContentMaxXFrozen, col.ContentMaxXHeadersIdeal});
+      const float over = reach - col.ClipRect.Max.x;
       if (over > 1.0f)
         cut.emplace_back(std::string(t->OuterWindow->Name) + " / table " + std::to_string(t->ID) + " column " +
                              std::to_string(c),

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include "core/engines/engine.h"
@@ -91,36 +92,89 @@ std::string valueText(double v, int decimals) {
   return buf;
 }
 
-void drawTable(const GaitPanel& p, bool withMocap) {
+// One cell's text and colour (0: the disabled text's).
+struct TableCell {
+  std::string text;
+  ImU32 colour = 0;
+};
+
+// The table's headings and cells, column by column: the measure, motion capture, each column
+// shown, the population's band.
+struct TableText {
+  std::vector<std::string> headings;
+  std::vector<std::vector<TableCell>> rows;
+};
+
+TableText tableText(const GaitPanel& p, bool withMocap) {
+  TableText t;
+  t.headings.push_back("measure");
+  t.headings.push_back(withMocap ? "motion capture" : "–");
+  for (const auto& c : p.columns) t.headings.push_back(c.label);
+  t.headings.push_back("population mean ± SD");
   const auto& rows = gaitRows();
-  const int n = 3 + static_cast<int>(p.columns.size());
-  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
-  if (!ImGui::BeginTable("gait_table", n, flags)) return;
-  ImGui::TableSetupColumn("measure", ImGuiTableColumnFlags_WidthStretch, 1.6f);
-  ImGui::TableSetupColumn(withMocap ? "motion capture" : "–", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-  for (const auto& c : p.columns) ImGui::TableSetupColumn(c.label.c_str(), ImGuiTableColumnFlags_WidthStretch, 1.2f);
-  ImGui::TableSetupColumn("population mean ± SD", ImGuiTableColumnFlags_WidthStretch, 1.3f);
-  ImGui::TableHeadersRow();
   for (size_t r = 0; r < rows.size(); ++r) {
     const double mean = p.band ? p.band->rowMean[r] : NAN, sd = p.band ? p.band->rowSd[r] : NAN;
-    ImGui::TableNextRow();
-    ImGui::TableNextColumn();
-    ImGui::TextUnformatted(rows[r].label);
-    ImGui::TableNextColumn();
-    ImGui::PushStyleColor(ImGuiCol_Text, mocapColour());
-    ImGui::TextUnformatted(withMocap ? valueText(gaitRowValue(p.mocap, rows[r].key), rows[r].decimals).c_str() : "");
-    ImGui::PopStyleColor();
+    std::vector<TableCell> row;
+    row.push_back({rows[r].label, ImGui::GetColorU32(ImGuiCol_Text)});
+    row.push_back({withMocap ? valueText(gaitRowValue(p.mocap, rows[r].key), rows[r].decimals) : "", mocapColour()});
     for (const auto& c : p.columns) {
-      ImGui::TableNextColumn();
       const double b = gaitRowValue(c.summary, rows[r].key);
       // Outside the population's mean ± 2 SD: marked, as a gait report flags a measure.
       const bool outside = std::isfinite(b) && std::isfinite(sd) && sd > 0 && std::abs(b - mean) > 2.0 * sd;
-      ImGui::PushStyleColor(ImGuiCol_Text, reconColour(c.engine));
-      ImGui::TextUnformatted((valueText(b, rows[r].decimals) + (outside ? "  (beyond 2 SD)" : "")).c_str());
+      row.push_back({valueText(b, rows[r].decimals) + (outside ? "  (beyond 2 SD)" : ""), reconColour(c.engine)});
+    }
+    row.push_back({valueText(mean, rows[r].decimals) + " ± " + valueText(sd, rows[r].decimals), bandColour()});
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+// Each column's width for its widest text, padding included.
+std::vector<float> naturalWidths(const TableText& t) {
+  const float pad = 2.0f * ImGui::GetStyle().CellPadding.x;
+  std::vector<float> widths;
+  for (const auto& h : t.headings) widths.push_back(ImGui::CalcTextSize(h.c_str()).x + pad);
+  for (const auto& row : t.rows)
+    for (size_t c = 0; c < row.size(); ++c)
+      widths[c] = std::max(widths[c], ImGui::CalcTextSize(row[c].text.c_str()).x + pad);
+  return widths;
+}
+
+// The columns share the window's width as their text does. A window too narrow for the text
+// (a small one, a large UI scale) scrolls the table sideways with the measure's column held,
+// rather than cutting values, headings or "beyond 2 SD" short.
+void drawTable(const GaitPanel& p, bool withMocap) {
+  const TableText t = tableText(p, withMocap);
+  const std::vector<float> widths = naturalWidths(t);
+  float total = 0.0f;
+  for (float w : widths) total += w;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const bool fits = total <= ImGui::GetContentRegionAvail().x;
+  ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV;
+  ImVec2 outer(0.0f, 0.0f);
+  if (fits) {
+    flags |= ImGuiTableFlags_SizingStretchProp;
+  } else {
+    flags |= ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX;
+    const float rowH = ImGui::GetTextLineHeight() + 2.0f * style.CellPadding.y;
+    outer.y = static_cast<float>(t.rows.size() + 1) * rowH + style.ScrollbarSize + 2.0f * style.CellPadding.y;
+  }
+  const int n = static_cast<int>(t.headings.size());
+  if (!ImGui::BeginTable("gait_table", n, flags, outer)) return;
+  if (!fits) ImGui::TableSetupScrollFreeze(1, 0);
+  for (int c = 0; c < n; ++c)
+    ImGui::TableSetupColumn(t.headings[static_cast<size_t>(c)].c_str(),
+                            fits ? ImGuiTableColumnFlags_WidthStretch : ImGuiTableColumnFlags_WidthFixed,
+                            fits ? widths[static_cast<size_t>(c)] : 0.0f);
+  ImGui::TableHeadersRow();
+  for (const auto& row : t.rows) {
+    ImGui::TableNextRow();
+    for (const TableCell& cell : row) {
+      ImGui::TableNextColumn();
+      ImGui::PushStyleColor(ImGuiCol_Text, cell.colour);
+      ImGui::TextUnformatted(cell.text.c_str());
       ImGui::PopStyleColor();
     }
-    ImGui::TableNextColumn();
-    ImGui::TextDisabled("%s ± %s", valueText(mean, rows[r].decimals).c_str(), valueText(sd, rows[r].decimals).c_str());
   }
   ImGui::EndTable();
 }
@@ -171,10 +225,14 @@ void drawLegend(const GaitPanel& gp, bool withMocap, float scale) {
   const float h = ImGui::GetTextLineHeight();
   bool first = true;
   auto entry = [&](ImU32 colour, const char* label, bool band) {
-    if (!first) ImGui::SameLine(0.0f, 18.0f * scale);
+    const float w = 24.0f * scale;
+    const float entryW = w + 6.0f * scale + ImGui::CalcTextSize(label).x;
+    if (!first) {
+      ImGui::SameLine(0.0f, 18.0f * scale);
+      if (ImGui::GetContentRegionAvail().x < entryW) ImGui::NewLine();  // wraps, as text does
+    }
     first = false;
     const ImVec2 p = ImGui::GetCursorScreenPos();
-    const float w = 24.0f * scale;
     if (band) {
       dl->AddRectFilled(ImVec2(p.x, p.y + 0.2f * h), ImVec2(p.x + w, p.y + 0.8f * h),
                         (colour & ~IM_COL32_A_MASK) | (static_cast<ImU32>(70) << IM_COL32_A_SHIFT));
