@@ -2,7 +2,7 @@
 // tightest (a small window, a large UI scale, the projector theme) no window or table column
 // has content cut at its edge, and no caption, legend or colour bar covers the walker of its
 // view — in both modes, with every drawer tab shown in turn, with the three engines' gait
-// report open, and in presentation mode. The
+// report open, with the analysis window open, and in presentation mode. The
 // viewer reports what it laid out (export_state's layout.overflow and layout.overlays); the
 // whole matrix's screenshots are docs/screenshots/layout_matrix_*.png
 // (docs/tools/layout_contact_sheet.sh).
@@ -43,6 +43,9 @@ TEST_F(GuiLayoutMatrix, NothingIsCutAndNothingCoversTheWalker) {
     script += R"(, {"set_mode": "reconstruct"}, {"compare_engines": true}, {"show_panel": ["gait", true]},
                  {"wait_frames": 3}, {"export_state": ")" +
               (dir / "gait_report.json").string() + R"("}, {"show_panel": ["gait", false]}, {"compare_engines": false})";
+    states.push_back("analysis");
+    script += R"(, {"show_panel": ["analysis", true]}, {"wait_frames": 3}, {"export_state": ")" +
+              (dir / "analysis.json").string() + R"("}, {"show_panel": ["analysis", false]})";
     states.push_back("presentation");
     script += R"(, {"presentation": true}, {"wait_frames": 2}, {"export_state": ")" +
               (dir / "presentation.json").string() + R"("}])";

@@ -13,6 +13,7 @@
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
 #include "ui/render/palette.h"
+#include "ui/widgets/flow.h"
 #include "ui/widgets/plot.h"
 
 namespace ew::ui {
@@ -38,52 +39,27 @@ std::string axisLabel(ErrorMetric m) {
 
 }  // namespace
 
-void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
-  if (!open) return;
-  const ImVec2 display = ImGui::GetIO().DisplaySize;
-  if (s.panels.tour.active && s.panels.tour.lastHeight > 0.0f) {
-    // During the tour: between the header and the tour's window.
-    const float tourBottom = s.panels.tour.bottom > 0.0f ? s.panels.tour.bottom : display.y;
-    const float top = 52.0f * ctx.scale, bottom = tourBottom - s.panels.tour.lastHeight - 28.0f * ctx.scale;
-    ImGui::SetNextWindowSize(ImVec2(display.x * 0.62f, std::max(200.0f, bottom - top)), ImGuiCond_Always);
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, top), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
-  } else {
-    ImGui::SetNextWindowSize(ImVec2(display.x * 0.62f, display.y * 0.78f), ImGuiCond_Appearing);
-    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.53f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  }
-  if (!ImGui::Begin("Analysis: error against view angle (leave-one-subject-out)", &open,
-                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
-                        ImGuiWindowFlags_NoScrollbar)) {
-    ImGui::End();
-    return;
-  }
-  actions::requestAnalysis(s);
-  const auto result = s.analysis.find(actions::analysisKey(s));
-  const Walker* selected = s.doc.selectedWalker();
-  const std::string subject = selected ? selected->subject : std::string();
-
-  // Controls.
+void AnalysisPanel::drawControls(AppState& s, float scale) {
   ImGui::AlignTextToFramePadding();
   ImGui::TextDisabled("metric");
-  ImGui::SameLine();
   int m = static_cast<int>(metric);
-  ImGui::RadioButton("E_a (mm²)", &m, 0);
-  ImGui::SameLine();
-  ImGui::RadioButton("E_r", &m, 1);
-  ImGui::SameLine();
-  ImGui::RadioButton("MPJPE (mm)", &m, 2);
+  const char* metrics[] = {"E_a (mm²)", "E_r", "MPJPE (mm)"};
+  for (int k = 0; k < 3; ++k) {
+    sameLineOrWrap(toggleWidth(metrics[k]));
+    ImGui::RadioButton(metrics[k], &m, k);
+  }
   metric = static_cast<ErrorMetric>(m);
-  ImGui::SameLine(0.0f, 24.0f * ctx.scale);
+  sameLineOrWrap(toggleWidth("LSQ"));
   ImGui::Checkbox("LSQ", &showLsq);
-  ImGui::SameLine();
+  sameLineOrWrap(toggleWidth("MAP"));
   ImGui::Checkbox("MAP", &showMap);
-  ImGui::SameLine();
+  sameLineOrWrap(toggleWidth("other engines"));
   ImGui::Checkbox("other engines", &showEngines);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("The snippet and skeleton engines at every view (leave-one-subject-out, each walker walked\n"
                       "2 cycles at 1.3 m/s): MPJPE and E_a. On in compare mode.");
-  ImGui::SameLine(0.0f, 24.0f * ctx.scale);
-  ImGui::SetNextItemWidth(220.0f * ctx.scale);
+  sameLineOrWrap(220.0f * scale + ImGui::GetStyle().ItemSpacing.x + buttonWidth("Export CSV"));
+  ImGui::SetNextItemWidth(220.0f * scale);
   ImGui::InputText("##csv", csvPath.data(), csvPath.size());
   ImGui::SameLine();
   if (ImGui::Button("Export CSV")) {
@@ -95,20 +71,51 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
       s.log.error(status);
     }
   }
+}
 
+void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
+  if (!open) return;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  if (s.panels.tour.active && s.panels.tour.lastHeight > 0.0f) {
+    // During the tour: between the header and the tour's window.
+    const float tourBottom = s.panels.tour.bottom > 0.0f ? s.panels.tour.bottom : display.y;
+    const float top = 52.0f * ctx.scale, bottom = tourBottom - s.panels.tour.lastHeight - 28.0f * ctx.scale;
+    ImGui::SetNextWindowSize(ImVec2(display.x * 0.62f, std::max(200.0f, bottom - top)), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, top), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  } else {
+    // Most of a small window or a large UI scale's, as the gait report.
+    const float width = std::min(display.x - 40.0f * ctx.scale, std::max(display.x * 0.62f, 900.0f * ctx.scale));
+    const float height = std::min(display.y - 80.0f * ctx.scale, std::max(display.y * 0.78f, 640.0f * ctx.scale));
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
+    ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.53f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  }
+  // Scrolls only when the plots' least sizes do not fit (a short window, a large UI scale).
+  if (!ImGui::Begin("Analysis: error against view angle (leave-one-subject-out)", &open,
+                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  actions::requestAnalysis(s);
+  const auto result = s.analysis.find(actions::analysisKey(s));
+  const Walker* selected = s.doc.selectedWalker();
+  const std::string subject = selected ? selected->subject : std::string();
+
+  drawControls(s, ctx.scale);
   if (s.jobs.analysis.running()) {
     ImGui::ProgressBar(s.jobs.analysis.fraction(), ImVec2(-1.0f, 0.0f),
                        ("computing: " + s.jobs.analysis.what()).c_str());
   } else if (!s.jobs.analysisError.empty()) {
     ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", s.jobs.analysisError.c_str());
   } else if (result) {
-    ImGui::TextDisabled("%zu held-out subjects · σ² = %.0f mm² · N = %s · %.1f s (cached by inputs)%s%s",
-                        result->subjects.size(), result->key.sigma2Mm2,
-                        result->key.components > 0 ? std::to_string(result->key.components).c_str() : "95 % per fold",
-                        result->seconds, status.empty() ? "" : " · ", status.c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("%zu held-out subjects · σ² = %.0f mm² · N = %s · %.1f s (cached by inputs)%s%s",
+                       result->subjects.size(), result->key.sigma2Mm2,
+                       result->key.components > 0 ? std::to_string(result->key.components).c_str() : "95 % per fold",
+                       result->seconds, status.empty() ? "" : " · ", status.c_str());
     if (!result->engines.empty() && metric == ErrorMetric::Relative)
-      ImGui::TextDisabled("E_r needs the variance of the missing depth of the eigenwalker's model: the other engines "
-                          "show MPJPE and E_a");
+      ImGui::TextWrapped("E_r needs the variance of the missing depth of the eigenwalker's model: the other engines "
+                         "show MPJPE and E_a");
+    ImGui::PopStyleColor();
   }
   if (!result) {
     if (!s.jobs.analysis.running() && s.jobs.analysisError.empty()) ImGui::TextDisabled("waiting for data…");
@@ -118,7 +125,10 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
 
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float gap = 10.0f * ctx.scale;
-  const float topH = avail.y * 0.58f;
+  // The two small plots side by side while each keeps 300 px of the UI's width, else one
+  // under the other; no plot shorter than its axes and legend need.
+  const bool sideBySide = 0.5f * (avail.x - gap) >= 300.0f * ctx.scale;
+  const float topH = std::max(avail.y * (sideBySide ? 0.58f : 0.4f), 180.0f * ctx.scale);
 
   // Error against view angle.
   std::vector<std::vector<double>> ys;
@@ -166,8 +176,9 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   drawPlot("##angle", ImVec2(avail.x, topH), angleSpec, series, ctx.scale);
 
   // σ² sweep and spectrum side by side.
-  const float bottomH = avail.y - topH - gap * 0.5f - 2.0f * ImGui::GetStyle().ItemSpacing.y - 2.0f;
-  const float halfW = 0.5f * (avail.x - gap);
+  const float rest = avail.y - topH - gap * 0.5f - 2.0f * ImGui::GetStyle().ItemSpacing.y - 2.0f;
+  const float bottomH = std::max(sideBySide ? rest : 0.5f * (rest - ImGui::GetStyle().ItemSpacing.y), 120.0f * ctx.scale);
+  const float halfW = sideBySide ? 0.5f * (avail.x - gap) : avail.x;
   std::vector<double> sx, mapY, lsqY;
   for (const auto& row : result->sigmaSweep) {
     if (row.method == "map") {
@@ -207,7 +218,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
     std::snprintf(nLabel, sizeof nLabel, "N = %d", r->components);
     spectrumSpec.markers.push_back({static_cast<double>(r->components), nLabel, ImGui::ColorConvertFloat4ToU32(goodTextColour())});
   }
-  ImGui::SameLine(0.0f, gap);
+  if (sideBySide) ImGui::SameLine(0.0f, gap);
   drawPlot("##spectrum", ImVec2(halfW, bottomH), spectrumSpec, spectrumSeries, ctx.scale);
   ImGui::End();
 }

@@ -28,6 +28,10 @@ struct AnalysisPanel {
   std::string status;
 
   void draw(AppState& s, const FrameContext& ctx);
+
+ private:
+  // The metric, the curves shown and the CSV export: a row that wraps where the window ends.
+  void drawControls(AppState& s, float scale);
 };
 
 }  // namespace ew::ui

@@ -35,6 +35,63 @@ std::string tickLabel(double v, const std::string& unit, bool /*log*/) {
   return buf;
 }
 
+void dashedLine(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 c, float t, float dash);
+
+// `text` cut to `width` with an ellipsis (an axis label longer than a small plot is wide).
+std::string elided(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  const char* ellipsis = "…";
+  const float room = width - ImGui::CalcTextSize(ellipsis).x;
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    std::size_t n = 1;  // one UTF-8 character
+    while (i + n < text.size() && (static_cast<unsigned char>(text[i + n]) & 0xC0) == 0x80) ++n;
+    if (ImGui::CalcTextSize((out + text.substr(i, n)).c_str()).x > room) break;
+    out += text.substr(i, n);
+    i += n;
+  }
+  return out + ellipsis;
+}
+
+// Every k-th of `ticks` (k ≥ 1), so that labels `extent` px apart in the plot stay `need` px apart.
+std::vector<double> thinned(const std::vector<double>& ticks, float extent, float need) {
+  if (ticks.size() < 3 || need <= 0.0f) return ticks;
+  const float spacing = extent / static_cast<float>(ticks.size() - 1);
+  const auto k = static_cast<std::size_t>(std::ceil(need / std::max(spacing, 1.0f)));
+  if (k <= 1) return ticks;
+  std::vector<double> out;
+  for (std::size_t i = 0; i < ticks.size(); i += k) out.push_back(ticks[i]);
+  return out;
+}
+
+// The legend's entries flowed into rows across `width` (a legend below the plot).
+struct LegendRows {
+  std::vector<int> rowOf;  // per series
+  int rows = 0;
+};
+LegendRows flowLegend(std::span<const PlotSeries> series, float width, float swatch, float pad) {
+  LegendRows out;
+  float x = 0.0f;
+  for (const auto& s : series) {
+    const float w = swatch + pad + ImGui::CalcTextSize(s.label.c_str()).x + 2.0f * pad;
+    if (out.rows == 0 || (x > 0.0f && x + w > width)) {
+      ++out.rows;
+      x = 0.0f;
+    }
+    out.rowOf.push_back(out.rows - 1);
+    x += w;
+  }
+  return out;
+}
+
+void legendSwatch(ImDrawList* dl, const PlotSeries& s, ImVec2 s0, ImVec2 s1, float scale) {
+  if (s.dashed) {
+    dashedLine(dl, s0, s1, s.colour, s.thickness * scale, 4.0f * scale);
+  } else {
+    dl->AddLine(s0, s1, s.colour, s.thickness * scale);
+  }
+}
+
 void dashedLine(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 c, float t, float dash) {
   const float dx = b.x - a.x, dy = b.y - a.y;
   const float len = std::sqrt(dx * dx + dy * dy);
@@ -128,14 +185,27 @@ void drawPlot(const char* id, const ImVec2& size, const PlotSpec& spec, std::spa
   }
   float labelW = 0.0f;
   for (double v : yTicks) labelW = std::max(labelW, ImGui::CalcTextSize(tickLabel(v, "", spec.yLog).c_str()).x);
+  // The legend stands inside the plot while it leaves most of the plot clear; else it goes in
+  // rows under the x axis's label, and the plot gives up the height.
+  const float swatch = 22.0f * scale, lpad = 6.0f * scale, rowH = textH + 2.0f * scale;
+  float legendTextW = 0.0f;
+  for (const auto& sr : series) legendTextW = std::max(legendTextW, ImGui::CalcTextSize(sr.label.c_str()).x);
+  const bool legendShown = !series.empty() && spec.legend;
+  const float insideW = legendTextW + swatch + 3.0f * lpad, insideH = static_cast<float>(series.size()) * rowH + lpad;
+  const float fullPlotW = size.x - labelW - 16.0f * scale, fullPlotH = size.y - 3.0f * textH - 14.0f * scale;
+  const bool legendBelow = legendShown && (insideW > 0.45f * fullPlotW || insideH > 0.33f * fullPlotH);
+  const LegendRows legendRows = legendBelow ? flowLegend(series, size.x, swatch, lpad) : LegendRows{};
+  const float belowH = legendBelow ? static_cast<float>(legendRows.rows) * rowH + 4.0f * scale : 0.0f;
   const ImVec2 a{p0.x + labelW + 8.0f * scale, p0.y + textH + 6.0f * scale};
-  const ImVec2 b{p0.x + size.x - 8.0f * scale, p0.y + size.y - 2.0f * textH - 8.0f * scale};
+  const ImVec2 b{p0.x + size.x - 8.0f * scale, p0.y + size.y - 2.0f * textH - 8.0f * scale - belowH};
   if (b.x - a.x < 20.0f || b.y - a.y < 20.0f) return;
   auto X = [&](double v) { return a.x + static_cast<float>((tx(v) - x0) / (x1 - x0)) * (b.x - a.x); };
   auto Y = [&](double v) { return b.y - static_cast<float>((ty(v) - y0) / (y1 - y0)) * (b.y - a.y); };
+  // Decades too close for their labels: every second (third, …) one.
+  if (spec.yLog) yTicks = thinned(yTicks, b.y - a.y, 1.2f * textH);
 
   dl->AddRectFilled(a, b, frameC);
-  dl->AddText(ImVec2(p0.x, p0.y), dimC, spec.yLabel.c_str());
+  dl->AddText(ImVec2(p0.x, p0.y), dimC, elided(spec.yLabel, size.x).c_str());
   for (double v : yTicks) {
     const float y = Y(v);
     dl->AddLine(ImVec2(a.x, y), ImVec2(b.x, y), gridC);
@@ -148,6 +218,9 @@ void drawPlot(const char* id, const ImVec2& size, const PlotSpec& spec, std::spa
   } else {
     xTicks = niceTicks(x0, x1, std::max(2, static_cast<int>((b.x - a.x) / (70.0f * scale))));
   }
+  float tickW = 0.0f;
+  for (double v : xTicks) tickW = std::max(tickW, ImGui::CalcTextSize(tickLabel(v, spec.xUnit, spec.xLog).c_str()).x);
+  xTicks = thinned(xTicks, b.x - a.x, tickW + 8.0f * scale);
   for (double v : xTicks) {
     const float x = X(v);
     dl->AddLine(ImVec2(x, a.y), ImVec2(x, b.y), gridC);
@@ -155,8 +228,9 @@ void drawPlot(const char* id, const ImVec2& size, const PlotSpec& spec, std::spa
     const float w = ImGui::CalcTextSize(l.c_str()).x;
     dl->AddText(ImVec2(std::clamp(x - 0.5f * w, p0.x, p0.x + size.x - w), b.y + 3.0f * scale), dimC, l.c_str());
   }
-  const float xlw = ImGui::CalcTextSize(spec.xLabel.c_str()).x;
-  dl->AddText(ImVec2(0.5f * (a.x + b.x - xlw), b.y + textH + 5.0f * scale), dimC, spec.xLabel.c_str());
+  const std::string xLabel = elided(spec.xLabel, size.x);
+  const float xlw = ImGui::CalcTextSize(xLabel.c_str()).x;
+  dl->AddText(ImVec2(std::max(p0.x, 0.5f * (a.x + b.x - xlw)), b.y + textH + 5.0f * scale), dimC, xLabel.c_str());
 
   dl->PushClipRect(a, b, true);
   for (const auto& m : spec.markers) {
@@ -197,26 +271,29 @@ void drawPlot(const char* id, const ImVec2& size, const PlotSpec& spec, std::spa
   dl->PopClipRect();
   dl->AddRect(a, b, gridC);
 
-  // Legend (top right, inside the plot).
-  if (!series.empty() && spec.legend) {
-    float lw = 0.0f;
-    for (const auto& s : series) lw = std::max(lw, ImGui::CalcTextSize(s.label.c_str()).x);
-    const float sw = 22.0f * scale, pad = 6.0f * scale;
-    const float lh = static_cast<float>(series.size()) * (textH + 2.0f * scale) + pad;
-    const float top = spec.legendBottom ? b.y - pad - lh : a.y + pad + textH;
-    const ImVec2 la{b.x - lw - sw - 3.0f * pad, top};
-    const ImVec2 lb{b.x - pad, top + lh};
+  if (legendShown && legendBelow) {
+    // Rows under the x axis's label, each entry a swatch and its name.
+    float x = p0.x;
+    int row = 0;
+    for (std::size_t i = 0; i < series.size(); ++i) {
+      if (legendRows.rowOf[i] != row) row = legendRows.rowOf[i], x = p0.x;
+      const float y = b.y + 2.0f * textH + 10.0f * scale + static_cast<float>(row) * rowH;
+      legendSwatch(dl, series[i], ImVec2(x, y + 0.5f * textH), ImVec2(x + swatch, y + 0.5f * textH), scale);
+      dl->AddText(ImVec2(x + swatch + lpad, y), textC, series[i].label.c_str());
+      x += swatch + lpad + ImGui::CalcTextSize(series[i].label.c_str()).x + 2.0f * lpad;
+    }
+  } else if (legendShown) {
+    // Top right (or bottom right), inside the plot.
+    const float top = spec.legendBottom ? b.y - lpad - insideH : a.y + lpad + textH;
+    const ImVec2 la{b.x - insideW, top};
+    const ImVec2 lb{b.x - lpad, top + insideH};
     dl->AddRectFilled(la, lb, ImGui::GetColorU32(ImGuiCol_PopupBg, 0.85f), 4.0f * scale);
-    float y = la.y + pad;
-    for (const auto& s : series) {
-      const ImVec2 s0{la.x + pad, y + 0.5f * textH}, s1{la.x + pad + sw, y + 0.5f * textH};
-      if (s.dashed) {
-        dashedLine(dl, s0, s1, s.colour, s.thickness * scale, 4.0f * scale);
-      } else {
-        dl->AddLine(s0, s1, s.colour, s.thickness * scale);
-      }
-      dl->AddText(ImVec2(s1.x + pad, y), textC, s.label.c_str());
-      y += textH + 2.0f * scale;
+    float y = la.y + lpad;
+    for (const auto& sr : series) {
+      const ImVec2 s0{la.x + lpad, y + 0.5f * textH}, s1{la.x + lpad + swatch, y + 0.5f * textH};
+      legendSwatch(dl, sr, s0, s1, scale);
+      dl->AddText(ImVec2(s1.x + lpad, y), textC, sr.label.c_str());
+      y += rowH;
     }
   }
 
