@@ -1,11 +1,11 @@
 // Issue 18's layout matrix, in the real viewer: at the teaching sizes where the layout is
 // tightest (a small window, a large UI scale, the projector theme) no window or table column
 // has content cut at its edge, and no caption, legend or colour bar covers the walker of its
-// view — in both modes, with every drawer tab shown in turn, with the three engines' gait
-// report open, with the analysis window open, and in presentation mode. The
-// viewer reports what it laid out (export_state's layout.overflow and layout.overlays); the
-// whole matrix's screenshots are docs/screenshots/layout_matrix_*.png
-// (docs/tools/layout_contact_sheet.sh).
+// view, and no window reaches past the screen's edge — in both modes, with every drawer tab
+// shown in turn, with the three engines' gait report, the analysis, data, model and export
+// windows open, and in presentation mode. The viewer reports what it laid out (export_state's
+// layout.overflow and layout.overlays); the whole matrix's screenshots are
+// docs/screenshots/layout_matrix_*.png (docs/tools/layout_contact_sheet.sh).
 
 #include <gtest/gtest.h>
 
@@ -46,6 +46,11 @@ TEST_F(GuiLayoutMatrix, NothingIsCutAndNothingCoversTheWalker) {
     states.push_back("analysis");
     script += R"(, {"show_panel": ["analysis", true]}, {"wait_frames": 3}, {"export_state": ")" +
               (dir / "analysis.json").string() + R"("}, {"show_panel": ["analysis", false]})";
+    for (const char* panel : {"data", "model", "export"}) {
+      states.push_back(std::string("panel_") + panel);
+      script += std::string(R"(, {"show_panel": [")") + panel + R"(", true]}, {"wait_frames": 3}, {"export_state": ")" +
+                (dir / (states.back() + ".json")).string() + R"("}, {"show_panel": [")" + panel + R"(", false]})";
+    }
     states.push_back("presentation");
     script += R"(, {"presentation": true}, {"wait_frames": 2}, {"export_state": ")" +
               (dir / "presentation.json").string() + R"("}])";

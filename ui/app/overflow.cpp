@@ -21,6 +21,11 @@ std::vector<std::pair<std::string, float>> windowsCutOnTheRight() {
     const float clipRight = std::max(w->InnerClipRect.Max.x, w->WorkRect.Max.x);
     const float reach = w->DC.CursorMaxPos.x;
     if (reach > clipRight + 1.0f) cut.emplace_back(w->Name, reach - clipRight);
+    // A window past the screen's right or bottom edge (a menu opened near it) hides that part.
+    const ImVec2 screen = ImGui::GetIO().DisplaySize;
+    const float pastRight = w->Pos.x + w->Size.x - screen.x, pastBottom = w->Pos.y + w->Size.y - screen.y;
+    if (pastRight > 1.0f) cut.emplace_back(std::string(w->Name) + " (off the screen)", pastRight);
+    if (pastBottom > 1.0f) cut.emplace_back(std::string(w->Name) + " (off the screen's bottom)", pastBottom);
     // A window without a scroll bar hides what goes past its bottom.
     const float clipBottom = std::max(w->InnerClipRect.Max.y, w->WorkRect.Max.y);
     if ((w->Flags & ImGuiWindowFlags_NoScrollbar) && w->DC.CursorMaxPos.y > clipBottom + 1.0f)

@@ -11,7 +11,8 @@ namespace ew::ui {
 
 // Every window drawn this frame (not tooltips, popups or menus, nor windows that scroll
 // sideways) whose content reaches further right than its clip edge, or, without a scroll bar,
-// further down ("NAME (bottom)"), with by how many pixels.
+// further down ("NAME (bottom)"), or that reaches past the screen's right or bottom edge ("NAME
+// (off the screen)"), with by how many pixels.
 // Call after the last ImGui::End of the frame, before ImGui::Render.
 std::vector<std::pair<std::string, float>> windowsCutOnTheRight();
 

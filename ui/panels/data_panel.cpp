@@ -11,6 +11,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/widgets/flow.h"
 
 namespace ew::ui {
 
@@ -18,6 +19,7 @@ namespace {
 
 constexpr const char* kUnits[] = {"file's", "mm", "cm", "m", "in", "cmu"};
 constexpr const char* kFormatNames[] = {".c3d", ".bvh", ".asf/.amc", ".trc", ".csv"};
+constexpr const char* kOpenTip = "Tip: drop files or folders on the window. A manifest CSV opens its trials.";
 
 // Index into kFormatNames, or -1.
 int formatIndex(const std::string& name) {
@@ -66,7 +68,10 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
   }
   if (listedFolder != folder.data()) refresh();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  ImGui::SetNextWindowSize(ImVec2(display.x * 0.66f, display.y * 0.7f), ImGuiCond_Appearing);
+  // Most of a small window or a large UI scale's, as the gait report and the analysis.
+  const float width = std::min(display.x - 40.0f * ctx.scale, std::max(display.x * 0.66f, 900.0f * ctx.scale));
+  const float height = std::min(display.y - 80.0f * ctx.scale, std::max(display.y * 0.7f, 560.0f * ctx.scale));
+  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (!ImGui::Begin("Data: open files and folders", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
@@ -94,15 +99,23 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
       ImGui::InputText("##folder", folder.data(), folder.size());
       ImGui::SameLine();
       if (ImGui::Button("Refresh")) refresh();
+      ImGui::AlignTextToFramePadding();
       ImGui::TextDisabled("show");
       for (std::size_t i = 0; i < formats.size(); ++i) {
-        ImGui::SameLine();
+        sameLineOrWrap(toggleWidth(kFormatNames[i]));
         ImGui::Checkbox(kFormatNames[i], &formats[i]);
       }
-      const float listH = ImGui::GetContentRegionAvail().y - 2.0f * ImGui::GetFrameHeightWithSpacing() -
-                          ImGui::GetTextLineHeightWithSpacing();
-      const float recentW = 300.0f * ctx.scale;
-      ImGui::BeginChild("##list", ImVec2(ImGui::GetContentRegionAvail().x - recentW, listH), true);
+      // The lists take what the buttons and the tip under them leave (each may wrap).
+      const float availW = ImGui::GetContentRegionAvail().x;
+      const float spacing = ImGui::GetStyle().ItemSpacing.x;
+      const float buttonsW = buttonWidth("Open selected files") + buttonWidth("Open this folder") +
+                             buttonWidth("Synthetic default") + 2.0f * spacing;
+      const int buttonRows = buttonsW <= availW ? 1 : 2;
+      const float tipH = ImGui::CalcTextSize(kOpenTip, nullptr, false, availW).y;
+      const float listH = std::max(ImGui::GetContentRegionAvail().y - static_cast<float>(buttonRows + 1) * ImGui::GetFrameHeightWithSpacing() - tipH,
+                                   4.0f * ImGui::GetFrameHeightWithSpacing());
+      const float recentW = std::min(300.0f * ctx.scale, 0.4f * availW);
+      ImGui::BeginChild("##list", ImVec2(availW - recentW, listH), true, ImGuiWindowFlags_HorizontalScrollbar);
       if (!listError.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", listError.c_str());
       std::string enter;
       for (const auto& e : entries) {
@@ -117,11 +130,11 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
           ImGui::Checkbox(e.name.c_str(), &ticked);
         }
       }
-      if (entries.empty() && listError.empty()) ImGui::TextDisabled("no folders or motion-capture files here");
+      if (entries.empty() && listError.empty()) textDisabledWrapped("no folders or motion-capture files here");
       ImGui::EndChild();
       if (!enter.empty()) setFolder(folder, (std::filesystem::path(listedFolder) / enter).string());
       ImGui::SameLine();
-      ImGui::BeginChild("##recent", ImVec2(0.0f, listH), true);
+      ImGui::BeginChild("##recent", ImVec2(0.0f, listH), true, ImGuiWindowFlags_HorizontalScrollbar);
       ImGui::TextDisabled("Recent");
       ImGui::Separator();
       std::vector<std::filesystem::path> reopen;
@@ -129,7 +142,7 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
         if (ImGui::Selectable(r.filename().string().c_str())) reopen = {r};
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", r.string().c_str());
       }
-      if (s.recentPaths.empty()) ImGui::TextDisabled("nothing opened yet");
+      if (s.recentPaths.empty()) textDisabledWrapped("nothing opened yet");
       ImGui::EndChild();
       if (!reopen.empty()) attempt(reopen, [&] { actions::open(s, reopen); });
 
@@ -139,14 +152,14 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
       ImGui::BeginDisabled(chosen.empty());
       if (ImGui::Button("Open selected files")) attempt(chosen, [&] { actions::drop(s, chosen); });
       ImGui::EndDisabled();
-      ImGui::SameLine();
+      sameLineOrWrap(buttonWidth("Open this folder"));
       if (ImGui::Button("Open this folder")) {
         const std::vector<std::filesystem::path> here{std::filesystem::path(listedFolder)};
         attempt(here, [&] { actions::drop(s, here); });
       }
-      ImGui::SameLine();
+      sameLineOrWrap(buttonWidth("Synthetic default"));
       if (ImGui::Button("Synthetic default")) attempt({}, [&] { actions::open(s, {}); });
-      ImGui::TextDisabled("Tip: drop files or folders on the window. A manifest CSV opens its trials.");
+      textDisabledWrapped(kOpenTip);
       ImGui::EndTabItem();
     }
     // [SECTION] Summary: one row per trial, warnings, overrides

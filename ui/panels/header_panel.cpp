@@ -79,7 +79,7 @@ float drawProgress(AppState& s, const FrameContext& ctx, float right) {
 void modelChoice(AppState& s, const char* label, bool selected, bool enabled,
                  const std::string& which) {
   if (!enabled) ImGui::BeginDisabled();
-  if (ImGui::RadioButton(label, selected) && !selected) {
+  if (radioWrapped(label, selected) && !selected) {
     try {
       actions::setModelSource(s, which);
     } catch (const std::exception& e) {
@@ -280,37 +280,47 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
 
 void HeaderPanel::drawModelMenu(AppState& s, const FrameContext& ctx) {
   if (!modelMenuOpen) return;
-  ImGui::SetNextWindowPos(ImVec2(modelButtonX, modelButtonBottom + 4.0f * ctx.scale),
-                          ImGuiCond_Always);
+  const auto& d = s.doc;
+  const std::string pop = d.population ? "Population: " + d.population->label + " (" +
+                                             std::to_string(d.population->walkerCount()) +
+                                             " walkers, leave-one-out)"
+                                       : std::string("Population (none loaded)");
+  const std::string def =
+      d.defaultModel ? "Default: " + d.defaultModel->name : std::string("Default: real walkers");
+  std::vector<std::string> files;
+  for (const auto& m : d.modelFiles)
+    files.push_back("File: " + m->name + " (" + std::to_string(m->model.walkerCount()) + " walkers)");
+  const char* about = "Every walker is reconstructed with this model; a walker it was built from is "
+                      "reconstructed with the model without its subject.";
+  const char* footer = "Open or drop a .ewm file (eigenwalker-cli build) to add one.";
+  // As wide as its longest line wants, but never past the screen's edge: there it wraps.
+  float wanted = std::max(ImGui::CalcTextSize(footer).x,
+                          ImGui::CalcTextSize("Every walker is reconstructed with this model; a walker it was built").x);
+  for (const std::string* l : {&pop, &def}) wanted = std::max(wanted, toggleWidth(l->c_str()));
+  for (const auto& l : files) wanted = std::max(wanted, toggleWidth(l.c_str()));
+  const float margin = 8.0f * ctx.scale;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  const float width = std::min(wanted + 2.0f * ImGui::GetStyle().WindowPadding.x, display.x - 2.0f * margin);
+  const float x = std::clamp(modelButtonX, margin, display.x - margin - width);
+  ImGui::SetNextWindowPos(ImVec2(x, modelButtonBottom + 4.0f * ctx.scale), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(width, 0.0f), ImGuiCond_Always);  // 0: the height fits the content
   bool open = true;
   if (ImGui::Begin("Model###model_menu", &open,
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse |
-                       ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove)) {
-    ImGui::TextDisabled("Every walker is reconstructed with this model; a walker it was built");
-    ImGui::TextDisabled("from is reconstructed with the model without its subject.");
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove)) {
+    textDisabledWrapped(about);
     ImGui::Separator();
-    const auto& d = s.doc;
-    const std::string pop = d.population ? "Population: " + d.population->label + " (" +
-                                               std::to_string(d.population->walkerCount()) +
-                                               " walkers, leave-one-out)"
-                                         : std::string("Population (none loaded)");
     modelChoice(s, pop.c_str(), d.modelSource == ModelSource::Population, d.models != nullptr,
                 "population");
-    const std::string def =
-        d.defaultModel ? "Default: " + d.defaultModel->name : std::string("Default: real walkers");
     modelChoice(s, def.c_str(), d.modelSource == ModelSource::Default, true, "default");
-    for (std::size_t i = 0; i < d.modelFiles.size(); ++i) {
-      const auto& m = *d.modelFiles[i];
-      const std::string label =
-          "File: " + m.name + " (" + std::to_string(m.model.walkerCount()) + " walkers)";
+    for (std::size_t i = 0; i < files.size(); ++i) {
       ImGui::PushID(static_cast<int>(i));
-      modelChoice(s, label.c_str(),
+      modelChoice(s, files[i].c_str(),
                   d.modelSource == ModelSource::File && d.modelFile == static_cast<int>(i), true,
-                  m.file.string());
+                  d.modelFiles[i]->file.string());
       ImGui::PopID();
     }
     ImGui::Separator();
-    ImGui::TextDisabled("Open or drop a .ewm file (eigenwalker-cli build) to add one.");
+    textDisabledWrapped(footer);
   }
   ImGui::End();
   if (!open) modelMenuOpen = false;
