@@ -569,6 +569,7 @@ class App {
   void drawFloating(const Layout& l, const FrameContext& ctx) {
     auto& p = state_.panels;
     p.tour.bottom = l.presentation ? l.presentationBar.pos.y : 0.0f;
+    p.tour.left = l.drawer ? l.drawerTabs.pos.x + l.drawerTabs.size.x : 0.0f;
     if (!l.presentation) {
       p.exports.draw(state_, ctx);
       p.gait.draw(state_, ctx);

@@ -18,16 +18,23 @@ void TourPanel::draw(AppState& s, const FrameContext& ctx) {
   const auto steps = tourSteps();
   const auto& st = steps[static_cast<std::size_t>(step)];
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float w = std::min(display.x * 0.46f, 760.0f * ctx.scale);
-  ImGui::SetNextWindowSize(ImVec2(w, 0.0f), ImGuiCond_Always);
   const float margin = 16.0f * ctx.scale;
+  // Beside the drawer, not over it: the steps point at its panels (and open the one they name).
+  const float areaLeft = left + margin, areaW = display.x - margin - areaLeft;
+  float w = std::min({display.x * 0.46f, 760.0f * ctx.scale, areaW});
+  // A text that would stand taller than 0.4 of the window at that width gets the whole width
+  // beside the drawer, so that the card stays clear of the header (1024×768 at UI scale 2).
+  const float pad = 2.0f * ImGui::GetStyle().WindowPadding.x;
+  if (ImGui::CalcTextSize(st.text, nullptr, false, w - pad).y > 0.4f * display.y) w = std::max(w, areaW);
+  ImGui::SetNextWindowSize(ImVec2(w, 0.0f), ImGuiCond_Always);
   const float y = (bottom > 0.0f ? bottom : display.y) - margin;
   switch (st.anchor) {
     case TourAnchor::BottomCentre:
-      ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, y), ImGuiCond_Always, ImVec2(0.5f, 1.0f));
+      ImGui::SetNextWindowPos(ImVec2(std::max(display.x * 0.5f, areaLeft + 0.5f * w), y), ImGuiCond_Always,
+                              ImVec2(0.5f, 1.0f));
       break;
     case TourAnchor::BottomLeft:
-      ImGui::SetNextWindowPos(ImVec2(margin, y), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+      ImGui::SetNextWindowPos(ImVec2(areaLeft, y), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
       break;
     case TourAnchor::BottomRight:
       ImGui::SetNextWindowPos(ImVec2(display.x - margin, y), ImGuiCond_Always, ImVec2(1.0f, 1.0f));
@@ -39,15 +46,18 @@ void TourPanel::draw(AppState& s, const FrameContext& ctx) {
   std::snprintf(title, sizeof title, "Guided tour · step %d of %zu###tour", step + 1, steps.size());
   if (ImGui::Begin(title, &open,
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoResize |
-                       ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize)) {
+                       ImGuiWindowFlags_NoMove | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoScrollbar)) {
     // Above every other window (the analysis window a step opens), without taking focus.
     ImGui::BringWindowToDisplayFront(ImGui::GetCurrentWindow());
     lastHeight = ImGui::GetWindowHeight();
+    // The title wraps as the text does (a long one on a narrow card).
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + w - 2.0f * ImGui::GetStyle().WindowPadding.x);
     if (s.fonts.large) ImGui::PushFont(s.fonts.large);
-    ImGui::TextColored(ImVec4(1.0f, 0.62f, 0.26f, 1.0f), "%s", st.title);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.62f, 0.26f, 1.0f));
+    ImGui::TextUnformatted(st.title);
+    ImGui::PopStyleColor();
     if (s.fonts.large) ImGui::PopFont();
     ImGui::Spacing();
-    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + w - 2.0f * ImGui::GetStyle().WindowPadding.x);
     ImGui::TextUnformatted(st.text);
     ImGui::PopTextWrapPos();
     ImGui::Spacing();

@@ -14,6 +14,7 @@ struct TourPanel {
   int step = 0;  // 0-based
   float lastHeight = 0.0f;  // of the window last frame (the analysis window stays above it)
   float bottom = 0.0f;      // the card sits above this y (the app sets it; 0: the window's bottom)
+  float left = 0.0f;        // and right of this x (the drawer's edge, which the steps point into)
 
   void draw(AppState& s, const FrameContext& ctx);
 };
