@@ -193,9 +193,11 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
                                       {"LSQ (no σ²)", sx, lsqY, kLsqColour, 2.0f, true, false}};
   PlotSpec sigmaSpec;
   sigmaSpec.xLabel = "MAP prior σ² (mm², log)";
-  sigmaSpec.yLabel = axisLabel(metric) + ", mean over subjects and angles";
+  // The two small plots name their curves in their axis labels rather than a legend, which
+  // would take most of their height in a short window (the colours are the top plot's).
+  sigmaSpec.yLabel = "MAP " + axisLabel(metric) + ", mean over subjects and angles; LSQ dashed";
   sigmaSpec.xLog = true;
-  sigmaSpec.legendBottom = true;
+  sigmaSpec.legend = false;
   char sigmaLabel[40];
   std::snprintf(sigmaLabel, sizeof sigmaLabel, "σ² = %.0f", s.doc.recon.sigma2Mm2);
   sigmaSpec.markers.push_back({s.doc.recon.sigma2Mm2, sigmaLabel, ImGui::ColorConvertFloat4ToU32(goodTextColour())});
@@ -213,6 +215,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   spectrumSpec.yLabel = "eigenvalue λ_n (mm², log; model of every walker)";
   spectrumSpec.yLog = true;
   spectrumSpec.valueFormat = "%.4g mm²";
+  spectrumSpec.legend = false;
   if (const auto* r = s.derived.recon()) {
     char nLabel[32];
     std::snprintf(nLabel, sizeof nLabel, "N = %d", r->components);
