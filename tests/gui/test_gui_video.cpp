@@ -125,6 +125,9 @@ TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
       {{"key", "right"}},
       {{"key", "right"}},
       {{"export_state", path("stepped_tracked.json")}},
+      // The gait report of the walker fitted through the camera.
+      {{"show_panel", {"gait", true}}},
+      {{"export_gait_report", path("gait.json")}},
       {{"expect_failure", {{"mark_joints", {{"l_knee", {5000.0, 10.0}}}}}}},
       {{"expect_failure", {{"mark_joints", {{"nose", {10.0, 10.0}}}}}}},
   });
@@ -156,6 +159,19 @@ TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
   EXPECT_NEAR(fit["stride_hz"].get<double>(), f.strideHz, 0.05 * f.strideHz);
   EXPECT_LT(fit["reprojection_rms_px"].get<double>(), 12.0);
   EXPECT_EQ(tracked["video"]["shown_frame"], 45);
+  // The gait report measures the fitted walker at the fit's own stride and speed: cadence is
+  // two steps a stride (a two-harmonic walker's events come once a period), the speed is the
+  // camera fit's, stance a walk's (docs/GAIT.md: 60–65 % in the shared walkers).
+  const json gait = json::parse(readAll(dir / "gait.json"));
+  EXPECT_EQ(gait["engine"], "eigenwalker through the estimated camera");
+  EXPECT_EQ(gait["walker"], "walk.avi");
+  const json& measures = gait["measures"];
+  EXPECT_NEAR(measures["cadence_spm"]["reconstruction"].get<double>(), 120.0 * fit["stride_hz"].get<double>(), 0.5);
+  EXPECT_NEAR(measures["speed_mps"]["reconstruction"].get<double>(), fit["speed_mps"].get<double>(), 0.01);
+  EXPECT_TRUE(measures["speed_mps"]["motion_capture"].is_null());
+  const double stance = measures["stance_pct"]["reconstruction"].get<double>();
+  EXPECT_GT(stance, 55.0);
+  EXPECT_LT(stance, 70.0);
   // One frame of the footage per arrow key (before a track: WhileMarkingCtrlZUndoesTheKeyframes).
   EXPECT_EQ(state("stepped_tracked.json")["video"]["shown_frame"], 47);
 

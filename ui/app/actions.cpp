@@ -999,6 +999,20 @@ Eigen::MatrixXd walkedOverTheFloor(const GaitSummary& g) {
 
 }  // namespace
 
+namespace {
+
+// What the gait report's JSON says it measured: the walker (or clip) and how it was made.
+GaitReportText gaitReportSubject(const AppState& s) {
+  if (s.doc.mode == Mode::Explore) return {"explore", "synthesised"};
+  if (s.doc.mode == Mode::Clip)
+    return {s.clip ? s.clip->settings.path.filename().string() : std::string(),
+            "eigenwalker through the estimated camera"};
+  const Walker* w = s.doc.selectedWalker();
+  return {w ? w->id : std::string(), engineName(s.doc.recon.engine)};
+}
+
+}  // namespace
+
 void exportGaitReport(AppState& s, const std::filesystem::path& path) {
   GaitPanel& p = s.panels.gait;
   s.derived.update(s.doc);  // a script may have changed the document since the last frame
@@ -1011,11 +1025,7 @@ void exportGaitReport(AppState& s, const std::filesystem::path& path) {
   if (ext == ".csv") {
     writeGaitReportCsv(path.string(), p.mocap, p.exportColumns(), band);
   } else if (ext == ".json") {
-    const Walker* w = s.doc.selectedWalker();
-    writeGaitReportJson(path.string(),
-                        {s.doc.mode == Mode::Explore ? std::string("explore") : (w ? w->id : std::string()),
-                         s.doc.mode == Mode::Explore ? std::string("synthesised") : engineName(s.doc.recon.engine)},
-                        p.mocap, p.exportColumns(), band);
+    writeGaitReportJson(path.string(), gaitReportSubject(s), p.mocap, p.exportColumns(), band);
   } else if (ext == ".trc") {
     const Eigen::MatrixXd frames = walkedOverTheFloor(recon);
     writeTrc(path, frames, kReportRateHz);

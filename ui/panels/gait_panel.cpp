@@ -13,6 +13,7 @@
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
 #include "ui/render/palette.h"
+#include "ui/widgets/flow.h"
 #include "ui/widgets/plot.h"
 
 namespace ew::ui {
@@ -30,6 +31,7 @@ struct ShownColumn {
   std::string name, label;
   int engine = -1;
   const Eigen::VectorXd* w = nullptr;
+  std::optional<double> speedMps;  // a clip's fit knows its speed through the camera
 };
 struct Shown {
   const Eigen::VectorXd* mocapW = nullptr;  // null in explore mode
@@ -39,12 +41,25 @@ struct Shown {
   std::string walker;
 };
 
+// A keypoint clip's or tracked video's walker: the eigenwalker fitted through the estimated
+// camera, at the stride and speed that fit found (no motion capture to set beside it).
+std::optional<Shown> shownClip(const AppState& s) {
+  if (!s.clip || s.clip->rec.fit.w.size() == 0 || !(s.clip->rec.fit.strideHz > 0.0)) return std::nullopt;
+  const CameraFit& f = s.clip->rec.fit;
+  Shown out;
+  out.strideHz = f.strideHz;
+  out.walker = s.clip->settings.path.filename().string();
+  out.columns.push_back({"reconstruction", "through the estimated camera", -1, &f.w, f.speedMps});
+  return out;
+}
+
 std::optional<Shown> shownWalkers(const AppState& s) {
   Shown out;
+  if (s.doc.mode == Mode::Clip) return shownClip(s);
   if (s.doc.mode == Mode::Explore) {
     const ExploreResult* e = s.derived.explore();
     if (!e) return std::nullopt;
-    out.columns.push_back({"synthesised", "synthesised", -1, &e->w});
+    out.columns.push_back({"synthesised", "synthesised", -1, &e->w, std::nullopt});
     out.strideHz = e->strideHz;
     out.walker = "synthesised from the sliders";
     return out;
@@ -64,12 +79,12 @@ std::optional<Shown> shownWalkers(const AppState& s) {
       const auto k = static_cast<std::size_t>(e.engine);
       if (!e.display || !s.doc.compareShown[k]) continue;
       std::snprintf(label, sizeof label, "%s at %.0f°", engineName(e.engine), e.base->alphaUsedDeg);
-      out.columns.push_back({engineName(e.engine), label, static_cast<int>(k), &e.display->w});
+      out.columns.push_back({engineName(e.engine), label, static_cast<int>(k), &e.display->w, std::nullopt});
     }
     return out;
   }
   std::snprintf(label, sizeof label, "%s at %.0f°", engineName(r->engine), r->alphaUsedDeg);
-  out.columns.push_back({"reconstruction", label, -1, &d->w});
+  out.columns.push_back({"reconstruction", label, -1, &d->w, std::nullopt});
   return out;
 }
 
@@ -98,8 +113,8 @@ struct TableCell {
   ImU32 colour = 0;
 };
 
-// The table's headings and cells, column by column: the measure, motion capture, each column
-// shown, the population's band.
+// The table's headings and cells, column by column: the measure, motion capture (when there is
+// any), each column shown, the population's band.
 struct TableText {
   std::vector<std::string> headings;
   std::vector<std::vector<TableCell>> rows;
@@ -108,7 +123,7 @@ struct TableText {
 TableText tableText(const GaitPanel& p, bool withMocap) {
   TableText t;
   t.headings.push_back("measure");
-  t.headings.push_back(withMocap ? "motion capture" : "–");
+  if (withMocap) t.headings.push_back("motion capture");  // explore mode and clips have none
   for (const auto& c : p.columns) t.headings.push_back(c.label);
   t.headings.push_back("population mean ± SD");
   const auto& rows = gaitRows();
@@ -116,7 +131,7 @@ TableText tableText(const GaitPanel& p, bool withMocap) {
     const double mean = p.band ? p.band->rowMean[r] : NAN, sd = p.band ? p.band->rowSd[r] : NAN;
     std::vector<TableCell> row;
     row.push_back({rows[r].label, ImGui::GetColorU32(ImGuiCol_Text)});
-    row.push_back({withMocap ? valueText(gaitRowValue(p.mocap, rows[r].key), rows[r].decimals) : "", mocapColour()});
+    if (withMocap) row.push_back({valueText(gaitRowValue(p.mocap, rows[r].key), rows[r].decimals), mocapColour()});
     for (const auto& c : p.columns) {
       const double b = gaitRowValue(c.summary, rows[r].key);
       // Outside the population's mean ± 2 SD: marked, as a gait report flags a measure.
@@ -311,7 +326,7 @@ void GaitPanel::update(AppState& s) {
     // Reuse a column already measured for the same walker.
     for (auto& old : columns)
       if (old.name == c.name) col.w = std::move(old.w), col.summary = std::move(old.summary);
-    refresh(col.summary, col.w, c.w, shown->strideHz, std::nullopt, shown->walker + " (" + c.label + ")");
+    refresh(col.summary, col.w, c.w, shown->strideHz, c.speedMps, shown->walker + " (" + c.label + ")");
     next.push_back(std::move(col));
   }
   columns = std::move(next);
@@ -331,8 +346,8 @@ void GaitPanel::draw(AppState& s, const FrameContext& ctx) {
   update(s);
   const auto shown = shownWalkers(s);
   if (!shown) {
-    ImGui::TextDisabled(s.doc.mode == Mode::Clip ? "keypoint clips: not yet (the 3D CSV of `reconstruct` goes "
-                                                   "through `eigenwalker-cli gait`)"
+    textDisabledWrapped(s.doc.mode == Mode::Clip ? "no walker fitted to the clip yet (it is fitted when the keypoints "
+                                                   "are read or the video is tracked)"
                                                  : "no walker to measure yet");
     ImGui::End();
     return;
