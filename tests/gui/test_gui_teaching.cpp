@@ -107,7 +107,9 @@ TEST_F(GuiTeaching, AtScaleTwoTheDrawerLeavesTheViewsTheirRoom) {
     {"export_state": ")" + d + R"(/drawer.json"},
     {"drawer_tab": "coefficients"},
     {"screenshot": ")" + d + R"(/drawer.png"},
-    {"export_state": ")" + d + R"(/coefficients.json"}
+    {"export_state": ")" + d + R"(/coefficients.json"},
+    {"tour": "start"}, {"tour": "next"}, {"tour": "next"}, {"tour": "next"}, {"wait_frames": 3},
+    {"export_state": ")" + d + R"(/tour_analysis.json"}
   ])");
   const RunResult r = runViewer(dir, "--size 1280x720 --ui-scale 2 --script " + quote(script.string()));
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -125,10 +127,19 @@ TEST_F(GuiTeaching, AtScaleTwoTheDrawerLeavesTheViewsTheirRoom) {
   EXPECT_GT(walker2d, 400);
   EXPECT_GT(walker3d, 75);
 
-  const auto full = writeScript(dir, R"([{"export_state": ")" + d + R"(/full.json"}])");
+  // The tour's analysis step folds its text away here, so that the window it opens has room
+  // above the card; at 1600×900 both fit.
+  const auto folded = nlohmann::json::parse(readAll(dir / "tour_analysis.json"));
+  EXPECT_EQ(folded["tour"]["step"], 3);
+  EXPECT_TRUE(folded["tour"]["text_folded"].get<bool>());
+  EXPECT_TRUE(folded["layout"]["overflow"].empty()) << folded["layout"]["overflow"];
+
+  const auto full = writeScript(dir, R"([{"export_state": ")" + d + R"(/full.json"}, {"tour": "start"}, {"tour": "next"},
+    {"tour": "next"}, {"tour": "next"}, {"wait_frames": 3}, {"export_state": ")" + d + R"(/full_tour.json"}])");
   const RunResult f = runViewer(dir, "--size 1600x900 --script " + quote(full.string()));
   ASSERT_EQ(f.exitCode, 0) << f.err;
   EXPECT_TRUE(nlohmann::json::parse(readAll(dir / "full.json"))["view"]["drawer"].is_null());
+  EXPECT_FALSE(nlohmann::json::parse(readAll(dir / "full_tour.json"))["tour"]["text_folded"].get<bool>());
   const auto bad = writeScript(dir, R"([{"drawer_tab": "nonsense"}])");
   const RunResult b = runViewer(dir, "--size 800x600 --script " + quote(bad.string()));
   EXPECT_EQ(b.exitCode, 1);

@@ -366,6 +366,9 @@ nlohmann::json stateJson(const AppState& s) {
   j["view"]["drawer"] = s.panels.drawer.inUse
                             ? nlohmann::json(drawerTabName(s.panels.drawer.active))
                             : nlohmann::json();
+  // The guided tour: its step (0-based) and whether its text was folded last frame.
+  j["tour"] = s.panels.tour.active ? nlohmann::json{{"step", s.panels.tour.step}, {"text_folded", s.panels.tour.folded}}
+                                   : nlohmann::json();
   j["busy"] = s.busy();
   j["failures"] = s.jobs.failures;
   j["error"] = s.jobs.lastError;

@@ -4,14 +4,43 @@
 #include <imgui_internal.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/tour.h"
+#include "ui/widgets/flow.h"
 
 namespace ew::ui {
+
+namespace {
+
+// The card's height with its text at `wrapWidth`: the title bar, the title, the text, the dots
+// and buttons, and the spacing between them.
+float unfoldedHeight(const AppState& s, const TourStep& st, float wrapWidth) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float titleLine = s.fonts.large ? s.fonts.large->FontSize : ImGui::GetTextLineHeight();
+  const float titleH = titleLine * std::ceil(ImGui::CalcTextSize(st.title, nullptr, false, wrapWidth).y /
+                                             ImGui::GetTextLineHeight());
+  return ImGui::GetFrameHeight() + 2.0f * style.WindowPadding.y + titleH +
+         ImGui::CalcTextSize(st.text, nullptr, false, wrapWidth).y + ImGui::GetFrameHeight() +
+         6.0f * style.ItemSpacing.y;
+}
+
+}  // namespace
+
+// Folded when the step has the analysis window open and the card with its text would leave the
+// window less than 0.4 of the screen's height (the window sits between the header and the card).
+bool TourPanel::textFolded(const AppState& s, const TourStep& st, float wrapWidth, float scale,
+                           bool evenIfUnfolded) const {
+  if (!s.panels.analysis.open || (unfoldedStep == step && !evenIfUnfolded)) return false;
+  const float screenH = ImGui::GetIO().DisplaySize.y;
+  const float cardBottom = (bottom > 0.0f ? bottom : screenH) - 16.0f * scale;
+  const float room = cardBottom - unfoldedHeight(s, st, wrapWidth) - 80.0f * scale;
+  return room < 0.4f * screenH;
+}
 
 void TourPanel::draw(AppState& s, const FrameContext& ctx) {
   if (!active) return;
@@ -26,6 +55,7 @@ void TourPanel::draw(AppState& s, const FrameContext& ctx) {
   // beside the drawer, so that the card stays clear of the header (1024×768 at UI scale 2).
   const float pad = 2.0f * ImGui::GetStyle().WindowPadding.x;
   if (ImGui::CalcTextSize(st.text, nullptr, false, w - pad).y > 0.4f * display.y) w = std::max(w, areaW);
+  folded = textFolded(s, st, w - pad, ctx.scale);
   ImGui::SetNextWindowSize(ImVec2(w, 0.0f), ImGuiCond_Always);
   const float y = (bottom > 0.0f ? bottom : display.y) - margin;
   switch (st.anchor) {
@@ -58,31 +88,43 @@ void TourPanel::draw(AppState& s, const FrameContext& ctx) {
     ImGui::PopStyleColor();
     if (s.fonts.large) ImGui::PopFont();
     ImGui::Spacing();
-    ImGui::TextUnformatted(st.text);
+    if (!folded) ImGui::TextUnformatted(st.text);
     ImGui::PopTextWrapPos();
+    if (unfoldedStep == step && !folded && textFolded(s, st, w - pad, ctx.scale, true)) {
+      if (ImGui::SmallButton("Hide the text")) unfoldedStep = -1;
+    }
     ImGui::Spacing();
-    ImGui::Separator();
-    // Progress dots, then the buttons on the right.
-    ImDrawList* dl = ImGui::GetWindowDrawList();
-    const ImVec2 c = ImGui::GetCursorScreenPos();
     const float r = 5.0f * ctx.scale, h = ImGui::GetFrameHeight();
-    for (int i = 0; i < static_cast<int>(steps.size()); ++i) {
-      const ImVec2 centre{c.x + r + static_cast<float>(i) * 4.0f * r, c.y + 0.5f * h};
-      if (i == step) {
-        dl->AddCircleFilled(centre, r, IM_COL32(255, 158, 66, 255));
-      } else {
-        dl->AddCircle(centre, r, ImGui::GetColorU32(ImGuiCol_TextDisabled), 0, 1.5f * ctx.scale);
+    // Progress dots (folded: the text's switch instead; the title bar counts the steps), then
+    // the buttons on the right.
+    float leadW = static_cast<float>(steps.size()) * 4.0f * r + 8.0f * ctx.scale;
+    if (folded) {
+      leadW = buttonWidth("Show the text");
+      const ImVec2 at = ImGui::GetCursorPos();
+      if (ImGui::Button("Show the text")) unfoldedStep = step;
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("folded so that the window this step opened has room; unfolded, it covers it");
+      ImGui::SetCursorPos(at);  // the buttons go on this row, as beside the dots
+    } else {
+      ImGui::Separator();
+      ImDrawList* dl = ImGui::GetWindowDrawList();
+      const ImVec2 c = ImGui::GetCursorScreenPos();
+      for (int i = 0; i < static_cast<int>(steps.size()); ++i) {
+        const ImVec2 centre{c.x + r + static_cast<float>(i) * 4.0f * r, c.y + 0.5f * h};
+        if (i == step) {
+          dl->AddCircleFilled(centre, r, IM_COL32(255, 158, 66, 255));
+        } else {
+          dl->AddCircle(centre, r, ImGui::GetColorU32(ImGuiCol_TextDisabled), 0, 1.5f * ctx.scale);
+        }
       }
     }
     try {
       // Buttons as wide as 110 px × scale allows beside the dots; narrower down to their labels';
       // on a row of their own below the dots when even that does not fit.
       const ImGuiStyle& style = ImGui::GetStyle();
-      const float dotsW = static_cast<float>(steps.size()) * 4.0f * r + 8.0f * ctx.scale;
       const float contentW = ImGui::GetContentRegionAvail().x;
       const float minW = ImGui::CalcTextSize("End tour").x + 2.0f * style.FramePadding.x;
-      const float bw = std::clamp((contentW - dotsW - 2.0f * style.ItemSpacing.x) / 3.0f, minW, 110.0f * ctx.scale);
-      if (dotsW + 3.0f * bw + 2.0f * style.ItemSpacing.x > contentW) ImGui::Dummy(ImVec2(dotsW, h));
+      const float bw = std::clamp((contentW - leadW - 2.0f * style.ItemSpacing.x) / 3.0f, minW, 110.0f * ctx.scale);
+      if (leadW + 3.0f * bw + 2.0f * style.ItemSpacing.x > contentW) ImGui::Dummy(ImVec2(leadW, h));
       ImGui::SetCursorPosX(ImGui::GetWindowContentRegionMax().x - 3.0f * bw - 2.0f * style.ItemSpacing.x);
       ImGui::BeginDisabled(step == 0);
       if (ImGui::Button("Back", ImVec2(bw, 0))) actions::tourBack(s);

@@ -2,6 +2,7 @@
 // The guided tour's window (ui/app/tour.h): the step's title and text, Back / Next / End.
 // Its steps apply their actions through the script action system (actions::tourNext …).
 
+#include "ui/app/tour.h"
 #include "ui/panels/panel_window.h"
 
 namespace ew::ui {
@@ -15,8 +16,17 @@ struct TourPanel {
   float lastHeight = 0.0f;  // of the window last frame (the analysis window stays above it)
   float bottom = 0.0f;      // the card sits above this y (the app sets it; 0: the window's bottom)
   float left = 0.0f;        // and right of this x (the drawer's edge, which the steps point into)
+  // A step that opens the analysis window on a short screen folds its text away so that the
+  // window has room above the card (1024×768 at UI scale 2); the reader can unfold it.
+  int unfoldedStep = -1;    // the step whose folded text the reader unfolded
+  bool folded = false;      // the text was folded last frame
 
   void draw(AppState& s, const FrameContext& ctx);
+
+ private:
+  // `evenIfUnfolded`: whether it would be folded had the reader not unfolded it.
+  bool textFolded(const AppState& s, const TourStep& st, float wrapWidth, float scale,
+                  bool evenIfUnfolded = false) const;
 };
 
 }  // namespace ew::ui
