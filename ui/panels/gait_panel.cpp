@@ -107,7 +107,7 @@ std::string valueText(double v, int decimals) {
   return buf;
 }
 
-// One cell's text and colour (0: the disabled text's).
+// One cell's text and its colour.
 struct TableCell {
   std::string text;
   ImU32 colour = 0;
