@@ -77,7 +77,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   if (!open) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   // Most of a small window or a large UI scale's width, as the gait report.
-  const float width = std::min(display.x - 40.0f * ctx.scale, std::max(display.x * 0.62f, 900.0f * ctx.scale));
+  const float width = floatingExtent(display.x, 0.62f, 900.0f * ctx.scale, 40.0f * ctx.scale);
   if (s.panels.tour.active && s.panels.tour.lastHeight > 0.0f) {
     // During the tour: between the header and the tour's window.
     const float tourBottom = s.panels.tour.bottom > 0.0f ? s.panels.tour.bottom : display.y;
@@ -85,7 +85,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
     ImGui::SetNextWindowSize(ImVec2(width, std::max(200.0f, bottom - top)), ImGuiCond_Always);
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, top), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
   } else {
-    const float height = std::min(display.y - 80.0f * ctx.scale, std::max(display.y * 0.78f, 640.0f * ctx.scale));
+    const float height = floatingExtent(display.y, 0.78f, 640.0f * ctx.scale, 80.0f * ctx.scale);
     ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
     ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.53f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   }

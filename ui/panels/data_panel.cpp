@@ -69,8 +69,8 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
   if (listedFolder != folder.data()) refresh();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   // Most of a small window or a large UI scale's, as the gait report and the analysis.
-  const float width = std::min(display.x - 40.0f * ctx.scale, std::max(display.x * 0.66f, 900.0f * ctx.scale));
-  const float height = std::min(display.y - 80.0f * ctx.scale, std::max(display.y * 0.7f, 560.0f * ctx.scale));
+  const float width = floatingExtent(display.x, 0.66f, 900.0f * ctx.scale, 40.0f * ctx.scale);
+  const float height = floatingExtent(display.y, 0.7f, 560.0f * ctx.scale, 80.0f * ctx.scale);
   ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (!ImGui::Begin("Data: open files and folders", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {

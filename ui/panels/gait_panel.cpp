@@ -12,6 +12,7 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
+#include "ui/panels/panel_window.h"
 #include "ui/render/palette.h"
 #include "ui/widgets/flow.h"
 #include "ui/widgets/plot.h"
@@ -242,10 +243,7 @@ void drawLegend(const GaitPanel& gp, bool withMocap, float scale) {
   auto entry = [&](ImU32 colour, const char* label, bool band) {
     const float w = 24.0f * scale;
     const float entryW = w + 6.0f * scale + ImGui::CalcTextSize(label).x;
-    if (!first) {
-      ImGui::SameLine(0.0f, 18.0f * scale);
-      if (ImGui::GetContentRegionAvail().x < entryW) ImGui::NewLine();  // wraps, as text does
-    }
+    if (!first) sameLineOrWrap(entryW, 18.0f * scale);
     first = false;
     const ImVec2 p = ImGui::GetCursorScreenPos();
     if (band) {
@@ -336,7 +334,7 @@ void GaitPanel::draw(AppState& s, const FrameContext& ctx) {
   if (!open) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   // Wide enough for the table and two plots a row, whatever the window: most of a small one.
-  const float width = std::min(display.x - 40.0f * ctx.scale, std::max(display.x * 0.7f, 960.0f * ctx.scale));
+  const float width = floatingExtent(display.x, 0.7f, 960.0f * ctx.scale, 40.0f * ctx.scale);
   ImGui::SetNextWindowSize(ImVec2(width, display.y * 0.86f), ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImVec2(display.x * 0.5f, display.y * 0.53f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (!ImGui::Begin("Gait report", &open, ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {

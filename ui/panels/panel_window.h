@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "ui/render/backdrop.h"
 
 namespace ew::ui {
@@ -12,6 +14,13 @@ struct PanelRect {
   ImVec2 pos{0.0f, 0.0f};
   ImVec2 size{0.0f, 0.0f};
 };
+
+// A floating window's first size along one side of the screen (`screen` px): `share` of it, at
+// least `least` (the content's need at the UI scale, already scaled), and never closer than
+// `margin` to the edges — so that a small window or a large UI scale gets most of the screen.
+inline float floatingExtent(float screen, float share, float least, float margin) {
+  return std::min(screen - margin, std::max(screen * share, least));
+}
 
 // ImGui::Begin at a fixed place; always pair with ImGui::End(). The window's background
 // is filled by the backdrop (a plain GL clear) rather than by ImGui, unless `extra` asks

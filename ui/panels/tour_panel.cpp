@@ -31,11 +31,10 @@ float unfoldedHeight(const AppState& s, const TourStep& st, float wrapWidth) {
 
 }  // namespace
 
-// Folded when the step has the analysis window open and the card with its text would leave the
+// Whether the step has the analysis window open and the card with its text would leave that
 // window less than 0.4 of the screen's height (the window sits between the header and the card).
-bool TourPanel::textFolded(const AppState& s, const TourStep& st, float wrapWidth, float scale,
-                           bool evenIfUnfolded) const {
-  if (!s.panels.analysis.open || (unfoldedStep == step && !evenIfUnfolded)) return false;
+bool TourPanel::textCrowdsTheWindow(const AppState& s, const TourStep& st, float wrapWidth, float scale) const {
+  if (!s.panels.analysis.open) return false;
   const float screenH = ImGui::GetIO().DisplaySize.y;
   const float cardBottom = (bottom > 0.0f ? bottom : screenH) - 16.0f * scale;
   const float room = cardBottom - unfoldedHeight(s, st, wrapWidth) - 80.0f * scale;
@@ -55,7 +54,8 @@ void TourPanel::draw(AppState& s, const FrameContext& ctx) {
   // beside the drawer, so that the card stays clear of the header (1024×768 at UI scale 2).
   const float pad = 2.0f * ImGui::GetStyle().WindowPadding.x;
   if (ImGui::CalcTextSize(st.text, nullptr, false, w - pad).y > 0.4f * display.y) w = std::max(w, areaW);
-  folded = textFolded(s, st, w - pad, ctx.scale);
+  const bool foldable = textCrowdsTheWindow(s, st, w - pad, ctx.scale);
+  folded = foldable && unfoldedStep != step;
   ImGui::SetNextWindowSize(ImVec2(w, 0.0f), ImGuiCond_Always);
   const float y = (bottom > 0.0f ? bottom : display.y) - margin;
   switch (st.anchor) {
@@ -90,7 +90,7 @@ void TourPanel::draw(AppState& s, const FrameContext& ctx) {
     ImGui::Spacing();
     if (!folded) ImGui::TextUnformatted(st.text);
     ImGui::PopTextWrapPos();
-    if (unfoldedStep == step && !folded && textFolded(s, st, w - pad, ctx.scale, true)) {
+    if (foldable && !folded) {
       if (ImGui::SmallButton("Hide the text")) unfoldedStep = -1;
     }
     ImGui::Spacing();

@@ -24,9 +24,8 @@ struct TourPanel {
   void draw(AppState& s, const FrameContext& ctx);
 
  private:
-  // `evenIfUnfolded`: whether it would be folded had the reader not unfolded it.
-  bool textFolded(const AppState& s, const TourStep& st, float wrapWidth, float scale,
-                  bool evenIfUnfolded = false) const;
+  // The text would leave the window this step opened too little room: it folds unless unfolded.
+  bool textCrowdsTheWindow(const AppState& s, const TourStep& st, float wrapWidth, float scale) const;
 };
 
 }  // namespace ew::ui

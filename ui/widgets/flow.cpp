@@ -33,8 +33,8 @@ float buttonWidth(const char* label) {
   return ImGui::CalcTextSize(label, nullptr, true).x + 2.0f * ImGui::GetStyle().FramePadding.x;
 }
 
-void sameLineOrWrap(float width) {
-  ImGui::SameLine();
+void sameLineOrWrap(float width, float spacing) {
+  ImGui::SameLine(0.0f, spacing);
   if (ImGui::GetContentRegionAvail().x < width) ImGui::NewLine();
 }
 

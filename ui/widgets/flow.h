@@ -12,8 +12,8 @@ namespace ew::ui {
 float toggleWidth(const char* label);
 float buttonWidth(const char* label);
 // Before an item `width` wide that would follow the previous one: the same line when it fits,
-// else the next.
-void sameLineOrWrap(float width);
+// else the next. `spacing` < 0: the style's item spacing.
+void sameLineOrWrap(float width, float spacing = -1.0f);
 // A checkbox or radio button whose label, when the panel is too narrow for it on one line,
 // wraps between words beside the box (clicking the label still toggles).
 bool checkboxWrapped(const char* label, bool* value);
