@@ -119,12 +119,13 @@ void TourPanel::draw(AppState& s, const FrameContext& ctx) {
     }
     try {
       // Buttons as wide as 110 px × scale allows beside the dots; narrower down to their labels';
-      // on a row of their own below the dots when even that does not fit.
+      // on a row of their own below the dots when even that does not fit. Three gaps: after
+      // the dots (or the text's switch) and between the buttons.
       const ImGuiStyle& style = ImGui::GetStyle();
       const float contentW = ImGui::GetContentRegionAvail().x;
       const float minW = ImGui::CalcTextSize("End tour").x + 2.0f * style.FramePadding.x;
-      const float bw = std::clamp((contentW - leadW - 2.0f * style.ItemSpacing.x) / 3.0f, minW, 110.0f * ctx.scale);
-      if (leadW + 3.0f * bw + 2.0f * style.ItemSpacing.x > contentW) ImGui::Dummy(ImVec2(leadW, h));
+      const float bw = std::clamp((contentW - leadW - 3.0f * style.ItemSpacing.x) / 3.0f, minW, 110.0f * ctx.scale);
+      if (leadW + 3.0f * bw + 3.0f * style.ItemSpacing.x > contentW) ImGui::Dummy(ImVec2(leadW, h));
       ImGui::SetCursorPosX(ImGui::GetWindowContentRegionMax().x - 3.0f * bw - 2.0f * style.ItemSpacing.x);
       ImGui::BeginDisabled(step == 0);
       if (ImGui::Button("Back", ImVec2(bw, 0))) actions::tourBack(s);
