@@ -92,6 +92,20 @@ std::vector<Row> concat(std::vector<std::vector<Row>>&& parts) {
   return out;
 }
 
+// Runs `fold(fold, rows)` for every fold on the options' threads, with progress, and joins
+// the folds' rows in fold order (so the output does not depend on the thread count).
+template <class Row, class FoldBody>
+std::vector<Row> rowsOverFolds(const std::vector<Fold>& folds, const EvaluationOptions& options,
+                               const std::string& what, const FoldBody& fold) {
+  std::vector<std::vector<Row>> parts(folds.size());
+  FoldProgress progress(options, static_cast<int>(folds.size()), what);
+  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
+    fold(folds[static_cast<size_t>(f)], parts[static_cast<size_t>(f)]);
+    progress.foldDone();
+  });
+  return concat(std::move(parts));
+}
+
 ViewErrorRow scoreView(const std::string& subject, const std::string& condition, double alphaDeg,
                        const std::string& method, const Eigen::VectorXd& wTrue,
                        const Eigen::VectorXd& wRec) {
@@ -283,23 +297,18 @@ std::vector<ViewErrorRow> knownViewErrors(const std::vector<ExperimentWalker>& w
   checkSigma2("known view", sigma2Mm2);
   const auto angles = anglesOf(options);
   const auto ms = methods(options, sigma2Mm2);
-  std::vector<std::vector<ViewErrorRow>> parts(folds.size());
-  FoldProgress progress(options, static_cast<int>(folds.size()), "known-view");
-  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
-    const Fold& fold = folds[static_cast<size_t>(f)];
+  return rowsOverFolds<ViewErrorRow>(folds, options, "known-view", [&](const Fold& fold, auto& rows) {
     for (int r : fold.testWalkers) {
       const Eigen::VectorXd& wTrue = walkers[static_cast<size_t>(r)].fit.w;
       for (double a : angles) {
         const Eigen::VectorXd obs = projectToView(wTrue, a);
         for (const Method& m : ms) {
           const Reconstruction rec = reconstructKnownView(fold.gram, obs, a, m.estimator);
-          parts[static_cast<size_t>(f)].push_back(scoreView(fold.subject, "", a, m.name, wTrue, rec.w));
+          rows.push_back(scoreView(fold.subject, "", a, m.name, wTrue, rec.w));
         }
       }
     }
-    progress.foldDone();
   });
-  return concat(std::move(parts));
 }
 
 // [SECTION] Experiment 4: unknown view (paper fig. 6)
@@ -311,10 +320,7 @@ std::vector<UnknownViewRow> unknownViewErrors(const std::vector<ExperimentWalker
   checkSigma2("unknown view", sigma2Mm2);
   const auto angles = anglesOf(options);
   const auto ms = methods(options, sigma2Mm2);
-  std::vector<std::vector<UnknownViewRow>> parts(folds.size());
-  FoldProgress progress(options, static_cast<int>(folds.size()), "unknown-view");
-  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
-    const Fold& fold = folds[static_cast<size_t>(f)];
+  return rowsOverFolds<UnknownViewRow>(folds, options, "unknown-view", [&](const Fold& fold, auto& rows) {
     for (int r : fold.testWalkers) {
       const Eigen::VectorXd& wTrue = walkers[static_cast<size_t>(r)].fit.w;
       for (double a : angles) {
@@ -323,15 +329,12 @@ std::vector<UnknownViewRow> unknownViewErrors(const std::vector<ExperimentWalker
           const ViewSearch s = searchViewAngle(fold.gram, obs, m.estimator);
           const double est = s.best.alphaDeg;
           // Depth at the true view: the reconstruction is a walker in its own frame.
-          parts[static_cast<size_t>(f)].push_back(
-              {fold.subject, a, m.name, est, viewAngleErrorDeg(est, a),
-               depthErrors(wTrue, s.best.w, a).absMean, mpjpe(wTrue, s.best.w)});
+          rows.push_back({fold.subject, a, m.name, est, viewAngleErrorDeg(est, a),
+                          depthErrors(wTrue, s.best.w, a).absMean, mpjpe(wTrue, s.best.w)});
         }
       }
     }
-    progress.foldDone();
   });
-  return concat(std::move(parts));
 }
 
 // [SECTION] Beyond the paper: 2D noise before the Fourier fit, missing joints
@@ -348,15 +351,14 @@ std::vector<ViewErrorRow> noiseErrors(const std::vector<ExperimentWalker>& walke
   }
   const auto angles = extensionAngles(options);
   const auto ms = methods(options, sigma2Mm2);
-  std::vector<std::vector<ViewErrorRow>> parts(folds.size());
+  // Each fold's notes apart, joined in fold order as the rows are.
   std::vector<std::vector<std::string>> notes(folds.size());
-  FoldProgress progress(options, static_cast<int>(folds.size()), "noise");
-  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
-    const Fold& fold = folds[static_cast<size_t>(f)];
+  auto rows = rowsOverFolds<ViewErrorRow>(folds, options, "noise", [&](const Fold& fold, auto& foldRows) {
+    const auto f = static_cast<size_t>(&fold - folds.data());
     for (int r : fold.testWalkers) {
       const ExperimentWalker& w = walkers[static_cast<size_t>(r)];
       if (w.framesMm.rows() == 0) {
-        notes[static_cast<size_t>(f)].push_back("noise: walker " + w.id + " has no frames; skipped");
+        notes[f].push_back("noise: walker " + w.id + " has no frames; skipped");
         continue;
       }
       FourierFitOptions fitOptions;
@@ -369,8 +371,7 @@ std::vector<ViewErrorRow> noiseErrors(const std::vector<ExperimentWalker>& walke
       try {
         truth = fitFourier(w.framesMm, w.rateHz, fitOptions);
       } catch (const Error& e) {
-        notes[static_cast<size_t>(f)].push_back(
-            "noise: walker " + w.id + ": its frames cannot be fitted (" + e.what() + "); skipped");
+        notes[f].push_back("noise: walker " + w.id + ": its frames cannot be fitted (" + e.what() + "); skipped");
         continue;
       }
       for (size_t ai = 0; ai < angles.size(); ++ai) {
@@ -388,23 +389,21 @@ std::vector<ViewErrorRow> noiseErrors(const std::vector<ExperimentWalker>& walke
           try {
             fit2d = fitFourier(noisy, w.rateHz, fitOptions);
           } catch (const Error& e) {
-            notes[static_cast<size_t>(f)].push_back("noise: " + w.id + " at " + formatLevel(a) +
-                                                    "°, " + formatLevel(level) + " mm: " + e.what());
+            notes[f].push_back("noise: " + w.id + " at " + formatLevel(a) + "°, " + formatLevel(level) +
+                               " mm: " + e.what());
             continue;
           }
           for (const Method& m : ms) {
             const Reconstruction rec = reconstructKnownView(fold.gram, fit2d.w, a, m.estimator);
             const Eigen::VectorXd wRec = rephase(rec.w, fit2d.phaseRad, truth.phaseRad);
-            parts[static_cast<size_t>(f)].push_back(
-                scoreView(fold.subject, formatLevel(level), a, m.name, truth.w, wRec));
+            foldRows.push_back(scoreView(fold.subject, formatLevel(level), a, m.name, truth.w, wRec));
           }
         }
       }
     }
-    progress.foldDone();
   });
   for (auto& n : notes) warnings.insert(warnings.end(), n.begin(), n.end());
-  return concat(std::move(parts));
+  return rows;
 }
 
 std::vector<ViewErrorRow> missingJointErrors(const std::vector<ExperimentWalker>& walkers,
@@ -426,10 +425,7 @@ std::vector<ViewErrorRow> missingJointErrors(const std::vector<ExperimentWalker>
   }
   const auto angles = extensionAngles(options);
   const auto ms = methods(options, sigma2Mm2);
-  std::vector<std::vector<ViewErrorRow>> parts(folds.size());
-  FoldProgress progress(options, static_cast<int>(folds.size()), "missing-joints");
-  parallelFor(static_cast<int>(folds.size()), options.threads, [&](int f) {
-    const Fold& fold = folds[static_cast<size_t>(f)];
+  return rowsOverFolds<ViewErrorRow>(folds, options, "missing-joints", [&](const Fold& fold, auto& rows) {
     for (const JointSet& set : options.missingJointSets) {
       const ModelGram gram = precomputeModelGram(fold.model, set.joints);
       for (int r : fold.testWalkers) {
@@ -439,14 +435,12 @@ std::vector<ViewErrorRow> missingJointErrors(const std::vector<ExperimentWalker>
           hideJoints(obs, set.joints);
           for (const Method& m : ms) {
             const Reconstruction rec = reconstructKnownView(gram, obs, a, m.estimator);
-            parts[static_cast<size_t>(f)].push_back(scoreView(fold.subject, set.name, a, m.name, wTrue, rec.w));
+            rows.push_back(scoreView(fold.subject, set.name, a, m.name, wTrue, rec.w));
           }
         }
       }
     }
-    progress.foldDone();
   });
-  return concat(std::move(parts));
 }
 
 // [SECTION] The whole evaluation
