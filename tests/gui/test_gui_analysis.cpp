@@ -104,11 +104,11 @@ TEST_F(GuiAnalysis, OtherEnginesCurvesAreDrawnAndExported) {
   ])");
   const RunResult r = runViewer(dir, "--size 1600x900 --script " + quote(script.string()));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  // The snippet engine's green (kEngineRight[1]: 61, 204, 107) in the angle plot.
+  // The snippet engine's bluish green (kEngineRight[1]: 13, 156, 97) in the angle plot.
   const cv::Mat shot = cv::imread(d + "/engines.png");
   ASSERT_FALSE(shot.empty());
   const int green = countPixels(crop(shot, Region{0.2, 0.2, 0.8, 0.6}), [](int red, int g, int b) {
-    return std::abs(red - 61) < 30 && std::abs(g - 204) < 30 && std::abs(b - 107) < 30;
+    return std::abs(red - 13) < 30 && std::abs(g - 156) < 30 && std::abs(b - 97) < 30;
   });
   EXPECT_GT(green, 300) << "no snippet curve drawn";
 

@@ -119,9 +119,11 @@ namespace {
 using GuiCompare = GuiTest;
 
 // The engines' colours in compare mode (ui/render/palette.h kEngineRight): the snippet
-// engine's green and the skeleton engine's violet, lit (the renderer shades them).
-bool isSnippetGreen(int r, int g, int b) { return g > 120 && g - r > 60 && g - b > 40; }
-bool isSkeletonViolet(int r, int g, int b) { return b > 150 && r > 110 && r - g > 50 && b - g > 80; }
+// engine's bluish green (13, 156, 97) and the skeleton engine's magenta (252, 15, 184), lit
+// (the renderer shades them, keeping their proportions). The green by its proportions, to
+// part it from the camera's teal (82, 224, 194), whose blue is 87 % of its green.
+bool isSnippetGreen(int r, int g, int b) { return g > 70 && 10 * r < 4 * g && 4 * b < 3 * g && 10 * b > 3 * g; }
+bool isSkeletonMagenta(int r, int g, int b) { return r > 140 && b > 90 && r - g > 100 && b - g > 70 && b < r; }
 
 TEST_F(GuiCompare, EveryEngineReconstructsTheWalkerDrawnTogetherWithItsErrors) {
   const auto d = dir.string();
@@ -161,21 +163,21 @@ TEST_F(GuiCompare, EveryEngineReconstructsTheWalkerDrawnTogetherWithItsErrors) {
   // Measured 17.6 / 12.3 / 43.1 mm: each well under the hundreds a wrong axis or branch gives.
   for (const auto& [engine, mm] : mpjpe) EXPECT_LT(mm, 80.0) << engine;
 
-  // Drawn together: the snippet's green and the skeleton's violet in the 3D view (measured 146
-  // and 540 pixels at phase 0.25: the snippet walker lies close over the others; the phase is
+  // Drawn together: the snippet's green and the skeleton's magenta in the 3D view (measured 108
+  // and 1128 pixels at phase 0.25: the snippet walker lies close over the others; the phase is
   // set, since a paused walker's phase is otherwise wherever loading left it); hiding them
   // removes them.
   const cv::Mat all = load("compare.png"), hidden = load("no_skeleton.png");
   const int green = countPixels(crop(all, kReconView), isSnippetGreen);
-  const int violet = countPixels(crop(all, kReconView), isSkeletonViolet);
+  const int magenta = countPixels(crop(all, kReconView), isSkeletonMagenta);
   const int greenHidden = countPixels(crop(hidden, kReconView), isSnippetGreen);
-  const int violetHidden = countPixels(crop(hidden, kReconView), isSkeletonViolet);
-  std::printf("3D view: %d green, %d violet; %d green and %d violet with both hidden\n", green, violet, greenHidden,
-              violetHidden);
+  const int magentaHidden = countPixels(crop(hidden, kReconView), isSkeletonMagenta);
+  std::printf("3D view: %d green, %d magenta; %d green and %d magenta with both hidden\n", green, magenta, greenHidden,
+              magentaHidden);
   EXPECT_GT(green, 90);
-  EXPECT_GT(violet, 300);
+  EXPECT_GT(magenta, 300);
   EXPECT_LT(greenHidden, green / 5);
-  EXPECT_LT(violetHidden, violet / 5);
+  EXPECT_LT(magentaHidden, magenta / 5);
 
   // The gait report has a column per engine, and one again when compare mode is off.
   const std::string compareCsv = readAll(dir / "compare.csv"), single = readAll(dir / "single.csv");
@@ -189,7 +191,7 @@ TEST_F(GuiCompare, EveryEngineReconstructsTheWalkerDrawnTogetherWithItsErrors) {
 
 // With the view unknown, the profile panel shows the eigenwalker's J(α) with every engine's
 // α̂ over it: the snippet engine's (a dashed line and a dot per snippet, green) and the
-// skeleton engine's (violet), whichever engine is selected; the state has each engine's α̂.
+// skeleton engine's (magenta), whichever engine is selected; the state has each engine's α̂.
 TEST_F(GuiCompare, TheViewProfileShowsEveryEnginesEstimate) {
   const auto d = dir.string();
   const auto script = writeScript(dir, R"([
@@ -213,10 +215,10 @@ TEST_F(GuiCompare, TheViewProfileShowsEveryEnginesEstimate) {
   const Region profile{0.46, 0.76, 0.82, 1.0};
   const cv::Mat shot = load("profile.png");
   const int green = countPixels(crop(shot, profile), isSnippetGreen);
-  const int violet = countPixels(crop(shot, profile), isSkeletonViolet);
-  std::printf("profile panel: %d green, %d violet pixels\n", green, violet);
+  const int magenta = countPixels(crop(shot, profile), isSkeletonMagenta);
+  std::printf("profile panel: %d green, %d magenta pixels\n", green, magenta);
   EXPECT_GT(green, 40);
-  EXPECT_GT(violet, 20);
+  EXPECT_GT(magenta, 20);
 }
 
 }  // namespace

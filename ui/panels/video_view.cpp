@@ -19,12 +19,6 @@ bool finitePair(const Eigen::Ref<const Eigen::RowVectorXd>& px, int joint) {
   return std::isfinite(px(2 * joint)) && std::isfinite(px(2 * joint + 1));
 }
 
-// Red (lost) through amber to green (sure), as video/track_overlay.h colours them.
-glm::vec4 confidenceColour(double c) {
-  const float t = static_cast<float>(std::clamp(c, 0.0, 1.0));
-  return {std::min(1.0f, 2.0f - 2.0f * t), std::min(1.0f, 2.0f * t), 0.25f, 1.0f};
-}
-
 void addBones(Scene& scene, const Eigen::Ref<const Eigen::RowVectorXd>& px, float width,
               glm::vec4 colour) {
   for (const auto& [a, b] : kBones) {
@@ -44,7 +38,7 @@ void addTrackedPose(Scene& scene, const TrackedVideo& t, int frame, float radius
   for (int j = 0; j < kJointCount; ++j) {
     if (!finitePair(px, j)) continue;
     scene.glows.push_back({glm::vec3(scenePoint(px(2 * j), px(2 * j + 1)), 0.5f), radius,
-                           confidenceColour(t.track.confidence(row, j))});
+                           palette::confidenceColour(static_cast<float>(t.track.confidence(row, j)))});
   }
 }
 

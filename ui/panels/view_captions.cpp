@@ -136,8 +136,8 @@ ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool 
       legend.push_back({palette::kError, "residual", true});
     }
   } else if (v.tracked) {
-    legend.push_back({glm::vec4(0.3f, 1.0f, 0.25f, 1.0f), "tracked: sure", false});
-    legend.push_back({glm::vec4(1.0f, 0.2f, 0.25f, 1.0f), "tracked: lost", false});
+    legend.push_back({palette::confidenceColour(1.0f), "tracked: sure", false});
+    legend.push_back({palette::confidenceColour(0.0f), "tracked: lost", false});
   }
   return {"2D input (video)", sub, std::move(legend)};
 }

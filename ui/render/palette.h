@@ -1,7 +1,10 @@
 #pragma once
 // The viewer's colours, chosen to separate on a dark background and on a projector:
 // reconstruction warm (amber), ground truth cool (blue ghost), 2D input neutral white,
-// errors magenta, the view camera teal. Depth error uses a sequential colour map.
+// errors magenta, the view camera teal, the estimated camera red. Depth error uses a
+// sequential colour map. The colours that must be told apart stay apart for the common
+// colour vision deficiencies too: tests/ui/test_colour_vision.cpp measures them
+// (ui/render/colour_vision.h).
 
 #include <algorithm>
 #include <array>
@@ -21,20 +24,24 @@ inline constexpr glm::vec4 kInputPoint{0.96f, 0.97f, 1.00f, 1.0f};
 inline constexpr glm::vec4 kModelEstimated{0.40f, 0.62f, 0.66f, 1.0f};
 inline constexpr glm::vec4 kInputBoneRight{0.62f, 0.68f, 0.78f, 0.85f};
 inline constexpr glm::vec4 kInputBoneLeft{0.42f, 0.47f, 0.56f, 0.85f};
-inline constexpr glm::vec4 kError{1.00f, 0.28f, 0.62f, 0.95f};
+inline constexpr glm::vec4 kError{1.00f, 0.20f, 0.60f, 0.95f};
 inline constexpr glm::vec4 kCamera{0.32f, 0.88f, 0.76f, 1.0f};
-inline constexpr glm::vec4 kCameraEstimate{1.00f, 0.36f, 0.55f, 1.0f};
+// Red: apart from the errors' magenta (it was a pink 2.5 CIEDE2000 from it for a tritanope
+// and 6 for anyone) and from the true camera's teal, on the dark views and the light theme.
+inline constexpr glm::vec4 kCameraEstimate{0.86f, 0.05f, 0.05f, 1.0f};
 // The people of a keypoint clip besides the one fitted (the person picker's other tracks).
 inline constexpr glm::vec4 kOtherPerson{0.70f, 0.56f, 0.86f, 0.75f};
 inline constexpr glm::vec4 kTrail{0.55f, 0.75f, 1.00f, 0.30f};
 inline constexpr glm::vec4 kAxis{0.40f, 0.44f, 0.50f, 0.8f};
 
-// Compare mode: one hue per engine (index of kEngineKinds: eigenwalker, snippet, skeleton),
-// the eigenwalker keeping the reconstruction's amber; distinct for the common colour
-// deficiencies in lightness as well as hue.
+// Compare mode: one colour per engine (index of kEngineKinds: eigenwalker, snippet,
+// skeleton), the eigenwalker keeping the reconstruction's amber: a bluish green and a
+// magenta, each apart from the others, the ground truth's blue and the camera's teal for
+// every simulated dichromacy (the violet they replace was 1.6 CIEDE2000 from the truth's
+// blue for a deuteranope).
 inline constexpr std::array<glm::vec4, 3> kEngineRight{{{1.00f, 0.60f, 0.22f, 1.0f},
-                                                         {0.24f, 0.80f, 0.42f, 1.0f},
-                                                         {0.78f, 0.46f, 1.00f, 1.0f}}};
+                                                         {0.05f, 0.61f, 0.38f, 1.0f},
+                                                         {0.99f, 0.06f, 0.72f, 1.0f}}};
 inline glm::vec4 engineLighter(const glm::vec4& c, float t) { return {glm::mix(glm::vec3(c), glm::vec3(1.0f), t), c.a}; }
 
 // Sequential map for errors, t in [0, 1]: teal → green-yellow → amber → red → magenta.
@@ -48,6 +55,14 @@ inline glm::vec4 errorColour(float t) {
   const auto i = std::min(static_cast<std::size_t>(x), stops.size() - 2);
   const float f = x - static_cast<float>(i);
   return {glm::mix(stops[i], stops[i + 1], f), 1.0f};
+}
+
+// A tracked joint's confidence, c in [0, 1]: vermilion (lost) to sky blue (sure), whose
+// order every simulated dichromacy keeps (red to green did not: amber, half sure, looked
+// as sure as green to a deuteranope). The viewer and video/track_overlay.cpp draw it.
+inline glm::vec4 confidenceColour(float c) {
+  constexpr glm::vec3 lost{0.95f, 0.30f, 0.05f}, sure{0.35f, 0.75f, 1.00f};
+  return {glm::mix(lost, sure, std::clamp(c, 0.0f, 1.0f)), 1.0f};
 }
 
 // The colour bar's top value: a round number of mm at or above `maxMm` (at least 20).
