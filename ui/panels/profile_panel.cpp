@@ -184,7 +184,10 @@ void drawProfile(const ReconBase& r, const ViewSearch& vs, const FrameContext& c
     std::snprintf(buf, sizeof buf, "%.1f°%s%s", mn.alphaDeg, mn.mirrorOfBest && m ? " mirror" : "",
                   mn.facingOfBest && m ? " facing" : "");
     const float tw = ImGui::CalcTextSize(buf).x;
-    dl->AddText(ImVec2(std::clamp(c.x - tw * 0.5f, a.x, b.x - tw), c.y - textH - 5.0f * ctx.scale), col, buf);
+    // The best one's figure in the text's colour: its dot's red is too dark to read small on
+    // the dark plot.
+    dl->AddText(ImVec2(std::clamp(c.x - tw * 0.5f, a.x, b.x - tw), c.y - textH - 5.0f * ctx.scale),
+                m == 0 ? ImGui::GetColorU32(ImGuiCol_Text) : col, buf);
   }
   if (compare) drawOtherEngines(*compare, X, a, b, ctx.scale);
   ImGui::Dummy(avail);

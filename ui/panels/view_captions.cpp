@@ -20,9 +20,10 @@ std::vector<LegendItem> walkerReconstructionLegend(const AppState& s) {
   const bool reconstruct = s.doc.mode == Mode::Reconstruct;
   const ReconBase* r = s.derived.recon();
   std::vector<LegendItem> legend;
+  const bool compare = reconstruct && s.doc.compareEngines && s.derived.compare();
   if (o.pointLights) {
     legend.push_back({palette::kInputPoint, reconstruct ? "reconstructed joints (point-lights)" : "joints (point-lights)", false});
-  } else if (reconstruct && s.doc.compareEngines && s.derived.compare()) {
+  } else if (compare) {
     for (const auto& e : s.derived.compare()->engines) {
       const auto k = static_cast<std::size_t>(e.engine);
       if (!s.doc.compareShown[k]) continue;
@@ -48,7 +49,9 @@ std::vector<LegendItem> walkerReconstructionLegend(const AppState& s) {
   }
   if (o.cameraGlyph) {
     legend.push_back({palette::kCamera, "camera of the 2D view", true});
-    if (reconstruct && s.doc.recon.unknownAngle)
+    // Compare mode draws no estimated camera: each engine has its own α̂ (the profile panel
+    // shows them all).
+    if (reconstruct && !compare && s.doc.recon.unknownAngle)
       legend.push_back({palette::kCameraEstimate, "estimated camera (est. α)", true});
   }
   return legend;

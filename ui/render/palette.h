@@ -28,7 +28,7 @@ inline constexpr glm::vec4 kError{1.00f, 0.20f, 0.60f, 0.95f};
 inline constexpr glm::vec4 kCamera{0.32f, 0.88f, 0.76f, 1.0f};
 // Red: apart from the errors' magenta (it was a pink 2.5 CIEDE2000 from it for a tritanope
 // and 6 for anyone) and from the true camera's teal, on the dark views and the light theme.
-inline constexpr glm::vec4 kCameraEstimate{0.86f, 0.05f, 0.05f, 1.0f};
+inline constexpr glm::vec4 kCameraEstimate{0.90f, 0.15f, 0.10f, 1.0f};
 // The people of a keypoint clip besides the one fitted (the person picker's other tracks).
 inline constexpr glm::vec4 kOtherPerson{0.70f, 0.56f, 0.86f, 0.75f};
 inline constexpr glm::vec4 kTrail{0.55f, 0.75f, 1.00f, 0.30f};
