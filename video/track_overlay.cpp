@@ -17,13 +17,13 @@ cv::Point at(const Eigen::Ref<const Eigen::RowVectorXd>& p, int j) {
   return {static_cast<int>(std::lround(p(2 * j))), static_cast<int>(std::lround(p(2 * j + 1)))};
 }
 
-// Vermilion (lost) to sky blue (sure), BGR: the viewer's palette::confidenceColour
+// Red (lost) to blue (sure), BGR: the viewer's palette::confidenceColour
 // (ui/render/palette.h, whose order the colour deficiencies keep; tests/ui/test_colour_vision.cpp
 // checks that the two agree).
 cv::Scalar confidenceColour(double c) {
   c = std::clamp(c, 0.0, 1.0);
   const auto mix = [c](double lost, double sure) { return 255.0 * (lost + (sure - lost) * c); };
-  return {mix(0.05, 1.00), mix(0.30, 0.75), mix(0.95, 0.35)};
+  return {mix(0.02, 0.98), mix(0.12, 0.51), mix(0.86, 0.34)};
 }
 
 }  // namespace

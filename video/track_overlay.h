@@ -1,6 +1,6 @@
 #pragma once
 // A 2D track drawn over its video frame: the 14 bones and a dot per joint, the dot's
-// colour from the joint's confidence (sky blue sure, vermilion lost), so that a user sees at a
+// colour from the joint's confidence (blue sure, red lost), so that a user sees at a
 // glance where the tracker holds and where it guessed.
 
 #include <Eigen/Core>

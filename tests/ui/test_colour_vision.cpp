@@ -131,6 +131,27 @@ TEST(Palette, TheReconstructionViewsMarksStayApartForEveryVision) {
                  "reconstruction view");
 }
 
+TEST(Palette, AKeypointClipsMarksStayApartForEveryVision) {
+  using namespace palette;
+  // The clip's 2D view is darker than the 3D views (ui/panels/clip_view.cpp).
+  const glm::vec3 clipBackground{0.06f, 0.07f, 0.08f};
+  expectAllApart({opaque("keypoints", kInputPoint), opaque("reprojection", kReconRight), opaque("residual", kError),
+                  opaque("principal point", kCamera), {"other people", over(kOtherPerson, clipBackground)}},
+                 "keypoint clip");
+}
+
+TEST(Palette, AVideosMarksStayApartForEveryVision) {
+  using namespace palette;
+  // Tracked, before the fit: the keyframe's marks and the joints by their confidence.
+  expectAllApart({opaque("keyframe marks", kCamera), opaque("lost", confidenceColour(0.0f)),
+                  opaque("half sure", confidenceColour(0.5f)), opaque("sure", confidenceColour(1.0f))},
+                 "video, tracked");
+  // Fitted: the keyframe's marks, the tracked joints, the reprojection and its residuals.
+  expectAllApart({opaque("keyframe marks", kCamera), opaque("tracked", kInputPoint), opaque("reprojection", kReconRight),
+                  opaque("residual", kError)},
+                 "video, fitted");
+}
+
 TEST(Palette, ATrackedJointsConfidenceReadsInOrderForEveryVision) {
   const auto at = [](float c) { return glm::vec3(palette::confidenceColour(c)); };
   for (Vision v : kVisions) {

@@ -29,8 +29,10 @@ inline constexpr glm::vec4 kCamera{0.32f, 0.88f, 0.76f, 1.0f};
 // Red: apart from the errors' magenta (it was a pink 2.5 CIEDE2000 from it for a tritanope
 // and 6 for anyone) and from the true camera's teal, on the dark views and the light theme.
 inline constexpr glm::vec4 kCameraEstimate{0.90f, 0.15f, 0.10f, 1.0f};
-// The people of a keypoint clip besides the one fitted (the person picker's other tracks).
-inline constexpr glm::vec4 kOtherPerson{0.70f, 0.56f, 0.86f, 0.75f};
+// The people of a keypoint clip besides the one fitted (the person picker's other tracks):
+// a muted khaki, apart from the residuals' magenta (the violet it replaces was 3.6 CIEDE2000
+// from it for a protanope), the keypoints' white, the reprojection's amber and the camera.
+inline constexpr glm::vec4 kOtherPerson{0.58f, 0.55f, 0.22f, 0.75f};
 inline constexpr glm::vec4 kTrail{0.55f, 0.75f, 1.00f, 0.30f};
 inline constexpr glm::vec4 kAxis{0.40f, 0.44f, 0.50f, 0.8f};
 
@@ -57,11 +59,13 @@ inline glm::vec4 errorColour(float t) {
   return {glm::mix(stops[i], stops[i + 1], f), 1.0f};
 }
 
-// A tracked joint's confidence, c in [0, 1]: vermilion (lost) to sky blue (sure), whose
-// order every simulated dichromacy keeps (red to green did not: amber, half sure, looked
-// as sure as green to a deuteranope). The viewer and video/track_overlay.cpp draw it.
+// A tracked joint's confidence, c in [0, 1]: red (lost) to blue (sure), whose order every
+// simulated dichromacy keeps (red to green did not: amber, half sure, looked further from
+// red than green to a deuteranope), each apart from the keyframe marks' teal (a lighter sky
+// blue was 7.4 CIEDE2000 from it for a tritanope). The viewer and video/track_overlay.cpp
+// draw it.
 inline glm::vec4 confidenceColour(float c) {
-  constexpr glm::vec3 lost{0.95f, 0.30f, 0.05f}, sure{0.35f, 0.75f, 1.00f};
+  constexpr glm::vec3 lost{0.86f, 0.12f, 0.02f}, sure{0.34f, 0.51f, 0.98f};
   return {glm::mix(lost, sure, std::clamp(c, 0.0f, 1.0f)), 1.0f};
 }
 
