@@ -131,24 +131,35 @@ TEST(Palette, TheReconstructionViewsMarksStayApartForEveryVision) {
                  "reconstruction view");
 }
 
+TEST(Palette, TheTwoDInputViewsMarksStayApartForEveryVision) {
+  using namespace palette;
+  expectAllApart({opaque("input joints", kInputPoint), opaque("model-estimated", kModelEstimated),
+                  opaque("reprojection", kReconRight), opaque("2D residual", kError)},
+                 "2D input view");
+}
+
 TEST(Palette, AKeypointClipsMarksStayApartForEveryVision) {
   using namespace palette;
   // The clip's 2D view is darker than the 3D views (ui/panels/clip_view.cpp).
   const glm::vec3 clipBackground{0.06f, 0.07f, 0.08f};
-  expectAllApart({opaque("keypoints", kInputPoint), opaque("reprojection", kReconRight), opaque("residual", kError),
-                  opaque("principal point", kCamera), {"other people", over(kOtherPerson, clipBackground)}},
+  expectAllApart({opaque("keypoints", kInputPoint),
+                  opaque("reprojection", kReconRight),
+                  opaque("residual", kError),
+                  opaque("principal point", kCamera),
+                  {"other people", over(kOtherPerson, clipBackground)}},
                  "keypoint clip");
 }
 
 TEST(Palette, AVideosMarksStayApartForEveryVision) {
   using namespace palette;
   // Tracked, before the fit: the keyframe's marks and the joints by their confidence.
-  expectAllApart({opaque("keyframe marks", kCamera), opaque("lost", confidenceColour(0.0f)),
-                  opaque("half sure", confidenceColour(0.5f)), opaque("sure", confidenceColour(1.0f))},
-                 "video, tracked");
+  expectAllApart(
+      {opaque("keyframe marks", kCamera), opaque("lost", confidenceColour(0.0f)),
+       opaque("half sure", confidenceColour(0.5f)), opaque("sure", confidenceColour(1.0f))},
+      "video, tracked");
   // Fitted: the keyframe's marks, the tracked joints, the reprojection and its residuals.
-  expectAllApart({opaque("keyframe marks", kCamera), opaque("tracked", kInputPoint), opaque("reprojection", kReconRight),
-                  opaque("residual", kError)},
+  expectAllApart({opaque("keyframe marks", kCamera), opaque("tracked", kInputPoint),
+                  opaque("reprojection", kReconRight), opaque("residual", kError)},
                  "video, fitted");
 }
 
@@ -185,20 +196,36 @@ TEST(Palette, TheTrackOverlayWritesTheViewersConfidenceColours) {
   }
 }
 
-TEST(Palette, TheDepthErrorMapRisesForATypicalEyeAndEndsApartForEveryVision) {
-  // For a typical eye each step up the map moves further from its start. For the red-green
-  // dichromats its upper half (amber → red → magenta) does not keep that order (measured
-  // 2026-11-27: deuteranopia 35 at t = 0.5, 23 at t = 1), so the colour bar's numbers and
-  // the errors panel's figures carry the order there; its ends stay apart for all.
-  const auto at = [](float t) { return glm::vec3(palette::errorColour(t)); };
-  float previous = 0.0f;
-  for (int k = 1; k <= 20; ++k) {
-    const float fromStart =
-        difference(at(0.0f), at(0.05f * static_cast<float>(k)), Vision::Typical);
-    EXPECT_GT(fromStart, previous) << "t = " << 0.05 * k;
-    previous = fromStart;
+TEST(Palette, TheDepthErrorMapReadsInOrderForEveryVisionOnTheReconstruction) {
+  // Each step up the map further from its start for every vision (the map it replaced was
+  // not, for a red-green dichromat: for a deuteranope its top was 23 CIEDE2000 from its start
+  // and its middle 35), its ends far apart, and every colour of it apart from what it stands
+  // among on the reconstruction: the figure's amber, the translucent ghost, the error lines,
+  // a model-estimated joint's grey; and visible on the dark view.
+  using namespace palette;
+  const auto at = [](float t) { return glm::vec3(errorColour(t)); };
+  const std::vector<Named> among{opaque("reconstruction", kReconRight),
+                                 {"ghost", over(kGhostRight, kViewBackground)},
+                                 opaque("3D error", kError),
+                                 opaque("model-estimated", kModelEstimated)};
+  for (Vision v : kVisions) {
+    float previous = 0.0f;
+    for (int k = 1; k <= 20; ++k) {
+      const float t = 0.05f * static_cast<float>(k);
+      const float fromStart = difference(at(0.0f), at(t), v);
+      EXPECT_GT(fromStart, previous + 0.5f) << visionName(v) << " at t = " << t;
+      previous = fromStart;
+    }
+    EXPECT_GE(difference(at(0.0f), at(1.0f), v), 40.0f) << visionName(v);
+    for (int k = 0; k <= 20; ++k) {
+      const float t = 0.05f * static_cast<float>(k);
+      for (const Named& n : among)
+        EXPECT_GE(difference(at(t), n.colour, v), kApart)
+            << n.name << ", t = " << t << ", " << visionName(v);
+      EXPECT_GE(difference(at(t), kViewBackground, v), 20.0f)
+          << "t = " << t << ", " << visionName(v);
+    }
   }
-  for (Vision v : kVisions) EXPECT_GE(difference(at(0.0f), at(1.0f), v), 20.0f) << visionName(v);
 }
 
 }  // namespace

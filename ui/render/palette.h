@@ -21,7 +21,9 @@ inline constexpr glm::vec4 kGhostLeft{0.62f, 0.80f, 1.00f, 0.38f};
 inline constexpr glm::vec4 kGhostMid{0.50f, 0.72f, 1.00f, 0.38f};
 inline constexpr glm::vec4 kInputPoint{0.96f, 0.97f, 1.00f, 1.0f};
 // A joint the trial's marker set lacks, estimated from a model: not a measured point-light.
-inline constexpr glm::vec4 kModelEstimated{0.40f, 0.62f, 0.66f, 1.0f};
+// A neutral grey: on the reconstruction it stands among joints coloured by the error map,
+// every one of whose colours it stays apart from for each colour vision.
+inline constexpr glm::vec4 kModelEstimated{0.46f, 0.48f, 0.51f, 1.0f};
 inline constexpr glm::vec4 kInputBoneRight{0.62f, 0.68f, 0.78f, 0.85f};
 inline constexpr glm::vec4 kInputBoneLeft{0.42f, 0.47f, 0.56f, 0.85f};
 inline constexpr glm::vec4 kError{1.00f, 0.20f, 0.60f, 0.95f};
@@ -46,13 +48,19 @@ inline constexpr std::array<glm::vec4, 3> kEngineRight{{{1.00f, 0.60f, 0.22f, 1.
                                                          {0.99f, 0.06f, 0.72f, 1.0f}}};
 inline glm::vec4 engineLighter(const glm::vec4& c, float t) { return {glm::mix(glm::vec3(c), glm::vec3(1.0f), t), c.a}; }
 
-// Sequential map for errors, t in [0, 1]: teal → green-yellow → amber → red → magenta.
+// Sequential map for errors, t in [0, 1]: pale mint → cyan → lavender → violet → purple,
+// lightness falling all the way, so that its order reads for every colour vision (each step
+// further from its start for a typical eye and each simulated dichromat), apart from the
+// reconstruction's amber it colours the joints of, and never too dark for the dark views.
+// (Until 2026-11-27 it ran teal → green-yellow → amber → red → magenta: its middle was the
+// figure's own amber, and a red-green dichromat could not order its upper half; for a
+// deuteranope its top was nearer its start than its middle, 23 against 35 CIEDE2000.)
 inline glm::vec4 errorColour(float t) {
-  constexpr std::array<glm::vec3, 5> stops{{{0.16f, 0.80f, 0.72f},
-                                             {0.62f, 0.88f, 0.30f},
-                                             {0.99f, 0.80f, 0.20f},
-                                             {0.98f, 0.42f, 0.20f},
-                                             {0.90f, 0.16f, 0.42f}}};
+  constexpr std::array<glm::vec3, 5> stops{{{0.78f, 1.00f, 0.90f},
+                                             {0.39f, 0.87f, 0.90f},
+                                             {0.76f, 0.54f, 1.00f},
+                                             {0.79f, 0.24f, 0.99f},
+                                             {0.70f, 0.00f, 0.87f}}};
   const float x = std::clamp(t, 0.0f, 1.0f) * static_cast<float>(stops.size() - 1);
   const auto i = std::min(static_cast<std::size_t>(x), stops.size() - 2);
   const float f = x - static_cast<float>(i);
