@@ -140,8 +140,13 @@ inline int countPixels(const cv::Mat& bgr, const std::function<bool(int, int, in
 
 // The 2D input's point-lights saturate to white (UI text never does).
 inline bool isPointLight(int r, int g, int b) { return r >= 250 && g >= 250 && b >= 250; }
-// The reconstruction's amber bones.
-inline bool isAmber(int r, int g, int b) { return r > 190 && g > 80 && g < 200 && b < 110 && r - b > 120; }
+// The reconstruction's amber bones, lit and under the translucent blue ghost (which turns
+// them to a duller brown, 160, 128, 96): red above green above blue, green 40-92 % of red
+// (the estimated camera's red and the greys are outside). Its joints take the error map's
+// colours (cyan to purple), none of them warm.
+inline bool isAmber(int r, int g, int b) {
+  return r > 110 && g > b && r - b > 50 && 10 * g > 4 * r && 100 * g < 92 * r;
+}
 // The ground-truth ghost: blue dominant.
 inline bool isGhostBlue(int r, int g, int b) { return b > 60 && b - r > 35 && b > g + 15; }
 // Error lines: magenta.
