@@ -52,6 +52,10 @@ int drawJointBars(const std::array<double, kJointCount>& values, const std::arra
                       2.0f);
     dl->AddRectFilled(ImVec2(x + labelW, by), ImVec2(x + labelW + w, by + bh),
                       apart[ju] ? toImU32(palette::kModelEstimated) : toImU32(palette::errorColour(v / scaleMax)), 2.0f);
+    // Outlined: the map's pale low end on the light theme's track would barely show.
+    if (w >= 1.0f)
+      dl->AddRect(ImVec2(x + labelW, by), ImVec2(x + labelW + w, by + bh), ImGui::GetColorU32(ImGuiCol_TextDisabled, 0.7f),
+                  2.0f, 0, std::max(1.0f, scale));
     char buf[32];
     if (!known) {
       std::snprintf(buf, sizeof buf, "–");
