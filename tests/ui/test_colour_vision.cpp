@@ -121,6 +121,20 @@ TEST(Palette, CompareModesColoursStayApartForEveryVision) {
                  "compare, plots");
 }
 
+TEST(Palette, TheAnalysisAndProfilePlotsColoursStayApartForEveryVision) {
+  using namespace palette;
+  // The analysis window with the other engines: LSQ, MAP and the two engines' curves.
+  expectAllApart({opaque("LSQ", kLsq), opaque("MAP", kMap), opaque("snippet", kEngineRight[1]),
+                  opaque("skeleton", kEngineRight[2])},
+                 "analysis");
+  // J(α) and the camera fit's starts: the best minimum, the others, the true view, and in
+  // compare mode the other engines' estimates.
+  expectAllApart({opaque("best", kCameraEstimate), opaque("other minima", kOtherMinimum),
+                  opaque("true view", kCamera), opaque("snippet", kEngineRight[1]),
+                  opaque("skeleton", kEngineRight[2])},
+                 "view-angle profile");
+}
+
 TEST(Palette, TheReconstructionViewsMarksStayApartForEveryVision) {
   using namespace palette;
   expectAllApart({{"ghost", over(kGhostRight, kViewBackground)},

@@ -20,8 +20,8 @@ namespace ew::ui {
 
 namespace {
 
-constexpr ImU32 kLsqColour = IM_COL32(110, 170, 255, 255);   // blue
-constexpr ImU32 kMapColour = IM_COL32(255, 160, 60, 255);    // amber (as the reconstruction)
+const ImU32 kLsqColour = toImU32(palette::kLsq);
+const ImU32 kMapColour = toImU32(palette::kMap);
 
 double sweepValue(const SigmaSweepRow& row, ErrorMetric m) {
   switch (m) {

@@ -33,7 +33,7 @@ void drawClipStarts(const AppState& s, const FrameContext& ctx) {
     ys.push_back(std::max(starts[i].reprojectionRmsPx, 1e-3));
   }
   const PlotSeries series[] = {
-      {"where a start ended", alpha, rms, IM_COL32(250, 200, 90, 255), 0.0f, false, true},
+      {"where a start ended", alpha, rms, toImU32(palette::kOtherMinimum), 0.0f, false, true},
       {"the fit", bestAlpha, bestRms, toImU32(palette::kCameraEstimate), 0.0f, false, true}};
   PlotSpec spec;
   spec.xLabel = "camera azimuth α (°)";
@@ -178,7 +178,7 @@ void drawProfile(const ReconBase& r, const ViewSearch& vs, const FrameContext& c
   for (std::size_t m = 0; m < vs.minima.size(); ++m) {
     const auto& mn = vs.minima[m];
     const ImVec2 c{X(mn.alphaDeg), Y(mn.objective)};
-    const ImU32 col = m == 0 ? toImU32(palette::kCameraEstimate) : IM_COL32(250, 200, 90, 255);
+    const ImU32 col = m == 0 ? toImU32(palette::kCameraEstimate) : toImU32(palette::kOtherMinimum);
     dl->AddCircleFilled(c, (m == 0 ? 5.5f : 4.0f) * ctx.scale, col);
     char buf[48];
     std::snprintf(buf, sizeof buf, "%.1f°%s%s", mn.alphaDeg, mn.mirrorOfBest && m ? " mirror" : "",

@@ -47,6 +47,12 @@ inline constexpr glm::vec4 kAxis{0.40f, 0.44f, 0.50f, 0.8f};
 inline constexpr std::array<glm::vec4, 3> kEngineRight{{{1.00f, 0.60f, 0.22f, 1.0f},
                                                          {0.05f, 0.61f, 0.38f, 1.0f},
                                                          {0.99f, 0.06f, 0.72f, 1.0f}}};
+// The analysis window's estimators (with the engines' colours beside them when asked).
+inline constexpr glm::vec4 kLsq{0.43f, 0.67f, 1.00f, 1.0f};
+inline constexpr glm::vec4 kMap{1.00f, 0.63f, 0.24f, 1.0f};  // amber, as the reconstruction
+// A local minimum of J(α) or a camera fit's start that is not the best (the best one is
+// kCameraEstimate).
+inline constexpr glm::vec4 kOtherMinimum{0.98f, 0.78f, 0.35f, 1.0f};
 inline glm::vec4 engineLighter(const glm::vec4& c, float t) { return {glm::mix(glm::vec3(c), glm::vec3(1.0f), t), c.a}; }
 
 // Sequential map for errors, t in [0, 1]: pale mint → cyan → lavender → violet → purple,
