@@ -48,7 +48,7 @@ constexpr std::array<TourStep, 6> kSteps{{
      "seen from there with its depth reversed casts the same image. J(α) has a second dip "
      "near −α, but on its logarithmic scale it lies far above the best fit: a depth-reversed "
      "walker is a mirror image, and the model knows people do not walk like that. In 3D the "
-     "pink camera is the estimate, the teal one the truth.",
+     "red camera is the estimate, the teal one the truth.",
      R"([{"drawer_tab": "view"}, {"show_panel": ["analysis", false]}, {"set_method": "map"}, {"set_angle": 45}, {"unknown_angle": true},
          {"set_camera": "top"}])"},
     {TourAnchor::BottomRight, "What the errors mean",
