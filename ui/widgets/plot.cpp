@@ -87,9 +87,11 @@ LegendRows flowLegend(std::span<const PlotSeries> series, float width, float swa
 void legendSwatch(ImDrawList* dl, const PlotSeries& s, ImVec2 s0, ImVec2 s1, float scale) {
   if (s.dashed) {
     dashedLine(dl, s0, s1, s.colour, s.thickness * scale, 4.0f * scale);
-  } else {
+  } else if (s.thickness > 0.0f) {
     dl->AddLine(s0, s1, s.colour, s.thickness * scale);
   }
+  // A dot for a series drawn with dots (alone, for a scatter, which has no line to show).
+  if (s.points) dl->AddCircleFilled(ImVec2(0.5f * (s0.x + s1.x), 0.5f * (s0.y + s1.y)), 3.0f * scale, s.colour);
 }
 
 void dashedLine(ImDrawList* dl, ImVec2 a, ImVec2 b, ImU32 c, float t, float dash) {
@@ -175,6 +177,14 @@ void drawPlot(const char* id, const ImVec2& size, const PlotSpec& spec, std::spa
     x1 = std::ceil(x1);
   }
   if (x1 <= x0) x1 = x0 + 1.0;
+  // A scatter (points without a line) keeps its outermost dots whole: a margin each side.
+  const bool scatter =
+      std::any_of(series.begin(), series.end(), [](const PlotSeries& s) { return s.points && s.thickness <= 0.0f; });
+  if (scatter && !spec.xLog) {
+    const double margin = 0.04 * (x1 - x0);
+    x0 -= margin;
+    x1 += margin;
+  }
 
   // Plot area: y tick labels on the left, x tick labels and the x label below, the y label above.
   std::vector<double> yTicks;
