@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/skeleton.h"
+#include "video/confidence_colour.h"
 
 namespace ew {
 namespace {
@@ -17,13 +18,10 @@ cv::Point at(const Eigen::Ref<const Eigen::RowVectorXd>& p, int j) {
   return {static_cast<int>(std::lround(p(2 * j))), static_cast<int>(std::lround(p(2 * j + 1)))};
 }
 
-// Red (lost) to blue (sure), BGR: the viewer's palette::confidenceColour
-// (ui/render/palette.h, whose order the colour deficiencies keep; tests/ui/test_colour_vision.cpp
-// checks that the two agree).
+// Red (lost) to blue (sure), BGR: the viewer's ramp (video/confidence_colour.h).
 cv::Scalar confidenceColour(double c) {
-  c = std::clamp(c, 0.0, 1.0);
-  const auto mix = [c](double lost, double sure) { return 255.0 * (lost + (sure - lost) * c); };
-  return {mix(0.02, 0.98), mix(0.12, 0.51), mix(0.86, 0.34)};
+  const ConfidenceRgb rgb = confidenceRgb(c);
+  return {255.0 * rgb.b, 255.0 * rgb.g, 255.0 * rgb.r};
 }
 
 }  // namespace

@@ -11,6 +11,8 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "video/confidence_colour.h"
+
 namespace ew::ui::palette {
 
 inline constexpr glm::vec4 kReconRight{1.00f, 0.60f, 0.22f, 1.0f};
@@ -78,10 +80,10 @@ inline glm::vec4 errorColour(float t) {
 // simulated dichromacy keeps (red to green did not: amber, half sure, looked further from
 // red than green to a deuteranope), each apart from the keyframe marks' teal (a lighter sky
 // blue was 7.4 CIEDE2000 from it for a tritanope). The viewer and video/track_overlay.cpp
-// draw it.
+// draw it (the ramp itself: video/confidence_colour.h, which the footage library shares).
 inline glm::vec4 confidenceColour(float c) {
-  constexpr glm::vec3 lost{0.86f, 0.12f, 0.02f}, sure{0.34f, 0.51f, 0.98f};
-  return {glm::mix(lost, sure, std::clamp(c, 0.0f, 1.0f)), 1.0f};
+  const ConfidenceRgb rgb = confidenceRgb(c);
+  return {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b), 1.0f};
 }
 
 // The colour bar's top value: a round number of mm at or above `maxMm` (at least 20).
