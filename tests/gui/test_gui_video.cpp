@@ -101,6 +101,29 @@ TEST_F(GuiVideo, WhileMarkingCtrlZUndoesTheKeyframes) {
   EXPECT_EQ(redone["keyframes"], marked["keyframes"]);
 }
 
+// Before a track, play plays the video's own frames (one at most per drawn frame, so none is
+// skipped) and pause holds them; the transport's slider is the video's frame.
+TEST_F(GuiVideo, PlaysTheVideosOwnFramesBeforeATrack) {
+  const Footage f = writeWalkingFootage(dir);
+  const json script = json::array({
+      {{"open", f.video.string()}},
+      {{"video_frame", 10}},
+      {{"play", true}},
+      {{"wait_frames", 20}},
+      {{"play", false}},
+      {{"export_state", path("played.json")}},
+      {{"wait_frames", 10}},
+      {{"export_state", path("paused.json")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const int played = state("played.json")["video"]["shown_frame"].get<int>();
+  EXPECT_GT(played, 10) << "play moved the video on";
+  EXPECT_LE(played, 10 + 21) << "one video frame at most per drawn frame";
+  EXPECT_EQ(state("paused.json")["video"]["shown_frame"].get<int>(), played) << "pause holds the frame";
+}
+
 TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
   const Footage f = writeWalkingFootage(dir);
   ASSERT_GE(f.truthPx.rows(), 90) << "three gait cycles at 30 fps";

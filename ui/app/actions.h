@@ -227,6 +227,12 @@ bool showsTrackFit(const AppState& s);
 // joints are marked or before it is tracked, the clip's frames (round its ends, as playback
 // loops), else 1/60 s of the synthesised walker's cycle. Pauses a clip or video.
 void stepFrame(AppState& s, int delta);
+// True while the transport plays and steps the open video's own frames: its joints are being
+// marked, or it has no track yet.
+bool stepsVideoFrames(const AppState& s);
+// Playback moves on by `seconds` × its speed: the video's own frames at its frame rate
+// (stepsVideoFrames; round its end, as a walker's cycle loops), else the walker's cycle.
+void advancePlayback(AppState& s, double seconds);
 // The time one stepFrame moves, in seconds.
 double frameStepS(const AppState& s);
 

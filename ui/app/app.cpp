@@ -379,7 +379,7 @@ class App {
       runner_.step(state_);
       actions::followModelSigma2(state_);  // the script may have changed the model
       state_.derived.update(state_.doc);
-      state_.view.playback.advance(dt, actions::playbackStrideHz(state_));
+      actions::advancePlayback(state_, dt);
       stepVideoExport();
     } catch (const std::exception& e) {
       reportUnexpected(e.what());

@@ -62,6 +62,7 @@ struct VideoSession {
   // The frame last drawn and its number: shown while the frame asked for is decoding.
   std::shared_ptr<const cv::Mat> shown;
   int shownIndex = -1;
+  double playedFrames = 0.0;  // playback's share of a frame not shown yet (stepsVideoFrames)
 
   int frameCount() const { return frames ? frames->frameCount() : 0; }
   double fps() const { return frames ? frames->info().fps : 0.0; }

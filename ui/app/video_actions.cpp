@@ -127,6 +127,7 @@ void saveKeyframes(AppState& s, const std::filesystem::path& path) {
 void setVideoFrame(AppState& s, int frame) {
   VideoSession& v = session(s);
   v.frame = std::clamp(frame, 0, std::max(v.frameCount() - 1, 0));
+  v.playedFrames = 0.0;
   if (v.marking) v.markStep = nextUnmarked(v, 0);
   // A tracked clip shows this frame too, when it covers it.
   if (showsTrackFit(s) && v.frame >= v.tracked->track.firstFrame &&
@@ -312,12 +313,11 @@ int shownVideoFrame(const AppState& s) {
   return v.frame;
 }
 
-namespace {
-
-// The video's own frames are stepped (not the clip's): it is marked, or not tracked yet.
 bool stepsVideoFrames(const AppState& s) {
   return s.doc.mode == Mode::Clip && s.video && (s.video->marking || !showsTrackFit(s));
 }
+
+namespace {
 
 bool stepsClipFrames(const AppState& s) {
   return s.doc.mode == Mode::Clip && s.clip && s.clip->rec.trial.frameCount > 0 &&
@@ -336,6 +336,24 @@ void stepFrame(AppState& s, int delta) {
   } else {
     s.view.playback.step(delta, playbackStrideHz(s));
   }
+}
+
+void advancePlayback(AppState& s, double seconds) {
+  if (!stepsVideoFrames(s)) {
+    s.view.playback.advance(seconds, playbackStrideHz(s));
+    return;
+  }
+  VideoSession& v = *s.video;
+  const auto& p = s.view.playback;
+  // One video frame at most per drawn frame, and none while the last is still decoding:
+  // every frame is seen (a slow machine plays slower, never skips).
+  if (!p.playing || v.fps() <= 0.0 || v.frameCount() < 1 || v.shownIndex != v.frame) return;
+  v.playedFrames += seconds * static_cast<double>(p.speed) * v.fps();
+  const int whole = static_cast<int>(v.playedFrames);
+  if (whole < 1) return;
+  v.playedFrames -= whole;
+  v.frame = (v.frame + std::min(whole, 1)) % v.frameCount();
+  if (v.marking) v.markStep = nextUnmarked(v, 0);
 }
 
 double frameStepS(const AppState& s) {

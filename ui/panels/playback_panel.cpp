@@ -1,5 +1,6 @@
 #include "ui/panels/playback_panel.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "ui/app/actions.h"
@@ -29,16 +30,19 @@ void clipFrameSlider(AppState& s, const ClipResult& c, bool narrow) {
   if (narrow && ImGui::IsItemHovered()) ImGui::SetTooltip("frame (%.2f s)", shown / c.rec.trial.rateHz);
 }
 
-// A tracked video's clip is played in the video's own frame numbers (from 0, as the video's
-// scrubber, the keyframe files and `track --first/--last` count them), over the tracked range.
-void trackedVideoFrameSlider(AppState& s, bool narrow) {
+// A video is played in its own frame numbers (from 0, as the video's scrubber, the keyframe
+// files and `track --first/--last` count them): over the tracked range when its track's fit
+// is shown, else over the whole video.
+void videoFrameSlider(AppState& s, bool narrow) {
   const VideoSession& v = *s.video;
+  const bool tracked = !actions::stepsVideoFrames(s);
   int frame = actions::shownVideoFrame(s);
   const double seconds = v.fps() > 0.0 ? frame / v.fps() : 0.0;
   char format[64];
   std::snprintf(format, sizeof format, narrow ? "%%d of %d" : "frame %%d of %d (%.2f s)", v.frameCount(), seconds);
-  if (ImGui::SliderInt("##frame", &frame, v.tracked->track.firstFrame, v.tracked->lastFrame(), format,
-                       ImGuiSliderFlags_AlwaysClamp))
+  const int first = tracked ? v.tracked->track.firstFrame : 0;
+  const int last = tracked ? v.tracked->lastFrame() : std::max(v.frameCount() - 1, 0);
+  if (ImGui::SliderInt("##frame", &frame, first, last, format, ImGuiSliderFlags_AlwaysClamp))
     actions::setVideoFrame(s, frame);
   if (narrow && ImGui::IsItemHovered()) ImGui::SetTooltip("video frame (%.2f s)", seconds);
 }
@@ -68,9 +72,11 @@ void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     if (narrow && ImGui::IsItemHovered()) ImGui::SetTooltip("playback speed");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
-    if (s.doc.mode == Mode::Clip && s.clip && strideHz > 0.0) {
+    if (actions::stepsVideoFrames(s)) {
+      videoFrameSlider(s, narrow);
+    } else if (s.doc.mode == Mode::Clip && s.clip && strideHz > 0.0) {
       if (actions::showsTrackFit(s))
-        trackedVideoFrameSlider(s, narrow);
+        videoFrameSlider(s, narrow);
       else
         clipFrameSlider(s, *s.clip, narrow);
     } else {
