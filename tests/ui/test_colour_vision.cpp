@@ -172,7 +172,9 @@ TEST(Palette, AVideosMarksStayApartForEveryVision) {
       {opaque("keyframe marks", kCamera), opaque("lost", confidenceColour(0.0f)),
        opaque("half sure", confidenceColour(0.5f)), opaque("sure", confidenceColour(1.0f))},
       "video, tracked");
-  // Fitted: the keyframe's marks, the tracked joints, the reprojection and its residuals.
+  // Fitted: the keyframe's marks, the tracked joints, the reprojection and its residuals. The
+  // estimated principal point's cross shares the marks' teal (as the keypoint clip's does): a
+  // thin cross, told from the marked skeleton by its shape.
   expectAllApart({opaque("keyframe marks", kCamera), opaque("tracked", kInputPoint),
                   opaque("reprojection", kReconRight), opaque("residual", kError)},
                  "video, fitted");

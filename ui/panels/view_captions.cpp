@@ -134,6 +134,7 @@ ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool 
   const bool fitted = actions::showsTrackFit(s) && !v.marking;
   if (fitted) {
     legend.push_back({palette::kInputPoint, "tracked joints", false});
+    legend.push_back({palette::kCamera, "principal point (est.)", true});
     if (s.view.overlays.reprojection) {
       legend.push_back({palette::kReconRight, "3D walker through the est. camera", true});
       legend.push_back({palette::kError, "residual", true});
