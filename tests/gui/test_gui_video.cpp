@@ -343,6 +343,34 @@ TEST_F(GuiVideo, MarksAFrameFromAPoseEstimatorsKeypoints) {
   EXPECT_EQ(tracked["track"]["last_frame"], 59);
 }
 
+// A keypoint clip opened while a video is open takes the views' place, as a video opened takes
+// a clip's (the 2D view went on showing the video beside the clip's fit). Opened together
+// with a video, the clip is refused, with the reason in the log.
+TEST_F(GuiVideo, AKeypointClipOpenedAfterAVideoReplacesIt) {
+  const Footage f = writeWalkingFootage(dir);
+  const fs::path detected = dir / "detected";
+  writeOpenPoseBody25(detected, {{f.truthPx, Eigen::MatrixXd::Ones(f.truthPx.rows(), 15)}});
+  const json script = json::array({
+      {{"open", json::array({f.video.string(), detected.string()})}},
+      {{"export_state", path("together.json")}},
+      {{"open", detected.string()}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("clip.json")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json together = state("together.json"), clip = state("clip.json");
+  EXPECT_TRUE(together["video"].is_object());
+  EXPECT_TRUE(together["clip"].is_null()) << together["clip"];
+  EXPECT_NE(together["log"].dump().find("a video and a keypoint clip at a time"), std::string::npos)
+      << together["log"];
+  EXPECT_TRUE(clip["video"].is_null()) << "the clip closed the video";
+  ASSERT_TRUE(clip["clip"].is_object());
+  EXPECT_EQ(fs::path(clip["clip"]["path"].get<std::string>()), detected);
+  EXPECT_EQ(clip["mode"], "clip");
+}
+
 // A tracked joint dragged on a frame that is no keyframe and let go (the script's "drag_joint",
 // as the mouse does): the frame becomes a keyframe and the track is redone from the keyframes
 // as they now are, with no button pressed.

@@ -385,14 +385,18 @@ void clipFailed(AppState& s, const std::string& error) {
 }
 
 // Opens the first keypoint clip among `paths` and returns the others; further clips are
-// refused (one clip at a time).
+// refused (one clip at a time), and every clip when a video was opened with them.
 std::vector<std::filesystem::path> openClips(AppState& s, std::vector<std::filesystem::path> paths,
-                                             std::vector<std::string>& refused) {
+                                             std::vector<std::string>& refused, bool withVideo = false) {
   std::vector<std::filesystem::path> rest;
   bool opened = false;
   for (auto& p : paths) {
     if (!isKeypointClip(p)) {
       rest.push_back(std::move(p));
+    } else if (withVideo) {
+      refused.push_back(p.string() +
+                        ": a video and a keypoint clip at a time (the video is open; its Mark the "
+                        "joints section reads a keypoint file of it)");
     } else if (opened) {
       refused.push_back(p.string() + ": one keypoint clip at a time");
     } else {
@@ -407,9 +411,9 @@ std::vector<std::filesystem::path> openClips(AppState& s, std::vector<std::files
 // (a keyframe file alone goes to the video open, or to the video it names beside it);
 // returns the other paths. A video or keyframe file that cannot be read is a failed open.
 std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::filesystem::path> paths,
-                                              std::vector<std::string>& refused) {
+                                              std::vector<std::string>& refused, bool& opened) {
   std::vector<std::filesystem::path> rest, keyframeFiles;
-  bool opened = false;
+  opened = false;
   for (auto& p : paths) {
     if (isKeyframeFile(p)) {
       keyframeFiles.push_back(std::move(p));
@@ -424,6 +428,7 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
       } catch (const std::exception& e) {
         ++s.jobs.failures;
         reportOpenError(s, {p}, e.what());
+        opened = false;
         return rest;
       }
     }
@@ -491,8 +496,9 @@ void open(AppState& s, std::vector<std::filesystem::path> paths) {
       std::all_of(paths.begin(), paths.end(), [](const auto& p) { return isModelFile(p); });
   request.paths = openModelFiles(s, std::move(paths));
   const bool hadPaths = !request.paths.empty();
-  request.paths = openVideos(s, std::move(request.paths), request.refused);
-  request.paths = openClips(s, std::move(request.paths), request.refused);
+  bool videoOpened = false;
+  request.paths = openVideos(s, std::move(request.paths), request.refused, videoOpened);
+  request.paths = openClips(s, std::move(request.paths), request.refused, videoOpened);
   for (const auto& r : request.refused) s.log.warning("skipped: " + r);
   if (hadPaths && request.paths.empty()) {
     // Only a clip or a video: the synthetic walkers load too when nothing is, for the other modes.
@@ -1307,6 +1313,8 @@ void openClip(AppState& s, const std::filesystem::path& path) {
   if (!std::filesystem::exists(path, ec)) throw std::invalid_argument(path.string() + ": no such file or folder");
   ClipSettings settings;
   settings.path = path;
+  // The clip takes the views' place, as a video opened takes a clip's.
+  closeVideo(s);
   // A clip opened again keeps what the user chose for it.
   if (s.doc.clip && s.doc.clip->path == path) settings = *s.doc.clip;
   s.doc.clip = settings;

@@ -49,9 +49,20 @@ void videoFrameSlider(AppState& s, bool narrow) {
 
 }  // namespace
 
+bool playsFrames(const AppState& s) {
+  return actions::stepsVideoFrames(s) ||
+         (s.doc.mode == Mode::Clip && s.clip && actions::playbackStrideHz(s) > 0.0);
+}
+
+void drawFrameSlider(AppState& s, bool narrow) {
+  if (actions::stepsVideoFrames(s) || actions::showsTrackFit(s))
+    videoFrameSlider(s, narrow);
+  else if (s.clip)
+    clipFrameSlider(s, *s.clip, narrow);
+}
+
 void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   auto& p = s.view.playback;
-  const double strideHz = actions::playbackStrideHz(s);
   if (beginPanel(ctx.backdrop, "##playback", rect, ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar)) {
     const float bw = 36.0f * ctx.scale;
     if (ImGui::Button("|<", ImVec2(bw, 0))) actions::stepFrame(s, -1);
@@ -72,13 +83,8 @@ void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
     if (narrow && ImGui::IsItemHovered()) ImGui::SetTooltip("playback speed");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1.0f);
-    if (actions::stepsVideoFrames(s)) {
-      videoFrameSlider(s, narrow);
-    } else if (s.doc.mode == Mode::Clip && s.clip && strideHz > 0.0) {
-      if (actions::showsTrackFit(s))
-        videoFrameSlider(s, narrow);
-      else
-        clipFrameSlider(s, *s.clip, narrow);
+    if (playsFrames(s)) {
+      drawFrameSlider(s, narrow);
     } else {
       float phase = static_cast<float>(p.phase());
       if (ImGui::SliderFloat("##phase", &phase, 0.0f, 1.0f, narrow ? "phase %.2f" : "gait phase %.3f",

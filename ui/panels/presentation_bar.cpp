@@ -5,6 +5,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/panels/playback_panel.h"
 #include "ui/widgets/angle_dial.h"
 
 namespace ew::ui {
@@ -47,7 +48,13 @@ void PresentationBar::draw(AppState& s, const FrameContext& ctx, const PanelRect
     // The dial and the slider take what the buttons leave; the slider stops at a readable length.
     const float sliderW = std::min(ImGui::GetContentRegionAvail().x - rowH - leaveW - 4.0f * style.ItemSpacing.x,
                                    900.0f * ctx.scale);
-    drawAngle(s, rowH, std::max(80.0f * ctx.scale, sliderW));
+    // A clip or a video is seen from where it was filmed: the bar scrubs its frames instead.
+    if (playsFrames(s)) {
+      ImGui::SetNextItemWidth(std::max(80.0f * ctx.scale, sliderW) + rowH + style.ItemSpacing.x);
+      drawFrameSlider(s, false);
+    } else {
+      drawAngle(s, rowH, std::max(80.0f * ctx.scale, sliderW));
+    }
     ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - leaveW);
     if (rowButton(leave, leaveW, rowH)) actions::setPresentation(s, false);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the panels (F5 or Esc)");
