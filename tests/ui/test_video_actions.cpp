@@ -17,6 +17,7 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/video_poll.h"
+#include "ui/panels/data_panel.h"
 #include "video/synthetic_footage.h"
 
 namespace ew::ui {
@@ -120,6 +121,66 @@ TEST(VideoActions, AVideoCutShortSaysSoInTheBanner) {
   actions::dismissNotice(s);
   pollVideo(s);
   EXPECT_FALSE(s.jobs.notice.has_value()) << "said once";
+}
+
+// A video dropped on the window opens, and so does a keyframe file dropped alone (with the
+// video it names beside it); until 2026-11-27 a drop refused both, and the file browser did not
+// list them: only the command line opened a video.
+TEST(VideoActions, AVideoOrItsKeyframeFileDroppedOpensIt) {
+  const auto dir = test::makeTempDir("video_actions_drop");
+  const auto video = dir / "walk.avi";
+  const Eigen::MatrixXd truthPx = filmWalker(video, 12);
+  const auto keys = dir / "keys.json";
+  writeKeyframes(keys, keyframesFromTrack(truthPx, {0, 6}, "walk.avi"));
+
+  AppState dropped;
+  actions::drop(dropped, {video});
+  ASSERT_TRUE(dropped.video.has_value());
+  EXPECT_EQ(dropped.video->path, video);
+  EXPECT_EQ(dropped.doc.mode, Mode::Clip);
+
+  AppState keysAlone;
+  actions::drop(keysAlone, {keys});
+  ASSERT_TRUE(keysAlone.video.has_value());
+  EXPECT_EQ(keysAlone.video->path, video);
+  EXPECT_EQ(keysAlone.video->keyframes.keyframes.size(), 2u);
+
+  EXPECT_EQ(browserFormat("walk.avi"), browserFormat("Clip.MP4"));
+  EXPECT_GE(browserFormat("walk.avi"), 0);
+  EXPECT_GE(browserFormat("keys.json"), 0);
+  EXPECT_GE(browserFormat("model.ewm"), 0);
+  EXPECT_EQ(browserFormat("notes.txt"), -1);
+}
+
+// Before a track, playback plays the video's own frames at its rate × the speed, round its end,
+// one frame at most per call and none while the frame shown is still decoding.
+TEST(VideoActions, PlaybackStepsTheVideosOwnFramesAtItsRate) {
+  const auto dir = test::makeTempDir("video_actions_play");
+  const auto video = dir / "walk.avi";
+  filmWalker(video, 12);
+  AppState s;
+  actions::openVideo(s, video);
+  ASSERT_TRUE(actions::stepsVideoFrames(s));
+  VideoSession& v = *s.video;
+  s.view.playback.playing = true;
+  s.view.playback.speed = 0.5f;
+  v.shownIndex = 0;
+  actions::advancePlayback(s, 1.0 / 30.0);
+  EXPECT_EQ(v.frame, 0) << "half a frame at half speed";
+  actions::advancePlayback(s, 1.0 / 30.0);
+  EXPECT_EQ(v.frame, 1);
+  actions::advancePlayback(s, 1.0);
+  EXPECT_EQ(v.frame, 1) << "frame 1 is not shown yet: playback holds";
+  v.shownIndex = 1;
+  actions::advancePlayback(s, 1.0);
+  EXPECT_EQ(v.frame, 2) << "one frame at most per drawn frame";
+  v.frame = v.shownIndex = v.frameCount() - 1;
+  actions::advancePlayback(s, 2.0 / 30.0);
+  EXPECT_EQ(v.frame, 0) << "round the end";
+  s.view.playback.playing = false;
+  v.shownIndex = 0;
+  actions::advancePlayback(s, 1.0);
+  EXPECT_EQ(v.frame, 0) << "paused";
 }
 
 }  // namespace

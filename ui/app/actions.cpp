@@ -1057,10 +1057,11 @@ void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
     if (!std::filesystem::exists(p, ec)) {
       request.refused.push_back(p.string() + ": no such file or folder");
     } else if (!std::filesystem::is_directory(p, ec) && !isSupportedDataFile(p) &&
-               !isModelFile(p) && !isKeypointClip(p)) {
+               !isModelFile(p) && !isKeypointClip(p) && !isVideoFile(p) && !isKeyframeFile(p)) {
       request.refused.push_back(p.string() +
                                 ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv), a "
                                 "pose estimator's keypoints (.json, MediaPipe / DeepLabCut .csv), a "
+                                "video (.mp4 .avi .mov .mkv .webm .m4v .mpg), a keyframe file, a "
                                 "model (.ewm) or a folder");
     } else {
       request.paths.push_back(p);
@@ -1073,7 +1074,9 @@ void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
   const bool onlyModels = std::all_of(request.paths.begin(), request.paths.end(),
                                       [](const auto& p) { return isModelFile(p); });
   request.paths = openModelFiles(s, std::move(request.paths));
-  request.paths = openClips(s, std::move(request.paths), request.refused);
+  bool videoOpened = false;
+  request.paths = openVideos(s, std::move(request.paths), request.refused, videoOpened);
+  request.paths = openClips(s, std::move(request.paths), request.refused, videoOpened);
   if (onlyModels || request.paths.empty()) {
     for (const auto& r : request.refused) s.log.warning("skipped: " + r);
     return;

@@ -11,6 +11,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/app/video.h"
 #include "ui/widgets/flow.h"
 
 namespace ew::ui {
@@ -18,11 +19,14 @@ namespace ew::ui {
 namespace {
 
 constexpr const char* kUnits[] = {"file's", "mm", "cm", "m", "in", "cmu"};
-constexpr const char* kFormatNames[] = {".c3d", ".bvh", ".asf/.amc", ".trc", ".csv"};
-constexpr const char* kOpenTip = "Tip: drop files or folders on the window. A manifest CSV opens its trials.";
+constexpr const char* kFormatNames[] = {".c3d", ".bvh", ".asf/.amc", ".trc", ".csv", "video", ".json", ".ewm"};
+constexpr const char* kOpenTip =
+    "Tip: drop files or folders on the window. A manifest CSV opens its trials; a pose estimator's "
+    "folder of JSON files opens as a keypoint clip (Open this folder).";
 
-// Index into kFormatNames, or -1.
-int formatIndex(const std::string& name) {
+}  // namespace
+
+int browserFormat(const std::string& name) {
   std::string ext = std::filesystem::path(name).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (ext == ".c3d") return 0;
@@ -30,8 +34,13 @@ int formatIndex(const std::string& name) {
   if (ext == ".asf" || ext == ".amc") return 2;
   if (ext == ".trc") return 3;
   if (ext == ".csv") return 4;
+  if (isVideoFile(name)) return 5;
+  if (ext == ".json") return 6;  // a pose estimator's keypoints, a keyframe file
+  if (ext == ".ewm") return 7;
   return -1;
 }
+
+namespace {
 
 void setFolder(std::array<char, 1024>& buffer, const std::string& path) {
   const std::size_t n = std::min(path.size(), buffer.size() - 1);
@@ -52,7 +61,7 @@ void DataPanel::refresh() {
     if (name.empty() || name.front() == '.') continue;
     std::error_code typeError;
     const bool isFolder = it->is_directory(typeError);
-    if (isFolder || formatIndex(name) >= 0) entries.push_back({name, isFolder});
+    if (isFolder || browserFormat(name) >= 0) entries.push_back({name, isFolder});
   }
   if (ec) listError = ec.message();
   std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
@@ -124,13 +133,13 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
               ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
             enter = e.name;
         } else {
-          const int f = formatIndex(e.name);
+          const int f = browserFormat(e.name);
           if (f < 0 || !formats[static_cast<std::size_t>(f)]) continue;
           bool& ticked = selected[e.name];
           ImGui::Checkbox(e.name.c_str(), &ticked);
         }
       }
-      if (entries.empty() && listError.empty()) textDisabledWrapped("no folders or motion-capture files here");
+      if (entries.empty() && listError.empty()) textDisabledWrapped("no folders or files the viewer opens here");
       ImGui::EndChild();
       if (!enter.empty()) setFolder(folder, (std::filesystem::path(listedFolder) / enter).string());
       ImGui::SameLine();

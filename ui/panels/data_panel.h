@@ -17,6 +17,10 @@ namespace ew::ui {
 struct AppState;
 struct FrameContext;
 
+// The browser's format toggle that lists a file (.c3d, .bvh, .asf/.amc, .trc, .csv, video,
+// .json, .ewm: 0-7), or -1 for a file the viewer does not open.
+int browserFormat(const std::string& fileName);
+
 struct DataPanel {
   struct Entry {
     std::string name;
@@ -33,7 +37,8 @@ struct DataPanel {
   std::vector<Entry> entries;
   std::string listError;
   std::map<std::string, bool> selected;  // file name in `folder` → ticked
-  std::array<bool, 5> formats{true, true, true, true, true};  // c3d, bvh, asf/amc, trc, csv
+  // c3d, bvh, asf/amc, trc, csv, video, json (keypoints, keyframes), ewm (models)
+  std::array<bool, 8> formats{true, true, true, true, true, true, true, true};
   std::map<std::string, OverrideEdit> edits;  // by file path, until applied
   std::string status;
   MappingTab mapping;  // the "Joint mapping" tab
