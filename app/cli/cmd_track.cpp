@@ -20,14 +20,13 @@
 #include "app/cli/reconstruct_camera.h"
 #include "core/common/errors.h"
 #include "core/engine/default_model.h"
-#include "core/experiments/view_csv.h"
 #include "core/io/atomic_write.h"
 #include "core/keypoints/keypoint_trial.h"
-#include "core/keypoints/openpose_writer.h"
 #include "core/tracking/keyframes.h"
 #include "core/tracking/track_compare.h"
 #include "video/joint_tracker.h"
 #include "video/model_loop.h"
+#include "video/track_files.h"
 #include "video/track_overlay.h"
 
 namespace ew::cli {
@@ -69,32 +68,6 @@ Keyframes keyframesFor(const TrackArgs& a, double fps) {
   k.fps = fps;
   const KeypointTrial trial = readKeypointTrial(a.keyframesFrom, k);
   return keyframesFromTrack(trial.jointsPx, a.keyframeFrames, a.video);
-}
-
-void writeTrack(const fs::path& dir, const JointTrack& t) {
-  fs::create_directories(dir);
-  OpenPosePerson person{t.jointsPx, t.confidence};
-  const fs::path keypoints = dir / "keypoints";
-  std::error_code ec;
-  fs::remove_all(keypoints, ec);  // a track's frames, not mixed with an older one's
-  writeOpenPoseBody25(keypoints, {person});
-  ViewSequence view;
-  view.rateHz = t.fps;
-  view.framesMm = t.jointsPx;
-  for (int j = 0; j < kJointCount; ++j) view.framesMm.col(2 * j + 1) *= -1.0;
-  writeViewCsv(dir / "track_2d.csv", view,
-               {"units=px (image pixels; u right, v up = minus the image row)",
-                "first_video_frame=" + std::to_string(t.firstFrame)});
-  writeFileAtomically(dir / "confidence.csv", [&](std::ostream& out) {
-    out << "frame";
-    for (const auto name : kJointNames) out << "," << name;
-    out << "\n";
-    for (Eigen::Index r = 0; r < t.confidence.rows(); ++r) {
-      out << t.firstFrame + r;
-      for (int j = 0; j < kJointCount; ++j) out << "," << t.confidence(r, j);
-      out << "\n";
-    }
-  });
 }
 
 json distanceJson(const TrackDistance& d) {
@@ -199,7 +172,7 @@ int runTrack(const TrackArgs& a) {
   const JointTrack& track = looped.track;
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  writeTrack(a.out, track);
+  writeTrackFiles(a.out, track);
   const auto frames = track.jointsPx.rows();
   std::cout << "tracked " << frames << " frames (" << track.firstFrame << "-"
             << track.firstFrame + frames - 1 << ") of " << info.file << " (" << info.widthPx << "x"

@@ -10,6 +10,7 @@
 #include <string>
 #include <thread>
 
+#include "core/keypoints/keypoint_trial.h"
 #include "core/keypoints/openpose_writer.h"
 #include "core/synth/population.h"
 #include "core/tracking/keyframes.h"
@@ -150,6 +151,62 @@ TEST(VideoActions, AVideoOrItsKeyframeFileDroppedOpensIt) {
   EXPECT_GE(browserFormat("keys.json"), 0);
   EXPECT_GE(browserFormat("model.ewm"), 0);
   EXPECT_EQ(browserFormat("notes.txt"), -1);
+}
+
+// The viewer saves a track as `eigenwalker-cli track --out` does (the same files, read back to
+// the same joints) with the keyframes it was tracked from; before a track there is nothing to
+// save, and it says so.
+TEST(VideoActions, TheTrackIsSavedAsTheCommandLineSavesIt) {
+  const auto dir = test::makeTempDir("video_actions_save");
+  const auto video = dir / "walk.avi";
+  const Eigen::MatrixXd truthPx = filmWalker(video, 30);
+  const auto keys = dir / "keys.json";
+  writeKeyframes(keys, keyframesFromTrack(truthPx, {0, 20}, "walk.avi"));
+  AppState s;
+  actions::openVideo(s, video);
+  actions::loadKeyframes(s, keys);
+  EXPECT_THROW(actions::saveTrack(s, dir / "early"), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(dir / "early"));
+  actions::startTracking(s);
+  settle(s);
+  ASSERT_TRUE(s.video->tracked);
+
+  const auto out = dir / "saved";
+  actions::saveTrack(s, out);
+  for (const char* f : {"track_2d.csv", "confidence.csv", "walk_keyframes.json"})
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  KeypointOptions o;
+  o.fps = 30.0;
+  const KeypointTrial back = readKeypointTrial(out / "keypoints", o);
+  const JointTrack& t = s.video->tracked->track;
+  ASSERT_EQ(back.jointsPx.rows(), t.jointsPx.rows());
+  // Every joint as tracked, with its confidence (a reader leaves out a point under 0.3, as
+  // Pose2Sim does); BODY_25 has a neck, not a sternum, so reading it back puts the sternum
+  // between the shoulders (the layout's definition, assets/keypoint-layouts/).
+  const auto at = [](const Eigen::MatrixXd& m, Eigen::Index r, Joint j) -> Eigen::Vector2d {
+    return m.row(r).segment<2>(2 * index(j)).transpose();
+  };
+  Eigen::Index compared = 0;
+  for (Eigen::Index r = 0; r < t.jointsPx.rows(); ++r) {
+    for (int j = 0; j < kJointCount; ++j) {
+      const auto joint = static_cast<Joint>(j);
+      const Eigen::Vector2d expected =
+          joint == Joint::Sternum
+              ? Eigen::Vector2d(0.5 * (at(t.jointsPx, r, Joint::RShoulder) + at(t.jointsPx, r, Joint::LShoulder)))
+              : at(t.jointsPx, r, joint);
+      const bool sure = joint == Joint::Sternum
+                            ? std::min(t.confidence(r, index(Joint::RShoulder)), t.confidence(r, index(Joint::LShoulder))) >= o.minConfidence
+                            : t.confidence(r, j) >= o.minConfidence;
+      if (!sure) continue;
+      ++compared;
+      EXPECT_LT((at(back.jointsPx, r, joint) - expected).norm(), 0.01) << kJointNames[j] << " frame " << r;
+    }
+  }
+  EXPECT_GT(compared, 8 * t.jointsPx.size() / 20) << "most joint-frames are sure";
+  const Keyframes savedKeys = readKeyframes(out / "walk_keyframes.json");
+  ASSERT_EQ(savedKeys.keyframes.size(), 2u);
+  EXPECT_EQ(savedKeys.keyframes[1].frame, 20);
+  EXPECT_EQ(savedKeys.video, "walk.avi");
 }
 
 // Before a track, playback plays the video's own frames at its rate × the speed, round its end,

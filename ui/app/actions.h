@@ -180,6 +180,12 @@ void openVideo(AppState& s, const std::filesystem::path& path);
 // edit: undo takes it back). Throws when no video is open or the file is bad.
 void loadKeyframes(AppState& s, const std::filesystem::path& path);
 void saveKeyframes(AppState& s, const std::filesystem::path& path);
+// The open video's last track into `dir` (video/track_files.h: OpenPose JSON, the 2D CSV, the
+// confidences) with the keyframes it was tracked from beside them (DIR/<video>_keyframes.json).
+// Throws when there is no track or a file cannot be written.
+void saveTrack(AppState& s, const std::filesystem::path& dir);
+// Where the viewer offers to save the open video's keyframes and track: <video name>_track.
+std::filesystem::path defaultTrackFolder(const AppState& s);
 // The frame shown (0-based, clamped to the video); pauses a tracked clip's playback there.
 void setVideoFrame(AppState& s, int frame);
 // Guided marking on the frame shown: clicks place the joint asked for, then the next.

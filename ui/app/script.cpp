@@ -28,7 +28,7 @@ const std::set<std::string>& knownActions() {
       "drop",         "set_file_override", "reload", "export_data_summary", "export_state",
       "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame",
       "set_engine", "video_frame", "mark_joints", "start_marking", "stop_marking", "skip_joint",
-      "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "mark_from_keypoints", "drag_joint", "track_video",
+      "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "save_track", "mark_from_keypoints", "drag_joint", "track_video",
       "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab",
       "set_semantic", "presentation", "key", "undo", "redo"};
   // clang-format on
@@ -260,6 +260,8 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::removeKeyframe(s, wholeNumber(a));
   } else if (n == "save_keyframes") {
     actions::saveKeyframes(s, text(a));
+  } else if (n == "save_track") {
+    actions::saveTrack(s, text(a));
   } else if (n == "mark_from_keypoints") {
     actions::markFromKeypoints(s, text(a));
   } else if (n == "close_video") {

@@ -11,6 +11,7 @@
 #include "core/common/errors.h"
 #include "ui/app/actions.h"
 #include "ui/app/video_poll.h"
+#include "video/track_files.h"
 
 namespace ew::ui::actions {
 
@@ -122,6 +123,33 @@ void saveKeyframes(AppState& s, const std::filesystem::path& path) {
     throw std::invalid_argument(e.what());
   }
   s.log.info("Wrote the keyframes to " + path.string());
+}
+
+namespace {
+
+std::filesystem::path keyframeFileIn(const std::filesystem::path& dir, const VideoSession& v) {
+  return dir / (v.path.stem().string() + "_keyframes.json");
+}
+
+}  // namespace
+
+void saveTrack(AppState& s, const std::filesystem::path& dir) {
+  const VideoSession& v = session(s);
+  if (!v.tracked) throw std::invalid_argument("no track yet: mark the joints, then Track");
+  try {
+    writeTrackFiles(dir, v.tracked->track);
+    writeKeyframes(keyframeFileIn(dir, v), v.tracked->keyframes);
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(e.what());
+  }
+  s.log.info("Wrote the track of frames " + std::to_string(v.tracked->track.firstFrame) + "-" +
+             std::to_string(v.tracked->lastFrame()) + " to " + dir.string() +
+             " (keypoints/ as OpenPose JSON, track_2d.csv, confidence.csv, " +
+             keyframeFileIn(dir, v).filename().string() + ")");
+}
+
+std::filesystem::path defaultTrackFolder(const AppState& s) {
+  return s.video ? std::filesystem::path(s.video->path.stem().string() + "_track") : "track";
 }
 
 void setVideoFrame(AppState& s, int frame) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 
 #include "ui/app/actions.h"
@@ -253,6 +254,48 @@ void tracking(AppState& s, const VideoSession& v) {
   }
 }
 
+// The folder the keyframes and the track are saved into, and the video it was offered for.
+std::array<char, 1024> saveField{};
+std::filesystem::path saveFieldVideo;
+
+void saveTooltip(const char* text) {
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
+}
+
+// The marks and the track kept where `eigenwalker-cli track` and other tools read them.
+void saving(AppState& s, const VideoSession& v) {
+  sectionTitle("Save");
+  if (saveFieldVideo != v.path) {
+    const std::string folder = actions::defaultTrackFolder(s).string();
+    saveField.fill('\0');
+    std::copy_n(folder.begin(), std::min(folder.size(), saveField.size() - 1), saveField.begin());
+    saveFieldVideo = v.path;
+  }
+  ImGui::SetNextItemWidth(-1.0f);
+  ImGui::InputTextWithHint("##savefolder", "folder", saveField.data(), saveField.size());
+  saveTooltip("The folder to save into (made when missing; a relative one is\n"
+              "in the folder the viewer was started in)");
+  const std::filesystem::path folder(saveField.data());
+  const auto attempt = [&](const char* what, auto&& save) {
+    try {
+      save();
+    } catch (const std::exception& e) {
+      actions::reportError(s, std::string("Could not save ") + what, e.what());
+    }
+  };
+  const int clicked = buttonRow({{"Save keyframes", !v.keyframes.keyframes.empty() && saveField[0] != '\0'},
+                                 {"Save the track", v.tracked != nullptr && saveField[0] != '\0'}});
+  if (clicked == 0)
+    attempt("the keyframes", [&] {
+      std::filesystem::create_directories(folder);
+      actions::saveKeyframes(s, folder / (v.path.stem().string() + "_keyframes.json"));
+    });
+  if (clicked == 1) attempt("the track", [&] { actions::saveTrack(s, folder); });
+  saveTooltip("Save keyframes: the joints marked, as NAME_keyframes.json (track --keyframes).\n"
+              "Save the track: keypoints/ as OpenPose JSON, track_2d.csv, confidence.csv and\n"
+              "the keyframes it was tracked from, as `eigenwalker-cli track --out` writes them.");
+}
+
 }  // namespace
 
 void drawVideoControls(AppState& s, float scale) {
@@ -272,6 +315,7 @@ void drawVideoControls(AppState& s, float scale) {
   scrubber(s, v);
   marking(s, v);
   tracking(s, v);
+  saving(s, v);
   if (buttonRow({{"Close the video", true}}) == 0) actions::closeVideo(s);
 }
 
