@@ -124,6 +124,41 @@ TEST_F(GuiVideo, PlaysTheVideosOwnFramesBeforeATrack) {
   EXPECT_EQ(state("paused.json")["video"]["shown_frame"].get<int>(), played) << "pause holds the frame";
 }
 
+// The 2D view magnifies the picture about a pixel (the wheel does so about the cursor) so
+// that a walker a few hundred pixels tall can be marked; zoom 1 shows the whole picture again.
+TEST_F(GuiVideo, MagnifiesThePictureToMarkTheWalker) {
+  const Footage f = writeWalkingFootage(dir);
+  const int pelvis = index(Joint::Pelvis);
+  const json centre = {f.truthPx(0, 2 * pelvis), f.truthPx(0, 2 * pelvis + 1)};
+  const json script = json::array({
+      {{"open", f.video.string()}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("whole.json")}},
+      {{"video_zoom", {{"zoom", 4.0}, {"centre", centre}}}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("zoomed.json")}},
+      {{"video_zoom", {{"zoom", 1.0}, {"centre", centre}}}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("again.json")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json whole = state("whole.json"), zoomed = state("zoomed.json"), again = state("again.json");
+  EXPECT_EQ(zoomed["video"]["zoom"], 4.0);
+  const auto footage = [](const json& st) { return st["layout"]["overlays"]["input.footage"]; };
+  ASSERT_TRUE(footage(whole).is_array()) << whole["layout"];
+  EXPECT_NEAR(footage(zoomed)[2].get<double>(), 4.0 * footage(whole)[2].get<double>(), 2.0);
+  const double input[4] = {zoomed["layout"]["input"][0], zoomed["layout"]["input"][1],
+                           zoomed["layout"]["input"][2], zoomed["layout"]["input"][3]};
+  // The pelvis at the view's middle: the footage's left edge as far left of it as the pelvis
+  // is from the picture's left, four times magnified.
+  const double scale = footage(zoomed)[2].get<double>() / 1280.0;  // screen px a video px
+  EXPECT_NEAR(footage(zoomed)[0].get<double>() + scale * centre[0].get<double>(), input[0] + 0.5 * input[2], 2.0);
+  EXPECT_EQ(again["video"]["zoom"], 1.0);
+  EXPECT_EQ(footage(again), footage(whole));
+}
+
 TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
   const Footage f = writeWalkingFootage(dir);
   ASSERT_GE(f.truthPx.rows(), 90) << "three gait cycles at 30 fps";

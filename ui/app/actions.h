@@ -186,6 +186,9 @@ void saveKeyframes(AppState& s, const std::filesystem::path& path);
 void saveTrack(AppState& s, const std::filesystem::path& dir);
 // Where the viewer offers to save the open video's keyframes and track: <video name>_track.
 std::filesystem::path defaultTrackFolder(const AppState& s);
+// The video's 2D view magnified `zoom` times (clamped to 1-16; 1 shows the whole picture) with
+// the video pixel `centrePx` (x right, y down; kept on the picture) at its middle.
+void setVideoZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx);
 // The frame shown (0-based, clamped to the video); pauses a tracked clip's playback there.
 void setVideoFrame(AppState& s, int frame);
 // Guided marking on the frame shown: clicks place the joint asked for, then the next.

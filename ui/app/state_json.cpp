@@ -180,6 +180,8 @@ nlohmann::json videoJson(const AppState& s) {
                       {"frames", v.frameCount()},
                       {"frame", v.frame},
                       {"shown_frame", actions::shownVideoFrame(s)},
+                      {"zoom", v.zoom},
+                      {"zoom_centre_px", {v.zoomCentrePx.x(), v.zoomCentrePx.y()}},
                       {"marking", v.marking},
                       {"mark_step", v.markStep},
                       {"keyframes", keyframes},

@@ -42,6 +42,10 @@ struct TrackedVideo {
 // the body outwards (SPEC §1 names).
 const std::vector<Joint>& markingOrder();
 
+// The 2D view's largest magnification of a video: a 1080p frame's pixel about 8 screen pixels
+// wide in a half-HD view.
+inline constexpr double kMaxVideoZoom = 16.0;
+
 struct VideoSession {
   std::filesystem::path path;
   std::shared_ptr<FrameCache> frames;
@@ -63,6 +67,10 @@ struct VideoSession {
   std::shared_ptr<const cv::Mat> shown;
   int shownIndex = -1;
   double playedFrames = 0.0;  // playback's share of a frame not shown yet (stepsVideoFrames)
+  // The 2D view magnified `zoom` times (1: the whole picture) about the video pixel shown at
+  // its middle (x right, y down): marking a walker a few hundred pixels tall needs it.
+  double zoom = 1.0;
+  Eigen::Vector2d zoomCentrePx = Eigen::Vector2d::Zero();
 
   int frameCount() const { return frames ? frames->frameCount() : 0; }
   double fps() const { return frames ? frames->info().fps : 0.0; }

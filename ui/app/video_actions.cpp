@@ -152,6 +152,15 @@ std::filesystem::path defaultTrackFolder(const AppState& s) {
   return s.video ? std::filesystem::path(s.video->path.stem().string() + "_track") : "track";
 }
 
+void setVideoZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
+  VideoSession& v = session(s);
+  if (!std::isfinite(zoom) || !centrePx.allFinite())
+    throw std::invalid_argument("video zoom: not a number");
+  v.zoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
+  const VideoInfo& i = v.frames->info();
+  v.zoomCentrePx = centrePx.cwiseMax(0.0).cwiseMin(Eigen::Vector2d(i.widthPx, i.heightPx));
+}
+
 void setVideoFrame(AppState& s, int frame) {
   VideoSession& v = session(s);
   v.frame = std::clamp(frame, 0, std::max(v.frameCount() - 1, 0));

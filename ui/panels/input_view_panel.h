@@ -38,6 +38,7 @@ struct InputViewPanel {
   void handleVideoMouse(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size, int frame);
 
   int dragJoint_ = -1;  // the keyframe joint being dragged (-1: none)
+  void zoomAndPanVideo(AppState& s, ImVec2 size, glm::vec2 cursorPx);
   VideoViewFrame videoFrame_;  // the video view's framing, as drawn (clicks map through it)
 };
 

@@ -152,7 +152,8 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
   const VideoInfo& info = v.frames->info();
   const ViewCaption caption = videoInputCaption(s, frame, v.shownIndex != frame, true);
   const VideoFraming framing = videoFraming(caption, info, size, ctx.scale, s.fonts.large);
-  videoFrame_ = framing.view;
+  videoFrame_ = zoomedVideoFrame(framing.view, v.zoom,
+                                 {static_cast<float>(v.zoomCentrePx.x()), static_cast<float>(v.zoomCentrePx.y())});
   const VideoViewFrame& view = videoFrame_;
   handleVideoMouse(s, ctx, p0, size, frame);
   buildVideoInputScene(s, scene, ctx.scale, view.heightPx / size.y, frame, v.shown.get());
@@ -162,11 +163,13 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const float pad = 10.0f * ctx.scale;
   // The caption and the legend keep clear of the footage: they lose the subtitle, or fold,
-  // when the view has no room for them above and below it.
+  // when the view has no room for them above and below it. Magnified, the picture fills the
+  // view by the user's choice and they lie over it whole.
   const ImRect footage = screenRect(view, aspect, p0, size, {0.0f, 0.0f},
                                     {static_cast<float>(info.widthPx), static_cast<float>(info.heightPx)});
+  const ImRect clearOf = v.zoom > 1.0 ? kNothing : footage;
   const ImRect captionRect = drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle,
-                                         s.fonts.large, ctx.scale, ImVec2(framing.captionWidth, size.y), footage,
+                                         s.fonts.large, ctx.scale, ImVec2(framing.captionWidth, size.y), clearOf,
                                          framing.narrowBelowPx);
   if (v.marking) {
     const auto& order = markingOrder();
@@ -178,12 +181,36 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
     drawPrompt(dl, s.fonts.large, p0, size, captionRect.Max.y, prompt, ctx.scale);
   }
   const ImRect legendRect =
-      drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), caption.legend, ctx.scale, size.x, footage);
+      drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), caption.legend, ctx.scale, size.x, clearOf);
   if (const auto walker = walkerExtentPx(v, frame))
     s.lastFrame.overlay("input.walker", toPanelRect(screenRect(view, aspect, p0, size, walker->first, walker->second)));
   s.lastFrame.overlay("input.caption", toPanelRect(captionRect));
   s.lastFrame.overlay("input.legend", toPanelRect(legendRect));
   s.lastFrame.overlay("input.footage", toPanelRect(footage));
+}
+
+// The wheel magnifies about the pixel under the cursor (it stays there), a right-drag moves
+// the picture, a right double-click shows it whole again.
+void InputViewPanel::zoomAndPanVideo(AppState& s, ImVec2 size, glm::vec2 cursorPx) {
+  const VideoSession& v = *s.video;
+  const ImGuiIO& io = ImGui::GetIO();
+  const glm::vec2 middle = videoViewMiddle(videoFrame_);
+  const auto apply = [&](double zoom, glm::vec2 centre) {
+    try {
+      actions::setVideoZoom(s, zoom, Eigen::Vector2d(centre.x, centre.y));
+    } catch (const std::exception& e) {
+      s.log.error(e.what());
+    }
+  };
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Right)) {
+    apply(1.0, middle);
+  } else if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    const double zoom = std::clamp(v.zoom * std::pow(1.25, static_cast<double>(io.MouseWheel)), 1.0, kMaxVideoZoom);
+    apply(zoom, zoomMiddleKeeping(middle, cursorPx, v.zoom, zoom));
+  } else if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f) && v.zoom > 1.0) {
+    const float pxPerScreen = videoFrame_.heightPx / size.y;
+    apply(v.zoom, middle - glm::vec2(io.MouseDelta.x, io.MouseDelta.y) * pxPerScreen);
+  }
 }
 
 void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size,
@@ -193,9 +220,10 @@ void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVe
   const float aspect = size.x / size.y;
   const VideoViewFrame& view = videoFrame_;
   ImGui::SetCursorScreenPos(p0);
-  ImGui::InvisibleButton("##video", size);
+  ImGui::InvisibleButton("##video", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
   const ImVec2 m = ImGui::GetIO().MousePos;
   const glm::vec2 px = view.toVideoPx({(m.x - p0.x) / size.x, (m.y - p0.y) / size.y}, aspect);
+  zoomAndPanVideo(s, size, px);
   const auto place = [&](Joint j, bool newEdit) {
     try {
       const double x =

@@ -28,7 +28,16 @@ namespace {
 
 // Under "no walk fits this track": why, without the video's path (the fit's message, wrapped to
 // the view).
-void drawWhyNoWalkFits(ImDrawList* dl, const AppState& s, ImVec2 p0, ImVec2 size, float lineHeight) {
+// A message in the middle of the view, wrapped at 0.8 of its width; returns its height.
+float drawCentredMessage(ImDrawList* dl, ImVec2 p0, ImVec2 size, const char* msg) {
+  const float wrap = 0.8f * size.x;
+  const ImVec2 ts = ImGui::CalcTextSize(msg, nullptr, false, wrap);
+  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y),
+              IM_COL32(160, 168, 180, 255), msg, nullptr, wrap);
+  return ts.y;
+}
+
+void drawWhyNoWalkFits(ImDrawList* dl, const AppState& s, ImVec2 p0, ImVec2 size, float messageHeight) {
   std::string why = s.jobs.clipError;
   const std::string file = s.video->path.string() + ": ";
   if (why.rfind(file, 0) == 0) why.erase(0, file.size());
@@ -36,7 +45,7 @@ void drawWhyNoWalkFits(ImDrawList* dl, const AppState& s, ImVec2 p0, ImVec2 size
   const float wrap = 0.8f * size.x;
   const ImVec2 ws = ImGui::CalcTextSize(why.c_str(), nullptr, false, wrap);
   dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
-              ImVec2(p0.x + 0.5f * (size.x - ws.x), p0.y + 0.5f * size.y + 1.5f * lineHeight),
+              ImVec2(p0.x + 0.5f * (size.x - ws.x), p0.y + 0.5f * size.y + messageHeight + 0.5f * ImGui::GetFontSize()),
               IM_COL32(130, 138, 150, 255), why.c_str(), nullptr, wrap);
 }
 
@@ -319,9 +328,8 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
                                                     : "mark the walker's joints on one frame, then Track")
                           : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : "the clip could not be fitted")
                           : s.jobs.busy() ? "building models…" : "nothing to show";
-        const ImVec2 ts = ImGui::CalcTextSize(msg);
-        dl->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y), IM_COL32(160, 168, 180, 255), msg);
-        if (unfitted) drawWhyNoWalkFits(dl, s, p0, size, ts.y);
+        const float height = drawCentredMessage(dl, p0, size, msg);
+        if (unfitted) drawWhyNoWalkFits(dl, s, p0, size, height);
       }
     }
   }

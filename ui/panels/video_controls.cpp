@@ -109,6 +109,8 @@ void marking(AppState& s, const VideoSession& v) {
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Forget the joints marked on this frame");
   markingFromKeypoints(s);
+  textDisabledWrapped(v.zoom > 1.0 ? "wheel: zoom · right-drag: move · right double-click: whole picture"
+                                   : "wheel over the picture: zoom in to mark");
 }
 
 // Optical flow (video/joint_tracker.h) or Zou et al.'s appearance tracker

@@ -80,6 +80,20 @@ VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect, float top
   return f;
 }
 
+VideoViewFrame zoomedVideoFrame(const VideoViewFrame& whole, double zoom, glm::vec2 centrePx) {
+  if (!(zoom > 1.0)) return whole;
+  VideoViewFrame f;
+  f.heightPx = whole.heightPx / static_cast<float>(zoom);
+  f.centre = {centrePx.x, -centrePx.y};
+  return f;
+}
+
+glm::vec2 videoViewMiddle(const VideoViewFrame& view) { return {view.centre.x, -view.centre.y}; }
+
+glm::vec2 zoomMiddleKeeping(glm::vec2 middlePx, glm::vec2 cursorPx, double zoomBefore, double zoomAfter) {
+  return cursorPx + (middlePx - cursorPx) * static_cast<float>(zoomBefore / zoomAfter);
+}
+
 bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,
                           float videoPxPerScreenPx, int frame, const void* bgrMat) {
   scene.clearItems();

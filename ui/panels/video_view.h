@@ -28,6 +28,15 @@ struct VideoViewFrame {
 VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect, float topShare = 0.11f,
                               float bottomShare = 0.07f, float leftShare = 0.0f);
 
+// `whole` magnified `zoom` times (≥ 1) with the video pixel `centrePx` (x right, y down) at
+// the view's middle; `whole` itself at zoom 1.
+VideoViewFrame zoomedVideoFrame(const VideoViewFrame& whole, double zoom, glm::vec2 centrePx);
+// The video pixel (x right, y down) at the middle of `view`.
+glm::vec2 videoViewMiddle(const VideoViewFrame& view);
+// The middle a view magnified from `zoomBefore` to `zoomAfter` needs for the video pixel
+// `cursorPx` to stay where it was on screen (the wheel zooms about the cursor).
+glm::vec2 zoomMiddleKeeping(glm::vec2 middlePx, glm::vec2 cursorPx, double zoomBefore, double zoomAfter);
+
 // Builds the scene for video frame `frame` whose pixels are `bgrMat` (a cv::Mat; null: no
 // picture yet); `videoPxPerScreenPx` sizes the marks on screen. Returns false when no video
 // is open.

@@ -124,10 +124,12 @@ ViewCaption clipInputCaption(const AppState& s, int shown) {
 ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool onScreen) {
   const VideoSession& v = *s.video;
   const VideoInfo& info = v.frames->info();
-  char sub[240];
-  std::snprintf(sub, sizeof sub, "%s · %d×%d · frame %d of %d (%.2f s)%s",
+  char zoom[48] = "";
+  if (onScreen && v.zoom > 1.0) std::snprintf(zoom, sizeof zoom, " · zoom %.1f×", v.zoom);
+  char sub[280];
+  std::snprintf(sub, sizeof sub, "%s · %d×%d · frame %d of %d (%.2f s)%s%s",
                 v.path.filename().string().c_str(), info.widthPx, info.heightPx, frame,
-                v.frameCount(), frame / std::max(info.fps, 1e-9), decoding ? " · decoding…" : "");
+                v.frameCount(), frame / std::max(info.fps, 1e-9), zoom, decoding ? " · decoding…" : "");
   std::vector<LegendItem> legend;
   if (v.keyframeAt(frame))
     legend.push_back({palette::kCamera, onScreen ? "marked by hand (keyframe; drag to correct)" : "marked by hand (keyframe)", false});
