@@ -209,6 +209,32 @@ TEST(VideoActions, TheTrackIsSavedAsTheCommandLineSavesIt) {
   EXPECT_EQ(savedKeys.video, "walk.avi");
 }
 
+// The least sure frame is the tracked frame, not a keyframe, of lowest mean confidence; a
+// keyframe put there moves it elsewhere; without a track there is none.
+TEST(VideoActions, TheLeastSureFrameIsTheWeakestFrameNotAKeyframe) {
+  const auto dir = test::makeTempDir("video_actions_least");
+  const auto video = dir / "walk.avi";
+  const Eigen::MatrixXd truthPx = filmWalker(video, 40);
+  AppState s;
+  actions::openVideo(s, video);
+  EXPECT_EQ(actions::leastSureTrackedFrame(s), -1);
+  const auto keys = dir / "keys.json";
+  writeKeyframes(keys, keyframesFromTrack(truthPx, {0}, "walk.avi"));
+  actions::loadKeyframes(s, keys);
+  actions::startTracking(s);
+  settle(s);
+  ASSERT_TRUE(s.video->tracked);
+  const JointTrack& t = s.video->tracked->track;
+  const int least = actions::leastSureTrackedFrame(s);
+  ASSERT_GT(least, 0) << "frame 0 is the keyframe";
+  for (Eigen::Index r = 1; r < t.confidence.rows(); ++r)
+    EXPECT_GE(t.confidence.row(r).mean(), t.confidence.row(least - t.firstFrame).mean()) << "frame " << r;
+  s.video->frame = least;
+  const int j = index(Joint::Head);
+  actions::markJoint(s, Joint::Head, truthPx(least, 2 * j), truthPx(least, 2 * j + 1));
+  EXPECT_NE(actions::leastSureTrackedFrame(s), least) << "now a keyframe";
+}
+
 // Before a track, playback plays the video's own frames at its rate × the speed, round its end,
 // one frame at most per call and none while the frame shown is still decoding.
 TEST(VideoActions, PlaybackStepsTheVideosOwnFramesAtItsRate) {

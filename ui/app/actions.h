@@ -184,6 +184,10 @@ void saveKeyframes(AppState& s, const std::filesystem::path& path);
 // confidences) with the keyframes it was tracked from beside them (DIR/<video>_keyframes.json).
 // Throws when there is no track or a file cannot be written.
 void saveTrack(AppState& s, const std::filesystem::path& dir);
+// The tracked frame that is no keyframe where the track's mean confidence over the joints is
+// lowest: where to look first for joints that strayed (-1 when there is no track, or every
+// tracked frame is a keyframe).
+int leastSureTrackedFrame(const AppState& s);
 // Where the viewer offers to save the open video's keyframes and track: <video name>_track.
 std::filesystem::path defaultTrackFolder(const AppState& s);
 // The video's 2D view magnified `zoom` times (clamped to 1-16; 1 shows the whole picture) with

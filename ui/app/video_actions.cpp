@@ -148,6 +148,21 @@ void saveTrack(AppState& s, const std::filesystem::path& dir) {
              keyframeFileIn(dir, v).filename().string() + ")");
 }
 
+int leastSureTrackedFrame(const AppState& s) {
+  if (!s.video || !s.video->tracked) return -1;
+  const TrackedVideo& t = *s.video->tracked;
+  int least = -1;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (Eigen::Index r = 0; r < t.track.confidence.rows(); ++r) {
+    const int frame = t.track.firstFrame + static_cast<int>(r);
+    const double mean = t.track.confidence.row(r).mean();
+    if (s.video->keyframeAt(frame) || !(mean < lowest)) continue;
+    lowest = mean;
+    least = frame;
+  }
+  return least;
+}
+
 std::filesystem::path defaultTrackFolder(const AppState& s) {
   return s.video ? std::filesystem::path(s.video->path.stem().string() + "_track") : "track";
 }

@@ -9,6 +9,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/render/palette.h"
 #include "ui/panels/clip_controls.h"
 #include "ui/widgets/flow.h"
 #include "ui/widgets/section_title.h"
@@ -192,11 +193,68 @@ std::string loopNote(const TrackedVideo& t) {
   return note;
 }
 
+ImU32 u32(const glm::vec4& c) { return ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, c.a)); }
+
+// The track's mean confidence per frame as a strip the panel's width, coloured as the tracked
+// joints are (sure blue, lost red), the fit's 0.3 as a faint line, the keyframes as teal ticks
+// and the frame shown as a white line; a click or drag on it goes to that frame. Where the
+// curve dips is where to look for joints that strayed.
+void confidenceStrip(AppState& s, const VideoSession& v, float scale) {
+  const TrackedVideo& t = *v.tracked;
+  const int n = t.frames();
+  if (n < 2) return;
+  const float w = ImGui::GetContentRegionAvail().x, h = 34.0f * scale;
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("##confidence", ImVec2(w, h));
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->AddRectFilled(p0, ImVec2(p0.x + w, p0.y + h), ImGui::GetColorU32(ImGuiCol_FrameBg));
+  const auto x = [&](double frame) { return p0.x + static_cast<float>((frame - t.track.firstFrame + 0.5) / n) * w; };
+  const auto y = [&](double c) { return p0.y + h - 2.0f - (h - 4.0f) * static_cast<float>(std::clamp(c, 0.0, 1.0)); };
+  dl->AddLine(ImVec2(p0.x, y(0.3)), ImVec2(p0.x + w, y(0.3)), ImGui::GetColorU32(ImGuiCol_TextDisabled, 0.5f));
+  for (int r = 0; r + 1 < n; ++r) {
+    const double a = t.track.confidence.row(r).mean(), b = t.track.confidence.row(r + 1).mean();
+    const int f = t.track.firstFrame + r;
+    dl->AddLine(ImVec2(x(f), y(a)), ImVec2(x(f + 1), y(b)),
+                u32(palette::confidenceColour(static_cast<float>(0.5 * (a + b)))), 1.5f * scale);
+  }
+  for (const Keyframe& k : v.keyframes.keyframes)
+    if (k.frame >= t.track.firstFrame && k.frame <= t.lastFrame())
+      dl->AddLine(ImVec2(x(k.frame), p0.y), ImVec2(x(k.frame), p0.y + h), u32(palette::kCamera), 1.5f * scale);
+  const int shown = actions::shownVideoFrame(s);
+  if (shown >= t.track.firstFrame && shown <= t.lastFrame())
+    dl->AddLine(ImVec2(x(shown), p0.y), ImVec2(x(shown), p0.y + h), IM_COL32(240, 242, 248, 230), 1.0f * scale);
+  const int under = t.track.firstFrame +
+                    std::clamp(static_cast<int>((ImGui::GetIO().MousePos.x - p0.x) / w * static_cast<float>(n)), 0, n - 1);
+  if (ImGui::IsItemActive() && under != shown) apply(s, [&] { actions::setVideoFrame(s, under); });
+  if (ImGui::IsItemHovered()) {
+    const Eigen::Index r = under - t.track.firstFrame;
+    Eigen::Index weakest = 0;
+    t.track.confidence.row(r).minCoeff(&weakest);
+    ImGui::SetTooltip("frame %d: mean confidence %.2f, least sure %s (%.2f)\nclick or drag: go to the frame",
+                      under, t.track.confidence.row(r).mean(), std::string(kJointNames[weakest]).c_str(),
+                      t.track.confidence(r, weakest));
+  }
+}
+
+// The strip, and a button to the frame the tracker was least sure of (no keyframe): the place
+// to check first, and to drag the joints that strayed (the frame becomes a keyframe).
+void refining(AppState& s, const VideoSession& v, float scale) {
+  confidenceStrip(s, v, scale);
+  const int least = actions::leastSureTrackedFrame(s);
+  char label[64];
+  std::snprintf(label, sizeof label, least >= 0 ? "Least sure frame (%d)" : "Least sure frame", least);
+  if (buttonRow({{label, least >= 0}}) == 0) apply(s, [&] { actions::setVideoFrame(s, least); });
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("The tracked frame, not a keyframe, with the lowest mean confidence: check it,\n"
+                      "and drag any joint that strayed (the frame becomes a keyframe and the\n"
+                      "track is redone from it)");
+}
+
 std::string backgroundNote(const std::string& background) {
   return background == "flattened" ? "background flattened" : "background kept: " + background;
 }
 
-void tracking(AppState& s, const VideoSession& v) {
+void tracking(AppState& s, const VideoSession& v, float scale) {
   sectionTitle("Track");
   int range[2] = {v.firstFrame, v.lastFrame < 0 ? v.frameCount() - 1 : v.lastFrame};
   ImGui::SetNextItemWidth(-1.0f);
@@ -248,6 +306,7 @@ void tracking(AppState& s, const VideoSession& v) {
     if (t.flattenBackground) textDisabledWrapped(backgroundNote(t.track.background).c_str());
     if (t.holdTheTrunk) ImGui::TextDisabled("shoulders and hips held to the trunk");
     if (t.modelLoopRounds > 0) textDisabledWrapped(loopNote(t).c_str());
+    refining(s, v, scale);
   }
   if (!v.trackError.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.55f, 1.0f));
@@ -301,7 +360,6 @@ void saving(AppState& s, const VideoSession& v) {
 }  // namespace
 
 void drawVideoControls(AppState& s, float scale) {
-  (void)scale;
   if (!s.video) return;
   const VideoSession& v = *s.video;
   sectionTitle("Video");
@@ -316,7 +374,7 @@ void drawVideoControls(AppState& s, float scale) {
     ImGui::SetTooltip("codec %s", i.codec.empty() ? "unknown" : i.codec.c_str());
   scrubber(s, v);
   marking(s, v);
-  tracking(s, v);
+  tracking(s, v, scale);
   saving(s, v);
   if (buttonRow({{"Close the video", true}}) == 0) actions::closeVideo(s);
 }
