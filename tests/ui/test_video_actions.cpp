@@ -146,6 +146,16 @@ TEST(VideoActions, AVideoOrItsKeyframeFileDroppedOpensIt) {
   EXPECT_EQ(keysAlone.video->path, video);
   EXPECT_EQ(keysAlone.video->keyframes.keyframes.size(), 2u);
 
+  // Another video open: the keyframes open the video they name, beside them.
+  const auto other = dir / "other.avi";
+  filmWalker(other, 12);
+  AppState otherOpen;
+  actions::openVideo(otherOpen, other);
+  actions::drop(otherOpen, {keys});
+  ASSERT_TRUE(otherOpen.video.has_value());
+  EXPECT_EQ(otherOpen.video->path, video);
+  EXPECT_EQ(otherOpen.video->keyframes.keyframes.size(), 2u);
+
   EXPECT_EQ(browserFormat("walk.avi"), browserFormat("Clip.MP4"));
   EXPECT_GE(browserFormat("walk.avi"), 0);
   EXPECT_GE(browserFormat("keys.json"), 0);

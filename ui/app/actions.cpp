@@ -435,13 +435,15 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
   }
   for (const auto& k : keyframeFiles) {
     try {
-      if (!s.video) {
-        const Keyframes named = readKeyframes(k);
-        const auto beside = k.parent_path() / named.video;
-        if (named.video.empty() || !std::filesystem::exists(beside))
-          throw std::invalid_argument(k.string() + ": open the video the keyframes were marked on first");
+      // The video the file names, beside it, unless that one is open (the video opened with
+      // the file, or the one the user marks).
+      const Keyframes named = readKeyframes(k);
+      const auto beside = k.parent_path() / named.video;
+      const bool besideExists = !named.video.empty() && std::filesystem::exists(beside);
+      if (!s.video && !besideExists)
+        throw std::invalid_argument(k.string() + ": open the video the keyframes were marked on first");
+      if (!s.video || (!opened && besideExists && s.video->path.filename() != named.video))
         openVideo(s, beside);
-      }
       loadKeyframes(s, k);
     } catch (const std::exception& e) {
       ++s.jobs.failures;

@@ -106,6 +106,9 @@ void loadKeyframes(AppState& s, const std::filesystem::path& path) {
   } catch (const std::exception& e) {
     throw std::invalid_argument(e.what());
   }
+  if (!k.video.empty() && k.video != v.path.filename().string())
+    s.log.warning(path.string() + ": marked on " + k.video + ", read into " + v.path.filename().string() +
+                  " (the same picture size; renamed?)");
   pushUndo(v);
   k.video = v.path.filename().string();
   v.keyframes = std::move(k);
@@ -404,7 +407,7 @@ void advancePlayback(AppState& s, double seconds) {
   const int whole = static_cast<int>(v.playedFrames);
   if (whole < 1) return;
   v.playedFrames -= whole;
-  v.frame = (v.frame + std::min(whole, 1)) % v.frameCount();
+  v.frame = (v.frame + 1) % v.frameCount();
   if (v.marking) v.markStep = nextUnmarked(v, 0);
 }
 
