@@ -23,6 +23,8 @@ constexpr Shortcut kMouse[] = {
     {"wheel", "zoom"},
     {"double-click", "reset the camera"},
     {"the α dial (F5)", "click or drag: the camera of the 2D view, seen from above"},
+    {"click (video, marking)", "place the joint asked for; drag a mark or a tracked joint to correct it"},
+    {"wheel / right-drag (video)", "magnify the picture about the cursor / move it; right double-click: whole"},
     {"hover a plot", "read the values at the cursor"},
 };
 
