@@ -44,18 +44,36 @@ Eigen::MatrixXd filmWalker(const std::filesystem::path& video, Eigen::Index rows
   return writeFootage(video, frames, cameraBeside(frames, 30.0, 4500.0), 30.0);
 }
 
-TEST(VideoActions, AJointLetGoWhileTrackingTracksAgainWithIt) {
-  const auto dir = test::makeTempDir("video_actions");
-  const auto video = dir / "walk.avi";
-  const Eigen::MatrixXd truthPx = filmWalker(video, 90);
-  const auto keys = dir / "keys.json";
-  writeKeyframes(keys, keyframesFromTrack(truthPx, {0, 60}, "walk.avi"));
+// A filmed walker in a fresh folder (walk.avi) with the keyframe file keys.json marked on
+// `marked` from the true joints.
+struct Filmed {
+  std::filesystem::path dir, video, keys;
+  Eigen::MatrixXd truthPx;
+};
 
-  AppState s;
-  actions::openVideo(s, video);
-  actions::loadKeyframes(s, keys);
+Filmed filmWithKeyframes(const std::string& name, Eigen::Index rows, const std::vector<int>& marked) {
+  Filmed f;
+  f.dir = test::makeTempDir(name);
+  f.video = f.dir / "walk.avi";
+  f.truthPx = filmWalker(f.video, rows);
+  f.keys = f.dir / "keys.json";
+  writeKeyframes(f.keys, keyframesFromTrack(f.truthPx, marked, "walk.avi"));
+  return f;
+}
+
+// The filmed walker opened, its keyframes read and tracked.
+void openAndTrack(AppState& s, const Filmed& f) {
+  actions::openVideo(s, f.video);
+  actions::loadKeyframes(s, f.keys);
   actions::startTracking(s);
   settle(s);
+}
+
+TEST(VideoActions, AJointLetGoWhileTrackingTracksAgainWithIt) {
+  const Filmed f = filmWithKeyframes("video_actions", 90, {0, 60});
+  const Eigen::MatrixXd& truthPx = f.truthPx;
+  AppState s;
+  openAndTrack(s, f);
   ASSERT_TRUE(s.video->tracked);
   EXPECT_EQ(s.video->tracked->keyframes.keyframes.size(), 2u);
 
@@ -128,11 +146,8 @@ TEST(VideoActions, AVideoCutShortSaysSoInTheBanner) {
 // video it names beside it); until 2026-11-27 a drop refused both, and the file browser did not
 // list them: only the command line opened a video.
 TEST(VideoActions, AVideoOrItsKeyframeFileDroppedOpensIt) {
-  const auto dir = test::makeTempDir("video_actions_drop");
-  const auto video = dir / "walk.avi";
-  const Eigen::MatrixXd truthPx = filmWalker(video, 12);
-  const auto keys = dir / "keys.json";
-  writeKeyframes(keys, keyframesFromTrack(truthPx, {0, 6}, "walk.avi"));
+  const Filmed f = filmWithKeyframes("video_actions_drop", 12, {0, 6});
+  const auto &dir = f.dir, &video = f.video, &keys = f.keys;
 
   AppState dropped;
   actions::drop(dropped, {video});
@@ -167,24 +182,18 @@ TEST(VideoActions, AVideoOrItsKeyframeFileDroppedOpensIt) {
 // the same joints) with the keyframes it was tracked from; before a track there is nothing to
 // save, and it says so.
 TEST(VideoActions, TheTrackIsSavedAsTheCommandLineSavesIt) {
-  const auto dir = test::makeTempDir("video_actions_save");
-  const auto video = dir / "walk.avi";
-  const Eigen::MatrixXd truthPx = filmWalker(video, 30);
-  const auto keys = dir / "keys.json";
-  writeKeyframes(keys, keyframesFromTrack(truthPx, {0, 20}, "walk.avi"));
+  const Filmed f = filmWithKeyframes("video_actions_save", 30, {0, 20});
   AppState s;
-  actions::openVideo(s, video);
-  actions::loadKeyframes(s, keys);
-  EXPECT_THROW(actions::saveTrack(s, dir / "early"), std::invalid_argument);
-  EXPECT_FALSE(std::filesystem::exists(dir / "early"));
-  actions::startTracking(s);
-  settle(s);
+  actions::openVideo(s, f.video);
+  EXPECT_THROW(actions::saveTrack(s, f.dir / "early"), std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(f.dir / "early"));
+  openAndTrack(s, f);
   ASSERT_TRUE(s.video->tracked);
 
-  const auto out = dir / "saved";
+  const auto out = f.dir / "saved";
   actions::saveTrack(s, out);
-  for (const char* f : {"track_2d.csv", "confidence.csv", "walk_keyframes.json"})
-    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  for (const char* file : {"track_2d.csv", "confidence.csv", "walk_keyframes.json"})
+    EXPECT_TRUE(std::filesystem::exists(out / file)) << file;
   KeypointOptions o;
   o.fps = 30.0;
   const KeypointTrial back = readKeypointTrial(out / "keypoints", o);
@@ -222,17 +231,12 @@ TEST(VideoActions, TheTrackIsSavedAsTheCommandLineSavesIt) {
 // The least sure frame is the tracked frame, not a keyframe, of lowest mean confidence; a
 // keyframe put there moves it elsewhere; without a track there is none.
 TEST(VideoActions, TheLeastSureFrameIsTheWeakestFrameNotAKeyframe) {
-  const auto dir = test::makeTempDir("video_actions_least");
-  const auto video = dir / "walk.avi";
-  const Eigen::MatrixXd truthPx = filmWalker(video, 40);
+  const Filmed f = filmWithKeyframes("video_actions_least", 40, {0});
+  const Eigen::MatrixXd& truthPx = f.truthPx;
   AppState s;
-  actions::openVideo(s, video);
+  actions::openVideo(s, f.video);
   EXPECT_EQ(actions::leastSureTrackedFrame(s), -1);
-  const auto keys = dir / "keys.json";
-  writeKeyframes(keys, keyframesFromTrack(truthPx, {0}, "walk.avi"));
-  actions::loadKeyframes(s, keys);
-  actions::startTracking(s);
-  settle(s);
+  openAndTrack(s, f);
   ASSERT_TRUE(s.video->tracked);
   const JointTrack& t = s.video->tracked->track;
   const int least = actions::leastSureTrackedFrame(s);
