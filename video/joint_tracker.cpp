@@ -50,8 +50,8 @@ int oddClamp(double value, int lo, int hi) {
   return v % 2 == 0 ? v + 1 : v;
 }
 
-// Head to ankles of the first keyframe with at least two joints; a third of the frame's
-// height when no keyframe says.
+}  // namespace
+
 double personHeightPx(const Keyframes& keys, int frameHeightPx) {
   for (const Keyframe& k : keys.keyframes) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
@@ -67,6 +67,8 @@ double personHeightPx(const Keyframes& keys, int frameHeightPx) {
   }
   return frameHeightPx / 3.0;
 }
+
+namespace {
 
 Geometry geometryFor(double personPx, const TrackerOptions& o) {
   Geometry g;

@@ -79,6 +79,10 @@ struct JointTrack {
   KeypointImageSize imageSize;  // the video's frame (zero: unknown)
 };
 
+// The person's height in pixels that sizes the tracker's windows: head to ankles of the first
+// keyframe with at least two joints; a third of the frame's height when no keyframe says.
+double personHeightPx(const Keyframes& keys, int frameHeightPx);
+
 // Called with the share done (0-1); returning false cancels (Error(BadArgument) "cancelled").
 using TrackProgress = std::function<bool(double)>;
 

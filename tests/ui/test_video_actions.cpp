@@ -249,6 +249,50 @@ TEST(VideoActions, TheLeastSureFrameIsTheWeakestFrameNotAKeyframe) {
   EXPECT_NE(actions::leastSureTrackedFrame(s), least) << "now a keyframe";
 }
 
+// A joint dragged between two keyframes tracks again only the frames between them, and the
+// track that comes out is the one tracking the whole range again gives, frame for frame.
+// Settings that reach over the whole range (the flattened background, the model loop) or an
+// edit of the first keyframe track it all again.
+TEST(VideoActions, AnEditBetweenKeyframesTracksOnlyTheFramesBetweenItsNeighbours) {
+  const Filmed f = filmWithKeyframes("video_actions_local", 60, {0, 30});
+  AppState s;
+  openAndTrack(s, f);
+  ASSERT_TRUE(s.video->tracked);
+  const JointTrack before = s.video->tracked->track;
+
+  VideoSession& v = *s.video;
+  v.frame = 45;
+  const int knee = index(Joint::RKnee);
+  actions::markJoint(s, Joint::RKnee, f.truthPx(45, 2 * knee), f.truthPx(45, 2 * knee + 1));
+  const TrackSettings settings = trackSettingsOf(v, 59);
+  const auto around = localRetrackRange(*v.tracked, v.keyframes, settings);
+  ASSERT_TRUE(around.has_value());
+  EXPECT_EQ(*around, std::make_pair(30, 59));
+  TrackSettings flattened = settings;
+  flattened.flattenBackground = true;
+  EXPECT_FALSE(localRetrackRange(*v.tracked, v.keyframes, flattened).has_value());
+  TrackSettings looped = settings;
+  looped.modelLoopRounds = 1;
+  EXPECT_FALSE(localRetrackRange(*v.tracked, v.keyframes, looped).has_value());
+  Keyframes firstMoved = v.keyframes;
+  firstMoved.keyframes.front().jointsPx(1) -= 20.0;  // the head 20 px higher: a taller person
+  EXPECT_FALSE(localRetrackRange(*v.tracked, firstMoved, settings).has_value());
+
+  EXPECT_TRUE(actions::letGoOfJoint(s));
+  settle(s);
+  ASSERT_TRUE(v.tracked);
+  ASSERT_EQ(v.tracked->keyframes.keyframes.size(), 3u);
+  const JointTrack& local = v.tracked->track;
+  const TrackedVideo whole = trackVideo(f.video, v.keyframes, settings, nullptr, {});
+  const auto same = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+    return a.rows() == b.rows() && ((a.array() == b.array()) || (a.array().isNaN() && b.array().isNaN())).all();
+  };
+  EXPECT_TRUE(same(local.jointsPx, whole.track.jointsPx));
+  EXPECT_TRUE(same(local.confidence, whole.track.confidence));
+  EXPECT_TRUE(same(local.jointsPx.topRows(30), before.jointsPx.topRows(30))) << "frames 0-29 kept";
+  EXPECT_FALSE(same(local.jointsPx.bottomRows(29), before.jointsPx.bottomRows(29)));
+}
+
 // Before a track, playback plays the video's own frames at its rate × the speed, round its end,
 // one frame at most per call and none while the frame shown is still decoding.
 TEST(VideoActions, PlaybackStepsTheVideosOwnFramesAtItsRate) {

@@ -614,9 +614,13 @@ void ScriptRunner::step(AppState& s) {
     s.log.info("script: " + a.name + " " + a.argument.dump());
     // Each action its own undo step, as each click is (the frame loop would merge a frame's).
     s.history.observe(captureParameters(s), captureParameterContext(s), true);
+    // An action that started background work (a track, a fit, a model) yields, so that the
+    // next one sees its result: `track_video` then `export_state` once exported the state
+    // from before the track.
     if (a.name == "open" || a.name == "drop" || a.name == "reload" || a.name == "expect_failure" ||
         a.name == "write_joint_mapping" || a.name == "wait_frames" || a.name == "screenshot" ||
-        a.name == "set_clip" || a.name == "export_png" || a.name == "export_video")
+        a.name == "set_clip" || a.name == "export_png" || a.name == "export_video" || checkLoad_ ||
+        s.busy())
       return;
   }
 }

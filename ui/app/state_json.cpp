@@ -201,6 +201,7 @@ nlohmann::json videoJson(const AppState& s) {
                   {"first_frame", t.track.firstFrame},
                   {"last_frame", t.lastFrame()},
                   {"seconds", t.seconds},
+                  {"ran_frames", {t.ranFirst, t.ranLast}},
                   {"mean_confidence", t.track.confidence.mean()},
                   {"keyframes", t.keyframes.keyframes.size()},
                   {"model_loop", t.modelLoopRounds},

@@ -56,6 +56,77 @@ TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& key
   }
   t.trial = std::make_shared<const KeypointTrial>(keypointTrialOf(t.track, video.string()));
   t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  t.ranFirst = t.track.firstFrame;
+  t.ranLast = t.lastFrame();
+  return t;
+}
+
+namespace {
+
+bool sameMarks(const Keyframe& a, const Keyframe& b) {
+  // A joint not marked (NaN) on both is unchanged: NaN == NaN is false.
+  const auto same = a.jointsPx.array() == b.jointsPx.array() ||
+                    (a.jointsPx.array().isNaN() && b.jointsPx.array().isNaN());
+  return a.frame == b.frame && same.all();
+}
+
+const Keyframe* keyframeOn(const Keyframes& k, int frame) {
+  for (const Keyframe& key : k.keyframes)
+    if (key.frame == frame) return &key;
+  return nullptr;
+}
+
+// The frames whose keyframe was added, removed or moved a mark.
+std::vector<int> editedFrames(const Keyframes& before, const Keyframes& after) {
+  std::vector<int> edited;
+  for (const Keyframes* k : {&before, &after})
+    for (const Keyframe& key : k->keyframes) {
+      const Keyframe* a = keyframeOn(before, key.frame);
+      const Keyframe* b = keyframeOn(after, key.frame);
+      if (!a || !b || !sameMarks(*a, *b)) edited.push_back(key.frame);
+    }
+  std::sort(edited.begin(), edited.end());
+  edited.erase(std::unique(edited.begin(), edited.end()), edited.end());
+  return edited;
+}
+
+}  // namespace
+
+std::optional<std::pair<int, int>> localRetrackRange(const TrackedVideo& previous,
+                                                     const Keyframes& keyframes,
+                                                     const TrackSettings& settings) {
+  const bool sameSettings =
+      settings.tracker == TrackerKind::OpticalFlow && previous.tracker == settings.tracker &&
+      !settings.flattenBackground && !previous.flattenBackground && settings.modelLoopRounds == 0 &&
+      previous.modelLoopRounds == 0 && previous.holdTheTrunk == settings.holdTheTrunk &&
+      previous.track.firstFrame == settings.first && previous.lastFrame() == settings.last;
+  if (!sameSettings) return std::nullopt;
+  const std::vector<int> edited = editedFrames(previous.keyframes, keyframes);
+  if (edited.empty()) return std::nullopt;
+  const int height = std::max(previous.track.imageSize.height, 1);
+  if (personHeightPx(previous.keyframes, height) != personHeightPx(keyframes, height)) return std::nullopt;
+  int from = settings.first, to = settings.last;
+  for (const Keyframe& key : keyframes.keyframes) {
+    if (std::binary_search(edited.begin(), edited.end(), key.frame)) continue;
+    if (key.frame < edited.front()) from = std::max(from, key.frame);
+    if (key.frame > edited.back()) to = std::min(to, key.frame);
+  }
+  return std::pair{from, to};
+}
+
+TrackedVideo trackAgainBetween(const TrackedVideo& previous, const Keyframes& keyframes, int first,
+                               int last, const std::function<bool(double)>& progress) {
+  TrackSettings settings{first, last, previous.tracker, previous.flattenBackground, previous.holdTheTrunk, 0};
+  const TrackedVideo part = trackVideo(previous.video, keyframes, settings, nullptr, progress);
+  TrackedVideo t = previous;
+  t.keyframes = keyframes;
+  t.seconds = part.seconds;
+  t.ranFirst = first;
+  t.ranLast = last;
+  const Eigen::Index row = first - previous.track.firstFrame, rows = last - first + 1;
+  t.track.jointsPx.middleRows(row, rows) = part.track.jointsPx;
+  t.track.confidence.middleRows(row, rows) = part.track.confidence;
+  t.trial = std::make_shared<const KeypointTrial>(keypointTrialOf(t.track, previous.video.string()));
   return t;
 }
 

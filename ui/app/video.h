@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,11 @@ struct TrackedVideo {
   JointTrack track;
   std::shared_ptr<const KeypointTrial> trial;  // the track's confident points (trialFromJoints)
   double seconds = 0.0;
+  // The frames the last run tracked (trackAgainBetween's part; the whole range otherwise).
+  int ranFirst = 0, ranLast = -1;
   int frames() const { return static_cast<int>(track.jointsPx.rows()); }
+  int framesRan() const { return ranLast - ranFirst + 1; }
+  bool ranPart() const { return ranFirst != track.firstFrame || ranLast != lastFrame(); }
   int lastFrame() const { return track.firstFrame + frames() - 1; }
 };
 
@@ -94,6 +99,23 @@ TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& key
                         const TrackSettings& settings,
                         std::shared_ptr<const EigenwalkerModel> model,
                         const std::function<bool(double)>& progress);
+
+// The frames a new track would change when `keyframes` replace the ones `previous` was
+// tracked from, with the same settings: from the unchanged keyframe before the first edited
+// one (or the range's start) to the unchanged keyframe after the last (or its end). Every
+// keyframe is tracked only to its neighbours (video/joint_tracker.h), so the frames outside
+// come out the same. Empty when nothing changed, or when the whole range must be tracked
+// again: other settings or range, the flattened background (a median over the range) or the
+// model loop (one fit of the whole track), the appearance tracker, or an edit at or before
+// the first keyframe (whose marks size the tracker's windows).
+std::optional<std::pair<int, int>> localRetrackRange(const TrackedVideo& previous,
+                                                     const Keyframes& keyframes,
+                                                     const TrackSettings& settings);
+
+// `previous` with frames [first, last] tracked again from `keyframes` (trackVideo's
+// settings), the keyframes now `keyframes`; the fit's trial made again from the whole track.
+TrackedVideo trackAgainBetween(const TrackedVideo& previous, const Keyframes& keyframes, int first,
+                               int last, const std::function<bool(double)>& progress);
 
 // True for the file names a video has (.mp4, .avi, .mov, .mkv, .webm, .m4v, .mpg, .mpeg).
 bool isVideoFile(const std::filesystem::path& path);

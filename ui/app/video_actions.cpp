@@ -308,6 +308,22 @@ void setModelLoopRounds(AppState& s, int rounds) {
   session(s).modelLoopRounds = rounds;
 }
 
+namespace {
+
+// A track's progress as the frame it has reached in [first, last]; false once cancelled.
+std::function<bool(double)> frameProgress(JobProgress& p, int first, int last) {
+  return [&p, first, frames = last - first + 1](double done) {
+    try {
+      p.set(static_cast<int>(done * frames), frames, "frame " + std::to_string(first + static_cast<int>(done * frames)));
+      return true;
+    } catch (const JobCancelled&) {
+      return false;
+    }
+  };
+}
+
+}  // namespace
+
 void startTracking(AppState& s) {
   VideoSession& v = session(s);
   if (s.jobs.track.running()) throw std::invalid_argument("a track is running");
@@ -321,6 +337,20 @@ void startTracking(AppState& s) {
                                 "-" + std::to_string(last) + ": mark them on one frame first");
   v.marking = false;
   v.trackError.clear();
+  const TrackSettings settings = trackSettingsOf(v, last);
+  // An edit between keyframes changes only the frames between its neighbours: those alone
+  // are tracked again (a correction in a long clip takes seconds, not the whole clip's time).
+  if (v.tracked)
+    if (const auto around = localRetrackRange(*v.tracked, v.keyframes, settings)) {
+      const std::string title = "Tracking " + v.path.filename().string() + " again, frames " +
+                                std::to_string(around->first) + "-" + std::to_string(around->second);
+      s.log.info(title + " (the rest of the track is unchanged)");
+      s.jobs.track.start(title, [previous = v.tracked, keys = v.keyframes, around](JobProgress& p) {
+        return std::make_shared<const TrackedVideo>(trackAgainBetween(
+            *previous, keys, around->first, around->second, frameProgress(p, around->first, around->second)));
+      });
+      return;
+    }
   const std::string title =
       "Tracking " + v.path.filename().string() + " (" + trackerName(v.tracker) + ")";
   s.log.info(title + ", frames " + std::to_string(v.firstFrame) + "-" + std::to_string(last));
@@ -329,20 +359,9 @@ void startTracking(AppState& s) {
                          ? modelForTracking(s)
                          : nullptr;
   s.jobs.track.start(
-      title, [path = v.path, keys = v.keyframes, settings = trackSettingsOf(v, last),
-              model](JobProgress& p) {
-        const auto progress = [&p, first = settings.first, last = settings.last](double done) {
-          try {
-            const int frames = last - first + 1;
-            p.set(static_cast<int>(done * frames), frames,
-                  "frame " + std::to_string(first + static_cast<int>(done * frames)));
-            return true;
-          } catch (const JobCancelled&) {
-            return false;
-          }
-        };
+      title, [path = v.path, keys = v.keyframes, settings, model](JobProgress& p) {
         return std::make_shared<const TrackedVideo>(
-            trackVideo(path, keys, settings, model, progress));
+            trackVideo(path, keys, settings, model, frameProgress(p, settings.first, settings.last)));
       });
 }
 
@@ -472,8 +491,9 @@ void pollVideo(AppState& s) {
   }
   v.tracked = *outcome->value;
   char buf[160];
-  std::snprintf(buf, sizeof buf, "Tracked %d frames in %.1f s (%.0f frames/s)", v.tracked->frames(),
-                v.tracked->seconds, v.tracked->frames() / std::max(v.tracked->seconds, 1e-9));
+  std::snprintf(buf, sizeof buf, "Tracked %s%d frames (%d-%d) in %.1f s (%.0f frames/s)",
+                v.tracked->ranPart() ? "again " : "", v.tracked->framesRan(), v.tracked->ranFirst,
+                v.tracked->ranLast, v.tracked->seconds, v.tracked->framesRan() / std::max(v.tracked->seconds, 1e-9));
   s.log.info(buf);
   for (const auto& w : v.tracked->trial->warnings) s.log.warning(w);
   // Fitted as a clip, keeping the camera values the user held for this video.

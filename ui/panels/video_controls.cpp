@@ -297,10 +297,10 @@ void tracking(AppState& s, const VideoSession& v, float scale) {
   if (v.tracked) {
     const auto& t = *v.tracked;
     char done[128];
-    std::snprintf(done, sizeof done, "tracked %d-%d by %s in %.1f s (%.0f frames/s)",
-                  t.track.firstFrame, t.lastFrame(),
+    std::snprintf(done, sizeof done, "tracked %s%d-%d by %s in %.1f s (%.0f frames/s)",
+                  t.ranPart() ? "again " : "", t.ranFirst, t.ranLast,
                   t.tracker == TrackerKind::Appearance ? "appearance" : "optical flow", t.seconds,
-                  t.frames() / std::max(t.seconds, 1e-9));
+                  t.framesRan() / std::max(t.seconds, 1e-9));
     textDisabledWrapped(done);
     ImGui::TextDisabled("mean confidence %.2f", t.track.confidence.mean());
     if (t.flattenBackground) textDisabledWrapped(backgroundNote(t.track.background).c_str());
