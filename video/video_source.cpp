@@ -60,6 +60,11 @@ VideoSource::VideoSource(const std::filesystem::path& path) {
   cv::Mat first;
   if (!capture_.read(first) || first.empty())
     throwMalformed(info_.file, "frame 0", "cannot be decoded");
+  // The pictures' own size, which every frame is checked against: the FFmpeg backend turns a
+  // phone's video by the rotation in its header (and reports the turned size too; test
+  // VideoSource.AVideoWithARotationInItsHeaderIsReadTurnedUpright).
+  info_.widthPx = first.cols;
+  info_.heightPx = first.rows;
   next_ = 1;
 }
 
@@ -89,6 +94,13 @@ cv::Mat VideoSource::frame(int index) {
                  "the stream ends before this frame (the container announced more frames)");
   }
   ++next_;
+  // A defence: the backend scales a stream whose pictures change size to the first's, in
+  // the cases tried (an MJPG frame's header given another height).
+  if (image.cols != info_.widthPx || image.rows != info_.heightPx)
+    throwBadData(info_.file, "frame " + std::to_string(index),
+                 "is " + std::to_string(image.cols) + "x" + std::to_string(image.rows) +
+                     " px where the first is " + std::to_string(info_.widthPx) + "x" +
+                     std::to_string(info_.heightPx) + " (a stream that changes size is not read)");
   if (image.type() != CV_8UC3) {
     cv::Mat converted;
     if (image.channels() == 1)

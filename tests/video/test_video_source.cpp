@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -120,6 +121,47 @@ TEST(VideoSource, AClipCutShortEndsWithAnErrorAtTheFirstMissingFrame) {
   for (const int k : {decoded - 1, 3, decoded / 2, 0})
     EXPECT_EQ(barColumn(video.frame(k)), k) << "frame " << k << " after the end was met";
   EXPECT_GE(video.info().frameCount, decoded);
+}
+
+// A phone held upright writes its video landscape with a rotation in the track header; the
+// frames come out turned upright, and the video's size is theirs (the marks and the tracker
+// work in it). Here the header of an MP4 the test writes (64 x 48, a white square at the top
+// left) is given a quarter turn, as a phone's is.
+TEST(VideoSource, AVideoWithARotationInItsHeaderIsReadTurnedUpright) {
+  const fs::path dir = test::makeTempDir("video_rotated");
+  const fs::path plain = dir / "plain.mp4";
+  {
+    cv::VideoWriter writer(plain.string(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('m', 'p', '4', 'v'), 30.0,
+                           cv::Size(64, 48));
+    ASSERT_TRUE(writer.isOpened());
+    for (int k = 0; k < 6; ++k) {
+      cv::Mat image(48, 64, CV_8UC3, cv::Scalar(0, 0, 0));
+      cv::rectangle(image, cv::Rect(0, 0, 16, 16), cv::Scalar(255, 255, 255), cv::FILLED);
+      writer.write(image);
+    }
+  }
+  std::string bytes = test::readTextFile(plain);
+  const std::size_t tkhd = bytes.find("tkhd");
+  ASSERT_NE(tkhd, std::string::npos);
+  // ISO/IEC 14496-12 tkhd, version 0: after the type, 4 bytes version and flags, 20 of times,
+  // ids and duration, 8 reserved, layer, group, volume, 2 reserved: then the 3 x 3 matrix.
+  std::size_t at = tkhd + 4 + 4 + 20 + 8 + 8;
+  for (const std::uint32_t v : {0u, 0x00010000u, 0u, 0xFFFF0000u, 0u, 0u, 0u, 0u, 0x40000000u}) {
+    for (int b = 3; b >= 0; --b) bytes[at++] = static_cast<char>((v >> (8 * b)) & 0xFF);
+  }
+  const fs::path turned = dir / "turned.mp4";
+  test::writeBinaryFile(turned, bytes);
+
+  VideoSource video(turned);
+  EXPECT_EQ(video.info().widthPx, 48);
+  EXPECT_EQ(video.info().heightPx, 64);
+  const cv::Mat frame = video.frame(3);
+  ASSERT_EQ(frame.cols, 48);
+  ASSERT_EQ(frame.rows, 64);
+  // The white square left the top left corner for another: the picture was turned.
+  const auto bright = [&](int x, int y) { return toGrey(frame).at<unsigned char>(y, x) > 128; };
+  EXPECT_FALSE(bright(4, 4));
+  EXPECT_TRUE(bright(4, 59) || bright(43, 4) || bright(43, 59));
 }
 
 TEST(FrameCache, FramesComeBackRightWithinTheBudget) {
