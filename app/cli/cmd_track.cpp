@@ -42,6 +42,7 @@ struct TrackArgs {
   int overlayEvery = 0;  // 0: no overlay pictures
   int modelLoop = 0;     // rounds of the model loop (video/model_loop.h)
   bool json = false, keyframeFramesGiven = false, flattenBackground = false, holdTrunk = false;
+  double withinPx = 12.0;  // --within: the share of joint-frames this near the --compare source
 };
 
 // The keyframes of `all` at `frames`; Error(BadArgument) naming the file for one it lacks.
@@ -74,11 +75,15 @@ json distanceJson(const TrackDistance& d) {
   json perJoint = json::object();
   for (int j = 0; j < kJointCount; ++j) {
     if (d.frames[j] == 0) continue;
-    perJoint[std::string(kJointNames[j])] = {
-        {"median_px", d.medianPx[j]}, {"p95_px", d.p95Px[j]}, {"frames", d.frames[j]}};
+    perJoint[std::string(kJointNames[j])] = {{"median_px", d.medianPx[j]},
+                                              {"p95_px", d.p95Px[j]},
+                                              {"share_within", d.shareWithin[j]},
+                                              {"frames", d.frames[j]}};
   }
   return {{"median_px", d.medianAllPx},
           {"p95_px", d.p95AllPx},
+          {"within_px", d.withinPx},
+          {"share_within", d.shareWithinAll},
           {"joint_frames", d.jointFrames},
           {"per_joint", perJoint}};
 }
@@ -86,12 +91,14 @@ json distanceJson(const TrackDistance& d) {
 void printDistance(const TrackDistance& d, const std::string& against) {
   std::cout << "distance to " << against << ": median " << std::fixed << std::setprecision(1)
             << d.medianAllPx << " px, 95th percentile " << d.p95AllPx << " px over "
-            << d.jointFrames << " joint-frames\n";
+            << d.jointFrames << " joint-frames, " << std::setprecision(0) << 100.0 * d.shareWithinAll
+            << " % within " << std::setprecision(1) << d.withinPx << " px\n";
   for (int j = 0; j < kJointCount; ++j) {
     if (d.frames[j] == 0) continue;
     std::cout << "  " << std::left << std::setw(11) << kJointNames[j] << std::right << " median "
               << std::setw(6) << d.medianPx[j] << " px  p95 " << std::setw(6) << d.p95Px[j]
-              << " px  (" << d.frames[j] << " frames)\n";
+              << " px  within " << std::setprecision(0) << std::setw(3) << 100.0 * d.shareWithin[j]
+              << " %  (" << d.frames[j] << " frames)\n" << std::setprecision(1);
   }
 }
 
@@ -196,7 +203,7 @@ int runTrack(const TrackArgs& a) {
   std::optional<Eigen::MatrixXd> referencePx;
   if (!a.compare.empty()) {
     referencePx = referenceFor(a, info, keys);
-    const TrackDistance d = compareTracks(track.jointsPx, track.firstFrame, *referencePx);
+    const TrackDistance d = compareTracks(track.jointsPx, track.firstFrame, *referencePx, allJoints(), a.withinPx);
     printDistance(d, a.compare);
     report["compare"] = distanceJson(d);
     report["compare"]["file"] = a.compare;
@@ -250,6 +257,10 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--compare", args->compare,
                   "measure the track against another 2D source of the clip (keypoints), or a "
                   "keyframe file's marks on frames that are not keyframes of this track");
+  cmd->add_option("--within", args->withinPx,
+                  "with --compare, also the share of joint-frames within this many pixels of it "
+                  "(default 12)")
+      ->check(CLI::Range(0.1, 10000.0));
   cmd->add_option("--reconstruct", args->reconstruct,
                   "also write the 3D walker (eigenwalker, unknown camera) here");
   cmd->add_option("--overlay-every", args->overlayEvery,

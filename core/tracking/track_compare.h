@@ -21,13 +21,19 @@ struct TrackDistance {
   std::array<int, kJointCount> frames{};                // frames where both have it
   double medianAllPx = 0.0, p95AllPx = 0.0;             // over every joint-frame
   int jointFrames = 0;
+  // The share of joint-frames within `withinPx` of the reference (the PCK of pose
+  // estimation, at a threshold in pixels): per joint (NaN when never in both) and overall.
+  double withinPx = 12.0;
+  std::array<double, kJointCount> shareWithin{};
+  double shareWithinAll = 0.0;
 };
 
 // `trackPx`: rows are frames firstFrame, firstFrame + 1, …; `referencePx`: rows are frames
 // 0, 1, …; both × 30 pixels, NaN = missing. Frames only one of them has are left out.
-// `joints`: which joints count (all by default).
+// `joints`: which joints count (all by default); `withinPx`: TrackDistance::withinPx.
 TrackDistance compareTracks(const Eigen::Ref<const Eigen::MatrixXd>& trackPx, int firstFrame,
                             const Eigen::Ref<const Eigen::MatrixXd>& referencePx,
-                            const std::array<bool, kJointCount>& joints = allJoints());
+                            const std::array<bool, kJointCount>& joints = allJoints(),
+                            double withinPx = 12.0);
 
 }  // namespace ew

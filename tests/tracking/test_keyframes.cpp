@@ -129,6 +129,14 @@ TEST(TrackCompare, DistancesPerJointOverTheFramesBothHave) {
   EXPECT_GT(d.p95Px[index(Joint::Head)], 0.0);
   EXPECT_EQ(d.jointFrames, 15 * 5 - 1);
   EXPECT_DOUBLE_EQ(d.medianAllPx, 0.0);
+  // Within 12 px (the default): every joint-frame; within 3.5 px: all but the head's 4 px.
+  EXPECT_DOUBLE_EQ(d.shareWithinAll, 1.0);
+  const TrackDistance tight = compareTracks(track, 5, reference, allJoints(), 3.5);
+  EXPECT_DOUBLE_EQ(tight.shareWithin[index(Joint::Head)], 0.8);
+  EXPECT_DOUBLE_EQ(tight.shareWithin[index(Joint::RKnee)], 1.0);
+  EXPECT_DOUBLE_EQ(tight.shareWithinAll, 73.0 / 74.0);
+  const TrackDistance tighter = compareTracks(track, 5, reference, allJoints(), 2.0);
+  EXPECT_DOUBLE_EQ(tighter.shareWithin[index(Joint::RKnee)], 0.0);
 }
 
 }  // namespace
