@@ -274,6 +274,10 @@ TEST(VideoActions, AnEditBetweenKeyframesTracksOnlyTheFramesBetweenItsNeighbours
   TrackSettings looped = settings;
   looped.modelLoopRounds = 1;
   EXPECT_FALSE(localRetrackRange(*v.tracked, v.keyframes, looped).has_value());
+  Keyframes outside = v.keyframes;
+  outside.keyframes.push_back(outside.keyframes.back());
+  outside.keyframes.back().frame = 70;  // past the tracked frames 0-59
+  EXPECT_FALSE(localRetrackRange(*v.tracked, outside, settings).has_value());
   Keyframes firstMoved = v.keyframes;
   firstMoved.keyframes.front().jointsPx(1) -= 20.0;  // the head 20 px higher: a taller person
   EXPECT_FALSE(localRetrackRange(*v.tracked, firstMoved, settings).has_value());

@@ -102,7 +102,7 @@ std::optional<std::pair<int, int>> localRetrackRange(const TrackedVideo& previou
       previous.track.firstFrame == settings.first && previous.lastFrame() == settings.last;
   if (!sameSettings) return std::nullopt;
   const std::vector<int> edited = editedFrames(previous.keyframes, keyframes);
-  if (edited.empty()) return std::nullopt;
+  if (edited.empty() || edited.front() < settings.first || edited.back() > settings.last) return std::nullopt;
   const int height = std::max(previous.track.imageSize.height, 1);
   if (personHeightPx(previous.keyframes, height) != personHeightPx(keyframes, height)) return std::nullopt;
   int from = settings.first, to = settings.last;
@@ -111,6 +111,7 @@ std::optional<std::pair<int, int>> localRetrackRange(const TrackedVideo& previou
     if (key.frame < edited.front()) from = std::max(from, key.frame);
     if (key.frame > edited.back()) to = std::min(to, key.frame);
   }
+  if (from > to) return std::nullopt;
   return std::pair{from, to};
 }
 

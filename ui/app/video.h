@@ -105,7 +105,7 @@ TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& key
 // one (or the range's start) to the unchanged keyframe after the last (or its end). Every
 // keyframe is tracked only to its neighbours (video/joint_tracker.h), so the frames outside
 // come out the same. Empty when nothing changed, or when the whole range must be tracked
-// again: other settings or range, the flattened background (a median over the range) or the
+// again: an edit outside the range, other settings or range, the flattened background (a median over the range) or the
 // model loop (one fit of the whole track), the appearance tracker, or an edit at or before
 // the first keyframe (whose marks size the tracker's windows).
 std::optional<std::pair<int, int>> localRetrackRange(const TrackedVideo& previous,
