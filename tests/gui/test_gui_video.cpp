@@ -67,7 +67,7 @@ class GuiVideo : public GuiTest {
 };
 
 // While the joints are being marked, Ctrl+Z and Ctrl+Shift+Z undo and redo the keyframe edits
-// (as the marking panel's buttons do), not the settings. Before, the arrow keys step the
+// (as the marking panel's buttons do), not the settings; S skips a joint, Enter is Done. Before, the arrow keys step the
 // video's own frames.
 TEST_F(GuiVideo, WhileMarkingCtrlZUndoesTheKeyframes) {
   const Footage f = writeWalkingFootage(dir);
@@ -85,6 +85,11 @@ TEST_F(GuiVideo, WhileMarkingCtrlZUndoesTheKeyframes) {
       {{"export_state", path("undone.json")}},
       {{"key", "ctrl+shift+z"}},
       {{"export_state", path("redone.json")}},
+      // S skips the joint asked for (one hidden from view), Enter ends the marking.
+      {{"key", "s"}},
+      {{"export_state", path("skipped.json")}},
+      {{"key", "enter"}},
+      {{"export_state", path("done.json")}},
   });
   const auto file = writeScript(dir, script.dump(2));
   const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
@@ -99,6 +104,9 @@ TEST_F(GuiVideo, WhileMarkingCtrlZUndoesTheKeyframes) {
   EXPECT_EQ(undone["keyframes"].size() + 1, marked["keyframes"].size())
       << "frame 30 was a new keyframe";
   EXPECT_EQ(redone["keyframes"], marked["keyframes"]);
+  EXPECT_EQ(state("skipped.json")["video"]["mark_step"].get<int>(), redone["mark_step"].get<int>() + 1);
+  EXPECT_TRUE(state("skipped.json")["video"]["marking"].get<bool>());
+  EXPECT_FALSE(state("done.json")["video"]["marking"].get<bool>());
 }
 
 // Before a track, play plays the video's own frames (one at most per drawn frame, so none is

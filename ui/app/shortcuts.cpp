@@ -110,6 +110,9 @@ std::vector<ShortcutRow> makeRows() {
         key(GLFW_KEY_2, [](AppState& s) { actions::setCamera(s, "side"); }),
         key(GLFW_KEY_3, [](AppState& s) { actions::setCamera(s, "top"); }),
         key(GLFW_KEY_4, [](AppState& s) { actions::setCamera(s, "three_quarter"); })}},
+      {"S / Enter", "marking a video's joints: skip the joint asked for (hidden) / done",
+       {key(GLFW_KEY_S, [](AppState& s) { if (s.video && s.video->marking) actions::skipMarkedJoint(s); }),
+        key(GLFW_KEY_ENTER, [](AppState& s) { if (s.video && s.video->marking) actions::stopMarking(s); })}},
       {"P", "point-light display on / off (dots only)",
        {key(GLFW_KEY_P, [](AppState& s) { s.view.overlays.pointLights = !s.view.overlays.pointLights; })}},
       {"Ctrl+Z", "undo the last change of a setting (marking a video's joints: of the keyframes)",
@@ -135,6 +138,7 @@ constexpr NamedKey kNamedKeys[] = {
     {"right", "→", GLFW_KEY_RIGHT},             {"page_up", "Page Up", GLFW_KEY_PAGE_UP},
     {"page_down", "Page Down", GLFW_KEY_PAGE_DOWN}, {"escape", "Esc", GLFW_KEY_ESCAPE},
     {"[", "[", GLFW_KEY_LEFT_BRACKET},          {"]", "]", GLFW_KEY_RIGHT_BRACKET},
+    {"enter", "Enter", GLFW_KEY_ENTER},
 };
 
 std::string lower(std::string text) {

@@ -110,8 +110,10 @@ void marking(AppState& s, const VideoSession& v) {
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Forget the joints marked on this frame");
   markingFromKeypoints(s);
-  textDisabledWrapped(v.zoom > 1.0 ? "wheel: zoom · right-drag: move · right double-click: whole picture"
-                                   : "wheel over the picture: zoom in to mark");
+  const std::string hint = std::string(v.marking ? "S: skip the joint · Enter: done · " : "") +
+                           (v.zoom > 1.0 ? "wheel: zoom · right-drag: move · right double-click: whole picture"
+                                         : "wheel over the picture: zoom in to mark");
+  textDisabledWrapped(hint.c_str());
 }
 
 // Optical flow (video/joint_tracker.h) or Zou et al.'s appearance tracker
