@@ -237,6 +237,11 @@ TEST(VideoActions, TheLeastSureFrameIsTheWeakestFrameNotAKeyframe) {
   actions::openVideo(s, f.video);
   EXPECT_EQ(actions::leastSureTrackedFrame(s), -1);
   openAndTrack(s, f);
+  s.video->frame = 20;
+  EXPECT_EQ(actions::neighbouringKeyframe(s, -1), 0);
+  EXPECT_EQ(actions::neighbouringKeyframe(s, 1), -1) << "the only keyframe is frame 0";
+  s.video->frame = 0;
+  EXPECT_EQ(actions::neighbouringKeyframe(s, -1), -1) << "none before the first";
   ASSERT_TRUE(s.video->tracked);
   const JointTrack& t = s.video->tracked->track;
   const int least = actions::leastSureTrackedFrame(s);
@@ -264,6 +269,10 @@ TEST(VideoActions, AnEditBetweenKeyframesTracksOnlyTheFramesBetweenItsNeighbours
   v.frame = 45;
   const int knee = index(Joint::RKnee);
   actions::markJoint(s, Joint::RKnee, f.truthPx(45, 2 * knee), f.truthPx(45, 2 * knee + 1));
+  EXPECT_EQ(actions::neighbouringKeyframe(s, -1), 30);
+  v.frame = 10;
+  EXPECT_EQ(actions::neighbouringKeyframe(s, 1), 30) << "the nearest after, of 30 and 45";
+  v.frame = 45;
   const TrackSettings settings = trackSettingsOf(v, 59);
   const auto around = localRetrackRange(*v.tracked, v.keyframes, settings);
   ASSERT_TRUE(around.has_value());

@@ -184,6 +184,9 @@ void saveKeyframes(AppState& s, const std::filesystem::path& path);
 // confidences) with the keyframes it was tracked from beside them (DIR/<video>_keyframes.json).
 // Throws when there is no track or a file cannot be written.
 void saveTrack(AppState& s, const std::filesystem::path& dir);
+// The open video's next keyframe after the frame shown (delta > 0) or the one before it
+// (delta < 0); -1 when there is none that way.
+int neighbouringKeyframe(const AppState& s, int delta);
 // The tracked frame that is no keyframe where the track's mean confidence over the joints is
 // lowest: where to look first for joints that strayed (-1 when there is no track, or every
 // tracked frame is a keyframe).

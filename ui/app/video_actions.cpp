@@ -151,6 +151,18 @@ void saveTrack(AppState& s, const std::filesystem::path& dir) {
              keyframeFileIn(dir, v).filename().string() + ")");
 }
 
+int neighbouringKeyframe(const AppState& s, int delta) {
+  if (!s.video || delta == 0) return -1;
+  const int shown = shownVideoFrame(s);
+  int best = -1;
+  for (const Keyframe& k : s.video->keyframes.keyframes) {
+    const bool way = delta > 0 ? k.frame > shown : k.frame < shown;
+    const bool nearer = best < 0 || (delta > 0 ? k.frame < best : k.frame > best);
+    if (way && nearer) best = k.frame;
+  }
+  return best;
+}
+
 int leastSureTrackedFrame(const AppState& s) {
   if (!s.video || !s.video->tracked) return -1;
   const TrackedVideo& t = *s.video->tracked;

@@ -109,6 +109,17 @@ void marking(AppState& s, const VideoSession& v) {
       break;
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("Forget the joints marked on this frame");
+  const int before = actions::neighbouringKeyframe(s, -1), after = actions::neighbouringKeyframe(s, 1);
+  switch (buttonRow({{"< Keyframe", before >= 0}, {"Keyframe >", after >= 0}})) {
+    case 0:
+      apply(s, [&] { actions::setVideoFrame(s, before); });
+      break;
+    case 1:
+      apply(s, [&] { actions::setVideoFrame(s, after); });
+      break;
+    default:
+      break;
+  }
   markingFromKeypoints(s);
   const std::string hint = std::string(v.marking ? "S: skip the joint · Enter: done · " : "") +
                            (v.zoom > 1.0 ? "wheel: zoom · right-drag: move · right double-click: whole picture"
