@@ -44,6 +44,12 @@ Eigen::MatrixXd filmWalker(const std::filesystem::path& video, Eigen::Index rows
   return writeFootage(video, frames, cameraBeside(frames, 30.0, 4500.0), 30.0);
 }
 
+// Equal element for element, NaN where the other is NaN.
+bool same(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         ((a.array() == b.array()) || (a.array().isNaN() && b.array().isNaN())).all();
+}
+
 // A filmed walker in a fresh folder (walk.avi) with the keyframe file keys.json marked on
 // `marked` from the true joints.
 struct Filmed {
@@ -297,13 +303,33 @@ TEST(VideoActions, AnEditBetweenKeyframesTracksOnlyTheFramesBetweenItsNeighbours
   ASSERT_EQ(v.tracked->keyframes.keyframes.size(), 3u);
   const JointTrack& local = v.tracked->track;
   const TrackedVideo whole = trackVideo(f.video, v.keyframes, settings, nullptr, {});
-  const auto same = [](const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
-    return a.rows() == b.rows() && ((a.array() == b.array()) || (a.array().isNaN() && b.array().isNaN())).all();
-  };
   EXPECT_TRUE(same(local.jointsPx, whole.track.jointsPx));
   EXPECT_TRUE(same(local.confidence, whole.track.confidence));
   EXPECT_TRUE(same(local.jointsPx.topRows(30), before.jointsPx.topRows(30))) << "frames 0-29 kept";
   EXPECT_FALSE(same(local.jointsPx.bottomRows(29), before.jointsPx.bottomRows(29)));
+}
+
+// With the trunk held (each pass holds it to its own keyframe), the same.
+TEST(VideoActions, AnEditBetweenKeyframesWithTheTrunkHeldTracksTheSameAsTheWholeRange) {
+  const Filmed f = filmWithKeyframes("video_actions_local_trunk", 45, {0, 20});
+  AppState s;
+  actions::openVideo(s, f.video);
+  actions::setHoldTheTrunk(s, true);
+  actions::loadKeyframes(s, f.keys);
+  actions::startTracking(s);
+  settle(s);
+  ASSERT_TRUE(s.video->tracked);
+  VideoSession& v = *s.video;
+  v.frame = 32;
+  const int wrist = index(Joint::LWrist);
+  actions::markJoint(s, Joint::LWrist, f.truthPx(32, 2 * wrist), f.truthPx(32, 2 * wrist + 1));
+  const TrackSettings settings = trackSettingsOf(v, 44);
+  ASSERT_EQ(localRetrackRange(*v.tracked, v.keyframes, settings), std::make_optional(std::make_pair(20, 44)));
+  EXPECT_TRUE(actions::letGoOfJoint(s));
+  settle(s);
+  const TrackedVideo whole = trackVideo(f.video, v.keyframes, settings, nullptr, {});
+  EXPECT_TRUE(same(v.tracked->track.jointsPx, whole.track.jointsPx));
+  EXPECT_TRUE(same(v.tracked->track.confidence, whole.track.confidence));
 }
 
 // Before a track, playback plays the video's own frames at its rate × the speed, round its end,
