@@ -156,6 +156,37 @@ TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
 
 // Issue 18's layout in clip mode (issue 13): at the teaching sizes every drawer tab holds and
 // the 2D view's caption and legend stay off the walker.
+// A clip's 2D view frames the region the walker crosses, where a walker crossing the picture
+// is small; it magnifies about a pixel as the video view does, and a new clip starts whole.
+TEST_F(GuiClip, MagnifiesTheClipView) {
+  const fs::path clip = writeClip(dir);
+  const json centre = {700.0, 500.0};
+  const json script = json::array({
+      {{"open", clip.string()}},
+      {{"set_frame", 10}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("whole.json")}},
+      {{"clip_zoom", {{"zoom", 3.0}, {"centre", centre}}}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("zoomed.json")}},
+      {{"clip_zoom", {{"zoom", 1.0}, {"centre", centre}}}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("again.json")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const json whole = state("whole.json"), zoomed = state("zoomed.json"), again = state("again.json");
+  const auto walker = [](const json& st) { return st["layout"]["overlays"]["input.walker"]; };
+  ASSERT_TRUE(walker(whole).is_array()) << whole["layout"];
+  ASSERT_TRUE(walker(zoomed).is_array()) << zoomed["layout"];
+  EXPECT_EQ(zoomed["view"]["clip_zoom"], 3.0);
+  EXPECT_NEAR(walker(zoomed)[3].get<double>(), 3.0 * walker(whole)[3].get<double>(),
+              0.05 * walker(whole)[3].get<double>())
+      << "the walker three times as tall";
+  EXPECT_EQ(walker(again), walker(whole));
+}
+
 TEST_F(GuiClip, ClipModeHoldsAtTheTeachingSizes) {
   const fs::path clip = writeClip(dir);
   for (const LayoutCell& c : teachingCells()) {

@@ -352,6 +352,7 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& c) {
   if (!newClip) return;
   dismissNotice(s);
   frameClipScene(s, *c);
+  s.view.clipZoom = 1.0;
   std::erase(s.recentPaths, c->settings.path);
   s.recentPaths.insert(s.recentPaths.begin(), c->settings.path);
   if (s.recentPaths.size() > 10) s.recentPaths.resize(10);

@@ -142,6 +142,10 @@ struct ViewState {
   // Presentation mode (F5): only the two views and the presentation bar. Never saved: every
   // run starts in the workspace.
   bool presentation = false;
+  // A keypoint clip's 2D view magnified `clipZoom` times (1: the region the walker crosses)
+  // about the image pixel (x right, y down) at its middle; a new clip starts at 1.
+  double clipZoom = 1.0;
+  double clipZoomCentreX = 0.0, clipZoomCentreY = 0.0;
 };
 
 }  // namespace ew::ui

@@ -27,7 +27,7 @@ const std::set<std::string>& knownActions() {
       "show_panel",   "export_analysis_csv", "set_analysis_metric", "set_theme", "tour",
       "drop",         "set_file_override", "reload", "export_data_summary", "export_state",
       "expect_failure", "set_model", "write_joint_mapping", "set_clip", "close_clip", "set_frame",
-      "set_engine", "video_frame", "video_zoom", "mark_joints", "start_marking", "stop_marking", "skip_joint",
+      "set_engine", "video_frame", "video_zoom", "clip_zoom", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "save_track", "mark_from_keypoints", "drag_joint", "track_video",
       "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab",
       "set_semantic", "presentation", "key", "undo", "redo"};
@@ -244,15 +244,19 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::setClipFrame(s, static_cast<int>(v));
   } else if (n == "video_frame") {
     actions::setVideoFrame(s, wholeNumber(a));
-  } else if (n == "video_zoom") {
-    // {"zoom": Z, "centre": [x, y]} (video pixels, y down; Z 1 shows the whole picture)
+  } else if (n == "video_zoom" || n == "clip_zoom") {
+    // {"zoom": Z, "centre": [x, y]} (image pixels, y down; Z 1 shows the whole picture, or the
+    // region a clip's walker crosses)
     const auto& arg = a.argument;
     if (!arg.is_object() || !arg.contains("zoom") || !arg["zoom"].is_number() || !arg.contains("centre") ||
         !arg["centre"].is_array() || arg["centre"].size() != 2 || !arg["centre"][0].is_number() ||
         !arg["centre"][1].is_number())
       throw std::invalid_argument(R"(expects {"zoom": Z, "centre": [x, y]})");
-    actions::setVideoZoom(s, arg["zoom"].get<double>(),
-                          Eigen::Vector2d(arg["centre"][0].get<double>(), arg["centre"][1].get<double>()));
+    const Eigen::Vector2d centre(arg["centre"][0].get<double>(), arg["centre"][1].get<double>());
+    if (n == "video_zoom")
+      actions::setVideoZoom(s, arg["zoom"].get<double>(), centre);
+    else
+      actions::setClipZoom(s, arg["zoom"].get<double>(), centre);
   } else if (n == "mark_joints") {
     markJoints(s, a);
   } else if (n == "start_marking") {

@@ -362,7 +362,8 @@ nlohmann::json stateJson(const AppState& s) {
         {"pitch_deg", v.camera.pitchDeg},
         {"distance_mm", v.camera.distanceMm}}},
       {"point_lights", v.overlays.pointLights},
-      {"presentation", v.presentation}};
+      {"presentation", v.presentation},
+      {"clip_zoom", v.clipZoom}};
   j["layout"] = layoutJson(s.lastFrame);
   j["undo"] = {{"steps", s.history.undoSteps()}, {"redo_steps", s.history.redoSteps()}};
   // The drawer layout (small window or large scale): the tab shown; null in the full layout.

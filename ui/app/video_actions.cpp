@@ -191,6 +191,14 @@ void setVideoZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
   v.zoomCentrePx = centrePx.cwiseMax(0.0).cwiseMin(Eigen::Vector2d(i.widthPx, i.heightPx));
 }
 
+void setClipZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
+  if (!s.clip) throw std::invalid_argument("no keypoint clip is shown");
+  if (!std::isfinite(zoom) || !centrePx.allFinite()) throw std::invalid_argument("clip zoom: not a number");
+  s.view.clipZoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
+  s.view.clipZoomCentreX = centrePx.x();
+  s.view.clipZoomCentreY = centrePx.y();
+}
+
 void setVideoFrame(AppState& s, int frame) {
   VideoSession& v = session(s);
   v.frame = std::clamp(frame, 0, std::max(v.frameCount() - 1, 0));

@@ -24,7 +24,7 @@ constexpr Shortcut kMouse[] = {
     {"double-click", "reset the camera"},
     {"the α dial (F5)", "click or drag: the camera of the 2D view, seen from above"},
     {"click (video, marking)", "place the joint asked for; drag a mark or a tracked joint to correct it"},
-    {"wheel / right-drag (video)", "magnify the picture about the cursor / move it; right double-click: whole"},
+    {"wheel / right-drag (2D view of a video or clip)", "magnify about the cursor / move; right double-click: whole"},
     {"hover a plot", "read the values at the cursor"},
 };
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/panels/clip_view.h"
 #include "ui/convert.h"
@@ -187,7 +188,7 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
   ImDrawList* dl = ImGui::GetWindowDrawList();
   const ImVec2 p1{p0.x + size.x, p0.y + size.y};
   const float pad = 10.0f * ctx.scale;
-  const ViewCaption caption = clipInputCaption(s, shown);
+  const ViewCaption caption = clipInputCaption(s, shown, true);
   const ImRect walker = clipWalkerRect(*s.clip, shown, p0, size, frame);
   const ImRect captionRect = drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle,
                                          s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), walker);
@@ -309,7 +310,11 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
 void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
   const float aspect = size.x / size.y;
   const int frame = s.clip ? clipFrameAt(*s.clip, s.view.playback.cycles) : 0;
-  const ClipImageFrame image = s.clip ? clipImageFrame(*s.clip, aspect) : ClipImageFrame{};
+  const ClipImageFrame whole = s.clip ? clipImageFrame(*s.clip, aspect) : ClipImageFrame{};
+  const ClipImageFrame image = zoomedClipFrame(
+      whole, s.view.clipZoom,
+      {static_cast<float>(s.view.clipZoomCentreX), static_cast<float>(s.view.clipZoomCentreY)});
+  if (s.clip) zoomAndPanClip(s, p0, size, image);
   const bool drawn = buildClipInputScene(s, scene, ctx.scale, frame, image);
   ctx.renderer.render(target, scene, clipInputCamera(image, aspect));
   ctx.backdrop.image(target, {p0.x, p0.y});
@@ -319,6 +324,38 @@ void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p
     drawCentredMessage(ImGui::GetWindowDrawList(), p0, size,
                        s.jobs.clip.running() ? "reading the keypoints and fitting the camera…"
                                              : "the clip could not be fitted");
+  }
+}
+
+// As the video view (zoomAndPanVideo): the wheel magnifies about the cursor, a right-drag
+// moves, a right double-click shows the region the walker crosses again.
+void InputViewPanel::zoomAndPanClip(AppState& s, ImVec2 p0, ImVec2 size, const ClipImageFrame& image) {
+  ImGui::SetCursorScreenPos(p0);
+  ImGui::InvisibleButton("##clip", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+  const ImGuiIO& io = ImGui::GetIO();
+  const float aspect = size.x / size.y;
+  // Image pixels (x right, y down) at a point of the view.
+  const auto pixelAt = [&](ImVec2 screen) {
+    const float sx = (screen.x - p0.x) / size.x, sy = (screen.y - p0.y) / size.y;
+    return glm::vec2(image.centre.x + (sx - 0.5f) * image.heightPx * aspect,
+                     -(image.centre.y + (0.5f - sy) * image.heightPx));
+  };
+  const glm::vec2 middle(image.centre.x, -image.centre.y);
+  const auto apply = [&](double zoom, glm::vec2 centre) {
+    try {
+      actions::setClipZoom(s, zoom, Eigen::Vector2d(centre.x, centre.y));
+    } catch (const std::exception& e) {
+      s.log.error(e.what());
+    }
+  };
+  const double zoom = s.view.clipZoom;
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Right)) {
+    apply(1.0, middle);
+  } else if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    const double next = std::clamp(zoom * std::pow(1.25, static_cast<double>(io.MouseWheel)), 1.0, kMaxVideoZoom);
+    apply(next, zoomMiddleKeeping(middle, pixelAt(io.MousePos), zoom, next));
+  } else if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f) && zoom > 1.0) {
+    apply(zoom, middle - glm::vec2(io.MouseDelta.x, io.MouseDelta.y) * (image.heightPx / size.y));
   }
 }
 

@@ -4,6 +4,7 @@
 // point's path over the cycle), with the reconstruction projected back and the 2D residual.
 
 #include "ui/gl/gl.h"
+#include "ui/panels/clip_view.h"
 #include "ui/panels/panel_window.h"
 #include "ui/panels/video_view.h"
 #include "ui/render/camera.h"
@@ -39,6 +40,7 @@ struct InputViewPanel {
 
   int dragJoint_ = -1;  // the keyframe joint being dragged (-1: none)
   void zoomAndPanVideo(AppState& s, ImVec2 size, glm::vec2 cursorPx);
+  void zoomAndPanClip(AppState& s, ImVec2 p0, ImVec2 size, const ClipImageFrame& image);
   VideoViewFrame videoFrame_;  // the video view's framing, as drawn (clicks map through it)
 };
 

@@ -88,12 +88,14 @@ ViewCaption walkerInputCaption(const AppState& s) {
   return {"2D input", sub, std::move(legend)};
 }
 
-ViewCaption clipInputCaption(const AppState& s, int shown) {
+ViewCaption clipInputCaption(const AppState& s, int shown, bool onScreen) {
   const ClipReconstruction& rec = s.clip->rec;
-  char sub[220];
-  std::snprintf(sub, sizeof sub, "%s · %s · frame %d / %d (%.2f s) · pixels, y down",
+  char zoom[48] = "";
+  if (onScreen && s.view.clipZoom > 1.0) std::snprintf(zoom, sizeof zoom, " · zoom %.1f×", s.view.clipZoom);
+  char sub[260];
+  std::snprintf(sub, sizeof sub, "%s · %s · frame %d / %d (%.2f s) · pixels, y down%s",
                 rec.trial.format.c_str(), rec.trial.layout->name.c_str(), shown + 1, rec.trial.frameCount,
-                shown / rec.trial.rateHz);
+                shown / rec.trial.rateHz, zoom);
   // The largest residual of this frame, named.
   int worst = -1;
   double worstPx = 0.0;

@@ -22,7 +22,7 @@ struct ViewCaption {
 ViewCaption walkerInputCaption(const AppState& s);
 // The 2D view of a keypoint clip at its frame `shown` (0-based): the largest residual of that
 // frame is named in the legend.
-ViewCaption clipInputCaption(const AppState& s, int shown);
+ViewCaption clipInputCaption(const AppState& s, int shown, bool onScreen = false);
 // The 2D view of an open video at its frame `frame` (0-based video frame); `decoding`: the
 // frame shown is still the one before; `onScreen`: the legend may say what a drag does.
 ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool onScreen);
