@@ -101,6 +101,21 @@ inline std::filesystem::path writeScript(const std::filesystem::path& dir, const
   return file;
 }
 
+// After the `opening` actions, the viewer's state into `dir` whole (whole.json), magnified by
+// `zoomAction` ("video_zoom", "clip_zoom") `zoom` times about `centre` (zoomed.json) and whole
+// again (again.json), at 1280x720.
+inline RunResult runWholeZoomedWhole(const std::filesystem::path& dir, nlohmann::json opening,
+                                     const std::string& zoomAction, double zoom, const nlohmann::json& centre) {
+  const auto state = [&](const char* name) { return nlohmann::json{{"export_state", (dir / name).string()}}; };
+  const auto zoomTo = [&](double z) { return nlohmann::json{{zoomAction, {{"zoom", z}, {"centre", centre}}}}; };
+  const nlohmann::json wait = {{"wait_frames", 2}};
+  for (const auto& a : {wait, state("whole.json"), zoomTo(zoom), wait, state("zoomed.json"), zoomTo(1.0), wait,
+                        state("again.json")})
+    opening.push_back(a);
+  const auto file = writeScript(dir, opening.dump(2));
+  return runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+}
+
 // A region of the image as fractions of its size.
 struct Region {
   double x0, y0, x1, y1;

@@ -161,20 +161,8 @@ TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
 TEST_F(GuiClip, MagnifiesTheClipView) {
   const fs::path clip = writeClip(dir);
   const json centre = {700.0, 500.0};
-  const json script = json::array({
-      {{"open", clip.string()}},
-      {{"set_frame", 10}},
-      {{"wait_frames", 2}},
-      {{"export_state", path("whole.json")}},
-      {{"clip_zoom", {{"zoom", 3.0}, {"centre", centre}}}},
-      {{"wait_frames", 2}},
-      {{"export_state", path("zoomed.json")}},
-      {{"clip_zoom", {{"zoom", 1.0}, {"centre", centre}}}},
-      {{"wait_frames", 2}},
-      {{"export_state", path("again.json")}},
-  });
-  const auto file = writeScript(dir, script.dump(2));
-  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  const RunResult r = runWholeZoomedWhole(dir, json::array({{{"open", clip.string()}}, {{"set_frame", 10}}}),
+                                          "clip_zoom", 3.0, centre);
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   const json whole = state("whole.json"), zoomed = state("zoomed.json"), again = state("again.json");
   const auto walker = [](const json& st) { return st["layout"]["overlays"]["input.walker"]; };

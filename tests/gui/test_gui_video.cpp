@@ -138,19 +138,8 @@ TEST_F(GuiVideo, MagnifiesThePictureToMarkTheWalker) {
   const Footage f = writeWalkingFootage(dir);
   const int pelvis = index(Joint::Pelvis);
   const json centre = {f.truthPx(0, 2 * pelvis), f.truthPx(0, 2 * pelvis + 1)};
-  const json script = json::array({
-      {{"open", f.video.string()}},
-      {{"wait_frames", 2}},
-      {{"export_state", path("whole.json")}},
-      {{"video_zoom", {{"zoom", 4.0}, {"centre", centre}}}},
-      {{"wait_frames", 2}},
-      {{"export_state", path("zoomed.json")}},
-      {{"video_zoom", {{"zoom", 1.0}, {"centre", centre}}}},
-      {{"wait_frames", 2}},
-      {{"export_state", path("again.json")}},
-  });
-  const auto file = writeScript(dir, script.dump(2));
-  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(file.string()));
+  const RunResult r =
+      runWholeZoomedWhole(dir, json::array({{{"open", f.video.string()}}}), "video_zoom", 4.0, centre);
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   const json whole = state("whole.json"), zoomed = state("zoomed.json"), again = state("again.json");
   EXPECT_EQ(zoomed["video"]["zoom"], 4.0);

@@ -327,35 +327,23 @@ void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p
   }
 }
 
-// As the video view (zoomAndPanVideo): the wheel magnifies about the cursor, a right-drag
-// moves, a right double-click shows the region the walker crosses again.
+// The magnifier (magnifierInput) over the clip, as over a video.
 void InputViewPanel::zoomAndPanClip(AppState& s, ImVec2 p0, ImVec2 size, const ClipImageFrame& image) {
   ImGui::SetCursorScreenPos(p0);
   ImGui::InvisibleButton("##clip", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
-  const ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 m = ImGui::GetIO().MousePos;
   const float aspect = size.x / size.y;
-  // Image pixels (x right, y down) at a point of the view.
-  const auto pixelAt = [&](ImVec2 screen) {
-    const float sx = (screen.x - p0.x) / size.x, sy = (screen.y - p0.y) / size.y;
-    return glm::vec2(image.centre.x + (sx - 0.5f) * image.heightPx * aspect,
-                     -(image.centre.y + (0.5f - sy) * image.heightPx));
-  };
-  const glm::vec2 middle(image.centre.x, -image.centre.y);
-  const auto apply = [&](double zoom, glm::vec2 centre) {
-    try {
-      actions::setClipZoom(s, zoom, Eigen::Vector2d(centre.x, centre.y));
-    } catch (const std::exception& e) {
-      s.log.error(e.what());
-    }
-  };
-  const double zoom = s.view.clipZoom;
-  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Right)) {
-    apply(1.0, middle);
-  } else if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
-    const double next = std::clamp(zoom * std::pow(1.25, static_cast<double>(io.MouseWheel)), 1.0, kMaxVideoZoom);
-    apply(next, zoomMiddleKeeping(middle, pixelAt(io.MousePos), zoom, next));
-  } else if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f) && zoom > 1.0) {
-    apply(zoom, middle - glm::vec2(io.MouseDelta.x, io.MouseDelta.y) * (image.heightPx / size.y));
+  const float sx = (m.x - p0.x) / size.x, sy = (m.y - p0.y) / size.y;
+  // Image pixels run x right, y down; the scene's y runs up.
+  const glm::vec2 cursorPx(image.centre.x + (sx - 0.5f) * image.heightPx * aspect,
+                           -(image.centre.y + (0.5f - sy) * image.heightPx));
+  const auto change = magnifierInput(s.view.clipZoom, glm::vec2(image.centre.x, -image.centre.y), cursorPx,
+                                     image.heightPx / size.y);
+  if (!change) return;
+  try {
+    actions::setClipZoom(s, change->zoom, Eigen::Vector2d(change->middlePx.x, change->middlePx.y));
+  } catch (const std::exception& e) {
+    s.log.error(e.what());
   }
 }
 

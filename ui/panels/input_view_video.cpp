@@ -189,27 +189,15 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
   s.lastFrame.overlay("input.footage", toPanelRect(footage));
 }
 
-// The wheel magnifies about the pixel under the cursor (it stays there), a right-drag moves
-// the picture, a right double-click shows it whole again.
+// The magnifier (magnifierInput) over the video.
 void InputViewPanel::zoomAndPanVideo(AppState& s, ImVec2 size, glm::vec2 cursorPx) {
-  const VideoSession& v = *s.video;
-  const ImGuiIO& io = ImGui::GetIO();
-  const glm::vec2 middle = videoViewMiddle(videoFrame_);
-  const auto apply = [&](double zoom, glm::vec2 centre) {
-    try {
-      actions::setVideoZoom(s, zoom, Eigen::Vector2d(centre.x, centre.y));
-    } catch (const std::exception& e) {
-      s.log.error(e.what());
-    }
-  };
-  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Right)) {
-    apply(1.0, middle);
-  } else if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
-    const double zoom = std::clamp(v.zoom * std::pow(1.25, static_cast<double>(io.MouseWheel)), 1.0, kMaxVideoZoom);
-    apply(zoom, zoomMiddleKeeping(middle, cursorPx, v.zoom, zoom));
-  } else if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f) && v.zoom > 1.0) {
-    const float pxPerScreen = videoFrame_.heightPx / size.y;
-    apply(v.zoom, middle - glm::vec2(io.MouseDelta.x, io.MouseDelta.y) * pxPerScreen);
+  const auto change =
+      magnifierInput(s.video->zoom, videoViewMiddle(videoFrame_), cursorPx, videoFrame_.heightPx / size.y);
+  if (!change) return;
+  try {
+    actions::setVideoZoom(s, change->zoom, Eigen::Vector2d(change->middlePx.x, change->middlePx.y));
+  } catch (const std::exception& e) {
+    s.log.error(e.what());
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <imgui.h>
 #include <opencv2/core.hpp>
 
 #include "ui/app/actions.h"
@@ -92,6 +93,20 @@ glm::vec2 videoViewMiddle(const VideoViewFrame& view) { return {view.centre.x, -
 
 glm::vec2 zoomMiddleKeeping(glm::vec2 middlePx, glm::vec2 cursorPx, double zoomBefore, double zoomAfter) {
   return cursorPx + (middlePx - cursorPx) * static_cast<float>(zoomBefore / zoomAfter);
+}
+
+std::optional<Magnification> magnifierInput(double zoom, glm::vec2 middlePx, glm::vec2 cursorPx,
+                                            float pxPerScreenPx) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Right))
+    return Magnification{1.0, middlePx};
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0.0f) {
+    const double next = std::clamp(zoom * std::pow(1.25, static_cast<double>(io.MouseWheel)), 1.0, kMaxVideoZoom);
+    return Magnification{next, zoomMiddleKeeping(middlePx, cursorPx, zoom, next)};
+  }
+  if (ImGui::IsItemActive() && ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0.0f) && zoom > 1.0)
+    return Magnification{zoom, middlePx - glm::vec2(io.MouseDelta.x, io.MouseDelta.y) * pxPerScreenPx};
+  return std::nullopt;
 }
 
 bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,

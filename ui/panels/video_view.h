@@ -6,6 +6,7 @@
 // be dragged to correct it.
 
 #include <glm/vec2.hpp>
+#include <optional>
 
 #include "ui/render/scene.h"
 
@@ -36,6 +37,16 @@ glm::vec2 videoViewMiddle(const VideoViewFrame& view);
 // The middle a view magnified from `zoomBefore` to `zoomAfter` needs for the video pixel
 // `cursorPx` to stay where it was on screen (the wheel zooms about the cursor).
 glm::vec2 zoomMiddleKeeping(glm::vec2 middlePx, glm::vec2 cursorPx, double zoomBefore, double zoomAfter);
+
+// The mouse over a 2D view of pictures as a magnifier (ImGui's last item, which takes the right
+// button too): the wheel zooms about the cursor, a right-drag moves a magnified view, a right
+// double-click shows it whole. The new zoom and middle pixel, when the mouse asks for one.
+struct Magnification {
+  double zoom = 1.0;
+  glm::vec2 middlePx{0.0f};
+};
+std::optional<Magnification> magnifierInput(double zoom, glm::vec2 middlePx, glm::vec2 cursorPx,
+                                            float pxPerScreenPx);
 
 // Builds the scene for video frame `frame` whose pixels are `bgrMat` (a cv::Mat; null: no
 // picture yet); `videoPxPerScreenPx` sizes the marks on screen. Returns false when no video
