@@ -24,6 +24,7 @@
 #include "core/keypoints/keypoint_trial.h"
 #include "core/tracking/keyframes.h"
 #include "core/tracking/track_compare.h"
+#include "core/tracking/track_confidence.h"
 #include "video/joint_tracker.h"
 #include "video/model_loop.h"
 #include "video/track_files.h"
@@ -181,12 +182,24 @@ int runTrack(const TrackArgs& a) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   writeTrackFiles(a.out, track);
   const auto frames = track.jointsPx.rows();
+  std::vector<int> keyframeFrames;
+  for (const Keyframe& k : keys.keyframes) keyframeFrames.push_back(k.frame);
+  const std::vector<int> leastSure = leastSureFrames(track.confidence, track.firstFrame, keyframeFrames, 5,
+                                                     std::max(1, static_cast<int>(frames) / 20));
   std::cout << "tracked " << frames << " frames (" << track.firstFrame << "-"
             << track.firstFrame + frames - 1 << ") of " << info.file << " (" << info.widthPx << "x"
             << info.heightPx << ", " << info.fps << " fps) from " << keys.keyframes.size()
             << " keyframe(s) by the " << trackerName(o.kind) << " tracker in " << std::fixed
             << std::setprecision(2) << seconds << " s (" << std::setprecision(1)
             << static_cast<double>(frames) / std::max(seconds, 1e-9) << " frames/s)\n";
+  json leastSureJson = json::array();
+  if (!leastSure.empty()) std::cout << "least sure frames (mean confidence; where to mark again):";
+  for (const int f : leastSure) {
+    const double c = track.confidence.row(f - track.firstFrame).mean();
+    std::cout << " " << f << " (" << std::setprecision(2) << c << ")";
+    leastSureJson.push_back({{"frame", f}, {"mean_confidence", c}});
+  }
+  if (!leastSure.empty()) std::cout << std::setprecision(1) << "\n";
   json report = {{"video", info.file},
                  {"tracker", trackerName(o.kind)},
                  {"background", track.background},
@@ -198,7 +211,8 @@ int runTrack(const TrackArgs& a) {
                  {"frames", frames},
                  {"keyframes", keys.keyframes.size()},
                  {"seconds", seconds},
-                 {"mean_confidence", track.confidence.mean()}};
+                 {"mean_confidence", track.confidence.mean()},
+                 {"least_sure_frames", leastSureJson}};
   if (a.modelLoop > 0) report["model_loop"] = modelLoopJson(looped, a.modelLoop);
   std::optional<Eigen::MatrixXd> referencePx;
   if (!a.compare.empty()) {

@@ -9,6 +9,7 @@
 #include "core/common/nan.h"
 #include "core/tracking/keyframes.h"
 #include "core/tracking/track_compare.h"
+#include "core/tracking/track_confidence.h"
 #include "tests/common/error_matchers.h"
 #include "tests/common/test_support.h"
 
@@ -137,6 +138,21 @@ TEST(TrackCompare, DistancesPerJointOverTheFramesBothHave) {
   EXPECT_DOUBLE_EQ(tight.shareWithinAll, 73.0 / 74.0);
   const TrackDistance tighter = compareTracks(track, 5, reference, allJoints(), 2.0);
   EXPECT_DOUBLE_EQ(tighter.shareWithin[index(Joint::RKnee)], 0.0);
+}
+
+// The least sure frames: lowest mean confidence first, no keyframe, each `apart` from the
+// ones chosen before it; fewer when the track has fewer.
+TEST(TrackConfidence, LeastSureFramesAreTheWeakestApartAndNoKeyframe) {
+  Eigen::MatrixXd confidence = Eigen::MatrixXd::Constant(20, kJointCount, 0.9);
+  confidence.row(3).setConstant(0.1);   // frame 13 (the track starts at frame 10)
+  confidence.row(4).setConstant(0.15);  // frame 14: next to 13
+  confidence.row(12).setConstant(0.2);  // frame 22
+  confidence.row(0).setConstant(0.05);  // frame 10: a keyframe
+  confidence(8, 0) = 0.0;               // frame 18: one joint lost, the mean hardly lower
+  EXPECT_EQ(leastSureFrames(confidence, 10, {10}, 3, 3), (std::vector<int>{13, 22, 18}));
+  EXPECT_EQ(leastSureFrames(confidence, 10, {10}, 2, 1), (std::vector<int>{13, 14}));
+  EXPECT_EQ(leastSureFrames(confidence, 10, {}, 1, 1), (std::vector<int>{10}));
+  EXPECT_EQ(leastSureFrames(confidence.topRows(1), 10, {10}, 3, 1), std::vector<int>{});
 }
 
 }  // namespace

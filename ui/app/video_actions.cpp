@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/common/errors.h"
+#include "core/tracking/track_confidence.h"
 #include "ui/app/actions.h"
 #include "ui/app/video_poll.h"
 #include "video/track_files.h"
@@ -165,17 +166,11 @@ int neighbouringKeyframe(const AppState& s, int delta) {
 
 int leastSureTrackedFrame(const AppState& s) {
   if (!s.video || !s.video->tracked) return -1;
-  const TrackedVideo& t = *s.video->tracked;
-  int least = -1;
-  double lowest = std::numeric_limits<double>::infinity();
-  for (Eigen::Index r = 0; r < t.track.confidence.rows(); ++r) {
-    const int frame = t.track.firstFrame + static_cast<int>(r);
-    const double mean = t.track.confidence.row(r).mean();
-    if (s.video->keyframeAt(frame) || !(mean < lowest)) continue;
-    lowest = mean;
-    least = frame;
-  }
-  return least;
+  const JointTrack& t = s.video->tracked->track;
+  std::vector<int> keyframes;
+  for (const Keyframe& k : s.video->keyframes.keyframes) keyframes.push_back(k.frame);
+  const std::vector<int> least = leastSureFrames(t.confidence, t.firstFrame, keyframes, 1, 1);
+  return least.empty() ? -1 : least.front();
 }
 
 std::filesystem::path defaultTrackFolder(const AppState& s) {
