@@ -184,7 +184,8 @@ int runTrack(const TrackArgs& a) {
   const auto frames = track.jointsPx.rows();
   std::vector<int> keyframeFrames;
   for (const Keyframe& k : keys.keyframes) keyframeFrames.push_back(k.frame);
-  const std::vector<int> leastSure = leastSureFrames(track.confidence, track.firstFrame, keyframeFrames, 5,
+  const Eigen::VectorXd meanConfidence = track.confidence.rowwise().mean();
+  const std::vector<int> leastSure = leastSureFrames(meanConfidence, track.firstFrame, keyframeFrames, 5,
                                                      std::max(1, static_cast<int>(frames) / 20));
   std::cout << "tracked " << frames << " frames (" << track.firstFrame << "-"
             << track.firstFrame + frames - 1 << ") of " << info.file << " (" << info.widthPx << "x"
@@ -195,7 +196,7 @@ int runTrack(const TrackArgs& a) {
   json leastSureJson = json::array();
   if (!leastSure.empty()) std::cout << "least sure frames (mean confidence; where to mark again):";
   for (const int f : leastSure) {
-    const double c = track.confidence.row(f - track.firstFrame).mean();
+    const double c = meanConfidence(f - track.firstFrame);
     std::cout << " " << f << " (" << std::setprecision(2) << c << ")";
     leastSureJson.push_back({{"frame", f}, {"mean_confidence", c}});
   }

@@ -2,23 +2,27 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <numeric>
+#include <limits>
 
 namespace ew {
 
-std::vector<int> leastSureFrames(const Eigen::Ref<const Eigen::MatrixXd>& confidence, int firstFrame,
-                                 const std::vector<int>& keyframes, int count, int apart) {
-  const Eigen::VectorXd means = confidence.rowwise().mean();
-  std::vector<Eigen::Index> rows(static_cast<std::size_t>(means.size()));
-  std::iota(rows.begin(), rows.end(), Eigen::Index{0});
-  std::stable_sort(rows.begin(), rows.end(), [&](Eigen::Index a, Eigen::Index b) { return means(a) < means(b); });
+std::vector<int> leastSureFrames(const Eigen::Ref<const Eigen::VectorXd>& meanConfidence, int firstFrame,
+                                 std::vector<int> keyframes, int count, int apart) {
+  std::sort(keyframes.begin(), keyframes.end());
   std::vector<int> chosen;
-  for (const Eigen::Index row : rows) {
-    if (static_cast<int>(chosen.size()) >= count) break;
-    const int frame = firstFrame + static_cast<int>(row);
-    if (std::find(keyframes.begin(), keyframes.end(), frame) != keyframes.end()) continue;
-    const bool near = std::any_of(chosen.begin(), chosen.end(), [&](int f) { return std::abs(f - frame) < apart; });
-    if (!near) chosen.push_back(frame);
+  const auto eligible = [&](int frame) {
+    return !std::binary_search(keyframes.begin(), keyframes.end(), frame) &&
+           std::none_of(chosen.begin(), chosen.end(), [&](int f) { return std::abs(f - frame) < apart; });
+  };
+  while (static_cast<int>(chosen.size()) < count) {
+    int least = -1;
+    double lowest = std::numeric_limits<double>::infinity();
+    for (Eigen::Index row = 0; row < meanConfidence.size(); ++row) {
+      const int frame = firstFrame + static_cast<int>(row);
+      if (meanConfidence(row) < lowest && eligible(frame)) least = frame, lowest = meanConfidence(row);
+    }
+    if (least < 0) break;
+    chosen.push_back(least);
   }
   return chosen;
 }

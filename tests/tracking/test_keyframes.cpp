@@ -149,10 +149,11 @@ TEST(TrackConfidence, LeastSureFramesAreTheWeakestApartAndNoKeyframe) {
   confidence.row(12).setConstant(0.2);  // frame 22
   confidence.row(0).setConstant(0.05);  // frame 10: a keyframe
   confidence(8, 0) = 0.0;               // frame 18: one joint lost, the mean hardly lower
-  EXPECT_EQ(leastSureFrames(confidence, 10, {10}, 3, 3), (std::vector<int>{13, 22, 18}));
-  EXPECT_EQ(leastSureFrames(confidence, 10, {10}, 2, 1), (std::vector<int>{13, 14}));
-  EXPECT_EQ(leastSureFrames(confidence, 10, {}, 1, 1), (std::vector<int>{10}));
-  EXPECT_EQ(leastSureFrames(confidence.topRows(1), 10, {10}, 3, 1), std::vector<int>{});
+  const Eigen::VectorXd means = confidence.rowwise().mean();
+  EXPECT_EQ(leastSureFrames(means, 10, {10}, 3, 3), (std::vector<int>{13, 22, 18}));
+  EXPECT_EQ(leastSureFrames(means, 10, {10}, 2, 1), (std::vector<int>{13, 14}));
+  EXPECT_EQ(leastSureFrames(means, 10, {}, 1, 1), (std::vector<int>{10}));
+  EXPECT_EQ(leastSureFrames(means.head(1), 10, {10}, 3, 1), std::vector<int>{});
 }
 
 }  // namespace

@@ -232,6 +232,9 @@ TEST(VideoActions, TheTrackIsSavedAsTheCommandLineSavesIt) {
   ASSERT_EQ(savedKeys.keyframes.size(), 2u);
   EXPECT_EQ(savedKeys.keyframes[1].frame, 20);
   EXPECT_EQ(savedKeys.video, "walk.avi");
+  // The marks alone, under the same name, into a folder made for them.
+  actions::saveKeyframesInto(s, f.dir / "marks" / "only");
+  EXPECT_EQ(readKeyframes(f.dir / "marks" / "only" / "walk_keyframes.json").keyframes.size(), 2u);
 }
 
 // The least sure frame is the tracked frame, not a keyframe, of lowest mean confidence; a

@@ -13,14 +13,14 @@ constexpr float kAspect = 1.6f;
 
 TEST(VideoView, ZoomOneIsTheWholePicture) {
   const VideoViewFrame whole = videoViewFrame(1768, 994, kAspect);
-  const VideoViewFrame same = zoomedVideoFrame(whole, 1.0, {100.0f, 100.0f});
+  const VideoViewFrame same = zoomedFrame(whole, 1.0, {100.0f, 100.0f});
   EXPECT_EQ(same.heightPx, whole.heightPx);
   EXPECT_EQ(same.centre, whole.centre);
 }
 
 TEST(VideoView, AZoomedViewHasItsPixelAtTheMiddleMagnified) {
   const VideoViewFrame whole = videoViewFrame(1768, 994, kAspect);
-  const VideoViewFrame zoomed = zoomedVideoFrame(whole, 4.0, {817.0f, 747.0f});
+  const VideoViewFrame zoomed = zoomedFrame(whole, 4.0, {817.0f, 747.0f});
   const glm::vec2 middle = zoomed.toVideoPx({0.5f, 0.5f}, kAspect);
   EXPECT_NEAR(middle.x, 817.0f, 1e-3f);
   EXPECT_NEAR(middle.y, 747.0f, 1e-3f);
@@ -39,7 +39,7 @@ TEST(VideoView, TheWheelZoomsAboutThePixelUnderTheCursor) {
   for (double next : {1.25, 2.0, 7.5, 3.0}) {
     const glm::vec2 under = view.toVideoPx(cursorShare, kAspect);
     const glm::vec2 middle = zoomMiddleKeeping(videoViewMiddle(view), under, zoom, next);
-    view = zoomedVideoFrame(whole, next, middle);
+    view = zoomedFrame(whole, next, middle);
     zoom = next;
     const glm::vec2 after = view.toVideoPx(cursorShare, kAspect);
     EXPECT_NEAR(after.x, under.x, 1e-2f) << "zoom " << next;

@@ -180,6 +180,9 @@ void openVideo(AppState& s, const std::filesystem::path& path);
 // edit: undo takes it back). Throws when no video is open or the file is bad.
 void loadKeyframes(AppState& s, const std::filesystem::path& path);
 void saveKeyframes(AppState& s, const std::filesystem::path& path);
+// The open video's keyframes into `dir` (made when missing) as <video name>_keyframes.json,
+// the name saveTrack gives them beside a track.
+void saveKeyframesInto(AppState& s, const std::filesystem::path& dir);
 // The open video's last track into `dir` (video/track_files.h: OpenPose JSON, the 2D CSV, the
 // confidences) with the keyframes it was tracked from beside them (DIR/<video>_keyframes.json).
 // Throws when there is no track or a file cannot be written.

@@ -25,6 +25,27 @@ TrackSettings trackSettingsOf(const VideoSession& v, int last) {
           v.flattenBackground, v.holdTheTrunk, v.modelLoopRounds};
 }
 
+namespace {
+
+// What the viewer reads off a track, made once when it is tracked: the fit's trial and each
+// frame's mean confidence.
+TrackerOptions trackerOptionsFor(const TrackSettings& settings) {
+  TrackerOptions o;
+  o.kind = settings.tracker;
+  o.firstFrame = settings.first;
+  o.lastFrame = settings.last;
+  o.flattenStaticBackground = settings.flattenBackground;
+  o.holdTheTrunk = settings.tracker == TrackerKind::OpticalFlow && settings.holdTheTrunk;
+  return o;
+}
+
+void deriveFromTrack(TrackedVideo& t) {
+  t.trial = std::make_shared<const KeypointTrial>(keypointTrialOf(t.track, t.video.string()));
+  t.meanConfidence = t.track.confidence.rowwise().mean();
+}
+
+}  // namespace
+
 TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes,
                         const TrackSettings& settings,
                         std::shared_ptr<const EigenwalkerModel> model,
@@ -32,12 +53,7 @@ TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& key
   const auto start = std::chrono::steady_clock::now();
   VideoSource source(video);
   const bool flow = settings.tracker == TrackerKind::OpticalFlow;
-  TrackerOptions o;
-  o.kind = settings.tracker;
-  o.firstFrame = settings.first;
-  o.lastFrame = settings.last;
-  o.flattenStaticBackground = settings.flattenBackground;
-  o.holdTheTrunk = flow && settings.holdTheTrunk;
+  const TrackerOptions o = trackerOptionsFor(settings);
   TrackedVideo t;
   t.video = video;
   t.keyframes = keyframes;
@@ -54,7 +70,7 @@ TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& key
   } else {
     t.track = trackJoints(source, keyframes, o, progress);
   }
-  t.trial = std::make_shared<const KeypointTrial>(keypointTrialOf(t.track, video.string()));
+  deriveFromTrack(t);
   t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   t.ranFirst = t.track.firstFrame;
   t.ranLast = t.lastFrame();
@@ -70,27 +86,27 @@ bool sameMarks(const Keyframe& a, const Keyframe& b) {
   return a.frame == b.frame && same.all();
 }
 
-const Keyframe* keyframeOn(const Keyframes& k, int frame) {
-  for (const Keyframe& key : k.keyframes)
-    if (key.frame == frame) return &key;
-  return nullptr;
-}
-
-// The frames whose keyframe was added, removed or moved a mark.
+// The frames whose keyframe was added, removed or moved a mark, in order: one walk down both
+// lists (Keyframes keep increasing frame numbers), as the panel asks every drawn frame.
 std::vector<int> editedFrames(const Keyframes& before, const Keyframes& after) {
   std::vector<int> edited;
-  for (const Keyframes* k : {&before, &after})
-    for (const Keyframe& key : k->keyframes) {
-      const Keyframe* a = keyframeOn(before, key.frame);
-      const Keyframe* b = keyframeOn(after, key.frame);
-      if (!a || !b || !sameMarks(*a, *b)) edited.push_back(key.frame);
+  auto a = before.keyframes.begin(), b = after.keyframes.begin();
+  while (a != before.keyframes.end() || b != after.keyframes.end()) {
+    if (b == after.keyframes.end() || (a != before.keyframes.end() && a->frame < b->frame)) {
+      edited.push_back((a++)->frame);
+    } else if (a == before.keyframes.end() || b->frame < a->frame) {
+      edited.push_back((b++)->frame);
+    } else {
+      if (!sameMarks(*a, *b)) edited.push_back(a->frame);
+      ++a, ++b;
     }
-  std::sort(edited.begin(), edited.end());
-  edited.erase(std::unique(edited.begin(), edited.end()), edited.end());
+  }
   return edited;
 }
 
 }  // namespace
+
+bool sameKeyframes(const Keyframes& a, const Keyframes& b) { return editedFrames(a, b).empty(); }
 
 std::optional<std::pair<int, int>> localRetrackRange(const TrackedVideo& previous,
                                                      const Keyframes& keyframes,
@@ -117,17 +133,19 @@ std::optional<std::pair<int, int>> localRetrackRange(const TrackedVideo& previou
 
 TrackedVideo trackAgainBetween(const TrackedVideo& previous, const Keyframes& keyframes, int first,
                                int last, const std::function<bool(double)>& progress) {
-  TrackSettings settings{first, last, previous.tracker, previous.flattenBackground, previous.holdTheTrunk, 0};
-  const TrackedVideo part = trackVideo(previous.video, keyframes, settings, nullptr, progress);
+  const auto start = std::chrono::steady_clock::now();
+  VideoSource source(previous.video);
+  const TrackSettings settings{first, last, previous.tracker, previous.flattenBackground, previous.holdTheTrunk, 0};
+  const JointTrack part = trackJoints(source, keyframes, trackerOptionsFor(settings), progress);
   TrackedVideo t = previous;
   t.keyframes = keyframes;
-  t.seconds = part.seconds;
+  const Eigen::Index row = first - previous.track.firstFrame, rows = last - first + 1;
+  t.track.jointsPx.middleRows(row, rows) = part.jointsPx;
+  t.track.confidence.middleRows(row, rows) = part.confidence;
+  deriveFromTrack(t);
+  t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   t.ranFirst = first;
   t.ranLast = last;
-  const Eigen::Index row = first - previous.track.firstFrame, rows = last - first + 1;
-  t.track.jointsPx.middleRows(row, rows) = part.track.jointsPx;
-  t.track.confidence.middleRows(row, rows) = part.track.confidence;
-  t.trial = std::make_shared<const KeypointTrial>(keypointTrialOf(t.track, previous.video.string()));
   return t;
 }
 

@@ -34,6 +34,7 @@ struct TrackedVideo {
   std::string loopStopped;                 // why the loop stopped early ("" when it did not)
   JointTrack track;
   std::shared_ptr<const KeypointTrial> trial;  // the track's confident points (trialFromJoints)
+  Eigen::VectorXd meanConfidence;              // a frame's mean over the joints (the panel's strip)
   double seconds = 0.0;
   // The frames the last run tracked (trackAgainBetween's part; the whole range otherwise).
   int ranFirst = 0, ranLast = -1;
@@ -99,6 +100,9 @@ TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& key
                         const TrackSettings& settings,
                         std::shared_ptr<const EigenwalkerModel> model,
                         const std::function<bool(double)>& progress);
+
+// The same frames marked, each joint at the same place (or unmarked on both).
+bool sameKeyframes(const Keyframes& a, const Keyframes& b);
 
 // The frames a new track would change when `keyframes` replace the ones `previous` was
 // tracked from, with the same settings: from the unchanged keyframe before the first edited

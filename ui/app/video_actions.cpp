@@ -137,6 +137,13 @@ std::filesystem::path keyframeFileIn(const std::filesystem::path& dir, const Vid
 
 }  // namespace
 
+void saveKeyframesInto(AppState& s, const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::invalid_argument(dir.string() + ": cannot create the folder: " + ec.message());
+  saveKeyframes(s, keyframeFileIn(dir, session(s)));
+}
+
 void saveTrack(AppState& s, const std::filesystem::path& dir) {
   const VideoSession& v = session(s);
   if (!v.tracked) throw std::invalid_argument("no track yet: mark the joints, then Track");
@@ -166,10 +173,10 @@ int neighbouringKeyframe(const AppState& s, int delta) {
 
 int leastSureTrackedFrame(const AppState& s) {
   if (!s.video || !s.video->tracked) return -1;
-  const JointTrack& t = s.video->tracked->track;
+  const TrackedVideo& t = *s.video->tracked;
   std::vector<int> keyframes;
   for (const Keyframe& k : s.video->keyframes.keyframes) keyframes.push_back(k.frame);
-  const std::vector<int> least = leastSureFrames(t.confidence, t.firstFrame, keyframes, 1, 1);
+  const std::vector<int> least = leastSureFrames(t.meanConfidence, t.track.firstFrame, keyframes, 1, 1);
   return least.empty() ? -1 : least.front();
 }
 

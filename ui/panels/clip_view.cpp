@@ -175,14 +175,6 @@ ClipImageFrame clipImageFrame(const ClipResult& clip, float aspect) {
   return frame;
 }
 
-ClipImageFrame zoomedClipFrame(const ClipImageFrame& whole, double zoom, glm::vec2 centrePx) {
-  if (!(zoom > 1.0)) return whole;
-  ClipImageFrame f;
-  f.heightPx = whole.heightPx / static_cast<float>(zoom);
-  f.centre = scenePoint(centrePx.x, centrePx.y);
-  return f;
-}
-
 CameraMatrices clipInputCamera(const ClipImageFrame& frame, float aspect) {
   return imageCamera(aspect, frame.centre, frame.heightPx);
 }

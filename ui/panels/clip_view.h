@@ -22,9 +22,6 @@ struct ClipImageFrame {
   float heightPx = 1.0f;
 };
 ClipImageFrame clipImageFrame(const ClipResult& clip, float aspect);
-// `whole` magnified `zoom` times (≥ 1) with the image pixel `centrePx` (x right, y down) at its
-// middle; `whole` itself at zoom 1.
-ClipImageFrame zoomedClipFrame(const ClipImageFrame& whole, double zoom, glm::vec2 centrePx);
 CameraMatrices clipInputCamera(const ClipImageFrame& frame, float aspect);
 
 // The people in `frame` besides the one fitted: their track number (1-based, as the person

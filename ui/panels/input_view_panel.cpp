@@ -311,7 +311,7 @@ void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p
   const float aspect = size.x / size.y;
   const int frame = s.clip ? clipFrameAt(*s.clip, s.view.playback.cycles) : 0;
   const ClipImageFrame whole = s.clip ? clipImageFrame(*s.clip, aspect) : ClipImageFrame{};
-  const ClipImageFrame image = zoomedClipFrame(
+  const ClipImageFrame image = zoomedFrame(
       whole, s.view.clipZoom,
       {static_cast<float>(s.view.clipZoomCentreX), static_cast<float>(s.view.clipZoomCentreY)});
   if (s.clip) zoomAndPanClip(s, p0, size, image);
@@ -331,14 +331,11 @@ void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p
 void InputViewPanel::zoomAndPanClip(AppState& s, ImVec2 p0, ImVec2 size, const ClipImageFrame& image) {
   ImGui::SetCursorScreenPos(p0);
   ImGui::InvisibleButton("##clip", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+  // The clip's framing is an image-plane frame as the video's is: the same mapping.
+  const VideoViewFrame view{image.centre, image.heightPx};
   const ImVec2 m = ImGui::GetIO().MousePos;
-  const float aspect = size.x / size.y;
-  const float sx = (m.x - p0.x) / size.x, sy = (m.y - p0.y) / size.y;
-  // Image pixels run x right, y down; the scene's y runs up.
-  const glm::vec2 cursorPx(image.centre.x + (sx - 0.5f) * image.heightPx * aspect,
-                           -(image.centre.y + (0.5f - sy) * image.heightPx));
-  const auto change = magnifierInput(s.view.clipZoom, glm::vec2(image.centre.x, -image.centre.y), cursorPx,
-                                     image.heightPx / size.y);
+  const glm::vec2 cursorPx = view.toVideoPx({(m.x - p0.x) / size.x, (m.y - p0.y) / size.y}, size.x / size.y);
+  const auto change = magnifierInput(s.view.clipZoom, videoViewMiddle(view), cursorPx, image.heightPx / size.y);
   if (!change) return;
   try {
     actions::setClipZoom(s, change->zoom, Eigen::Vector2d(change->middlePx.x, change->middlePx.y));

@@ -152,7 +152,7 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
   const VideoInfo& info = v.frames->info();
   const ViewCaption caption = videoInputCaption(s, frame, v.shownIndex != frame, true);
   const VideoFraming framing = videoFraming(caption, info, size, ctx.scale, s.fonts.large);
-  videoFrame_ = zoomedVideoFrame(framing.view, v.zoom,
+  videoFrame_ = zoomedFrame(framing.view, v.zoom,
                                  {static_cast<float>(v.zoomCentrePx.x()), static_cast<float>(v.zoomCentrePx.y())});
   const VideoViewFrame& view = videoFrame_;
   handleVideoMouse(s, ctx, p0, size, frame);

@@ -227,7 +227,7 @@ void confidenceStrip(AppState& s, const VideoSession& v, float scale) {
   // A long track is drawn a point per pixel column, each its frames' lowest mean: a dip of one
   // frame in a ten-minute clip still shows.
   const int points = std::clamp(static_cast<int>(w), 2, n);
-  const Eigen::VectorXd means = t.track.confidence.rowwise().mean();
+  const Eigen::VectorXd& means = t.meanConfidence;
   const auto column = [&](int c) {
     const int from = static_cast<int>(static_cast<long long>(c) * n / points);
     const int to = std::max(from + 1, static_cast<int>(static_cast<long long>(c + 1) * n / points));
@@ -255,7 +255,7 @@ void confidenceStrip(AppState& s, const VideoSession& v, float scale) {
     Eigen::Index weakest = 0;
     t.track.confidence.row(r).minCoeff(&weakest);
     ImGui::SetTooltip("frame %d: mean confidence %.2f, least sure %s (%.2f)\nclick or drag: go to the frame",
-                      under, t.track.confidence.row(r).mean(), std::string(kJointNames[weakest]).c_str(),
+                      under, means(r), std::string(kJointNames[weakest]).c_str(),
                       t.track.confidence(r, weakest));
   }
 }
@@ -291,19 +291,11 @@ void tracking(AppState& s, const VideoSession& v, float scale) {
   modelLoopChoice(s, v);
   const bool stale =
       v.tracked &&
-      (v.tracked->keyframes.keyframes.size() != v.keyframes.keyframes.size() ||
-       v.tracked->tracker != v.tracker || v.tracked->flattenBackground != v.flattenBackground ||
+      (v.tracked->tracker != v.tracker || v.tracked->flattenBackground != v.flattenBackground ||
        v.tracked->holdTheTrunk != (v.tracker == TrackerKind::OpticalFlow && v.holdTheTrunk) ||
        v.tracked->modelLoopRounds !=
            (v.tracker == TrackerKind::OpticalFlow ? v.modelLoopRounds : 0) ||
-       v.tracked->track.firstFrame != v.firstFrame ||
-       !std::equal(v.keyframes.keyframes.begin(), v.keyframes.keyframes.end(),
-                   v.tracked->keyframes.keyframes.begin(), [](const auto& a, const auto& b) {
-                     // A joint not marked (NaN) on both is unchanged: NaN == NaN is false.
-                     const auto same = a.jointsPx.array() == b.jointsPx.array() ||
-                                       (a.jointsPx.array().isNaN() && b.jointsPx.array().isNaN());
-                     return a.frame == b.frame && same.all();
-                   }));
+       v.tracked->track.firstFrame != v.firstFrame || !sameKeyframes(v.tracked->keyframes, v.keyframes));
   char label[96];
   std::snprintf(label, sizeof label, "%s frames %d-%d",
                 stale       ? "Track again,"
@@ -326,7 +318,7 @@ void tracking(AppState& s, const VideoSession& v, float scale) {
                   t.tracker == TrackerKind::Appearance ? "appearance" : "optical flow", t.seconds,
                   t.framesRan() / std::max(t.seconds, 1e-9));
     textDisabledWrapped(done);
-    ImGui::TextDisabled("mean confidence %.2f", t.track.confidence.mean());
+    ImGui::TextDisabled("mean confidence %.2f", t.meanConfidence.mean());
     if (t.flattenBackground) textDisabledWrapped(backgroundNote(t.track.background).c_str());
     if (t.holdTheTrunk) ImGui::TextDisabled("shoulders and hips held to the trunk");
     if (t.modelLoopRounds > 0) textDisabledWrapped(loopNote(t).c_str());
@@ -371,10 +363,7 @@ void saving(AppState& s, const VideoSession& v) {
   const int clicked = buttonRow({{"Save keyframes", !v.keyframes.keyframes.empty() && saveField[0] != '\0'},
                                  {"Save the track", v.tracked != nullptr && saveField[0] != '\0'}});
   if (clicked == 0)
-    attempt("the keyframes", [&] {
-      std::filesystem::create_directories(folder);
-      actions::saveKeyframes(s, folder / (v.path.stem().string() + "_keyframes.json"));
-    });
+    attempt("the keyframes", [&] { actions::saveKeyframesInto(s, folder); });
   if (clicked == 1) attempt("the track", [&] { actions::saveTrack(s, folder); });
   saveTooltip("Save keyframes: the joints marked, as NAME_keyframes.json (track --keyframes).\n"
               "Save the track: keypoints/ as OpenPose JSON, track_2d.csv, confidence.csv and\n"

@@ -81,14 +81,6 @@ VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect, float top
   return f;
 }
 
-VideoViewFrame zoomedVideoFrame(const VideoViewFrame& whole, double zoom, glm::vec2 centrePx) {
-  if (!(zoom > 1.0)) return whole;
-  VideoViewFrame f;
-  f.heightPx = whole.heightPx / static_cast<float>(zoom);
-  f.centre = {centrePx.x, -centrePx.y};
-  return f;
-}
-
 glm::vec2 videoViewMiddle(const VideoViewFrame& view) { return {view.centre.x, -view.centre.y}; }
 
 glm::vec2 zoomMiddleKeeping(glm::vec2 middlePx, glm::vec2 cursorPx, double zoomBefore, double zoomAfter) {

@@ -29,9 +29,17 @@ struct VideoViewFrame {
 VideoViewFrame videoViewFrame(int widthPx, int heightPx, float aspect, float topShare = 0.11f,
                               float bottomShare = 0.07f, float leftShare = 0.0f);
 
-// `whole` magnified `zoom` times (≥ 1) with the video pixel `centrePx` (x right, y down) at
-// the view's middle; `whole` itself at zoom 1.
-VideoViewFrame zoomedVideoFrame(const VideoViewFrame& whole, double zoom, glm::vec2 centrePx);
+// `whole` magnified `zoom` times (≥ 1) with the image pixel `centrePx` (x right, y down) at
+// the view's middle; `whole` itself at zoom 1. For any image-plane framing with a `centre`
+// (scene units, y up) and a `heightPx`: the video's, a keypoint clip's.
+template <class Frame>
+Frame zoomedFrame(const Frame& whole, double zoom, glm::vec2 centrePx) {
+  if (!(zoom > 1.0)) return whole;
+  Frame f;
+  f.heightPx = whole.heightPx / static_cast<float>(zoom);
+  f.centre = {centrePx.x, -centrePx.y};
+  return f;
+}
 // The video pixel (x right, y down) at the middle of `view`.
 glm::vec2 videoViewMiddle(const VideoViewFrame& view);
 // The middle a view magnified from `zoomBefore` to `zoomAfter` needs for the video pixel
