@@ -46,6 +46,10 @@ struct EigenwalkerModel {
   std::vector<std::string> walkerIds;  // R
   std::vector<std::string> subjects;   // R, subject of each walker
   Eigen::VectorXd omegasRadS;          // R, ω of each walker (kept beside w)
+  // R or none: each walker's mean overground speed (m/s), nullopt where it is unknown (a
+  // treadmill, a trial without progression). Gait measures of the model's walkers (stride and
+  // step length, speed) need it; empty for a model built from walkers alone or an older file.
+  std::vector<std::optional<double>> speedsMps;
   std::vector<std::string> provenance; // free text: sources, files, options, …
   // The σ² optimum measured on the model's own walkers; unset for a model built without
   // the sweep (fewer than 3 subjects, a leave-one-out model) or read from an older file.

@@ -18,6 +18,8 @@ namespace {
 using nlohmann::json;
 
 constexpr std::string_view kMagic = "EIGENWALKER-MODEL";
+// A stored walker speed above this is no walk (the fastest race walkers manage 4.5 m/s).
+constexpr double kMaxWalkerSpeedMps = 10.0;
 
 // [SECTION] Arrays
 
@@ -83,6 +85,35 @@ std::optional<Sigma2Optimum> sigma2FromJson(const json& meta, const std::string&
   return s;
 }
 
+// [SECTION] Walkers' speeds (optional: files written before they were stored lack the key)
+
+json speedsJson(const std::vector<std::optional<double>>& speeds) {
+  json out = json::array();
+  for (const auto& v : speeds) out.push_back(v ? json(*v) : json(nullptr));
+  return out;
+}
+
+bool plausibleSpeed(double v) { return std::isfinite(v) && v > 0.0 && v < kMaxWalkerSpeedMps; }
+
+std::vector<std::optional<double>> speedsFromJson(const json& meta, long long walkers, const std::string& file) {
+  if (!meta.contains("speeds_mps")) return {};
+  const json& list = meta["speeds_mps"];
+  if (!list.is_array() || static_cast<long long>(list.size()) != walkers)
+    malformed(file, "line 2", "speeds_mps must list " + std::to_string(walkers) + " speeds (m/s or null)");
+  std::vector<std::optional<double>> out;
+  for (const auto& v : list) {
+    if (v.is_null()) {
+      out.emplace_back();
+      continue;
+    }
+    if (!v.is_number() || !plausibleSpeed(v.get<double>()))
+      malformed(file, "line 2", "speeds_mps holds " + v.dump() + " (a speed in m/s, > 0 and < " +
+                                    std::to_string(static_cast<int>(kMaxWalkerSpeedMps)) + ", or null)");
+    out.emplace_back(v.get<double>());
+  }
+  return out;
+}
+
 // The shapes each array must have, from the declared sizes.
 void checkShapes(const std::vector<ArraySpec>& arrays, long long dims, long long walkers,
                  long long components, long long spectrum, const std::string& file) {
@@ -146,6 +177,10 @@ void checkSavable(const EigenwalkerModel& m, const std::string& file) {
   if (!m.coefficients.allFinite() || !m.spectrum.allFinite() || (m.spectrum.array() < 0.0).any() ||
       !m.omegasRadS.allFinite() || (m.omegasRadS.array() <= 0.0).any())
     bad("non-finite coefficients or spectrum, a negative spectrum value or a non-positive ω");
+  if (!m.speedsMps.empty() && static_cast<Eigen::Index>(m.speedsMps.size()) != r)
+    bad(std::to_string(m.speedsMps.size()) + " walker speeds for " + std::to_string(r) + " walkers");
+  for (const auto& v : m.speedsMps)
+    if (v && !plausibleSpeed(*v)) bad("a walker speed of " + std::to_string(*v) + " m/s");
   if (m.sigma2Optimum &&
       !(m.sigma2Optimum->sigma2Mm2 > 0.0 && std::isfinite(m.sigma2Optimum->sigma2Mm2) &&
         std::isfinite(m.sigma2Optimum->meanAbsErrorMm2)))
@@ -174,6 +209,7 @@ void saveModel(const EigenwalkerModel& model, const std::filesystem::path& file)
   meta["subjects"] = model.subjects;
   meta["provenance"] = model.provenance;
   if (model.sigma2Optimum) meta["sigma2_optimum"] = sigma2Json(*model.sigma2Optimum);
+  if (!model.speedsMps.empty()) meta["speeds_mps"] = speedsJson(model.speedsMps);
   std::string payload;
   json list = json::array();
   for (const auto& [name, m] : arrays) appendArray(list, payload, name, *m);
@@ -218,6 +254,7 @@ EigenwalkerModel parseModel(std::string_view bytes, const std::string& file) {
   model.subjects = metadataStrings(meta, "subjects", "metadata", file);
   model.provenance = metadataStrings(meta, "provenance", "metadata", file);
   model.sigma2Optimum = sigma2FromJson(meta, file);
+  model.speedsMps = speedsFromJson(meta, walkers, file);
   if (static_cast<long long>(model.walkerIds.size()) != walkers ||
       static_cast<long long>(model.subjects.size()) != walkers)
     malformed(file, "line 2", "walker_ids and subjects must list " + std::to_string(walkers) + " walkers");

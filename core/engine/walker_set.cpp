@@ -82,6 +82,20 @@ FourierFit averageFits(const std::vector<FourierFit>& fits) {
 
 }  // namespace
 
+std::optional<double> walkerSpeedMps(const Dataset& dataset, const Walker& walker) {
+  double sum = 0.0;
+  int count = 0;
+  for (const auto& t : dataset.trials) {
+    if (t.info.subject != walker.subject || t.info.condition != walker.condition) continue;
+    if (std::find(walker.files.begin(), walker.files.end(), t.info.file) == walker.files.end()) continue;
+    if (!(t.trial.speedMps > 0.0)) continue;
+    sum += t.trial.speedMps;
+    ++count;
+  }
+  if (count == 0) return std::nullopt;
+  return sum / count;
+}
+
 std::vector<Walker> makeWalkers(const Dataset& dataset, std::vector<std::string>* warnings) {
   std::vector<Walker> walkers;
   for (const auto& group : groupTrials(dataset)) {

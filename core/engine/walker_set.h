@@ -3,6 +3,7 @@
 // several trials of one subject in one condition. Builds the eigenwalker model from them.
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,10 @@ struct Walker {
 // no hint (the scan alone decides ω). A trial with joints missing throughout
 // (missing_joints.h) is left out the same way: a model is not built from its own estimates.
 std::vector<Walker> makeWalkers(const Dataset& dataset, std::vector<std::string>* warnings = nullptr);
+
+// The mean overground speed (m/s) of the walker's trials in `dataset` that have one (a
+// treadmill trial has none); nullopt when none has.
+std::optional<double> walkerSpeedMps(const Dataset& dataset, const Walker& walker);
 
 // W = [w_1 … w_R] (225 × R).
 Eigen::MatrixXd walkerMatrix(const std::vector<Walker>& walkers);

@@ -111,12 +111,15 @@ ModelBuildResult buildModelFromData(const std::vector<fs::path>& data,
         measureSigma2Optimum(sweepWalkers, options.model, options.sigma2Plan, options.threads);
     result.sweepSeconds = secondsSince(start);
   }
+  std::vector<std::optional<double>> speeds;  // matched by the trials' own paths, before they are made relative
+  for (const Walker& w : walkers) speeds.push_back(walkerSpeedMps(dataset, w));
   for (Walker& w : walkers) {
     for (std::string& f : w.files) f = relativeToData(f, data);
   }
   const auto optimum = result.model.sigma2Optimum;
   result.model = buildModel(walkers, options.model);
   result.model.sigma2Optimum = optimum;
+  result.model.speedsMps = std::move(speeds);
   result.model.provenance.insert(
       result.model.provenance.begin(),
       "built from " + dataNames(data) +

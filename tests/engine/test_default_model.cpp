@@ -35,6 +35,14 @@ TEST(DefaultRealModel, LoadsOnceAndIsTheModelOfThe24SharedWalkers) {
   // Stride frequencies of adults walking at their own pace: 0.6–1.4 Hz (slowest here 0.66).
   EXPECT_GT(m.omegasRadS.minCoeff(), 2 * M_PI * 0.6);
   EXPECT_LT(m.omegasRadS.maxCoeff(), 2 * M_PI * 1.4);
+  // Every walker of the shared data walked overground: a speed each, of adults walking at
+  // their own pace (0.7–1.6 m/s; the shared walkers' range is 0.73–1.55).
+  ASSERT_EQ(m.speedsMps.size(), 24u);
+  for (const auto& v : m.speedsMps) {
+    ASSERT_TRUE(v.has_value());
+    EXPECT_GT(*v, 0.7);
+    EXPECT_LT(*v, 1.6);
+  }
 }
 
 TEST(DefaultRealModel, StoresItsSigma2OptimumAndUsesIt) {
@@ -82,6 +90,9 @@ TEST(DefaultRealModel, IsNotStaleAgainstTheSharedData) {
   EXPECT_TRUE(close(r.spectrum, shipped.spectrum)) << "spectrum differs: " << kRebuild;
   EXPECT_TRUE(close(r.coefficients, shipped.coefficients)) << "coefficients differ: " << kRebuild;
   EXPECT_TRUE(close(r.omegasRadS, shipped.omegasRadS)) << "frequencies differ: " << kRebuild;
+  ASSERT_EQ(r.speedsMps.size(), shipped.speedsMps.size()) << kRebuild;
+  for (size_t k = 0; k < r.speedsMps.size(); ++k)
+    EXPECT_NEAR(r.speedsMps[k].value_or(-1.0), shipped.speedsMps[k].value_or(-1.0), 1e-9) << "speeds differ: " << kRebuild;
   ASSERT_TRUE(r.sigma2Optimum && shipped.sigma2Optimum) << kRebuild;
   EXPECT_EQ(r.sigma2Optimum->sigma2Mm2, shipped.sigma2Optimum->sigma2Mm2) << kRebuild;
   EXPECT_NEAR(r.sigma2Optimum->meanAbsErrorMm2, shipped.sigma2Optimum->meanAbsErrorMm2,

@@ -122,25 +122,77 @@ TEST_F(ModelFile, WrongMagicVersionAndTrailingBytes) {
   EXPECT_EQ(kind, ErrorKind::Unsupported);
 }
 
+// Writes `bytes` (a saved model) to `file` with `from` replaced by `to` in its metadata and the
+// checksum made again, so that the checks behind the checksum must catch the edit; the error
+// loading it gives ("" if none).
+std::string loadEdited(const std::filesystem::path& file, const std::string& bytes, const std::string& from,
+                       const std::string& to) {
+  const size_t l1 = bytes.find('\n'), l2 = bytes.find('\n', l1 + 1), l3 = bytes.find('\n', l2 + 1);
+  std::string meta = bytes.substr(l1 + 1, l2 - l1 - 1);
+  const auto at = meta.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at == std::string::npos) return "(not edited)";
+  meta.replace(at, from.size(), to);
+  char sum[17];
+  std::snprintf(sum, sizeof sum, "%016llx", static_cast<unsigned long long>(fnv(meta)));
+  test::writeBinaryFile(file, bytes.substr(0, l1 + 1) + meta + "\nfnv1a64 " + sum + "\n" + bytes.substr(l3 + 1));
+  return loadError(file);
+}
+
 TEST_F(ModelFile, MismatchedSizesAreReported) {
   saveModel(sampleModel(), file);
   const std::string bytes = test::readTextFile(file);
-  const size_t l1 = bytes.find('\n'), l2 = bytes.find('\n', l1 + 1), l3 = bytes.find('\n', l2 + 1);
-  // Edit the metadata consistently (valid checksum), so the size checks must catch it.
-  const auto rewrite = [&](const std::string& from, const std::string& to) {
-    std::string meta = bytes.substr(l1 + 1, l2 - l1 - 1);
-    const auto at = meta.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    meta.replace(at, from.size(), to);
-    char sum[17];
-    std::snprintf(sum, sizeof sum, "%016llx", static_cast<unsigned long long>(fnv(meta)));
-    test::writeBinaryFile(file, bytes.substr(0, l1 + 1) + meta + "\nfnv1a64 " + sum + "\n" + bytes.substr(l3 + 1));
-    return loadError(file);
-  };
+  const auto rewrite = [&](const std::string& from, const std::string& to) { return loadEdited(file, bytes, from, to); };
   EXPECT_NE(rewrite("\"dims\":225", "\"dims\":224").find("dims must be 225"), std::string::npos);
   EXPECT_NE(rewrite("\"walkers\":9", "\"walkers\":10").find("line 2"), std::string::npos);
   EXPECT_NE(rewrite("\"name\":\"spectrum\"", "\"name\":\"spectra\"").find("should be 'spectrum'"),
             std::string::npos);
+}
+
+// Each walker's speed (m/s, or unknown) is kept for the gait report's band of the model's walkers.
+TEST_F(ModelFile, WalkerSpeedsSurviveARoundTripAndAnOlderFileHasNone) {
+  auto m = sampleModel();
+  saveModel(m, file);
+  EXPECT_TRUE(loadModel(file).speedsMps.empty());  // none recorded: none read back
+  EXPECT_EQ(test::readTextFile(file).find("speeds_mps"), std::string::npos);
+
+  for (int r = 0; r < m.walkerCount(); ++r)
+    m.speedsMps.push_back(r == 3 ? std::nullopt : std::optional<double>(0.9 + 0.05 * r));
+  saveModel(m, file);
+  const auto back = loadModel(file);
+  ASSERT_EQ(back.speedsMps.size(), 9u);
+  EXPECT_FALSE(back.speedsMps[3].has_value());  // a treadmill walker's stays unknown
+  for (size_t r = 0; r < 9; ++r) {
+    if (r == 3) continue;
+    EXPECT_EQ(back.speedsMps[r], m.speedsMps[r]);
+  }
+}
+
+TEST_F(ModelFile, ADamagedSpeedListIsAnErrorNamingTheKey) {
+  auto m = sampleModel();
+  m.speedsMps.assign(9, 1.25);
+  saveModel(m, file);
+  const std::string bytes = test::readTextFile(file);
+  const std::string list = "\"speeds_mps\":[1.25,1.25,1.25,1.25,1.25,1.25,1.25,1.25,1.25]";
+  ASSERT_NE(bytes.find(list), std::string::npos);
+  const auto damaged = [&](const std::string& to) {
+    const std::string e = loadEdited(file, bytes, list, to);
+    EXPECT_NE(e.find("speeds_mps"), std::string::npos) << to << ": " << e;
+    EXPECT_NE(e.find("model.ewm"), std::string::npos) << e;
+  };
+  damaged("\"speeds_mps\":[1.25,1.25]");                                        // too few
+  damaged("\"speeds_mps\":[1.25,1.25,1.25,1.25,-1,1.25,1.25,1.25,1.25]");      // not a speed
+  damaged("\"speeds_mps\":[1.25,1.25,1.25,1.25,\"fast\",1.25,1.25,1.25,1.25]");  // not a number
+  damaged("\"speeds_mps\":[1.25,1.25,1.25,1.25,1e300,1.25,1.25,1.25,1.25]");   // no walk
+  damaged("\"speeds_mps\":{\"a\":1}");                                           // not a list
+
+  // What loading refuses is not saved either.
+  m.speedsMps[2] = 0.0;
+  EXPECT_THROW(saveModel(m, dir / "bad.ewm"), Error);
+  m.speedsMps.pop_back();
+  m.speedsMps[2] = 1.0;
+  EXPECT_THROW(saveModel(m, dir / "bad.ewm"), Error);
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.ewm"));
 }
 
 TEST_F(ModelFile, UnwritableTargetIsAnIoErrorAndLeavesNothing) {

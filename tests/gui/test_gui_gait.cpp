@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/engine/default_model.h"
 #include "core/io/trc_reader.h"
 #include "tests/common/test_support.h"
 #include "tests/gui/gui_run.h"
@@ -108,6 +109,41 @@ TEST_F(GuiGait, MeasuresTheWalkerAndItsReconstructionAndExportsThem) {
   EXPECT_GT(std::abs(moved.at("stride_length_m") - mean.at("stride_length_m")) +
                 std::abs(moved.at("knee_flexion_range_deg") - mean.at("knee_flexion_range_deg")) / 100.0,
             0.01);
+}
+
+// A motion-capture file opened with nothing else loaded is inspected against the default model
+// of real walkers; its report's band is of that model's walkers, not of the synthetic walkers
+// shown before it (whose hips read about 14° more flexed at heel strike than this subject's).
+TEST_F(GuiGait, AFileInspectedAgainstTheDefaultModelIsBandedByItsRealWalkers) {
+  EW_REQUIRE_SHARED_DATA();
+  const auto c3d = sharedDataDir() / "schreiber-moissenet-2019" / "2014001" / "2014001_C4_05.c3d";
+  const auto d = dir.string();
+  const auto script = writeScript(dir, R"([
+    {"open": [")" + c3d.string() + R"("]},
+    {"show_panel": ["gait", true]},
+    {"export_gait_report": ")" + d + R"(/report.json"},
+    {"export_state": ")" + d + R"(/state.json"}
+  ])");
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto state = nlohmann::json::parse(readAll(dir / "state.json"));
+  ASSERT_EQ(state["model"]["source"], "default");
+  const auto& gait = state["gait"];
+  EXPECT_EQ(gait["band_walkers"], 24);
+  EXPECT_NE(gait["band"].get<std::string>().find("default model"), std::string::npos) << gait["band"];
+  // The band's speed is the mean of the speeds the model records for its walkers.
+  const EigenwalkerModel& model = defaultRealModel();
+  double sum = 0.0;
+  for (const auto& v : model.speedsMps) sum += v.value_or(NAN);
+  EXPECT_NEAR(gait["measures"]["speed_mps"]["population_mean"].get<double>(), sum / 24.0, 1e-6);
+  const auto report = nlohmann::json::parse(readAll(dir / "report.json"));
+  EXPECT_EQ(report["band"], gait["band"]);
+  // This subject's hip at heel strike lies within the real walkers' band (2 SD), as it did not
+  // within the synthetic walkers'.
+  const auto& hip = report["curves"]["hip_flexion_r"];
+  const double own = hip["motion_capture_deg"][0], mean = hip["population_mean_deg"][0], sd = hip["population_sd_deg"][0];
+  std::printf("hip flexion at heel strike: %.1f°, band %.1f ± %.1f°\n", own, mean, sd);
+  EXPECT_LT(std::abs(own - mean), 2.0 * sd);
 }
 
 }  // namespace

@@ -45,6 +45,8 @@ std::string cell(double v, int decimals = 4) {
 
 double curveSample(const CycleCurve* c, Eigen::Index k) { return c ? c->meanDeg[k] : NAN; }
 double bandSample(const Eigen::VectorXd* v, Eigen::Index k) { return v ? (*v)[k] : NAN; }
+// A row of the band, NaN for a band not measured (no walkers to measure it on).
+double rowOf(const std::vector<double>& v, size_t r) { return r < v.size() ? v[r] : NAN; }
 
 }  // namespace
 
@@ -80,15 +82,24 @@ const Eigen::VectorXd* GaitBand::curveSdOf(const std::string& name) const {
   return k == curveNames.end() ? nullptr : &curveSd[static_cast<size_t>(k - curveNames.begin())];
 }
 
-GaitBand populationGaitBand(const Population& population) {
+namespace {
+
+// One reference walker as the band measures it.
+struct BandWalker {
+  Eigen::VectorXd w;
+  double strideHz = 0.0;
+  std::optional<double> speedMps;
+  std::string id;
+};
+
+GaitBand gaitBandOf(const std::vector<BandWalker>& walkers, std::string from) {
   GaitBand band;
+  band.from = std::move(from);
   const auto& rows = gaitRows();
   std::vector<std::vector<double>> values(rows.size());
   std::vector<std::vector<Eigen::VectorXd>> curves(flexionCurveNames().size());
-  for (int i = 0; i < population.walkerCount(); ++i) {
-    const Walker& w = population.walkers[static_cast<size_t>(i)];
-    const WalkerFacts& f = population.facts[static_cast<size_t>(i)];
-    const GaitSummary s = measureFourierWalker(w.fit.w, f.strideHz, f.speedMps, w.id);
+  for (const BandWalker& b : walkers) {
+    const GaitSummary s = measureFourierWalker(b.w, b.strideHz, b.speedMps, b.id);
     if (!s.measures) {
       ++band.unmeasured;
       continue;
@@ -120,6 +131,32 @@ GaitBand populationGaitBand(const Population& population) {
   return band;
 }
 
+}  // namespace
+
+GaitBand populationGaitBand(const Population& population) {
+  std::vector<BandWalker> walkers;
+  for (int i = 0; i < population.walkerCount(); ++i) {
+    const Walker& w = population.walkers[static_cast<size_t>(i)];
+    const WalkerFacts& f = population.facts[static_cast<size_t>(i)];
+    walkers.push_back({w.fit.w, f.strideHz, f.speedMps, w.id});
+  }
+  return gaitBandOf(walkers, "the " + std::to_string(walkers.size()) + " walkers of the loaded population");
+}
+
+GaitBand modelGaitBand(const EigenwalkerModel& model, const std::string& name) {
+  std::vector<BandWalker> walkers;
+  for (int r = 0; r < model.walkerCount(); ++r) {
+    const auto k = static_cast<size_t>(r);
+    walkers.push_back({model.mean + model.eigenwalkers * model.coefficients.col(r),
+                       model.omegasRadS[r] / (2.0 * std::numbers::pi),
+                       k < model.speedsMps.size() ? model.speedsMps[k] : std::nullopt, model.walkerIds[k]});
+  }
+  std::string from = "the " + std::to_string(walkers.size()) + " walkers of " + name + ", as its " +
+                     std::to_string(model.componentCount()) + " eigenwalkers give them back";
+  if (model.speedsMps.empty()) from += " (it records no speeds: their lengths from the stance feet)";
+  return gaitBandOf(walkers, from);
+}
+
 void writeGaitReportCsv(const std::string& file, const GaitSummary& mocap, const std::vector<GaitColumn>& columns,
                         const GaitBand& band) {
   writeFileAtomically(file, [&](std::ostream& out) {
@@ -130,7 +167,7 @@ void writeGaitReportCsv(const std::string& file, const GaitSummary& mocap, const
     for (size_t r = 0; r < rows.size(); ++r) {
       out << rows[r].key << ',' << cell(gaitRowValue(mocap, rows[r].key));
       for (const auto& c : columns) out << ',' << cell(gaitRowValue(*c.summary, rows[r].key));
-      out << ',' << cell(band.rowMean[r]) << ',' << cell(band.rowSd[r]) << '\n';
+      out << ',' << cell(rowOf(band.rowMean, r)) << ',' << cell(rowOf(band.rowSd, r)) << '\n';
     }
     out << "\ncurve,cycle_pct,motion_capture_deg";
     for (const auto& c : columns) out << ',' << c.name << "_deg";
@@ -164,8 +201,8 @@ void writeGaitReportJson(const std::string& file, const GaitReportText& what, co
   const auto& rows = gaitRows();
   for (size_t r = 0; r < rows.size(); ++r) {
     json m = {{"motion_capture", value(gaitRowValue(mocap, rows[r].key))},
-              {"population_mean", value(band.rowMean[r])},
-              {"population_sd", value(band.rowSd[r])}};
+              {"population_mean", value(rowOf(band.rowMean, r))},
+              {"population_sd", value(rowOf(band.rowSd, r))}};
     for (const auto& c : columns) m[c.name] = value(gaitRowValue(*c.summary, rows[r].key));
     measures[rows[r].key] = m;
   }
@@ -187,6 +224,7 @@ void writeGaitReportJson(const std::string& file, const GaitReportText& what, co
                     {"engine", what.engine},
                     {"cycle_samples", 101},
                     {"band_walkers", band.walkers},
+                    {"band", band.from},
                     {"measures", measures},
                     {"curves", curves}};
   writeFileAtomically(file, [&](std::ostream& out) { out << doc.dump(2) << "\n"; });

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "core/engine/model.h"
 #include "core/gait/fourier_walker_gait.h"
 #include "core/gait/gait_measures.h"
 
@@ -39,8 +40,9 @@ struct GaitRow {
 const std::vector<GaitRow>& gaitRows();
 double gaitRowValue(const GaitSummary& s, const std::string& key);  // NaN when not measured
 
-// The population's mean and SD per row and per curve sample, over the walkers measured.
+// The reference walkers' mean and SD per row and per curve sample, over the walkers measured.
 struct GaitBand {
+  std::string from;       // which walkers, for the caption and the export
   int walkers = 0;        // measured
   int unmeasured = 0;     // no complete stride
   std::vector<double> rowMean, rowSd;  // gaitRows() order
@@ -49,7 +51,13 @@ struct GaitBand {
   const Eigen::VectorXd* curveMeanOf(const std::string& name) const;
   const Eigen::VectorXd* curveSdOf(const std::string& name) const;
 };
+// The loaded population's walkers, at their stride frequencies and measured speeds.
 GaitBand populationGaitBand(const Population& population);
+// The walkers a model was built from, each as the model gives it back (w̄ + E k_r: its N
+// eigenwalkers' part, not the whole walker), at its stride frequency and, where the model
+// records it (speeds_mps, docs/MODEL_FORMAT.md), its speed; without one, the walker's speed
+// and lengths come from its stance feet as a reconstruction's do. `name` names the model.
+GaitBand modelGaitBand(const EigenwalkerModel& model, const std::string& name);
 
 // A reconstruction's column of the report: "reconstruction", or an engine's name in compare mode.
 struct GaitColumn {
@@ -60,7 +68,8 @@ struct GaitColumn {
 // Written atomically; errors are ew::Error naming the file.
 //  CSV: measure,motion_capture,<column names>,population_mean,population_sd then a blank line and
 //       curve,cycle_pct,motion_capture_deg,<column names>_deg,population_mean_deg,population_sd_deg
-//  JSON: {"walker", "engine", "measures": {key: {…}}, "curves": {name: {…}}, "band_walkers"}
+//  JSON: {"walker", "engine", "measures": {key: {…}}, "curves": {name: {…}}, "band_walkers", "band"}
+//  (the population_* columns are the band's, whichever walkers it is of: GaitBand::from)
 struct GaitReportText {
   std::string walker, engine;
 };

@@ -80,24 +80,18 @@ Population populationFromDataset(Dataset dataset, std::string label, const LoadP
     f.strideHz = w.fit.omegaRadS / (2.0 * std::numbers::pi);
     f.h1Share = w.fit.h1Share;
     f.h2Share = w.fit.h2Share;
-    double speedSum = 0.0;
-    int speedCount = 0;
     std::array<bool, kJointCount> estimated{};
     for (const auto& t : dataset.trials) {
       if (t.info.subject != w.subject || t.info.condition != w.condition) continue;
       if (std::find(w.files.begin(), w.files.end(), t.info.file) == w.files.end()) continue;
       ++f.trials;
       f.format = t.trial.joints.format;
-      if (t.trial.speedMps > 0.0) {
-        speedSum += t.trial.speedMps;
-        ++speedCount;
-      }
       for (std::size_t j = 0; j < estimated.size(); ++j) {
         estimated[j] = estimated[j] || t.trial.joints.estimated[j];
         f.modelEstimated[j] = f.modelEstimated[j] || t.trial.modelEstimated[j];
       }
     }
-    if (speedCount > 0) f.speedMps = speedSum / speedCount;
+    f.speedMps = walkerSpeedMps(dataset, w);
     for (std::size_t j = 0; j < estimated.size(); ++j)
       if (estimated[j]) f.estimatedJoints.emplace_back(kJointNames[j]);
     p.facts.push_back(std::move(f));

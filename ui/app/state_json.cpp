@@ -293,6 +293,7 @@ nlohmann::json gaitJson(const AppState& s) {
         {"population_sd", optionalJson(p.band ? finiteOr(p.band->rowSd[r]) : std::nullopt)}};
   }
   return {{"open", p.open},     {"band_walkers", p.band ? p.band->walkers : 0},
+          {"band", p.band ? p.band->from : std::string()},
           {"measures", rows},   {"reconstruction_error", p.recon().error},
           {"columns", columns}, {"status", p.status}};
 }

@@ -11,6 +11,7 @@
 #include "core/engines/engine.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/app/held_model.h"
 #include "ui/convert.h"
 #include "ui/panels/panel_window.h"
 #include "ui/render/palette.h"
@@ -306,12 +307,24 @@ std::vector<GaitColumn> GaitPanel::exportColumns() const {
   return out;
 }
 
+// The band is of the walkers the report's walker is measured against: the model held when it
+// is not the population's own (the default model of real walkers, an opened .ewm), else the
+// loaded population (whose every walker is exact, not a model's part of it).
+void GaitPanel::updateBand(const AppState& s) {
+  const EigenwalkerModel* held = s.doc.heldModel();
+  const bool fromModel = held && s.doc.modelSource != ModelSource::Population;
+  if (!fromModel && !s.doc.population) return;
+  auto key = std::make_tuple(s.doc.generation, static_cast<int>(s.doc.modelSource),
+                             static_cast<const void*>(fromModel ? held : nullptr), heldModelName(s.doc));
+  if (band && key == bandKey) return;
+  const std::string name = s.doc.modelSource == ModelSource::Default ? "the default model" : heldModelName(s.doc);
+  band = std::make_shared<const GaitBand>(fromModel ? modelGaitBand(*held, name) : populationGaitBand(*s.doc.population));
+  bandKey = std::move(key);
+}
+
 void GaitPanel::update(AppState& s) {
   const auto shown = shownWalkers(s);
-  if (s.doc.population && (bandGeneration != s.doc.generation || !band)) {
-    band = std::make_shared<const GaitBand>(populationGaitBand(*s.doc.population));
-    bandGeneration = s.doc.generation;
-  }
+  updateBand(s);
   if (!shown) {
     refresh(mocap, mocapW, nullptr, 0.0, std::nullopt, "");
     columns.clear();
@@ -353,8 +366,8 @@ void GaitPanel::draw(AppState& s, const FrameContext& ctx) {
   ImGui::Text("%s", shown->walker.c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped("Each walker's two-harmonic fit walked %.0f cycles, events from its kinematics; the band is "
-                     "%d walkers of the loaded population (docs/GAIT.md).",
-                     kReportCycles, band ? band->walkers : 0);
+                     "%s (docs/GAIT.md).",
+                     kReportCycles, band ? band->from.c_str() : "not measured yet");
   ImGui::PopStyleColor();
   if (!mocap.error.empty() && shown->mocapW) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "motion capture: %s", mocap.error.c_str());
   for (const auto& c : columns)

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "ui/app/gait_report.h"
@@ -26,8 +27,8 @@ struct GaitPanel {
   std::array<char, 512> basePath{"gait_report"};
   std::string status;
 
-  // Cached: the band per population generation, the summaries per walker shown.
-  std::uint64_t bandGeneration = 0;
+  // Cached: the band per population generation and model held, the summaries per walker shown.
+  std::tuple<std::uint64_t, int, const void*, std::string> bandKey;
   std::shared_ptr<const GaitBand> band;
   Eigen::VectorXd mocapW;
   GaitSummary mocap;
@@ -43,6 +44,7 @@ struct GaitPanel {
   // The column of the engine the viewer has selected (the first when none is it).
   const GaitSummary& recon() const;
   std::vector<GaitColumn> exportColumns() const;
+  void updateBand(const AppState& s);
 
   void draw(AppState& s, const FrameContext& ctx);
   // Brings the caches up to date with what the viewer shows (also used by the scripts).
