@@ -554,7 +554,9 @@ void modelSeeds(SeedWriter& out, const fs::path& tmp) {
   ew::ModelOptions options;
   options.components = 1;
   const fs::path file = tmp / "synthetic_three_walkers.ewm";
-  ew::saveModel(ew::buildModel(walkers, options), file);
+  ew::EigenwalkerModel model = ew::buildModel(walkers, options);
+  model.speedsMps = {1.2, std::nullopt, 1.4};  // the optional speeds, one unknown
+  ew::saveModel(model, file);
   out.write("model_file", "synthetic_three_walkers.ewm", readText(file));
   // A snippet prior of the same layout (the harness reads every input both ways): two
   // clusters over one-frame snippets.
