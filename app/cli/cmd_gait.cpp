@@ -5,6 +5,7 @@
 // file's events and from its kinematics, and prints how far apart the two are.
 #include <cmath>
 #include <iomanip>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -166,12 +167,18 @@ void printEventAgreement(const std::vector<MeasuredTrial>& all) {
               << number(worstStance, 2) << " points\n";
 }
 
+// Each row named by its trial's file name: a subject's several trials (a folder of them) would
+// otherwise be rows alike but for their numbers.
 void printTable(const std::vector<MeasuredTrial>& all) {
-  const std::vector<size_t> shown = {1, 2, 3, 5, 8, 9, 10, 12, 15, 17};
-  for (size_t c : shown) std::cout << columns()[c] << (c == shown.back() ? "\n" : "\t");
+  const std::vector<size_t> shown = {2, 3, 5, 8, 9, 10, 12, 15, 17};
+  std::cout << "trial";
+  for (size_t c : shown) std::cout << "\t" << columns()[c];
+  std::cout << "\n";
   for (const auto& t : all) {
     const auto cells = row(t);
-    for (size_t c : shown) std::cout << cells[c] << (c == shown.back() ? "\n" : "\t");
+    std::cout << std::filesystem::path(t.file).filename().string();
+    for (size_t c : shown) std::cout << "\t" << cells[c];
+    std::cout << "\n";
   }
 }
 

@@ -108,5 +108,17 @@ TEST(GaitCliSharedData, EventsBothComparesTheC3dEventsWithTheKinematics) {
   EXPECT_NE(r.err.find("kinematics vs file events over 1 trials"), std::string::npos) << r.err;
 }
 
+// A folder of one subject's trials: each row of the table says which trial it is.
+TEST(GaitCliSharedData, TheTableNamesEachTrialByItsFile) {
+  EW_REQUIRE_SHARED_DATA();
+  const auto dir = test::makeTempDir("gait_cli_folder");
+  const test::ShellRun r = runCli("gait \"" + (test::sharedDataDir() / "cmu-mocap-bvh" / "02").string() + "\"", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("trial\tevents\t", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("\n02_01.bvh\tkinematics\t"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\n02_02.bvh\tkinematics\t"), std::string::npos) << r.out;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace ew
