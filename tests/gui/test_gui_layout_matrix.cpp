@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,26 @@ TEST_F(GuiLayoutMatrix, AScaleTooLargeForTheWindowIsLimited) {
   const RunResult r2 = runViewer(dir, "--size 1920x1080 --ui-scale 2 --script " + quote(script2.string()));
   ASSERT_EQ(r2.exitCode, 0) << r2.err;
   EXPECT_TRUE(nlohmann::json::parse(readAll(dir / "large.json"))["view"]["ui_scale_limit"].is_null());
+}
+
+// A window too narrow for every header button puts the rest under More…; its menu opens (the
+// symbols spelt out) and the layout holds with it open. A window wide enough has no such menu.
+TEST_F(GuiLayoutMatrix, TheHeadersMoreMenuOpensWhereButtonsDoNotFit) {
+  const auto d = dir.string();
+  const auto script = writeScript(dir, R"([{"header_more": true}, {"wait_frames": 2},
+    {"export_state": ")" + d + R"(/more.json"}, {"screenshot": ")" + d + R"(/more.png"}])");
+  const RunResult r = runViewer(dir, "--size 1024x768 --ui-scale 2 --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto state = nlohmann::json::parse(readAll(dir / "more.json"));
+  const auto& drawn = state["layout"]["drawn"];
+  EXPECT_NE(std::find(drawn.begin(), drawn.end(), "header_more"), drawn.end()) << drawn;
+  expectLayoutHolds(state, "1024x768 scale 2, More… open");
+
+  const auto wide = writeScript(dir, R"([{"expect_failure": {"header_more": true}},
+    {"export_state": ")" + d + R"(/wide.json"}])");
+  const RunResult r2 = runViewer(dir, "--size 1920x1080 --script " + quote(wide.string()));
+  ASSERT_EQ(r2.exitCode, 0) << r2.err;
+  EXPECT_NE(r2.err.find("no More… menu"), std::string::npos) << r2.err;
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ const std::set<std::string>& knownActions() {
       "set_engine", "video_frame", "video_zoom", "clip_zoom", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "save_track", "mark_from_keypoints", "drag_joint", "track_video",
       "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab",
-      "set_semantic", "presentation", "key", "undo", "redo"};
+      "set_semantic", "presentation", "key", "undo", "redo", "header_more"};
   // clang-format on
   return names;
 }
@@ -375,6 +375,11 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::setTheme(s, text(a));
   } else if (n == "presentation") {
     actions::setPresentation(s, boolean(a));
+  } else if (n == "header_more") {
+    if (!boolean(a)) throw std::invalid_argument("expects true (the menu closes when anything else is clicked)");
+    if (!s.panels.header.moreShown)
+      throw std::invalid_argument("the header shows every button at this window size and UI scale: no More… menu");
+    s.panels.header.openMore = true;
   } else if (n == "undo") {
     undo(s);
   } else if (n == "redo") {

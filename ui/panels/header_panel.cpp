@@ -95,6 +95,7 @@ struct HeaderButton {
   const char* tooltip;
   bool enabled;
   std::function<void()> press;
+  const char* menuLabel = nullptr;  // under More…, where a symbol alone says too little
 };
 
 std::vector<HeaderButton> headerButtons(AppState& s, HeaderPanel& h) {
@@ -118,9 +119,10 @@ std::vector<HeaderButton> headerButtons(AppState& s, HeaderPanel& h) {
        }},
       {"Present", "Presentation mode: only the two views, large captions (F5)", true,
        [&s] { actions::setPresentation(s, true); }},
-      {"↶", "Undo the last change (Ctrl+Z)", canUndo(s), [&s] { undo(s); }},
-      {"↷", "Redo (Ctrl+Shift+Z or Ctrl+Y)", canRedo(s), [&s] { redo(s); }},
-      {"?", "Keyboard and mouse (F1)", true, [&s] { s.panels.help.open = !s.panels.help.open; }},
+      {"↶", "Undo the last change (Ctrl+Z)", canUndo(s), [&s] { undo(s); }, "↶  Undo"},
+      {"↷", "Redo (Ctrl+Shift+Z or Ctrl+Y)", canRedo(s), [&s] { redo(s); }, "↷  Redo"},
+      {"?", "Keyboard and mouse (F1)", true, [&s] { s.panels.help.open = !s.panels.help.open; },
+       "?  Keyboard and mouse"},
   };
 }
 
@@ -133,7 +135,8 @@ void drawHeaderButton(const HeaderButton& b) {
 
 // The buttons that fit `room` in a row, the rest under a "More" button's menu (a small
 // window or a large UI scale).
-void drawHeaderButtons(std::vector<HeaderButton> buttons, float room) {
+void drawHeaderButtons(AppState& s, std::vector<HeaderButton> buttons, float room) {
+  HeaderPanel& h = s.panels.header;
   const float spacing = ImGui::GetStyle().ItemSpacing.x;
   const float moreW = buttonWidth("More…") + spacing;
   float total = 0.0f;
@@ -149,13 +152,22 @@ void drawHeaderButtons(std::vector<HeaderButton> buttons, float room) {
     if (i > 0) ImGui::SameLine();
     drawHeaderButton(buttons[i]);
   }
-  if (inRow == buttons.size()) return;
+  h.moreShown = inRow < buttons.size();
+  if (!h.moreShown) {
+    h.openMore = false;
+    return;
+  }
   if (inRow > 0) ImGui::SameLine();
-  if (ImGui::Button("More…")) ImGui::OpenPopup("##header_more");
+  if (ImGui::Button("More…") || h.openMore) ImGui::OpenPopup("##header_more");
+  h.openMore = false;
+  // Under its button, as a menu drops (not wherever the mouse was), kept on the screen.
+  const ImVec2 under(ImGui::GetItemRectMin().x, ImGui::GetItemRectMax().y);
+  ImGui::SetNextWindowPos(under, ImGuiCond_Appearing);
   if (ImGui::BeginPopup("##header_more")) {
+    s.lastFrame.drawn.emplace_back("header_more");
     for (std::size_t i = inRow; i < buttons.size(); ++i) {
       const auto& b = buttons[i];
-      const std::string item = std::string(b.label) + "##more";
+      const std::string item = std::string(b.menuLabel ? b.menuLabel : b.label) + "##more";
       if (ImGui::MenuItem(item.c_str(), nullptr, false, b.enabled)) b.press();
       if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", b.tooltip);
     }
@@ -249,7 +261,7 @@ void HeaderPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& re
     }
     if (s.fonts.large) ImGui::PopFont();
     const float rowX = ImGui::GetCursorPosX();
-    drawHeaderButtons(std::move(buttons), ImGui::GetContentRegionAvail().x);
+    drawHeaderButtons(s, std::move(buttons), ImGui::GetContentRegionAvail().x);
     // The model selector opens under its button, the row's second.
     modelButtonX = ImGui::GetWindowPos().x + rowX + buttonWidth("Open…") + style.ItemSpacing.x;
     modelButtonBottom = ImGui::GetItemRectMax().y;

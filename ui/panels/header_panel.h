@@ -18,6 +18,8 @@ struct FrameContext;
 
 struct HeaderPanel {
   bool modelMenuOpen = false;  // the model selector window
+  bool openMore = false;       // open the More… menu on the next frame (scripts)
+  bool moreShown = false;      // the last frame had buttons under More…
 
   void draw(AppState& s, const FrameContext& ctx, const PanelRect& rect);
   // The model selector (a floating window under the Model button).
