@@ -73,7 +73,9 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
           {"outlier_samples", fit.outlierSamples},
           {"stride_hz", fit.strideHz},
           {"cadence_steps_per_min", fit.cadenceStepsPerMin},
+          {"walking_in_place", fit.inPlace},
           {"speed_mps", fit.speedMps},
+          {"speed_source", fit.inPlace ? "the stance feet (walking in place: a treadmill's belt)" : "the walker's progression"},
           {"stride_length_m", fit.strideLengthM},
           {"head_height_m", fit.headHeightMm / 1000.0},
           {"stature_m", fit.statureMm / 1000.0},
@@ -104,8 +106,9 @@ void printSummary(const json& r) {
   std::cerr << "\n";
   std::cerr << "walk: stride " << std::setprecision(3) << r["stride_hz"].get<double>() << " Hz ("
             << std::setprecision(0) << r["cadence_steps_per_min"].get<double>()
-            << " steps/min), speed " << std::setprecision(2) << r["speed_mps"].get<double>()
-            << " m/s, stride length " << r["stride_length_m"].get<double>() << " m, head height "
+            << " steps/min), " << (r["walking_in_place"].get<bool>() ? "walking in place (a treadmill), belt speed " : "speed ")
+            << std::setprecision(2) << r["speed_mps"].get<double>()
+            << " m/s" << (r["walking_in_place"].get<bool>() ? " from the stance feet" : "") << ", stride length " << r["stride_length_m"].get<double>() << " m, head height "
             << r["head_height_m"].get<double>() << " m (stature about "
             << r["stature_m"].get<double>() << " m)";
   if (r["rate_assumed"].get<bool>())

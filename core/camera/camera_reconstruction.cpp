@@ -11,6 +11,7 @@
 #include "core/common/statistics.h"
 #include "core/engine/fourier.h"
 #include "core/gait/body_size.h"
+#include "core/gait/fourier_walker_gait.h"
 #include "core/gait/gait_cycles.h"
 #include "core/engine/joint_completion.h"
 #include "core/engine/projection.h"
@@ -70,6 +71,7 @@ struct Layout {
   bool focalFree = false;  // pinhole whose focal length is estimated
   bool alphaFixed = false, elevationFixed = false;  // held at their start values
   bool omegaFixed = false;                          // held at the stride hint
+  bool speedFixed = false;                          // held at zero: walking in place
   int alpha() const { return n; }
   int elevation() const { return n + 1; }
   int logScale() const { return n + 2; }
@@ -83,7 +85,8 @@ struct Layout {
   int logFocal() const { return n + 10; }
   int size() const { return n + (pinhole ? (focalFree ? 11 : 10) : 8); }
   bool fixed(Eigen::Index i) const {
-    return (alphaFixed && i == alpha()) || (elevationFixed && i == elevation()) || (omegaFixed && i == omega());
+    return (alphaFixed && i == alpha()) || (elevationFixed && i == elevation()) || (omegaFixed && i == omega()) ||
+           (speedFixed && i == speed());
   }
 };
 
@@ -360,7 +363,9 @@ VectorXd startTheta(const Problem& p, const OrthoStart& s, const Reconstruction&
   const double sinA = std::sin(degToRad(rec.alphaDeg));
   // The pelvis moves across the image at s·v·sin α px/s; a walker seen from ahead or
   // behind barely moves across it, so its speed starts at a usual 1.3 m/s.
-  const double speed = std::abs(sinA) > 0.3 ? s.pelvisU[1] / (s.pxPerMm * sinA) : 1300.0;
+  const double speed = l.speedFixed            ? 0.0
+                       : std::abs(sinA) > 0.3 ? s.pelvisU[1] / (s.pxPerMm * sinA)
+                                              : 1300.0;
   t[l.speed()] = speed;
   const VectorXd w = walkerOf(p, t);
   const double pelvisZ = w[3 * index(Joint::Pelvis) + 2];
@@ -441,10 +446,10 @@ namespace {
 
 using Candidate = std::pair<VectorXd, CameraStart>;
 
-// A walker moving forward at a stride frequency people walk at.
+// A walker moving forward (or walking in place) at a stride frequency people walk at.
 bool plausibleWalk(const Problem& p, const VectorXd& theta) {
   const double strideHz = theta[p.layout.omega()] / (2 * std::numbers::pi);
-  return theta[p.layout.speed()] > 0 && strideHz >= kMinStrideHz && strideHz <= kMaxStrideHz;
+  return (p.layout.speedFixed || theta[p.layout.speed()] > 0) && strideHz >= kMinStrideHz && strideHz <= kMaxStrideHz;
 }
 
 // Every start (azimuth × elevation) screened for a few iterations on the coarse frames, the
@@ -551,6 +556,15 @@ Glitches withoutOutliers(const MatrixXd& px, const MatrixXd& image, double heigh
   return out;
 }
 
+// Walking in place: the speed the belt carries the stance feet back at, read off the fitted
+// walk as a gait report reads a reconstruction's (core/gait/fourier_walker_gait.h).
+void setBeltSpeed(CameraFit& fit) {
+  fit.inPlace = true;
+  const FourierWalkerGait g = measureFourierWalker(fit.w, fit.strideHz, std::nullopt, "walking in place");
+  fit.speedMps = g.measures ? g.measures->speedMps : kNaN;
+  fit.strideLengthM = g.measures ? g.measures->strideLengthM : kNaN;
+}
+
 // Azimuths every 30°: the wide net cast when the view-angle search's minima lead nowhere.
 std::vector<double> gridAngles() {
   std::vector<double> a;
@@ -575,7 +589,8 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
   const OrthoStart start = orthographicStart(model, jointsPx, times, unseen, o);
   const bool pinhole = o.focalPx.has_value() || o.estimateFocal;
   const Layout layout{static_cast<int>(model.eigenvalues.size()), pinhole, pinhole && !o.focalPx,
-                      o.alphaDeg.has_value(), o.elevationDeg.has_value(), o.holdStrideHz && o.strideHzHint.has_value()};
+                      o.alphaDeg.has_value(), o.elevationDeg.has_value(), o.holdStrideHz && o.strideHzHint.has_value(),
+                      o.inPlace};
   const Problem p = makeProblem(model, layout, o, jointsPx, times, 1.0 / start.pxPerMm, 1);
   // Screening sees every few frames (the walk is smooth; ~8 frames a stride are plenty).
   const int stride = std::max(1, static_cast<int>(rateHz / (kScreeningFramesPerStride * start.fit.omegaRadS / (2 * std::numbers::pi))));
@@ -626,6 +641,7 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
                         " px, more than " + std::to_string(static_cast<int>(100 * kMaxRmsOfHeight)) +
                         " % of the walker's " + std::to_string(static_cast<int>(heightPx)) + " px height)");
   fit.unseenJoints = unseenJoints;
+  if (o.inPlace) setBeltSpeed(fit);
   fit.camera.alphaDeg = wrapDeg(fit.camera.alphaDeg);
   fit.objective = results.front().second.objective;
   for (const auto& r : results) fit.starts.push_back(r.second);

@@ -35,6 +35,9 @@ struct CameraFitOptions {
   // the image's limbs (the model loop's trunk bob, when the tracker has lost the feet).
   bool holdStrideHz = false;
   std::string strideHintSource;         // where a given hint came from, for reports ("" unsaid)
+  // Walking in place (a treadmill; image_gait.h): the walker's progression held at zero. Its
+  // speed is then the stance feet's, read off the fitted walk (CameraFit::speedMps).
+  bool inPlace = false;
   int startCount = 4;                   // view-angle minima tried as starts
   int maxIterations = 300;
   std::string file;                     // named in errors
@@ -61,6 +64,10 @@ struct CameraFit {
   double headHeightMm = 0.0;      // head centre above the mean of the two ankles, cycle mean
   double statureMm = 0.0;         // the stature that head height implies (core/gait/body_size.h)
   double strideHz = 0.0, speedMps = 0.0, strideLengthM = 0.0, cadenceStepsPerMin = 0.0;
+  // Fitted walking in place (CameraFitOptions::inPlace): the camera's speed is zero and
+  // speedMps, strideLengthM are the belt's, from the stance feet of the fitted walk (NaN
+  // when no full stride of it could be measured).
+  bool inPlace = false;
   std::vector<CameraStart> starts;  // every start, best first
   std::vector<int> unseenJoints;    // joints with no image data (estimated by the model)
 };

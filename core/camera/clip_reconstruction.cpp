@@ -54,8 +54,9 @@ std::string strideText(double hz) {
 
 }  // namespace
 
-ImageGait gaitForTheFit(const KeypointTrial& trial, CameraFitOptions& fitOptions,
-                        std::string& source) {
+namespace {
+
+ImageGait gaitAndStride(const KeypointTrial& trial, CameraFitOptions& fitOptions, std::string& source) {
   if (fitOptions.strideHzHint) {
     source = !fitOptions.strideHintSource.empty() ? fitOptions.strideHintSource
              : fitOptions.holdStrideHz                ? "held by the caller"
@@ -77,6 +78,14 @@ ImageGait gaitForTheFit(const KeypointTrial& trial, CameraFitOptions& fitOptions
            (g.strikesStrideHz > 0.0 ? strideText(g.strikesStrideHz) : std::string("none")) + ")";
   fitOptions.strideHzHint = bob;
   fitOptions.holdStrideHz = true;
+  return g;
+}
+
+}  // namespace
+
+ImageGait gaitForTheFit(const KeypointTrial& trial, CameraFitOptions& fitOptions, std::string& source) {
+  ImageGait g = gaitAndStride(trial, fitOptions, source);
+  fitOptions.inPlace = g.inPlace;
   return g;
 }
 

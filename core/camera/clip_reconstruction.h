@@ -55,7 +55,8 @@ ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, Keypo
 // caller's hint when it gives one; else the foot strikes' stride as a hint; else, when the
 // trunk's bob is clear and the strikes read none or one more than kFeetDisagreeWithTheBobShare
 // away, the bob, held. `source` says which ("foot strikes", "trunk's bob (…)", the options'
-// strideHintSource, "held by the caller", "the caller's hint"). Throws what imageGaitCycles throws.
+// strideHintSource, "held by the caller", "the caller's hint"). A walker walking in place (a
+// treadmill) sets fitOptions.inPlace. Throws what imageGaitCycles throws.
 ImageGait gaitForTheFit(const KeypointTrial& trial, CameraFitOptions& fitOptions,
                         std::string& source);
 

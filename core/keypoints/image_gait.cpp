@@ -1,6 +1,7 @@
 #include "core/keypoints/image_gait.h"
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <Eigen/QR>
 #include <algorithm>
@@ -34,6 +35,27 @@ Eigen::Vector2d pelvisAtEnd(const KeypointTrial& t, bool last) {
   return sum / static_cast<double>(n);
 }
 
+// Mean extent down the image of the joints seen, over the first (or last) tenth of the frames
+// where most are seen (a frame missing the head or the feet is no measure of size).
+double extentAtEnd(const KeypointTrial& t, bool last) {
+  std::vector<double> extents;
+  for (Eigen::Index f = 0; f < t.jointsPx.rows(); ++f) {
+    double top = INFINITY, bottom = -INFINITY;
+    int seen = 0;
+    for (int j = 0; j < kJointCount; ++j) {
+      const double v = t.jointsPx(f, 2 * j + 1);
+      if (!std::isfinite(v) || !std::isfinite(t.jointsPx(f, 2 * j))) continue;
+      top = std::min(top, v), bottom = std::max(bottom, v), ++seen;
+    }
+    if (seen >= kJointCount - 3) extents.push_back(bottom - top);
+  }
+  if (extents.empty()) return NAN;
+  const std::size_t n = std::max<std::size_t>(1, extents.size() / 10);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < n; ++i) sum += extents[last ? extents.size() - 1 - i : i];
+  return sum / static_cast<double>(n);
+}
+
 // Stride frequency from same-side strike intervals (strides per second).
 double strideHz(const std::vector<double>& right, const std::vector<double>& left) {
   double total = 0.0;
@@ -46,11 +68,73 @@ double strideHz(const std::vector<double>& right, const std::vector<double>& lef
   return count > 0 && total > 0 ? count / total : 0.0;
 }
 
-std::string fixed1(double v) {
+// Each ankle's offset from the pelvis over the frames where both are seen.
+std::vector<std::vector<Eigen::Vector2d>> ankleLeads(const KeypointTrial& t) {
+  std::vector<std::vector<Eigen::Vector2d>> leads(2);
+  const Eigen::Index pelvis = 2 * index(Joint::Pelvis);
+  for (Eigen::Index f = 0; f < t.jointsPx.rows(); ++f) {
+    const Eigen::Vector2d p = t.jointsPx.block<1, 2>(f, pelvis).transpose();
+    for (int side = 0; side < 2; ++side) {
+      const Joint ankle = side == 0 ? Joint::RAnkle : Joint::LAnkle;
+      const Eigen::Vector2d a = t.jointsPx.block<1, 2>(f, 2 * index(ankle)).transpose();
+      leads[static_cast<std::size_t>(side)].push_back(a.allFinite() && p.allFinite() ? Eigen::Vector2d(a - p)
+                                                                                   : Eigen::Vector2d::Constant(NAN));
+    }
+  }
+  return leads;
+}
+
+// The way the feet swing in the image when the walker stays in place: the main axis of the
+// ankles' offsets from the pelvis, pointing the way they move for the shorter part of the
+// time (a foot swings forward in about 40 % of a stride and is carried back in the rest).
+// Unset when the ankles are seen too little or move no way more than another.
+std::optional<Eigen::Vector2d> ankleSwingDirection(const KeypointTrial& t) {
+  const auto leads = ankleLeads(t);
+  Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
+  int samples = 0;
+  for (const auto& side : leads) {
+    Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+    int n = 0;
+    for (const auto& l : side)
+      if (l.allFinite()) mean += l, ++n;
+    if (n == 0) continue;
+    mean /= n;
+    for (const auto& l : side)
+      if (l.allFinite()) scatter += (l - mean) * (l - mean).transpose(), ++samples;
+  }
+  if (samples < 8) return std::nullopt;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
+  // A swing along one axis, not a scatter as wide every way (a person standing and shifting).
+  if (!(eig.eigenvalues()[1] > 2.0 * eig.eigenvalues()[0])) return std::nullopt;
+  Eigen::Vector2d d = eig.eigenvectors().col(1);
+  int forward = 0, back = 0;
+  for (const auto& side : leads) {
+    for (std::size_t f = 1; f + 1 < side.size(); ++f) {
+      if (!side[f - 1].allFinite() || !side[f + 1].allFinite()) continue;
+      const double v = (side[f + 1] - side[f - 1]).dot(d);
+      if (v > 0) ++forward;
+      if (v < 0) ++back;
+    }
+  }
+  if (forward + back == 0) return std::nullopt;
+  return forward > back ? Eigen::Vector2d(-d) : d;
+}
+
+std::string fixed(double v, int decimals) {
   std::ostringstream s;
-  s.precision(1);
+  s.precision(decimals);
   s << std::fixed << v;
   return s.str();
+}
+
+std::string fixed1(double v) { return fixed(v, 1); }
+
+// What a clip whose pelvis does not cross the picture shows instead.
+std::string stillPelvis(double travelShare, double sizeChange) {
+  return "the pelvis crosses " + fixed1(travelShare) + " of the walker's height in the image (walking across it: > " +
+         fixed1(kMinImageTravelOfHeight) + ") and the walker's size in it changes " +
+         (std::isfinite(sizeChange) ? fixed(100.0 * sizeChange, 0) + " %" : std::string("by an unknown share")) +
+         " (walking towards or away from the camera: > " + fixed(100.0 * kMaxInPlaceSizeChange, 0) + " %)";
 }
 
 }  // namespace
@@ -60,12 +144,20 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
   const double height = std::max(t.people.at(static_cast<std::size_t>(t.chosen)).sizePx, 1.0);
   const Eigen::Vector2d travel = pelvisAtEnd(t, true) - pelvisAtEnd(t, false);
   g.travelPx = travel.norm();
-  if (!(g.travelPx >= kMinImageTravelOfHeight * height))
-    notWalking(
-        t, "the pelvis crosses " + fixed1(g.travelPx / height) +
-               " of the walker's height in the image (walking across or towards the camera: > " +
-               fixed1(kMinImageTravelOfHeight) + ")");
-  g.direction = travel / g.travelPx;
+  const bool crosses = g.travelPx >= kMinImageTravelOfHeight * height;
+  const double sizeChange = std::abs(extentAtEnd(t, true) / extentAtEnd(t, false) - 1.0);
+  // Not crossing the picture and keeping its size (a NaN size change is no evidence of depth).
+  g.inPlace = !crosses && !(sizeChange > kMaxInPlaceSizeChange);
+  // A walker not crossing the picture is first told what it does instead, then why that is
+  // not walking either.
+  const std::string prefix = crosses ? std::string() : stillPelvis(g.travelPx / height, sizeChange) + ", and ";
+  if (crosses) {
+    g.direction = travel / g.travelPx;
+  } else {
+    const auto swing = ankleSwingDirection(t);
+    if (!swing) notWalking(t, prefix + "the ankles do not swing about the pelvis (as on a treadmill)");
+    g.direction = *swing;
+  }
   // The leads as the forward coordinate of canonical frames, so the 3D strike finder applies.
   Eigen::MatrixXd frames = Eigen::MatrixXd::Zero(t.jointsPx.rows(), 3 * kJointCount);
   for (Joint j : {Joint::Pelvis, Joint::RAnkle, Joint::LAnkle}) {
@@ -81,18 +173,16 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
       if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
     }
     if (!(hi - lo >= kMinImageAnkleLeadOfHeight * height))
-      notWalking(t, std::string("the ") + (ankle == Joint::RAnkle ? "right" : "left") +
-                        " ankle swings " +
-                        fixed1(std::isfinite(hi - lo) ? (hi - lo) / height : 0.0) +
-                        " of the walker's height about the pelvis (walking: > " +
-                        fixed1(kMinImageAnkleLeadOfHeight) + ")");
+      notWalking(t, prefix + "the " + (ankle == Joint::RAnkle ? "right" : "left") + " ankle swings " +
+                        fixed(std::isfinite(hi - lo) ? (hi - lo) / height : 0.0, 2) +
+                        " of the walker's height about the pelvis (walking: > " + fixed(kMinImageAnkleLeadOfHeight, 2) + ")");
   }
   g.rightStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Right);
   g.leftStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Left);
   g.strikesStrideHz = strideHz(g.rightStrikesS, g.leftStrikesS);
   g.strideHz = heldStrideHz.value_or(g.strikesStrideHz);
   if (g.strideHz < kMinStrideHz || g.strideHz > kMaxStrideHz)
-    notWalking(t, "no regular foot strikes (" + std::to_string(g.rightStrikesS.size()) +
+    notWalking(t, prefix + "no regular foot strikes (" + std::to_string(g.rightStrikesS.size()) +
                       " right, " + std::to_string(g.leftStrikesS.size()) + " left at " +
                       fixed1(t.rateHz) + " fps" +
                       // A video's own rate (a track) is no guess to correct.

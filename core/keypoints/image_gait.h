@@ -14,23 +14,35 @@
 
 namespace ew {
 
-// The pelvis must cross at least this share of the walker's height in the image to walk.
+// The pelvis crosses at least this share of the walker's height in the image when it walks across it.
 inline constexpr double kMinImageTravelOfHeight = 0.5;
+// A walker that does not cross the picture walks towards or away from the camera when its
+// size in the image changes by more than this share from the clip's start to its end, else in
+// place (a treadmill). 10 %: 1.3 m/s for 2 s at 25 m from the camera, the farthest a
+// single camera films a walker this project reads.
+inline constexpr double kMaxInPlaceSizeChange = 0.10;
 // Each ankle's lead must span this share of the walker's height (150 mm of ~1.7 m).
 inline constexpr double kMinImageAnkleLeadOfHeight = 0.08;
 
 struct ImageGait {
   Eigen::Vector2d direction = Eigen::Vector2d::Zero();  // progression in the image, unit
   double travelPx = 0.0;                                // pelvis, first to last tenth
+  // Walking in place (a treadmill): the pelvis does not cross the picture nor does the walker
+  // grow or shrink in it (kMaxInPlaceSizeChange). Whenever the pelvis does not cross the
+  // picture (also walking towards or away from the camera), the direction is the ankles'
+  // swing about the pelvis, forward the way they move the shorter part of the time (a swing
+  // is quicker than a stance).
+  bool inPlace = false;
   std::vector<double> rightStrikesS, leftStrikesS;      // seconds from frame 0
   double strideHz = 0.0;
   double strikesStrideHz = 0.0;  // what the strikes alone read (0: none), held stride or not
   double cycles = 0.0;           // clip duration × stride frequency
 };
 
-// Throws Error(BadData) naming the file with "not walking: …" when the pelvis does not
-// cross the image, an ankle does not swing, or the strikes give no stride frequency in
-// kMinStrideHz-kMaxStrideHz, and "shorter than one gait cycle" below one cycle.
+// Throws Error(BadData) naming the file with "not walking: …" when an ankle does not swing
+// about the pelvis (whether the pelvis crosses the image or not), or the strikes give no
+// stride frequency in kMinStrideHz-kMaxStrideHz, and "shorter than one gait cycle" below one
+// cycle.
 // `heldStrideHz`: the stride frequency known otherwise (the trunk's bob, below), which then
 // stands for the strikes' (a tracker's lost ankles may strike irregularly or not at all).
 ImageGait imageGaitCycles(const KeypointTrial& trial,

@@ -46,6 +46,18 @@ Shape shapeOf(const Eigen::MatrixX3d& p) {
   return s;
 }
 
+// The median over frames of the seen joints' extent down the image (a detection's height).
+double medianHeightPx(const Eigen::MatrixXd& jointsPx) {
+  std::vector<double> heights;
+  for (Eigen::Index f = 0; f < jointsPx.rows(); ++f) {
+    Eigen::MatrixX3d points(kJointCount, 3);
+    for (int j = 0; j < kJointCount; ++j) points.row(j) << jointsPx(f, 2 * j), jointsPx(f, 2 * j + 1), 1.0;
+    const Shape shape = shapeOf(points);
+    if (shape.points >= 2) heights.push_back(shape.heightPx);
+  }
+  return heights.empty() ? 0.0 : median(heights);
+}
+
 struct Active {
   int track;
   Vector2d centre;
@@ -408,6 +420,7 @@ KeypointTrial trialFromJoints(const Eigen::MatrixXd& jointsPx, const Eigen::Matr
   }
   person.detection.assign(person.frames.size(), 0);
   person.jointsPx = presentRows(t.jointsPx, person);
+  person.sizePx = medianHeightPx(t.jointsPx);  // the walking checks measure in body heights
   t.maxPeople = person.frames.empty() ? 0 : 1;
   t.people.push_back(std::move(person));
   t.chosenReason = "the tracked person";

@@ -15,6 +15,9 @@
 #include "core/common/skeleton.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
+#include "core/engine/projection.h"
+#include "core/gait/fourier_walker_gait.h"
+#include "core/keypoints/image_gait.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "tests/camera/filmed_walk.h"
 #include "tests/common/error_matchers.h"
@@ -240,11 +243,101 @@ TEST(CameraReconstruction, ATrackedClipIsFittedLikeAFile) {
       ErrorKind::BadArgument, {"walk.mp4"}));
 }
 
-// Seen from behind, the ankles lead the pelvis little along the image's progression and their
-// strikes read a wrong stride (here 1.41 Hz for 0.95); the trunk's bob reads it in any view
-// (core/keypoints/image_gait.h) and then stands for the strikes: the fit holds it, says so and
-// recovers the walk. Crossing the image, where the strikes read it, they still give it.
-TEST(CameraReconstruction, SeenFromBehindTheTrunksBobGivesTheStride) {
+// Walking on a treadmill: the walker stays in the picture, so the image gives no progression;
+// the ankles' swing gives the walking direction, the fit holds the progression at zero and
+// recovers the camera from every side, and reads the belt's speed off the stance feet.
+TEST(CameraReconstruction, AWalkerOnATreadmillIsFittedInPlace) {
+  const double beltMps = measureFourierWalker(filmed(test::crossingPinhole(1500, 5.0)).w, 0.95, std::nullopt, "")
+                             .measures->speedMps;
+  for (double alpha : {-150.0, -90.0, -40.0, 0.0, 40.0, 90.0, 150.0}) {
+    SCOPED_TRACE("alpha " + std::to_string(alpha));
+    WalkCamera c = test::crossingPinhole(1500, 5.0);
+    c.alphaDeg = alpha;
+    c.speedMmS = 0.0;
+    c.startOffsetMm = 0.0;
+    KeypointOptions k;
+    k.fps = 30.0;
+    CameraFitOptions o;  // MAP, as the viewer and `reconstruct` fit a clip
+    o.focalPx = 1500;
+    o.imageSizePx = Eigen::Vector2d(1920, 1080);  // a video's: its centre is the principal point
+    const auto fitted = [&](const WalkCamera& camera, const char* name) {
+      const Scene s = filmed(camera);
+      return reconstructKeypointTrial(
+          defaultRealModel(), trialFromJoints(s.px, MatrixXd::Constant(s.px.rows(), kJointCount, 0.9), name, "tracked video", k), o);
+    };
+    const ClipReconstruction r = fitted(c, "treadmill.mp4");
+    WalkCamera passing = test::crossingPinhole(1500, 5.0);
+    passing.alphaDeg = alpha;
+    const ClipReconstruction overground = fitted(passing, "overground.mp4");
+    EXPECT_TRUE(r.gait.inPlace);
+    EXPECT_TRUE(r.fit.inPlace);
+    EXPECT_FALSE(overground.gait.inPlace);
+    EXPECT_EQ(r.fit.camera.speedMmS, 0.0);
+    std::printf("treadmill at %.0f°: fitted %.1f°, elevation %.1f° (walking past: %.1f°, %.1f°), %.2f Hz, belt %.2f m/s "
+                "(walker's stance feet %.2f), RMS %.2f px\n",
+                alpha, r.fit.camera.alphaDeg, r.fit.camera.elevationDeg, overground.fit.camera.alphaDeg,
+                overground.fit.camera.elevationDeg, r.fit.strideHz, r.fit.speedMps, beltMps, r.fit.reprojectionRmsPx);
+    EXPECT_LT(std::abs(wrapDeg(r.fit.camera.alphaDeg - alpha)), 3.0);
+    // The MAP prior's pull on a walker it does not hold exactly tilts both fits a little (walking
+    // past: 10.5–11.9° for 12°); in place, with no progression to show the perspective, a
+    // little more (9.4–10.2°).
+    EXPECT_NEAR(r.fit.camera.elevationDeg, 12.0, 3.0);
+    EXPECT_NEAR(r.fit.strideHz, 0.95, 0.01);
+    EXPECT_NEAR(r.fit.speedMps, beltMps, 0.05 * beltMps);
+  }
+}
+
+// A person standing in place, shifting a little, is not walking on a treadmill either.
+TEST(CameraReconstruction, StandingStillIsNotWalkingInPlace) {
+  WalkCamera c = test::crossingPinhole(1500, 5.0);
+  c.speedMmS = 0.0;
+  c.startOffsetMm = 0.0;
+  const EigenwalkerModel& m = defaultRealModel();
+  const VectorXd times = frameTimes(150, 30.0);
+  // The mean posture alone (no harmonics), swaying 2 cm sideways.
+  VectorXd still = m.mean;
+  still.tail(still.size() - 3 * kJointCount).setZero();
+  MatrixXd frames = synthesizeFrames(still, 2 * std::numbers::pi * 0.95, 0.0, times);
+  for (Eigen::Index f = 0; f < frames.rows(); ++f)
+    for (int j = 0; j < kJointCount; ++j) frames(f, 3 * j) += 20.0 * std::sin(2.0 * times[f]);
+  KeypointOptions k;
+  k.fps = 30.0;
+  const KeypointTrial trial = trialFromJoints(projectWalk(frames, times, c), MatrixXd::Constant(150, kJointCount, 0.9),
+                                              "standing.mp4", "tracked video", k);
+  EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(trial); }, ErrorKind::BadData,
+                                {"standing.mp4", "not walking", "the pelvis crosses 0.0", "size in it changes 0 %",
+                                 "ankle swings 0.00 of the walker's height"}));
+}
+
+// Seen from behind, the walker barely crosses the image; the ankles' swing about the pelvis
+// gives the direction their strikes are read along (until 2026-11-27 the pelvis's little travel
+// did, and the strikes read 1.41 Hz for 0.95). Where the strikes read wrong (a tracker's lost
+// feet: here the ankles jitter at 2.3 Hz along their swing), the trunk's bob reads the stride in
+// any view (core/keypoints/image_gait.h) and stands for them.
+TEST(CameraReconstruction, TheTrunksBobStandsForFeetThatReadAWrongStride) {
+  WalkCamera c = test::crossingPinhole(1500, 4.0);
+  c.alphaDeg = 0.0;
+  c.elevationDeg = 5;
+  c.distanceMm = 7000;
+  Scene s = filmed(c, 120);
+  KeypointOptions k;
+  k.fps = 30.0;
+  for (Joint ankle : {Joint::RAnkle, Joint::LAnkle})
+    for (Eigen::Index f = 0; f < s.px.rows(); ++f)
+      s.px(f, 2 * index(ankle) + 1) += 40.0 * std::sin(2 * std::numbers::pi * 2.3 * s.times[f]);
+  const KeypointTrial trial = trialFromJoints(s.px, MatrixXd::Ones(s.px.rows(), kJointCount), "walk.mp4", "tracked", k);
+  const double feetHz = imageGaitCycles(trial).strikesStrideHz;
+  EXPECT_GT(std::abs(feetHz - 0.95), kFeetDisagreeWithTheBobShare * 0.95) << feetHz << " Hz";
+  CameraFitOptions o;
+  std::string source;
+  gaitForTheFit(trial, o, source);
+  EXPECT_EQ(source.rfind("trunk's bob", 0), 0u) << source;
+  EXPECT_TRUE(o.holdStrideHz);
+  EXPECT_NEAR(o.strideHzHint.value_or(0.0), 0.95, 0.02);
+}
+
+// From behind and from the side the feet read the stride, and the fit recovers the walk.
+TEST(CameraReconstruction, SeenFromBehindOrTheSideTheFeetGiveTheStride) {
   for (const double alpha : {0.0, 90.0}) {
     SCOPED_TRACE(alpha);
     WalkCamera c = test::crossingPinhole(1500, 4.0);
@@ -257,14 +350,13 @@ TEST(CameraReconstruction, SeenFromBehindTheTrunksBobGivesTheStride) {
     const KeypointTrial trial = trialFromJoints(s.px, MatrixXd::Ones(s.px.rows(), kJointCount),
                                                 "walk.mp4", "true 2D", k);
     const double feetHz = imageGaitCycles(trial, 0.95).strikesStrideHz;
-    const bool feetAreWrong = std::abs(feetHz - 0.95) > kFeetDisagreeWithTheBobShare * 0.95;
-    EXPECT_EQ(feetAreWrong, alpha == 0.0) << feetHz << " Hz";
+    EXPECT_NEAR(feetHz, 0.95, kFeetDisagreeWithTheBobShare * 0.95);
     CameraFitOptions o;
     o.estimator = {Estimator::Lsq, 0.0};
     o.focalPx = 1500;
     const ClipReconstruction r = reconstructKeypointTrial(defaultRealModel(), trial, o);
-    EXPECT_EQ(r.strideSource.rfind(feetAreWrong ? "trunk's bob" : "foot strikes", 0), 0u)
-        << r.strideSource;
+    EXPECT_FALSE(r.gait.inPlace);  // walking away: it shrinks in the picture
+    EXPECT_EQ(r.strideSource.rfind("foot strikes", 0), 0u) << r.strideSource;
     EXPECT_NEAR(r.fit.camera.alphaDeg, alpha, 1e-3);
     expectSameWalk(r.fit, s);
   }

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "core/camera/walk_camera.h"
 #include "tests/camera/filmed_walk.h"
 #include "tests/common/test_support.h"
 
@@ -46,11 +47,32 @@ TEST(ReconstructCameraCli, OpenPoseFolderThroughAKnownFocalLength) {
   EXPECT_NEAR(r["speed_mps"].get<double>(), 1.3, 0.05 * 1.3);
   EXPECT_NEAR(r["stride_hz"].get<double>(), 0.95, 0.01);
   EXPECT_LT(r["reprojection_rms_px"].get<double>(), 6.0);
+  EXPECT_FALSE(r["walking_in_place"].get<bool>());
   // One row per input frame, after the header and comment lines.
   std::ifstream csv(out);
   int rows = 0;
   for (std::string line; std::getline(csv, line);) rows += !line.empty() && line[0] != '#' && line[0] != 'f';
   EXPECT_EQ(rows, 150);
+}
+
+// The same walker on a treadmill: fitted walking in place, its speed the belt's (stance feet).
+TEST(ReconstructCameraCli, ATreadmillWalkerIsFittedInPlace) {
+  const fs::path clip = test::makeTempDir("camera_cli_treadmill");
+  WalkCamera camera = test::crossingPinhole(1400, 5.0);
+  camera.speedMmS = camera.startOffsetMm = 0.0;
+  test::writeFilmedOpenPose(clip, camera, 150, 30.0);
+  const auto run = test::runProgram(EW_CLI_PATH,
+                                    {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
+                                     "--focal-px", "1400", "--out", (clip.parent_path() / "treadmill_walk3d.csv").string(),
+                                     "--json"},
+                                    test::makeTempDir("camera_cli_treadmill_run"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("walking in place (a treadmill), belt speed"), std::string::npos) << run.output;
+  const json r = json::parse(run.output.substr(run.output.find("{\n")));
+  EXPECT_TRUE(r["walking_in_place"].get<bool>());
+  EXPECT_NE(r["speed_source"].get<std::string>().find("stance feet"), std::string::npos);
+  EXPECT_NEAR(r["alpha_deg"].get<double>(), 40, 3.0);
+  EXPECT_NEAR(r["speed_mps"].get<double>(), 1.25, 0.15);  // the mean walker's stance feet
 }
 
 // Nothing known but the frame rate: the focal length is estimated too. Measured: 1405 px,

@@ -154,6 +154,32 @@ TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
   EXPECT_FALSE(standing["clip"]["fit"]["current"].get<bool>());
 }
 
+// A walker on a treadmill: it stays in the picture, and the viewer fits it walking in place —
+// the camera's azimuth from the body alone, the belt's speed from the stance feet — and says so.
+TEST_F(GuiClip, ATreadmillClipIsFittedWalkingInPlace) {
+  const fs::path folder = dir / "treadmill_json";
+  const Eigen::VectorXd t = frameTimes(150, 30.0);
+  const Eigen::MatrixXd walk = synthesizeFrames(defaultRealModel().mean, 2 * std::numbers::pi * kFilmedStrideHz, 0.2, t);
+  WalkCamera camera = crossingPinhole(1400, 5.0);
+  camera.speedMmS = camera.startOffsetMm = 0.0;
+  writeOpenPoseBody25(folder, {{projectWalk(walk, t, camera), Eigen::MatrixXd()}});
+  const json script = json::array({{{"open", folder.string()}},
+                                   {{"set_frame", 10}},
+                                   {{"wait_frames", 2}},
+                                   {{"export_state", path("treadmill.json")}},
+                                   {{"screenshot", path("treadmill.png")}}});
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(writeScript(dir, script.dump(2)).string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const json treadmill = state("treadmill.json");
+  const json& fit = treadmill["clip"]["fit"];
+  ASSERT_TRUE(fit.is_object()) << treadmill["clip"].dump(1);
+  EXPECT_TRUE(fit["walking_in_place"].get<bool>());
+  EXPECT_NEAR(fit["alpha_deg"].get<double>(), 40.0, 3.0);
+  // The mean walker's stance feet move back at 1.2–1.3 m/s (its walkers' mean speed: 1.14 m/s).
+  EXPECT_NEAR(fit["speed_mps"].get<double>(), 1.25, 0.15);
+  EXPECT_LT(fit["reprojection_rms_px"].get<double>(), 6.0);
+}
+
 // Issue 18's layout in clip mode (issue 13): at the teaching sizes every drawer tab holds and
 // the 2D view's caption and legend stay off the walker.
 // A clip's 2D view frames the region the walker crosses, where a walker crossing the picture

@@ -175,17 +175,24 @@ TEST(ImageGait, AHeldStrideStandsForFeetThatDoNotStrike) {
   const ImageGait g = imageGaitCycles(t, clip.strideHz);
   EXPECT_EQ(g.strideHz, clip.strideHz);
   EXPECT_NEAR(g.cycles, static_cast<double>(t.frameCount) / t.rateHz * clip.strideHz, 1e-9);
-  const Clip spot = meanWalkerClip("gait_held_spot", 90.0, 0.0, 3.0);
-  const KeypointTrial still = readKeypointTrial(spot.folder, at30Fps());
-  EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(still, spot.strideHz); }, ErrorKind::BadData,
-                                {"not walking: the pelvis crosses"}));
+  // A figure standing still (a track frozen on its first frame) does not walk in place either.
+  for (Eigen::Index f = 1; f < n; ++f) t.jointsPx.row(f) = t.jointsPx.row(0);
+  EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(t, clip.strideHz); }, ErrorKind::BadData,
+                                {"not walking: the pelvis crosses 0.0", "the ankles do not swing"}));
 }
 
-TEST(ImageGait, WalkingOnTheSpotIsNotWalking) {
+// Walking on the spot (a treadmill): the pelvis stays and the walker keeps its size, the
+// ankles swing about it. Walking in place, its stride read from the strikes along the swing.
+TEST(ImageGait, WalkingOnTheSpotIsWalkingInPlace) {
   const Clip clip = meanWalkerClip("gait_spot", 90.0, 0.0, 3.0);
   const KeypointTrial t = readKeypointTrial(clip.folder, at30Fps());
-  EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(t); }, ErrorKind::BadData,
-                                {"not walking: the pelvis crosses 0.0 of the walker's height"}));
+  const ImageGait g = imageGaitCycles(t);
+  EXPECT_TRUE(g.inPlace);
+  EXPECT_NEAR(g.strideHz, clip.strideHz, 0.03 * clip.strideHz);
+  EXPECT_LT(g.travelPx, 0.05 * t.people[static_cast<std::size_t>(t.chosen)].sizePx);  // its sway
+  // Walking past, the same walker is not in place.
+  const Clip past = meanWalkerClip("gait_past", 90.0, 1300, 4.0);
+  EXPECT_FALSE(imageGaitCycles(readKeypointTrial(past.folder, at30Fps())).inPlace);
 }
 
 TEST(ImageGait, InfoSummarisesKeypointFolders) {
@@ -233,7 +240,11 @@ TEST(ImageGait, Pose2SimBalancingIsNotWalking) {
   for (const auto& p : inputs) {
     const TrialSummary s = summarizeKeypoints(p);
     EXPECT_EQ(s.errorStage, "walking") << s.error;
+    // The man stands on one leg on the treadmill: the pelvis stays, and his feet do not walk.
     EXPECT_NE(s.error.find("not walking: the pelvis crosses"), std::string::npos) << s.error;
+    EXPECT_TRUE(s.error.find("no regular foot strikes") != std::string::npos ||
+                s.error.find("ankle") != std::string::npos)
+        << s.error;
     EXPECT_EQ(s.source, "BODY_25B");
   }
 }

@@ -157,6 +157,7 @@ nlohmann::json clipJson(const AppState& s) {
       {"residual_rms_px", residuals},
       {"head_height_m", f.headHeightMm / 1000.0},
       {"stature_m", f.statureMm / 1000.0},
+      {"walking_in_place", f.inPlace},
       {"speed_mps", f.speedMps},
       {"stride_hz", f.strideHz},
       {"stride_length_m", f.strideLengthM},

@@ -51,7 +51,9 @@ std::optional<Shown> shownClip(const AppState& s) {
   Shown out;
   out.strideHz = f.strideHz;
   out.walker = s.clip->settings.path.filename().string();
-  out.columns.push_back({"reconstruction", "through the estimated camera", -1, &f.w, f.speedMps});
+  // Walking in place, the speed is the stance feet's: the report reads it off them itself.
+  out.columns.push_back({"reconstruction", "through the estimated camera", -1, &f.w,
+                         f.inPlace ? std::nullopt : std::optional<double>(f.speedMps)});
   return out;
 }
 

@@ -22,7 +22,8 @@ std::vector<MetricItem> clipItems(const AppState& s) {
   const CameraFit& f = rec.fit;
   return {{"stature  est.", formatted("%.2f m", f.statureMm / 1000.0),
            formatted("head %.2f m", f.headHeightMm / 1000.0)},
-          {"speed", formatted("%.2f m/s", f.speedMps), rec.trial.rateAssumed ? "(30 fps?)" : ""},
+          {f.inPlace ? "belt speed" : "speed", formatted("%.2f m/s", f.speedMps),
+           rec.trial.rateAssumed ? "(30 fps?)" : f.inPlace ? "in place" : ""},
           {"stride length", formatted("%.2f m", f.strideLengthM), formatted("%.2f Hz", f.strideHz)},
           {"cadence  steps", formatted("%.0f /min", f.cadenceStepsPerMin),
            rec.strideSource.starts_with("trunk") ? "trunk's bob" : ""},
