@@ -196,16 +196,18 @@ ViewCaption clipReconstructionCaption(const AppState& s) {
   if (c.model == CameraModel::Pinhole) {
     const ClipWorld w = clipWorld(*s.clip, 0);
     // The camera's distance to the walker's path (the line x = 0 of the walk).
-    std::snprintf(sub, sizeof sub, "camera %s, %.1f m from the walking line, azimuth %.1f°, %s",
-                  heightOverAnklesText(w.eye.z).c_str(), std::abs(w.eye.x) / 1000.0, c.alphaDeg,
+    std::snprintf(sub, sizeof sub, "camera %s, %.1f m from the %s, azimuth %.1f°, %s",
+                  heightOverAnklesText(w.eye.z).c_str(), std::abs(w.eye.x) / 1000.0,
+                  fit.inPlace ? "treadmill's line (walking in place)" : "walking line", c.alphaDeg,
                   tiltText(c.elevationDeg).c_str());
   } else {
     std::snprintf(sub, sizeof sub, "scaled orthography: azimuth %.1f°, %s (distance not estimated; drawn at 5 m)",
                   c.alphaDeg, tiltText(c.elevationDeg).c_str());
   }
   std::vector<LegendItem> legend{{palette::kReconRight, "reconstruction (right side darker)", false},
-                                 {palette::kCamera, "estimated camera, its view of the walk", true},
-                                 {palette::kReconMid, "walking line over the clip", true}};
+                                 {palette::kCamera, "estimated camera, its view of the walk", true}};
+  // Walking in place the walker covers no ground: there is no line to draw.
+  if (!fit.inPlace) legend.push_back({palette::kReconMid, "walking line over the clip", true});
   if (!fit.unseenJoints.empty()) legend.push_back({palette::kModelEstimated, "never seen: from the model", false});
   return {"3D reconstruction and the estimated camera", sub, std::move(legend)};
 }
