@@ -35,19 +35,26 @@ Eigen::Vector2d pelvisAtEnd(const KeypointTrial& t, bool last) {
   return sum / static_cast<double>(n);
 }
 
-// Mean extent down the image of the joints seen, over the first (or last) tenth of the frames
-// where most are seen (a frame missing the head or the feet is no measure of size).
+// The walker's size in one frame: the lower ankle below the head (else the sternum), px; NaN
+// without both (a detector's frame missing the head and the neck, or both feet).
+double frameSizePx(const KeypointTrial& t, Eigen::Index f) {
+  const auto v = [&](Joint j) {
+    const double u = t.jointsPx(f, 2 * index(j)), y = t.jointsPx(f, 2 * index(j) + 1);
+    return std::isfinite(u) ? y : NAN;
+  };
+  const double top = std::isfinite(v(Joint::Head)) ? v(Joint::Head) : v(Joint::Sternum);
+  const double r = v(Joint::RAnkle), l = v(Joint::LAnkle);
+  const double bottom = std::isfinite(r) && std::isfinite(l) ? std::max(r, l) : std::isfinite(r) ? r : l;
+  return bottom - top;
+}
+
+// The walker's mean size over the first (or last) tenth of the frames where it can be
+// measured (frameSizePx); NaN when no frame can.
 double extentAtEnd(const KeypointTrial& t, bool last) {
   std::vector<double> extents;
   for (Eigen::Index f = 0; f < t.jointsPx.rows(); ++f) {
-    double top = INFINITY, bottom = -INFINITY;
-    int seen = 0;
-    for (int j = 0; j < kJointCount; ++j) {
-      const double v = t.jointsPx(f, 2 * j + 1);
-      if (!std::isfinite(v) || !std::isfinite(t.jointsPx(f, 2 * j))) continue;
-      top = std::min(top, v), bottom = std::max(bottom, v), ++seen;
-    }
-    if (seen >= kJointCount - 3) extents.push_back(bottom - top);
+    const double size = frameSizePx(t, f);
+    if (std::isfinite(size)) extents.push_back(size);
   }
   if (extents.empty()) return NAN;
   const std::size_t n = std::max<std::size_t>(1, extents.size() / 10);
@@ -84,10 +91,11 @@ std::vector<std::vector<Eigen::Vector2d>> ankleLeads(const KeypointTrial& t) {
   return leads;
 }
 
-// The way the feet swing in the image when the walker stays in place: the main axis of the
-// ankles' offsets from the pelvis, pointing the way they move for the shorter part of the
-// time (a foot swings forward in about 40 % of a stride and is carried back in the rest).
-// Unset when the ankles are seen too little or move no way more than another.
+// The way the feet swing in the image, for a walker that does not cross it (in place, or
+// towards or away from the camera): the main axis of the ankles' offsets from the pelvis,
+// pointing the way they move for the shorter part of the time (a foot swings forward in about
+// 40 % of a stride and is carried back in the rest). Unset when the ankles are seen too little
+// or move no way more than another.
 std::optional<Eigen::Vector2d> ankleSwingDirection(const KeypointTrial& t) {
   const auto leads = ankleLeads(t);
   Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
