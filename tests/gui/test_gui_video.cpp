@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
@@ -154,6 +156,62 @@ TEST_F(GuiVideo, MagnifiesThePictureToMarkTheWalker) {
   EXPECT_NEAR(footage(zoomed)[0].get<double>() + scale * centre[0].get<double>(), input[0] + 0.5 * input[2], 2.0);
   EXPECT_EQ(again["video"]["zoom"], 1.0);
   EXPECT_EQ(footage(again), footage(whole));
+}
+
+// The magnifier by the mouse itself (a script's pointer): the wheel zooms about the pixel
+// under the cursor, a right-drag moves the magnified picture with the pointer, a right double
+// click shows the whole picture again.
+TEST_F(GuiVideo, TheMouseMagnifiesAboutTheCursorAndDragsThePicture) {
+  const Footage f = writeWalkingFootage(dir);
+  const auto first = writeScript(dir, json::array({{{"open", f.video.string()}},
+                                                   {{"wait_frames", 2}},
+                                                   {{"export_state", path("layout.json")}}})
+                                          .dump());
+  ASSERT_EQ(runViewer(dir, "--size 1280x720 --script " + quote(first.string())).exitCode, 0);
+  const json layout = state("layout.json")["layout"];
+  const auto rect = [](const json& r) { return std::array<double, 4>{r[0], r[1], r[2], r[3]}; };
+  const auto view = rect(layout["input"]);
+  const auto whole = rect(layout["overlays"]["input.footage"]);
+  // A point two fifths across the view and half-way down: on the picture, off its middle.
+  const double px = view[0] + 0.4 * view[2], py = view[1] + 0.5 * view[3];
+  const json script = json::array({
+      {{"open", f.video.string()}},
+      {{"wait_frames", 2}},
+      {{"mouse", {{"at", {px, py}}}}},
+      {{"mouse", {{"wheel", 2}}}},
+      {{"wait_frames", 1}},
+      {{"export_state", path("wheeled.json")}},
+      {{"mouse", {{"press", "right"}}}},
+      {{"mouse", {{"at", {px - 100.0, py - 50.0}}}}},
+      {{"mouse", {{"release", "right"}}}},
+      {{"wait_frames", 1}},
+      {{"export_state", path("dragged.json")}},
+      {{"mouse", {{"press", "right"}}}},
+      {{"mouse", {{"release", "right"}}}},
+      {{"mouse", {{"press", "right"}}}},
+      {{"mouse", {{"release", "right"}}}},
+      {{"mouse", {{"away", true}}}},
+      {{"wait_frames", 1}},
+      {{"export_state", path("whole.json")}},
+  });
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(writeScript(dir, script.dump(2)).string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+
+  const json wheeled = state("wheeled.json");
+  EXPECT_NEAR(wheeled["video"]["zoom"].get<double>(), 1.5625, 1e-9);  // two notches of 1.25
+  const auto zoomed = rect(wheeled["layout"]["overlays"]["input.footage"]);
+  // The video pixel under the cursor stays under it.
+  const double u = (px - whole[0]) / whole[2], v = (py - whole[1]) / whole[3];
+  EXPECT_NEAR(zoomed[2], 1.5625 * whole[2], 2.0);
+  EXPECT_NEAR(zoomed[0] + u * zoomed[2], px, 2.0);
+  EXPECT_NEAR(zoomed[1] + v * zoomed[3], py, 2.0);
+  // Dragged: the picture went with the pointer, 100 px left and 50 px up.
+  const auto dragged = rect(state("dragged.json")["layout"]["overlays"]["input.footage"]);
+  EXPECT_NEAR(dragged[0], zoomed[0] - 100.0, 2.0);
+  EXPECT_NEAR(dragged[1], zoomed[1] - 50.0, 2.0);
+  const json again = state("whole.json");
+  EXPECT_EQ(again["video"]["zoom"], 1.0);
+  EXPECT_EQ(rect(again["layout"]["overlays"]["input.footage"]), whole);
 }
 
 TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {

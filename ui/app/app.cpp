@@ -22,6 +22,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "ui/app/actions.h"
@@ -584,12 +585,23 @@ class App {
     }
   }
 
+  void applyScriptedPointer() {
+    ImGuiIO& io = ImGui::GetIO();
+    auto& p = state_.pointer;
+    io.MousePos = p.present ? ImVec2(p.x, p.y) : ImVec2(-FLT_MAX, -FLT_MAX);
+    for (std::size_t i = 0; i < p.down.size(); ++i) io.MouseDown[i] = p.down[i];
+    io.MouseWheel = std::exchange(p.wheel, 0.0f);
+    // ImGui's clicks and double clicks are timed: a frame's real time under a loaded CI machine
+    // would make them depend on its load.
+    io.DeltaTime = 1.0f / 60.0f;
+  }
+
   void drawFrame(double dt) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
-    // A scripted run ignores the pointer: under Xvfb it rests mid-screen, and its hover
-    // highlights and tooltips would land in screenshots at random.
-    if (scripted_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+    // A scripted run ignores the real pointer (under Xvfb it rests mid-screen, and its hover
+    // highlights and tooltips would land in screenshots at random) for the script's own.
+    if (scripted_) applyScriptedPointer();
     ImGui::NewFrame();
     const ImGuiIO& io = ImGui::GetIO();
     const bool notice = state_.panels.notice.visible(state_);

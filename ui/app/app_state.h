@@ -1,4 +1,6 @@
 #pragma once
+
+#include <array>
 // Everything the viewer knows, in one place: the document, the view state, the derived
 // caches, the background jobs, the log, and one struct per panel (each panel's own
 // state lives in its struct, never in function-local statics).
@@ -178,6 +180,13 @@ struct AppState {
   Fonts presentationFonts;  // the same, kPresentationTextScale larger
   Panels panels;
   FrameRecord lastFrame;
+  // The pointer a script drives (its `mouse` action); a scripted run has no other.
+  struct ScriptedPointer {
+    bool present = false;          // over the window at (x, y), window pixels
+    float x = 0.0f, y = 0.0f;
+    std::array<bool, 3> down{};    // left, right, middle
+    float wheel = 0.0f;            // notches, given to the next frame only
+  } pointer;
   std::vector<std::filesystem::path> recentPaths;  // opened successfully, newest first (≤ 10)
   bool quitRequested = false;
   std::uint64_t frame = 0;

@@ -30,13 +30,48 @@ const std::set<std::string>& knownActions() {
       "set_engine", "video_frame", "video_zoom", "clip_zoom", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "save_track", "mark_from_keypoints", "drag_joint", "track_video",
       "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab",
-      "set_semantic", "presentation", "key", "undo", "redo", "header_more"};
+      "set_semantic", "presentation", "key", "undo", "redo", "header_more", "mouse"};
   // clang-format on
   return names;
 }
 
 // Frames rendered after the work is done before a screenshot, so the UI has settled.
 constexpr int kSettleFrames = 2;
+
+// The `mouse` action's button: "left", "right" or "middle".
+std::size_t mouseButton(const nlohmann::json& v) {
+  const std::string b = v.is_string() ? v.get<std::string>() : std::string();
+  if (b == "left") return 0;
+  if (b == "right") return 1;
+  if (b == "middle") return 2;
+  throw std::invalid_argument("a mouse button is \"left\", \"right\" or \"middle\"");
+}
+
+// {"at": [x, y]} (window pixels, as a screenshot's), {"press": B}, {"release": B},
+// {"wheel": notches} (up is positive), {"away": true}; several keys apply in that order.
+void applyMouse(AppState& s, const nlohmann::json& arg) {
+  if (!arg.is_object() || arg.empty())
+    throw std::invalid_argument(R"(expects {"at": [x, y]}, {"press": "left"}, {"release": "left"}, {"wheel": 1} or {"away": true})");
+  for (const auto& [key, value] : arg.items())
+    if (key != "at" && key != "press" && key != "release" && key != "wheel" && key != "away")
+      throw std::invalid_argument("no mouse key \"" + key + "\" (at, press, release, wheel, away)");
+  auto& p = s.pointer;
+  if (arg.contains("at")) {
+    const auto& at = arg["at"];
+    if (!at.is_array() || at.size() != 2 || !at[0].is_number() || !at[1].is_number())
+      throw std::invalid_argument("\"at\" expects [x, y] in window pixels");
+    p.present = true;
+    p.x = at[0].get<float>();
+    p.y = at[1].get<float>();
+  }
+  if (arg.contains("press")) p.down[mouseButton(arg["press"])] = true;
+  if (arg.contains("release")) p.down[mouseButton(arg["release"])] = false;
+  if (arg.contains("wheel")) {
+    if (!arg["wheel"].is_number()) throw std::invalid_argument("\"wheel\" expects a number of notches");
+    p.wheel += arg["wheel"].get<float>();
+  }
+  if (arg.contains("away")) p = AppState::ScriptedPointer{};
+}
 
 double number(const ScriptAction& a) {
   if (!a.argument.is_number()) throw std::invalid_argument("expects a number");
@@ -427,6 +462,9 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
   const auto& n = a.name;
   if (n == "expect_failure") {
     applyExpectingFailure(s, a);
+  } else if (n == "mouse") {
+    applyMouse(s, a.argument);
+    waitFrames_ = 1;  // the next action comes a frame after this one is seen
   } else if (n == "track_video") {
     // {"first": F, "last": L[, "tracker": "flow" | "appearance"][, "flatten_background": B]
     //  [, "hold_trunk": B][, "model_loop": N]}
@@ -628,8 +666,8 @@ void ScriptRunner::step(AppState& s) {
     // from before the track.
     if (a.name == "open" || a.name == "drop" || a.name == "reload" || a.name == "expect_failure" ||
         a.name == "write_joint_mapping" || a.name == "wait_frames" || a.name == "screenshot" ||
-        a.name == "set_clip" || a.name == "export_png" || a.name == "export_video" || checkLoad_ ||
-        s.busy())
+        a.name == "set_clip" || a.name == "export_png" || a.name == "export_video" || a.name == "mouse" ||
+        checkLoad_ || s.busy())
       return;
   }
 }
