@@ -214,6 +214,46 @@ TEST_F(GuiVideo, TheMouseMagnifiesAboutTheCursorAndDragsThePicture) {
   EXPECT_EQ(rect(again["layout"]["overlays"]["input.footage"]), whole);
 }
 
+// Dragging a marked joint with the mouse moves it on that frame (issue 14: "drag to correct").
+TEST_F(GuiVideo, DraggingAMarkWithTheMouseMovesIt) {
+  const Footage f = writeWalkingFootage(dir);
+  const auto first = writeScript(dir, json::array({{{"open", json::array({f.video.string(), f.keyframes.string()})}},
+                                                   {{"video_frame", 0}},
+                                                   {{"wait_frames", 2}},
+                                                   {{"export_state", path("layout.json")}}})
+                                          .dump());
+  ASSERT_EQ(runViewer(dir, "--size 1280x720 --script " + quote(first.string())).exitCode, 0);
+  const json opened = state("layout.json");
+  const json& footage = opened["layout"]["overlays"]["input.footage"];
+  const double screenPerVideoPx = footage[2].get<double>() / opened["video"]["width_px"].get<double>();
+  const int pelvis = index(Joint::Pelvis);
+  const double sx = footage[0].get<double>() + screenPerVideoPx * f.truthPx(0, 2 * pelvis);
+  const double sy = footage[1].get<double>() + screenPerVideoPx * f.truthPx(0, 2 * pelvis + 1);
+  const json script = json::array({
+      {{"open", json::array({f.video.string(), f.keyframes.string()})}},
+      {{"video_frame", 0}},
+      {{"wait_frames", 2}},
+      {{"mouse", {{"at", {sx, sy}}}}},
+      {{"mouse", {{"press", "left"}}}},
+      {{"mouse", {{"at", {sx + 20.0, sy}}}}},
+      {{"mouse", {{"at", {sx + 40.0, sy + 10.0}}}}},
+      {{"mouse", {{"release", "left"}}}},
+      {{"mouse", {{"away", true}}}},
+      {{"save_keyframes", path("dragged_keyframes.json")}},
+  });
+  const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(writeScript(dir, script.dump(2)).string()));
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const Keyframes saved = readKeyframes(dir / "dragged_keyframes.json");
+  const Keyframe* k = nullptr;
+  for (const auto& kf : saved.keyframes)
+    if (kf.frame == 0) k = &kf;
+  ASSERT_NE(k, nullptr);
+  EXPECT_NEAR(k->jointsPx[2 * pelvis], f.truthPx(0, 2 * pelvis) + 40.0 / screenPerVideoPx, 1.0);
+  EXPECT_NEAR(k->jointsPx[2 * pelvis + 1], f.truthPx(0, 2 * pelvis + 1) + 10.0 / screenPerVideoPx, 1.0);
+  const int head = index(Joint::Head);  // the others stay where they were marked
+  EXPECT_NEAR(k->jointsPx[2 * head], f.truthPx(0, 2 * head), 1e-6);
+}
+
 TEST_F(GuiVideo, MarkTrackAndSeeTheWalkerOverTheFootage) {
   const Footage f = writeWalkingFootage(dir);
   ASSERT_GE(f.truthPx.rows(), 90) << "three gait cycles at 30 fps";
