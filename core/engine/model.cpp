@@ -72,6 +72,12 @@ double EigenwalkerModel::explainedVariance() const {
   return total > 0.0 ? eigenvalues.sum() / total : 1.0;
 }
 
+Eigen::MatrixXd storedWalkerVectors(const EigenwalkerModel& model) {
+  Eigen::MatrixXd w = model.eigenwalkers * model.coefficients;
+  w.colwise() += model.mean;
+  return w;
+}
+
 double defaultSigma2Mm2(const EigenwalkerModel& model) {
   return model.sigma2Optimum ? model.sigma2Optimum->sigma2Mm2 : kPaperSigma2Mm2;
 }

@@ -61,6 +61,10 @@ struct EigenwalkerModel {
   double explainedVariance() const;
 };
 
+// The walkers the model was built from as it stores them, one column each (225 × R): w̄ + E k_r,
+// exact when the model kept every component (R − 1), else their N eigenwalkers' part.
+Eigen::MatrixXd storedWalkerVectors(const EigenwalkerModel& model);
+
 // The σ² a MAP reconstruction with this model uses when the user gives none: the optimum
 // stored in the model, else kPaperSigma2Mm2.
 double defaultSigma2Mm2(const EigenwalkerModel& model);

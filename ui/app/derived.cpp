@@ -41,26 +41,60 @@ std::pair<double, std::string> walkerSpeedMps(const Document& doc, int walker) {
   return {1.3, "typical adult"};
 }
 
-SnippetPriorCache::Entry SnippetPriorCache::get(const Document& doc, const std::string& withoutSubject) {
-  if (generation_ != doc.generation || population_ != doc.population.get()) {
-    entries_.clear();
-    generation_ = doc.generation;
-    population_ = doc.population.get();
+namespace {
+
+// The held model's walkers without `withoutSubject` (a model subject's name, "" for none), at
+// the speeds the model records (else the mean of those it does, else a typical adult's).
+std::vector<FourierWalkerTrial> modelPriorWalkers(const EigenwalkerModel& model, const std::string& withoutSubject) {
+  double known = 0.0;
+  int counted = 0;
+  for (const auto& v : model.speedsMps)
+    if (v) known += *v, ++counted;
+  const double fallback = counted > 0 ? known / counted : 1.3;
+  const Eigen::MatrixXd stored = storedWalkerVectors(model);
+  std::vector<FourierWalkerTrial> walkers;
+  for (int r = 0; r < model.walkerCount(); ++r) {
+    const auto k = static_cast<std::size_t>(r);
+    if (model.subjects[k] == withoutSubject) continue;
+    const double speed = k < model.speedsMps.size() && model.speedsMps[k] ? *model.speedsMps[k] : fallback;
+    walkers.push_back({model.subjects[k], model.walkerIds[k], stored.col(r), model.omegasRadS[r], speed});
   }
-  if (auto it = entries_.find(withoutSubject); it != entries_.end()) return it->second;
-  if (!doc.population) throw std::runtime_error("snippet engine: no population to learn a prior from");
+  return walkers;
+}
+
+std::vector<FourierWalkerTrial> populationPriorWalkers(const Document& doc, const std::string& withoutSubject) {
   std::vector<FourierWalkerTrial> walkers;
   for (int i = 0; i < doc.population->walkerCount(); ++i) {
     const Walker& w = doc.population->walkers[static_cast<std::size_t>(i)];
     if (w.subject == withoutSubject) continue;
     walkers.push_back({w.subject, w.id, w.fit.w, w.fit.omegaRadS, walkerSpeedMps(doc, i).first});
   }
+  return walkers;
+}
+
+}  // namespace
+
+SnippetPriorCache::Entry SnippetPriorCache::get(const Document& doc, int index) {
+  const EigenwalkerModel* held = doc.modelSource != ModelSource::Population ? doc.heldModel() : nullptr;
+  if (generation_ != doc.generation || population_ != doc.population.get() || model_ != held) {
+    entries_.clear();
+    generation_ = doc.generation;
+    population_ = doc.population.get();
+    model_ = held;
+  }
+  const Walker* walker = doc.walkerAt(index);
+  if (!walker) throw std::runtime_error("snippet engine: no walker " + std::to_string(index));
+  // The subject left out, as the eigenwalker's leave-one-out names it (held_model.h).
+  const std::string without = held ? subjectInModel(*held, *walker) : walker->subject;
+  if (auto it = entries_.find(without); it != entries_.end()) return it->second;
+  if (!held && !doc.population) throw std::runtime_error("snippet engine: no population to learn a prior from");
+  const std::vector<FourierWalkerTrial> walkers = held ? modelPriorWalkers(*held, without) : populationPriorWalkers(doc, without);
   Entry e;
   e.walkers = static_cast<int>(walkers.size());
   e.prior = std::make_shared<const PreparedSnippetPrior>(
       prepareSnippetPrior(trainSnippetPrior(snippetTrialsFromFourier(walkers), {})));
   ++trainings_;
-  return entries_[withoutSubject] = e;
+  return entries_[without] = e;
 }
 
 namespace {
@@ -79,7 +113,7 @@ void summariseAsOneCycle(const EngineResult& e, double omegaRadS, ReconBase& r) 
 // summarised as one cycle into r.estimate (w, and k as that w's nearest model coefficients).
 void reconstructWithSnippets(const Document& doc, const ReconKey& key, const Walker& walker,
                              SnippetPriorCache& priors, ReconBase& r) {
-  const SnippetPriorCache::Entry prior = priors.get(doc, walker.subject);
+  const SnippetPriorCache::Entry prior = priors.get(doc, key.walker);
   r.priorWalkers = prior.walkers;
   std::tie(r.speedMps, r.speedSource) = walkerSpeedMps(doc, key.walker);
   const double omega = walker.fit.omegaRadS;

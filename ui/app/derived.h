@@ -145,12 +145,16 @@ class SnippetPriorCache {
     std::shared_ptr<const PreparedSnippetPrior> prior;
     int walkers = 0;
   };
-  Entry get(const Document& doc, const std::string& withoutSubject);
+  // The prior learnt from the walkers the eigenwalker reconstructs walker `index` against (the
+  // loaded population, or the held model's walkers: the engines compared on the same
+  // reference walkers), without the walker's own subject.
+  Entry get(const Document& doc, int index);
   int trainings() const { return trainings_; }
 
  private:
   std::uint64_t generation_ = 0;
   const Population* population_ = nullptr;
+  const EigenwalkerModel* model_ = nullptr;  // the held model when it is not the population's
   std::map<std::string, Entry> entries_;
   int trainings_ = 0;
 };

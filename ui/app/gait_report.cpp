@@ -145,9 +145,10 @@ GaitBand populationGaitBand(const Population& population) {
 
 GaitBand modelGaitBand(const EigenwalkerModel& model, const std::string& name) {
   std::vector<BandWalker> walkers;
+  const Eigen::MatrixXd stored = storedWalkerVectors(model);
   for (int r = 0; r < model.walkerCount(); ++r) {
     const auto k = static_cast<size_t>(r);
-    walkers.push_back({model.mean + model.eigenwalkers * model.coefficients.col(r),
+    walkers.push_back({stored.col(r),
                        model.omegasRadS[r] / (2.0 * std::numbers::pi),
                        k < model.speedsMps.size() ? model.speedsMps[k] : std::nullopt, model.walkerIds[k]});
   }

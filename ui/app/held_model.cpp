@@ -29,18 +29,10 @@ bool namesSubject(const std::string& modelSubject, const std::string& subject) {
          isLetters(modelSubject.substr(0, prefix));
 }
 
-// The walkers' Fourier vectors as the model stores them: w̄ + E k_r (exact when the model
-// kept every component, R − 1).
-Eigen::MatrixXd storedWalkers(const EigenwalkerModel& m) {
-  Eigen::MatrixXd w = m.eigenwalkers * m.coefficients;
-  w.colwise() += m.mean;
-  return w;
-}
-
 EigenwalkerModel leaveOneOut(const EigenwalkerModel& m, const std::string& subject) {
   ModelOptions every;
   every.components = m.walkerCount();  // clamped to R' − 1 by the engine
-  return buildModelWithoutSubject(storedWalkers(m), m.walkerIds, m.subjects, m.omegasRadS, subject,
+  return buildModelWithoutSubject(storedWalkerVectors(m), m.walkerIds, m.subjects, m.omegasRadS, subject,
                                   every);
 }
 
