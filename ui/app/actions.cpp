@@ -940,41 +940,62 @@ void exportState(AppState& s, const std::filesystem::path& path) {
 
 // [SECTION] Analysis
 
+namespace {
+
+// The model held when it is not the population's own (the default model, an opened .ewm).
+const EigenwalkerModel* heldOtherModel(const AppState& s) {
+  return s.doc.modelSource != ModelSource::Population ? s.doc.heldModel() : nullptr;
+}
+
+AnalysisWalkers analysisWalkers(const AppState& s) {
+  if (const EigenwalkerModel* model = heldOtherModel(s))
+    return modelAnalysisWalkers(*model, s.doc.modelSource == ModelSource::Default ? "the default model"
+                                                                                   : heldModelName(s.doc));
+  if (!s.doc.population) throw std::invalid_argument("the analysis needs a loaded population or a model");
+  return populationAnalysisWalkers(*s.doc.population);
+}
+
+}  // namespace
+
 AnalysisKey analysisKey(const AppState& s) {
   return {s.doc.generation, s.doc.recon.components, s.doc.recon.sigma2Mm2,
-          s.panels.analysis.showEngines || s.doc.compareEngines};
+          s.panels.analysis.showEngines || s.doc.compareEngines, heldOtherModel(s)};
+}
+
+std::string analysisSubject(const AppState& s) {
+  const Walker* w = s.doc.selectedWalker();
+  if (!w) return "";
+  if (const EigenwalkerModel* model = heldOtherModel(s)) return subjectInModel(*model, *w);
+  return s.doc.isInspected(s.doc.walker) ? std::string() : w->subject;
 }
 
 void requestAnalysis(AppState& s) {
-  if (!s.doc.population || s.jobs.load.running() || s.jobs.analysis.running()) return;
+  if ((!s.doc.population && !heldOtherModel(s)) || s.jobs.load.running() || s.jobs.analysis.running()) return;
   const AnalysisKey key = analysisKey(s);
   if (s.analysis.find(key) || s.jobs.analysisFailed == key) return;
-  auto population = s.doc.population;
   s.jobs.analysisRunning = key;
   s.jobs.analysis.start(
       "Analysis (leave-one-subject-out, −90…90°)",
-      [population, key](JobProgress& progress) -> std::shared_ptr<const AnalysisResult> {
+      [walkers = analysisWalkers(s), key](JobProgress& progress) -> std::shared_ptr<const AnalysisResult> {
         return std::make_shared<const AnalysisResult>(computeAnalysis(
-            *population, key, [&progress](int done, int total, const std::string& what) {
+            walkers, key, [&progress](int done, int total, const std::string& what) {
               progress.set(done, total, what);
             }));
       });
 }
 
 std::shared_ptr<const AnalysisResult> analysisNow(AppState& s) {
-  if (!s.doc.population) throw std::invalid_argument("the analysis needs a loaded population");
   const AnalysisKey key = analysisKey(s);
   if (auto cached = s.analysis.find(key)) return cached;
-  auto result = std::make_shared<const AnalysisResult>(computeAnalysis(*s.doc.population, key, {}));
+  auto result = std::make_shared<const AnalysisResult>(computeAnalysis(analysisWalkers(s), key, {}));
   s.analysis.add(result);
   return result;
 }
 
 void exportAnalysisCsv(AppState& s, const std::filesystem::path& path) {
   const auto result = analysisNow(s);
-  // An inspected walker is no population member: the curves are the population's mean.
-  const Walker* w = s.doc.selectedWalker();
-  const std::string subject = w && !s.doc.isInspected(s.doc.walker) ? w->subject : std::string();
+  // A walker that is none of the analysed subjects has no curve of its own: the mean is written.
+  const std::string subject = analysisSubject(s);
   writeAnalysisCsv(*result, subject, path);
   s.log.info("Wrote " + path.string() + " (analysis curves, " +
              (subject.empty() ? std::string("the mean") : subject + " and the mean") + ")");

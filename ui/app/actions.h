@@ -97,7 +97,11 @@ void exportState(AppState& s, const std::filesystem::path& path);
 void reportExportError(AppState& s, const std::string& message);
 
 // [SECTION] Analysis (ui/app/analysis.h)
+// The analysis holds out the walkers of the model the walkers are reconstructed against: the
+// loaded population's, or the held model's (the default model, an opened .ewm).
 AnalysisKey analysisKey(const AppState& s);
+// The selected walker's subject among the analysed ones ("" when it is none of them).
+std::string analysisSubject(const AppState& s);
 // Starts the analysis for the current inputs in the background unless cached or running.
 void requestAnalysis(AppState& s);
 // The analysis for the current inputs: cached, or computed now (blocking; scripts).

@@ -10,13 +10,34 @@
 
 namespace ew::ui {
 
-AnalysisResult computeAnalysis(const Population& population, const AnalysisKey& key, const ProgressFn& progress) {
+AnalysisWalkers populationAnalysisWalkers(const Population& population) {
+  AnalysisWalkers out{{}, "the loaded population", std::nullopt};
+  out.walkers.reserve(population.walkers.size());
+  for (const auto& w : population.walkers) out.walkers.push_back({w.id, w.subject, w.source, w.fit, {}, 0.0});
+  return out;
+}
+
+AnalysisWalkers modelAnalysisWalkers(const EigenwalkerModel& model, const std::string& name) {
+  AnalysisWalkers out{{}, name + "'s walkers (as it stores them: its " + std::to_string(model.componentCount()) +
+                              " eigenwalkers' part of each)",
+                      varianceTable(model)};
+  const Eigen::MatrixXd stored = storedWalkerVectors(model);
+  for (int r = 0; r < model.walkerCount(); ++r) {
+    const auto k = static_cast<std::size_t>(r);
+    FourierFit fit;
+    fit.w = stored.col(r);
+    fit.omegaRadS = model.omegasRadS[r];
+    out.walkers.push_back({model.walkerIds[k], model.subjects[k], name, fit, {}, 0.0});
+  }
+  return out;
+}
+
+AnalysisResult computeAnalysis(const AnalysisWalkers& from, const AnalysisKey& key, const ProgressFn& progress) {
   const auto start = std::chrono::steady_clock::now();
   AnalysisResult r;
   r.key = key;
-  std::vector<ExperimentWalker> walkers;
-  walkers.reserve(population.walkers.size());
-  for (const auto& w : population.walkers) walkers.push_back({w.id, w.subject, w.source, w.fit, {}, 0.0});
+  r.from = from.from;
+  const std::vector<ExperimentWalker>& walkers = from.walkers;
 
   EvaluationOptions options;
   for (int a = -90; a <= 90; a += 5) options.anglesDeg.push_back(a);
@@ -32,7 +53,7 @@ AnalysisResult computeAnalysis(const Population& population, const AnalysisKey& 
   r.knownView = knownViewErrors(walkers, folds, options, key.sigma2Mm2);
   stage = 2;
   r.sigmaSweep = sigmaSweep(walkers, folds, options);
-  r.spectrum = varianceTable(buildFullModel(walkers, options.model));
+  r.spectrum = from.spectrum ? *from.spectrum : varianceTable(buildFullModel(walkers, options.model));
   if (key.engines) {
     // Every 15° (the eigenwalker's curves every 5°) and a prior from 2 cycles per walker: a
     // prior per fold makes these the slow part (about 0.2 s a fold on one core).

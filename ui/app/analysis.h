@@ -7,10 +7,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/experiments/engine_view_curves.h"
+#include "core/engine/model.h"
 #include "core/experiments/experiments.h"
 #include "ui/app/population.h"
 
@@ -25,11 +27,28 @@ struct AnalysisKey {
   int components = 0;   // N; 0 = 95 % per fold
   double sigma2Mm2 = 70.0;
   bool engines = false;  // the snippet and skeleton engines' curves too (engine_view_curves.h)
+  // Whose walkers: the loaded population (null), or the held model's (that model).
+  const EigenwalkerModel* model = nullptr;
   bool operator==(const AnalysisKey&) const = default;
 };
 
+// The walkers the analysis holds out in turn: those of the model walkers are reconstructed
+// against (held_model.h), named for the panel's caption.
+struct AnalysisWalkers {
+  std::vector<ExperimentWalker> walkers;
+  std::string from;  // "the loaded population", "the default model's walkers (as it stores them)"
+  // A model's own spectrum (every eigenvalue it measured on its whole walkers), where the
+  // walkers are its stored ones: theirs would end at its N components.
+  std::optional<std::vector<VarianceRow>> spectrum;
+};
+// The loaded population's walkers (exact).
+AnalysisWalkers populationAnalysisWalkers(const Population& population);
+// A model's walkers as it stores them (storedWalkerVectors: its eigenwalkers' part of each).
+AnalysisWalkers modelAnalysisWalkers(const EigenwalkerModel& model, const std::string& name);
+
 struct AnalysisResult {
   AnalysisKey key;
+  std::string from;                        // AnalysisWalkers::from
   std::vector<double> anglesDeg;           // −90 … 90 step 5
   std::vector<std::string> subjects;       // held out, first-seen order
   std::vector<ViewErrorRow> knownView;     // subject × angle × {lsq, map}
@@ -47,7 +66,7 @@ struct AnalysisCache {
 };
 
 // Runs the evaluation; progress(done, total, what). Throws on failure.
-AnalysisResult computeAnalysis(const Population& population, const AnalysisKey& key, const ProgressFn& progress);
+AnalysisResult computeAnalysis(const AnalysisWalkers& walkers, const AnalysisKey& key, const ProgressFn& progress);
 
 // The error at each of result.anglesDeg for `method` ("lsq" or "map"), for one subject,
 // or (subject empty) the mean over the held-out subjects.

@@ -97,8 +97,8 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   }
   actions::requestAnalysis(s);
   const auto result = s.analysis.find(actions::analysisKey(s));
-  const Walker* selected = s.doc.selectedWalker();
-  const std::string subject = selected ? selected->subject : std::string();
+  // The selected walker's own curves when it is one of the analysed subjects.
+  const std::string subject = actions::analysisSubject(s);
 
   drawControls(s, ctx.scale);
   if (s.jobs.analysis.running()) {
@@ -108,8 +108,8 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
     ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", s.jobs.analysisError.c_str());
   } else if (result) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("%zu held-out subjects · σ² = %.0f mm² · N = %s · %.1f s (cached by inputs)%s%s",
-                       result->subjects.size(), result->key.sigma2Mm2,
+    ImGui::TextWrapped("%zu held-out subjects of %s · σ² = %.0f mm² · N = %s · %.1f s (cached by inputs)%s%s",
+                       result->subjects.size(), result->from.c_str(), result->key.sigma2Mm2,
                        result->key.components > 0 ? std::to_string(result->key.components).c_str() : "95 % per fold",
                        result->seconds, status.empty() ? "" : " · ", status.c_str());
     if (!result->engines.empty() && metric == ErrorMetric::Relative)
