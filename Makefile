@@ -58,7 +58,7 @@ SANITIZE_GUI ?= OFF
 # VideoSource.EveryFrameInAnyOrderIsTheFrameAskedFor). The treadmill walker filmed from seven
 # azimuths took 74 s sanitized (2026-11-27); the in-place fit runs sanitized once in
 # ReconstructCameraCli.ATreadmillWalkerIsFittedInPlace. SANITIZE_SKIP= runs them.
-SANITIZE_SKIP ?= ^(ModelLoopOnSharedWalkers\..*|TrackStudyCli\.FilmsTracksAndFitsAHeldOutWalker|EngineCli\.EvaluateScoresTheEnginesAskedFor|EnginesExperiment\.NoiseIsOneDrawPerClipWhateverRunsBesideIt|CameraExperiment\.ClipsGoThroughOpenPoseJsonAndBack|TrackCli\.ReconstructsTheTrackAsTheViewerFitsIt|CameraReconstruction\.(SeenFromBehindOrTheSideTheFeetGiveTheStride|RecoversAnApproachingWalkerExactly|AWalkerOnATreadmillIsFittedInPlace)|VideoSource\.SeekingInTheSharedClipsGivesTheSequentialDecodesFrames)$$
+SANITIZE_SKIP ?= ^(ModelLoopOnSharedWalkers\..*|TrackStudyCli\.FilmsTracksAndFitsAHeldOutWalker|EngineCli\.EvaluateScoresTheEnginesAskedFor|EnginesExperiment\.NoiseIsOneDrawPerClipWhateverRunsBesideIt|CameraExperiment\.ClipsGoThroughOpenPoseJsonAndBack|TrackCli\.(ReconstructsTheTrackAsTheViewerFitsIt|ATreadmillWalkerIsTrackedAndFittedInPlace)|CameraReconstruction\.(SeenFromBehindOrTheSideTheFeetGiveTheStride|RecoversAnApproachingWalkerExactly|AWalkerOnATreadmillIsFittedInPlace)|VideoSource\.SeekingInTheSharedClipsGivesTheSequentialDecodesFrames)$$
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_CXX_COMPILER=$(SANITIZE_CXX) -DCMAKE_BUILD_TYPE=Debug -DEW_SANITIZE=ON \
 	  -DEW_BUILD_BENCH=OFF -DEW_BUILD_GUI=$(SANITIZE_GUI) $(CMAKE_ARGS)
