@@ -29,6 +29,7 @@ struct TrackStudyArgs {
   std::vector<double> azimuths;
   int rounds = 1;
   double distanceM = 6.0;
+  double speedMps = 1.2;
   unsigned footageSeed = 7;
   bool holdTrunk = false;
   std::string out;
@@ -135,6 +136,7 @@ int runTrackStudyCommand(const TrackStudyArgs& a) {
   if (!a.azimuths.empty()) o.azimuthsDeg = a.azimuths;
   o.rounds = a.rounds;
   o.distanceMm = 1000.0 * a.distanceM;
+  o.speedMmS = 1000.0 * a.speedMps;
   o.footageSeed = a.footageSeed;
   o.holdTheTrunk = a.holdTrunk;
   const std::vector<TrackStudyRow> rows = runTrackStudy(
@@ -172,6 +174,9 @@ void addTrackStudyCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--distance-m", args->distanceM,
                   "camera to the middle of the walk, metres (default 6)")
       ->check(CLI::Range(2.0, 50.0));
+  cmd->add_option("--speed-mps", args->speedMps,
+                  "the walk carried forward at this speed (default 1.2); 0: walking in place, as on a treadmill")
+      ->check(CLI::Range(0.0, 3.0));
   cmd->add_option("--footage-seed", args->footageSeed,
                   "draws the footage's background and the print on each limb (default 7): "
                   "another seed tells a finding about the tracker from one about a print");

@@ -75,6 +75,10 @@ double strideHz(const std::vector<double>& right, const std::vector<double>& lef
   return count > 0 && total > 0 ? count / total : 0.0;
 }
 
+// The ankles' offsets from the pelvis spread along their swing this many times more (in
+// variance) than across it, or there is no swing to read a direction from.
+constexpr double kMinSwingAnisotropy = 1.3;
+
 // Each ankle's offset from the pelvis over the frames where both are seen.
 std::vector<std::vector<Eigen::Vector2d>> ankleLeads(const KeypointTrial& t) {
   std::vector<std::vector<Eigen::Vector2d>> leads(2);
@@ -113,7 +117,7 @@ std::optional<Eigen::Vector2d> ankleSwingDirection(const KeypointTrial& t) {
   if (samples < 8) return std::nullopt;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(scatter);
   // A swing along one axis, not a scatter as wide every way (a person standing and shifting).
-  if (!(eig.eigenvalues()[1] > 2.0 * eig.eigenvalues()[0])) return std::nullopt;
+  if (!(eig.eigenvalues()[1] > kMinSwingAnisotropy * eig.eigenvalues()[0])) return std::nullopt;
   Eigen::Vector2d d = eig.eigenvectors().col(1);
   int forward = 0, back = 0;
   for (const auto& side : leads) {
@@ -180,10 +184,11 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
     for (double x : lead) {
       if (std::isfinite(x)) lo = std::min(lo, x), hi = std::max(hi, x);
     }
-    if (!(hi - lo >= kMinImageAnkleLeadOfHeight * height))
+    const double minLead = crosses ? kMinImageAnkleLeadOfHeight : kMinImageAnkleLeadInPlaceOfHeight;
+    if (!(hi - lo >= minLead * height))
       notWalking(t, prefix + "the " + (ankle == Joint::RAnkle ? "right" : "left") + " ankle swings " +
                         fixed(std::isfinite(hi - lo) ? (hi - lo) / height : 0.0, 2) +
-                        " of the walker's height about the pelvis (walking: > " + fixed(kMinImageAnkleLeadOfHeight, 2) + ")");
+                        " of the walker's height about the pelvis (walking: > " + fixed(minLead, 2) + ")");
   }
   g.rightStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Right);
   g.leftStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Left);

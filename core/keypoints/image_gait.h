@@ -23,6 +23,10 @@ inline constexpr double kMinImageTravelOfHeight = 0.5;
 inline constexpr double kMaxInPlaceSizeChange = 0.10;
 // Each ankle's lead must span this share of the walker's height (150 mm of ~1.7 m).
 inline constexpr double kMinImageAnkleLeadOfHeight = 0.08;
+// … and this share for a walker that does not cross the picture: seen from the front or behind
+// the feet swing in depth and show mostly as their lift (the shared walkers on the spot, filmed
+// from behind: 0.07–0.08 of their height; a person standing: 0.00).
+inline constexpr double kMinImageAnkleLeadInPlaceOfHeight = 0.05;
 
 struct ImageGait {
   Eigen::Vector2d direction = Eigen::Vector2d::Zero();  // progression in the image, unit
