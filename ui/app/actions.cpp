@@ -949,8 +949,7 @@ const EigenwalkerModel* heldOtherModel(const AppState& s) {
 
 AnalysisWalkers analysisWalkers(const AppState& s) {
   if (const EigenwalkerModel* model = heldOtherModel(s))
-    return modelAnalysisWalkers(*model, s.doc.modelSource == ModelSource::Default ? "the default model"
-                                                                                   : heldModelName(s.doc));
+    return modelAnalysisWalkers(*model, heldModelPhrase(s.doc));
   if (!s.doc.population) throw std::invalid_argument("the analysis needs a loaded population or a model");
   return populationAnalysisWalkers(*s.doc.population);
 }

@@ -85,6 +85,20 @@ const char* modelSourceName(ModelSource source) {
   return "population";
 }
 
+std::string heldModelPhrase(const Document& doc) {
+  switch (doc.modelSource) {
+    case ModelSource::Population:
+      return "the loaded population";
+    case ModelSource::Default:
+      return "the default model";
+    case ModelSource::File:
+      if (doc.modelFile >= 0 && doc.modelFile < static_cast<int>(doc.modelFiles.size()))
+        return doc.modelFiles[static_cast<std::size_t>(doc.modelFile)]->name;
+      return "no model file";
+  }
+  return "";
+}
+
 std::string heldModelName(const Document& doc) {
   switch (doc.modelSource) {
     case ModelSource::Population:

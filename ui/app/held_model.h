@@ -31,6 +31,8 @@ std::string subjectInModel(const EigenwalkerModel& model, const Walker& walker);
 
 // "walkers.csv (30 walkers)", "24 real walkers (default)", "run.ewm (23 walkers)".
 std::string heldModelName(const Document& doc);
+// The same in a sentence's words: "the loaded population", "the default model", "run.ewm".
+std::string heldModelPhrase(const Document& doc);
 // "population", "default", "file".
 const char* modelSourceName(ModelSource source);
 

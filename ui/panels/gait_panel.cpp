@@ -319,8 +319,8 @@ void GaitPanel::updateBand(const AppState& s) {
   auto key = std::make_tuple(s.doc.generation, static_cast<int>(s.doc.modelSource),
                              static_cast<const void*>(fromModel ? held : nullptr), heldModelName(s.doc));
   if (band && key == bandKey) return;
-  const std::string name = s.doc.modelSource == ModelSource::Default ? "the default model" : heldModelName(s.doc);
-  band = std::make_shared<const GaitBand>(fromModel ? modelGaitBand(*held, name) : populationGaitBand(*s.doc.population));
+  band = std::make_shared<const GaitBand>(fromModel ? modelGaitBand(*held, heldModelPhrase(s.doc))
+                                                    : populationGaitBand(*s.doc.population));
   bandKey = std::move(key);
 }
 
