@@ -92,7 +92,7 @@ TrialSummary summarizeKeypoints(const fs::path& path, const KeypointOptions& opt
     const ImageGait g = imageGaitCycles(trial);
     s.cycles = g.cycles;
     s.strideHz = g.strideHz;
-    s.cycleMethod = "foot contacts (image)";
+    s.cycleMethod = g.inPlace ? "foot contacts (image), walking in place" : "foot contacts (image)";
     s.windowFrames = trial.frameCount;
   });
   return s;

@@ -190,6 +190,9 @@ TEST(ImageGait, WalkingOnTheSpotIsWalkingInPlace) {
   EXPECT_TRUE(g.inPlace);
   EXPECT_NEAR(g.strideHz, clip.strideHz, 0.03 * clip.strideHz);
   EXPECT_LT(g.travelPx, 0.05 * t.people[static_cast<std::size_t>(t.chosen)].sizePx);  // its sway
+  KeypointOptions o;
+  o.fps = kFps;
+  EXPECT_EQ(summarizeKeypoints(clip.folder, o).cycleMethod, "foot contacts (image), walking in place");
   // Walking past, the same walker is not in place.
   const Clip past = meanWalkerClip("gait_past", 90.0, 1300, 4.0);
   EXPECT_FALSE(imageGaitCycles(readKeypointTrial(past.folder, at30Fps())).inPlace);
