@@ -18,8 +18,8 @@ AnalysisWalkers populationAnalysisWalkers(const Population& population) {
 }
 
 AnalysisWalkers modelAnalysisWalkers(const EigenwalkerModel& model, const std::string& name) {
-  AnalysisWalkers out{{}, name + "'s walkers (as it stores them: its " + std::to_string(model.componentCount()) +
-                              " eigenwalkers' part of each)",
+  AnalysisWalkers out{{}, name + "'s walkers (their part in its " + std::to_string(model.componentCount()) +
+                              " eigenwalkers)",
                       varianceTable(model)};
   const Eigen::MatrixXd stored = storedWalkerVectors(model);
   for (int r = 0; r < model.walkerCount(); ++r) {
