@@ -7,8 +7,9 @@
 // truth known: errors of SPEC §7 are reported).
 // `--engine snippet [--prior PRIOR.ewsp]`: the snippet engine (core/snippet) instead, through
 // the engines' interface (core/engines/engine.h); without --prior its prior is learnt from
-// the embedded synthetic population. A 3D input is then viewed overground (its progression
-// put back), as the snippet prior was learnt.
+// the default model's real walkers (without the input's subject when it is one of them). A 3D
+// input is then viewed overground (its progression put back), as the snippet prior was learnt.
+// A 3D input whose subject the model holds is reconstructed by the model without it (SPEC §4).
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -26,6 +27,7 @@
 #include "core/engine/joint_completion.h"
 #include "core/engine/metrics.h"
 #include "core/engine/model_file.h"
+#include "core/engine/model_membership.h"
 #include "core/engine/projection.h"
 #include "core/engine/reconstruction.h"
 #include "core/engines/engine.h"
@@ -47,6 +49,7 @@ struct ReconstructArgs {
   std::string model, input, out, method = "map", save2d;
   std::optional<double> angleDeg, projectAngleDeg;
   bool unknownAngle = false, json = false, dataPreserving = false;
+  bool inSample = false;  // --in-sample: the whole model even when it holds the input's subject
   std::optional<double> sigma2Mm2;  // unset: the model's stored optimum (defaultSigma2Mm2)
   std::optional<int> components;    // unset: every eigenwalker of the model
   std::string mapping;              // joint mapping file for a 3D marker input (--mapping)
@@ -77,6 +80,7 @@ struct ReconstructArgs {
 struct ChosenModel {
   EigenwalkerModel model;
   std::string name;  // the file, or defaultRealModelName()
+  std::string sigma2Source;  // where its σ² optimum comes from (defaultSigma2Source)
 };
 
 ChosenModel chooseModel(const ReconstructArgs& a) {
@@ -96,6 +100,7 @@ ChosenModel chooseModel(const ReconstructArgs& a) {
     c.model = leadingComponents(c.model, *a.components);
   }
   std::cerr << "model: " << c.name << " (" << c.model.componentCount() << " eigenwalkers)\n";
+  c.sigma2Source = defaultSigma2Source(c.model);
   return c;
 }
 
@@ -140,6 +145,39 @@ Input readInput(const ReconstructArgs& a) {
   in.view = {projectFramesToView(in.frames3d, *a.projectAngleDeg), trial.joints.rateHz};
   if (trial.cycles.strideHz > 0 && std::isfinite(trial.cycles.strideHz)) in.omegaHintRadS = 2.0 * std::numbers::pi * trial.cycles.strideHz;
   return in;
+}
+
+// The model's name for the 3D input's subject when its walker is one of the model's (by its
+// subject's name or its data; model_membership.h), else "" (and for a 2D input).
+// A 3D input whose walker is one of the model's: the model
+// is rebuilt without that subject, as the viewer and the experiments reconstruct a walker
+// (SPEC §4), its component count kept; the subject's model name, or "" when none. Its errors
+// against the truth would otherwise be those of a walker the model has seen.
+std::string inputSubjectInModel(const EigenwalkerModel& model, const Input& in, const ReconstructArgs& a) {
+  if (in.frames3d.rows() == 0) return "";
+  FourierFitOptions o;
+  o.omegaHintRadS = in.omegaHintRadS;
+  o.file = a.input;
+  const FourierFit fit = fitFourierMeasured(in.frames3d, in.view.rateHz, in.missing, o);
+  return subjectInModel(model, subjectFromFileName(a.input), fit.w);
+}
+
+std::string holdOutTheInputsSubject(ChosenModel& chosen, const Input& in, const ReconstructArgs& a) {
+  const std::string subject = inputSubjectInModel(chosen.model, in, a);
+  if (subject.empty()) return "";
+  if (a.inSample) {
+    std::cerr << "the model holds this walker's subject " << subject << ": kept (--in-sample)\n";
+    return "";
+  }
+  const int components = chosen.model.componentCount();
+  // The σ² optimum was measured leaving each subject out in turn: it holds for this fold too.
+  const auto sigma2 = chosen.model.sigma2Optimum;
+  chosen.model = modelWithoutSubject(chosen.model, subject);
+  chosen.model = leadingComponents(chosen.model, std::min(components, chosen.model.componentCount()));
+  chosen.model.sigma2Optimum = sigma2;
+  std::cerr << "the model holds this walker's subject " << subject << ": left out (leave-one-subject-out, "
+            << chosen.model.walkerCount() << " walkers, " << chosen.model.componentCount() << " eigenwalkers)\n";
+  return subject;
 }
 
 std::vector<std::string> jointNames(const JointMask& mask) {
@@ -248,23 +286,30 @@ void refuseEigenwalkerOptions(const ReconstructArgs& a) {
   if (a.dataPreserving) refuse("--data-preserving", "eq. 3.16 is the eigenwalker's");
 }
 
-SnippetPrior chooseSnippetPrior(const ReconstructArgs& a) {
+// --prior, else a prior learnt from the default model's real walkers (the eigenwalker's default
+// too), without the input's subject when it is one of them; `source` says which.
+SnippetPrior chooseSnippetPrior(const ReconstructArgs& a, const Input& in, std::string& source) {
   if (!a.prior.empty()) {
     std::cerr << "snippet prior: " << a.prior << "\n";
+    source = a.prior;
     return loadSnippetPrior(a.prior);
   }
-  const Dataset synthetic = syntheticDataset();
-  std::cerr << "snippet prior: learnt from the embedded synthetic population (" << synthetic.trials.size()
-            << " walkers); give --prior (from `build --engine snippet`) for real walkers\n";
-  return trainSnippetPrior(snippetTrainingTrials(synthetic), {});
+  ChosenModel chosen{defaultRealModel(), defaultRealModelName(), ""};
+  const std::string heldOut = a.inSample ? std::string() : inputSubjectInModel(chosen.model, in, a);
+  const std::vector<FourierWalkerTrial> walkers = modelFourierWalkers(chosen.model, heldOut);
+  source = "the default model's walkers (" + std::to_string(walkers.size()) + (heldOut.empty() ? "" : ", without " + heldOut) + ")";
+  std::cerr << "snippet prior: learnt from " << source << "; give --prior (from `build --engine snippet`) for others\n";
+  return trainSnippetPrior(snippetTrialsFromFourier(walkers), {});
 }
 
 int runReconstructSnippet(const ReconstructArgs& a) {
   refuseEigenwalkerOptions(a);
   if (a.angleDeg.has_value() == a.unknownAngle)
     throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
-  const SnippetEngine engine{std::make_shared<const PreparedSnippetPrior>(prepareSnippetPrior(chooseSnippetPrior(a))), {}};
   const Input in = readInput(a);
+  std::string priorSource;
+  const SnippetEngine engine{
+      std::make_shared<const PreparedSnippetPrior>(prepareSnippetPrior(chooseSnippetPrior(a, in, priorSource))), {}};
   ViewInput view;
   view.uvMm = in.frames3d.rows() > 0 ? projectFramesToView(in.frames3dOverground, *a.projectAngleDeg)
                                      : in.view.framesMm;
@@ -274,7 +319,7 @@ int runReconstructSnippet(const ReconstructArgs& a) {
   if (!a.save2d.empty()) writeViewCsv(a.save2d, {view.uvMm, view.rateHz}, {"2D view of " + a.input + " (overground)"});
   const EngineResult r = reconstructWithEngine(engine, view);
   const SnippetSequence& seq = *r.snippet;
-  json report = {{"input", a.input}, {"engine", "snippet"}, {"prior", a.prior.empty() ? "synthetic population" : a.prior},
+  json report = {{"input", a.input}, {"engine", "snippet"}, {"prior", priorSource},
                  {"frames", view.uvMm.rows()}, {"rate_hz", view.rateHz}, {"angle_deg", r.alphaDeg},
                  {"angle_source", a.angleDeg ? "given" : "estimated"}, {"snippets", seq.starts.size()},
                  {"snippet_rate_hz", seq.rateHz}, {"reprojection_rms_mm", r.reprojectionRmsMm},
@@ -362,10 +407,11 @@ int runReconstruct(const ReconstructArgs& a) {
   if (a.angleDeg.has_value() == a.unknownAngle) {
     throw Error(ErrorKind::BadArgument, "--angle", "", "give exactly one of --angle DEG and --unknown-angle");
   }
-  const ChosenModel chosen = chooseModel(a);
+  ChosenModel chosen = chooseModel(a);
+  const Input in = readInput(a);
+  const std::string heldOut = holdOutTheInputsSubject(chosen, in, a);
   const EigenwalkerModel& model = chosen.model;
   const double sigma2Mm2 = a.sigma2Mm2.value_or(defaultSigma2Mm2(model));
-  const Input in = readInput(a);
   if (!a.save2d.empty()) writeViewCsv(a.save2d, in.view, {"2D view of " + a.input});
   FourierFitOptions fitOptions;
   fitOptions.omegaHintRadS = in.omegaHintRadS;
@@ -379,6 +425,7 @@ int runReconstruct(const ReconstructArgs& a) {
   const EstimatorOptions estimator{a.method == "map" ? Estimator::Map : Estimator::Lsq, sigma2Mm2};
   json report = {{"input", a.input},
                  {"model", chosen.name},
+                 {"held_out", heldOut.empty() ? json(nullptr) : json(heldOut)},
                  {"components", model.componentCount()},
                  {"method", a.method},
                  {"output", a.out},
@@ -390,7 +437,7 @@ int runReconstruct(const ReconstructArgs& a) {
   if (a.method == "map") {
     report["sigma2_mm2"] = sigma2Mm2;
     report["sigma2_source"] =
-        a.sigma2Mm2 ? std::string("given (--sigma2)") : defaultSigma2Source(model);
+        a.sigma2Mm2 ? std::string("given (--sigma2)") : chosen.sigma2Source;
   }
   Reconstruction rec;
   if (a.angleDeg) {
@@ -529,6 +576,9 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--project-angle", args->projectAngleDeg, "View a 3D input at this angle (degrees)");
   cmd->add_option("--save-2d", args->save2d, "Also write the 2D sequence that was reconstructed (2D CSV)");
   cmd->add_flag("--data-preserving", args->dataPreserving, "Keep the observed u, v; only depth from the model (eq. 3.16)");
+  cmd->add_flag("--in-sample", args->inSample,
+                "A 3D input whose subject the model holds is reconstructed by the model without it (leave-one-"
+                "subject-out, as the viewer does); this uses the whole model instead (an in-sample fit)");
   cmd->add_flag("--json", args->json, "Print the result (angle, k, errors) as JSON on stdout");
   cmd->callback([args, &exitCode] { exitCode = runReconstruct(*args); });
 }

@@ -299,6 +299,23 @@ Eigen::VectorXd fourierSummary(const Eigen::Ref<const Eigen::MatrixXd>& framesMm
   return rephase(fit.w, fit.phaseRad, 0.0);
 }
 
+std::vector<FourierWalkerTrial> modelFourierWalkers(const EigenwalkerModel& model, const std::string& withoutSubject) {
+  double known = 0.0;
+  int counted = 0;
+  for (const auto& v : model.speedsMps)
+    if (v) known += *v, ++counted;
+  const double fallback = counted > 0 ? known / counted : 1.3;
+  const Eigen::MatrixXd stored = storedWalkerVectors(model);
+  std::vector<FourierWalkerTrial> walkers;
+  for (int r = 0; r < model.walkerCount(); ++r) {
+    const auto k = static_cast<std::size_t>(r);
+    if (model.subjects[k] == withoutSubject) continue;
+    const double speed = k < model.speedsMps.size() && model.speedsMps[k] ? *model.speedsMps[k] : fallback;
+    walkers.push_back({model.subjects[k], model.walkerIds[k], stored.col(r), model.omegasRadS[r], speed});
+  }
+  return walkers;
+}
+
 std::vector<SnippetTrainingTrial> snippetTrialsFromFourier(const std::vector<FourierWalkerTrial>& walkers,
                                                            double cycles) {
   std::vector<SnippetTrainingTrial> trials;

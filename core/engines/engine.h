@@ -179,5 +179,11 @@ struct FourierWalkerTrial {
 };
 std::vector<SnippetTrainingTrial> snippetTrialsFromFourier(const std::vector<FourierWalkerTrial>& walkers,
                                                            double cycles = 4.0);
+// A model's walkers as it stores them (storedWalkerVectors), without `withoutSubject`'s ("" for
+// none), each at the speed the model records (speeds_mps), else the mean of those it records,
+// else 1.3 m/s (a typical adult's): what a snippet prior learns from when the walkers are a
+// model's (the viewer with the default model held, `reconstruct --engine snippet` without
+// --prior).
+std::vector<FourierWalkerTrial> modelFourierWalkers(const EigenwalkerModel& model, const std::string& withoutSubject);
 
 }  // namespace ew

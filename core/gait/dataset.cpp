@@ -18,13 +18,6 @@ namespace fs = std::filesystem;
 
 using PendingTrial = TrialFile;
 
-// "2014001_C4_05" -> "2014001", "07_02" -> "07": the stem before the first underscore.
-std::string subjectFromFileName(const fs::path& file) {
-  const std::string stem = file.stem().string();
-  const auto cut = stem.find('_');
-  return cut == 0 || cut == std::string::npos ? stem : stem.substr(0, cut);
-}
-
 TrialInfo infoFromFileName(const fs::path& file) {
   TrialInfo info;
   info.file = file.string();
@@ -152,6 +145,12 @@ std::vector<PendingTrial> asfTrials(const fs::path& asf, const std::vector<fs::p
 }
 
 }  // namespace
+
+std::string subjectFromFileName(const fs::path& file) {
+  const std::string stem = file.stem().string();
+  const auto cut = stem.find('_');
+  return cut == 0 || cut == std::string::npos ? stem : stem.substr(0, cut);
+}
 
 std::vector<TrialFile> collectTrialFiles(const std::vector<fs::path>& paths,
                                          std::vector<std::string>& warnings,

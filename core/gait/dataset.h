@@ -65,6 +65,10 @@ std::vector<std::filesystem::path> withoutSkeletonsOfGivenMotions(
 WalkingTrial loadWalkingTrial(const std::filesystem::path& file, const LoadOptions& options = {},
                               const PrepareOptions& prepare = {});
 
+// The subject a file names when no manifest says: its stem before the first underscore
+// ("2014001_C4_05" → "2014001", "07_02" → "07"), else the whole stem.
+std::string subjectFromFileName(const std::filesystem::path& file);
+
 // True when a .csv file's first line is a manifest header (starts with "file,").
 bool isManifest(const std::filesystem::path& file);
 

@@ -93,12 +93,13 @@ TEST_F(EngineCli, TheOtherEnginesOptionsAreErrors) {
   EXPECT_FALSE(fs::exists(root_ / "y.ewm"));
 }
 
-TEST_F(EngineCli, WithoutAPriorTheSyntheticPopulationIsLearntAndSaidSo) {
+TEST_F(EngineCli, WithoutAPriorTheDefaultModelsWalkersAreLearntAndSaidSo) {
   const test::ShellRun r = runCli("reconstruct --engine snippet --input " + heldOut() +
                                       " --project-angle 90 --angle 90 --out rec.csv --json",
                                   root_);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.err.find("embedded synthetic population"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("snippet prior: learnt from the default model's walkers (24)"), std::string::npos) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out)["prior"], "the default model's walkers (24)");
   EXPECT_LT(nlohmann::json::parse(r.out)["errors"]["mpjpe_frames_mm"].get<double>(), 50.0);
 }
 

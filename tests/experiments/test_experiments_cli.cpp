@@ -145,15 +145,27 @@ TEST_F(ExperimentsCli, BuildThenReconstructA3DTrialAndIts2DView) {
     if (e.path().filename() != "walkers.csv" && e.path().extension() == ".csv") trial = e.path();
   }
   ASSERT_FALSE(trial.empty());
-  // A 3D trial seen at 30°: the walker is in the model, so the reconstruction is close.
+  // A 3D trial seen at 30°: the walker is in the model; used whole (--in-sample), the
+  // reconstruction is close.
   const CliResult known = runCli("reconstruct --model " + q(model) + " --input " + q(trial) +
-                                     " --project-angle 30 --angle 30 --method lsq --json --out " + q(dir_ / "rec.csv") +
-                                     " --save-2d " + q(dir_ / "view.csv"),
+                                     " --project-angle 30 --angle 30 --method lsq --in-sample --json --out " +
+                                     q(dir_ / "rec.csv") + " --save-2d " + q(dir_ / "view.csv"),
                                  dir_);
   ASSERT_EQ(known.exitCode, 0) << known.err;
   const auto j = nlohmann::json::parse(known.out);
   EXPECT_EQ(j["angle_deg"], 30.0);
+  EXPECT_TRUE(j["held_out"].is_null());
   EXPECT_LT(j["errors"]["mpjpe_mm"].get<double>(), 10.0) << known.out;
+  // By default its subject is left out (SPEC §4), as the viewer does: the model of the other
+  // four reconstructs it, less closely.
+  const CliResult heldOut = runCli("reconstruct --model " + q(model) + " --input " + q(trial) +
+                                       " --project-angle 30 --angle 30 --method lsq --json --out " + q(dir_ / "rec_loo.csv"),
+                                   dir_);
+  ASSERT_EQ(heldOut.exitCode, 0) << heldOut.err;
+  const auto loo = nlohmann::json::parse(heldOut.out);
+  EXPECT_FALSE(loo["held_out"].is_null());
+  EXPECT_NE(heldOut.err.find("left out (leave-one-subject-out, 4 walkers"), std::string::npos) << heldOut.err;
+  EXPECT_GT(loo["errors"]["mpjpe_mm"].get<double>(), j["errors"]["mpjpe_mm"].get<double>());
   EXPECT_EQ(firstLine(dir_ / "rec.csv"), jointCsvHeader());
   EXPECT_EQ(firstLine(dir_ / "view.csv").substr(0, 26), "frame,time_s,head_u,head_v");
   // The saved 2D view, angle unknown: found again.

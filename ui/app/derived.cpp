@@ -43,25 +43,6 @@ std::pair<double, std::string> walkerSpeedMps(const Document& doc, int walker) {
 
 namespace {
 
-// The held model's walkers without `withoutSubject` (a model subject's name, "" for none), at
-// the speeds the model records (else the mean of those it does, else a typical adult's).
-std::vector<FourierWalkerTrial> modelPriorWalkers(const EigenwalkerModel& model, const std::string& withoutSubject) {
-  double known = 0.0;
-  int counted = 0;
-  for (const auto& v : model.speedsMps)
-    if (v) known += *v, ++counted;
-  const double fallback = counted > 0 ? known / counted : 1.3;
-  const Eigen::MatrixXd stored = storedWalkerVectors(model);
-  std::vector<FourierWalkerTrial> walkers;
-  for (int r = 0; r < model.walkerCount(); ++r) {
-    const auto k = static_cast<std::size_t>(r);
-    if (model.subjects[k] == withoutSubject) continue;
-    const double speed = k < model.speedsMps.size() && model.speedsMps[k] ? *model.speedsMps[k] : fallback;
-    walkers.push_back({model.subjects[k], model.walkerIds[k], stored.col(r), model.omegasRadS[r], speed});
-  }
-  return walkers;
-}
-
 std::vector<FourierWalkerTrial> populationPriorWalkers(const Document& doc, const std::string& withoutSubject) {
   std::vector<FourierWalkerTrial> walkers;
   for (int i = 0; i < doc.population->walkerCount(); ++i) {
@@ -88,7 +69,7 @@ SnippetPriorCache::Entry SnippetPriorCache::get(const Document& doc, int index) 
   const std::string without = held ? subjectInModel(*held, *walker) : walker->subject;
   if (auto it = entries_.find(without); it != entries_.end()) return it->second;
   if (!held && !doc.population) throw std::runtime_error("snippet engine: no population to learn a prior from");
-  const std::vector<FourierWalkerTrial> walkers = held ? modelPriorWalkers(*held, without) : populationPriorWalkers(doc, without);
+  const std::vector<FourierWalkerTrial> walkers = held ? modelFourierWalkers(*held, without) : populationPriorWalkers(doc, without);
   Entry e;
   e.walkers = static_cast<int>(walkers.size());
   e.prior = std::make_shared<const PreparedSnippetPrior>(

@@ -6,48 +6,14 @@
 #include <stdexcept>
 
 #include "core/engine/default_model.h"
+#include "core/engine/model_membership.h"
 #include "core/engine/model_file.h"
 
 namespace ew::ui {
 
-namespace {
-
-// Within this RMS (mm, over the 225 values) a walker is the model walker it matches.
-constexpr double kSameWalkerRmsMm = 1.0;
-
-bool isLetters(const std::string& s) {
-  return !s.empty() &&
-         std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalpha(c); });
-}
-
-// "SM2014001" names "2014001" (a manifest's short letter prefix before a file's subject).
-bool namesSubject(const std::string& modelSubject, const std::string& subject) {
-  if (modelSubject == subject) return true;
-  if (subject.empty() || modelSubject.size() <= subject.size()) return false;
-  const std::size_t prefix = modelSubject.size() - subject.size();
-  return prefix <= 4 && modelSubject.compare(prefix, subject.size(), subject) == 0 &&
-         isLetters(modelSubject.substr(0, prefix));
-}
-
-EigenwalkerModel leaveOneOut(const EigenwalkerModel& m, const std::string& subject) {
-  ModelOptions every;
-  every.components = m.walkerCount();  // clamped to R' − 1 by the engine
-  return buildModelWithoutSubject(storedWalkerVectors(m), m.walkerIds, m.subjects, m.omegasRadS, subject,
-                                  every);
-}
-
-}  // namespace
 
 std::string subjectInModel(const EigenwalkerModel& model, const Walker& walker) {
-  for (const auto& s : model.subjects)
-    if (namesSubject(s, walker.subject)) return s;
-  if (walker.fit.w.size() != model.mean.size() || model.coefficients.cols() == 0) return "";
-  const Eigen::VectorXd k = projectOntoModel(model, walker.fit.w);
-  const double limit = kSameWalkerRmsMm * std::sqrt(static_cast<double>(model.mean.size()));
-  for (Eigen::Index r = 0; r < model.coefficients.cols(); ++r)
-    if ((model.coefficients.col(r) - k).norm() < limit)
-      return model.subjects[static_cast<std::size_t>(r)];
-  return "";
+  return ew::subjectInModel(model, walker.subject, walker.fit.w);
 }
 
 WalkerModel modelForWalker(const Document& doc, int index) {
@@ -68,7 +34,7 @@ WalkerModel modelForWalker(const Document& doc, int index) {
       throw std::runtime_error("no leave-one-out model for " + out.heldOutSubject);
     out.model = it->second;
   } else {
-    out.model = leaveOneOut(*held, out.heldOutSubject);
+    out.model = modelWithoutSubject(*held, out.heldOutSubject);
   }
   return out;
 }
