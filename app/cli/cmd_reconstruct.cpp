@@ -75,14 +75,15 @@ struct ReconstructArgs {
   }
 };
 
-// The model the user named, or the default one; truncated to --components (the viewer's
-// N means the same: leadingComponents).
+// The model the user named, or the default one (--components: applyComponents, the viewer's N).
 struct ChosenModel {
   EigenwalkerModel model;
   std::string name;  // the file, or defaultRealModelName()
   std::string sigma2Source;  // where its σ² optimum comes from (defaultSigma2Source)
 };
 
+// Whole: a walker held out is left out of the whole model first, and --components then keeps
+// that model's first N, as the viewer's N does (applyComponents).
 ChosenModel chooseModel(const ReconstructArgs& a) {
   ChosenModel c;
   if (a.model.empty()) {
@@ -92,16 +93,18 @@ ChosenModel chooseModel(const ReconstructArgs& a) {
     c.model = loadModel(a.model);
     c.name = a.model;
   }
-  if (a.components) {
-    if (*a.components > c.model.componentCount())
-      throw Error(ErrorKind::BadArgument, "--components", "",
-                  std::to_string(*a.components) + " components asked, the model " + c.name +
-                      " has " + std::to_string(c.model.componentCount()));
-    c.model = leadingComponents(c.model, *a.components);
-  }
+  if (a.components && *a.components > c.model.componentCount())
+    throw Error(ErrorKind::BadArgument, "--components", "",
+                std::to_string(*a.components) + " components asked, the model " + c.name + " has " +
+                    std::to_string(c.model.componentCount()));
   std::cerr << "model: " << c.name << " (" << c.model.componentCount() << " eigenwalkers)\n";
   c.sigma2Source = defaultSigma2Source(c.model);
   return c;
+}
+
+// --components N: the model's first N eigenwalkers (at most as many as it has).
+void applyComponents(ChosenModel& c, const ReconstructArgs& a) {
+  if (a.components) c.model = leadingComponents(c.model, std::min(*a.components, c.model.componentCount()));
 }
 
 // The 2D input and, for a 3D file, the truth it came from.
@@ -389,7 +392,8 @@ int runReconstruct(const ReconstructArgs& a) {
       throw Error(ErrorKind::BadArgument, "--unknown-camera", "",
                   "the camera's azimuth is estimated (or given with --angle): --unknown-angle and --project-angle "
                   "do not apply");
-    const ChosenModel chosen = chooseModel(a);
+    ChosenModel chosen = chooseModel(a);
+    applyComponents(chosen, a);
     CameraArgs c;
     c.input = a.input, c.out = a.out, c.layout = a.layout, c.method = a.method, c.modelName = chosen.name;
     c.mapping = a.mapping, c.imageSize = a.imageSize, c.fps = a.fps, c.focalPx = a.focalPx;
@@ -410,6 +414,7 @@ int runReconstruct(const ReconstructArgs& a) {
   ChosenModel chosen = chooseModel(a);
   const Input in = readInput(a);
   const std::string heldOut = holdOutTheInputsSubject(chosen, in, a);
+  applyComponents(chosen, a);
   const EigenwalkerModel& model = chosen.model;
   const double sigma2Mm2 = a.sigma2Mm2.value_or(defaultSigma2Mm2(model));
   if (!a.save2d.empty()) writeViewCsv(a.save2d, in.view, {"2D view of " + a.input});
