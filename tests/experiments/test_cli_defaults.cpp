@@ -112,14 +112,16 @@ TEST_F(CliDefaults, BuildStoresTheSigma2OptimumAndReconstructUsesIt) {
   EXPECT_EQ(g["sigma2_mm2"].get<double>(), 123.0);
 }
 
-// The first N eigenwalkers of a model are the model built with N: the same k.
+// The first N eigenwalkers of a model are the model built with N: the same k. (The trial is one
+// of the models' walkers: --in-sample keeps them whole, the property being of the models as
+// built.)
 TEST_F(CliDefaults, ComponentsTruncatesTheModelAsBuildingWithNDoes) {
   ASSERT_EQ(
       runCli("build --data " + q(manifest()) + " --components 4 --out four.ewm", dir_).exitCode, 0);
   ASSERT_EQ(
       runCli("build --data " + q(manifest()) + " --components 2 --out two.ewm", dir_).exitCode, 0);
   const std::string input =
-      " --input " + q(trial()) + " --project-angle 40 --angle 40 --sigma2 200 --json --out rec.csv";
+      " --input " + q(trial()) + " --project-angle 40 --angle 40 --sigma2 200 --in-sample --json --out rec.csv";
   const CliResult cut = runCli("reconstruct --model four.ewm --components 2" + input, dir_);
   const CliResult two = runCli("reconstruct --model two.ewm" + input, dir_);
   ASSERT_EQ(cut.exitCode, 0) << cut.err;
