@@ -942,13 +942,8 @@ void exportState(AppState& s, const std::filesystem::path& path) {
 
 namespace {
 
-// The model held when it is not the population's own (the default model, an opened .ewm).
-const EigenwalkerModel* heldOtherModel(const AppState& s) {
-  return s.doc.modelSource != ModelSource::Population ? s.doc.heldModel() : nullptr;
-}
-
 AnalysisWalkers analysisWalkers(const AppState& s) {
-  if (const EigenwalkerModel* model = heldOtherModel(s))
+  if (const EigenwalkerModel* model = heldModelOtherThanThePopulations(s.doc))
     return modelAnalysisWalkers(*model, heldModelPhrase(s.doc));
   if (!s.doc.population) throw std::invalid_argument("the analysis needs a loaded population or a model");
   return populationAnalysisWalkers(*s.doc.population);
@@ -958,18 +953,18 @@ AnalysisWalkers analysisWalkers(const AppState& s) {
 
 AnalysisKey analysisKey(const AppState& s) {
   return {s.doc.generation, s.doc.recon.components, s.doc.recon.sigma2Mm2,
-          s.panels.analysis.showEngines || s.doc.compareEngines, heldOtherModel(s)};
+          s.panels.analysis.showEngines || s.doc.compareEngines, heldModelOtherThanThePopulations(s.doc)};
 }
 
 std::string analysisSubject(const AppState& s) {
   const Walker* w = s.doc.selectedWalker();
   if (!w) return "";
-  if (const EigenwalkerModel* model = heldOtherModel(s)) return subjectInModel(*model, *w);
+  if (const EigenwalkerModel* model = heldModelOtherThanThePopulations(s.doc)) return subjectInModel(*model, *w);
   return s.doc.isInspected(s.doc.walker) ? std::string() : w->subject;
 }
 
 void requestAnalysis(AppState& s) {
-  if ((!s.doc.population && !heldOtherModel(s)) || s.jobs.load.running() || s.jobs.analysis.running()) return;
+  if ((!s.doc.population && !heldModelOtherThanThePopulations(s.doc)) || s.jobs.load.running() || s.jobs.analysis.running()) return;
   const AnalysisKey key = analysisKey(s);
   if (s.analysis.find(key) || s.jobs.analysisFailed == key) return;
   s.jobs.analysisRunning = key;

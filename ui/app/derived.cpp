@@ -56,7 +56,7 @@ std::vector<FourierWalkerTrial> populationPriorWalkers(const Document& doc, cons
 }  // namespace
 
 SnippetPriorCache::Entry SnippetPriorCache::get(const Document& doc, int index) {
-  const EigenwalkerModel* held = doc.modelSource != ModelSource::Population ? doc.heldModel() : nullptr;
+  const EigenwalkerModel* held = heldModelOtherThanThePopulations(doc);
   if (generation_ != doc.generation || population_ != doc.population.get() || model_ != held) {
     entries_.clear();
     generation_ = doc.generation;

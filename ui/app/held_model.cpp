@@ -51,6 +51,10 @@ const char* modelSourceName(ModelSource source) {
   return "population";
 }
 
+const EigenwalkerModel* heldModelOtherThanThePopulations(const Document& doc) {
+  return doc.modelSource != ModelSource::Population ? doc.heldModel() : nullptr;
+}
+
 std::string heldModelPhrase(const Document& doc) {
   switch (doc.modelSource) {
     case ModelSource::Population:

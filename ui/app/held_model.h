@@ -29,6 +29,11 @@ WalkerModel modelForWalker(const Document& doc, int index);
 // the trial the model was built from, whatever it is called).
 std::string subjectInModel(const EigenwalkerModel& model, const Walker& walker);
 
+// The held model when it is not the loaded population's own (the default model of real
+// walkers, an opened .ewm): its walkers, not the population's, are then the reference the gait
+// report's band, the snippet prior and the analysis use. Null for the population's model.
+const EigenwalkerModel* heldModelOtherThanThePopulations(const Document& doc);
+
 // "walkers.csv (30 walkers)", "24 real walkers (default)", "run.ewm (23 walkers)".
 std::string heldModelName(const Document& doc);
 // The same in a sentence's words: "the loaded population", "the default model", "run.ewm".

@@ -313,8 +313,8 @@ std::vector<GaitColumn> GaitPanel::exportColumns() const {
 // is not the population's own (the default model of real walkers, an opened .ewm), else the
 // loaded population (whose every walker is exact, not a model's part of it).
 void GaitPanel::updateBand(const AppState& s) {
-  const EigenwalkerModel* held = s.doc.heldModel();
-  const bool fromModel = held && s.doc.modelSource != ModelSource::Population;
+  const EigenwalkerModel* held = heldModelOtherThanThePopulations(s.doc);
+  const bool fromModel = held != nullptr;
   if (!fromModel && !s.doc.population) return;
   auto key = std::make_tuple(s.doc.generation, static_cast<int>(s.doc.modelSource),
                              static_cast<const void*>(fromModel ? held : nullptr), heldModelName(s.doc));
