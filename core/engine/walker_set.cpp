@@ -82,13 +82,16 @@ FourierFit averageFits(const std::vector<FourierFit>& fits) {
 
 }  // namespace
 
+bool isTrialOf(const Walker& walker, const TrialInfo& trial) {
+  return trial.subject == walker.subject && trial.condition == walker.condition &&
+         std::find(walker.files.begin(), walker.files.end(), trial.file) != walker.files.end();
+}
+
 std::optional<double> walkerSpeedMps(const Dataset& dataset, const Walker& walker) {
   double sum = 0.0;
   int count = 0;
   for (const auto& t : dataset.trials) {
-    if (t.info.subject != walker.subject || t.info.condition != walker.condition) continue;
-    if (std::find(walker.files.begin(), walker.files.end(), t.info.file) == walker.files.end()) continue;
-    if (!(t.trial.speedMps > 0.0)) continue;
+    if (!isTrialOf(walker, t.info) || !(t.trial.speedMps > 0.0)) continue;
     sum += t.trial.speedMps;
     ++count;
   }

@@ -33,6 +33,9 @@ struct Walker {
 // (missing_joints.h) is left out the same way: a model is not built from its own estimates.
 std::vector<Walker> makeWalkers(const Dataset& dataset, std::vector<std::string>* warnings = nullptr);
 
+// Whether `trial` is one of the trials averaged into `walker` (its subject, condition and file).
+bool isTrialOf(const Walker& walker, const TrialInfo& trial);
+
 // The mean overground speed (m/s) of the walker's trials in `dataset` that have one (a
 // treadmill trial has none); nullopt when none has.
 std::optional<double> walkerSpeedMps(const Dataset& dataset, const Walker& walker);

@@ -49,8 +49,8 @@ Shape shapeOf(const Eigen::MatrixX3d& p) {
 // The median over frames of the seen joints' extent down the image (a detection's height).
 double medianHeightPx(const Eigen::MatrixXd& jointsPx) {
   std::vector<double> heights;
+  Eigen::MatrixX3d points(kJointCount, 3);
   for (Eigen::Index f = 0; f < jointsPx.rows(); ++f) {
-    Eigen::MatrixX3d points(kJointCount, 3);
     for (int j = 0; j < kJointCount; ++j) points.row(j) << jointsPx(f, 2 * j), jointsPx(f, 2 * j + 1), 1.0;
     const Shape shape = shapeOf(points);
     if (shape.points >= 2) heights.push_back(shape.heightPx);

@@ -82,8 +82,7 @@ Population populationFromDataset(Dataset dataset, std::string label, const LoadP
     f.h2Share = w.fit.h2Share;
     std::array<bool, kJointCount> estimated{};
     for (const auto& t : dataset.trials) {
-      if (t.info.subject != w.subject || t.info.condition != w.condition) continue;
-      if (std::find(w.files.begin(), w.files.end(), t.info.file) == w.files.end()) continue;
+      if (!isTrialOf(w, t.info)) continue;
       ++f.trials;
       f.format = t.trial.joints.format;
       for (std::size_t j = 0; j < estimated.size(); ++j) {
