@@ -23,7 +23,7 @@ TrialInfo infoFromFileName(const fs::path& file) {
   info.file = file.string();
   info.subject = subjectFromFileName(file);
   info.source = "";
-  info.condition = "unspecified";
+  info.condition = kUnspecifiedCondition;
   return info;
 }
 
@@ -71,7 +71,7 @@ std::vector<PendingTrial> manifestTrials(const fs::path& manifest,
     if (t.path.empty() || t.info.subject.empty()) {
       throwMalformed(manifest.string(), linePosition(lines[i].number), "empty file or subject");
     }
-    if (t.info.condition.empty()) t.info.condition = "unspecified";
+    if (t.info.condition.empty()) t.info.condition = kUnspecifiedCondition;
     t.info.file = t.path.string();
     trials.push_back(std::move(t));
   }

@@ -15,6 +15,9 @@
 
 namespace ew {
 
+// The condition of a trial whose manifest names none (or that has no manifest).
+inline constexpr const char* kUnspecifiedCondition = "unspecified";
+
 struct TrialInfo {
   std::string file;       // resolved path
   std::string subject;    // manifest subject, else derived from the file name

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <string>
 
+#include "core/gait/dataset.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/widgets/flow.h"
@@ -40,8 +41,10 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
   if (beginPanel(ctx.backdrop, "Subjects", rect)) {
     ImGui::SetNextItemWidth(-1.0f);
     ImGui::InputTextWithHint("##filter", "search subjects…", filter.data(), filter.size());
-    const float factsHeight = 175.0f * ctx.scale;
-    const float listHeight = std::max(80.0f * ctx.scale, ImGui::GetContentRegionAvail().y - factsHeight);
+    // What goes below the list (the facts, whose rows vary with the walker, and the open row)
+    // as the last frame measured it; a guess on the first.
+    const float belowListHeight = belowList > 0.0f ? belowList : 175.0f * ctx.scale;
+    const float listHeight = std::max(80.0f * ctx.scale, ImGui::GetContentRegionAvail().y - belowListHeight);
     // The source column only when the subject ids have room beside it (the facts below name it).
     const float idW = ImGui::CalcTextSize("SYN000_0").x, sourceW = ImGui::CalcTextSize("synthetic").x;
     const float hzW = ImGui::CalcTextSize("0.00").x;
@@ -97,6 +100,7 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       }
       ImGui::EndTable();
     }
+    const float belowListTop = ImGui::GetCursorPosY();
 
     if (s.doc.selectedWalker()) {
       const auto& w = *s.doc.selectedWalker();
@@ -105,10 +109,9 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
       if (ImGui::BeginTable("facts", 2, ImGuiTableFlags_SizingStretchProp)) {
         ImGui::TableSetupColumn("k", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("from model").x);
         ImGui::TableSetupColumn("v", ImGuiTableColumnFlags_WidthStretch);
-        // (Spaced around its "/" so that a narrow panel breaks the id there, not mid-word.)
-        std::string id = w.id;
-        if (const auto slash = id.find('/'); slash != std::string::npos) id.replace(slash, 1, " / ");
-        fact("walker", id);
+        fact("walker", w.subject);
+        // A file opened on its own has no condition ("unspecified"): no row to say so.
+        if (w.condition != kUnspecifiedCondition) fact("condition", w.condition);
         fact("source", w.source == f.format || f.format.empty() ? w.source : w.source + " (" + f.format + ")");
         char buf[128];
         if (f.speedMps) {
@@ -124,7 +127,7 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
           if (f.modelEstimated[static_cast<std::size_t>(j)])
             fromModel += (fromModel.empty() ? "" : ", ") +
                          std::string(kJointNames[static_cast<std::size_t>(j)]);
-        fact("estimated", !estimated.empty()  ? estimated
+        fact("estimated", !estimated.empty()  ? estimated + " (from the markers)"
                           : fromModel.empty() ? "none (all measured)"
                                               : "none from the markers");
         if (!fromModel.empty()) fact("from model", fromModel + " (the marker set lacks them)");
@@ -151,6 +154,7 @@ void SubjectsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
                            : "Default population";
     if (ImGui::SmallButton(back)) actions::open(s, {});
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Back to the synthetic default population (the program's own)");
+    belowList = ImGui::GetCursorPosY() - belowListTop;
   }
   ImGui::End();
 }

@@ -16,6 +16,7 @@ struct SubjectsPanel {
   std::array<char, 1024> openPath{};
   bool scrollToSelection = true;
   int scrolledFrames = 0;  // the scroll is repeated next frame: rows just added count then
+  float belowList = 0.0f;  // the height under the list, measured each frame (0: not yet)
   float lastHeight = 0.0f;  // the panel's height: when it changes, the selection is brought back
 
   void draw(AppState& s, const FrameContext& ctx, const PanelRect& rect);
