@@ -99,6 +99,21 @@ std::optional<double> walkerSpeedMps(const Dataset& dataset, const Walker& walke
   return sum / count;
 }
 
+std::vector<Walker> storedWalkers(const EigenwalkerModel& model, const std::string& source) {
+  const Eigen::MatrixXd stored = storedWalkerVectors(model);
+  std::vector<Walker> walkers(static_cast<std::size_t>(model.walkerCount()));
+  for (int r = 0; r < model.walkerCount(); ++r) {
+    Walker& w = walkers[static_cast<std::size_t>(r)];
+    w.id = model.walkerIds[static_cast<std::size_t>(r)];
+    w.subject = model.subjects[static_cast<std::size_t>(r)];
+    w.source = source;
+    w.condition = kUnspecifiedCondition;
+    w.fit.w = stored.col(r);
+    w.fit.omegaRadS = model.omegasRadS[r];
+  }
+  return walkers;
+}
+
 std::vector<Walker> makeWalkers(const Dataset& dataset, std::vector<std::string>* warnings) {
   std::vector<Walker> walkers;
   for (const auto& group : groupTrials(dataset)) {

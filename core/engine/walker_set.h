@@ -40,6 +40,12 @@ bool isTrialOf(const Walker& walker, const TrialInfo& trial);
 // treadmill trial has none); nullopt when none has.
 std::optional<double> walkerSpeedMps(const Dataset& dataset, const Walker& walker);
 
+// The walkers a model was built from, as it stores them (storedWalkerVectors, their ω; ids and
+// subjects as it names them, `source` as given, condition unspecified): no files, no manifest
+// attributes. What the viewer's axes and analysis learn from when the model held is not the
+// loaded population's own.
+std::vector<Walker> storedWalkers(const EigenwalkerModel& model, const std::string& source);
+
 // W = [w_1 … w_R] (225 × R).
 Eigen::MatrixXd walkerMatrix(const std::vector<Walker>& walkers);
 

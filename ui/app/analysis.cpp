@@ -6,6 +6,7 @@
 #include <ostream>
 #include <thread>
 
+#include "core/engine/walker_set.h"
 #include "core/io/atomic_write.h"
 
 namespace ew::ui {
@@ -21,14 +22,7 @@ AnalysisWalkers modelAnalysisWalkers(const EigenwalkerModel& model, const std::s
   AnalysisWalkers out{{}, name + "'s walkers (their part in its " + std::to_string(model.componentCount()) +
                               " eigenwalkers)",
                       varianceTable(model)};
-  const Eigen::MatrixXd stored = storedWalkerVectors(model);
-  for (int r = 0; r < model.walkerCount(); ++r) {
-    const auto k = static_cast<std::size_t>(r);
-    FourierFit fit;
-    fit.w = stored.col(r);
-    fit.omegaRadS = model.omegasRadS[r];
-    out.walkers.push_back({model.walkerIds[k], model.subjects[k], name, fit, {}, 0.0});
-  }
+  for (const Walker& w : storedWalkers(model, name)) out.walkers.push_back({w.id, w.subject, w.source, w.fit, {}, 0.0});
   return out;
 }
 

@@ -330,25 +330,41 @@ void Derived::update(const Document& doc) {
   }
 }
 
-const AttributeTable& Derived::attributes(const Document& doc) {
-  if (!attributes_ || attributesGeneration_ != doc.generation) {
-    attributes_ = populationAttributes(*doc.population);
+const AxesWalkers& Derived::populationAxes(const Document& doc) {
+  if (!populationAxesWalkers_ || attributesGeneration_ != doc.generation) {
+    populationAxesWalkers_ = std::make_unique<const AxesWalkers>(populationAxesWalkers(*doc.population));
     attributesGeneration_ = doc.generation;
   }
-  return *attributes_;
+  return *populationAxesWalkers_;
+}
+
+const AxesWalkers& Derived::heldModelAxes(const Document& doc, const EigenwalkerModel& held) {
+  const SemanticAxesKey key{doc.generation, 0, &held};
+  if (!modelAxesWalkers_ || !(modelAxesWalkersKey_ == key)) {
+    modelAxesWalkers_ = std::make_unique<const AxesWalkers>(modelAxesWalkers(held, heldModelPhrase(doc)));
+    modelAxesWalkersKey_ = key;
+  }
+  return *modelAxesWalkers_;
 }
 
 // The explorer's axes in explore mode; the attributes from the 2D view in reconstruct mode.
 void Derived::updateSemantic(const Document& doc) {
-  if (!doc.population || doc.population->walkerCount() < kMinPopulation) return;
+  const EigenwalkerModel* held = heldModelOtherThanThePopulations(doc);
+  const int reference = held ? held->walkerCount() : doc.population ? doc.population->walkerCount() : 0;
+  if (reference < kMinPopulation) {
+    semanticKey_.reset();
+    semantic_.reset();
+    return;
+  }
   if (doc.mode == Mode::Explore && explore_) {
-    const SemanticAxesKey key{doc.generation, explore_->components};
+    const SemanticAxesKey key{doc.generation, explore_->components, held};
     if (!semanticKey_ || !(*semanticKey_ == key)) {
       semanticKey_ = key;
-      semantic_ = std::make_unique<SemanticAxes>(
-          fitPopulationAxes(attributes(doc), *doc.population, truncateModel(*doc.heldModel(), key.components)));
+      const AxesWalkers& from = held ? heldModelAxes(doc, *held) : populationAxes(doc);
+      semantic_ = std::make_unique<SemanticAxes>(fitAxes(from, truncateModel(*doc.heldModel(), key.components)));
     }
   }
+  if (!doc.population || doc.population->walkerCount() < kMinPopulation) return;
   if (doc.mode != Mode::Reconstruct || !recon_ || !reconKey_ || recon_->inspected) {
     fromViewKey_.reset();
     fromView_.clear();
@@ -357,7 +373,7 @@ void Derived::updateSemantic(const Document& doc) {
     const auto axesKey = std::make_tuple(doc.generation, doc.walker, recon_->components, doc.modelSource, doc.modelFile);
     if (!viewAxesKey_ || *viewAxesKey_ != axesKey) {
       viewAxesKey_ = axesKey;
-      viewAxes_ = fitViewAxes(attributes(doc), *doc.population, doc.walker, recon_->model);
+      viewAxes_ = fitViewAxes(populationAxes(doc).table, *doc.population, doc.walker, recon_->model);
     }
     fromView_ = ui::attributesFromView(viewAxes_, *doc.population, doc.walker, *recon_);
   }

@@ -173,7 +173,7 @@ class Derived {
   const ExploreResult* explore() const { return explore_.get(); }
   // Compare mode only (Document::compareEngines): each engine's reconstruction.
   const CompareResult* compare() const { return compare_.get(); }
-  // Explore mode: the population's semantic axes in the explorer's model.
+  // Explore mode: the semantic axes in the explorer's model (semantic.h says of which walkers).
   const SemanticAxes* semantic() const { return semantic_.get(); }
   // Reconstruct mode (eigenwalker, population walker): attributes predicted from the 2D view.
   const std::vector<AttributeFromView>& attributesFromView() const { return fromView_; }
@@ -194,9 +194,12 @@ class Derived {
   std::string error_;
   int reconComputations_ = 0;
   SnippetPriorCache snippetPriors_;
-  // The population's attributes (measured once per generation) and what uses them.
-  std::shared_ptr<const AttributeTable> attributes_;
+  // The population's walkers and attributes (measured once per generation), and the held
+  // model's when it is not the population's (once per model held): what the axes learn from.
+  std::unique_ptr<const AxesWalkers> populationAxesWalkers_;
   std::uint64_t attributesGeneration_ = 0;
+  std::unique_ptr<const AxesWalkers> modelAxesWalkers_;
+  SemanticAxesKey modelAxesWalkersKey_;
   std::optional<SemanticAxesKey> semanticKey_;
   std::unique_ptr<SemanticAxes> semantic_;
   std::optional<ReconKey> fromViewKey_;
@@ -205,7 +208,8 @@ class Derived {
   // generation, walker, N, and which model is held (its source and file)
   std::optional<std::tuple<std::uint64_t, int, int, ModelSource, int>> viewAxesKey_;
   ViewAxes viewAxes_;
-  const AttributeTable& attributes(const Document& doc);
+  const AxesWalkers& populationAxes(const Document& doc);
+  const AxesWalkers& heldModelAxes(const Document& doc, const EigenwalkerModel& held);
   void updateSemantic(const Document& doc);
 };
 

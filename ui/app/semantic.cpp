@@ -37,15 +37,24 @@ const SemanticAxisView* SemanticAxes::find(const std::string& attribute) const {
   return nullptr;
 }
 
-std::shared_ptr<const AttributeTable> populationAttributes(const Population& population) {
-  return std::make_shared<const AttributeTable>(walkerAttributes(population.walkers));
+AxesWalkers populationAxesWalkers(const Population& population) {
+  return {population.walkers, walkerAttributes(population.walkers),
+          "the loaded population's " + std::to_string(population.walkerCount()) + " walkers"};
 }
 
-SemanticAxes fitPopulationAxes(const AttributeTable& table, const Population& population,
-                               const EigenwalkerModel& exploreModel) {
+AxesWalkers modelAxesWalkers(const EigenwalkerModel& model, const std::string& name) {
+  std::vector<Walker> walkers = storedWalkers(model, name);
+  AttributeTable table = walkerAttributes(walkers);
+  return {std::move(walkers), std::move(table), name + "'s " + std::to_string(model.walkerCount()) + " walkers"};
+}
+
+SemanticAxes fitAxes(const AxesWalkers& from, const EigenwalkerModel& exploreModel) {
+  const AttributeTable& table = from.table;
+  const std::vector<Walker>& reference = from.walkers;
   SemanticAxes out;
+  out.from = from.from;
   out.notes = table.notes;
-  const AxisWalkers walkers = axisWalkers(exploreModel, population.walkers);
+  const AxisWalkers walkers = axisWalkers(exploreModel, reference);
   out.omegaMeanRadS = walkers.omegaRadS.mean();
   out.walkersSd.resize(2, walkers.k.cols());
   for (Eigen::Index r = 0; r < walkers.k.cols(); ++r)
@@ -55,7 +64,7 @@ SemanticAxes fitPopulationAxes(const AttributeTable& table, const Population& po
   options.components = exploreModel.componentCount();
   std::vector<AxisFold> folds;
   try {
-    folds = axisFolds(population.walkers, options);
+    folds = axisFolds(reference, options);
   } catch (const Error& e) {
     out.notes.push_back("no leave-one-subject-out quality: " + e.problem());
   }
@@ -68,7 +77,7 @@ SemanticAxes fitPopulationAxes(const AttributeTable& table, const Population& po
         out.notes.push_back(a.name + ": not predictable from the walker (gain " + std::to_string(v.axis.gain).substr(0, 4) + ")");
         continue;
       }
-      if (!folds.empty()) v.quality = leaveOneSubjectOut(a, population.walkers, folds);
+      if (!folds.empty()) v.quality = leaveOneSubjectOut(a, reference, folds);
       out.axes.push_back(std::move(v));
     } catch (const Error& e) {
       out.notes.push_back(e.problem());

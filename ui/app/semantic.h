@@ -4,9 +4,12 @@
 // the explorer's walker, and, in reconstruct mode, the attributes predicted from the 2D view
 // beside the walker's own. GL-free; the coefficients panel draws them.
 //
-// The axes are fitted to the loaded population's walkers projected onto the explorer's model
-// (the held model truncated to its N). Their quality is the leave-one-subject-out R² or accuracy
-// of the population's own models refitted with that N. An axis moves the walker's coefficients
+// The axes are fitted to the reference walkers projected onto the explorer's model (the held
+// model truncated to its N): the loaded population's, or, when the held model is not the
+// population's own (the default model of real walkers, an opened .ewm), the model's own walkers
+// as it stores them, with what can be measured on them (their manifests are not in the model).
+// Their quality is the leave-one-subject-out R² or accuracy of those walkers' own models
+// refitted with that N. An axis moves the walker's coefficients
 // and its stride frequency together (ω matters for speed and cadence).
 
 #include <Eigen/Core>
@@ -33,7 +36,8 @@ struct ExploreState {
 
 struct SemanticAxesKey {
   std::uint64_t generation = 0;
-  int components = 0;  // the explorer's N
+  int components = 0;                             // the explorer's N
+  const EigenwalkerModel* heldOther = nullptr;    // heldModelOtherThanThePopulations
   bool operator==(const SemanticAxesKey&) const = default;
 };
 
@@ -45,18 +49,26 @@ struct SemanticAxisView {
 
 struct SemanticAxes {
   std::vector<SemanticAxisView> axes;   // the steerable ones, in the table's order
+  std::string from;                     // "the loaded population's 50 walkers", for the panel
   std::vector<std::string> notes;       // attributes without an axis, and why
   double omegaMeanRadS = 0.0;           // the population's mean ω (the explorer's base)
   Eigen::MatrixXd walkersSd;            // 2 × R: each walker's k1, k2 in SD units (the arrows' plot)
   const SemanticAxisView* find(const std::string& attribute) const;
 };
 
-// The population's attributes (manifest columns and measured gait), measured once per population.
-std::shared_ptr<const AttributeTable> populationAttributes(const Population& population);
+// The walkers the axes learn from, with their attributes (manifest columns and measured gait,
+// measured once): `from` names them for the panel.
+struct AxesWalkers {
+  std::vector<Walker> walkers;
+  AttributeTable table;
+  std::string from;
+};
+AxesWalkers populationAxesWalkers(const Population& population);
+// A model's stored walkers (storedWalkers): measured attributes only. `name` as heldModelPhrase.
+AxesWalkers modelAxesWalkers(const EigenwalkerModel& model, const std::string& name);
 
 // Axes for the explorer's model (the held model truncated to N components).
-SemanticAxes fitPopulationAxes(const AttributeTable& table, const Population& population,
-                               const EigenwalkerModel& exploreModel);
+SemanticAxes fitAxes(const AxesWalkers& from, const EigenwalkerModel& exploreModel);
 
 // "1.42 m/s", "0.72" (two classes), with the attribute's unit from its label.
 std::string formatAttributeValue(const SemanticAxisView& a, double value);

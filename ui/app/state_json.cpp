@@ -241,6 +241,7 @@ nlohmann::json semanticJson(const AppState& s) {
                       {"loo_r2", finite(a.quality.r2)},
                       {"loo_accuracy", finite(a.quality.accuracy)}});
     j["axes"] = list;
+    j["axes_from"] = axes->from;
   }
   nlohmann::json fromView = nlohmann::json::array();
   for (const auto& f : s.derived.attributesFromView())

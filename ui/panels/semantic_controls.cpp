@@ -62,7 +62,7 @@ void axisTooltip(const SemanticAxisView& a) {
   ImGui::TextUnformatted(a.axis.label.c_str());
   ImGui::TextDisabled("%s", a.source == "measured" ? "measured on each walker's own cycle" : "a column of the data's table");
   ImGui::TextUnformatted(qualityText(a).c_str());
-  ImGui::TextDisabled("Dragging moves the walker along the population's regression of the walker on\n"
+  ImGui::TextDisabled("Dragging moves the walker along these walkers' regression of the walker on\n"
                       "this attribute (Troje 2002): how walkers with more of it differ.");
   if (a.axis.categorical)
     ImGui::TextDisabled("0 = %s, 1 = %s: the mean walker of each class", a.axis.classes[0].c_str(), a.axis.classes[1].c_str());
@@ -80,7 +80,7 @@ void drawGaitSpace(const AppState& s, const SemanticAxes& axes, float scale) {
   if (w < 80.0f * scale) return;
   textDisabledWrapped("gait space e1 × e2 (SD units)");
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("dots: the population's walkers; orange: the explorer's walker\n"
+    ImGui::SetTooltip("dots: the walkers the axes are learnt from; orange: the explorer's walker\n"
                       "arrows: the direction each attribute grows in, 2.5 SD long when the axis lies\n"
                       "wholly in e1 × e2, shorter by the share of it in the other eigenwalkers");
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
@@ -156,6 +156,7 @@ void SemanticControls::drawExplore(AppState& s, float scale) {
     textDisabledWrapped("needs a loaded population of at least 3 walkers");
     return;
   }
+  textDisabledWrapped(("learnt from " + axes->from).c_str());
   if (axes->axes.empty()) {
     textDisabledWrapped("no attribute of these walkers is predictable from the walker");
     return;
