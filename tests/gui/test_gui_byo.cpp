@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -111,6 +112,22 @@ TEST_F(GuiBringYourOwn, TrialAgainstTheDefaultModelThenAnEwmThenABvh) {
   EXPECT_NEAR(rc.at("mpjpe_mm").get<double>(), cliHeldOut.at("mpjpe_mm").get<double>(),
               0.01 * cliHeldOut.at("mpjpe_mm").get<double>())
       << "viewer " << rc.dump(1) << "\ncli " << cliHeldOut.dump(1);
+
+  // Its attributes read from the 2D view, with axes learnt from the default model's other 23
+  // walkers, beside those measured on its own cycle. Height: a difference of two joints the
+  // reconstruction places within its MPJPE (about 20 mm); cadence: the walker's own ω is used.
+  const auto& semantic = c.at("semantic");
+  EXPECT_EQ(semantic.at("from_view_learnt_from"), "the default model's 24 walkers");
+  std::map<std::string, nlohmann::json> fromView;
+  for (const auto& f : semantic.at("from_view")) fromView[f.at("attribute").get<std::string>()] = f;
+  ASSERT_EQ(fromView.count("measured_height_m"), 1u) << semantic.dump(1);
+  const auto& height = fromView["measured_height_m"];
+  EXPECT_TRUE(height.at("truth").get<double>() > 1.2 && height.at("truth").get<double>() < 1.9) << height;
+  EXPECT_NEAR(height.at("from_2d").get<double>(), height.at("truth").get<double>(), 0.05) << height;
+  ASSERT_EQ(fromView.count("measured_cadence_spm"), 1u);
+  EXPECT_NEAR(fromView["measured_cadence_spm"].at("from_2d").get<double>(),
+              fromView["measured_cadence_spm"].at("truth").get<double>(), 1.0);
+  EXPECT_EQ(fromView.count("female"), 0u);  // the synthetic population's column: not the model's
 
   // What the user sees: the trial's point-lights, the reconstruction and its ground truth.
   const cv::Mat shot = load("c3d.png");

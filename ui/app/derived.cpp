@@ -350,10 +350,12 @@ const AxesWalkers& Derived::heldModelAxes(const Document& doc, const Eigenwalker
 // The explorer's axes in explore mode; the attributes from the 2D view in reconstruct mode.
 void Derived::updateSemantic(const Document& doc) {
   const EigenwalkerModel* held = heldModelOtherThanThePopulations(doc);
-  const int reference = held ? held->walkerCount() : doc.population ? doc.population->walkerCount() : 0;
-  if (reference < kMinPopulation) {
+  const int referenceWalkers = held ? held->walkerCount() : doc.population ? doc.population->walkerCount() : 0;
+  if (referenceWalkers < kMinPopulation) {
     semanticKey_.reset();
     semantic_.reset();
+    fromViewKey_.reset();
+    fromView_.clear();
     return;
   }
   if (doc.mode == Mode::Explore && explore_) {
@@ -364,18 +366,23 @@ void Derived::updateSemantic(const Document& doc) {
       semantic_ = std::make_unique<SemanticAxes>(fitAxes(from, truncateModel(*doc.heldModel(), key.components)));
     }
   }
-  if (!doc.population || doc.population->walkerCount() < kMinPopulation) return;
-  if (doc.mode != Mode::Reconstruct || !recon_ || !reconKey_ || recon_->inspected) {
+  if (doc.mode != Mode::Reconstruct || !recon_ || !reconKey_ || !doc.selectedWalker()) {
     fromViewKey_.reset();
     fromView_.clear();
   } else if (!fromViewKey_ || !(*fromViewKey_ == *reconKey_)) {
     fromViewKey_ = reconKey_;
+    const Walker& self = *doc.selectedWalker();
     const auto axesKey = std::make_tuple(doc.generation, doc.walker, recon_->components, doc.modelSource, doc.modelFile);
     if (!viewAxesKey_ || *viewAxesKey_ != axesKey) {
       viewAxesKey_ = axesKey;
-      viewAxes_ = fitViewAxes(populationAxes(doc).table, *doc.population, doc.walker, recon_->model);
+      // The reference walkers are the held model's; a population member is one of them (its
+      // manifest's values known) when the model is the population's own.
+      const AxesWalkers& reference = held ? heldModelAxes(doc, *held) : populationAxes(doc);
+      const int referenceIndex = held || recon_->inspected ? -1 : doc.walker;
+      const std::string without = held ? (recon_->inModel ? recon_->heldOutSubject : "") : self.subject;
+      viewAxes_ = fitViewAxes(reference, without, ownAttributeValues(reference, referenceIndex, self), recon_->model);
     }
-    fromView_ = ui::attributesFromView(viewAxes_, *doc.population, doc.walker, *recon_);
+    fromView_ = ui::attributesFromView(viewAxes_, self.fit.omegaRadS, *recon_);
   }
 }
 

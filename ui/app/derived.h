@@ -177,6 +177,9 @@ class Derived {
   const SemanticAxes* semantic() const { return semantic_.get(); }
   // Reconstruct mode (eigenwalker, population walker): attributes predicted from the 2D view.
   const std::vector<AttributeFromView>& attributesFromView() const { return fromView_; }
+  // The walkers those attributes' axes are learnt from ("the default model's 24 walkers") and
+  // the subject left out of them ("" for none).
+  const ViewAxes& attributesFromViewAxes() const { return viewAxes_; }
   // The last computation's error (empty when it succeeded).
   const std::string& error() const { return error_; }
   // How many times each cache was recomputed (for tests and the log).

@@ -99,21 +99,37 @@ std::string formatAttributeValue(const SemanticAxisView& a, double value) {
   return text;
 }
 
-ViewAxes fitViewAxes(const AttributeTable& table, const Population& population, int walker, const EigenwalkerModel& model) {
+std::map<std::string, double> ownAttributeValues(const AxesWalkers& reference, int referenceIndex, const Walker& walker) {
+  std::map<std::string, double> own;
+  if (referenceIndex >= 0) {
+    for (const auto& a : reference.table.attributes) own[a.name] = a.values[static_cast<size_t>(referenceIndex)];
+    return own;
+  }
+  const auto measured = measureWalkerAttributes(walker.fit.w, walker.fit.omegaRadS / (2.0 * std::numbers::pi), walker.id);
+  for (const auto& a : reference.table.attributes) {
+    const auto it = measured.find(a.name);
+    own[a.name] = a.source == "measured" && it != measured.end() ? it->second : NAN;
+  }
+  return own;
+}
+
+ViewAxes fitViewAxes(const AxesWalkers& reference, const std::string& withoutSubject,
+                     const std::map<std::string, double>& own, const EigenwalkerModel& model) {
   ViewAxes out;
-  if (walker < 0 || walker >= population.walkerCount()) return out;
+  out.from = reference.from;
+  out.without = withoutSubject;
   std::vector<int> kept;
-  const std::vector<Walker> train =
-      walkersExcept(population.walkers, population.walkers[static_cast<size_t>(walker)].subject, kept);
+  const std::vector<Walker> train = walkersExcept(reference.walkers, withoutSubject, kept);
   if (train.size() < 3) return out;
   const AxisWalkers trainWalkers = axisWalkers(model, train);
-  for (const auto& a : table.attributes) {
-    if (!std::isfinite(a.values[static_cast<size_t>(walker)])) continue;
+  for (const auto& a : reference.table.attributes) {
+    const auto value = own.find(a.name);
+    if (value == own.end() || !std::isfinite(value->second)) continue;
     try {
       SemanticAxis axis = fitSemanticAxis(trainingAttribute(a, kept), model.eigenvalues, trainWalkers);
       if (!axis.steerable) continue;
-      out.attributes.push_back(&a);
       out.axes.push_back(std::move(axis));
+      out.truth.push_back(value->second);
     } catch (const Error&) {
       // Too few values among the other subjects: no prediction for this attribute.
     }
@@ -121,22 +137,20 @@ ViewAxes fitViewAxes(const AttributeTable& table, const Population& population, 
   return out;
 }
 
-std::vector<AttributeFromView> attributesFromView(const ViewAxes& axes, const Population& population, int walker,
-                                                  const ReconBase& recon) {
+std::vector<AttributeFromView> attributesFromView(const ViewAxes& axes, double omegaRadS, const ReconBase& recon) {
   std::vector<AttributeFromView> out;
-  if (walker < 0 || walker >= population.walkerCount() || recon.engine != EngineKind::Eigenwalker) return out;
-  const Walker& self = population.walkers[static_cast<size_t>(walker)];
+  if (recon.engine != EngineKind::Eigenwalker) return out;
   const Eigen::VectorXd k3d = projectOntoModel(recon.model, recon.wTrue);
   for (size_t i = 0; i < axes.axes.size(); ++i) {
-    const WalkerAttribute& a = *axes.attributes[i];
+    const SemanticAxis& a = axes.axes[i];
     AttributeFromView v;
-    v.attribute = a.name;
+    v.attribute = a.attribute;
     v.label = a.label;
     v.categorical = a.categorical;
     v.classes = a.classes;
-    v.truth = a.values[static_cast<size_t>(walker)];
-    v.from2d = predictAttribute(axes.axes[i], recon.estimate.k, self.fit.omegaRadS);
-    v.from3d = predictAttribute(axes.axes[i], k3d, self.fit.omegaRadS);
+    v.truth = axes.truth[i];
+    v.from2d = predictAttribute(a, recon.estimate.k, omegaRadS);
+    v.from3d = predictAttribute(a, k3d, omegaRadS);
     out.push_back(v);
   }
   return out;

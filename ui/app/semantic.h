@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -75,21 +76,28 @@ std::string formatAttributeValue(const SemanticAxisView& a, double value);
 
 // Reconstruct mode: an attribute predicted from the 2D view (the reconstruction's k), from the
 // walker's own 3D w, and its true value — axes fitted in the reconstruction's model to the
-// population walkers of the other subjects.
+// reference walkers (AxesWalkers) of the other subjects.
 struct AttributeFromView {
   std::string attribute, label;
   bool categorical = false;
   std::vector<std::string> classes;
   double from2d = NAN, from3d = NAN, truth = NAN;
 };
+// The walker's own values of the reference's attributes, by name: a reference walker's from the
+// table (`referenceIndex` ≥ 0), any other's measured on its own cycle (its manifest columns,
+// if any, are not the reference's: NaN).
+std::map<std::string, double> ownAttributeValues(const AxesWalkers& reference, int referenceIndex, const Walker& walker);
 // The axes a walker's attributes are predicted with: fitted in its reconstruction's model to the
-// population walkers of the other subjects (they change with the walker and N, not with α).
+// reference walkers other than `withoutSubject`'s ("" for none), for the attributes the walker
+// has a value of (they change with the walker and N, not with α).
 struct ViewAxes {
-  std::vector<const WalkerAttribute*> attributes;  // into the table
+  std::string from;     // the reference's `from`
+  std::string without;  // the subject left out of it ("" for none)
   std::vector<SemanticAxis> axes;
+  std::vector<double> truth;  // the walker's own value of each
 };
-ViewAxes fitViewAxes(const AttributeTable& table, const Population& population, int walker, const EigenwalkerModel& model);
-std::vector<AttributeFromView> attributesFromView(const ViewAxes& axes, const Population& population, int walker,
-                                                  const ReconBase& recon);
+ViewAxes fitViewAxes(const AxesWalkers& reference, const std::string& withoutSubject,
+                     const std::map<std::string, double>& own, const EigenwalkerModel& model);
+std::vector<AttributeFromView> attributesFromView(const ViewAxes& axes, double omegaRadS, const ReconBase& recon);
 
 }  // namespace ew::ui

@@ -250,6 +250,7 @@ nlohmann::json semanticJson(const AppState& s) {
                         {"from_3d", finite(f.from3d)},
                         {"truth", finite(f.truth)}});
   j["from_view"] = fromView;
+  if (!fromView.empty()) j["from_view_learnt_from"] = s.derived.attributesFromViewAxes().from;
   return j;
 }
 

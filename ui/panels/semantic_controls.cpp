@@ -238,7 +238,9 @@ void SemanticControls::drawFromView(const AppState& s, float scale) {
                            : "From the 2D view###from_view";
   if (!ImGui::CollapsingHeader(header, ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::TextWrapped("Each attribute predicted from the reconstruction alone, from the walker's own 3D cycle, and its "
-                     "true value; the axes learnt from the other subjects.");
+                     "true value; the axes learnt from %s%s.",
+                     s.derived.attributesFromViewAxes().from.c_str(),
+                     s.derived.attributesFromViewAxes().without.empty() ? "" : ", without this subject");
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerH | ImGuiTableFlags_SizingStretchProp;
   // The column of values from the walker's own 3D cycle goes first when the panel is narrow:
   // the 2D view's against the truth is the point.
