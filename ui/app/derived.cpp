@@ -339,8 +339,8 @@ const AxesWalkers& Derived::populationAxes(const Document& doc) {
 }
 
 const AxesWalkers& Derived::heldModelAxes(const Document& doc, const EigenwalkerModel& held) {
-  const SemanticAxesKey key{doc.generation, 0, &held};
-  if (!modelAxesWalkers_ || !(modelAxesWalkersKey_ == key)) {
+  const std::pair<std::uint64_t, const EigenwalkerModel*> key{doc.generation, &held};
+  if (!modelAxesWalkers_ || modelAxesWalkersKey_ != key) {
     modelAxesWalkers_ = std::make_unique<const AxesWalkers>(modelAxesWalkers(held, heldModelPhrase(doc)));
     modelAxesWalkersKey_ = key;
   }

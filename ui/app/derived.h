@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/engine/metrics.h"
@@ -202,7 +203,7 @@ class Derived {
   std::unique_ptr<const AxesWalkers> populationAxesWalkers_;
   std::uint64_t attributesGeneration_ = 0;
   std::unique_ptr<const AxesWalkers> modelAxesWalkers_;
-  SemanticAxesKey modelAxesWalkersKey_;
+  std::pair<std::uint64_t, const EigenwalkerModel*> modelAxesWalkersKey_{0, nullptr};  // generation, model
   std::optional<SemanticAxesKey> semanticKey_;
   std::unique_ptr<SemanticAxes> semantic_;
   std::optional<ReconKey> fromViewKey_;
