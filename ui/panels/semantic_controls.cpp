@@ -153,7 +153,7 @@ void SemanticControls::drawExplore(AppState& s, float scale) {
   const SemanticAxes* axes = s.derived.semantic();
   if (!ImGui::CollapsingHeader("Semantic axes", ImGuiTreeNodeFlags_DefaultOpen)) return;
   if (!axes) {
-    textDisabledWrapped("needs a loaded population of at least 3 walkers");
+    textDisabledWrapped("needs at least 3 walkers to learn from (the population, or the model held when it is another)");
     return;
   }
   textDisabledWrapped(("learnt from " + axes->from).c_str());
