@@ -74,6 +74,7 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
           {"stride_hz", fit.strideHz},
           {"cadence_steps_per_min", fit.cadenceStepsPerMin},
           {"walking_in_place", fit.inPlace},
+          {"azimuth_caution", inPlaceAzimuthCaution(fit, a.alphaDeg.has_value())},
           {"speed_mps", fit.speedMps},
           {"speed_source", fit.inPlace ? "the stance feet (walking in place: a treadmill's belt)" : "the walker's progression"},
           {"stride_length_m", fit.strideLengthM},
@@ -116,6 +117,7 @@ void printSummary(const json& r) {
   // Said when the trunk stood in for feet that read another stride (a view from the front).
   if (r.contains("stride_source") && r["stride_source"].get<std::string>().starts_with("trunk"))
     std::cerr << "\nstride from the " << r["stride_source"].get<std::string>();
+  if (!r["azimuth_caution"].get<std::string>().empty()) std::cerr << "\ncaution: " << r["azimuth_caution"].get<std::string>();
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
 }
 

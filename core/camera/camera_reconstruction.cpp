@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 
@@ -278,6 +279,20 @@ Eigen::Vector2d lineFit(const VectorXd& x, const VectorXd& t) {
 }
 
 }  // namespace
+
+std::string inPlaceAzimuthCaution(const CameraFit& fit, bool azimuthGiven) {
+  const double fromEnd = std::min(std::abs(wrapDeg(fit.camera.alphaDeg)), 180.0 - std::abs(wrapDeg(fit.camera.alphaDeg)));
+  if (azimuthGiven || !fit.inPlace || std::abs(fit.camera.elevationDeg) >= kLevelCameraElevationDeg ||
+      fromEnd <= kEndOnViewDeg)
+    return "";
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "walking in place, seen from the side or obliquely by a level camera (elevation %.1f°): the azimuth "
+                "rests on the body's shape alone and may be tens of degrees off; a camera looking down on the "
+                "walker, or a given azimuth, pins it",
+                fit.camera.elevationDeg);
+  return text;
+}
 
 double walkerHeadHeightMm(const VectorXd& w) {
   const MatrixXd f = synthesizeFrames(w, 2 * std::numbers::pi, 0.0, frameTimes(50, 50.0));

@@ -72,6 +72,17 @@ struct CameraFit {
   std::vector<int> unseenJoints;    // joints with no image data (estimated by the model)
 };
 
+// Walking in place, a level camera and a side or oblique view: the azimuth then rests on the
+// body's shape alone, and a walker the model does not hold is drawn as well by a longer stride
+// seen more obliquely (docs/TRACKING.md, "On a treadmill": up to 26° off from the true joints
+// with the camera level, within 6° from 3 m up). Limits of that study's views.
+inline constexpr double kLevelCameraElevationDeg = 10.0;   // below this the feet's depth barely shows
+inline constexpr double kEndOnViewDeg = 30.0;              // within this of the front or back: pinned
+// A sentence for the report when the fitted azimuth is that weak (the fit estimated it, walking
+// in place, the camera within kLevelCameraElevationDeg of level, the view more than
+// kEndOnViewDeg from the front and the back); "" otherwise.
+std::string inPlaceAzimuthCaution(const CameraFit& fit, bool azimuthGiven);
+
 // A 3D walker's head centre above its ankles (the mean of the two), cycle mean, mm: the
 // "height" the fit reports, and its truth in the experiment.
 double walkerHeadHeightMm(const Eigen::VectorXd& w);

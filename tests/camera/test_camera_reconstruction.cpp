@@ -287,6 +287,32 @@ TEST(CameraReconstruction, AWalkerOnATreadmillIsFittedInPlace) {
   }
 }
 
+// The caution on a weak azimuth: walking in place, estimated, a camera within 10° of level,
+// more than 30° from the front and the back (docs/TRACKING.md, "On a treadmill").
+TEST(CameraReconstruction, InPlaceAzimuthCautionOnlyForALevelSideOrObliqueView) {
+  CameraFit fit;
+  fit.inPlace = true;
+  fit.camera.elevationDeg = 3.0;
+  for (double alpha : {35.0, 60.0, 90.0, 145.0, -35.0, -90.0, -145.0}) {
+    fit.camera.alphaDeg = alpha;
+    EXPECT_NE(inPlaceAzimuthCaution(fit, false), "") << alpha;
+    EXPECT_EQ(inPlaceAzimuthCaution(fit, true), "") << alpha << ": given";
+  }
+  for (double alpha : {0.0, 25.0, -25.0, 155.0, -155.0, 180.0}) {
+    fit.camera.alphaDeg = alpha;
+    EXPECT_EQ(inPlaceAzimuthCaution(fit, false), "") << alpha << ": from the front or the back";
+  }
+  fit.camera.alphaDeg = 60.0;
+  for (double elevation : {12.0, -12.0, 30.0}) {
+    fit.camera.elevationDeg = elevation;
+    EXPECT_EQ(inPlaceAzimuthCaution(fit, false), "") << elevation;
+  }
+  fit.camera.elevationDeg = -4.0;
+  EXPECT_NE(inPlaceAzimuthCaution(fit, false).find("elevation -4.0°"), std::string::npos);
+  fit.inPlace = false;
+  EXPECT_EQ(inPlaceAzimuthCaution(fit, false), "") << "walking past: the progression pins it";
+}
+
 // A person standing in place, shifting a little, is not walking on a treadmill either.
 TEST(CameraReconstruction, StandingStillIsNotWalkingInPlace) {
   WalkCamera c = test::crossingPinhole(1500, 5.0);

@@ -73,6 +73,31 @@ TEST(ReconstructCameraCli, ATreadmillWalkerIsFittedInPlace) {
   EXPECT_NE(r["speed_source"].get<std::string>().find("stance feet"), std::string::npos);
   EXPECT_NEAR(r["alpha_deg"].get<double>(), 40, 3.0);
   EXPECT_NEAR(r["speed_mps"].get<double>(), 1.25, 0.15);  // the mean walker's stance feet
+  // Looking down 12° (fitted about 10°) at 40° off the side: no caution asked for, whatever the
+  // fitted elevation says, when the azimuth is given.
+  const auto given = test::runProgram(EW_CLI_PATH,
+                                      {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
+                                       "--focal-px", "1400", "--angle", "40", "--out",
+                                       (clip.parent_path() / "treadmill_given.csv").string(), "--json"},
+                                      test::makeTempDir("camera_cli_treadmill_given"));
+  ASSERT_EQ(given.exitCode, 0) << given.output;
+  EXPECT_EQ(json::parse(given.output.substr(given.output.find("{\n")))["azimuth_caution"], "");
+
+  // The same walker in place filmed by a level camera: the azimuth is said to be weak.
+  const fs::path level = test::makeTempDir("camera_cli_treadmill_level");
+  camera.elevationDeg = 0.0;
+  test::writeFilmedOpenPose(level, camera, 150, 30.0);
+  const auto weak = test::runProgram(EW_CLI_PATH,
+                                     {"reconstruct", "--input", level.string(), "--unknown-camera", "--fps", "30",
+                                      "--focal-px", "1400", "--out", (level.parent_path() / "treadmill_level.csv").string(),
+                                      "--json"},
+                                     test::makeTempDir("camera_cli_treadmill_level_run"));
+  ASSERT_EQ(weak.exitCode, 0) << weak.output;
+  EXPECT_NE(weak.output.find("caution: walking in place, seen from the side or obliquely by a level camera"),
+            std::string::npos)
+      << weak.output;
+  const json w = json::parse(weak.output.substr(weak.output.find("{\n")));
+  EXPECT_NE(w["azimuth_caution"].get<std::string>().find("may be tens of degrees off"), std::string::npos);
 }
 
 // Nothing known but the frame rate: the focal length is estimated too. Measured: 1405 px,

@@ -163,11 +163,18 @@ TEST_F(GuiClip, ATreadmillClipIsFittedWalkingInPlace) {
   WalkCamera camera = crossingPinhole(1400, 5.0);
   camera.speedMmS = camera.startOffsetMm = 0.0;
   writeOpenPoseBody25(folder, {{projectWalk(walk, t, camera), Eigen::MatrixXd()}});
+  // And from a level camera, where the azimuth in place is weak (docs/TRACKING.md).
+  const fs::path levelFolder = dir / "treadmill_level_json";
+  WalkCamera level = camera;
+  level.elevationDeg = 0.0;
+  writeOpenPoseBody25(levelFolder, {{projectWalk(walk, t, level), Eigen::MatrixXd()}});
   const json script = json::array({{{"open", folder.string()}},
                                    {{"set_frame", 10}},
                                    {{"wait_frames", 2}},
                                    {{"export_state", path("treadmill.json")}},
-                                   {{"screenshot", path("treadmill.png")}}});
+                                   {{"screenshot", path("treadmill.png")}},
+                                   {{"open", levelFolder.string()}},
+                                   {{"export_state", path("level.json")}}});
   const RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(writeScript(dir, script.dump(2)).string()));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const json treadmill = state("treadmill.json");
@@ -178,6 +185,14 @@ TEST_F(GuiClip, ATreadmillClipIsFittedWalkingInPlace) {
   // The mean walker's stance feet move back at 1.2–1.3 m/s (its walkers' mean speed: 1.14 m/s).
   EXPECT_NEAR(fit["speed_mps"].get<double>(), 1.25, 0.15);
   EXPECT_LT(fit["reprojection_rms_px"].get<double>(), 6.0);
+  // The level camera's fit says its azimuth is weak, in the state and the log.
+  const json levelState = state("level.json");
+  EXPECT_NE(levelState["clip"]["fit"]["azimuth_caution"].get<std::string>().find("level camera"), std::string::npos)
+      << levelState["clip"]["fit"].dump(1);
+  bool logged = false;
+  for (const auto& line : levelState["log"])
+    logged = logged || line["text"].get<std::string>().find("may be tens of degrees off") != std::string::npos;
+  EXPECT_TRUE(logged) << levelState["log"].dump(1);
 }
 
 // Issue 18's layout in clip mode (issue 13): at the teaching sizes every drawer tab holds and

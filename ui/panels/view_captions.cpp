@@ -196,10 +196,12 @@ ViewCaption clipReconstructionCaption(const AppState& s) {
   if (c.model == CameraModel::Pinhole) {
     const ClipWorld w = clipWorld(*s.clip, 0);
     // The camera's distance to the walker's path (the line x = 0 of the walk).
-    std::snprintf(sub, sizeof sub, "camera %s, %.1f m from the %s, azimuth %.1f°, %s",
+    // A weak azimuth says so where it is read (the log has the whole sentence).
+    const bool weak = !inPlaceAzimuthCaution(fit, s.clip->settings.alphaDeg.has_value()).empty();
+    std::snprintf(sub, sizeof sub, "camera %s, %.1f m from the %s, azimuth %.1f°%s, %s",
                   heightOverAnklesText(w.eye.z).c_str(), std::abs(w.eye.x) / 1000.0,
                   fit.inPlace ? "treadmill's line (walking in place)" : "walking line", c.alphaDeg,
-                  tiltText(c.elevationDeg).c_str());
+                  weak ? " (weak: level camera)" : "", tiltText(c.elevationDeg).c_str());
   } else {
     std::snprintf(sub, sizeof sub, "scaled orthography: azimuth %.1f°, %s (distance not estimated; drawn at 5 m)",
                   c.alphaDeg, tiltText(c.elevationDeg).c_str());
