@@ -82,7 +82,7 @@ fs::path distortedClip(const std::string& stem) {
 
 json reconstructJson(const fs::path& clip, std::vector<std::string> cameraArgs, const std::string& stem) {
   std::vector<std::string> args{"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
-                                "--out", (clip.parent_path() / (stem + ".csv")).string(), "--json"};
+                                "--out", (test::makeTempDir("out") / (stem + ".csv")).string(), "--json"};
   args.insert(args.end(), cameraArgs.begin(), cameraArgs.end());
   const auto run = test::runProgram(EW_CLI_PATH, args, test::makeTempDir(stem));
   EXPECT_EQ(run.exitCode, 0) << run.output;
@@ -97,7 +97,7 @@ json reconstructJson(const fs::path& clip, std::vector<std::string> cameraArgs, 
 // 1.26 m/s, 4.4 px.
 TEST(LensDistortion, CalibratedReconstructionUndistortsTheKeypoints) {
   const fs::path clip = distortedClip("lens_cli");
-  const fs::path calib = clip.parent_path() / "Calib_wide.toml";
+  const fs::path calib = test::makeTempDir("out") / "Calib_wide.toml";
   std::ofstream(calib) << "[wide]\nname = \"wide\"\nsize = [1920, 1080]\n"
                           "matrix = [[1400, 0, 960], [0, 1400, 540], [0, 0, 1]]\n"
                           "distortions = [-0.25, 0.08, 0.001, -0.0005]\n";

@@ -30,7 +30,7 @@ fs::path filmedOpenPose(const std::string& stem) {
 
 TEST(ReconstructCameraCli, OpenPoseFolderThroughAKnownFocalLength) {
   const fs::path clip = filmedOpenPose("camera_cli");
-  const fs::path out = clip.parent_path() / "camera_cli_walk3d.csv";
+  const fs::path out = test::makeTempDir("out") / "camera_cli_walk3d.csv";
   const auto run = test::runProgram(EW_CLI_PATH,
                                     {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
                                      "--focal-px", "1400", "--out", out.string(), "--json"},
@@ -63,7 +63,7 @@ TEST(ReconstructCameraCli, ATreadmillWalkerIsFittedInPlace) {
   test::writeFilmedOpenPose(clip, camera, 150, 30.0);
   const auto run = test::runProgram(EW_CLI_PATH,
                                     {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
-                                     "--focal-px", "1400", "--out", (clip.parent_path() / "treadmill_walk3d.csv").string(),
+                                     "--focal-px", "1400", "--out", (test::makeTempDir("out") / "treadmill_walk3d.csv").string(),
                                      "--json"},
                                     test::makeTempDir("camera_cli_treadmill_run"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
@@ -78,7 +78,7 @@ TEST(ReconstructCameraCli, ATreadmillWalkerIsFittedInPlace) {
   const auto given = test::runProgram(EW_CLI_PATH,
                                       {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
                                        "--focal-px", "1400", "--angle", "40", "--out",
-                                       (clip.parent_path() / "treadmill_given.csv").string(), "--json"},
+                                       (test::makeTempDir("out") / "treadmill_given.csv").string(), "--json"},
                                       test::makeTempDir("camera_cli_treadmill_given"));
   ASSERT_EQ(given.exitCode, 0) << given.output;
   EXPECT_EQ(json::parse(given.output.substr(given.output.find("{\n")))["azimuth_caution"], "");
@@ -89,7 +89,7 @@ TEST(ReconstructCameraCli, ATreadmillWalkerIsFittedInPlace) {
   test::writeFilmedOpenPose(level, camera, 150, 30.0);
   const auto weak = test::runProgram(EW_CLI_PATH,
                                      {"reconstruct", "--input", level.string(), "--unknown-camera", "--fps", "30",
-                                      "--focal-px", "1400", "--out", (level.parent_path() / "treadmill_level.csv").string(),
+                                      "--focal-px", "1400", "--out", (test::makeTempDir("out") / "treadmill_level.csv").string(),
                                       "--json"},
                                      test::makeTempDir("camera_cli_treadmill_level_run"));
   ASSERT_EQ(weak.exitCode, 0) << weak.output;
@@ -106,7 +106,7 @@ TEST(ReconstructCameraCli, OpenPoseFolderWithTheFocalLengthUnknown) {
   const fs::path clip = filmedOpenPose("camera_cli_f");
   const auto run = test::runProgram(EW_CLI_PATH,
                                     {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
-                                     "--out", (clip.parent_path() / "camera_cli_f.csv").string(), "--json"},
+                                     "--out", (test::makeTempDir("out") / "camera_cli_f.csv").string(), "--json"},
                                     test::makeTempDir("camera_cli_f_run"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const json r = json::parse(run.output.substr(run.output.find("{\n")));
@@ -120,7 +120,7 @@ TEST(ReconstructCameraCli, OpenPoseFolderWithTheFocalLengthUnknown) {
   const auto sized = test::runProgram(EW_CLI_PATH,
                                       {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
                                        "--image-size", "1920x1080", "--out",
-                                       (clip.parent_path() / "camera_cli_f_sized.csv").string(), "--json"},
+                                       (test::makeTempDir("out") / "camera_cli_f_sized.csv").string(), "--json"},
                                       test::makeTempDir("camera_cli_f_sized_run"));
   ASSERT_EQ(sized.exitCode, 0) << sized.output;
   const json s = json::parse(sized.output.substr(sized.output.find("{\n")));
@@ -134,7 +134,7 @@ TEST(ReconstructCameraCli, UnknownAngleAndProjectAngleDoNotApply) {
   const fs::path clip = filmedOpenPose("camera_cli_bad");
   const auto run = test::runProgram(EW_CLI_PATH,
                                     {"reconstruct", "--input", clip.string(), "--unknown-camera", "--unknown-angle",
-                                     "--out", (clip.parent_path() / "x.csv").string()},
+                                     "--out", (test::makeTempDir("out") / "x.csv").string()},
                                     test::makeTempDir("camera_cli_bad_run"));
   EXPECT_NE(run.exitCode, 0);
   EXPECT_NE(run.output.find("the camera's azimuth is estimated"), std::string::npos) << run.output;
@@ -147,7 +147,7 @@ TEST(ReconstructCameraCli, KnownAzimuthAndElevationAreHeld) {
   const auto run = test::runProgram(EW_CLI_PATH,
                                     {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
                                      "--angle", "40", "--elevation", "12", "--out",
-                                     (clip.parent_path() / "camera_cli_fixed.csv").string(), "--json"},
+                                     (test::makeTempDir("out") / "camera_cli_fixed.csv").string(), "--json"},
                                     test::makeTempDir("camera_cli_fixed_run"));
   ASSERT_EQ(run.exitCode, 0) << run.output;
   const json r = json::parse(run.output.substr(run.output.find("{\n")));
@@ -162,11 +162,11 @@ TEST(ReconstructCameraCli, KnownAzimuthAndElevationAreHeld) {
 // with --focal-px, and the JSON says where the focal length came from.
 TEST(ReconstructCameraCli, CalibrationFileGivesTheFocalLength) {
   const fs::path clip = filmedOpenPose("camera_cli_calib");
-  const fs::path calib = clip.parent_path() / "Calib_test.toml";
+  const fs::path calib = test::makeTempDir("out") / "Calib_test.toml";
   std::ofstream(calib) << "[cam_01]\nname = \"side\"\nsize = [1920, 1080]\n"
                           "matrix = [[1400, 0, 960], [0, 1400, 540], [0, 0, 1]]\n"
                           "[cam_02]\nmatrix = [[900, 0, 960], [0, 900, 540], [0, 0, 1]]\n[metadata]\nerror = 0.0\n";
-  const fs::path out = clip.parent_path() / "camera_cli_calib.csv";
+  const fs::path out = test::makeTempDir("out") / "camera_cli_calib.csv";
   const auto run = test::runProgram(EW_CLI_PATH,
                                     {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
                                      "--camera", calib.string(), "--camera-name", "side", "--out", out.string(), "--json"},

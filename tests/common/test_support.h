@@ -18,7 +18,9 @@ std::filesystem::path sharedDataDir();
 // The project's source tree (for committed fixtures in tests/fixtures).
 std::filesystem::path sourceDir();
 
-// A fresh, empty temporary directory unique to the calling test.
+// A fresh, empty temporary directory unique to the calling test. Removed when the test
+// passes (one made outside a test: when the program ends with every test passed); kept, and
+// its path printed, when it fails, or always with EIGENWALKER_KEEP_TEST_OUTPUT=1.
 std::filesystem::path makeTempDir(const std::string& stem);
 
 bool dataRequired();
