@@ -55,49 +55,48 @@ TEST(ReconstructCameraCli, OpenPoseFolderThroughAKnownFocalLength) {
   EXPECT_EQ(rows, 150);
 }
 
+// `reconstruct --unknown-camera --focal-px 1400 --json` of an OpenPose folder, with `extra`
+// arguments: its exit status and printed report.
+test::ProgramRun reconstructAt1400Px(const fs::path& clip, const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args{"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
+                                "--focal-px", "1400", "--out", (test::makeTempDir("out") / "walk3d.csv").string(),
+                                "--json"};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return test::runProgram(EW_CLI_PATH, args, test::makeTempDir("run"));
+}
+
+json reportOf(const test::ProgramRun& run) { return json::parse(run.output.substr(run.output.find("{\n"))); }
+
 // The same walker on a treadmill: fitted walking in place, its speed the belt's (stance feet).
 TEST(ReconstructCameraCli, ATreadmillWalkerIsFittedInPlace) {
   const fs::path clip = test::makeTempDir("camera_cli_treadmill");
   WalkCamera camera = test::crossingPinhole(1400, 5.0);
   camera.speedMmS = camera.startOffsetMm = 0.0;
   test::writeFilmedOpenPose(clip, camera, 150, 30.0);
-  const auto run = test::runProgram(EW_CLI_PATH,
-                                    {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
-                                     "--focal-px", "1400", "--out", (test::makeTempDir("out") / "treadmill_walk3d.csv").string(),
-                                     "--json"},
-                                    test::makeTempDir("camera_cli_treadmill_run"));
+  const auto run = reconstructAt1400Px(clip);
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("walking in place (a treadmill), belt speed"), std::string::npos) << run.output;
-  const json r = json::parse(run.output.substr(run.output.find("{\n")));
+  const json r = reportOf(run);
   EXPECT_TRUE(r["walking_in_place"].get<bool>());
   EXPECT_NE(r["speed_source"].get<std::string>().find("stance feet"), std::string::npos);
   EXPECT_NEAR(r["alpha_deg"].get<double>(), 40, 3.0);
   EXPECT_NEAR(r["speed_mps"].get<double>(), 1.25, 0.15);  // the mean walker's stance feet
   // Looking down 12° (fitted about 10°) at 40° off the side: no caution asked for, whatever the
   // fitted elevation says, when the azimuth is given.
-  const auto given = test::runProgram(EW_CLI_PATH,
-                                      {"reconstruct", "--input", clip.string(), "--unknown-camera", "--fps", "30",
-                                       "--focal-px", "1400", "--angle", "40", "--out",
-                                       (test::makeTempDir("out") / "treadmill_given.csv").string(), "--json"},
-                                      test::makeTempDir("camera_cli_treadmill_given"));
+  const auto given = reconstructAt1400Px(clip, {"--angle", "40"});
   ASSERT_EQ(given.exitCode, 0) << given.output;
-  EXPECT_EQ(json::parse(given.output.substr(given.output.find("{\n")))["azimuth_caution"], "");
+  EXPECT_EQ(reportOf(given)["azimuth_caution"], "");
 
   // The same walker in place filmed by a level camera: the azimuth is said to be weak.
   const fs::path level = test::makeTempDir("camera_cli_treadmill_level");
   camera.elevationDeg = 0.0;
   test::writeFilmedOpenPose(level, camera, 150, 30.0);
-  const auto weak = test::runProgram(EW_CLI_PATH,
-                                     {"reconstruct", "--input", level.string(), "--unknown-camera", "--fps", "30",
-                                      "--focal-px", "1400", "--out", (test::makeTempDir("out") / "treadmill_level.csv").string(),
-                                      "--json"},
-                                     test::makeTempDir("camera_cli_treadmill_level_run"));
+  const auto weak = reconstructAt1400Px(level);
   ASSERT_EQ(weak.exitCode, 0) << weak.output;
   EXPECT_NE(weak.output.find("caution: walking in place, seen from the side or obliquely by a level camera"),
             std::string::npos)
       << weak.output;
-  const json w = json::parse(weak.output.substr(weak.output.find("{\n")));
-  EXPECT_NE(w["azimuth_caution"].get<std::string>().find("may be tens of degrees off"), std::string::npos);
+  EXPECT_NE(reportOf(weak)["azimuth_caution"].get<std::string>().find("may be tens of degrees off"), std::string::npos);
 }
 
 // Nothing known but the frame rate: the focal length is estimated too. Measured: 1405 px,
