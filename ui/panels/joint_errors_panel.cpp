@@ -205,9 +205,12 @@ void drawCompare(const CompareResult& c, float scale) {
 void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   const bool clip = s.doc.mode == Mode::Clip;
   const bool compare = s.doc.compareEngines && s.doc.mode == Mode::Reconstruct;
-  const char* title = clip      ? "Reprojection residual per joint (RMS over the clip, px)###joint_errors"
-                      : compare ? "Engines vs ground truth; depth RMS per joint (mm)###joint_errors"
-                                : "Depth error per joint (RMS over one cycle, mm)###joint_errors";
+  const char* title = clip      ? fittingTitle("Reprojection residual per joint (RMS over the clip, px)###joint_errors",
+                                               "Residual per joint (px)###joint_errors", rect.size.x)
+                      : compare ? fittingTitle("Engines vs ground truth; depth RMS per joint (mm)###joint_errors",
+                                               "Engines: depth RMS (mm)###joint_errors", rect.size.x)
+                                : fittingTitle("Depth error per joint (RMS over one cycle, mm)###joint_errors",
+                                               "Depth error per joint (mm)###joint_errors", rect.size.x);
   if (beginPanel(ctx.backdrop, title, rect, ImGuiWindowFlags_NoScrollbar)) {
     const ReconDisplay* d = s.derived.display();
     const ReconBase* r = s.derived.recon();

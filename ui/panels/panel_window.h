@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstring>
 
 #include "ui/render/backdrop.h"
 
@@ -20,6 +21,15 @@ struct PanelRect {
 // `margin` to the edges — so that a small window or a large UI scale gets most of the screen.
 inline float floatingExtent(float screen, float share, float least, float margin) {
   return std::min(screen - margin, std::max(screen * share, least));
+}
+
+// `title`, or `shortTitle` where the title bar (`width` px) cannot show the title's visible part
+// (before "###", which both must share). A long title cut mid-word reads as a mistake on a
+// projector (the drawer at 1024 × 768).
+inline const char* fittingTitle(const char* title, const char* shortTitle, float width) {
+  const char* visibleEnd = std::strstr(title, "###");
+  const float need = ImGui::CalcTextSize(title, visibleEnd).x + 2.0f * ImGui::GetStyle().FramePadding.x;
+  return need <= width ? title : shortTitle;
 }
 
 // ImGui::Begin at a fixed place; always pair with ImGui::End(). The window's background

@@ -204,9 +204,12 @@ void drawProfile(const ReconBase& r, const ViewSearch& vs, const FrameContext& c
 void ProfilePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
   const bool snippets = s.derived.recon() && s.derived.recon()->engine == EngineKind::Snippet &&
                         !(s.doc.compareEngines && s.doc.mode == Mode::Reconstruct);
-  const char* title = s.doc.mode == Mode::Clip ? "Camera fit: where each start ended###profile"
-                      : snippets             ? "View angle of each snippet###profile"
-                                             : "View-angle profile J(α)###profile";
+  const char* title = s.doc.mode == Mode::Clip ? fittingTitle("Camera fit: where each start ended###profile",
+                                                             "Camera fit's starts###profile", rect.size.x)
+                      : snippets             ? fittingTitle("View angle of each snippet###profile",
+                                                            "Snippets' view angles###profile", rect.size.x)
+                                             : fittingTitle("View-angle profile J(α)###profile", "J(α)###profile",
+                                                            rect.size.x);
   if (beginPanel(ctx.backdrop, title, rect, ImGuiWindowFlags_NoScrollbar)) {
     const ReconBase* r = s.derived.recon();
     // Compare mode: the eigenwalker's J(α) with every engine's α̂ over it, whichever engine is selected.
