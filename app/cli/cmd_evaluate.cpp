@@ -19,6 +19,9 @@
 #include "core/experiments/results_folder.h"
 #include "core/gait/dataset.h"
 #include "core/io/atomic_write.h"
+#ifdef EW_HAVE_PLOTS
+#include "plots/raster_plot.h"
+#endif
 
 namespace ew::cli {
 namespace {
@@ -270,7 +273,9 @@ int runEvaluate(const EvaluateArgs& a) {
   EvaluationProvenance provenance{commandLine(), {}};
   for (const auto& t : dataset.trials) provenance.dataFiles.push_back(t.info.file);
   ResultsFolderOptions folder;
-  folder.plots = !a.noPlots;
+#ifdef EW_HAVE_PLOTS
+  if (!a.noPlots) folder.plots = rasterPlotWriter();
+#endif
   writeResultsFolder(out, results, provenance, folder);
   printHeadline(results, out);
   std::cerr << "total " << std::setprecision(2)

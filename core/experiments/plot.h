@@ -1,10 +1,11 @@
 #pragma once
-// Small raster plots for the experiments (paper-style figures: axes, ticks, units,
-// legend), drawn with OpenCV into PNG files. Without OpenCV at build time no plot is
-// written (plotsAvailable() is false) and everything else still works.
+// The experiments' figures as data (paper-style: axes, ticks, units, legend). Drawing them
+// is not core's: a PlotWriter does it (plots/raster_plot.h draws PNGs with OpenCV; the CLI
+// passes it). Without a writer no figure is written and everything else still works.
 
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -49,19 +50,17 @@ struct BarPlot {
   std::string referenceLabel;
 };
 
-bool plotsAvailable();
-
-// Write a PNG (width × height pixels). Throw Error(Io) when the file cannot be written,
-// Error(BadArgument) for a size outside 320-8192 × 240-8192, series whose x, y (and spread)
-// differ in length, non-finite axis limits, a log axis with a limit ≤ 0, a tick step ≤ 0,
-// or bar groups with more values than series colours. Non-finite points (and x ≤ 0 on a
-// log axis) are gaps: not drawn, not in the axis range.
-void saveLinePlot(const std::filesystem::path& file, const LinePlot& plot, int width = 960, int height = 640);
-void saveBarPlot(const std::filesystem::path& file, const BarPlot& plot, int width = 960, int height = 720);
+// Writes a figure to a file (PNG for the raster writer). Empty members: no figures.
+struct PlotWriter {
+  std::function<void(const std::filesystem::path&, const LinePlot&)> line;
+  std::function<void(const std::filesystem::path&, const BarPlot&)> bar;
+  explicit operator bool() const { return line && bar; }
+};
 
 // The figures of the experiments that ran (paper figures 2, 3, 5a–c, 6, and the noise and
-// missing-joint extensions) into `dir`; returns the file names written (none without OpenCV).
+// missing-joint extensions) into `dir` with `writer`; returns the file names written (none
+// without a writer).
 std::vector<std::string> writeEvaluationPlots(const std::filesystem::path& dir,
-                                              const EvaluationResults& results);
+                                              const EvaluationResults& results, const PlotWriter& writer);
 
 }  // namespace ew

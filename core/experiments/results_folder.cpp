@@ -512,7 +512,7 @@ std::vector<std::string> writeResultsFolder(const fs::path& dir, const Evaluatio
       add("semantic_views_summary.csv", semanticViewSummaryCsv(r.semantic.viewSummary));
     }
     if (options.plots) {
-      for (const auto& name : writeEvaluationPlots(partial, r)) {
+      for (const auto& name : writeEvaluationPlots(partial, r, options.plots)) {
         written.push_back(name);
         if (options.afterFile) options.afterFile(partial / name);
       }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/experiments/experiments.h"
+#include "core/experiments/plot.h"
 
 namespace ew {
 
@@ -92,7 +93,7 @@ struct EvaluationProvenance {
 std::string summaryJson(const EvaluationResults& results, const EvaluationProvenance& provenance);
 
 struct ResultsFolderOptions {
-  bool plots = true;  // PNG figures (when built with OpenCV)
+  PlotWriter plots;  // the figures' writer (plots/raster_plot.h: PNGs); empty: no figures
   // Called after each file is written into the temporary folder (progress; tests use it
   // to fail a run midway).
   std::function<void(const std::filesystem::path&)> afterFile;

@@ -14,7 +14,7 @@
 #include "core/engine/fourier.h"
 #include "core/engine/synthetic_walkers.h"
 #include "core/experiments/experiments.h"
-#include "core/experiments/plot.h"
+#include "plots/raster_plot.h"
 #include "core/experiments/results_folder.h"
 #include "core/experiments/view_csv.h"
 #include "tests/common/test_support.h"
@@ -187,7 +187,9 @@ TEST(ResultsFolder, HeadersSummaryAndFigures) {
   const auto walkers = subspacePopulation(6, 3, 20.0);
   const std::set<Experiment> all(allExperiments().begin(), allExperiments().end());
   const EvaluationResults r = runEvaluation(walkers, all, smallOptions());
-  const auto names = writeResultsFolder(tmp / "out", r, {"eigenwalker-cli evaluate …", {"a.c3d"}});
+  ResultsFolderOptions withFigures;
+  withFigures.plots = rasterPlotWriter();
+  const auto names = writeResultsFolder(tmp / "out", r, {"eigenwalker-cli evaluate …", {"a.c3d"}}, withFigures);
   const fs::path out = tmp / "out";
   EXPECT_EQ(firstLine(out / "harmonics.csv"), "walker,subject,source,stride_hz,h1_share,h2_share,residual_share");
   EXPECT_EQ(firstLine(out / "variance.csv"), "component,eigenvalue_mm2,variance_share,cumulative_share");
@@ -225,7 +227,7 @@ TEST(ResultsFolder, HeadersSummaryAndFigures) {
     EXPECT_TRUE(s["timings_s"].contains(t)) << t;
   }
   EXPECT_EQ(s["data_files"][0], "a.c3d");
-  if (plotsAvailable()) {
+  {
     for (const char* png : {"fig2_cumulative_variance.png", "fig3_sigma_sweep.png", "fig5a_abs_error.png",
                             "fig5b_rel_error.png", "fig5c_var_missing.png", "fig6_view_angle.png", "noise.png",
                             "missing_joints.png", "lower_body.png"}) {
@@ -246,7 +248,6 @@ TEST(ResultsFolder, AFailureMidwayLeavesTheOldFolderUntouched) {
   o.sigma2Mm2 = 100.0;
   const EvaluationResults r = runEvaluation(walkers, {Experiment::Variance, Experiment::KnownView}, o);
   ResultsFolderOptions failing;
-  failing.plots = false;
   int files = 0;
   failing.afterFile = [&files](const fs::path& file) {
     if (++files == 2) throw Error(ErrorKind::Io, file.string(), "", "disk full (simulated)");
@@ -265,7 +266,7 @@ TEST(ResultsFolder, AFailureMidwayLeavesTheOldFolderUntouched) {
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(tmp)) ++entries;
   EXPECT_EQ(entries, 1u);  // no temporary folder left behind
   // And a successful run replaces it.
-  writeResultsFolder(tmp / "old", r, {}, {false, {}});
+  writeResultsFolder(tmp / "old", r, {}, {});
   EXPECT_FALSE(fs::exists(tmp / "old" / "marker.txt"));
   EXPECT_TRUE(fs::exists(tmp / "old" / "known_view.csv"));
   fs::remove_all(tmp);

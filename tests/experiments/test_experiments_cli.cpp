@@ -82,8 +82,17 @@ TEST_F(ExperimentsCli, EvaluateWritesTheChosenExperiments) {
   EXPECT_GT(s["known_view"]["lsq"]["mean_abs_error_mm2"].get<double>(), 0.0);
   EXPECT_LE(s["unknown_view"]["map"]["mae_deg"].get<double>(), 180.0);
   EXPECT_NE(r.err.find("known-view"), std::string::npos) << r.err;  // progress lines
+  // The figures, drawn by the plots library the CLI links (core only describes them).
+  for (const char* png : {"fig2_cumulative_variance.png", "fig5a_abs_error.png", "fig6_view_angle.png"})
+    EXPECT_TRUE(fs::exists(out / png)) << png;
   // Nothing left beside the folder.
   for (const auto& e : fs::directory_iterator(dir_)) EXPECT_EQ(e.path().filename(), "eval");
+
+  // --no-plots: the CSVs only.
+  const fs::path bare = dir_ / "bare";
+  ASSERT_EQ(runCli("evaluate --data " + q(five()) + " --out " + q(bare) + " --experiment variance --no-plots", dir_).exitCode, 0);
+  EXPECT_TRUE(fs::exists(bare / "variance.csv"));
+  EXPECT_FALSE(fs::exists(bare / "fig2_cumulative_variance.png"));
 }
 
 TEST_F(ExperimentsCli, UsageErrorsExitWith2) {
