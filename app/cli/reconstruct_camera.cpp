@@ -74,7 +74,6 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
           {"stride_hz", fit.strideHz},
           {"cadence_steps_per_min", fit.cadenceStepsPerMin},
           {"walking_in_place", fit.inPlace},
-          {"azimuth_caution", inPlaceAzimuthCaution(fit, a.alphaDeg.has_value())},
           {"speed_mps", fit.speedMps},
           {"speed_source", fit.inPlace ? "the stance feet (walking in place: a treadmill's belt)" : "the walker's progression"},
           {"stride_length_m", fit.strideLengthM},
@@ -117,7 +116,7 @@ void printSummary(const json& r) {
   // Said when the trunk stood in for feet that read another stride (a view from the front).
   if (r.contains("stride_source") && r["stride_source"].get<std::string>().starts_with("trunk"))
     std::cerr << "\nstride from the " << r["stride_source"].get<std::string>();
-  if (!r["azimuth_caution"].get<std::string>().empty()) std::cerr << "\ncaution: " << r["azimuth_caution"].get<std::string>();
+  for (const auto& caution : r["cautions"]) std::cerr << "\ncaution: " << caution.get<std::string>();
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
 }
 
@@ -200,6 +199,7 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
   report["lens_undistorted"] = lens;
   report["stride_source"] = clip.strideSource;
   report["principal_point_prior"] = principalPointPrior(o, t);
+  report["cautions"] = clip.cautions;
   printSummary(report);
   if (a.json) std::cout << report.dump(2) << "\n";
   return 0;

@@ -294,6 +294,41 @@ std::string inPlaceAzimuthCaution(const CameraFit& fit, bool azimuthGiven) {
   return text;
 }
 
+std::string implausibleStrideCaution(const CameraFit& fit) {
+  const double statureM = fit.statureMm / 1000.0;
+  if (!(std::isfinite(fit.strideLengthM) && statureM > 0.0)) return "";
+  const double ratio = fit.strideLengthM / statureM;
+  if (ratio >= kMinStrideToStature && ratio <= kMaxStrideToStature) return "";
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the fitted walk strides %.2f m for a stature of %.2f m (%.2f times it), where people walk at "
+                "%.2f–%.2f times their stature: the camera fit is likely wrong (keypoints or a track that lost the "
+                "legs, or not a walk)",
+                fit.strideLengthM, statureM, ratio, kMinStrideToStature, kMaxStrideToStature);
+  return text;
+}
+
+std::string implausibleFocalCaution(const CameraFit& fit, bool focalGiven, std::optional<double> imageWidthPx) {
+  if (focalGiven || !imageWidthPx || fit.camera.model != CameraModel::Pinhole || !(fit.camera.focalPx > 0.0))
+    return "";
+  const double fovDeg = 2.0 * std::atan(0.5 * *imageWidthPx / fit.camera.focalPx) * 180.0 / std::numbers::pi;
+  if (fovDeg <= kMaxFieldOfViewDeg) return "";
+  char text[320];
+  std::snprintf(text, sizeof text,
+                "the estimated focal length, %.0f px, gives the %.0f px wide picture a %.0f° field of view, wider than "
+                "any lens but a fisheye: the camera fit is likely wrong (give the focal length, or a calibration)",
+                fit.camera.focalPx, *imageWidthPx, fovDeg);
+  return text;
+}
+
+std::vector<std::string> cameraFitCautions(const CameraFit& fit, const FitGivens& given) {
+  std::vector<std::string> out;
+  for (std::string c : {inPlaceAzimuthCaution(fit, given.azimuth), implausibleStrideCaution(fit),
+                        implausibleFocalCaution(fit, given.focal, given.imageWidthPx)})
+    if (!c.empty()) out.push_back(std::move(c));
+  return out;
+}
+
 double walkerHeadHeightMm(const VectorXd& w) {
   const MatrixXd f = synthesizeFrames(w, 2 * std::numbers::pi, 0.0, frameTimes(50, 50.0));
   const VectorXd ankles = 0.5 * (f.col(3 * index(Joint::LAnkle) + 2) + f.col(3 * index(Joint::RAnkle) + 2));

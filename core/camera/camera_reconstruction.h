@@ -83,6 +83,28 @@ inline constexpr double kEndOnViewDeg = 30.0;              // within this of the
 // kEndOnViewDeg from the front and the back); "" otherwise.
 std::string inPlaceAzimuthCaution(const CameraFit& fit, bool azimuthGiven);
 
+// A fitted walk people do not walk, or a lens few cameras have: the camera fit is then likely
+// wrong (a track that lost the legs, keypoints of another motion), whatever its residual says.
+// The stride against the stature: the default model's 24 real walkers stride 0.61–0.99 times
+// their stature at 0.79–1.62 m/s; a very slow walk's is about 0.35 of it, a very fast one's
+// about 1.2.
+inline constexpr double kMinStrideToStature = 0.35, kMaxStrideToStature = 1.25;
+// A horizontal field of view wider than this is a fisheye's, which a pinhole does not model.
+inline constexpr double kMaxFieldOfViewDeg = 120.0;
+// "" when the stride is within those bounds of the stature (or either is not measured).
+std::string implausibleStrideCaution(const CameraFit& fit);
+// "" when the focal length was given, the image's width is unknown, or the field of view
+// it gives the picture is at most kMaxFieldOfViewDeg.
+std::string implausibleFocalCaution(const CameraFit& fit, bool focalGiven, std::optional<double> imageWidthPx);
+
+// What the fit was given, for its cautions.
+struct FitGivens {
+  bool azimuth = false, focal = false;
+  std::optional<double> imageWidthPx;
+};
+// Every caution above that applies, in that order: the report's `cautions`.
+std::vector<std::string> cameraFitCautions(const CameraFit& fit, const FitGivens& given);
+
 // A 3D walker's head centre above its ankles (the mean of the two), cycle mean, mm: the
 // "height" the fit reports, and its truth in the experiment.
 double walkerHeadHeightMm(const Eigen::VectorXd& w);

@@ -8,6 +8,7 @@
 #include <array>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "core/camera/camera_reconstruction.h"
 #include "core/keypoints/image_gait.h"
@@ -28,6 +29,9 @@ struct ClipReconstruction {
   // … Hz)" (gaitForTheFit below), "trunk's bob (a track's, held)" (holdTheTrunksStride), or the
   // caller's own hint.
   std::string strideSource;
+  // Why the fit may not be trusted, as sentences (cameraFitCautions): a weak azimuth in place,
+  // a stride people do not walk, a fisheye's field of view. Empty for a fit that looks sound.
+  std::vector<std::string> cautions;
 };
 
 // The trunk's bob stands for the feet's strikes when it is clear and the strikes read a stride

@@ -313,6 +313,39 @@ TEST(CameraReconstruction, InPlaceAzimuthCautionOnlyForALevelSideOrObliqueView) 
   EXPECT_EQ(inPlaceAzimuthCaution(fit, false), "") << "walking past: the progression pins it";
 }
 
+// A stride people do not walk, and a fisheye's field of view, are said too (the sports2d demo's
+// unflattened tracks: 2.79 m for 1.71 m; 324 px for a 1768 px picture, 140°).
+TEST(CameraReconstruction, ImplausibleWalksAndLensesAreCautioned) {
+  CameraFit fit;
+  fit.camera.model = CameraModel::Pinhole;
+  fit.camera.focalPx = 1500;
+  fit.camera.elevationDeg = 20;
+  fit.statureMm = 1710;
+  for (double stride : {0.61 * 1.71, 0.99 * 1.71, 1.2 * 1.71, 0.4 * 1.71}) {
+    fit.strideLengthM = stride;
+    EXPECT_EQ(implausibleStrideCaution(fit), "") << stride;
+  }
+  fit.strideLengthM = 2.79;
+  EXPECT_NE(implausibleStrideCaution(fit).find("1.63 times it"), std::string::npos) << implausibleStrideCaution(fit);
+  fit.strideLengthM = 0.3;
+  EXPECT_NE(implausibleStrideCaution(fit), "");
+  fit.strideLengthM = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(implausibleStrideCaution(fit), "") << "not measured: nothing to say";
+
+  EXPECT_EQ(implausibleFocalCaution(fit, false, 1920.0), "") << "65° of view";
+  fit.camera.focalPx = 324;
+  EXPECT_NE(implausibleFocalCaution(fit, false, 1768.0).find("140° field of view"), std::string::npos);
+  EXPECT_EQ(implausibleFocalCaution(fit, true, 1768.0), "") << "given, not estimated";
+  EXPECT_EQ(implausibleFocalCaution(fit, false, std::nullopt), "") << "the picture's width unknown";
+  fit.camera.focalPx = 0.5 * 1768 / std::tan(60.0 * std::numbers::pi / 180.0) + 1.0;  // just under 120°
+  EXPECT_EQ(implausibleFocalCaution(fit, false, 1768.0), "");
+
+  fit.strideLengthM = 2.79;
+  fit.camera.focalPx = 324;
+  EXPECT_EQ(cameraFitCautions(fit, {false, false, 1768.0}).size(), 2u);
+  EXPECT_EQ(cameraFitCautions(fit, {false, true, 1768.0}).size(), 1u);
+}
+
 // A person standing in place, shifting a little, is not walking on a treadmill either.
 TEST(CameraReconstruction, StandingStillIsNotWalkingInPlace) {
   WalkCamera c = test::crossingPinhole(1500, 5.0);

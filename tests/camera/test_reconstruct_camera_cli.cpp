@@ -85,7 +85,7 @@ TEST(ReconstructCameraCli, ATreadmillWalkerIsFittedInPlace) {
   // fitted elevation says, when the azimuth is given.
   const auto given = reconstructAt1400Px(clip, {"--angle", "40"});
   ASSERT_EQ(given.exitCode, 0) << given.output;
-  EXPECT_EQ(reportOf(given)["azimuth_caution"], "");
+  EXPECT_EQ(reportOf(given)["cautions"], json::array());
 
   // The same walker in place filmed by a level camera: the azimuth is said to be weak.
   const fs::path level = test::makeTempDir("camera_cli_treadmill_level");
@@ -96,7 +96,9 @@ TEST(ReconstructCameraCli, ATreadmillWalkerIsFittedInPlace) {
   EXPECT_NE(weak.output.find("caution: walking in place, seen from the side or obliquely by a level camera"),
             std::string::npos)
       << weak.output;
-  EXPECT_NE(reportOf(weak)["azimuth_caution"].get<std::string>().find("may be tens of degrees off"), std::string::npos);
+  const json cautions = reportOf(weak)["cautions"];
+  ASSERT_EQ(cautions.size(), 1u) << cautions;
+  EXPECT_NE(cautions[0].get<std::string>().find("may be tens of degrees off"), std::string::npos);
 }
 
 // Nothing known but the frame rate: the focal length is estimated too. Measured: 1405 px,

@@ -188,5 +188,21 @@ TEST_F(TrackCli, ATreadmillWalkerIsTrackedAndFittedInPlace) {
   EXPECT_LT(beltMps, 2.5);
 }
 
+// The sports2d demo tracked from both hand-marked frames without flattening its background:
+// the legs stick to the grass and the fit explains them with a camera 67° down, 35 m away,
+// and a walk striding 1.6 times her stature. The report says the fit is not to be trusted
+// (flattened, the same track fits a level camera and raises no caution:
+// GuiVideo.MarksTheSports2dWalkerOnceAndFindsHerStrideStatureAndProfile).
+TEST_F(TrackCli, AWalkPeopleDoNotWalkIsCautioned) {
+  EW_REQUIRE_SHARED_DATA();
+  const fs::path video = test::sharedDataDir() / "video" / "sports2d-demo" / "demo.mp4";
+  const fs::path keys = test::sourceDir() / "tests" / "data" / "sports2d_demo_keyframes.json";
+  const test::ShellRun r = runCli("track --video \"" + video.string() + "\" --keyframes \"" + keys.string() +
+                                      "\" --first 40 --last 200 --out out_demo --reconstruct demo3d.csv",
+                                  root_);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("caution: the fitted walk strides"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace ew

@@ -346,8 +346,7 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& c) {
   s.log.info("Fitted " + describePaths({c->settings.path}) + " (" + c->rec.trial.format + ", " +
              c->rec.trial.layout->name + "): " + buf);
   for (const auto& w : c->rec.trial.warnings) s.log.warning(w);
-  if (const std::string caution = inPlaceAzimuthCaution(c->rec.fit, c->settings.alphaDeg.has_value()); !caution.empty())
-    s.log.warning(caution);
+  for (const auto& caution : c->rec.cautions) s.log.warning(caution);
   if (s.jobs.lastError.starts_with("Clip fit failed")) s.jobs.lastError.clear();
   // A video's track: the fit shows the frame the user is at.
   if (c->settings.tracked && s.video) setVideoFrame(s, s.video->frame);

@@ -158,7 +158,7 @@ nlohmann::json clipJson(const AppState& s) {
       {"head_height_m", f.headHeightMm / 1000.0},
       {"stature_m", f.statureMm / 1000.0},
       {"walking_in_place", f.inPlace},
-      {"azimuth_caution", inPlaceAzimuthCaution(f, r.settings.alphaDeg.has_value())},
+      {"cautions", r.rec.cautions},
       {"speed_mps", f.speedMps},
       {"stride_hz", f.strideHz},
       {"stride_length_m", f.strideLengthM},
