@@ -190,6 +190,10 @@ TEST_F(GuiClip, ATreadmillClipIsFittedWalkingInPlace) {
   const json& cautions = levelState["clip"]["fit"]["cautions"];
   ASSERT_EQ(cautions.size(), 1u) << levelState["clip"]["fit"].dump(1);
   EXPECT_NE(cautions[0].get<std::string>().find("level camera"), std::string::npos);
+  // In the amber banner, not only in the log.
+  ASSERT_TRUE(levelState["notice"].is_object()) << levelState["notice"];
+  EXPECT_EQ(levelState["notice"]["title"], "The fitted camera may be wrong (treadmill_level_json)");
+  EXPECT_EQ(levelState["notice"]["level"], "warning");
   bool logged = false;
   for (const auto& line : levelState["log"])
     logged = logged || line["text"].get<std::string>().find("may be tens of degrees off") != std::string::npos;

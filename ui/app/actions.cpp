@@ -334,6 +334,22 @@ void frameClipScene(AppState& s, const ClipResult& c) {
   cam.yawDeg = static_cast<float>(std::remainder(across, 360.0));
 }
 
+// A fit with cautions (a camera no one films a walk with, a weak azimuth) says so in the amber
+// banner, where the log alone would go unread; a later fit without them takes the banner away.
+constexpr const char* kFitCautionTitle = "The fitted camera may be wrong";
+void noticeFitCautions(AppState& s, const ClipResult& c) {
+  if (c.rec.cautions.empty()) {
+    if (s.jobs.notice && s.jobs.notice->title.starts_with(kFitCautionTitle)) s.jobs.notice.reset();
+    return;
+  }
+  OpenNotice n;
+  n.error = false;
+  n.title = std::string(kFitCautionTitle) + " (" + c.settings.path.filename().string() + ")";
+  for (const auto& caution : c.rec.cautions) n.fullText += (n.fullText.empty() ? "" : "\n") + caution;
+  n.detail = n.fullText;
+  showNotice(s, std::move(n));
+}
+
 void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& c) {
   const bool newClip = !s.clip || s.clip->settings.path != c->settings.path;
   s.clip = c;
@@ -350,13 +366,15 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& c) {
   if (s.jobs.lastError.starts_with("Clip fit failed")) s.jobs.lastError.clear();
   // A video's track: the fit shows the frame the user is at.
   if (c->settings.tracked && s.video) setVideoFrame(s, s.video->frame);
-  if (!newClip) return;
-  dismissNotice(s);
-  frameClipScene(s, *c);
-  s.view.clipZoom = 1.0;
-  std::erase(s.recentPaths, c->settings.path);
-  s.recentPaths.insert(s.recentPaths.begin(), c->settings.path);
-  if (s.recentPaths.size() > 10) s.recentPaths.resize(10);
+  if (newClip) {
+    dismissNotice(s);
+    frameClipScene(s, *c);
+    s.view.clipZoom = 1.0;
+    std::erase(s.recentPaths, c->settings.path);
+    s.recentPaths.insert(s.recentPaths.begin(), c->settings.path);
+    if (s.recentPaths.size() > 10) s.recentPaths.resize(10);
+  }
+  noticeFitCautions(s, *c);
 }
 
 // A fit that failed: at open, a failed open (the clip shown before, if any, stays); after a
