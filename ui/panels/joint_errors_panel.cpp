@@ -25,11 +25,16 @@ int drawJointBars(const std::array<double, kJointCount>& values, const std::arra
   const float labelW = ImGui::CalcTextSize("r_shoulder ").x;
   const float valueW = ImGui::CalcTextSize("(000.0)").x + 6.0f * scale;
   const float textH = ImGui::GetTextLineHeight();
-  // One column when 15 rows fit, else two side by side.
-  const int columns = size.y / static_cast<float>(kJointCount) >= textH + 2.0f ? 1 : 2;
+  // One column when 15 rows fit, else two side by side where each still shows its label,
+  // value and a bar; else one column that scrolls (two cramped columns cut every value: the
+  // drawer at 1280 × 720, UI scale 2).
+  const bool rowsFit = size.y / static_cast<float>(kJointCount) >= textH + 2.0f;
+  const bool twoColumnsFit = 0.5f * size.x >= labelW + valueW + 24.0f * scale;
+  const int columns = rowsFit || !twoColumnsFit ? 1 : 2;
   const int rows = (kJointCount + columns - 1) / columns;
   const float colW = size.x / static_cast<float>(columns);
-  const float rowH = size.y / static_cast<float>(rows);
+  const float rowH = std::max(size.y / static_cast<float>(rows), textH + 2.0f);
+  const float height = rowH * static_cast<float>(rows);
   // The bar takes what the label and the value leave; none when they fill the column.
   const float barMax = std::max(0.0f, colW - labelW - valueW - 8.0f * scale);
   for (int j = 0; j < kJointCount; ++j) {
@@ -42,7 +47,7 @@ int drawJointBars(const std::array<double, kJointCount>& values, const std::arra
     const auto name = kJointNames[ju];
     // Each cell clipped to its column: a narrow panel cuts a value, never overprints the
     // next column.
-    dl->PushClipRect(ImVec2(x, p0.y), ImVec2(x + colW - 4.0f * scale, p0.y + size.y), true);
+    dl->PushClipRect(ImVec2(x, p0.y), ImVec2(x + colW - 4.0f * scale, p0.y + height), true);
     dl->AddText(ImVec2(x, y + 0.5f * (rowH - textH)),
                 apart[ju] ? toImU32(palette::kModelEstimated) : ImGui::GetColorU32(ImGuiCol_TextDisabled), name.data(),
                 name.data() + name.size());
@@ -66,7 +71,7 @@ int drawJointBars(const std::array<double, kJointCount>& values, const std::arra
                 apart[ju] ? toImU32(palette::kModelEstimated) : ImGui::GetColorU32(ImGuiCol_Text), buf);
     dl->PopClipRect();
   }
-  ImGui::Dummy(size);
+  ImGui::Dummy(ImVec2(size.x, height));
   if (!ImGui::IsItemHovered()) return -1;
   const int col = std::clamp(static_cast<int>((ImGui::GetMousePos().x - p0.x) / colW), 0, columns - 1);
   const int row = std::clamp(static_cast<int>((ImGui::GetMousePos().y - p0.y) / rowH), 0, rows - 1);
@@ -211,7 +216,7 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
                                                "Engines: depth RMS (mm)###joint_errors", rect.size.x)
                                 : fittingTitle("Depth error per joint (RMS over one cycle, mm)###joint_errors",
                                                "Depth error per joint (mm)###joint_errors", rect.size.x);
-  if (beginPanel(ctx.backdrop, title, rect, ImGuiWindowFlags_NoScrollbar)) {
+  if (beginPanel(ctx.backdrop, title, rect)) {  // a scrollbar only where one column overflows
     const ReconDisplay* d = s.derived.display();
     const ReconBase* r = s.derived.recon();
     if (s.doc.mode == Mode::Explore) {
