@@ -345,6 +345,7 @@ void noticeFitCautions(AppState& s, const ClipResult& c) {
   OpenNotice n;
   n.error = false;
   n.title = std::string(kFitCautionTitle) + " (" + c.settings.path.filename().string() + ")";
+  n.shortTitle = "Doubtful camera fit";
   for (const auto& caution : c.rec.cautions) n.fullText += (n.fullText.empty() ? "" : "\n") + caution;
   n.detail = n.fullText;
   showNotice(s, std::move(n));

@@ -72,6 +72,7 @@ struct OpenNotice {
   std::vector<std::filesystem::path> retryPaths;  // what Retry opens
   bool canRetry = false;
   std::uint64_t serial = 0;  // a new notice comes to the front once
+  std::string shortTitle;    // for a row too narrow for the title ("Doubtful camera fit")
 };
 
 // The data shown before a load replaced it, kept until the new data's models are built: a

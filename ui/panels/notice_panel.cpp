@@ -65,7 +65,8 @@ std::optional<NoticeView> NoticePanel::current(const AppState& s) const {
                       o.fullText,
                       o.kept,
                       o.canRetry,
-                      o.serial};
+                      o.serial,
+                      o.shortTitle};
   }
   if (!s.exports.lastError.empty())
     return NoticeView{NoticeView::Kind::Export,
@@ -75,7 +76,8 @@ std::optional<NoticeView> NoticePanel::current(const AppState& s) const {
                       s.exports.lastError,
                       "Nothing was written; what is shown has not changed.",
                       false,
-                      0};
+                      0,
+                      ""};
   const std::string& recon = s.derived.error();
   if (!recon.empty() && recon != dismissedReconError)
     return NoticeView{NoticeView::Kind::Reconstruction,
@@ -85,7 +87,8 @@ std::optional<NoticeView> NoticePanel::current(const AppState& s) const {
                       recon,
                       "Choose another walker, model or setting.",
                       false,
-                      0};
+                      0,
+                      ""};
   return std::nullopt;
 }
 
@@ -130,12 +133,13 @@ void NoticePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& ro
     // Title and reason share what the buttons leave; the title gets at most half of it.
     const float room =
         std::max(0.0f, ImGui::GetContentRegionAvail().x - buttonsW - style.ItemSpacing.x);
-    // Where the title itself would be cut (a narrow drawer), just what kind of notice it is:
-    // hovering, or Details…, tells the rest.
+    // Where the title itself would be cut (a narrow drawer), its short form, or just what kind
+    // of notice it is: hovering, or Details…, tells the rest.
     const bool cramped = ImGui::CalcTextSize((n.title + ":").c_str()).x > 0.5f * room;
     ImGui::AlignTextToFramePadding();
     if (cramped) {
-      ImGui::TextColored(accent, "%s", n.error ? "Error" : "Warning");
+      const bool shortFits = !n.shortTitle.empty() && ImGui::CalcTextSize(n.shortTitle.c_str()).x <= room;
+      ImGui::TextColored(accent, "%s", shortFits ? n.shortTitle.c_str() : n.error ? "Error" : "Warning");
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", n.fullText.c_str());
     } else {
       ImGui::TextColored(accent, "%s", (n.title + ":").c_str());

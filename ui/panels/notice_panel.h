@@ -29,6 +29,7 @@ struct NoticeView {
   std::string kept;      // what the viewer still shows
   bool canRetry = false;
   std::uint64_t serial = 0;
+  std::string shortTitle;  // shown where the title does not fit ("" : "Error" or "Warning")
 };
 
 // The first clause of a message, for one line: its first line, without a leading
