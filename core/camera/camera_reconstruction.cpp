@@ -280,11 +280,14 @@ Eigen::Vector2d lineFit(const VectorXd& x, const VectorXd& t) {
 
 }  // namespace
 
-std::string inPlaceAzimuthCaution(const CameraFit& fit, bool azimuthGiven) {
+bool inPlaceAzimuthIsWeak(const CameraFit& fit, bool azimuthGiven) {
   const double fromEnd = std::min(std::abs(wrapDeg(fit.camera.alphaDeg)), 180.0 - std::abs(wrapDeg(fit.camera.alphaDeg)));
-  if (azimuthGiven || !fit.inPlace || std::abs(fit.camera.elevationDeg) >= kLevelCameraElevationDeg ||
-      fromEnd <= kEndOnViewDeg)
-    return "";
+  return !azimuthGiven && fit.inPlace && std::abs(fit.camera.elevationDeg) < kLevelCameraElevationDeg &&
+         fromEnd > kEndOnViewDeg;
+}
+
+std::string inPlaceAzimuthCaution(const CameraFit& fit, bool azimuthGiven) {
+  if (!inPlaceAzimuthIsWeak(fit, azimuthGiven)) return "";
   char text[320];
   std::snprintf(text, sizeof text,
                 "walking in place, seen from the side or obliquely by a level camera (elevation %.1f°): the azimuth "
@@ -294,11 +297,17 @@ std::string inPlaceAzimuthCaution(const CameraFit& fit, bool azimuthGiven) {
   return text;
 }
 
-std::string implausibleStrideCaution(const CameraFit& fit) {
+bool strideIsImplausible(const CameraFit& fit) {
   const double statureM = fit.statureMm / 1000.0;
-  if (!(std::isfinite(fit.strideLengthM) && statureM > 0.0)) return "";
+  if (!(std::isfinite(fit.strideLengthM) && statureM > 0.0)) return false;
   const double ratio = fit.strideLengthM / statureM;
-  if (ratio >= kMinStrideToStature && ratio <= kMaxStrideToStature) return "";
+  return ratio < kMinStrideToStature || ratio > kMaxStrideToStature;
+}
+
+std::string implausibleStrideCaution(const CameraFit& fit) {
+  if (!strideIsImplausible(fit)) return "";
+  const double statureM = fit.statureMm / 1000.0;
+  const double ratio = fit.strideLengthM / statureM;
   char text[320];
   std::snprintf(text, sizeof text,
                 "the fitted walk strides %.2f m for a stature of %.2f m (%.2f times it), where people walk at "

@@ -82,6 +82,7 @@ inline constexpr double kEndOnViewDeg = 30.0;              // within this of the
 // in place, the camera within kLevelCameraElevationDeg of level, the view more than
 // kEndOnViewDeg from the front and the back); "" otherwise.
 std::string inPlaceAzimuthCaution(const CameraFit& fit, bool azimuthGiven);
+bool inPlaceAzimuthIsWeak(const CameraFit& fit, bool azimuthGiven);  // the same test, no sentence
 
 // A fitted walk people do not walk, or a lens few cameras have: the camera fit is then likely
 // wrong (a track that lost the legs, keypoints of another motion), whatever its residual says.
@@ -93,6 +94,7 @@ inline constexpr double kMinStrideToStature = 0.35, kMaxStrideToStature = 1.25;
 inline constexpr double kMaxFieldOfViewDeg = 120.0;
 // "" when the stride is within those bounds of the stature (or either is not measured).
 std::string implausibleStrideCaution(const CameraFit& fit);
+bool strideIsImplausible(const CameraFit& fit);  // the same test, no sentence
 // "" when the focal length was given, the image's width is unknown, or the field of view
 // it gives the picture is at most kMaxFieldOfViewDeg.
 std::string implausibleFocalCaution(const CameraFit& fit, bool focalGiven, std::optional<double> imageWidthPx);

@@ -57,6 +57,10 @@ struct EigenwalkerModel {
 
   int componentCount() const { return static_cast<int>(eigenwalkers.cols()); }
   int walkerCount() const { return static_cast<int>(walkerIds.size()); }
+  // Walker r's recorded speed (speedsMps), nullopt where unknown or not recorded.
+  std::optional<double> speedMpsOf(int r) const {
+    return r >= 0 && static_cast<std::size_t>(r) < speedsMps.size() ? speedsMps[static_cast<std::size_t>(r)] : std::nullopt;
+  }
   // Σ_{n ≤ N} λ_n / Σ λ over the whole spectrum.
   double explainedVariance() const;
 };

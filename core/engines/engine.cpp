@@ -12,6 +12,7 @@
 #include "core/engine/fourier.h"
 #include "core/engine/joint_completion.h"
 #include "core/engine/projection.h"
+#include "core/engine/walker_set.h"
 #include "core/gait/canonical_frame.h"
 #include "core/gait/missing_joints.h"
 
@@ -305,13 +306,12 @@ std::vector<FourierWalkerTrial> modelFourierWalkers(const EigenwalkerModel& mode
   for (const auto& v : model.speedsMps)
     if (v) known += *v, ++counted;
   const double fallback = counted > 0 ? known / counted : 1.3;
-  const Eigen::MatrixXd stored = storedWalkerVectors(model);
+  const std::vector<Walker> stored = storedWalkers(model, "");
   std::vector<FourierWalkerTrial> walkers;
   for (int r = 0; r < model.walkerCount(); ++r) {
-    const auto k = static_cast<std::size_t>(r);
-    if (model.subjects[k] == withoutSubject) continue;
-    const double speed = k < model.speedsMps.size() && model.speedsMps[k] ? *model.speedsMps[k] : fallback;
-    walkers.push_back({model.subjects[k], model.walkerIds[k], stored.col(r), model.omegasRadS[r], speed});
+    const Walker& w = stored[static_cast<std::size_t>(r)];
+    if (w.subject == withoutSubject) continue;
+    walkers.push_back({w.subject, w.id, w.fit.w, w.fit.omegaRadS, model.speedMpsOf(r).value_or(fallback)});
   }
   return walkers;
 }

@@ -9,6 +9,7 @@
 
 #include "core/common/errors.h"
 #include "core/engine/fourier.h"
+#include "core/engine/walker_set.h"
 #include "core/gait/joint_angles.h"
 #include "core/io/atomic_write.h"
 #include "ui/app/population.h"
@@ -145,12 +146,10 @@ GaitBand populationGaitBand(const Population& population) {
 
 GaitBand modelGaitBand(const EigenwalkerModel& model, const std::string& name) {
   std::vector<BandWalker> walkers;
-  const Eigen::MatrixXd stored = storedWalkerVectors(model);
+  const std::vector<Walker> stored = storedWalkers(model, name);
   for (int r = 0; r < model.walkerCount(); ++r) {
-    const auto k = static_cast<size_t>(r);
-    walkers.push_back({stored.col(r),
-                       model.omegasRadS[r] / (2.0 * std::numbers::pi),
-                       k < model.speedsMps.size() ? model.speedsMps[k] : std::nullopt, model.walkerIds[k]});
+    const Walker& w = stored[static_cast<size_t>(r)];
+    walkers.push_back({w.fit.w, w.fit.omegaRadS / (2.0 * std::numbers::pi), model.speedMpsOf(r), w.id});
   }
   std::string from = "the " + std::to_string(walkers.size()) + " walkers of " + name + ", as its " +
                      std::to_string(model.componentCount()) + " eigenwalkers give them back";

@@ -1,8 +1,5 @@
 #include "ui/app/held_model.h"
 
-#include <algorithm>
-#include <cctype>
-#include <cmath>
 #include <stdexcept>
 
 #include "core/engine/default_model.h"
@@ -10,7 +7,6 @@
 #include "core/engine/model_file.h"
 
 namespace ew::ui {
-
 
 std::string subjectInModel(const EigenwalkerModel& model, const Walker& walker) {
   return ew::subjectInModel(model, walker.subject, walker.fit.w);

@@ -25,7 +25,7 @@ std::vector<MetricItem> clipItems(const AppState& s) {
           {f.inPlace ? "belt speed" : "speed", formatted("%.2f m/s", f.speedMps),
            rec.trial.rateAssumed ? "(30 fps?)" : f.inPlace ? "in place" : ""},
           {"stride length", formatted("%.2f m", f.strideLengthM), formatted("%.2f Hz", f.strideHz),
-           implausibleStrideCaution(f).empty() ? MetricTone::Normal : MetricTone::Bad},
+           strideIsImplausible(f) ? MetricTone::Bad : MetricTone::Normal},
           {"cadence  steps", formatted("%.0f /min", f.cadenceStepsPerMin),
            rec.strideSource.starts_with("trunk") ? "trunk's bob" : ""},
           {"reprojection  RMS", formatted("%.1f px", f.reprojectionRmsPx),

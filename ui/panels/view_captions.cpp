@@ -197,7 +197,7 @@ ViewCaption clipReconstructionCaption(const AppState& s) {
     const ClipWorld w = clipWorld(*s.clip, 0);
     // The camera's distance to the walker's path (the line x = 0 of the walk).
     // A weak azimuth says so where it is read (the log has the whole sentence).
-    const bool weak = !inPlaceAzimuthCaution(fit, s.clip->settings.alphaDeg.has_value()).empty();
+    const bool weak = inPlaceAzimuthIsWeak(fit, s.clip->settings.alphaDeg.has_value());
     std::snprintf(sub, sizeof sub, "camera %s, %.1f m from the %s, azimuth %.1f°%s, %s",
                   heightOverAnklesText(w.eye.z).c_str(), std::abs(w.eye.x) / 1000.0,
                   fit.inPlace ? "treadmill's line (walking in place)" : "walking line", c.alphaDeg,
