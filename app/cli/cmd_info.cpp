@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "app/cli/commands.h"
+#include "app/cli/video_beside_keypoints.h"
 #include "core/gait/dataset.h"
 #include "core/gait/trial_summary.h"
 #include "core/keypoints/keypoint_frames.h"
@@ -104,11 +105,16 @@ int runInfo(const InfoArgs& args) {
   if (!args.mapping.empty()) keypoints.mappingFile = args.mapping;
   if (!args.imageSize.empty()) keypoints.imageSize = parseKeypointImageSize(args.imageSize, "--image-size");
   std::vector<TrialSummary> summaries;
+  // Each keypoint input's own video, found beside it: its size and rate where none is given.
+  const auto keypointSummary = [&](const std::filesystem::path& p) {
+    KeypointOptions own = keypoints;
+    takeTheVideoBeside(p, own);
+    return summarizeKeypoints(p, own);
+  };
   for (const auto& f : collectTrialFiles(paths, warnings)) {
-    summaries.push_back(looksLikeKeypointInput(f.path) ? summarizeKeypoints(f.path, keypoints)
-                                                       : summarizeTrial(f.path, options));
+    summaries.push_back(looksLikeKeypointInput(f.path) ? keypointSummary(f.path) : summarizeTrial(f.path, options));
   }
-  for (const auto& p : collectKeypointInputs(paths)) summaries.push_back(summarizeKeypoints(p, keypoints));
+  for (const auto& p : collectKeypointInputs(paths)) summaries.push_back(keypointSummary(p));
   for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
   if (args.json) {
     nlohmann::json all = nlohmann::json::array();
@@ -140,7 +146,8 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
                   "Keypoint layout of pose-estimator files (BODY_25, BODY_25B, COCO-18, COCO-17, "
                   "Halpe-26, MediaPipe-33); guessed when not given");
   cmd->add_option("--image-size", args->imageSize,
-                  "WxH in pixels of the video behind a MediaPipe CSV (its x, y are fractions of it)");
+                  "WxH in pixels of the video behind a MediaPipe CSV or YOLO labels (their x, y are fractions "
+                  "of it); else the size of a video found beside them (docs/KEYPOINTS.md)");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
   cmd->add_option("--mapping", args->mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md): which markers make each joint, "

@@ -559,9 +559,10 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--camera-name", args->cameraName, "Which camera of a --camera file with several (its name)");
   cmd->add_option("--image-size", args->imageSize,
-                  "WxH in pixels of the video behind the keypoints: a MediaPipe CSV's coordinates are "
-                  "fractions of it; with --unknown-camera the fit expects the camera's principal point near "
-                  "its centre (docs/CAMERA.md)");
+                  "WxH in pixels of the video behind the keypoints: a MediaPipe CSV's and YOLO labels' "
+                  "coordinates are fractions of it; with --unknown-camera the fit expects the camera's principal "
+                  "point near its centre (docs/CAMERA.md). Else the size of a video found beside the keypoints "
+                  "(docs/KEYPOINTS.md)");
   cmd->add_flag("--orthographic", args->orthographic,
                 "With --unknown-camera and no --focal-px: scaled orthography instead of a pinhole "
                 "whose focal length is estimated (a distant camera)");

@@ -61,13 +61,21 @@ Keyframes keyframesAt(const Keyframes& all, const std::vector<int>& frames,
   return kept;
 }
 
-Keyframes keyframesFor(const TrackArgs& a, double fps) {
+// A keypoint file of the video: its rate and size are the video's (the size is what a
+// MediaPipe CSV's or YOLO labels' fractions are of).
+KeypointOptions keypointsOfTheVideo(const VideoInfo& info) {
+  KeypointOptions k;
+  k.fps = info.fps;
+  k.imageSize = KeypointImageSize{info.widthPx, info.heightPx};
+  return k;
+}
+
+Keyframes keyframesFor(const TrackArgs& a, const VideoInfo& info) {
   if (!a.keyframes.empty()) {
     const Keyframes all = readKeyframes(a.keyframes);
     return a.keyframeFramesGiven ? keyframesAt(all, a.keyframeFrames, a.keyframes) : all;
   }
-  KeypointOptions k;
-  k.fps = fps;
+  const KeypointOptions k = keypointsOfTheVideo(info);
   const KeypointTrial trial = readKeypointTrial(a.keyframesFrom, k);
   return keyframesFromTrack(trial.jointsPx, a.keyframeFrames, a.video);
 }
@@ -107,11 +115,7 @@ void printDistance(const TrackDistance& d, const std::string& against) {
 // marks of a keyframe file on its frames that are not the track's own keyframes (those
 // are the marks themselves).
 Eigen::MatrixXd referenceFor(const TrackArgs& a, const VideoInfo& info, const Keyframes& used) {
-  if (!isKeyframeFile(a.compare)) {
-    KeypointOptions k;
-    k.fps = info.fps;
-    return readKeypointTrial(a.compare, k).jointsPx;
-  }
+  if (!isKeyframeFile(a.compare)) return readKeypointTrial(a.compare, keypointsOfTheVideo(info)).jointsPx;
   Eigen::MatrixXd reference = Eigen::MatrixXd::Constant(info.frameCount, kDims2, std::nan(""));
   for (const Keyframe& k : readKeyframes(a.compare).keyframes) {
     const bool own = std::any_of(used.keyframes.begin(), used.keyframes.end(),
@@ -160,7 +164,7 @@ void writeOverlays(VideoSource& video, const JointTrack& t, const Eigen::MatrixX
 int runTrack(const TrackArgs& a) {
   VideoSource video(a.video);
   const VideoInfo& info = video.info();
-  const Keyframes keys = keyframesFor(a, info.fps);
+  const Keyframes keys = keyframesFor(a, info);
   checkMarksWithin(keys, info.widthPx, info.heightPx, a.keyframes.empty() ? a.keyframesFrom : a.keyframes);
   TrackerOptions o;
   o.kind = trackerFromName(a.tracker);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "app/cli/video_beside_keypoints.h"
 #include "core/camera/calibration_file.h"
 #include "core/camera/clip_reconstruction.h"
 #include "core/camera/lens_distortion.h"
@@ -180,11 +181,12 @@ std::string principalPointPrior(const CameraFitOptions& o, const KeypointTrial& 
   if (!o.focalPx && !o.estimateFocal) return "none (scaled orthography has no principal point)";
   if (o.principalPointPx) return "the calibration's";
   if (o.imageSizePx || t.imageSize) return "the image's centre";
-  return "none (the image's size unknown: --image-size gives it)";
+  return "none (the image's size unknown: --image-size gives it, or a video beside the keypoints)";
 }
 
 int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
-                 const CameraFitOptions& o, const std::string& focalSource, const json& lens) {
+                 const CameraFitOptions& o, const std::string& focalSource, const json& lens,
+                 const json& imageSizeFrom = nullptr) {
   const ClipReconstruction clip = reconstructKeypointTrial(model, std::move(keypoints), o);
   const KeypointTrial& t = clip.trial;
   const CameraFit& fit = clip.fit;
@@ -199,6 +201,9 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
   report["lens_undistorted"] = lens;
   report["stride_source"] = clip.strideSource;
   report["principal_point_prior"] = principalPointPrior(o, t);
+  report["image_size_px"] = t.imageSize ? json{t.imageSize->width, t.imageSize->height} : json(nullptr);
+  report["image_size_from"] = t.imageSize ? imageSizeFrom : json(nullptr);
+  report["rate_from"] = t.rateSource;
   report["cautions"] = clip.cautions;
   printSummary(report);
   if (a.json) std::cout << report.dump(2) << "\n";
@@ -217,9 +222,12 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   std::string focalSource;
   const std::optional<CalibratedCamera> calibration = calibrationOf(a);
   const CameraFitOptions o = fitOptionsOf(model, a, calibration, k, focalSource);
+  const bool fromCalibration = a.imageSize.empty() && k.imageSize;
+  takeTheVideoBeside(a.input, k);
   KeypointTrial keypoints = readKeypointTrial(a.input, k);
+  const json imageSizeFrom = fromCalibration ? "the calibration file (" + a.camera + ")" : keypoints.imageSizeSource;
   const json lens = undistorted(a, calibration, keypoints);
-  return fitAndReport(model, a, std::move(keypoints), o, focalSource, lens);
+  return fitAndReport(model, a, std::move(keypoints), o, focalSource, lens, imageSizeFrom);
 }
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial joints) {

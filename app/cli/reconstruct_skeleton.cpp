@@ -6,6 +6,7 @@
 #include <sstream>
 #include <nlohmann/json.hpp>
 
+#include "app/cli/video_beside_keypoints.h"
 #include "core/camera/calibration_file.h"
 #include "core/common/errors.h"
 #include "core/common/statistics.h"
@@ -214,6 +215,9 @@ KeypointTrial readKeypoints(const SkeletonArgs& a) {
   KeypointOptions ko;
   if (!a.layout.empty()) ko.layout = a.layout;
   ko.fps = a.fps;
+  // Points given as fractions of the image (MediaPipe, YOLO) need its size.
+  if (!a.imageSize.empty()) ko.imageSize = parseKeypointImageSize(a.imageSize, "--image-size");
+  takeTheVideoBeside(a.input, ko);
   return readKeypointTrial(a.input, ko);
 }
 

@@ -351,11 +351,12 @@ KeypointCsvKind sniffKeypointCsv(const fs::path& path) {
   return keypointCsvKind(head);
 }
 
-KeypointFrames readKeypointCsv(const fs::path& path, std::optional<KeypointImageSize> imageSize) {
+KeypointFrames readKeypointCsv(const fs::path& path, std::optional<KeypointImageSize> imageSize,
+                               std::optional<KeypointImageSize> videoSize) {
   const std::string text = readFileText(path);
   switch (keypointCsvKind(text)) {
     case KeypointCsvKind::MediaPipe:
-      return parseMediaPipeCsv(text, path.string(), imageSize);
+      return parseMediaPipeCsv(text, path.string(), imageSize, videoSize);
     case KeypointCsvKind::DeepLabCut:
       return parseDeepLabCutCsv(text, path.string());
     case KeypointCsvKind::NotKeypoints:
@@ -367,7 +368,8 @@ KeypointFrames readKeypointCsv(const fs::path& path, std::optional<KeypointImage
 }
 
 KeypointFrames parseMediaPipeCsv(const std::string& text, const std::string& name,
-                                 std::optional<KeypointImageSize> imageSize) {
+                                 std::optional<KeypointImageSize> imageSize,
+                                 std::optional<KeypointImageSize> videoSize) {
   const auto lines = splitLines(withoutBom(text));
   std::size_t header = 0;
   std::optional<KeypointImageSize> stated;
@@ -378,17 +380,20 @@ KeypointFrames parseMediaPipeCsv(const std::string& text, const std::string& nam
   }
   if (header == lines.size()) throwMalformed(name, "", "no header row");
   const MediaPipeColumns columns = mediaPipeColumns(lines[header], name);
-  if (!imageSize && !stated)
+  if (!imageSize && !stated && !videoSize)
     throw Error(ErrorKind::BadArgument, name, "",
-                "MediaPipe x, y are fractions of the image: give the image size in pixels (a line "
-                "'# image_size=1920x1080' before the header, or the image size option)");
-  const KeypointImageSize size = imageSize ? checkedImageSize(*imageSize, name) : *stated;
+                "MediaPipe x, y are " + std::string(kNeedsImageSize) + ": give the image size in pixels (a line "
+                "'# image_size=1920x1080' before the header, or the image size option), or put the video "
+                "beside the file");
+  const KeypointImageSize size = imageSize ? checkedImageSize(*imageSize, name)
+                                 : stated  ? *stated
+                                           : checkedImageSize(*videoSize, name);
   KeypointFrames out;
   out.file = name;
   out.format = "MediaPipe CSV";
   out.pointCount = static_cast<int>(columns.landmarks.size());
   out.layoutHint = "MediaPipe-33";
-  out.imageSize = size;
+  out.imageSize = stated;  // what the file says; a size given or the video's is the caller's
   std::vector<double> times;
   for (const auto& line : contentLines(lines, header + 1)) addMediaPipeRow(out, line, columns, size, times);
   requireSomebody(out);

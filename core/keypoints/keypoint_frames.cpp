@@ -75,8 +75,9 @@ void addFrame(KeypointFrames& out) {
   out.frames.emplace_back();
 }
 
-// The last run of digits in a file name ("cam01.0012.json" -> 12), for frame order; -1 if none.
-long frameNumber(const std::string& name) {
+}  // namespace
+
+long trailingNumber(const std::string& name) {
   const std::string stem = fs::path(name).stem().string();
   long value = -1;
   for (std::size_t i = 0; i < stem.size();) {
@@ -90,6 +91,41 @@ long frameNumber(const std::string& name) {
     i = j;
   }
   return value;
+}
+
+namespace {
+
+// [SECTION] Frames placed by their numbers ---------------------------------------------------
+
+void checkFrameSpan(long first, long last, const std::string& name) {
+  if (last - first >= kMaxKeypointFrames)
+    throwMalformed(name, "", "frames numbered " + std::to_string(first) + " to " + std::to_string(last) +
+                                 ": more than " + std::to_string(kMaxKeypointFrames) + " frames");
+}
+
+// The frame numbers of per-frame files in the order given (sorted by number), when every file
+// has one and no two share one; else empty (the files are then taken as consecutive frames).
+std::vector<long> frameNumbersInOrder(const std::vector<std::pair<std::string, std::string>>& files,
+                                      const std::string& name) {
+  std::vector<long> numbers;
+  for (const auto& f : files) numbers.push_back(trailingNumber(f.first));
+  const bool placeable = numbers.size() > 1 && numbers.front() >= 0 &&
+                         std::adjacent_find(numbers.begin(), numbers.end(),
+                                            [](long a, long b) { return b <= a; }) == numbers.end();
+  if (!placeable) return {};
+  checkFrameSpan(numbers.front(), numbers.back(), name);
+  return numbers;
+}
+
+long addEmptyFrames(KeypointFrames& out, long count) {
+  for (long i = 0; i < count; ++i) addFrame(out);
+  return std::max(count, 0L);
+}
+
+void warnOfMissingFrames(KeypointFrames& out, long missing, const std::string& what) {
+  if (missing > 0)
+    out.warnings.push_back(std::to_string(missing) + " of the " + std::to_string(out.frameCount()) +
+                           " frames have no " + what + " (their numbers are missing): taken as frames with nobody");
 }
 
 // [SECTION] OpenPose ---------------------------------------------------------------------
@@ -115,25 +151,6 @@ void addOpenPoseFrame(KeypointFrames& out, const json& doc, const std::string& w
   }
 }
 
-std::vector<std::pair<std::string, std::string>> readOpenPoseFolder(const fs::path& folder) {
-  std::vector<fs::path> files;
-  std::error_code ec;
-  for (const auto& e : fs::directory_iterator(folder, ec)) {
-    if (e.path().extension() == ".json") files.push_back(e.path());
-    if (static_cast<int>(files.size()) > kMaxKeypointFrames)
-      throwMalformed(folder.string(), "", "more than " + std::to_string(kMaxKeypointFrames) + " JSON files");
-  }
-  if (ec) throw Error(ErrorKind::Io, folder.string(), "", "cannot list the folder: " + ec.message());
-  if (files.empty()) throw Error(ErrorKind::BadData, folder.string(), "", "no .json files in the folder");
-  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
-    const long na = frameNumber(a.filename().string()), nb = frameNumber(b.filename().string());
-    return na != nb ? na < nb : a.filename() < b.filename();
-  });
-  std::vector<std::pair<std::string, std::string>> out;
-  for (const auto& f : files) out.emplace_back(f.filename().string(), readFileText(f));
-  return out;
-}
-
 // [SECTION] AlphaPose --------------------------------------------------------------------
 
 // AlphaPose's image_id is the image's file name ("12.jpg") or a number; frames follow its
@@ -141,7 +158,7 @@ std::vector<std::pair<std::string, std::string>> readOpenPoseFolder(const fs::pa
 long imageKey(const json& id, std::map<std::string, long>& seen) {
   if (id.is_number_integer()) return id.get<long>();
   const std::string s = id.is_string() ? id.get<std::string>() : id.dump();
-  const long n = frameNumber(s);
+  const long n = trailingNumber(s);
   if (n >= 0) return n;
   return seen.emplace(s, static_cast<long>(seen.size())).first->second;
 }
@@ -207,15 +224,20 @@ KeypointFrames parseOpenPoseFrames(const std::vector<std::pair<std::string, std:
   KeypointFrames out;
   out.file = name;
   out.format = "OpenPose JSON";
-  for (const auto& [file, text] : filesAndTexts) {
+  const std::vector<long> numbers = frameNumbersInOrder(filesAndTexts, name);
+  long missing = 0;
+  for (std::size_t k = 0; k < filesAndTexts.size(); ++k) {
+    const auto& [file, text] = filesAndTexts[k];
     const json doc = parseJson(text, name + "/" + file);
     if (doc.is_array()) {  // one file holding a list of frames
       for (std::size_t f = 0; f < doc.size(); ++f) addOpenPoseFrame(out, doc[f], "frame " + std::to_string(f));
     } else {
+      if (k > 0 && !numbers.empty()) missing += addEmptyFrames(out, numbers[k] - numbers[k - 1] - 1);
       addOpenPoseFrame(out, doc, file);
     }
   }
   checkNotEmpty(out);
+  warnOfMissingFrames(out, missing, "file");
   return out;
 }
 
@@ -233,7 +255,13 @@ KeypointFrames parseAlphaPoseJson(const std::string& text, const std::string& na
       throwMalformed(name, "detection " + std::to_string(k), "needs \"image_id\" and \"keypoints\"");
     byFrame[imageKey(d["image_id"], seen)].push_back(k);
   }
-  for (const auto& [frame, detections] : byFrame) {
+  // Numbered images are frames of a video: AlphaPose lists none for an image with nobody.
+  const bool numbered = seen.empty();
+  if (numbered) checkFrameSpan(byFrame.begin()->first, byFrame.rbegin()->first, name);
+  long missing = 0;
+  for (auto it = byFrame.begin(); it != byFrame.end(); ++it) {
+    const auto& [frame, detections] = *it;
+    if (numbered && it != byFrame.begin()) missing += addEmptyFrames(out, frame - std::prev(it)->first - 1);
     addFrame(out);
     for (std::size_t k : detections) {
       const std::string at = "detection " + std::to_string(k) + " (image " + std::to_string(frame) + ")";
@@ -244,6 +272,7 @@ KeypointFrames parseAlphaPoseJson(const std::string& text, const std::string& na
     }
   }
   checkNotEmpty(out);
+  warnOfMissingFrames(out, missing, "detection");
   return out;
 }
 
@@ -277,6 +306,7 @@ KeypointFrames parseMmposeJson(const std::string& text, const std::string& name)
 
 bool looksLikeKeypointInput(const fs::path& path) {
   std::error_code ec;
+  if (yoloLabelsFolder(path)) return true;
   if (fs::is_directory(path, ec)) {
     for (const auto& e : fs::directory_iterator(path, ec)) {
       if (e.path().extension() == ".json") return true;
@@ -307,10 +337,31 @@ KeypointImageSize parseKeypointImageSize(const std::string& text, const std::str
   return size;
 }
 
-KeypointFrames readKeypointFrames(const fs::path& path, const std::optional<KeypointImageSize>& imageSize) {
+std::vector<std::pair<std::string, std::string>> readPerFrameFiles(const fs::path& folder, const std::string& extension) {
+  std::vector<fs::path> files;
   std::error_code ec;
-  if (fs::is_directory(path, ec)) return parseOpenPoseFrames(readOpenPoseFolder(path), path.string());
-  if (isCsvPath(path)) return readKeypointCsv(path, imageSize);
+  for (const auto& e : fs::directory_iterator(folder, ec)) {
+    if (e.path().extension() == extension) files.push_back(e.path());
+    if (static_cast<int>(files.size()) > kMaxKeypointFrames)
+      throwMalformed(folder.string(), "", "more than " + std::to_string(kMaxKeypointFrames) + " " + extension + " files");
+  }
+  if (ec) throw Error(ErrorKind::Io, folder.string(), "", "cannot list the folder: " + ec.message());
+  if (files.empty()) throw Error(ErrorKind::BadData, folder.string(), "", "no " + extension + " files in the folder");
+  std::sort(files.begin(), files.end(), [](const fs::path& a, const fs::path& b) {
+    const long na = trailingNumber(a.filename().string()), nb = trailingNumber(b.filename().string());
+    return na != nb ? na < nb : a.filename() < b.filename();
+  });
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto& f : files) out.emplace_back(f.filename().string(), readFileText(f));
+  return out;
+}
+
+KeypointFrames readKeypointFrames(const fs::path& path, const std::optional<KeypointImageSize>& imageSize,
+                                  const std::optional<KeypointImageSize>& videoSize) {
+  std::error_code ec;
+  if (yoloLabelsFolder(path)) return readYoloPoseLabels(path, imageSize ? imageSize : videoSize);
+  if (fs::is_directory(path, ec)) return parseOpenPoseFrames(readPerFrameFiles(path, ".json"), path.string());
+  if (isCsvPath(path)) return readKeypointCsv(path, imageSize, videoSize);
   const std::string text = readFileText(path);
   const json doc = parseJson(text, path.string());
   const bool openPose = (doc.is_object() && doc.contains("people")) ||

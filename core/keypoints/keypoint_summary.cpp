@@ -21,11 +21,11 @@ bool holdsJson(const fs::path& dir) {
 void collect(const fs::path& p, int depth, std::vector<fs::path>& out) {
   std::error_code ec;
   if (fs::is_regular_file(p, ec)) {
-    if (p.extension() == ".json") out.push_back(p);
+    if (p.extension() == ".json" || (p.extension() == ".txt" && yoloLabelsFolder(p))) out.push_back(p);
     return;
   }
   if (!fs::is_directory(p, ec) || depth > 8) return;
-  if (holdsJson(p)) {
+  if (holdsJson(p) || yoloLabelsFolder(p)) {
     out.push_back(p);
     return;
   }
@@ -81,7 +81,8 @@ TrialSummary summarizeKeypoints(const fs::path& path, const KeypointOptions& opt
     return false;
   };
   KeypointFrames frames;
-  if (!stage("read", [&] { frames = readKeypointFrames(path, options.imageSize); })) return s;
+  const auto videoSize = options.video ? std::optional<KeypointImageSize>(options.video->size) : std::nullopt;
+  if (!stage("read", [&] { frames = readKeypointFrames(path, options.imageSize, videoSize); })) return s;
   s.format = frames.format;
   s.frames = frames.frameCount();
   s.pointsFound = frames.pointCount;

@@ -14,8 +14,9 @@ namespace ew {
 
 TrialSummary summarizeKeypoints(const std::filesystem::path& path, const KeypointOptions& options = {});
 
-// Keypoint inputs under `paths`: .json files and folders holding .json files directly
-// (an OpenPose folder); other folders are searched below, sorted, to a depth of 8.
+// Keypoint inputs under `paths`: .json files, folders holding .json files directly (an
+// OpenPose folder), YOLO pose labels (a folder of them, or Ultralytics' run folder holding
+// labels/); other folders are searched below, sorted, to a depth of 8.
 std::vector<std::filesystem::path> collectKeypointInputs(const std::vector<std::filesystem::path>& paths);
 
 }  // namespace ew

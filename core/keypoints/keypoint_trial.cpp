@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -350,15 +351,45 @@ std::vector<PersonTrack> trackPeople(const KeypointFrames& frames) {
   return tracks;
 }
 
+namespace {
+
+// "59.94", "60": a frame rate as people write it.
+std::string rateText(double hz) {
+  std::ostringstream out;
+  out << std::setprecision(4) << hz;
+  return out.str();
+}
+
+// The rate and the image size: given, else the file's, else the video's (found beside it).
+void takeRateAndSize(KeypointTrial& t, const KeypointFrames& frames, const KeypointOptions& options) {
+  const std::string video = options.video ? "the video (" + options.video->file + ")" : "";
+  if (options.imageSize) {
+    t.imageSize = options.imageSize, t.imageSizeSource = "given";
+  } else if (frames.imageSize) {
+    t.imageSize = frames.imageSize, t.imageSizeSource = "the file";
+  } else if (options.video) {
+    t.imageSize = options.video->size, t.imageSizeSource = video;
+  }
+  if (options.fps) {
+    t.rateHz = checkedFileRateHz(*options.fps, frames.file, "--fps"), t.rateSource = "given";
+  } else if (frames.rateHz) {
+    t.rateHz = *frames.rateHz, t.rateSource = "the file";
+  } else if (options.video && options.video->fps > 0.0) {
+    t.rateHz = checkedFileRateHz(options.video->fps, options.video->file, "frame rate"), t.rateSource = video;
+    t.warnings.push_back("frame rate " + rateText(t.rateHz) + " fps: " + video);
+  }
+  t.rateAssumed = t.rateSource == "assumed";
+}
+
+}  // namespace
+
 KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions& options) {
   KeypointTrial t;
   t.file = frames.file;
   t.format = frames.format;
   t.frameCount = frames.frameCount();
   t.warnings = frames.warnings;
-  t.imageSize = options.imageSize ? options.imageSize : frames.imageSize;
-  if (options.fps) t.rateHz = checkedFileRateHz(*options.fps, frames.file, "--fps"), t.rateAssumed = false;
-  else if (frames.rateHz) t.rateHz = *frames.rateHz, t.rateAssumed = false;
+  takeRateAndSize(t, frames, options);
   for (const auto& f : frames.frames) t.maxPeople = std::max(t.maxPeople, static_cast<int>(f.size()));
   t.people = trackPeople(frames);
   if (t.people.empty())
@@ -389,7 +420,8 @@ int personRowAt(const PersonTrack& person, int frame) {
 }
 
 KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options) {
-  return cleanKeypoints(readKeypointFrames(path, options.imageSize), options);
+  const auto videoSize = options.video ? std::optional<KeypointImageSize>(options.video->size) : std::nullopt;
+  return cleanKeypoints(readKeypointFrames(path, options.imageSize, videoSize), options);
 }
 
 KeypointTrial trialFromJoints(const Eigen::MatrixXd& jointsPx, const Eigen::MatrixXd& confidence,
@@ -403,12 +435,13 @@ KeypointTrial trialFromJoints(const Eigen::MatrixXd& jointsPx, const Eigen::Matr
   t.file = file;
   t.format = format;
   t.rateHz = checkedFileRateHz(*options.fps, file, "frame rate");
-  t.rateAssumed = false;
+  t.rateAssumed = false, t.rateSource = "given";
   t.frameCount = static_cast<int>(jointsPx.rows());
   t.builtLayout = jointLayout();
   t.layout = t.builtLayout.get();
   t.layoutSource = "the tracker's own joints";
   t.imageSize = options.imageSize;
+  if (t.imageSize) t.imageSizeSource = "given";
   t.jointsPx = jointsPx;
   PersonTrack person;
   for (Eigen::Index f = 0; f < jointsPx.rows(); ++f) {

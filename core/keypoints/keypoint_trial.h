@@ -26,7 +26,10 @@ struct KeypointOptions {
   std::optional<int> person;          // the track to use (index into KeypointTrial::people)
   // Which named points make each joint, for files that name their own (DeepLabCut).
   std::optional<std::filesystem::path> mappingFile;
-  std::optional<KeypointImageSize> imageSize;  // a MediaPipe CSV's image (--image-size)
+  std::optional<KeypointImageSize> imageSize;  // the points' image (--image-size): MediaPipe's, YOLO's
+  // The video the points were found in, when known (found beside them: video/video_beside.h):
+  // its size and rate stand in where neither the options above nor the file give them.
+  std::optional<KeypointVideo> video;
   // Take the layout's detector offsets into account (KeypointLayout::detectorOffsetMm);
   // false (--no-detector-offsets): the detector's points are taken for joint centres.
   bool detectorOffsets = true;
@@ -68,6 +71,9 @@ struct KeypointTrial {
   // The image the points were found in (a video's, --image-size, a MediaPipe file's), when
   // known: the camera fit then expects its principal point near the centre.
   std::optional<KeypointImageSize> imageSize;
+  // Where the rate and the size came from, for reports: "given", "the file", "the video
+  // (PATH)", or for the rate "assumed" ("" for a size not known).
+  std::string rateSource = "assumed", imageSizeSource;
 };
 
 // Follows people across frames: a detection joins the track whose last centre is nearest,

@@ -1,6 +1,6 @@
 // libFuzzer harness: a pose estimator's keypoint file -> the reader its first byte picks
 // (0 OpenPose frame JSON, 1 AlphaPose JSON, 2 MMPose JSON, 3 MediaPipe CSV, 4 DeepLabCut
-// CSV; core/keypoints/keypoint_frames.h), then, for what reads, the cleaning
+// CSV, 5 a YOLO pose label file; core/keypoints/keypoint_frames.h), then, for what reads, the cleaning
 // (cleanKeypoints: tracking, layout guess, joints) and the image gait cycles. A typed
 // ew::Error is the correct outcome; anything else is a finding (fuzz_common.h).
 
@@ -15,7 +15,7 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
-  const int reader = data[0] % 5;
+  const int reader = data[0] % 6;
   const std::string text(ew::fuzz::asText(data + 1, size - 1));
   ew::fuzz::acceptTypedErrors([&] {
     ew::KeypointFrames frames;
@@ -32,8 +32,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       case 3:
         frames = ew::parseMediaPipeCsv(text, "fuzz.csv", ew::KeypointImageSize{640, 480});
         break;
-      default:
+      case 4:
         frames = ew::parseDeepLabCutCsv(text, "fuzz.csv");
+        break;
+      default:
+        frames = ew::parseYoloPoseLabels({{"fuzz_1.txt", text}}, "fuzz", ew::KeypointImageSize{640, 480});
         break;
     }
     const ew::KeypointTrial trial = ew::cleanKeypoints(frames);

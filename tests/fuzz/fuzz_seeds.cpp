@@ -612,7 +612,7 @@ void sharedDataSeeds(SeedWriter& out, const fs::path& data) {
 }
 
 // Keypoint files behind the harness's reader byte (fuzz_keypoints.cpp): an OpenPose frame of
-// a walker (core's writer), AlphaPose, MMPose, MediaPipe and DeepLabCut files written here.
+// a walker (core's writer), AlphaPose, MMPose, MediaPipe, DeepLabCut and YOLO files written here.
 void keypointSeeds(SeedWriter& out, const fs::path& tmp) {
   auto put = [&](int reader, const std::string& name, const std::string& text) {
     out.write("keypoints", name, std::string(1, static_cast<char>(reader)) + text);
@@ -646,6 +646,9 @@ void keypointSeeds(SeedWriter& out, const fs::path& tmp) {
   put(4, "deeplabcut.csv",
       "scorer,DLC,DLC,DLC,DLC,DLC,DLC\nbodyparts,hip,hip,hip,ankle,ankle,ankle\n"
       "coords,x,y,likelihood,x,y,likelihood\n0,10,20,0.9,12,80,0.95\n1,11,20,0.9,13,80,0.2\n");
+  std::string yolo = "0 0.5 0.5 0.2 0.6";
+  for (int k = 0; k < 17; ++k) yolo += " " + std::to_string(0.45 + 0.005 * k) + " " + std::to_string(0.2 + 0.04 * k) + " 0.9";
+  put(5, "yolo.txt", yolo + " 0.87 1\n" + yolo + " 0.62 2\n");
 }
 
 // Calibration files (fuzz_calibration.cpp): one camera, and two with a metadata table.

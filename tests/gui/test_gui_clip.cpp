@@ -13,11 +13,13 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <opencv2/videoio.hpp>
 #include <string>
 
 #include "tests/camera/filmed_walk.h"
 #include "tests/gui/gui_run.h"
 #include "tests/gui/layout_checks.h"
+#include "tests/keypoints/yolo_run.h"
 
 namespace ew::test::gui {
 namespace {
@@ -252,6 +254,55 @@ TEST_F(GuiClip, BrokenKeypointFileIsAFailedOpen) {
   ASSERT_TRUE(s["notice"].is_object());
   EXPECT_NE(s["notice"]["detail"].get<std::string>().find("broken.json"), std::string::npos) << s["notice"].dump(1);
   EXPECT_EQ(s["data"]["walkers"], 50);
+}
+
+// Ultralytics YOLO labels (fractions of the image): opened alone, the clip stays open and asks
+// for the image's size, and fits once it is typed; with the annotated video Ultralytics writes
+// beside them, the video's size and rate are taken and the fit needs nothing typed.
+TEST_F(GuiClip, YoloLabelsTakeTheImageSizeTypedOrFromTheVideoBeside) {
+  const fs::path run = writeYoloRun(filmedCoco({30, 31}), "gui_yolo_run");
+  const json script = json::array({{{"expect_failure", {{"open", run.string()}}}},
+                                   {{"export_state", path("needs_size.json")}},
+                                   {{"screenshot", path("needs_size.png")}},
+                                   {{"set_clip", {{"image_size", "1920x1080"}}}},
+                                   {{"set_frame", 10}},
+                                   {{"export_state", path("typed.json")}}});
+  RunResult r = runViewer(dir, "--size 1280x720 --script " + quote(writeScript(dir, script.dump(2)).string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const json needs = state("needs_size.json");
+  EXPECT_EQ(needs["mode"], "clip");
+  ASSERT_TRUE(needs["clip"].is_object());
+  EXPECT_NE(needs["clip"]["fit_error"].get<std::string>().find("fractions of the image"), std::string::npos);
+  ASSERT_TRUE(needs["notice"].is_object());
+  EXPECT_EQ(needs["notice"]["title"], "Give the image size of " + run.filename().string() + " (the Keypoint clip panel)");
+  const json typed = state("typed.json");
+  const json& fit = typed["clip"]["fit"];
+  ASSERT_TRUE(fit.is_object()) << typed["clip"].dump(1);
+  EXPECT_EQ(fit["format"], "YOLO pose labels");
+  EXPECT_EQ(fit["layout"], "COCO-17");
+  EXPECT_EQ(fit["frames"], 150);
+  EXPECT_EQ(fit["image_size"], "1920x1080");
+  EXPECT_EQ(fit["image_size_from"], "given");
+  EXPECT_NEAR(fit["alpha_deg"].get<double>(), 40.0, 3.0);  // filmed at 40°, 12° down
+  EXPECT_NEAR(fit["elevation_deg"].get<double>(), 12.0, 3.0);
+  EXPECT_TRUE(typed["notice"].is_null()) << typed["notice"];
+
+  // The annotated video beside the labels, at 25 fps: nothing to type, the rate is the video's.
+  {
+    cv::VideoWriter video((run / "walk.avi").string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25.0,
+                          cv::Size(1920, 1080));
+    ASSERT_TRUE(video.isOpened());
+    for (int f = 0; f < 2; ++f) video.write(cv::Mat(1080, 1920, CV_8UC3, cv::Scalar(60, 60, 60)));
+  }
+  const json beside = json::array({{{"open", run.string()}}, {{"export_state", path("beside.json")}}});
+  r = runViewer(dir, "--size 1280x720 --script " + quote(writeScript(dir, beside.dump(2)).string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const json withVideo = state("beside.json")["clip"]["fit"];
+  const std::string video = "the video (" + (run / "walk.avi").string() + ")";
+  EXPECT_EQ(withVideo["image_size"], "1920x1080");
+  EXPECT_EQ(withVideo["image_size_from"], video);
+  EXPECT_EQ(withVideo["rate_hz"], 25.0);
+  EXPECT_EQ(withVideo["rate_from"], video);
 }
 
 }  // namespace

@@ -390,6 +390,19 @@ void clipFailed(AppState& s, const std::string& error) {
     s.log.error(s.jobs.lastError);
     return;
   }
+  if (error.find(kNeedsImageSize) != std::string::npos && s.doc.clip == s.jobs.clipRunning) {
+    // Points as fractions of an image of unknown size: the clip stays open, its controls ask
+    // for the size (no video beside it gave one).
+    s.clip.reset();
+    s.jobs.lastError = "Give the image size of " + s.jobs.clipRunning.path.filename().string();
+    s.log.error(error);
+    OpenNotice n;
+    n.title = s.jobs.lastError + " (the Keypoint clip panel)";
+    n.shortTitle = "Image size needed";
+    n.detail = n.fullText = error;
+    showNotice(s, std::move(n));
+    return;
+  }
   if (s.doc.clip == s.jobs.clipRunning) {
     s.doc.clip = s.clip ? std::optional<ClipSettings>(s.clip->settings) : std::nullopt;
     // A video stays shown with its track when the walk cannot be fitted to it (a clip that
@@ -1398,6 +1411,14 @@ void setClipFps(AppState& s, double fps) {
   if (!(std::isfinite(fps) && fps >= 0.0 && fps <= 10000.0))
     throw std::invalid_argument("frame rate must lie in [0, 10000] fps (0 = the file's, else 30)");
   clipSettings(s).fps = fps;
+}
+
+void setClipImageSize(AppState& s, std::optional<KeypointImageSize> size) {
+  const auto side = [](int px) { return px >= 1 && px <= kMaxKeypointImageSidePx; };
+  if (size && !(side(size->width) && side(size->height)))
+    throw std::invalid_argument("image size must be 1 to " + std::to_string(kMaxKeypointImageSidePx) +
+                                " px a side");
+  clipSettings(s).imageSize = size;
 }
 
 void setClipPerson(AppState& s, int person) {

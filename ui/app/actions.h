@@ -172,6 +172,9 @@ void setClipElevation(AppState& s, std::optional<double> elevationDeg);
 void setClipLayout(AppState& s, const std::string& layout);
 void setClipFps(AppState& s, double fps);
 void setClipPerson(AppState& s, int person);
+// The image's size in pixels (nullopt: the file's, else the video's beside it); a clip whose
+// points are fractions of the image opens without one and waits for it.
+void setClipImageSize(AppState& s, std::optional<KeypointImageSize> size);
 void closeClip(AppState& s);
 // Shows the clip's frame `frame` (from 1, as the 2D view's caption counts) and pauses.
 void setClipFrame(AppState& s, int frame);

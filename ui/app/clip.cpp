@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/engine/model.h"
+#include "video/video_beside.h"
 
 namespace ew::ui {
 
@@ -32,6 +33,9 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   if (!settings.layout.empty()) k.layout = settings.layout;
   if (settings.fps > 0.0) k.fps = settings.fps;
   if (settings.person >= 0) k.person = settings.person;
+  k.imageSize = settings.imageSize;
+  // What the file does not store, from the video it was made from.
+  if (!settings.tracked) k.video = videoBesideKeypoints(settings.path);
   CameraFitOptions o;
   // The σ² the model stores as its optimum, as `reconstruct --unknown-camera` uses.
   o.estimator = {Estimator::Map, defaultSigma2Mm2(*model.model)};
@@ -56,6 +60,11 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
       extend(r.shownBounds, person.jointsPx);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
+}
+
+const char* unfittedClipMessage(const std::string& fitError) {
+  return fitError.find(kNeedsImageSize) != std::string::npos ? "type the image's size (Keypoint clip, under Controls)"
+                                                              : "the clip could not be fitted";
 }
 
 int clipFrameAt(const ClipResult& clip, double cycles) {

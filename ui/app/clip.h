@@ -21,6 +21,9 @@ struct ClipSettings {
   std::optional<double> focalPx;   // known focal length (else estimated)
   std::optional<double> alphaDeg;  // azimuth held at this value (else estimated)
   std::optional<double> elevationDeg;
+  // The image's size, given by the user: else the file's, else the video's found beside the
+  // keypoints (video/video_beside.h). What a MediaPipe CSV's or YOLO labels' fractions are of.
+  std::optional<KeypointImageSize> imageSize;
   // A video's tracked joints (ui/app/video.h) instead of a file: `path` is the video; layout,
   // fps and person do not apply.
   std::shared_ptr<const KeypointTrial> tracked;
@@ -54,6 +57,10 @@ struct ClipResult {
 // Reads and fits the clip (blocking; the viewer runs it as a background job). Throws what
 // core throws: typed errors naming the file.
 ClipResult fitClip(const ClipSettings& settings, const ClipModel& model);
+
+// What the views say where a clip has no fit: that it needs the image's size (its points are
+// fractions of an image of unknown size), else that it could not be fitted.
+const char* unfittedClipMessage(const std::string& fitError);
 
 // The clip's frame shown at playback position `cycles` (gait cycles since the start, wrapped
 // to the clip's length): the 2D input and the 3D walker are drawn at this same frame.

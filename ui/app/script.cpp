@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/keypoints/keypoint_frames.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/shortcuts.h"
@@ -160,8 +161,8 @@ void markJoints(AppState& s, const ScriptAction& a) {
 }
 
 // {"set_clip": {"focal_px": F | null, "azimuth_deg": A | null, "elevation_deg": E | null,
-//  "layout": "BODY_25B" | "", "fps": 30 | 0, "person": 1 | -1}}: null / "" / 0 / -1 estimate,
-// guess or take the default again.
+//  "layout": "BODY_25B" | "", "fps": 30 | 0, "person": 1 | -1, "image_size": "1920x1080" | null}}:
+// null / "" / 0 / -1 estimate, guess or take the default again.
 void applyClipSettings(AppState& s, const ScriptAction& a) {
   if (!a.argument.is_object() || a.argument.empty())
     throw std::invalid_argument("expects an object of clip settings");
@@ -186,10 +187,14 @@ void applyClipSettings(AppState& s, const ScriptAction& a) {
     } else if (key == "person") {
       if (!v.is_number_integer()) throw std::invalid_argument("person must be a whole number");
       actions::setClipPerson(s, v.get<int>());
+    } else if (key == "image_size") {
+      if (!v.is_null() && !v.is_string()) throw std::invalid_argument("image_size must be \"WxH\" or null");
+      actions::setClipImageSize(s, v.is_null() ? std::nullopt
+                                               : std::optional(parseKeypointImageSize(v.get<std::string>(), "image_size")));
     } else {
       throw std::invalid_argument(
           "unknown clip setting \"" + key +
-          "\" (known: focal_px, azimuth_deg, elevation_deg, layout, fps, person)");
+          "\" (known: focal_px, azimuth_deg, elevation_deg, layout, fps, person, image_size)");
     }
   }
 }

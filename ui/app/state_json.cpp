@@ -117,6 +117,12 @@ std::vector<int> peopleInFrame(const KeypointTrial& trial, int frame) {
   return out;
 }
 
+// "1920x1080", or null.
+nlohmann::json imageSizeJson(const std::optional<KeypointImageSize>& size) {
+  if (!size) return nullptr;
+  return std::to_string(size->width) + "x" + std::to_string(size->height);
+}
+
 // The keypoint clip: what the user chose, and the last fit (camera, walk, residuals).
 nlohmann::json clipJson(const AppState& s) {
   if (!s.doc.clip) return nullptr;
@@ -128,6 +134,7 @@ nlohmann::json clipJson(const AppState& s) {
                       {"focal_px_fixed", optionalJson(c.focalPx)},
                       {"azimuth_deg_fixed", optionalJson(c.alphaDeg)},
                       {"elevation_deg_fixed", optionalJson(c.elevationDeg)},
+                      {"image_size_given", imageSizeJson(c.imageSize)},
                       {"fit_error", s.jobs.clipError}};
   if (!s.clip) return j;
   const ClipResult& r = *s.clip;
@@ -143,6 +150,9 @@ nlohmann::json clipJson(const AppState& s) {
       {"layout", r.rec.trial.layout->name},
       {"frames", r.rec.trial.frameCount},
       {"rate_hz", r.rec.trial.rateHz},
+      {"rate_from", r.rec.trial.rateSource},
+      {"image_size", imageSizeJson(r.rec.trial.imageSize)},
+      {"image_size_from", r.rec.trial.imageSizeSource},
       {"people", r.rec.trial.people.size()},
       {"person", r.rec.trial.chosen},
       {"frame", clipFrameAt(r, s.view.playback.cycles) + 1},  // counted from 1, as the caption

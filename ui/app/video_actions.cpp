@@ -262,6 +262,8 @@ void markFromKeypoints(AppState& s, const std::filesystem::path& keypoints) {
   try {
     KeypointOptions o;
     o.fps = v.fps();
+    // The video's size: what a MediaPipe CSV's or YOLO labels' fractions are of.
+    o.imageSize = KeypointImageSize{v.frames->info().widthPx, v.frames->info().heightPx};
     detected = keyframesFromTrack(readKeypointTrial(keypoints, o).jointsPx, {v.frame},
                                   keypoints.string());
     const VideoInfo& info = v.frames->info();

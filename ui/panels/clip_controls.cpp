@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "core/keypoints/keypoint_frames.h"
 #include "core/keypoints/keypoint_layout.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
@@ -63,6 +64,34 @@ void personCombo(AppState& s, const ClipSettings& c, const ClipResult& r) {
   }
 }
 
+// The image's size: typed as 1920x1080 (Enter); empty takes the file's or the video's again.
+// Shown with where it came from; a clip whose points are fractions of the image waits for it.
+void imageSizeField(AppState& s, const ClipSettings& c, const ClipResult* r) {
+  textDisabledWrapped("image size (WxH, Enter)");
+  static char text[32] = "";
+  std::string shown;
+  if (c.imageSize) {
+    shown = std::to_string(c.imageSize->width) + "x" + std::to_string(c.imageSize->height);
+  } else if (r && r->rec.trial.imageSize) {
+    const auto& size = *r->rec.trial.imageSize;
+    shown = std::to_string(size.width) + "x" + std::to_string(size.height) + " (" + r->rec.trial.imageSizeSource + ")";
+  }
+  ImGui::SetNextItemWidth(-1.0f);
+  const char* hint = shown.empty() ? "unknown: type the video's, e.g. 1920x1080" : shown.c_str();
+  if (ImGui::InputTextWithHint("##imagesize", hint, text, sizeof text, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    const std::string typed = text;
+    apply(s, [&] {
+      actions::setClipImageSize(s, typed.empty() ? std::nullopt
+                                                 : std::optional(parseKeypointImageSize(typed, "image size")));
+    });
+    text[0] = '\0';
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The picture's size in pixels: what a MediaPipe CSV's or YOLO labels' coordinates are "
+                      "fractions of, and where the camera's principal point is expected. Empty + Enter: the "
+                      "file's, else the video's found beside the keypoints");
+}
+
 // A camera value: "fix" holds it (starting from the estimate); unfixed, the estimate shows.
 template <class Setter>
 void heldValue(AppState& s, const char* id, const char* label, std::optional<double> held, double estimate,
@@ -113,10 +142,17 @@ static void drawClipSource(AppState& s, const ClipSettings& c, const ClipResult*
   layoutCombo(s, c, r);
   float fps = static_cast<float>(c.fps);
   ImGui::SetNextItemWidth(-1.0f);
-  const char* fpsFormat = c.fps > 0.0 ? "%.2f fps" : (r && !r->rec.trial.rateAssumed ? "the file's rate" : "30 fps (assumed)");
+  const char* fpsFormat = c.fps > 0.0                                       ? "%.2f fps"
+                          : !r || r->rec.trial.rateAssumed                   ? "30 fps (assumed)"
+                          : r->rec.trial.rateSource.starts_with("the video") ? "%.2f fps (the video's)"
+                                                                             : "the file's rate";
+  if (c.fps <= 0.0 && r && !r->rec.trial.rateAssumed) fps = static_cast<float>(r->rec.trial.rateHz);
   if (ImGui::InputFloat("##fps", &fps, 0.0f, 0.0f, fpsFormat, ImGuiInputTextFlags_EnterReturnsTrue))
     apply(s, [&] { actions::setClipFps(s, fps); });
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("The video's frame rate (JSON stores none; 0 = the file's, else 30)");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The video's frame rate (JSON stores none; 0 = the file's, else the video's beside "
+                      "the keypoints, else 30)");
+  imageSizeField(s, c, r);
   if (r) personCombo(s, c, *r);
 }
 

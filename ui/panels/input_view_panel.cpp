@@ -323,7 +323,7 @@ void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p
   } else {
     drawCentredMessage(ImGui::GetWindowDrawList(), p0, size,
                        s.jobs.clip.running() ? "reading the keypoints and fitting the camera…"
-                                             : "the clip could not be fitted");
+                                             : unfittedClipMessage(s.jobs.clipError));
   }
 }
 

@@ -326,7 +326,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
                               ? (s.jobs.track.running() ? "tracking…"
                                  : tracked          ? "no walk fits this track"
                                                     : "mark the walker's joints on one frame, then Track")
-                          : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : "the clip could not be fitted")
+                          : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : unfittedClipMessage(s.jobs.clipError))
                           : s.jobs.busy() ? "building models…" : "nothing to show";
         const float height = drawCentredMessage(dl, p0, size, msg);
         if (unfitted) drawWhyNoWalkFits(dl, s, p0, size, height);

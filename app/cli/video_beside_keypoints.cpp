@@ -1,0 +1,25 @@
+#include "app/cli/video_beside_keypoints.h"
+
+#include <iostream>
+
+#ifdef EW_HAVE_VIDEO
+#include "video/video_beside.h"
+#endif
+
+namespace ew::cli {
+
+std::string takeTheVideoBeside(const std::filesystem::path& keypoints, KeypointOptions& k) {
+#ifdef EW_HAVE_VIDEO
+  if (auto beside = videoBesideKeypoints(keypoints)) {
+    std::cerr << "the video beside " << keypoints.string() << ": " << beside->file << " (" << beside->size.width
+              << "x" << beside->size.height << ", " << beside->fps << " fps)\n";
+    k.video = std::move(beside);
+    return k.video->file;
+  }
+#else
+  (void)keypoints, (void)k;
+#endif
+  return "";
+}
+
+}  // namespace ew::cli
