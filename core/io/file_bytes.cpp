@@ -1,5 +1,6 @@
 #include "core/io/file_bytes.h"
 
+#include <algorithm>
 #include <fstream>
 
 #include "core/common/errors.h"
@@ -45,6 +46,14 @@ std::vector<std::uint8_t> readFileBytes(const std::filesystem::path& file) {
 
 std::string readFileText(const std::filesystem::path& file) {
   return readAll<std::string>(file);
+}
+
+std::string readFileStart(const std::filesystem::path& file, std::size_t bytes) {
+  std::ifstream in(file, std::ios::binary);
+  std::string text(bytes, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  return text;
 }
 
 }  // namespace ew

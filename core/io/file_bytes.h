@@ -15,4 +15,9 @@ inline constexpr std::uintmax_t kMaxInputFileBytes = 1ull << 30;  // 1 GiB
 std::vector<std::uint8_t> readFileBytes(const std::filesystem::path& file);
 std::string readFileText(const std::filesystem::path& file);
 
+// What a sniffer looks at to tell a file's kind: its first 64 KiB at most ("" when it cannot
+// be read). Never throws: a file that cannot be read is simply not of the kind.
+inline constexpr std::size_t kSniffBytes = 64 * 1024;
+std::string readFileStart(const std::filesystem::path& file, std::size_t bytes = kSniffBytes);
+
 }  // namespace ew

@@ -23,8 +23,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Enough for any real header line (a multi-animal DLC scorer row is a few KB).
-constexpr std::size_t kSniffBytes = 64 * 1024;
 constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
 
 // [SECTION] Shared ---------------------------------------------------------------------------
@@ -342,14 +340,7 @@ KeypointCsvKind keypointCsvKind(std::string_view text) {
   return KeypointCsvKind::NotKeypoints;
 }
 
-KeypointCsvKind sniffKeypointCsv(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return KeypointCsvKind::NotKeypoints;
-  std::string head(kSniffBytes, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
-  return keypointCsvKind(head);
-}
+KeypointCsvKind sniffKeypointCsv(const fs::path& path) { return keypointCsvKind(readFileStart(path)); }
 
 KeypointFrames readKeypointCsv(const fs::path& path, std::optional<KeypointImageSize> imageSize,
                                std::optional<KeypointImageSize> videoSize) {

@@ -10,6 +10,7 @@
 #include "core/common/errors.h"
 #include "core/common/nan.h"
 #include "core/io/file_bytes.h"
+#include "core/keypoints/keypoint_trial.h"
 
 namespace ew {
 namespace {
@@ -209,11 +210,13 @@ std::optional<std::string> layoutFromDatasetName(const std::string& name) {
   return std::nullopt;
 }
 
-bool isCsvPath(const fs::path& path) {
+bool hasExtension(const fs::path& path, const std::string& lowerCase) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".csv";
+  return ext == lowerCase;
 }
+
+bool isCsvPath(const fs::path& path) { return hasExtension(path, ".csv"); }
 
 }  // namespace
 
@@ -306,7 +309,7 @@ KeypointFrames parseMmposeJson(const std::string& text, const std::string& name)
 
 bool looksLikeKeypointInput(const fs::path& path) {
   std::error_code ec;
-  if (yoloLabelsFolder(path)) return true;
+  if (yoloLabelsFolder(path) || isPlanarTrc(path)) return true;
   if (fs::is_directory(path, ec)) {
     for (const auto& e : fs::directory_iterator(path, ec)) {
       if (e.path().extension() == ".json") return true;
@@ -362,6 +365,9 @@ KeypointFrames readKeypointFrames(const fs::path& path, const std::optional<Keyp
   if (yoloLabelsFolder(path)) return readYoloPoseLabels(path, imageSize ? imageSize : videoSize);
   if (fs::is_directory(path, ec)) return parseOpenPoseFrames(readPerFrameFiles(path, ".json"), path.string());
   if (isCsvPath(path)) return readKeypointCsv(path, imageSize, videoSize);
+  if (hasExtension(path, ".trc"))
+    throw Error(ErrorKind::BadArgument, path.string(), "",
+                "a TRC of 3D points (motion capture), not a pose estimator's 2D keypoints (a 2D TRC has Z = 0)");
   const std::string text = readFileText(path);
   const json doc = parseJson(text, path.string());
   const bool openPose = (doc.is_object() && doc.contains("people")) ||

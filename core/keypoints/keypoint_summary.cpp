@@ -55,6 +55,20 @@ void fillFromTrial(TrialSummary& s, const KeypointTrial& t) {
   for (const auto& w : t.warnings) s.warnings.push_back(w);
 }
 
+// The trial's joints and warnings, and its gait cycles in the image.
+template <class Stage>
+TrialSummary summarizeWalking(TrialSummary& s, const KeypointTrial& trial, Stage& stage) {
+  fillFromTrial(s, trial);
+  stage("walking", [&] {
+    const ImageGait g = imageGaitCycles(trial);
+    s.cycles = g.cycles;
+    s.strideHz = g.strideHz;
+    s.cycleMethod = g.inPlace ? "foot contacts (image), walking in place" : "foot contacts (image)";
+    s.windowFrames = trial.frameCount;
+  });
+  return s;
+}
+
 }  // namespace
 
 std::vector<fs::path> collectKeypointInputs(const std::vector<fs::path>& paths) {
@@ -80,23 +94,22 @@ TrialSummary summarizeKeypoints(const fs::path& path, const KeypointOptions& opt
     }
     return false;
   };
+  KeypointTrial trial;
+  if (isPlanarTrc(path)) {
+    if (!stage("read", [&] { trial = readPlanarTrc(path, options); })) return s;
+    s.format = trial.format;
+    s.frames = trial.frameCount;
+    s.pointsFound = kJointCount;
+    return summarizeWalking(s, trial, stage);
+  }
   KeypointFrames frames;
   const auto videoSize = options.video ? std::optional<KeypointImageSize>(options.video->size) : std::nullopt;
   if (!stage("read", [&] { frames = readKeypointFrames(path, options.imageSize, videoSize); })) return s;
   s.format = frames.format;
   s.frames = frames.frameCount();
   s.pointsFound = frames.pointCount;
-  KeypointTrial trial;
   if (!stage("joints", [&] { trial = cleanKeypoints(frames, options); })) return s;
-  fillFromTrial(s, trial);
-  stage("walking", [&] {
-    const ImageGait g = imageGaitCycles(trial);
-    s.cycles = g.cycles;
-    s.strideHz = g.strideHz;
-    s.cycleMethod = g.inPlace ? "foot contacts (image), walking in place" : "foot contacts (image)";
-    s.windowFrames = trial.frameCount;
-  });
-  return s;
+  return summarizeWalking(s, trial, stage);
 }
 
 }  // namespace ew

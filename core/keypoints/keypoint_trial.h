@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/common/skeleton.h"
+#include "core/common/trial.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "core/keypoints/keypoint_layout.h"
 
@@ -90,7 +91,28 @@ int personRowAt(const PersonTrack& person, int frame);
 // own points (DeepLabCut) takes its layout from layoutForPointNames (options.mappingFile).
 KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions& options = {});
 
+// Reads a keypoint file or folder (readKeypointFrames, cleanKeypoints), or a 2D TRC
+// (readPlanarTrc).
 KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options = {});
+
+// [SECTION] 2D TRC files (planar_trc.cpp) ----------------------------------------------------
+
+// A .trc whose first rows place every point (X or Y not 0) in the plane Z = 0: a view of the
+// walker, not a 3D walk (Sports2D writes its _px and _m files so). Sniffed from the first
+// 64 KiB.
+bool isPlanarTrc(const std::filesystem::path& path);
+
+// Reads one as the image of the walker: the file's point names give the 15 joints as for a
+// 3D TRC (the marker-set tables, or options.mappingFile), the plane's axis along which the
+// head stands from the ankles is the vertical (flipped when it points up: image v is down),
+// the other the horizontal (X to the right as the file has it). Coordinates in the file's
+// unit as millimetres, except points over 100 m from the origin: pixels under "Units m" (Sports2D),
+// read as pixels. A point at 0, 0 is absent. The rate is options.fps, else the file's.
+// Format "TRC (2D)". Throws what the TRC reader and the mapping throw, and Error(BadData)
+// naming the frame and point when a point leaves the plane.
+KeypointTrial readPlanarTrc(const std::filesystem::path& path, const KeypointOptions& options = {});
+// The same on a TRC already read (core/io/trc_reader.h).
+KeypointTrial planarTrcTrial(const RawTrial& raw, const KeypointOptions& options = {});
 
 // A trial from 15 joints already in SPEC §1 order (a joint tracker's output, one person):
 // a point whose confidence is below options.minConfidence is missing, as in a file. `file`

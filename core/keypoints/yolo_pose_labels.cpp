@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <map>
 
 #include "core/common/errors.h"
@@ -23,7 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::size_t kSniffBytes = 64 * 1024;
 constexpr int kBoxValues = 5;  // class, centre x, centre y, width, height
 // The keypoint counts of the layouts we know (docs/KEYPOINTS.md), most common first: the
 // field count of a line is read against these.
@@ -159,10 +157,7 @@ std::optional<fs::path> firstTextFile(const fs::path& folder) {
 // From the file's first 64 KiB (a line of 33 keypoints is about 1 KB): a large text file
 // that is something else is not read whole to find out.
 bool fileReadsAsLabels(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::string head(kSniffBytes, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(std::max<std::streamsize>(in.gcount(), 0)));
+  const std::string head = readFileStart(file);
   const auto lines = splitLines(head);
   // The last line may be cut by the 64 KiB: only whole lines count.
   for (std::size_t i = 0; i + (head.size() == kSniffBytes ? 1 : 0) < lines.size(); ++i) {

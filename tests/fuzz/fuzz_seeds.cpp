@@ -386,6 +386,17 @@ const char* kTinyTrc =
     "2\t0.0167\t0.1\t0.9\t0.2\t\t\t\r\n"
     "3\t0.0333\t0.1\t0.9\t0.2\t0.3\t0.9\t0.25\r\n";
 
+// Sports2D's way: image points under "Units m", Z 0 (a 2D view, core/keypoints/planar_trc.cpp).
+const char* kTinyPlanarTrc =
+    "PathFileType\t4\t(X/Y/Z)\twalk_Sports2D_px_person00.trc\n"
+    "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n"
+    "30\t30\t3\t7\tm\t30\t0\t3\n"
+    "Frame#\tTime\tNose\t\t\tRHip\t\t\tLHip\t\t\tRKnee\t\t\tLKnee\t\t\tRAnkle\t\t\tLAnkle\t\t\n"
+    "\t\tX1\tY1\tZ1\tX2\tY2\tZ2\tX3\tY3\tZ3\tX4\tY4\tZ4\tX5\tY5\tZ5\tX6\tY6\tZ6\tX7\tY7\tZ7\n"
+    "0\t0.0\t0.50\t-0.10\t0\t0.49\t-0.40\t0\t0.51\t-0.40\t0\t0.52\t-0.55\t0\t0.47\t-0.55\t0\t0.55\t-0.70\t0\t0.45\t-0.70\t0\n"
+    "1\t0.033\t0.51\t-0.10\t0\t0.50\t-0.40\t0\t0.52\t-0.40\t0\t0.52\t-0.55\t0\t0.49\t-0.55\t0\t0.54\t-0.70\t0\t0\t0\t0\n"
+    "2\t0.067\t0.52\t-0.10\t0\t0.51\t-0.40\t0\t0.53\t-0.40\t0\t0.53\t-0.55\t0\t0.51\t-0.55\t0\t0.53\t-0.70\t0\t0.50\t-0.70\t0\n";
+
 const char* kTinyBvh =
     "HIERARCHY\nROOT Hips\n{\n  OFFSET 0 0 0\n"
     "  CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
@@ -529,6 +540,7 @@ void handMadeSeeds(SeedWriter& out) {
   out.writeBoth("asf_amc", Format::AsfAmc, "tiny_two_bones.asfamc", asfAmc(kTinyAsf, kTinyAmc));
   out.write("asf_amc", "tiny_skeleton_only.asfamc", kTinyAsf);
   out.writeBoth("trc", Format::Trc, "tiny_three_frames_crlf.trc", kTinyTrc);
+  out.write("trc", "tiny_planar_sports2d.trc", kTinyPlanarTrc);
   out.writeBoth("bvh", Format::Bvh, "tiny_two_legs.bvh", kTinyBvh);
   out.writeBoth("joint_csv", Format::Csv, "tiny_gaps_comments.csv", tinyCsv());
   mappingSeeds(out);
