@@ -77,7 +77,7 @@ void imageSizeField(AppState& s, const ClipSettings& c, const ClipResult* r) {
     shown = std::to_string(size.width) + "x" + std::to_string(size.height) + " (" + r->rec.trial.imageSizeSource + ")";
   }
   ImGui::SetNextItemWidth(-1.0f);
-  const char* hint = shown.empty() ? "unknown: type the video's, e.g. 1920x1080" : shown.c_str();
+  const char* hint = shown.empty() ? "unknown: e.g. 1920x1080" : shown.c_str();
   if (ImGui::InputTextWithHint("##imagesize", hint, text, sizeof text, ImGuiInputTextFlags_EnterReturnsTrue)) {
     const std::string typed = text;
     apply(s, [&] {

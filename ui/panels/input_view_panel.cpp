@@ -17,6 +17,7 @@
 #include "ui/render/figures.h"
 #include "ui/render/palette.h"
 #include "ui/render/renderer.h"
+#include "ui/widgets/centred_message.h"
 
 namespace ew::ui {
 
@@ -134,11 +135,6 @@ std::optional<CameraMatrices> inputFraming(const Eigen::MatrixXd& trail, ImVec2 
 }  // namespace
 
 namespace {
-
-void drawCentredMessage(ImDrawList* dl, ImVec2 p0, ImVec2 size, const char* msg) {
-  const ImVec2 ts = ImGui::CalcTextSize(msg);
-  dl->AddText(ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y), IM_COL32(160, 168, 180, 255), msg);
-}
 
 // A round number of pixels about a fifth of the view's width, for the scale bar.
 float roundPixels(float px) {

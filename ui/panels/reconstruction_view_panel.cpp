@@ -21,6 +21,7 @@
 #include "ui/render/figures.h"
 #include "ui/render/palette.h"
 #include "ui/render/renderer.h"
+#include "ui/widgets/centred_message.h"
 
 namespace ew::ui {
 
@@ -29,14 +30,6 @@ namespace {
 // Under "no walk fits this track": why, without the video's path (the fit's message, wrapped to
 // the view).
 // A message in the middle of the view, wrapped at 0.8 of its width; returns its height.
-float drawCentredMessage(ImDrawList* dl, ImVec2 p0, ImVec2 size, const char* msg) {
-  const float wrap = 0.8f * size.x;
-  const ImVec2 ts = ImGui::CalcTextSize(msg, nullptr, false, wrap);
-  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 0.5f * (size.x - ts.x), p0.y + 0.5f * size.y),
-              IM_COL32(160, 168, 180, 255), msg, nullptr, wrap);
-  return ts.y;
-}
-
 void drawWhyNoWalkFits(ImDrawList* dl, const AppState& s, ImVec2 p0, ImVec2 size, float messageHeight) {
   std::string why = s.jobs.clipError;
   const std::string file = s.video->path.string() + ": ";
