@@ -93,6 +93,18 @@ void requirePlanar(const RawTrial& raw) {
   }
 }
 
+// Points written as 0, 0, 0 (Sports2D's gaps) made missing before the joints are built from
+// them: a joint that is the mean of two points, one of them a gap, is no joint.
+RawTrial withoutUnplacedPoints(RawTrial raw) {
+  for (Eigen::Index f = 0; f < raw.positionsMm.rows(); ++f) {
+    for (int p = 0; p < raw.pointCount(); ++p) {
+      auto q = raw.positionsMm.block<1, 3>(f, 3 * p);
+      if (q(0) == 0.0 && q(1) == 0.0) q.setConstant(std::numeric_limits<double>::quiet_NaN());
+    }
+  }
+  return raw;
+}
+
 }  // namespace
 
 bool isPlanarTrc(const fs::path& path) {
@@ -120,7 +132,7 @@ KeypointTrial planarTrcTrial(const RawTrial& raw, const KeypointOptions& options
   LoadOptions load;
   load.mappingFile = options.mappingFile;
   requirePlanar(raw);
-  const JointTrial joints = mapRawTrial(raw, load);
+  const JointTrial joints = mapRawTrial(withoutUnplacedPoints(raw), load);
   // The file's unit as millimetres, except pixels written as metres (see above).
   double scale = 1.0;
   const double extent = (joints.positionsMm.array().isFinite()).select(joints.positionsMm.array().abs(), 0.0).maxCoeff();

@@ -136,12 +136,17 @@ TEST(PlanarTrc, ThreeDimensionalFilesAreNotViews) {
   const fs::path deep = writeTrc(clip, "planar_deep", mm, [](int f) { return 100.0 + f; });
   EXPECT_TRUE(test::throwsError([&] { readKeypointTrial(deep); }, ErrorKind::BadArgument,
                                 {deep.string(), "3D points", "not a pose estimator's 2D keypoints"}));
-  // Missing points written as 0, 0, 0 (Sports2D's gaps) are absent, not in the plane.
+  // Missing points written as 0, 0, 0 (Sports2D's gaps) are absent, not in the plane; a joint
+  // built from one of them (the pelvis, between the hips) too.
   test::FilmedCoco gappy = clip;
   for (int f = 40; f < 45; ++f) gappy.seen[static_cast<std::size_t>(f)] = false;
+  gappy.frames[50].row(11).setZero();  // the left hip
   const KeypointTrial t = readKeypointTrial(writeTrc(gappy, "planar_gaps", mm));
   EXPECT_TRUE(std::isnan(t.jointsPx(42, 2 * index(Joint::Pelvis))));
   EXPECT_FALSE(std::isnan(t.jointsPx(45, 2 * index(Joint::Pelvis))));
+  EXPECT_TRUE(std::isnan(t.jointsPx(50, 2 * index(Joint::LHip))));
+  EXPECT_TRUE(std::isnan(t.jointsPx(50, 2 * index(Joint::Pelvis))));
+  EXPECT_FALSE(std::isnan(t.jointsPx(50, 2 * index(Joint::RHip))));
 }
 
 }  // namespace
