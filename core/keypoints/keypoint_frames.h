@@ -39,6 +39,7 @@ struct KeypointVideo {
   std::string file;
   KeypointImageSize size;
   double fps = 0.0;  // 0: unknown
+  bool operator==(const KeypointVideo&) const = default;
 };
 
 struct KeypointFrames {

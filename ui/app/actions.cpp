@@ -26,6 +26,7 @@
 #include "ui/app/theme.h"
 #include "ui/app/tour.h"
 #include "ui/app/video_poll.h"
+#include "video/video_beside.h"
 
 namespace ew::ui::actions {
 
@@ -1369,8 +1370,9 @@ void openClip(AppState& s, const std::filesystem::path& path) {
   settings.path = path;
   // The clip takes the views' place, as a video opened takes a clip's.
   closeVideo(s);
-  // A clip opened again keeps what the user chose for it.
+  // A clip opened again keeps what the user chose for it; its video is looked for again.
   if (s.doc.clip && s.doc.clip->path == path) settings = *s.doc.clip;
+  settings.video = videoBesideKeypoints(path);
   s.doc.clip = settings;
   s.doc.mode = Mode::Clip;
   s.jobs.clipFailed.reset();

@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "core/engine/model.h"
-#include "video/video_beside.h"
 
 namespace ew::ui {
 
@@ -34,8 +33,7 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   if (settings.fps > 0.0) k.fps = settings.fps;
   if (settings.person >= 0) k.person = settings.person;
   k.imageSize = settings.imageSize;
-  // What the file does not store, from the video it was made from.
-  if (!settings.tracked) k.video = videoBesideKeypoints(settings.path);
+  k.video = settings.video;  // what the file does not store, from the video it was made from
   CameraFitOptions o;
   // The σ² the model stores as its optimum, as `reconstruct --unknown-camera` uses.
   o.estimator = {Estimator::Map, defaultSigma2Mm2(*model.model)};

@@ -24,6 +24,9 @@ struct ClipSettings {
   // The image's size, given by the user: else the file's, else the video's found beside the
   // keypoints (video/video_beside.h). What a MediaPipe CSV's or YOLO labels' fractions are of.
   std::optional<KeypointImageSize> imageSize;
+  // The video found beside the keypoints when the clip was opened (not on every refit: opening
+  // a 1080p H.264 file takes ~25 ms).
+  std::optional<KeypointVideo> video;
   // A video's tracked joints (ui/app/video.h) instead of a file: `path` is the video; layout,
   // fps and person do not apply.
   std::shared_ptr<const KeypointTrial> tracked;
