@@ -8,18 +8,16 @@
 
 namespace ew::cli {
 
-std::string takeTheVideoBeside(const std::filesystem::path& keypoints, KeypointOptions& k) {
+void takeTheVideoBeside(const std::filesystem::path& keypoints, KeypointOptions& k) {
 #ifdef EW_HAVE_VIDEO
   if (auto beside = videoBesideKeypoints(keypoints)) {
     std::cerr << "the video beside " << keypoints.string() << ": " << beside->file << " (" << beside->size.width
               << "x" << beside->size.height << ", " << beside->fps << " fps)\n";
     k.video = std::move(beside);
-    return k.video->file;
   }
 #else
   (void)keypoints, (void)k;
 #endif
-  return "";
 }
 
 }  // namespace ew::cli

@@ -3,7 +3,6 @@
 // frame rate of the video they were made from, found beside them (video/video_beside.h).
 
 #include <filesystem>
-#include <string>
 
 #include "core/keypoints/keypoint_trial.h"
 
@@ -11,8 +10,7 @@ namespace ew::cli {
 
 // Sets k.video to the video beside `keypoints` when such a video opens (its size and rate
 // then stand in for what neither the options nor the file give: KeypointOptions::video) and
-// says so on stderr; returns its path ("" when none). Without the video library (a build
-// without OpenCV) none is looked for.
-std::string takeTheVideoBeside(const std::filesystem::path& keypoints, KeypointOptions& k);
+// says so on stderr. Without the video library (a build without OpenCV) none is looked for.
+void takeTheVideoBeside(const std::filesystem::path& keypoints, KeypointOptions& k);
 
 }  // namespace ew::cli

@@ -362,7 +362,7 @@ std::vector<std::pair<std::string, std::string>> readPerFrameFiles(const fs::pat
 KeypointFrames readKeypointFrames(const fs::path& path, const std::optional<KeypointImageSize>& imageSize,
                                   const std::optional<KeypointImageSize>& videoSize) {
   std::error_code ec;
-  if (yoloLabelsFolder(path)) return readYoloPoseLabels(path, imageSize ? imageSize : videoSize);
+  if (const auto labels = yoloLabelsFolder(path)) return readYoloPoseLabels(*labels, imageSize ? imageSize : videoSize);
   if (fs::is_directory(path, ec)) return parseOpenPoseFrames(readPerFrameFiles(path, ".json"), path.string());
   if (isCsvPath(path)) return readKeypointCsv(path, imageSize, videoSize);
   if (hasExtension(path, ".trc"))

@@ -153,7 +153,8 @@ KeypointFrames parseDeepLabCutCsv(const std::string& text, const std::string& na
 // as such a label; nullopt otherwise.
 std::optional<std::filesystem::path> yoloLabelsFolder(const std::filesystem::path& path);
 
-// Reads them: each file's frame number places it (Ultralytics counts from 1; a folder whose
+// Reads them from `labels`, the folder of label files or the one file yoloLabelsFolder found
+// (not looked for again): each file's frame number places it (Ultralytics counts from 1; a folder whose
 // numbers start at 0 from 0), an absent file is a frame with nobody. The point count and
 // what follows the keypoints are decided from the field count (17, 18, 25, 26 or 33 points;
 // an extra whole number in every line is a track id, else the box confidence); 17 points are
@@ -162,7 +163,7 @@ std::optional<std::filesystem::path> yoloLabelsFolder(const std::filesystem::pat
 // naming the file and line for a non-number, a field count that changes or fits no layout,
 // coordinates that are not fractions (below -1 or above 2: pixels), a file name without a
 // frame number, two files of one frame; the bounds of KeypointFrames.
-KeypointFrames readYoloPoseLabels(const std::filesystem::path& path, std::optional<KeypointImageSize> imageSize);
+KeypointFrames readYoloPoseLabels(const std::filesystem::path& labels, std::optional<KeypointImageSize> imageSize);
 // The same on texts already read: (file name, text) pairs; `name` is what errors say.
 KeypointFrames parseYoloPoseLabels(const std::vector<std::pair<std::string, std::string>>& filesAndTexts,
                                    const std::string& name, std::optional<KeypointImageSize> imageSize);

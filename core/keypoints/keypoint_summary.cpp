@@ -103,8 +103,7 @@ TrialSummary summarizeKeypoints(const fs::path& path, const KeypointOptions& opt
     return summarizeWalking(s, trial, stage);
   }
   KeypointFrames frames;
-  const auto videoSize = options.video ? std::optional<KeypointImageSize>(options.video->size) : std::nullopt;
-  if (!stage("read", [&] { frames = readKeypointFrames(path, options.imageSize, videoSize); })) return s;
+  if (!stage("read", [&] { frames = readKeypointFrames(path, options.imageSize, options.videoSize()); })) return s;
   s.format = frames.format;
   s.frames = frames.frameCount();
   s.pointsFound = frames.pointCount;

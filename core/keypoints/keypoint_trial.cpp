@@ -421,8 +421,7 @@ int personRowAt(const PersonTrack& person, int frame) {
 
 KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options) {
   if (isPlanarTrc(path)) return readPlanarTrc(path, options);
-  const auto videoSize = options.video ? std::optional<KeypointImageSize>(options.video->size) : std::nullopt;
-  return cleanKeypoints(readKeypointFrames(path, options.imageSize, videoSize), options);
+  return cleanKeypoints(readKeypointFrames(path, options.imageSize, options.videoSize()), options);
 }
 
 KeypointTrial trialFromJoints(const Eigen::MatrixXd& jointsPx, const Eigen::MatrixXd& confidence,

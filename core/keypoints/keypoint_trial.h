@@ -31,6 +31,9 @@ struct KeypointOptions {
   // The video the points were found in, when known (found beside them: video/video_beside.h):
   // its size and rate stand in where neither the options above nor the file give them.
   std::optional<KeypointVideo> video;
+  std::optional<KeypointImageSize> videoSize() const {
+    return video ? std::optional<KeypointImageSize>(video->size) : std::nullopt;
+  }
   // Take the layout's detector offsets into account (KeypointLayout::detectorOffsetMm);
   // false (--no-detector-offsets): the detector's points are taken for joint centres.
   bool detectorOffsets = true;

@@ -236,17 +236,15 @@ KeypointFrames parseYoloPoseLabels(const std::vector<std::pair<std::string, std:
   return out;
 }
 
-KeypointFrames readYoloPoseLabels(const fs::path& path, std::optional<KeypointImageSize> imageSize) {
-  const auto folder = yoloLabelsFolder(path);
-  if (!folder) throwMalformed(path.string(), "", "not YOLO pose labels (.txt files of 'class cx cy w h x y v …' lines)");
+KeypointFrames readYoloPoseLabels(const fs::path& labels, std::optional<KeypointImageSize> imageSize) {
   std::error_code ec;
   std::vector<std::pair<std::string, std::string>> texts;
-  if (fs::is_directory(*folder, ec)) {
-    texts = readPerFrameFiles(*folder, ".txt");
+  if (fs::is_directory(labels, ec)) {
+    texts = readPerFrameFiles(labels, ".txt");
   } else {
-    texts.emplace_back(folder->filename().string(), readFileText(*folder));
+    texts.emplace_back(labels.filename().string(), readFileText(labels));
   }
-  return parseYoloPoseLabels(texts, folder->string(), imageSize);
+  return parseYoloPoseLabels(texts, labels.string(), imageSize);
 }
 
 }  // namespace ew
