@@ -198,13 +198,17 @@ int runTrack(const TrackArgs& a) {
             << std::setprecision(2) << seconds << " s (" << std::setprecision(1)
             << static_cast<double>(frames) / std::max(seconds, 1e-9) << " frames/s)\n";
   json leastSureJson = json::array();
-  if (!leastSure.empty()) std::cout << "least sure frames (mean confidence; where to mark again):";
+  if (!leastSure.empty()) std::cout << "least sure frames (mean confidence; where to check):";
   for (const int f : leastSure) {
     const double c = meanConfidence(f - track.firstFrame);
     std::cout << " " << f << " (" << std::setprecision(2) << c << ")";
     leastSureJson.push_back({{"frame", f}, {"mean_confidence", c}});
   }
   if (!leastSure.empty()) std::cout << std::setprecision(1) << "\n";
+  const std::vector<int> markNext = framesToMarkNext(track.jointsPx, track.firstFrame, keyframeFrames, 3);
+  if (!markNext.empty()) std::cout << "frames to mark next (where marks cut the tracker's drift most, best first):";
+  for (const int f : markNext) std::cout << " " << f;
+  if (!markNext.empty()) std::cout << "\n";
   json report = {{"video", info.file},
                  {"tracker", trackerName(o.kind)},
                  {"background", track.background},
@@ -217,7 +221,8 @@ int runTrack(const TrackArgs& a) {
                  {"keyframes", keys.keyframes.size()},
                  {"seconds", seconds},
                  {"mean_confidence", track.confidence.mean()},
-                 {"least_sure_frames", leastSureJson}};
+                 {"least_sure_frames", leastSureJson},
+                 {"frames_to_mark_next", markNext}};
   if (a.modelLoop > 0) report["model_loop"] = modelLoopJson(looped, a.modelLoop);
   std::optional<Eigen::MatrixXd> referencePx;
   if (!a.compare.empty()) {

@@ -442,6 +442,13 @@ TEST_F(GuiVideo, FlattensTheStillBackgroundAndHoldsTheTrunkWhenAsked) {
   EXPECT_EQ(video["track"]["background"], "flattened");
   EXPECT_EQ(video["hold_trunk"], true);
   EXPECT_EQ(video["track"]["trunk_held"], true);
+  // The Track section's two suggestions: tracked frames, and no keyframe.
+  for (const char* suggestion : {"frame_to_mark_next", "least_sure_frame"}) {
+    const int frame = video["track"][suggestion].get<int>();
+    EXPECT_GE(frame, 0) << suggestion;
+    EXPECT_LE(frame, 59) << suggestion;
+    for (const json& k : video["keyframes"]) EXPECT_NE(k["frame"].get<int>(), frame) << suggestion;
+  }
 }
 
 // A pose estimator's detections mark a frame (the Mark section's keypoint field, the script's

@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "core/common/nan.h"
 #include "core/tracking/keyframes.h"
@@ -154,6 +156,80 @@ TEST(TrackConfidence, LeastSureFramesAreTheWeakestApartAndNoKeyframe) {
   EXPECT_EQ(leastSureFrames(means, 10, {10}, 2, 1), (std::vector<int>{13, 14}));
   EXPECT_EQ(leastSureFrames(means, 10, {}, 1, 1), (std::vector<int>{10}));
   EXPECT_EQ(leastSureFrames(means.head(1), 10, {10}, 3, 1), std::vector<int>{});
+}
+
+
+// A track whose joints all move `step(r)` px right from row r − 1 to row r.
+Eigen::MatrixXd trackMoving(const std::vector<double>& steps) {
+  Eigen::MatrixXd px = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(steps.size()), kDims2);
+  for (Eigen::Index r = 1; r < px.rows(); ++r) {
+    px.row(r) = px.row(r - 1);
+    for (Eigen::Index j = 0; j < kDims2; j += 2) px(r, j) += steps[static_cast<size_t>(r)];
+  }
+  return px;
+}
+
+// The summed distance of every row to its nearest keyframe row, along the motion: what
+// framesToMarkNext cuts most, counted the slow way.
+double summedMotionDistance(const Eigen::VectorXd& cumulative, const std::vector<int>& rows) {
+  double total = 0.0;
+  for (Eigen::Index r = 0; r < cumulative.size(); ++r) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int k : rows) nearest = std::min(nearest, std::abs(cumulative(r) - cumulative(k)));
+    total += nearest;
+  }
+  return total;
+}
+
+// Where the joints move, not where time passes: a man marked standing still, who stands for
+// 40 frames, lunges for 20 and holds the lunge for 40, is best marked again in the pose he
+// holds (one mark serves its 40 frames), at the lunge's end, not at the clip's end; then in
+// the lunge itself, not in the still frames.
+TEST(TrackConfidence, TheFrameToMarkNextSplitsTheMotionNotTheTime) {
+  std::vector<double> steps(100, 0.0);
+  for (int r = 41; r <= 60; ++r) steps[static_cast<size_t>(r)] = 10.0;
+  const Eigen::MatrixXd px = trackMoving(steps);
+  const std::vector<int> next = framesToMarkNext(px, 200, {200}, 2);
+  ASSERT_EQ(next.size(), 2u);
+  EXPECT_EQ(next[0], 260);
+  EXPECT_GE(next[1], 245);  // rows 45-55, frames 245-255: the lunge's middle half
+  EXPECT_LE(next[1], 255);
+  // A joint lost (NaN) is left out of the mean, not taken for a jump.
+  Eigen::MatrixXd lost = px;
+  lost.col(4).setConstant(std::nan(""));
+  EXPECT_EQ(framesToMarkNext(lost, 200, {200}, 2), next);
+  // Nothing moved: nothing to suggest. A keyframe outside the track is ignored.
+  const Eigen::MatrixXd still = Eigen::MatrixXd::Zero(30, kDims2);
+  EXPECT_TRUE(framesToMarkNext(still, 0, {0}, 3).empty());
+  EXPECT_EQ(framesToMarkNext(px, 200, {5, 200, 900}, 2), next);
+  EXPECT_TRUE(framesToMarkNext(Eigen::MatrixXd(0, kDims2), 0, {}, 1).empty());
+}
+
+// The prefix sums give the frame the slow count gives, with keyframes before, between and
+// after, none, and each next frame chosen with the ones before it as keyframes.
+TEST(TrackConfidence, TheFramesToMarkNextCutTheSummedDistanceMost) {
+  std::vector<double> steps(80);
+  for (size_t i = 0; i < steps.size(); ++i) steps[i] = std::fmod(static_cast<double>(i * 37 % 11), 7.0);
+  const Eigen::MatrixXd px = trackMoving(steps);
+  const Eigen::VectorXd cumulative = cumulativeMotionPx(px);
+  EXPECT_NEAR(cumulative(79), std::accumulate(steps.begin() + 1, steps.end(), 0.0), 1e-9);
+  for (const std::vector<int>& keys : {std::vector<int>{}, {0}, {79}, {20, 50}, {10, 11, 70}}) {
+    std::vector<int> rows = keys;
+    for (const int chosen : framesToMarkNext(px, 0, keys, 3)) {
+      double best = std::numeric_limits<double>::infinity();
+      for (int x = 0; x < 80; ++x) {
+        if (std::find(rows.begin(), rows.end(), x) != rows.end()) continue;
+        std::vector<int> with = rows;
+        with.push_back(x);
+        best = std::min(best, summedMotionDistance(cumulative, with));
+      }
+      std::vector<int> with = rows;
+      with.push_back(chosen);
+      EXPECT_NEAR(summedMotionDistance(cumulative, with), best, 1e-6) << "keyframes " << keys.size();
+      EXPECT_EQ(std::count(rows.begin(), rows.end(), chosen), 0);
+      rows.push_back(chosen);
+    }
+  }
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "core/keypoints/openpose_writer.h"
 #include "core/synth/population.h"
 #include "core/tracking/keyframes.h"
+#include "core/tracking/track_confidence.h"
 #include "tests/common/test_support.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
@@ -261,6 +262,28 @@ TEST(VideoActions, TheLeastSureFrameIsTheWeakestFrameNotAKeyframe) {
   const int j = index(Joint::Head);
   actions::markJoint(s, Joint::Head, truthPx(least, 2 * j), truthPx(least, 2 * j + 1));
   EXPECT_NE(actions::leastSureTrackedFrame(s), least) << "now a keyframe";
+}
+
+// The frame to mark next is framesToMarkNext's on the track with the keyframes as they are
+// now: a frame marked since the track was made is not offered again; without a track there
+// is none.
+TEST(VideoActions, TheFrameToMarkNextIsNoKeyframeAndMovesOnOnceMarked) {
+  const Filmed f = filmWithKeyframes("video_actions_next", 40, {0});
+  AppState s;
+  actions::openVideo(s, f.video);
+  EXPECT_EQ(actions::nextFrameToMark(s), -1);
+  openAndTrack(s, f);
+  ASSERT_TRUE(s.video->tracked);
+  const JointTrack& t = s.video->tracked->track;
+  const int next = actions::nextFrameToMark(s);
+  EXPECT_EQ(std::vector<int>{next}, framesToMarkNext(t.jointsPx, t.firstFrame, {0}, 1));
+  ASSERT_GT(next, 0) << "frame 0 is the keyframe";
+  s.video->frame = next;
+  const int j = index(Joint::Head);
+  actions::markJoint(s, Joint::Head, f.truthPx(next, 2 * j), f.truthPx(next, 2 * j + 1));
+  const int after = actions::nextFrameToMark(s);
+  EXPECT_NE(after, next) << "now a keyframe";
+  EXPECT_EQ(std::vector<int>{after}, framesToMarkNext(t.jointsPx, t.firstFrame, {0, next}, 1));
 }
 
 // A joint dragged between two keyframes tracks again only the frames between them, and the

@@ -68,6 +68,14 @@ TEST_F(TrackCli, EachTrackerWritesTheTrackAndMeasuresItAgainstTheOtherKeyframes)
     EXPECT_GT(report["compare"]["median_px"].get<double>(), 0.0);
     EXPECT_LT(report["compare"]["median_px"].get<double>(), 40.0) << tracker;  // a 250 px walker
     EXPECT_EQ(json::parse(test::readTextFile(root_ / out / "track.json"))["tracker"], tracker);
+    // Three frames to mark next, each tracked and none the keyframe, said on stdout too.
+    const json next = report["frames_to_mark_next"];
+    ASSERT_EQ(next.size(), 3u) << next;
+    for (const json& f : next) {
+      EXPECT_GT(f.get<int>(), 0);
+      EXPECT_LT(f.get<int>(), 30);
+    }
+    EXPECT_NE(r.out.find("frames to mark next"), std::string::npos) << r.out;
     EXPECT_TRUE(fs::exists(root_ / out / "track_2d.csv"));
     EXPECT_TRUE(fs::exists(root_ / out / "confidence.csv"));
     int keypointFiles = 0;

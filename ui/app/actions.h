@@ -201,6 +201,10 @@ int neighbouringKeyframe(const AppState& s, int delta);
 // lowest: where to look first for joints that strayed (-1 when there is no track, or every
 // tracked frame is a keyframe).
 int leastSureTrackedFrame(const AppState& s);
+// The frame to mark next, no keyframe: the one that, marked, leaves the least of the joints'
+// motion between each tracked frame and its nearest keyframe (framesToMarkNext,
+// core/tracking/track_confidence.h); -1 when there is no track or nothing moved.
+int nextFrameToMark(const AppState& s);
 // Where the viewer offers to save the open video's keyframes and track: <video name>_track.
 std::filesystem::path defaultTrackFolder(const AppState& s);
 // The video's 2D view magnified `zoom` times (clamped to 1-16; 1 shows the whole picture) with

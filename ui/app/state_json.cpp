@@ -221,6 +221,8 @@ nlohmann::json videoJson(const AppState& s) {
                   {"model_loop_hidden_joint_frames",
                    t.loopRounds.empty() ? 0 : t.loopRounds.back().hiddenJointFrames},
                   {"model_loop_stopped", t.loopStopped}};
+    j["track"]["frame_to_mark_next"] = actions::nextFrameToMark(s);
+    j["track"]["least_sure_frame"] = actions::leastSureTrackedFrame(s);
   }
   return j;
 }

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <chrono>
 
+#include "core/tracking/track_confidence.h"
+
 namespace ew::ui {
 
 const std::vector<Joint>& markingOrder() {
@@ -27,8 +29,8 @@ TrackSettings trackSettingsOf(const VideoSession& v, int last) {
 
 namespace {
 
-// What the viewer reads off a track, made once when it is tracked: the fit's trial and each
-// frame's mean confidence.
+// What the viewer reads off a track, made once when it is tracked: the fit's trial, each
+// frame's mean confidence and how far the joints have moved by each frame.
 TrackerOptions trackerOptionsFor(const TrackSettings& settings) {
   TrackerOptions o;
   o.kind = settings.tracker;
@@ -42,6 +44,7 @@ TrackerOptions trackerOptionsFor(const TrackSettings& settings) {
 void deriveFromTrack(TrackedVideo& t) {
   t.trial = std::make_shared<const KeypointTrial>(keypointTrialOf(t.track, t.video.string()));
   t.meanConfidence = t.track.confidence.rowwise().mean();
+  t.cumulativeMotionPx = cumulativeMotionPx(t.track.jointsPx);
 }
 
 }  // namespace

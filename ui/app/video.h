@@ -35,6 +35,7 @@ struct TrackedVideo {
   JointTrack track;
   std::shared_ptr<const KeypointTrial> trial;  // the track's confident points (trialFromJoints)
   Eigen::VectorXd meanConfidence;              // a frame's mean over the joints (the panel's strip)
+  Eigen::VectorXd cumulativeMotionPx;          // core/tracking/track_confidence.h (*Mark next*)
   double seconds = 0.0;
   // The frames the last run tracked (trackAgainBetween's part; the whole range otherwise).
   int ranFirst = 0, ranLast = -1;

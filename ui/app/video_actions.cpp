@@ -180,6 +180,15 @@ int leastSureTrackedFrame(const AppState& s) {
   return least.empty() ? -1 : least.front();
 }
 
+int nextFrameToMark(const AppState& s) {
+  if (!s.video || !s.video->tracked) return -1;
+  const TrackedVideo& t = *s.video->tracked;
+  std::vector<int> keyframes;
+  for (const Keyframe& k : s.video->keyframes.keyframes) keyframes.push_back(k.frame);
+  const std::vector<int> next = framesToMarkNextAlong(t.cumulativeMotionPx, t.track.firstFrame, keyframes, 1);
+  return next.empty() ? -1 : next.front();
+}
+
 std::filesystem::path defaultTrackFolder(const AppState& s) {
   return s.video ? std::filesystem::path(s.video->path.stem().string() + "_track") : "track";
 }

@@ -260,10 +260,20 @@ void confidenceStrip(AppState& s, const VideoSession& v, float scale) {
   }
 }
 
-// The strip, and a button to the frame the tracker was least sure of (no keyframe): the place
-// to check first, and to drag the joints that strayed (the frame becomes a keyframe).
+// The strip; a button to the frame whose marks would help the track most, and one to the
+// frame the tracker was least sure of (no keyframe): the place to check first, and to drag the
+// joints that strayed (the frame becomes a keyframe).
 void refining(AppState& s, const VideoSession& v, float scale) {
   confidenceStrip(s, v, scale);
+  const int next = actions::nextFrameToMark(s);
+  char nextLabel[64];
+  std::snprintf(nextLabel, sizeof nextLabel, next >= 0 ? "Frame to mark next (%d)" : "Frame to mark next", next);
+  if (buttonRow({{nextLabel, next >= 0}}) == 0) apply(s, [&] { actions::setVideoFrame(s, next); });
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("The frame that, marked, helps the track most: the tracker drifts with the\n"
+                      "motion it follows, and this frame leaves the least of the joints' motion\n"
+                      "between each frame and its nearest keyframe. Drag its joints that strayed\n"
+                      "(the frame becomes a keyframe and the track is redone from it)");
   const int least = actions::leastSureTrackedFrame(s);
   char label[64];
   std::snprintf(label, sizeof label, least >= 0 ? "Least sure frame (%d)" : "Least sure frame", least);
@@ -320,7 +330,7 @@ void tracking(AppState& s, const VideoSession& v, float scale) {
     textDisabledWrapped(done);
     ImGui::TextDisabled("mean confidence %.2f", t.meanConfidence.mean());
     if (t.flattenBackground) textDisabledWrapped(backgroundNote(t.track.background).c_str());
-    if (t.holdTheTrunk) ImGui::TextDisabled("shoulders and hips held to the trunk");
+    if (t.holdTheTrunk) textDisabledWrapped("shoulders and hips held to the trunk");
     if (t.modelLoopRounds > 0) textDisabledWrapped(loopNote(t).c_str());
     refining(s, v, scale);
   }
