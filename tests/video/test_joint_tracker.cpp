@@ -179,16 +179,22 @@ TEST(JointTracker, AJointOnAPlainEdgeSlidesAlongItToTheModelsPlace) {
   EXPECT_LT(movedBy(Joint::LKnee).norm(), 0.5);
 }
 
+fs::path balancingTrialDir() { return test::sharedDataDir() / "pose2sim-balancing"; }
+
+// OpenPose's detections on the balancing trial's camera 1, at the video's frame rate.
+KeypointTrial cam01OpenPose(const VideoSource& video) {
+  KeypointOptions k;
+  k.fps = video.info().fps;
+  return readKeypointTrial(balancingTrialDir() / "pose/cam01_json", k);
+}
+
 // Pose2Sim's balancing man bends forward with bare shoulders: their own flow slides along
 // the arms and stays 80 px from OpenPose's shoulders at the median; held to the pelvis→sternum
 // line they follow his trunk (16–18 px, docs/TRACKING.md, "Holding the trunk").
 TEST(JointTracker, HoldingTheTrunkKeepsTheBalancingMansShouldersOnHim) {
   EW_REQUIRE_SHARED_DATA();
-  const auto dir = test::sharedDataDir() / "pose2sim-balancing";
-  VideoSource video(dir / "videos/cam01.mp4");
-  KeypointOptions k;
-  k.fps = video.info().fps;
-  const KeypointTrial openPose = readKeypointTrial(dir / "pose/cam01_json", k);
+  VideoSource video(balancingTrialDir() / "videos/cam01.mp4");
+  const KeypointTrial openPose = cam01OpenPose(video);
   const Keyframes keys = keyframesFromTrack(openPose.jointsPx, {0}, "cam01");
   std::array<bool, kJointCount> shoulders{};
   shoulders[index(Joint::RShoulder)] = shoulders[index(Joint::LShoulder)] = true;
@@ -213,11 +219,8 @@ TEST(JointTracker, HoldingTheTrunkKeepsTheBalancingMansShouldersOnHim) {
 // second keyframe from 5 to 99 gives 13.4-25.4 px (docs/TRACKING.md, "Holding the trunk").
 TEST(JointTracker, TheFrameToMarkNextHelpsTheBalancingTrialMoreThanTheLeastSure) {
   EW_REQUIRE_SHARED_DATA();
-  const auto dir = test::sharedDataDir() / "pose2sim-balancing";
-  VideoSource video(dir / "videos/cam01.mp4");
-  KeypointOptions k;
-  k.fps = video.info().fps;
-  const KeypointTrial openPose = readKeypointTrial(dir / "pose/cam01_json", k);
+  VideoSource video(balancingTrialDir() / "videos/cam01.mp4");
+  const KeypointTrial openPose = cam01OpenPose(video);
   TrackerOptions o;
   o.lastFrame = 99;
   o.holdTheTrunk = true;

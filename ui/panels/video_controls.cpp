@@ -260,28 +260,29 @@ void confidenceStrip(AppState& s, const VideoSession& v, float scale) {
   }
 }
 
+// A full-width button to a suggested frame ("Name (N)"; greyed when there is none, frame < 0),
+// with its tooltip.
+void goToFrameButton(AppState& s, const char* name, int frame, const char* tooltip) {
+  char label[64];
+  std::snprintf(label, sizeof label, frame >= 0 ? "%s (%d)" : "%s", name, frame);
+  if (buttonRow({{label, frame >= 0}}) == 0) apply(s, [&] { actions::setVideoFrame(s, frame); });
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", tooltip);
+}
+
 // The strip; a button to the frame whose marks would help the track most, and one to the
 // frame the tracker was least sure of (no keyframe): the place to check first, and to drag the
 // joints that strayed (the frame becomes a keyframe).
 void refining(AppState& s, const VideoSession& v, float scale) {
   confidenceStrip(s, v, scale);
-  const int next = actions::nextFrameToMark(s);
-  char nextLabel[64];
-  std::snprintf(nextLabel, sizeof nextLabel, next >= 0 ? "Frame to mark next (%d)" : "Frame to mark next", next);
-  if (buttonRow({{nextLabel, next >= 0}}) == 0) apply(s, [&] { actions::setVideoFrame(s, next); });
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip("The frame that, marked, helps the track most: the tracker drifts with the\n"
-                      "motion it follows, and this frame leaves the least of the joints' motion\n"
-                      "between each frame and its nearest keyframe. Drag its joints that strayed\n"
-                      "(the frame becomes a keyframe and the track is redone from it)");
-  const int least = actions::leastSureTrackedFrame(s);
-  char label[64];
-  std::snprintf(label, sizeof label, least >= 0 ? "Least sure frame (%d)" : "Least sure frame", least);
-  if (buttonRow({{label, least >= 0}}) == 0) apply(s, [&] { actions::setVideoFrame(s, least); });
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip("The tracked frame, not a keyframe, with the lowest mean confidence: check it,\n"
-                      "and drag any joint that strayed (the frame becomes a keyframe and the\n"
-                      "track is redone from it)");
+  goToFrameButton(s, "Frame to mark next", actions::nextFrameToMark(s),
+                  "The frame that, marked, helps the track most: the tracker drifts with the\n"
+                  "motion it follows, and this frame leaves the least of the joints' motion\n"
+                  "between each frame and its nearest keyframe. Drag its joints that strayed\n"
+                  "(the frame becomes a keyframe and the track is redone from it)");
+  goToFrameButton(s, "Least sure frame", actions::leastSureTrackedFrame(s),
+                  "The tracked frame, not a keyframe, with the lowest mean confidence: check it,\n"
+                  "and drag any joint that strayed (the frame becomes a keyframe and the\n"
+                  "track is redone from it)");
 }
 
 std::string backgroundNote(const std::string& background) {
