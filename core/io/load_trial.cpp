@@ -7,7 +7,9 @@
 #include "core/io/asf_amc_reader.h"
 #include "core/io/bvh_reader.h"
 #include "core/io/c3d_reader.h"
+#include "core/io/file_bytes.h"
 #include "core/io/joint_csv.h"
+#include "core/io/nexus_csv.h"
 #include "core/io/text_table.h"
 #include "core/io/trc_reader.h"
 #include "core/mapping/joint_mapping.h"
@@ -59,9 +61,13 @@ RawTrial readRawTrial(const std::filesystem::path& file, const LoadOptions& opti
     case FileFormat::Bvh: return readBvh(file, options);
     case FileFormat::AsfAmc: return readAsfAmc(file, options);
     case FileFormat::Trc: return readTrc(file, options);
-    case FileFormat::Csv: return readJointCsv(file, options);
+    case FileFormat::Csv: return parseCsvTrial(readFileText(file), file.string(), options);
   }
   throw Error(ErrorKind::Unsupported, file.string(), "", "unknown format");
+}
+
+RawTrial parseCsvTrial(std::string_view text, const std::string& name, const LoadOptions& options) {
+  return looksLikeNexusCsv(text) ? parseNexusCsv(text, name, options) : parseJointCsv(text, name, options);
 }
 
 namespace {

@@ -31,6 +31,10 @@ std::string formatName(FileFormat format);
 // Reads the file into points in the file's axes, in millimetres.
 RawTrial readRawTrial(const std::filesystem::path& file, const LoadOptions& options = {});
 
+// A .csv's text: a Vicon Nexus export (core/io/nexus_csv.h) when its first line names a Nexus
+// section, else the 15-joint CSV (core/io/joint_csv.h).
+RawTrial parseCsvTrial(std::string_view text, const std::string& name, const LoadOptions& options = {});
+
 // The 15 joints of a raw trial: through options.mappingFile when given (marker files
 // only; Error(BadArgument) for a skeleton or joint file), else toJointTrial. A body of no
 // human size for the unit read is warned about (core/gait/body_size.h).

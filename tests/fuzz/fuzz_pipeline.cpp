@@ -3,7 +3,7 @@
 //   reader -> ew::toJointTrial -> ew::prepareWalkingTrial -> ew::fitFourierMeasured
 //   (-> ew::completeWalkingTrial with the default model when joints are missing)
 //   -> ew::measureGait from the file's events and from the kinematics (`eigenwalker-cli gait`)
-// The first input byte picks the format (value % 5: C3D, BVH, ASF+AMC, TRC, CSV); the rest
+// The first input byte picks the format (value % 5: C3D, BVH, ASF+AMC, TRC, CSV: the 15-joint CSV or a Vicon Nexus export); the rest
 // is the file (for ASF+AMC: skeleton, a line "%%AMC%%", motion). The fit gets the stride
 // frequency of the gait cycles as its ω hint, as a trial becomes a walker in
 // core/engine/walker_set.cpp. A typed ew::Error at any stage is the correct outcome;
@@ -24,6 +24,7 @@
 #include "core/io/bvh_reader.h"
 #include "core/io/c3d_reader.h"
 #include "core/io/joint_csv.h"
+#include "core/io/load_trial.h"
 #include "core/io/trc_reader.h"
 #include "core/mapping/joint_mapping.h"
 #include "tests/fuzz/fuzz_common.h"
@@ -44,7 +45,7 @@ ew::RawTrial parseAs(std::uint8_t selector, const std::uint8_t* data, std::size_
     case 3:
       return ew::parseTrc(text, "fuzz.trc");
     default:
-      return ew::parseJointCsv(text, "fuzz.csv");
+      return ew::parseCsvTrial(text, "fuzz.csv");
   }
 }
 

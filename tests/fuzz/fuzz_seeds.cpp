@@ -47,6 +47,7 @@
 #include "core/keypoints/keypoint_layout.h"
 #include "core/keypoints/openpose_writer.h"
 #include "core/synth/population.h"
+#include "tests/common/nexus_text.h"
 #include "tests/fuzz/fuzz_common.h"
 
 #ifndef EW_SHARED_DATA_DIR
@@ -194,6 +195,18 @@ std::string trcText(const std::vector<std::string>& labels, const MatrixXd& fram
     out << "\n";
   }
   return out.str();
+}
+
+// The same markers as Vicon Nexus exports them (tests/common/nexus_text.h): with a force-plate
+// section before them, or tab-separated with velocity columns beside the positions.
+std::string nexusSeed(const MatrixXd& markersMm, double rateHz, bool tabsAndVelocities) {
+  ew::RawTrial t;
+  t.labels = pigLabels();
+  t.positionsMm = markersMm;
+  t.rateHz = rateHz;
+  ew::test::NexusLayout layout;
+  if (tabsAndVelocities) layout = {'\t', true, false, "Seed"};
+  return ew::test::nexusText(t, layout);
 }
 
 // [SECTION] C3D bytes (a minimal writer of our own, for seeds only)
@@ -446,6 +459,7 @@ void syntheticSeeds(SeedWriter& out, const fs::path& tmp) {
 
     const MatrixXd markers = markerFrames(w.trial.positionsMm);
     out.writeBoth("trc", Format::Trc, stem + "_pig.trc", trcText(pigLabels(), markers, rate, "mm"));
+    out.writeBoth("joint_csv", Format::Csv, stem + "_pig_nexus.csv", nexusSeed(markers, rate, i == 0));
     C3dBuilder intel(C3dBuilder::Processor::Intel);
     out.writeBoth("c3d", Format::C3d, stem + "_pig_intel_real.c3d",
                   intel.build(pigLabels(), markers, rate, true));

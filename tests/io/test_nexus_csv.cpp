@@ -1,0 +1,133 @@
+// Vicon Nexus's CSV export (core/io/nexus_csv.h): a C3D's markers written the way Nexus
+// exports them read back as the C3D reads, through to the same 15 joints; tabs, velocity
+// columns beside the positions, gaps; and every malformed case named with the file and line.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "core/common/errors.h"
+#include "core/io/load_trial.h"
+#include "core/io/nexus_csv.h"
+#include "tests/common/error_matchers.h"
+#include "tests/common/nexus_text.h"
+#include "tests/common/test_support.h"
+
+namespace ew {
+namespace {
+
+namespace fs = std::filesystem;
+using test::NexusLayout;
+using test::nexusText;
+
+RawTrial threeMarkers() {
+  RawTrial t;
+  t.rateHz = 100.0;
+  t.firstFrame = 7;
+  t.labels = {"LASI", "RASI", "LHEE"};
+  t.positionsMm = Eigen::MatrixXd(4, 9);
+  for (Eigen::Index r = 0; r < 4; ++r)
+    for (Eigen::Index c = 0; c < 9; ++c) t.positionsMm(r, c) = 100.0 * static_cast<double>(c) + 0.25 * static_cast<double>(r);
+  t.positionsMm.block<1, 3>(2, 3).setConstant(std::nan(""));  // RASI gone on the third frame
+  return t;
+}
+
+void expectSameMarkers(const RawTrial& read, const RawTrial& written, const std::string& subject,
+                       double tolerance) {
+  ASSERT_EQ(read.labels.size(), written.labels.size());
+  for (size_t m = 0; m < read.labels.size(); ++m) EXPECT_EQ(read.labels[m], subject + ":" + written.labels[m]);
+  ASSERT_EQ(read.positionsMm.rows(), written.positionsMm.rows());
+  for (Eigen::Index r = 0; r < read.positionsMm.rows(); ++r)
+    for (Eigen::Index c = 0; c < read.positionsMm.cols(); ++c) {
+      const double a = read.positionsMm(r, c), b = written.positionsMm(r, c);
+      if (std::isnan(b)) {
+        EXPECT_TRUE(std::isnan(a)) << r << ", " << c;
+      } else {
+        EXPECT_NEAR(a, b, tolerance) << r << ", " << c;
+      }
+    }
+  EXPECT_DOUBLE_EQ(read.rateHz, written.rateHz);
+  EXPECT_EQ(read.firstFrame, written.firstFrame);
+}
+
+TEST(NexusCsv, CommasTabsAndVelocityColumnsReadAlike) {
+  const RawTrial t = threeMarkers();
+  for (const NexusLayout& layout : {NexusLayout{}, NexusLayout{'\t', false, true, "Subject01"},
+                                    NexusLayout{',', true, false, "Jane Doe"}}) {
+    const std::string text = nexusText(t, layout);
+    ASSERT_TRUE(looksLikeNexusCsv(text));
+    const RawTrial read = parseNexusCsv(text, "walk.csv");
+    EXPECT_EQ(read.format, "Nexus CSV");
+    EXPECT_EQ(read.units, "mm");
+    expectSameMarkers(read, t, layout.subject, 1e-9);
+  }
+  EXPECT_FALSE(looksLikeNexusCsv("frame,time_s,head_x\n"));
+  EXPECT_FALSE(looksLikeNexusCsv("file,subject\n"));
+}
+
+TEST(NexusCsv, TheUserUnitAndRateWin) {
+  const RawTrial t = threeMarkers();
+  LoadOptions o;
+  o.unitsOverride = "m";
+  o.rateHzOverride = 50.0;
+  const RawTrial read = parseNexusCsv(nexusText(t, {}), "walk.csv", o);
+  EXPECT_DOUBLE_EQ(read.rateHz, 50.0);
+  EXPECT_DOUBLE_EQ(read.positionsMm(1, 4), 1000.0 * t.positionsMm(1, 4));
+}
+
+// Each way a file can be wrong: the error names the file and, where there is one, the line.
+TEST(NexusCsv, MalformedExportsNameTheFileAndTheLine) {
+  const std::string good = nexusText(threeMarkers(), NexusLayout{',', false, false, "S"});
+  const auto replaced = [&](const std::string& from, const std::string& to) {
+    std::string s = good;
+    const size_t at = s.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return s.replace(at, from.size(), to);
+  };
+  const auto fails = [](const std::string& text, ErrorKind kind, std::initializer_list<std::string_view> parts) {
+    return test::throwsError([&] { parseNexusCsv(text, "lab.csv"); }, kind, parts);
+  };
+  EXPECT_TRUE(fails("Devices\n1000\n,,Force\nFrame,Sub Frame,Fx\n,,N\n1,0,1\n", ErrorKind::BadData,
+                    {"lab.csv", "without a Trajectories section"}));
+  EXPECT_TRUE(fails("Trajectories\n100\n,,S:LASI\n", ErrorKind::Malformed, {"lab.csv", "ends inside"}));
+  EXPECT_TRUE(fails(replaced("Trajectories\n100", "Trajectories\nfast"), ErrorKind::Malformed,
+                    {"lab.csv", "line 2", "rate"}));
+  EXPECT_TRUE(fails(replaced("Trajectories\n100", "Trajectories\n1e300"), ErrorKind::Malformed, {"lab.csv"}));
+  EXPECT_TRUE(fails(replaced("Frame,Sub Frame", "Time,Sub Frame"), ErrorKind::Malformed,
+                    {"lab.csv", "line 4", "Frame,Sub Frame"}));
+  EXPECT_TRUE(fails(replaced(",Y,Z,X,Y,Z,X", ",Y,Q,X,Y,Z,X"), ErrorKind::Malformed, {"lab.csv", "S:LASI", "no Z"}));
+  EXPECT_TRUE(fails(replaced("S:RASI", "S:LASI"), ErrorKind::Malformed, {"lab.csv", "named twice"}));
+  EXPECT_TRUE(fails(replaced(",mm,mm,mm,mm", ",m,m,m,mm"), ErrorKind::Malformed, {"lab.csv", "--units"}));
+  EXPECT_TRUE(fails(replaced("\n8,0,", "\n9,0,"), ErrorKind::Malformed,
+                    {"lab.csv", "line 7", "frame 9 after frame 7"}));
+  EXPECT_TRUE(fails(replaced("\n8,0,", "\n8.5,0,"), ErrorKind::Malformed, {"lab.csv", "line 7", "whole number"}));
+  EXPECT_TRUE(fails(replaced("\n8,0,", "\n8,0,abc"), ErrorKind::Malformed, {"lab.csv", "line 7", "not a number"}));
+  EXPECT_TRUE(fails(replaced("\n8,0,", "\n8,0,1,2,3,4,5,6,7,8,9,10,"), ErrorKind::Malformed,
+                    {"lab.csv", "line 7", "fields"}));
+  EXPECT_TRUE(fails("Trajectories\n100\n,,\nFrame,Sub Frame\n,,\n1,0\n", ErrorKind::BadData, {"lab.csv", "no marker"}));
+  EXPECT_TRUE(fails("Trajectories\n100\n,,S:A\nFrame,Sub Frame,X,Y,Z\n,,mm,mm,mm\n\n", ErrorKind::BadData,
+                    {"lab.csv", "no frames"}));
+}
+
+// A Schreiber-Moissenet trial's 52 markers exported from its C3D the way Nexus writes them:
+// the same markers, and through the marker-set tables the same 15 joints as the C3D gives.
+TEST(NexusCsv, ASharedC3dExportedAsNexusCsvGivesTheSameJoints) {
+  EW_REQUIRE_SHARED_DATA();
+  const fs::path c3d = test::sharedDataDir() / "schreiber-moissenet-2019/2014001/2014001_C4_05.c3d";
+  const RawTrial fromC3d = readRawTrial(c3d);
+  const fs::path csv = test::makeTempDir("nexus_csv") / "2014001_C4_05.csv";
+  std::ofstream(csv) << nexusText(fromC3d, {});
+  const RawTrial fromCsv = readRawTrial(csv);
+  EXPECT_EQ(fromCsv.format, "Nexus CSV");
+  expectSameMarkers(fromCsv, fromC3d, "Subject01", 1e-6 * 2000.0);  // ten digits of mm
+  const JointTrial a = mapRawTrial(fromC3d, {}), b = mapRawTrial(fromCsv, {});
+  EXPECT_EQ(a.source, b.source);
+  ASSERT_EQ(a.positionsMm.rows(), b.positionsMm.rows());
+  EXPECT_EQ(a.positionsMm.array().isNaN().count(), b.positionsMm.array().isNaN().count());
+  const Eigen::ArrayXXd apart = (a.positionsMm - b.positionsMm).array().abs();
+  EXPECT_LT(apart.isNaN().select(0.0, apart).maxCoeff(), 1e-3);
+}
+
+}  // namespace
+}  // namespace ew
