@@ -33,7 +33,8 @@ bool namesSection(std::string_view line) {
   return std::find(kSectionNames.begin(), kSectionNames.end(), first) != kSectionNames.end();
 }
 
-// A row that ends a section: nothing but delimiters and blanks.
+// A row that ends a section: nothing but delimiters and blanks (the next section's name ends
+// it too, should the blank line be missing).
 bool blankRow(std::string_view line) {
   return line.find_first_not_of(",\t \r") == std::string_view::npos;
 }
@@ -143,7 +144,7 @@ RawTrial parseNexusCsv(std::string_view text, const std::string& name, const Loa
   for (const auto& m : markers) raw.labels.push_back(m.label);
 
   size_t end = at + 5;
-  while (end < lines.size() && !blankRow(lines[end].text)) ++end;
+  while (end < lines.size() && !blankRow(lines[end].text) && !namesSection(lines[end].text)) ++end;
   const auto frames = static_cast<Eigen::Index>(end - (at + 5));
   if (frames == 0) throwBadData(name, linePosition(componentsLine.number), "the Trajectories section has no frames");
   checkPointFrames(static_cast<double>(frames), static_cast<double>(markers.size()), kMaxPointFrames, name,

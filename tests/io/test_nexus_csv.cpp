@@ -62,6 +62,11 @@ TEST(NexusCsv, CommasTabsAndVelocityColumnsReadAlike) {
     EXPECT_EQ(read.units, "mm");
     expectSameMarkers(read, t, layout.subject, 1e-9);
   }
+  // A section straight after the markers, without the blank line, ends them too.
+  std::string followed = nexusText(t, {});
+  followed.pop_back();
+  followed += "Model Outputs\n100\n,,Subject01:LAnkleAngles\nFrame,Sub Frame,X,Y,Z\n,,deg,deg,deg\n7,0,1,2,3\n";
+  expectSameMarkers(parseNexusCsv(followed, "walk.csv"), t, "Subject01", 1e-9);
   EXPECT_FALSE(looksLikeNexusCsv("frame,time_s,head_x\n"));
   EXPECT_FALSE(looksLikeNexusCsv("file,subject\n"));
 }
