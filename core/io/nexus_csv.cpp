@@ -15,8 +15,8 @@ namespace ew {
 namespace {
 
 // The sections Nexus writes (its "Export ASCII" options), any of which may come first.
-constexpr std::array<std::string_view, 5> kSectionNames = {"trajectories", "devices", "model outputs",
-                                                           "joints", "segments"};
+constexpr std::array<std::string_view, 6> kSectionNames = {"trajectories", "devices", "model outputs",
+                                                           "joints",       "segments", "events"};
 
 std::string_view withoutBom(std::string_view s) {
   return s.rfind("\xEF\xBB\xBF", 0) == 0 ? s.substr(3) : s;
@@ -142,6 +142,9 @@ RawTrial parseNexusCsv(std::string_view text, const std::string& name, const Loa
   raw.units = markerUnit(markers, lines[at + 4], options, name);
   const double scale = unitToMm(raw.units, name);
   for (const auto& m : markers) raw.labels.push_back(m.label);
+  if (std::any_of(lines.begin(), lines.end(), [](const TextLine& l) { return firstField(l.text) == "events"; }))
+    raw.warnings.push_back("the export's Events section is not read: the gait events come from the "
+                           "kinematics (the trial's C3D carries the lab's events)");
 
   size_t end = at + 5;
   while (end < lines.size() && !blankRow(lines[end].text) && !namesSection(lines[end].text)) ++end;

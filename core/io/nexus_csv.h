@@ -22,7 +22,7 @@
 namespace ew {
 
 // True when the text's first non-blank line names a Nexus section (Trajectories, Devices,
-// Model Outputs, Joints, Segments). The Trajectories section may come after megabytes of
+// Model Outputs, Joints, Segments, Events). The Trajectories section may come after megabytes of
 // force-plate samples, so it is looked for when the file is read, not here.
 bool looksLikeNexusCsv(std::string_view text);
 

@@ -67,6 +67,14 @@ TEST(NexusCsv, CommasTabsAndVelocityColumnsReadAlike) {
   followed.pop_back();
   followed += "Model Outputs\n100\n,,Subject01:LAnkleAngles\nFrame,Sub Frame,X,Y,Z\n,,deg,deg,deg\n7,0,1,2,3\n";
   expectSameMarkers(parseNexusCsv(followed, "walk.csv"), t, "Subject01", 1e-9);
+  // An export that opens with its events: the markers read, the events said to be left out.
+  const std::string withEvents = "Events\nSubject,Context,Name,Time (s),Description\n"
+                                 "Subject01,Left,Foot Strike,0.07,\n\n" + nexusText(t, {});
+  ASSERT_TRUE(looksLikeNexusCsv(withEvents));
+  const RawTrial eventsFirst = parseNexusCsv(withEvents, "walk.csv");
+  expectSameMarkers(eventsFirst, t, "Subject01", 1e-9);
+  ASSERT_EQ(eventsFirst.warnings.size(), 1u);
+  EXPECT_NE(eventsFirst.warnings[0].find("Events section is not read"), std::string::npos);
   EXPECT_FALSE(looksLikeNexusCsv("frame,time_s,head_x\n"));
   EXPECT_FALSE(looksLikeNexusCsv("file,subject\n"));
 }
