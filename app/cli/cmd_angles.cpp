@@ -63,7 +63,7 @@ void addAnglesCommand(CLI::App& app, int& exitCode) {
   auto* cmd = app.add_subcommand("angles",
                                  "Write a 3D trial's joint angles (hip, knee, shoulder, elbow, pelvis, trunk, neck; "
                                  "degrees) as CSV or OpenSim .mot, every frame, any motion");
-  cmd->add_option("file", args->file, "3D trial (.c3d .bvh .amc .trc .csv, e.g. a reconstruction's CSV)")
+  cmd->add_option("file", args->file, "3D trial (.c3d .bvh .amc .trc .csv .tsv, e.g. a reconstruction's CSV)")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("--out", args->out, "Output .mot (OpenSim) or .csv (written atomically)")->required();

@@ -218,7 +218,7 @@ void addGaitCommand(CLI::App& app, int& exitCode) {
       "gait", "Gait measures of 3D trials: cadence, stride and step length, step width, speed, stance, "
               "swing and double support, and hip/knee/shoulder/elbow flexion over the gait cycle. Exit 1 if "
               "any trial cannot be measured.");
-  cmd->add_option("paths", args->paths, "3D trials (.c3d .bvh .amc .trc .csv), folders or manifest CSVs")->required();
+  cmd->add_option("paths", args->paths, "3D trials (.c3d .bvh .amc .trc .csv .tsv), folders or manifest CSVs")->required();
   cmd->add_option("--events", args->events,
                   "Foot strikes and offs from: auto (the file's events when it has them, else the kinematics), "
                   "kinematics, file, both (one row each, and their differences on stderr)")

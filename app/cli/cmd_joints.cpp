@@ -79,7 +79,7 @@ void addJointsCommand(CLI::App& app, int& exitCode) {
   auto* cmd = app.add_subcommand("joints",
                                  "Write one trial's normalised 15-joint trajectories "
                                  "(steady window, canonical frame, mm) as CSV");
-  cmd->add_option("file", args->file, "Motion-capture file (.c3d .bvh .amc .trc .csv)")->required();
+  cmd->add_option("file", args->file, "Motion-capture file (.c3d .bvh .amc .trc .csv .tsv)")->required();
   cmd->add_option("--out", args->out, "Output: the 15-joint CSV, or a TRC (OpenSim's axes) when it ends in .trc; written atomically")->required();
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");

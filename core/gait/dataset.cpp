@@ -28,7 +28,7 @@ TrialInfo infoFromFileName(const fs::path& file) {
 }
 
 bool isTrialFile(const fs::path& p) {
-  static const std::set<std::string> kExtensions = {".c3d", ".bvh", ".amc", ".trc", ".csv"};
+  static const std::set<std::string> kExtensions = {".c3d", ".bvh", ".amc", ".trc", ".csv", ".tsv"};
   return kExtensions.count(toLower(p.extension().string())) > 0;
 }
 
@@ -97,7 +97,7 @@ std::vector<PendingTrial> folderTrials(const fs::path& folder, std::vector<std::
     if (static_cast<long>(files.size()) > limits.trialFiles)
       throw Error(ErrorKind::BadArgument, folder.string(), "",
                   "more than " + std::to_string(limits.trialFiles) +
-                      " trial files (.c3d, .bvh, .amc, .trc, .csv) under it: open the folder that holds the trials");
+                      " trial files (.c3d, .bvh, .amc, .trc, .csv, .tsv) under it: open the folder that holds the trials");
   }
   if (ec) warnings.push_back(folder.string() + ": " + ec.message());
   std::sort(files.begin(), files.end());

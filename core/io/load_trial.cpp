@@ -10,6 +10,7 @@
 #include "core/io/file_bytes.h"
 #include "core/io/joint_csv.h"
 #include "core/io/nexus_csv.h"
+#include "core/io/qtm_tsv.h"
 #include "core/io/text_table.h"
 #include "core/io/trc_reader.h"
 #include "core/mapping/joint_mapping.h"
@@ -24,12 +25,13 @@ FileFormat formatFromExtension(const std::filesystem::path& file) {
   if (ext == ".amc") return FileFormat::AsfAmc;
   if (ext == ".trc") return FileFormat::Trc;
   if (ext == ".csv") return FileFormat::Csv;
+  if (ext == ".tsv") return FileFormat::Tsv;
   if (ext == ".asf") {
     throw Error(ErrorKind::Unsupported, file.string(), "",
                 "an .asf file is a skeleton only: open the .amc motion file beside it");
   }
   throw Error(ErrorKind::Unsupported, file.string(), "",
-              "unknown file type '" + ext + "' (expected .c3d, .bvh, .amc, .trc or .csv)");
+              "unknown file type '" + ext + "' (expected .c3d, .bvh, .amc, .trc, .csv or .tsv)");
 }
 
 std::string formatName(FileFormat format) {
@@ -39,6 +41,7 @@ std::string formatName(FileFormat format) {
     case FileFormat::AsfAmc: return "ASF/AMC";
     case FileFormat::Trc: return "TRC";
     case FileFormat::Csv: return "CSV";
+    case FileFormat::Tsv: return "QTM TSV";
   }
   return "unknown";
 }
@@ -62,6 +65,7 @@ RawTrial readRawTrial(const std::filesystem::path& file, const LoadOptions& opti
     case FileFormat::AsfAmc: return readAsfAmc(file, options);
     case FileFormat::Trc: return readTrc(file, options);
     case FileFormat::Csv: return parseCsvTrial(readFileText(file), file.string(), options);
+    case FileFormat::Tsv: return readQtmTsv(file, options);
   }
   throw Error(ErrorKind::Unsupported, file.string(), "", "unknown format");
 }

@@ -21,9 +21,9 @@ struct LoadOptions {
   std::optional<std::filesystem::path> mappingFile;
 };
 
-enum class FileFormat { C3d, Bvh, AsfAmc, Trc, Csv };
+enum class FileFormat { C3d, Bvh, AsfAmc, Trc, Csv, Tsv };
 
-// Format from the extension (.c3d .bvh .amc .asf .trc .csv, case-insensitive).
+// Format from the extension (.c3d .bvh .amc .asf .trc .csv .tsv, case-insensitive).
 // Throws Error(Unsupported) naming the file for anything else.
 FileFormat formatFromExtension(const std::filesystem::path& file);
 std::string formatName(FileFormat format);

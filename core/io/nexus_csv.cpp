@@ -18,10 +18,6 @@ namespace {
 constexpr std::array<std::string_view, 6> kSectionNames = {"trajectories", "devices", "model outputs",
                                                            "joints",       "segments", "events"};
 
-std::string_view withoutBom(std::string_view s) {
-  return s.rfind("\xEF\xBB\xBF", 0) == 0 ? s.substr(3) : s;
-}
-
 // The first field of a line, whatever the delimiter.
 std::string firstField(std::string_view line) {
   const size_t end = line.find_first_of(",\t");
@@ -161,15 +157,9 @@ RawTrial parseNexusCsv(std::string_view text, const std::string& name, const Loa
     if (fields.size() > columns)
       throwMalformed(name, linePosition(line.number),
                      std::to_string(fields.size()) + " fields, the header has " + std::to_string(columns));
-    double frame = 0;
-    if (!parseFinite(fields[0], frame) || frame != std::floor(frame) || std::abs(frame) > 1e9)
-      throwMalformed(name, linePosition(line.number, 1), "frame number " + shownWord(fields[0]) + " is not a whole number");
-    if (previous && static_cast<long>(frame) != *previous + 1)
-      throwMalformed(name, linePosition(line.number, 1),
-                     "frame " + std::to_string(static_cast<long>(frame)) + " after frame " +
-                         std::to_string(*previous) + ": the rows must be consecutive frames");
-    if (!previous) raw.firstFrame = static_cast<long>(frame);
-    previous = static_cast<long>(frame);
+    const long frame = consecutiveFrameNumber(fields[0], previous ? &*previous : nullptr, name, line.number);
+    if (!previous) raw.firstFrame = frame;
+    previous = frame;
     for (size_t m = 0; m < markers.size(); ++m) {
       Eigen::Vector3d p;
       for (size_t axis = 0; axis < 3; ++axis) {

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/common/errors.h"
+
 namespace ew {
 
 std::vector<TextLine> splitLines(std::string_view text) {
@@ -120,6 +122,22 @@ std::string linePosition(int line, int column) {
   std::string s = "line " + std::to_string(line);
   if (column > 0) s += ", column " + std::to_string(column);
   return s;
+}
+
+std::string_view withoutBom(std::string_view s) {
+  return s.rfind("\xEF\xBB\xBF", 0) == 0 ? s.substr(3) : s;
+}
+
+long consecutiveFrameNumber(std::string_view field, const long* previous, const std::string& file, int line) {
+  double frame = 0;
+  if (!parseFinite(field, frame) || frame != std::floor(frame) || std::abs(frame) > 1e9)
+    throwMalformed(file, linePosition(line, 1), "frame number " + shownWord(field) + " is not a whole number");
+  const auto number = static_cast<long>(frame);
+  if (previous && number != *previous + 1)
+    throwMalformed(file, linePosition(line, 1),
+                   "frame " + std::to_string(number) + " after frame " + std::to_string(*previous) +
+                       ": the rows must be consecutive frames");
+  return number;
 }
 
 }  // namespace ew

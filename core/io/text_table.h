@@ -34,6 +34,9 @@ std::string shownWord(std::string_view s);
 bool parseFinite(std::string_view s, double& out);
 
 std::string_view trim(std::string_view s);
+
+// The text without a UTF-8 byte order mark at its start (a spreadsheet's or Windows tool's).
+std::string_view withoutBom(std::string_view s);
 std::string toLower(std::string_view s);
 
 // Parses a finite or NaN double; an empty field is NaN when allowEmpty. Returns false on
@@ -42,5 +45,9 @@ bool parseDouble(std::string_view field, double& out, bool allowEmpty);
 
 // "line 12, column 3"
 std::string linePosition(int line, int column = 0);
+
+// A row's frame number (the first column of Nexus's and QTM's exports): a whole number, one
+// more than the row before's when there is one. Throws Error(Malformed) naming the file and line.
+long consecutiveFrameNumber(std::string_view field, const long* previous, const std::string& file, int line);
 
 }  // namespace ew

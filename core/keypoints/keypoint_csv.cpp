@@ -23,18 +23,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::string_view kUtf8Bom = "\xEF\xBB\xBF";
-
 // [SECTION] Shared ---------------------------------------------------------------------------
 
 bool isBlankOrComment(std::string_view line) {
   line = trim(line);
   return line.empty() || line.front() == '#';
-}
-
-// Spreadsheet programs save CSV with a byte-order mark; it is not part of the first name.
-std::string_view withoutBom(std::string_view text) {
-  return text.starts_with(kUtf8Bom) ? text.substr(kUtf8Bom.size()) : text;
 }
 
 // The lines after the header rows that carry data (blank and '#' lines skipped).

@@ -48,6 +48,7 @@
 #include "core/keypoints/openpose_writer.h"
 #include "core/synth/population.h"
 #include "tests/common/nexus_text.h"
+#include "tests/common/qtm_text.h"
 #include "tests/fuzz/fuzz_common.h"
 
 #ifndef EW_SHARED_DATA_DIR
@@ -207,6 +208,16 @@ std::string nexusSeed(const MatrixXd& markersMm, double rateHz, bool tabsAndVelo
   ew::test::NexusLayout layout;
   if (tabsAndVelocities) layout = {'\t', true, false, "Seed"};
   return ew::test::nexusText(t, layout);
+}
+
+// The same markers as Qualisys Track Manager exports them (tests/common/qtm_text.h): with the
+// frame and time columns and their header row, or bare coordinates with gaps as zeros.
+std::string qtmSeed(const MatrixXd& markersMm, double rateHz, bool bareWithZeros) {
+  ew::RawTrial t;
+  t.labels = pigLabels();
+  t.positionsMm = markersMm;
+  t.rateHz = rateHz;
+  return ew::test::qtmText(t, bareWithZeros ? ew::test::QtmLayout{false, false, true, true} : ew::test::QtmLayout{});
 }
 
 // [SECTION] C3D bytes (a minimal writer of our own, for seeds only)
@@ -460,6 +471,7 @@ void syntheticSeeds(SeedWriter& out, const fs::path& tmp) {
     const MatrixXd markers = markerFrames(w.trial.positionsMm);
     out.writeBoth("trc", Format::Trc, stem + "_pig.trc", trcText(pigLabels(), markers, rate, "mm"));
     out.writeBoth("joint_csv", Format::Csv, stem + "_pig_nexus.csv", nexusSeed(markers, rate, i == 0));
+    out.write("qtm_tsv", stem + "_pig.tsv", qtmSeed(markers, rate, i == 0));
     C3dBuilder intel(C3dBuilder::Processor::Intel);
     out.writeBoth("c3d", Format::C3d, stem + "_pig_intel_real.c3d",
                   intel.build(pigLabels(), markers, rate, true));
@@ -708,8 +720,8 @@ int main(int argc, char** argv) {
     const fs::path root = argv[1];
     SeedWriter out(root);
     for (const char* h :
-         {"c3d", "bvh", "asf_amc", "trc", "joint_csv", "model_file", "mapping_file", "pipeline", "keypoints",
-          "calibration"})
+         {"c3d", "bvh", "asf_amc", "trc", "qtm_tsv", "joint_csv", "model_file", "mapping_file", "pipeline",
+          "keypoints", "calibration"})
       out.reset(h);
     const fs::path tmp = root / ".tmp";
     fs::create_directories(tmp);

@@ -24,7 +24,7 @@ build=$(cd "$1" && pwd)
 seconds=$2
 shift 2
 harnesses=("$@")
-[[ ${#harnesses[@]} -gt 0 ]] || harnesses=(c3d bvh asf_amc trc joint_csv model_file mapping_file pipeline keypoints calibration)
+[[ ${#harnesses[@]} -gt 0 ]] || harnesses=(c3d bvh asf_amc trc qtm_tsv joint_csv model_file mapping_file pipeline keypoints calibration)
 src=$(cd "$(dirname "$0")" && pwd)
 jobs=${FUZZ_JOBS:-2}
 rss=${FUZZ_RSS_MB:-1024}

@@ -11,6 +11,7 @@
 #include "core/io/load_trial.h"
 #include "core/io/nexus_csv.h"
 #include "tests/common/error_matchers.h"
+#include "tests/common/marker_trials.h"
 #include "tests/common/nexus_text.h"
 #include "tests/common/test_support.h"
 
@@ -21,33 +22,11 @@ namespace fs = std::filesystem;
 using test::NexusLayout;
 using test::nexusText;
 
-RawTrial threeMarkers() {
-  RawTrial t;
-  t.rateHz = 100.0;
-  t.firstFrame = 7;
-  t.labels = {"LASI", "RASI", "LHEE"};
-  t.positionsMm = Eigen::MatrixXd(4, 9);
-  for (Eigen::Index r = 0; r < 4; ++r)
-    for (Eigen::Index c = 0; c < 9; ++c) t.positionsMm(r, c) = 100.0 * static_cast<double>(c) + 0.25 * static_cast<double>(r);
-  t.positionsMm.block<1, 3>(2, 3).setConstant(std::nan(""));  // RASI gone on the third frame
-  return t;
-}
+RawTrial threeMarkers() { return test::threeMarkerTrial(100.0, 7); }
 
-void expectSameMarkers(const RawTrial& read, const RawTrial& written, const std::string& subject,
-                       double tolerance) {
-  ASSERT_EQ(read.labels.size(), written.labels.size());
-  for (size_t m = 0; m < read.labels.size(); ++m) EXPECT_EQ(read.labels[m], subject + ":" + written.labels[m]);
-  ASSERT_EQ(read.positionsMm.rows(), written.positionsMm.rows());
-  for (Eigen::Index r = 0; r < read.positionsMm.rows(); ++r)
-    for (Eigen::Index c = 0; c < read.positionsMm.cols(); ++c) {
-      const double a = read.positionsMm(r, c), b = written.positionsMm(r, c);
-      if (std::isnan(b)) {
-        EXPECT_TRUE(std::isnan(a)) << r << ", " << c;
-      } else {
-        EXPECT_NEAR(a, b, tolerance) << r << ", " << c;
-      }
-    }
-  EXPECT_DOUBLE_EQ(read.rateHz, written.rateHz);
+// The markers written, each label after the subject's name as Nexus writes it.
+void expectSameMarkers(const RawTrial& read, const RawTrial& written, const std::string& subject, double tolerance) {
+  test::expectSameMarkers(read, written, tolerance, subject + ":");
   EXPECT_EQ(read.firstFrame, written.firstFrame);
 }
 
@@ -93,10 +72,7 @@ TEST(NexusCsv, TheUserUnitAndRateWin) {
 TEST(NexusCsv, MalformedExportsNameTheFileAndTheLine) {
   const std::string good = nexusText(threeMarkers(), NexusLayout{',', false, false, "S"});
   const auto replaced = [&](const std::string& from, const std::string& to) {
-    std::string s = good;
-    const size_t at = s.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    return s.replace(at, from.size(), to);
+    return test::replacedOnce(good, from, to);
   };
   const auto fails = [](const std::string& text, ErrorKind kind, std::initializer_list<std::string_view> parts) {
     return test::throwsError([&] { parseNexusCsv(text, "lab.csv"); }, kind, parts);
@@ -134,12 +110,7 @@ TEST(NexusCsv, ASharedC3dExportedAsNexusCsvGivesTheSameJoints) {
   const RawTrial fromCsv = readRawTrial(csv);
   EXPECT_EQ(fromCsv.format, "Nexus CSV");
   expectSameMarkers(fromCsv, fromC3d, "Subject01", 1e-6 * 2000.0);  // ten digits of mm
-  const JointTrial a = mapRawTrial(fromC3d, {}), b = mapRawTrial(fromCsv, {});
-  EXPECT_EQ(a.source, b.source);
-  ASSERT_EQ(a.positionsMm.rows(), b.positionsMm.rows());
-  EXPECT_EQ(a.positionsMm.array().isNaN().count(), b.positionsMm.array().isNaN().count());
-  const Eigen::ArrayXXd apart = (a.positionsMm - b.positionsMm).array().abs();
-  EXPECT_LT(apart.isNaN().select(0.0, apart).maxCoeff(), 1e-3);
+  test::expectSameJoints(mapRawTrial(fromC3d, {}), mapRawTrial(fromCsv, {}));
 }
 
 }  // namespace

@@ -1111,7 +1111,7 @@ void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
     } else if (!std::filesystem::is_directory(p, ec) && !isSupportedDataFile(p) &&
                !isModelFile(p) && !isKeypointClip(p) && !isVideoFile(p) && !isKeyframeFile(p)) {
       request.refused.push_back(p.string() +
-                                ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv), a "
+                                ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv .tsv), a "
                                 "pose estimator's keypoints (.json, MediaPipe / DeepLabCut .csv), a "
                                 "video (.mp4 .avi .mov .mkv .webm .m4v .mpg), a keyframe file, a "
                                 "model (.ewm) or a folder");

@@ -119,7 +119,7 @@ void exportGaitReport(AppState& s, const std::filesystem::path& path);
 
 // [SECTION] Opening data
 // Files or folders dropped on the window (or the script action "drop"): the items that exist
-// and are a folder or a supported file (.c3d .bvh .asf .amc .trc .csv) are opened, the others
+// and are a folder or a supported file (.c3d .bvh .asf .amc .trc .csv .tsv) are opened, the others
 // skipped with a warning; throws std::invalid_argument (and opens nothing) when none is.
 void drop(AppState& s, const std::vector<std::filesystem::path>& paths);
 // Unit ("" = the file's; mm, cm, m, in, cmu) and frame rate (0 = the file's) for one file;

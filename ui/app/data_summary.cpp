@@ -40,7 +40,7 @@ void writeDataSummaryJson(const DataSummary& summary, const std::filesystem::pat
 bool isSupportedDataFile(const std::filesystem::path& file) {
   std::string ext = file.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".c3d" || ext == ".bvh" || ext == ".asf" || ext == ".amc" || ext == ".trc" || ext == ".csv";
+  return ext == ".c3d" || ext == ".bvh" || ext == ".asf" || ext == ".amc" || ext == ".trc" || ext == ".csv" || ext == ".tsv";
 }
 
 }  // namespace ew::ui

@@ -25,7 +25,7 @@ DataSummary summarizeData(const std::vector<std::filesystem::path>& paths, const
 // The table as JSON (the fields of `eigenwalker-cli info --json`), written atomically.
 void writeDataSummaryJson(const DataSummary& summary, const std::filesystem::path& file);
 
-// Files and folders the viewer can open: .c3d .bvh .asf .amc .trc .csv (case-insensitive).
+// Files and folders the viewer can open: .c3d .bvh .asf .amc .trc .csv .tsv (case-insensitive).
 bool isSupportedDataFile(const std::filesystem::path& file);
 
 }  // namespace ew::ui

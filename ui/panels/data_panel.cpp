@@ -19,7 +19,7 @@ namespace ew::ui {
 namespace {
 
 constexpr const char* kUnits[] = {"file's", "mm", "cm", "m", "in", "cmu"};
-constexpr const char* kFormatNames[] = {".c3d", ".bvh", ".asf/.amc", ".trc", ".csv", "video", ".json", ".ewm"};
+constexpr const char* kFormatNames[] = {".c3d", ".bvh", ".asf/.amc", ".trc/.tsv", ".csv", "video", ".json", ".ewm"};
 constexpr const char* kOpenTip =
     "Tip: drop files or folders on the window. A manifest CSV opens its trials; a pose estimator's "
     "folder of JSON files opens as a keypoint clip (Open this folder).";
@@ -32,7 +32,7 @@ int browserFormat(const std::string& name) {
   if (ext == ".c3d") return 0;
   if (ext == ".bvh") return 1;
   if (ext == ".asf" || ext == ".amc") return 2;
-  if (ext == ".trc") return 3;
+  if (ext == ".trc" || ext == ".tsv") return 3;  // the two tab-separated marker files
   if (ext == ".csv") return 4;
   if (isVideoFile(name)) return 5;
   if (ext == ".json") return 6;  // a pose estimator's keypoints, a keyframe file

@@ -17,7 +17,7 @@ namespace ew::ui {
 struct AppState;
 struct FrameContext;
 
-// The browser's format toggle that lists a file (.c3d, .bvh, .asf/.amc, .trc, .csv, video,
+// The browser's format toggle that lists a file (.c3d, .bvh, .asf/.amc, .trc/.tsv, .csv, video,
 // .json, .ewm: 0-7), or -1 for a file the viewer does not open.
 int browserFormat(const std::string& fileName);
 
@@ -37,7 +37,7 @@ struct DataPanel {
   std::vector<Entry> entries;
   std::string listError;
   std::map<std::string, bool> selected;  // file name in `folder` → ticked
-  // c3d, bvh, asf/amc, trc, csv, video, json (keypoints, keyframes), ewm (models)
+  // c3d, bvh, asf/amc, trc/tsv, csv, video, json (keypoints, keyframes), ewm (models)
   std::array<bool, 8> formats{true, true, true, true, true, true, true, true};
   std::map<std::string, OverrideEdit> edits;  // by file path, until applied
   std::string status;
