@@ -58,7 +58,12 @@ QtmHeader readQtmHeader(const std::vector<TextLine>& lines, const std::string& n
     if (key == "EVENT") ++h.events;
     if (key == "MARKER_NAMES") {
       h.namesLine = lines[i].number;
-      for (size_t f = 1; f < fields.size(); ++f) h.names.emplace_back(fields[f]);
+      for (size_t f = 1; f < fields.size(); ++f) {
+        if (fields[f].empty() || std::find(h.names.begin(), h.names.end(), fields[f]) != h.names.end())
+          throwMalformed(name, linePosition(h.namesLine, static_cast<int>(f + 1)),
+                         fields[f].empty() ? "a marker without a name" : "marker " + shownWord(fields[f]) + " named twice");
+        h.names.emplace_back(fields[f]);
+      }
     }
   }
   h.dataStart = i;

@@ -1,8 +1,8 @@
 #include "core/tracking/track_confidence.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 namespace ew {

@@ -70,6 +70,8 @@ TEST(QtmTsv, MalformedExportsNameTheFileAndTheLine) {
   EXPECT_TRUE(fails(replaced("DATA_INCLUDED\t3D", "DATA_INCLUDED\t6D"), ErrorKind::BadData, {"lab.tsv", "'6D'", "C3D"}));
   EXPECT_TRUE(fails(replaced("MARKER_NAMES", "MARKERS"), ErrorKind::BadData, {"lab.tsv", "no MARKER_NAMES"}));
   EXPECT_TRUE(fails("a,b,c\n1,2,3\n", ErrorKind::BadData, {"lab.tsv", "no MARKER_NAMES"}));
+  EXPECT_TRUE(fails(replaced("\tRASI\tLHEE", "\tLASI\tLHEE"), ErrorKind::Malformed, {"lab.tsv", "line 10", "named twice"}));
+  EXPECT_TRUE(fails(replaced("\tRASI\tLHEE", "\t\tLHEE"), ErrorKind::Malformed, {"lab.tsv", "line 10", "without a name"}));
   EXPECT_TRUE(fails(replaced("NO_OF_MARKERS\t3", "NO_OF_MARKERS\t4"), ErrorKind::Malformed,
                     {"lab.tsv", "line 10", "NO_OF_MARKERS says 4"}));
   EXPECT_TRUE(fails(replaced("NO_OF_FRAMES\t4", "NO_OF_FRAMES\t5"), ErrorKind::Malformed,
