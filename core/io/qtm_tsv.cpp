@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <optional>
+#include <sstream>
 
 #include "core/common/errors.h"
 #include "core/io/file_bytes.h"
@@ -19,6 +20,15 @@ bool isHeaderKey(std::string_view field) {
          std::all_of(field.begin(), field.end(), [](char c) {
            return std::isupper(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) || c == '_';
          });
+}
+
+// A count a header states, as a message shows it: whole numbers in full, anything else
+// (1e302, 2.5) as it reads; never cast to an integer it does not fit.
+std::string statedCount(double v) {
+  if (std::abs(v) < 1e15 && v == std::floor(v)) return std::to_string(static_cast<long long>(v));
+  std::ostringstream out;
+  out << v;
+  return out.str();
 }
 
 std::vector<std::string_view> qtmFields(std::string_view line) {
@@ -75,7 +85,7 @@ QtmHeader readQtmHeader(const std::vector<TextLine>& lines, const std::string& n
   if (h.markers && *h.markers != static_cast<double>(h.names.size()))
     throwMalformed(name, linePosition(h.namesLine),
                    std::to_string(h.names.size()) + " marker names, NO_OF_MARKERS says " +
-                       std::to_string(static_cast<long>(*h.markers)));
+                       statedCount(*h.markers));
   return h;
 }
 
@@ -137,7 +147,7 @@ RawTrial parseQtmTsv(std::string_view text, const std::string& name, const LoadO
     if (!trim(lines[at].text).empty()) rows.push_back(&lines[at]);
   if (h.frames && *h.frames != static_cast<double>(rows.size()))
     throwMalformed(name, rows.empty() ? linePosition(h.lastLine) : linePosition(rows.back()->number),
-                   "NO_OF_FRAMES says " + std::to_string(static_cast<long>(*h.frames)) + " frames, the file holds " +
+                   "NO_OF_FRAMES says " + statedCount(*h.frames) + " frames, the file holds " +
                        std::to_string(rows.size()) + (static_cast<double>(rows.size()) < *h.frames ? " (cut short?)" : ""));
   if (rows.empty()) throwBadData(name, "", "the header is followed by no frames");
   checkPointFrames(static_cast<double>(rows.size()), static_cast<double>(n), kMaxPointFrames, name, "MARKER_NAMES");

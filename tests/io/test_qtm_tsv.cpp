@@ -76,6 +76,11 @@ TEST(QtmTsv, MalformedExportsNameTheFileAndTheLine) {
                     {"lab.tsv", "line 10", "NO_OF_MARKERS says 4"}));
   EXPECT_TRUE(fails(replaced("NO_OF_FRAMES\t4", "NO_OF_FRAMES\t5"), ErrorKind::Malformed,
                     {"lab.tsv", "NO_OF_FRAMES says 5", "holds 4", "cut short"}));
+  // Counts no integer holds are said as they read (libFuzzer found the cast to long).
+  EXPECT_TRUE(fails(replaced("NO_OF_MARKERS\t3", "NO_OF_MARKERS\t281e300"), ErrorKind::Malformed,
+                    {"lab.tsv", "NO_OF_MARKERS says 2.81e+302"}));
+  EXPECT_TRUE(fails(replaced("NO_OF_FRAMES\t4", "NO_OF_FRAMES\t-1e19"), ErrorKind::Malformed,
+                    {"lab.tsv", "NO_OF_FRAMES says -1e+19"}));
   EXPECT_TRUE(fails(replaced("NO_OF_FRAMES\t4", "NO_OF_FRAMES\tmany"), ErrorKind::Malformed,
                     {"lab.tsv", "line 1", "NO_OF_FRAMES"}));
   EXPECT_TRUE(fails(replaced("FREQUENCY\t120\n", ""), ErrorKind::BadData, {"lab.tsv", "--rate"}));
