@@ -7,7 +7,7 @@
 #include <set>
 
 #include "core/common/errors.h"
-#include "core/io/file_bytes.h"
+#include "core/io/marker_cells.h"
 #include "core/io/reader_limits.h"
 #include "core/io/text_table.h"
 
@@ -160,24 +160,11 @@ RawTrial parseNexusCsv(std::string_view text, const std::string& name, const Loa
     const long frame = consecutiveFrameNumber(fields[0], previous ? &*previous : nullptr, name, line.number);
     if (!previous) raw.firstFrame = frame;
     previous = frame;
-    for (size_t m = 0; m < markers.size(); ++m) {
-      Eigen::Vector3d p;
-      for (size_t axis = 0; axis < 3; ++axis) {
-        const size_t c = markers[m].xyz[axis];
-        p[static_cast<Eigen::Index>(axis)] = std::nan("");
-        if (c < fields.size() && !parseDouble(fields[c], p[static_cast<Eigen::Index>(axis)], true))
-          throwMalformed(name, linePosition(line.number, static_cast<int>(c + 1)),
-                         "not a number: " + shownWord(fields[c]));
-      }
-      // A marker is there or gone as a whole: one empty coordinate is a gap, not a point.
-      if (p.allFinite()) raw.positionsMm.block<1, 3>(r, static_cast<Eigen::Index>(3 * m)) = p.transpose() * scale;
-    }
+    for (size_t m = 0; m < markers.size(); ++m)
+      if (const auto p = markerCells(fields, markers[m].xyz, false, name, line.number))
+        raw.positionsMm.block<1, 3>(r, static_cast<Eigen::Index>(3 * m)) = p->transpose() * scale;
   }
   return raw;
-}
-
-RawTrial readNexusCsv(const std::filesystem::path& file, const LoadOptions& options) {
-  return parseNexusCsv(readFileText(file), file.string(), options);
 }
 
 }  // namespace ew

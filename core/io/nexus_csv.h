@@ -12,7 +12,6 @@
 // Z are found by the components row, so exports with velocities or accelerations beside them
 // read too. Nexus's ".txt" export is the same with tabs: a tab-separated file reads the same.
 
-#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -26,7 +25,6 @@ namespace ew {
 // force-plate samples, so it is looked for when the file is read, not here.
 bool looksLikeNexusCsv(std::string_view text);
 
-RawTrial readNexusCsv(const std::filesystem::path& file, const LoadOptions& options = {});
 RawTrial parseNexusCsv(std::string_view text, const std::string& name, const LoadOptions& options = {});
 
 }  // namespace ew

@@ -8,6 +8,7 @@
 
 #include "core/common/errors.h"
 #include "core/io/file_bytes.h"
+#include "core/io/marker_cells.h"
 #include "core/io/reader_limits.h"
 #include "core/io/text_table.h"
 
@@ -165,16 +166,10 @@ RawTrial parseQtmTsv(std::string_view text, const std::string& name, const LoadO
       previous = frame;
     }
     for (size_t m = 0; m < n; ++m) {
-      Eigen::Vector3d p = Eigen::Vector3d::Constant(std::nan(""));
-      for (size_t axis = 0; axis < 3; ++axis) {
-        const size_t c = static_cast<size_t>(leading) + 3 * m + axis;
-        if (c < fields.size() && !parseDouble(fields[c], p[static_cast<Eigen::Index>(axis)], true))
-          throwMalformed(name, linePosition(rows[r]->number, static_cast<int>(c + 1)),
-                         "not a number: " + shownWord(fields[c]));
-      }
+      const size_t x = static_cast<size_t>(leading) + 3 * m;
       // QTM writes a marker it did not see as empty cells or as 0, 0, 0: both are gaps.
-      if (p.allFinite() && !p.isZero(0.0))
-        raw.positionsMm.block<1, 3>(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(3 * m)) = p.transpose() * scale;
+      if (const auto p = markerCells(fields, {x, x + 1, x + 2}, true, name, rows[r]->number))
+        raw.positionsMm.block<1, 3>(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(3 * m)) = p->transpose() * scale;
     }
   }
   return raw;

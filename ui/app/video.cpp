@@ -29,8 +29,6 @@ TrackSettings trackSettingsOf(const VideoSession& v, int last) {
 
 namespace {
 
-// What the viewer reads off a track, made once when it is tracked: the fit's trial, each
-// frame's mean confidence and how far the joints have moved by each frame.
 TrackerOptions trackerOptionsFor(const TrackSettings& settings) {
   TrackerOptions o;
   o.kind = settings.tracker;
@@ -41,6 +39,8 @@ TrackerOptions trackerOptionsFor(const TrackSettings& settings) {
   return o;
 }
 
+// What the viewer reads off a track, made once when it is tracked: the fit's trial, each
+// frame's mean confidence and how far the joints have moved by each frame.
 void deriveFromTrack(TrackedVideo& t) {
   t.trial = std::make_shared<const KeypointTrial>(keypointTrialOf(t.track, t.video.string()));
   t.meanConfidence = t.track.confidence.rowwise().mean();

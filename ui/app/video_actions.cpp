@@ -171,22 +171,29 @@ int neighbouringKeyframe(const AppState& s, int delta) {
   return best;
 }
 
+namespace {
+
+// The open video's keyframes as they are now (marked since the track was made, too).
+std::vector<int> keyframeFrames(const VideoSession& v) {
+  std::vector<int> frames;
+  for (const Keyframe& k : v.keyframes.keyframes) frames.push_back(k.frame);
+  return frames;
+}
+
+int firstOr(const std::vector<int>& frames) { return frames.empty() ? -1 : frames.front(); }
+
+}  // namespace
+
 int leastSureTrackedFrame(const AppState& s) {
   if (!s.video || !s.video->tracked) return -1;
   const TrackedVideo& t = *s.video->tracked;
-  std::vector<int> keyframes;
-  for (const Keyframe& k : s.video->keyframes.keyframes) keyframes.push_back(k.frame);
-  const std::vector<int> least = leastSureFrames(t.meanConfidence, t.track.firstFrame, keyframes, 1, 1);
-  return least.empty() ? -1 : least.front();
+  return firstOr(leastSureFrames(t.meanConfidence, t.track.firstFrame, keyframeFrames(*s.video), 1, 1));
 }
 
 int nextFrameToMark(const AppState& s) {
   if (!s.video || !s.video->tracked) return -1;
   const TrackedVideo& t = *s.video->tracked;
-  std::vector<int> keyframes;
-  for (const Keyframe& k : s.video->keyframes.keyframes) keyframes.push_back(k.frame);
-  const std::vector<int> next = framesToMarkNextAlong(t.cumulativeMotionPx, t.track.firstFrame, keyframes, 1);
-  return next.empty() ? -1 : next.front();
+  return firstOr(framesToMarkNextAlong(t.cumulativeMotionPx, t.track.firstFrame, keyframeFrames(*s.video), 1));
 }
 
 std::filesystem::path defaultTrackFolder(const AppState& s) {
