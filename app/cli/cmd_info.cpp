@@ -6,6 +6,7 @@
 
 #include "app/cli/commands.h"
 #include "app/cli/video_beside_keypoints.h"
+#include "app/cli/video_input.h"
 #include "core/gait/dataset.h"
 #include "core/gait/trial_summary.h"
 #include "core/keypoints/keypoint_frames.h"
@@ -22,6 +23,7 @@ struct InfoArgs {
   std::string mapping;  // joint mapping file (--mapping)
   std::string layout;   // keypoint layout (--layout)
   std::string imageSize;  // a MediaPipe CSV's image (--image-size)
+  std::string detectModel = "full";  // the pose detector's model for a video (--detect-model)
 };
 
 std::string joined(const std::vector<std::string>& items, const char* sep) {
@@ -92,12 +94,29 @@ void printTable(const std::vector<TrialSummary>& summaries) {
   }
 }
 
+// What `info` says of a video: the detector's clip summarised as a keypoint file is, with the
+// people it followed; a video it cannot read, or the models missing, ends at stage "read".
+TrialSummary videoSummary(const std::filesystem::path& video, KeypointOptions k, const std::string& model) {
+  KeypointFrames frames;
+  try {
+    frames = detectKeypointFrames(video, {model, true, true, false}, k);
+  } catch (const std::exception& e) {
+    TrialSummary s;
+    s.file = video.string();
+    s.error = e.what();
+    s.errorStage = "read";
+    return s;
+  }
+  return summarizeKeypointFrames(frames, k);
+}
+
 int runInfo(const InfoArgs& args) {
   LoadOptions options;
   if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
   if (!args.mapping.empty()) options.mappingFile = args.mapping;
-  std::vector<std::filesystem::path> paths(args.paths.begin(), args.paths.end());
+  std::vector<std::filesystem::path> paths, videos;
+  for (const auto& p : args.paths) (isVideoFile(p) ? videos : paths).emplace_back(p);
   std::vector<std::string> warnings;
   KeypointOptions keypoints;
   if (args.rateHz > 0) keypoints.fps = args.rateHz;
@@ -111,10 +130,13 @@ int runInfo(const InfoArgs& args) {
     takeTheVideoBeside(p, own);
     return summarizeKeypoints(p, own);
   };
+  // A video: the walker found by the built-in detector (through the detection cache).
+  for (const auto& v : videos) summaries.push_back(videoSummary(v, keypoints, args.detectModel));
   for (const auto& f : collectTrialFiles(paths, warnings)) {
     summaries.push_back(looksLikeKeypointInput(f.path) ? keypointSummary(f.path) : summarizeTrial(f.path, options));
   }
-  for (const auto& p : collectKeypointInputs(paths)) summaries.push_back(keypointSummary(p));
+  if (!paths.empty())
+    for (const auto& p : collectKeypointInputs(paths)) summaries.push_back(keypointSummary(p));
   for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
   if (args.json) {
     nlohmann::json all = nlohmann::json::array();
@@ -140,6 +162,9 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
                                          "MMPose JSON, MediaPipe and DeepLabCut CSV). Exit 1 if any trial is unusable.");
   cmd->add_option("paths", args->paths, "Files, folders (recursive) or manifest CSVs")->required();
   cmd->add_flag("--json", args->json, "One JSON object per trial instead of a table");
+  cmd->add_option("--detect-model", args->detectModel,
+                  "for a video: the built-in pose detector's model, lite, full (default) or heavy")
+      ->check(CLI::IsMember({"lite", "full", "heavy"}));
   cmd->add_option("--rate", args->rateHz,
                   "Frame rate in Hz, overriding the file's (AMC and keypoint JSON have none; default 30)");
   cmd->add_option("--layout", args->layout,

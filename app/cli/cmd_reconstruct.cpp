@@ -19,6 +19,7 @@
 #include <sstream>
 
 #include "app/cli/commands.h"
+#include "app/cli/video_input.h"
 #include "app/cli/reconstruct_camera.h"
 #include "app/cli/reconstruct_skeleton.h"
 #include "core/common/errors.h"
@@ -58,6 +59,7 @@ struct ReconstructArgs {
   std::optional<double> fps, focalPx, elevationDeg;
   bool orthographic = false;
   bool noDetectorOffsets = false;   // take a detector's hips for joint centres
+  std::string detectModel = "full"; // a video's input: the built-in detector's model (--detect-model)
   std::string imageSize;
   std::string camera, cameraName;   // a calibration file (--camera) and which of its cameras
   std::string engine = "eigenwalker";
@@ -368,6 +370,7 @@ SkeletonArgs skeletonArgs(const ReconstructArgs& a) {
   s.focalPx = a.focalPx, s.imageSize = a.imageSize, s.scaleDepthFrame = a.scaleDepthFrame;
   s.scaleDepthChain = a.scaleDepthChain, s.bones = a.bones, s.statureM = a.statureM, s.boneFrame = a.boneFrame;
   s.referenceBone = a.referenceBone, s.guide = a.guide;
+  s.detectModel = a.detectModel;
   return s;
 }
 
@@ -401,6 +404,7 @@ int runReconstruct(const ReconstructArgs& a) {
     c.detectorOffsets = !a.noDetectorOffsets;
     c.alphaDeg = a.angleDeg, c.elevationDeg = a.elevationDeg;
     c.camera = a.camera, c.cameraName = a.cameraName;
+    c.detectModel = a.detectModel;
     return runReconstructCamera(chosen.model, c);
   }
   if (a.elevationDeg || !a.camera.empty())
@@ -536,9 +540,13 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--input", args->input,
                   "2D CSV or 3D trial file; with --unknown-camera a pose estimator's keypoints "
-                  "(OpenPose folder or JSON, AlphaPose or MMPose JSON)")
+                  "(OpenPose folder or JSON, AlphaPose or MMPose JSON) or a video (MP4, MOV, AVI…: the built-in "
+                  "detector finds the walker; --unknown-camera is then implied)")
       ->required()
       ->check(CLI::ExistingPath);
+  cmd->add_option("--detect-model", args->detectModel,
+                  "For a video: the built-in pose detector's model, lite, full (default) or heavy")
+      ->check(CLI::IsMember({"lite", "full", "heavy"}));
   cmd->add_flag("--unknown-camera", args->unknownCamera,
                 "Keypoints in pixels through an unknown real camera (docs/CAMERA.md): estimates azimuth, "
                 "elevation, scale or distance, image translation and progression with the walker");
@@ -586,7 +594,11 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
                 "A 3D input whose subject the model holds is reconstructed by the model without it (leave-one-"
                 "subject-out, as the viewer does); this uses the whole model instead (an in-sample fit)");
   cmd->add_flag("--json", args->json, "Print the result (angle, k, errors) as JSON on stdout");
-  cmd->callback([args, &exitCode] { exitCode = runReconstruct(*args); });
+  cmd->callback([args, &exitCode] {
+    // A video is seen through a real camera: its keypoints go the unknown-camera way.
+    if (isVideoFile(args->input) && args->engine != "snippet") args->unknownCamera = true;
+    exitCode = runReconstruct(*args);
+  });
 }
 
 }  // namespace ew::cli

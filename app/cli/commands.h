@@ -20,5 +20,6 @@ void addReconstructCommand(CLI::App& app, int& exitCode);
 // Only when the video library was built (OpenCV found): EW_HAVE_VIDEO.
 void addTrackCommand(CLI::App& app, int& exitCode);
 void addTrackStudyCommand(CLI::App& app, int& exitCode);
+void addDetectCommand(CLI::App& app, int& exitCode);
 
 }  // namespace ew::cli

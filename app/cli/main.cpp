@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   ew::cli::addReconstructCommand(app, exitCode);
 #ifdef EW_HAVE_VIDEO
   ew::cli::addTrackCommand(app, exitCode);
+  ew::cli::addDetectCommand(app, exitCode);
   ew::cli::addTrackStudyCommand(app, exitCode);
 #endif
   try {

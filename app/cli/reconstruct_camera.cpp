@@ -1,4 +1,5 @@
 #include "app/cli/reconstruct_camera.h"
+#include "app/cli/video_input.h"
 
 #include <cmath>
 #include <iomanip>
@@ -197,6 +198,11 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
        << a.modelName;
   writeJointTrajectories(a.out, frames, t.rateHz, {what.str()});
   json report = reportJson(a, t, fit);
+  json residuals = json::object();
+  for (int j = 0; j < kJointCount; ++j)
+    if (std::isfinite(clip.residualRmsPx[static_cast<std::size_t>(j)]))
+      residuals[std::string(jointName(static_cast<Joint>(j)))] = clip.residualRmsPx[static_cast<std::size_t>(j)];
+  report["residual_rms_px_per_joint"] = residuals;
   if (report["focal_source"].is_string()) report["focal_source"] = focalSource;
   report["lens_undistorted"] = lens;
   report["stride_source"] = clip.strideSource;
@@ -223,8 +229,9 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   const std::optional<CalibratedCamera> calibration = calibrationOf(a);
   const CameraFitOptions o = fitOptionsOf(model, a, calibration, k, focalSource);
   const bool fromCalibration = a.imageSize.empty() && k.imageSize;
-  takeTheVideoBeside(a.input, k);
-  KeypointTrial keypoints = readKeypointTrial(a.input, k);
+  // A video is its own: the built-in detector finds the walker's keypoints in it.
+  if (!isVideoFile(a.input)) takeTheVideoBeside(a.input, k);
+  KeypointTrial keypoints = keypointTrialOf(a.input, k, {a.detectModel});
   const json imageSizeFrom = fromCalibration ? "the calibration file (" + a.camera + ")" : keypoints.imageSizeSource;
   const json lens = undistorted(a, calibration, keypoints);
   return fitAndReport(model, a, std::move(keypoints), o, focalSource, lens, imageSizeFrom);

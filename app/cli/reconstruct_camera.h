@@ -20,6 +20,7 @@ struct CameraArgs {
   bool orthographic = false;     // scaled orthography instead of estimating the focal length
   bool detectorOffsets = true;   // allow for the layout's detector offsets (KeypointLayout)
   bool strideFromTrunk = false;  // a tracker's joints: hold the trunk's bob as the stride
+  std::string detectModel = "full";  // a video's input: the built-in detector's model
 };
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args);

@@ -1,4 +1,5 @@
 #include "app/cli/reconstruct_skeleton.h"
+#include "app/cli/video_input.h"
 
 #include <cmath>
 #include <iomanip>
@@ -217,8 +218,8 @@ KeypointTrial readKeypoints(const SkeletonArgs& a) {
   ko.fps = a.fps;
   // Points given as fractions of the image (MediaPipe, YOLO) need its size.
   if (!a.imageSize.empty()) ko.imageSize = parseKeypointImageSize(a.imageSize, "--image-size");
-  takeTheVideoBeside(a.input, ko);
-  return readKeypointTrial(a.input, ko);
+  if (!isVideoFile(a.input)) takeTheVideoBeside(a.input, ko);
+  return keypointTrialOf(a.input, ko, {a.detectModel});
 }
 
 std::optional<JointTrial> referenceFor(const SkeletonArgs& a) {

@@ -18,6 +18,7 @@ struct SkeletonArgs {
   std::string angles;  // joint angles (.mot or .csv) of the result, when given
   std::optional<double> fps;
   bool json = false;
+  std::string detectModel = "full";  // a video's input: the built-in detector's model
   // Without a calibration: a focal length, or T(dz) on a frame and a chain "a,b,c,d"; the
   // principal point is the middle of --image-size WxH.
   std::optional<double> focalPx;

@@ -53,6 +53,10 @@ struct KeypointFrames {
   std::optional<KeypointImageSize> imageSize;  // the image the points were found in, when the file states it
   std::vector<std::vector<KeypointDetection>> frames;
   std::vector<std::string> warnings;
+  // The trackIds follow each person (the built-in detector's, which follows each one on its
+  // own crop): people are grouped by them instead of by nearness, so that someone who
+  // leaves is never continued by whoever stands nearest (trackPeople).
+  bool trackIdsFollowPeople = false;
 
   int frameCount() const { return static_cast<int>(frames.size()); }
 };

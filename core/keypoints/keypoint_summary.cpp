@@ -77,23 +77,31 @@ std::vector<fs::path> collectKeypointInputs(const std::vector<fs::path>& paths) 
   return out;
 }
 
+namespace {
+
+// Runs `step`; an error ends the summary at stage `name` (s.error, s.errorStage).
+template <typename Step>
+bool runStage(TrialSummary& s, const char* name, Step&& step) {
+  try {
+    step();
+    return true;
+  } catch (const Error& e) {
+    s.error = e.what();
+    s.errorStage = name;
+  } catch (const std::exception& e) {
+    s.error = s.file + ": " + e.what();
+    s.errorStage = name;
+  }
+  return false;
+}
+
+}  // namespace
+
 TrialSummary summarizeKeypoints(const fs::path& path, const KeypointOptions& options) {
   TrialSummary s;
   s.file = path.string();
   s.units = "px";
-  const auto stage = [&](const char* name, auto&& step) {
-    try {
-      step();
-      return true;
-    } catch (const Error& e) {
-      s.error = e.what();
-      s.errorStage = name;
-    } catch (const std::exception& e) {
-      s.error = s.file + ": " + e.what();
-      s.errorStage = name;
-    }
-    return false;
-  };
+  const auto stage = [&](const char* name, auto&& step) { return runStage(s, name, step); };
   KeypointTrial trial;
   if (isPlanarTrc(path)) {
     if (!stage("read", [&] { trial = readPlanarTrc(path, options); })) return s;
@@ -104,9 +112,18 @@ TrialSummary summarizeKeypoints(const fs::path& path, const KeypointOptions& opt
   }
   KeypointFrames frames;
   if (!stage("read", [&] { frames = readKeypointFrames(path, options.imageSize, options.videoSize()); })) return s;
+  return summarizeKeypointFrames(frames, options);
+}
+
+TrialSummary summarizeKeypointFrames(const KeypointFrames& frames, const KeypointOptions& options) {
+  TrialSummary s;
+  s.file = frames.file;
+  s.units = "px";
+  const auto stage = [&](const char* name, auto&& step) { return runStage(s, name, step); };
   s.format = frames.format;
   s.frames = frames.frameCount();
   s.pointsFound = frames.pointCount;
+  KeypointTrial trial;
   if (!stage("joints", [&] { trial = cleanKeypoints(frames, options); })) return s;
   return summarizeWalking(s, trial, stage);
 }

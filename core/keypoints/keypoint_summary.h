@@ -14,6 +14,9 @@ namespace ew {
 
 TrialSummary summarizeKeypoints(const std::filesystem::path& path, const KeypointOptions& options = {});
 
+// The same for a clip already read (the built-in detector's, from a video).
+TrialSummary summarizeKeypointFrames(const KeypointFrames& frames, const KeypointOptions& options = {});
+
 // Keypoint inputs under `paths`: .json files, folders holding .json files directly (an
 // OpenPose folder), YOLO pose labels (a folder of them, or Ultralytics' run folder holding
 // labels/); other folders are searched below, sorted, to a depth of 8.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <sstream>
 
 #include "core/common/errors.h"
@@ -300,7 +301,44 @@ std::shared_ptr<const KeypointLayout> jointLayout() {
 
 // [SECTION] Public API -------------------------------------------------------------------------
 
+namespace {
+
+// People grouped by their trackIds (KeypointFrames::trackIdsFollowPeople); detections without
+// one, or with too few points, are left out.
+std::vector<PersonTrack> tracksByIds(const KeypointFrames& frames) {
+  std::map<int, std::size_t> trackOf;
+  std::vector<PersonTrack> tracks;
+  std::vector<std::vector<double>> heights;
+  std::vector<Vector2d> firstCentre;
+  for (int f = 0; f < frames.frameCount(); ++f) {
+    const auto& dets = frames.frames[static_cast<std::size_t>(f)];
+    for (std::size_t d = 0; d < dets.size(); ++d) {
+      const Shape shape = shapeOf(dets[d].points);
+      if (dets[d].trackId < 0 || shape.points < kMinPointsPerDetection) continue;
+      auto [it, added] = trackOf.try_emplace(dets[d].trackId, tracks.size());
+      if (added) {
+        tracks.emplace_back();
+        heights.emplace_back();
+        firstCentre.push_back(shape.centre);
+      }
+      PersonTrack& t = tracks[it->second];
+      if (!t.frames.empty() && t.frames.back() == f) continue;  // one detection per id and frame
+      t.frames.push_back(f);
+      t.detection.push_back(static_cast<int>(d));
+      heights[it->second].push_back(shape.heightPx);
+      t.travelPx = std::max(t.travelPx, (shape.centre - firstCentre[it->second]).norm());
+    }
+  }
+  for (std::size_t k = 0; k < tracks.size(); ++k) tracks[k].sizePx = median(heights[k]);
+  std::stable_sort(tracks.begin(), tracks.end(),
+                   [](const PersonTrack& a, const PersonTrack& b) { return a.frames.size() > b.frames.size(); });
+  return tracks;
+}
+
+}  // namespace
+
 std::vector<PersonTrack> trackPeople(const KeypointFrames& frames) {
+  if (frames.trackIdsFollowPeople) return tracksByIds(frames);
   std::vector<PersonTrack> tracks;
   std::vector<Active> active;
   std::vector<std::vector<double>> heights;

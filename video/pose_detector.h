@@ -1,0 +1,83 @@
+#pragma once
+// A walking video to keypoints with no other tool (issue 52; docs/DETECTOR.md): BlazePose's
+// person detector finds people, the landmark model follows each one from frame to frame on a
+// crop taken from its previous landmarks, and the result is a keypoint clip in the
+// MediaPipe-33 layout, which everything downstream (the unknown-camera fit, the engines, the
+// gait report, exports) reads as it reads a MediaPipe CSV.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/keypoints/keypoint_frames.h"
+#include "video/blazepose.h"
+#include "video/pose_model_files.h"
+#include "video/video_source.h"
+
+namespace ew {
+
+// One followed person on one frame.
+struct FollowedPose {
+  int personId = 0;
+  PoseLandmarks landmarks;
+};
+
+struct PoseDetectionOptions {
+  PoseModelSize model = PoseModelSize::Full;
+  // The person detector also on square tiles across a wide (or tall) frame, for people far away.
+  bool tiles = true;
+  // How often the person detector looks for people not yet followed (and always while nobody
+  // is), in seconds of video.
+  double searchEverySeconds = 0.5;
+  int maxPeople = 8;
+  // Below this landmark-model score a person is lost (left the frame, hidden); the track ends
+  // there and is never handed to whoever is nearest.
+  double minPoseScore = 0.5;
+  // Left and right labels made consistent through time (a whole-body swap the model makes on
+  // a frame is undone): pose_detector.cpp, fixLeftRight.
+  bool fixLeftRight = true;
+  // Frames [firstFrame, lastFrame]; lastFrame −1: to the end.
+  int firstFrame = 0;
+  int lastFrame = -1;
+  // Called after each frame with the frames done and the total; returning false cancels.
+  std::function<bool(int done, int total)> progress;
+  // Called after each frame with what was found on it (before the left/right consistency,
+  // which needs the whole clip): for a live display. Called on the detecting thread.
+  std::function<void(int frame, const std::vector<FollowedPose>& poses)> onFrame;
+};
+
+struct PoseDetectionRun {
+  VideoInfo video;
+  PoseModelSize model = PoseModelSize::Full;
+  // Per frame of [firstFrame, last frame read], everybody followed on it.
+  std::vector<std::vector<FollowedPose>> poses;
+  int firstFrame = 0;
+  int people = 0;             // persons followed at some point
+  int leftRightSwapsUndone = 0;
+  bool cancelled = false;     // the progress callback said stop: poses hold the frames done
+  // Wall time, seconds: decoding, the landmark model, the person detector, all.
+  double decodeSeconds = 0.0, landmarkSeconds = 0.0, personSeconds = 0.0, totalSeconds = 0.0;
+  std::vector<std::string> warnings;
+};
+
+// Detects and follows people through `videoFile`. Throws what VideoSource throws for a file
+// it cannot read, Error(Io) with missingPoseModelAdvice() when the models are missing; a
+// video with nobody in it is a run whose frames are empty (people == 0), not an error.
+PoseDetectionRun detectPoses(const std::filesystem::path& videoFile, const PoseDetectionOptions& options = {});
+
+// The run as a keypoint clip: MediaPipe-33 points (x, y px, visibility as the confidence),
+// one detection per person with its id as trackId, the video's size and rate; frames before
+// firstFrame are empty, so frame numbers are the video's.
+KeypointFrames keypointFramesOf(const PoseDetectionRun& run);
+
+// The left/right labelling of one person's frames that is most consistent through time: a
+// two-state path (as the model labelled it, or every left/right pair swapped) minimising the
+// points' frame-to-frame travel plus `swapCost` (in ROI sides) for each swapped frame.
+// `frames` holds the person's consecutive poses (a gap starts a new path). Returns, per frame,
+// whether to swap.
+std::vector<bool> consistentLeftRight(const std::vector<const PoseLandmarks*>& frames, double swapCost = 0.05);
+
+// The 16 left/right pairs of the MediaPipe-33 layout.
+void swapLeftRight(PoseLandmarks& pose);
+
+}  // namespace ew
