@@ -17,7 +17,7 @@ namespace {
 
 // Bumped whenever the detector's output for the same options changes, so that old cache files
 // are not taken for new results.
-constexpr int kCacheVersion = 1;
+constexpr int kCacheVersion = 2;
 
 std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
   h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);

@@ -102,10 +102,22 @@ class PoseFollower {
 
 // [SECTION] left and right through time
 
-double travel(const PoseLandmarks& from, const PoseLandmarks& to, bool swapped) {
-  double sum = 0.0;
+// The left/right pairs a group's labels cover (the cost looks at the body's pairs only: the
+// face's points are close together), and those it swaps.
+std::vector<std::pair<int, int>> pairsOf(LeftRightGroup group, bool forCost) {
+  std::vector<std::pair<int, int>> out;
   for (const auto& [l, r] : kLeftRightPairs) {
-    if (l < 11) continue;  // the face's pairs are close together: the body's decide
+    const bool arm = l >= 13 && l <= 21, leg = l >= 25;
+    const bool in = group == LeftRightGroup::Body ? (!forCost || l >= 11) : group == LeftRightGroup::Arms ? arm : leg;
+    if (in) out.emplace_back(l, r);
+  }
+  return out;
+}
+
+double travel(const PoseLandmarks& from, const PoseLandmarks& to, bool swapped,
+              const std::vector<std::pair<int, int>>& pairs) {
+  double sum = 0.0;
+  for (const auto& [l, r] : pairs) {
     const Landmark& a = from.points[static_cast<std::size_t>(l)];
     const Landmark& b = from.points[static_cast<std::size_t>(r)];
     const Landmark& c = to.points[static_cast<std::size_t>(swapped ? r : l)];
@@ -115,30 +127,35 @@ double travel(const PoseLandmarks& from, const PoseLandmarks& to, bool swapped) 
   return sum / std::max(1.0, to.roi.sidePx);
 }
 
+// Whole-body swaps first (the model taking the person to face the other way, for any number of
+// frames), then a leg or arm pair swapped alone for a few frames (kLimbSwapCost).
 void fixLeftRightOfEachPerson(PoseDetectionRun& run) {
-  for (int id = 0; id < run.people; ++id) {
-    std::vector<std::pair<std::size_t, std::size_t>> where;  // (frame, index) of the person's poses
-    int previous = std::numeric_limits<int>::min();
-    const auto flush = [&]() {
-      std::vector<const PoseLandmarks*> path;
-      for (const auto& [f, i] : where) path.push_back(&run.poses[f][i].landmarks);
-      const auto swaps = consistentLeftRight(path);
-      for (std::size_t k = 0; k < where.size(); ++k)
-        if (swaps[k]) {
-          swapLeftRight(run.poses[where[k].first][where[k].second].landmarks);
-          ++run.leftRightSwapsUndone;
-        }
-      where.clear();
-    };
-    for (std::size_t f = 0; f < run.poses.size(); ++f)
-      for (std::size_t i = 0; i < run.poses[f].size(); ++i)
-        if (run.poses[f][i].personId == id) {
-          if (static_cast<int>(f) != previous + 1) flush();
-          where.emplace_back(f, i);
-          previous = static_cast<int>(f);
-        }
-    flush();
-  }
+  for (const auto& [group, cost] : {std::pair{LeftRightGroup::Body, kBodySwapCost},
+                                    std::pair{LeftRightGroup::Legs, kLimbSwapCost},
+                                    std::pair{LeftRightGroup::Arms, kLimbSwapCost}})
+    for (int id = 0; id < run.people; ++id) {
+      std::vector<std::pair<std::size_t, std::size_t>> where;  // (frame, index) of the person's poses
+      int previous = std::numeric_limits<int>::min();
+      const auto flush = [&, group = group, cost = cost]() {
+        std::vector<const PoseLandmarks*> path;
+        for (const auto& [f, i] : where) path.push_back(&run.poses[f][i].landmarks);
+        const auto swaps = consistentLeftRight(path, group, cost);
+        for (std::size_t k = 0; k < where.size(); ++k)
+          if (swaps[k]) {
+            swapLeftRight(run.poses[where[k].first][where[k].second].landmarks, group);
+            ++run.leftRightSwapsUndone;
+          }
+        where.clear();
+      };
+      for (std::size_t f = 0; f < run.poses.size(); ++f)
+        for (std::size_t i = 0; i < run.poses[f].size(); ++i)
+          if (run.poses[f][i].personId == id) {
+            if (static_cast<int>(f) != previous + 1) flush();
+            where.emplace_back(f, i);
+            previous = static_cast<int>(f);
+          }
+      flush();
+    }
 }
 
 // Ids from 0 in the order people first appear; a person the detector proposed whom the
@@ -155,12 +172,14 @@ int numberPeopleInOrderOfAppearance(PoseDetectionRun& run) {
 
 }  // namespace
 
-void swapLeftRight(PoseLandmarks& pose) {
-  for (const auto& [l, r] : kLeftRightPairs)
+void swapLeftRight(PoseLandmarks& pose, LeftRightGroup group) {
+  for (const auto& [l, r] : pairsOf(group, false))
     std::swap(pose.points[static_cast<std::size_t>(l)], pose.points[static_cast<std::size_t>(r)]);
 }
 
-std::vector<bool> consistentLeftRight(const std::vector<const PoseLandmarks*>& frames, double swapCost) {
+std::vector<bool> consistentLeftRight(const std::vector<const PoseLandmarks*>& frames, LeftRightGroup group,
+                                     double swapCost) {
+  const auto pairs = pairsOf(group, true);
   const std::size_t n = frames.size();
   std::vector<bool> swaps(n, false);
   if (n == 0) return swaps;
@@ -169,8 +188,8 @@ std::vector<bool> consistentLeftRight(const std::vector<const PoseLandmarks*>& f
   std::vector<std::array<int, 2>> from(n, {0, 0});
   cost[0] = {0.0, swapCost};
   for (std::size_t t = 1; t < n; ++t) {
-    const double same = travel(*frames[t - 1], *frames[t], false);
-    const double crossed = travel(*frames[t - 1], *frames[t], true);
+    const double same = travel(*frames[t - 1], *frames[t], false, pairs);
+    const double crossed = travel(*frames[t - 1], *frames[t], true, pairs);
     for (int s = 0; s < 2; ++s) {
       // From state p to state s: the labels move by `same` when p == s, else by `crossed`.
       const double viaKeep = cost[t - 1][0] + (s == 0 ? same : crossed);
@@ -247,7 +266,11 @@ KeypointFrames keypointFramesOf(const PoseDetectionRun& run) {
       d.points.resize(kBlazePoseLandmarks, 3);
       for (int i = 0; i < kBlazePoseLandmarks; ++i) {
         const Landmark& lm = p.landmarks.points[static_cast<std::size_t>(i)];
-        d.points.row(i) << lm.x, lm.y, lm.visibility;
+        // A landmark outside the picture is the model's guess at a part it cannot see: missing.
+        const bool inside = lm.x >= -0.5 && lm.y >= -0.5 && lm.x <= run.video.widthPx - 0.5 &&
+                            lm.y <= run.video.heightPx - 0.5 && std::isfinite(lm.visibility);
+        if (inside) d.points.row(i) << lm.x, lm.y, lm.visibility;
+        else d.points.row(i) << std::nan(""), std::nan(""), 0.0;
       }
       out.push_back(std::move(d));
     }

@@ -65,19 +65,31 @@ struct PoseDetectionRun {
 // video with nobody in it is a run whose frames are empty (people == 0), not an error.
 PoseDetectionRun detectPoses(const std::filesystem::path& videoFile, const PoseDetectionOptions& options = {});
 
-// The run as a keypoint clip: MediaPipe-33 points (x, y px, visibility as the confidence),
+// The run as a keypoint clip: MediaPipe-33 points (x, y px, visibility as the confidence; a
+// point outside the picture missing),
 // one detection per person with its id as trackId, the video's size and rate; frames before
 // firstFrame are empty, so frame numbers are the video's.
 KeypointFrames keypointFramesOf(const PoseDetectionRun& run);
 
-// The left/right labelling of one person's frames that is most consistent through time: a
-// two-state path (as the model labelled it, or every left/right pair swapped) minimising the
-// points' frame-to-frame travel plus `swapCost` (in ROI sides) for each swapped frame.
-// `frames` holds the person's consecutive poses (a gap starts a new path). Returns, per frame,
-// whether to swap.
-std::vector<bool> consistentLeftRight(const std::vector<const PoseLandmarks*>& frames, double swapCost = 0.05);
+// Which left/right labels move together: all of them (the model taking the person to face the
+// other way), or one limb pair's (a leg or an arm labelled as the other one).
+enum class LeftRightGroup { Body, Legs, Arms };
 
-// The 16 left/right pairs of the MediaPipe-33 layout.
-void swapLeftRight(PoseLandmarks& pose);
+// The swap costs used: a whole-body swap is undone however long it lasts when the labels' travel
+// says so; a limb's alone only for a few frames (a 1-3 frame glitch), since legs and arms cross
+// in a profile walk and their labels are then for the model to say.
+inline constexpr double kBodySwapCost = 0.05;
+inline constexpr double kLimbSwapCost = 0.3;
+
+// The left/right labelling of one person's frames that is most consistent through time: a
+// two-state path (as the model labelled it, or the group's left/right pairs swapped)
+// minimising the points' frame-to-frame travel (in ROI sides) plus `swapCost` for each swapped
+// frame. `frames` holds the person's consecutive poses (a gap starts a new path). Returns, per
+// frame, whether to swap.
+std::vector<bool> consistentLeftRight(const std::vector<const PoseLandmarks*>& frames,
+                                      LeftRightGroup group = LeftRightGroup::Body, double swapCost = kBodySwapCost);
+
+// Swaps the group's left/right pairs of the MediaPipe-33 layout (Body: all 16).
+void swapLeftRight(PoseLandmarks& pose, LeftRightGroup group = LeftRightGroup::Body);
 
 }  // namespace ew

@@ -16,6 +16,7 @@
 #include "core/keypoints/keypoint_layout.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/keypoints/keypoint_writers.h"
+#include "core/tracking/keyframes.h"
 #include "core/tracking/track_compare.h"
 #include "video/detection_cache.h"
 
@@ -29,7 +30,7 @@ struct DetectArgs {
   std::string video, out, model = "full", format = "mediapipe-csv", compare;
   int first = 0, last = -1, compareOffset = 0;
   std::optional<int> person;
-  bool noTiles = false, noCache = false, json = false;
+  bool noTiles = false, noCache = false, json = false, keepModelLabels = false;
 };
 
 // The joints compared: shoulders, elbows, wrists, knees, ankles; the hips apart (detectors
@@ -43,8 +44,9 @@ std::array<bool, kJointCount> limbJoints(bool hips) {
   return use;
 }
 
-// Frames where the detection's left and right are the reference's swapped: every one of the
-// six left/right joint pairs present in both, and the crossed pairing nearer than the straight one.
+// Frames where the detection's left and right are the reference's swapped: four or more of the
+// six left/right joint pairs present in both (the reference sure of them), and the crossed
+// pairing of those nearer than the straight one.
 json leftRightAgreement(const Eigen::MatrixXd& ours, const Eigen::MatrixXd& reference) {
   constexpr std::array<std::pair<Joint, Joint>, 6> pairs = {{{Joint::RShoulder, Joint::LShoulder},
                                                              {Joint::RElbow, Joint::LElbow},
@@ -59,14 +61,15 @@ json leftRightAgreement(const Eigen::MatrixXd& ours, const Eigen::MatrixXd& refe
   json swappedFrames = json::array();
   for (Eigen::Index f = 0; f < std::min(ours.rows(), reference.rows()); ++f) {
     double straight = 0.0, crossed = 0.0;
-    bool complete = true;
+    int complete = 0;
     for (const auto& [r, l] : pairs) {
       const Eigen::Vector2d a = at(ours, f, r), b = at(ours, f, l), c = at(reference, f, r), d = at(reference, f, l);
-      if (!a.allFinite() || !b.allFinite() || !c.allFinite() || !d.allFinite()) complete = false;
+      if (!a.allFinite() || !b.allFinite() || !c.allFinite() || !d.allFinite()) continue;
+      ++complete;
       straight += (a - c).norm() + (b - d).norm();
       crossed += (a - d).norm() + (b - c).norm();
     }
-    if (!complete) continue;
+    if (complete < 4) continue;
     ++compared;
     if (crossed < straight) {
       ++swapped;
@@ -90,21 +93,30 @@ json compareWith(const DetectArgs& a, const KeypointTrial& ours, const VideoInfo
   KeypointOptions k;
   k.fps = info.fps;
   k.imageSize = KeypointImageSize{info.widthPx, info.heightPx};
-  const KeypointTrial reference = readKeypointTrial(a.compare, k);
-  // Sure: OpenPose's own threshold for a point it would draw.
-  k.minConfidence = 0.5;
-  const KeypointTrial sure = readKeypointTrial(a.compare, k);
+  Eigen::MatrixXd referencePx, surePx;
+  if (isKeyframeFile(a.compare)) {
+    // Marks by hand on some frames (docs/TRACKING.md's keyframe files): sure where they are.
+    referencePx = Eigen::MatrixXd::Constant(std::max(info.frameCount, 1), kDims2, std::nan(""));
+    for (const Keyframe& key : readKeyframes(a.compare).keyframes)
+      if (key.frame >= 0 && key.frame < referencePx.rows()) referencePx.row(key.frame) = key.jointsPx;
+    surePx = referencePx;
+  } else {
+    referencePx = readKeypointTrial(a.compare, k).jointsPx;
+    // Sure: OpenPose's own threshold for a point it would draw.
+    k.minConfidence = 0.5;
+    surePx = readKeypointTrial(a.compare, k).jointsPx;
+  }
   const Eigen::Index offset = a.compareOffset;
   if (offset < 0 || offset >= ours.jointsPx.rows())
     throw Error(ErrorKind::BadArgument, "--compare-offset", "", "must be within the video's frames");
   const Eigen::MatrixXd shifted = ours.jointsPx.bottomRows(ours.jointsPx.rows() - offset);
-  const TrackDistance limbs = compareTracks(shifted, 0, reference.jointsPx, limbJoints(false));
-  const TrackDistance hips = compareTracks(shifted, 0, reference.jointsPx, limbJoints(true));
+  const TrackDistance limbs = compareTracks(shifted, 0, referencePx, limbJoints(false));
+  const TrackDistance hips = compareTracks(shifted, 0, referencePx, limbJoints(true));
   json report = {{"file", a.compare},
                  {"offset_frames", a.compareOffset},
                  {"limbs", distanceJson(limbs, limbJoints(false))},
                  {"hips", distanceJson(hips, limbJoints(true))},
-                 {"left_right", leftRightAgreement(shifted, sure.jointsPx)}};
+                 {"left_right", leftRightAgreement(shifted, surePx)}};
   std::cout << std::fixed << std::setprecision(1) << "against " << a.compare << " (its frame n = video frame n + "
             << a.compareOffset << "): median " << limbs.medianAllPx << " px over shoulders, elbows, wrists, knees, "
             << "ankles (" << limbs.jointFrames << " joint-frames), hips " << hips.medianAllPx << " px; left/right swapped on "
@@ -129,6 +141,7 @@ int runDetect(const DetectArgs& a) {
   PoseDetectionOptions o;
   o.model = parsePoseModelSize(a.model);
   o.tiles = !a.noTiles;
+  o.fixLeftRight = !a.keepModelLabels;
   o.firstFrame = a.first;
   o.lastFrame = a.last;
   int lastTenth = -1;
@@ -199,8 +212,11 @@ void addDetectCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--person", args->person, "the person to write as the walker (1-based; default: the one who walks)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-tiles", args->noTiles, "look for people in the whole frame only, not also in square tiles");
+  cmd->add_flag("--keep-model-labels", args->keepModelLabels,
+                "keep left and right as the landmark model labels each frame (no consistency through time)");
   cmd->add_flag("--no-cache", args->noCache, "detect again even when the detections of this video are cached");
-  cmd->add_option("--compare", args->compare, "measure the detections against another estimator's keypoints");
+  cmd->add_option("--compare", args->compare,
+                  "measure the detections against another estimator's keypoints, or a keyframe file's marks");
   cmd->add_option("--compare-offset", args->compareOffset,
                   "with --compare: its frame n is the video's frame n + K (default 0)")
       ->check(CLI::NonNegativeNumber);
