@@ -60,6 +60,7 @@ struct ReconstructArgs {
   bool orthographic = false;
   bool noDetectorOffsets = false;   // take a detector's hips for joint centres
   std::string detectModel = "full"; // a video's input: the built-in detector's model (--detect-model)
+  std::optional<int> modelLoop;     // --model-loop: rounds of the detection loop
   std::string imageSize;
   std::string camera, cameraName;   // a calibration file (--camera) and which of its cameras
   std::string engine = "eigenwalker";
@@ -405,6 +406,7 @@ int runReconstruct(const ReconstructArgs& a) {
     c.alphaDeg = a.angleDeg, c.elevationDeg = a.elevationDeg;
     c.camera = a.camera, c.cameraName = a.cameraName;
     c.detectModel = a.detectModel;
+    c.modelLoop = a.modelLoop;
     return runReconstructCamera(chosen.model, c);
   }
   if (a.elevationDeg || !a.camera.empty())
@@ -547,6 +549,10 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--detect-model", args->detectModel,
                   "For a video: the built-in pose detector's model, lite, full (default) or heavy")
       ->check(CLI::IsMember({"lite", "full", "heavy"}));
+  cmd->add_option("--model-loop", args->modelLoop,
+                  "With --unknown-camera: rounds of the model loop, where joints the detector is unsure of are pulled "
+                  "towards the fitted walker and the fit is made again (default 1 for a video, 0 for keypoint files)")
+      ->check(CLI::Range(0, 5));
   cmd->add_flag("--unknown-camera", args->unknownCamera,
                 "Keypoints in pixels through an unknown real camera (docs/CAMERA.md): estimates azimuth, "
                 "elevation, scale or distance, image translation and progression with the walker");

@@ -1,5 +1,6 @@
 #include "app/cli/reconstruct_camera.h"
 #include "app/cli/video_input.h"
+#include "core/camera/detection_loop.h"
 
 #include <cmath>
 #include <iomanip>
@@ -185,10 +186,29 @@ std::string principalPointPrior(const CameraFitOptions& o, const KeypointTrial& 
   return "none (the image's size unknown: --image-size gives it, or a video beside the keypoints)";
 }
 
+// The model loop's rounds: as asked, else one for a video's detections (whose confidences say
+// where the detector is unsure), none for a keypoint file.
+int modelLoopRounds(const CameraArgs& a) { return a.modelLoop.value_or(isVideoFile(a.input) ? 1 : 0); }
+
+json modelLoopJson(const DetectionLoop& loop, const DetectionLoopOptions& o) {
+  if (o.rounds == 0) return {{"rounds", 0}};
+  return {{"rounds", o.rounds},
+          {"sure_confidence", o.sureConfidence},
+          {"unsure_joint_frames", loop.unsureJointFrames},
+          {"reprojection_rms_on_sure_px_before", loop.firstRmsOnSurePx},
+          {"reprojection_rms_on_sure_px_after", loop.lastRmsOnSurePx},
+          {"before", {{"alpha_deg", loop.first.fit.camera.alphaDeg},
+                      {"reprojection_rms_px", loop.first.fit.reprojectionRmsPx},
+                      {"stature_m", loop.first.fit.statureMm / 1000.0}}}};
+}
+
 int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
                  const CameraFitOptions& o, const std::string& focalSource, const json& lens,
                  const json& imageSizeFrom = nullptr) {
-  const ClipReconstruction clip = reconstructKeypointTrial(model, std::move(keypoints), o);
+  DetectionLoopOptions loopOptions;
+  loopOptions.rounds = modelLoopRounds(a);
+  const DetectionLoop loop = reconstructWithDetectionLoop(model, keypoints, o, loopOptions);
+  const ClipReconstruction& clip = loop.last;
   const KeypointTrial& t = clip.trial;
   const CameraFit& fit = clip.fit;
   const Eigen::MatrixXd& frames = clip.framesMm;
@@ -203,6 +223,7 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
     if (std::isfinite(clip.residualRmsPx[static_cast<std::size_t>(j)]))
       residuals[std::string(jointName(static_cast<Joint>(j)))] = clip.residualRmsPx[static_cast<std::size_t>(j)];
   report["residual_rms_px_per_joint"] = residuals;
+  report["model_loop"] = modelLoopJson(loop, loopOptions);
   if (report["focal_source"].is_string()) report["focal_source"] = focalSource;
   report["lens_undistorted"] = lens;
   report["stride_source"] = clip.strideSource;

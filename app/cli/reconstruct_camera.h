@@ -21,6 +21,9 @@ struct CameraArgs {
   bool detectorOffsets = true;   // allow for the layout's detector offsets (KeypointLayout)
   bool strideFromTrunk = false;  // a tracker's joints: hold the trunk's bob as the stride
   std::string detectModel = "full";  // a video's input: the built-in detector's model
+  // Rounds of the model loop on the detections' confidences (core/camera/detection_loop.h);
+  // unset: 1 for a video, 0 for keypoint files.
+  std::optional<int> modelLoop;
 };
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args);

@@ -185,6 +185,28 @@ Eigen::MatrixXd presentJoints(const KeypointLayout& layout, const KeypointFrames
   return out;
 }
 
+// Each joint's confidence over the whole clip (KeypointTrial::jointConfidence): the least of
+// its points' where the joint is made, NaN elsewhere.
+Eigen::MatrixXd personJointConfidence(const KeypointLayout& layout, const KeypointFrames& frames, const PersonTrack& t,
+                                      double minConfidence) {
+  const auto person = detectionsOf(frames, t);
+  const JointChoice c = chooseAlternatives(layout, person, minConfidence);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Constant(frames.frameCount(), kJointCount, kNaN);
+  for (std::size_t i = 0; i < t.frames.size(); ++i) {
+    const Eigen::MatrixX3d& p = *person[i];
+    for (int j = 0; j < kJointCount; ++j) {
+      const int a = c.alternative[static_cast<std::size_t>(j)];
+      if (a < 0) continue;
+      const auto& pts = layout.joints[static_cast<std::size_t>(j)][static_cast<std::size_t>(a)];
+      if (!std::all_of(pts.begin(), pts.end(), [&](int k) { return pointSeen(p, k, minConfidence); })) continue;
+      double least = 1.0;
+      for (int k : pts) least = std::min(least, p(k, 2));
+      out(t.frames[i], j) = least;
+    }
+  }
+  return out;
+}
+
 // The same over the whole clip: NaN where the person is not.
 Eigen::MatrixXd personJoints(const KeypointLayout& layout, const KeypointFrames& frames, const PersonTrack& t,
                              double minConfidence) {
@@ -446,6 +468,7 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
   const PersonTrack& walker = t.people[static_cast<std::size_t>(t.chosen)];
   t.layout = &chooseLayout(frames, walker, options, t.layoutSource, t.warnings, t.builtLayout);
   t.jointsPx = personJoints(*t.layout, frames, walker, options.minConfidence);
+  t.jointConfidence = personJointConfidence(*t.layout, frames, walker, options.minConfidence);
   if (options.detectorOffsets) t.detectorOffsetMm = t.layout->detectorOffsetMm;
   for (auto& person : t.people) person.jointsPx = presentJoints(*t.layout, frames, person, options.minConfidence);
   checkSeenJoints(t, options);

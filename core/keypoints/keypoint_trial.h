@@ -65,6 +65,9 @@ struct KeypointTrial {
   int chosen = 0;                     // index into people
   std::string chosenReason;
   Eigen::MatrixXd jointsPx;           // frames x 30: u, v per joint (SPEC §1 order), NaN = missing
+  // frames x 15: each joint's confidence, the least of the points it is made of (NaN where
+  // missing); empty for a trial made otherwise (a tracker's, a planar TRC).
+  Eigen::MatrixXd jointConfidence;
   std::array<bool, kJointCount> derived{};  // built from other points (head from the ears, …)
   // Where the points sit relative to joint centres: the layout's detector offsets, or zero
   // (options.detectorOffsets false, or the tracker's own joints). Used by the camera fit.
