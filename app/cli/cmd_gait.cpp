@@ -9,8 +9,12 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <unistd.h>
 
 #include "app/cli/commands.h"
+#include "app/cli/reconstruct_camera.h"
+#include "app/cli/video_input.h"
+#include "core/engine/default_model.h"
 #include "core/common/errors.h"
 #include "core/gait/dataset.h"
 #include "core/gait/gait_measures.h"
@@ -55,6 +59,21 @@ std::vector<GaitEventSet> eventSetsFor(const WalkingTrial& t, const std::string&
 std::vector<CycleCurve> curvesOf(const WalkingTrial& t, const GaitMeasures& g) {
   const JointAngles angles = jointAngles(t.joints.positionsMm, Eigen::Vector3d::UnitZ(), t.joints.file);
   return flexionCycleCurves(angles.degrees, angles.names, t.joints.rateHz, g);
+}
+
+// A video: the walker the built-in detector finds, reconstructed through the unknown camera as
+// `reconstruct --input V.mp4` does (its summary on stderr), written beside the other outputs
+// in a temporary CSV and measured like any reconstruction's.
+TrialFile reconstructedFromVideo(const std::filesystem::path& video, const std::filesystem::path& folder) {
+  CameraArgs c;
+  c.input = video.string();
+  c.out = (folder / (video.stem().string() + "_walk3d.csv")).string();
+  c.modelName = defaultRealModelName();
+  runReconstructCamera(defaultRealModel(), c);
+  TrialFile f;
+  f.path = c.out;
+  f.info.subject = video.stem().string();
+  return f;
 }
 
 std::vector<MeasuredTrial> measureFile(const TrialFile& f, const GaitArgs& args) {
@@ -183,11 +202,30 @@ void printTable(const std::vector<MeasuredTrial>& all) {
 }
 
 int runGait(const GaitArgs& args) {
-  std::vector<std::filesystem::path> paths(args.paths.begin(), args.paths.end());
+  std::vector<std::filesystem::path> paths, videos;
+  for (const auto& p : args.paths) (isVideoFile(p) ? videos : paths).emplace_back(p);
   std::vector<std::string> warnings;
   std::vector<MeasuredTrial> all;
   int failed = 0;
-  for (const auto& f : collectTrialFiles(paths, warnings)) {
+  std::vector<TrialFile> files;
+  std::error_code ec;
+  const auto scratch = std::filesystem::temp_directory_path() / ("eigenwalker_gait_" + std::to_string(::getpid()));
+  for (const auto& v : videos) {
+    try {
+      std::filesystem::create_directories(scratch, ec);
+      TrialFile f = reconstructedFromVideo(v, scratch);
+      for (auto& m : measureFile(f, args)) {
+        m.file = v.string();
+        all.push_back(std::move(m));
+      }
+    } catch (const Error& e) {
+      std::cerr << "error: " << e.what() << "\n";
+      ++failed;
+    }
+  }
+  std::filesystem::remove_all(scratch, ec);
+  if (!paths.empty()) files = collectTrialFiles(paths, warnings);
+  for (const auto& f : files) {
     try {
       for (auto& m : measureFile(f, args)) all.push_back(std::move(m));
     } catch (const Error& e) {
@@ -218,7 +256,8 @@ void addGaitCommand(CLI::App& app, int& exitCode) {
       "gait", "Gait measures of 3D trials: cadence, stride and step length, step width, speed, stance, "
               "swing and double support, and hip/knee/shoulder/elbow flexion over the gait cycle. Exit 1 if "
               "any trial cannot be measured.");
-  cmd->add_option("paths", args->paths, "3D trials (.c3d .bvh .amc .trc .csv .tsv), folders or manifest CSVs")->required();
+  cmd->add_option("paths", args->paths, "3D trials (.c3d .bvh .amc .trc .csv .tsv), folders or manifest CSVs; or a video (.mp4 .mov .avi…): "
+                  "the walker the built-in detector finds, reconstructed through the unknown camera")->required();
   cmd->add_option("--events", args->events,
                   "Foot strikes and offs from: auto (the file's events when it has them, else the kinematics), "
                   "kinematics, file, both (one row each, and their differences on stderr)")

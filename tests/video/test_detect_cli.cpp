@@ -74,6 +74,11 @@ TEST(DetectCli, TheWalkingVideoBecomesAWalkerWithNoOtherTool) {
   EXPECT_NE(info.err.find("from the cache"), std::string::npos) << info.err;
   const json summary = json::parse(info.out.substr(info.out.find('[')))[0];
   EXPECT_GT(summary["frames"].get<int>(), 200);
+  // gait on the video: her measures, from the same detections.
+  const test::ShellRun gait = runCli("gait --json " + video.string(), dir);
+  ASSERT_EQ(gait.exitCode, 0) << gait.err;
+  const json measures = json::parse(gait.out.substr(gait.out.find('[')))[0];
+  EXPECT_NEAR(std::stod(measures["cadence_spm"].get<std::string>()), 60.0 * 2.0 * report["stride_hz"].get<double>(), 10.0);
 }
 
 TEST(DetectCli, VideosItCannotUseAreClearErrors) {
