@@ -39,7 +39,7 @@ nlohmann::json optionsJson(const PoseDetectionOptions& o) {
   return {{"version", kCacheVersion},       {"model", poseModelSizeName(o.model)},
           {"tiles", o.tiles},               {"search_every_s", o.searchEverySeconds},
           {"max_people", o.maxPeople},      {"min_pose_score", o.minPoseScore},
-          {"fix_left_right", o.fixLeftRight}, {"first", o.firstFrame},
+          {"fix_left_right", o.fixLeftRight}, {"smooth_s", o.smoothSeconds}, {"first", o.firstFrame},
           {"last", o.lastFrame}};
 }
 

@@ -170,7 +170,58 @@ int numberPeopleInOrderOfAppearance(PoseDetectionRun& run) {
   return static_cast<int>(renumbered.size());
 }
 
+// Each person's consecutive poses, in runs (a gap starts a new run).
+std::vector<std::vector<PoseLandmarks*>> runsOfEachPerson(PoseDetectionRun& run) {
+  std::vector<std::vector<PoseLandmarks*>> runs;
+  for (int id = 0; id < run.people; ++id) {
+    std::vector<PoseLandmarks*> current;
+    int previous = std::numeric_limits<int>::min();
+    for (std::size_t f = 0; f < run.poses.size(); ++f)
+      for (FollowedPose& p : run.poses[f])
+        if (p.personId == id) {
+          if (static_cast<int>(f) != previous + 1 && !current.empty()) runs.push_back(std::move(current)), current.clear();
+          current.push_back(&p.landmarks);
+          previous = static_cast<int>(f);
+        }
+    if (!current.empty()) runs.push_back(std::move(current));
+  }
+  return runs;
+}
+
 }  // namespace
+
+void smoothLandmarks(const std::vector<PoseLandmarks*>& frames, int halfWindow) {
+  const int n = static_cast<int>(frames.size());
+  if (halfWindow < 1 || n < 2 * halfWindow + 1) return;
+  // Quadratic Savitzky-Golay weights for the centre of 2m+1 points: 
+  // w_i = 3 (3m^2 + 3m - 1 - 5 i^2) / ((2m + 3)(2m + 1)(2m - 1)).
+  const auto weights = [](int m) {
+    std::vector<double> w(static_cast<std::size_t>(2 * m + 1));
+    const double norm = (2.0 * m + 3) * (2.0 * m + 1) * (2.0 * m - 1);
+    for (int i = -m; i <= m; ++i) w[static_cast<std::size_t>(i + m)] = 3.0 * (3.0 * m * m + 3 * m - 1 - 5.0 * i * i) / norm;
+    return w;
+  };
+  std::vector<std::array<double, 2 * kBlazePoseLandmarks>> raw(static_cast<std::size_t>(n));
+  for (int t = 0; t < n; ++t)
+    for (int k = 0; k < kBlazePoseLandmarks; ++k) {
+      raw[static_cast<std::size_t>(t)][static_cast<std::size_t>(2 * k)] = frames[static_cast<std::size_t>(t)]->points[static_cast<std::size_t>(k)].x;
+      raw[static_cast<std::size_t>(t)][static_cast<std::size_t>(2 * k + 1)] = frames[static_cast<std::size_t>(t)]->points[static_cast<std::size_t>(k)].y;
+    }
+  for (int t = 0; t < n; ++t) {
+    const int m = std::min({halfWindow, t, n - 1 - t});  // the window shrinks at the ends
+    if (m < 1) continue;
+    const auto w = weights(m);
+    for (int k = 0; k < kBlazePoseLandmarks; ++k) {
+      double x = 0.0, y = 0.0;
+      for (int i = -m; i <= m; ++i) {
+        x += w[static_cast<std::size_t>(i + m)] * raw[static_cast<std::size_t>(t + i)][static_cast<std::size_t>(2 * k)];
+        y += w[static_cast<std::size_t>(i + m)] * raw[static_cast<std::size_t>(t + i)][static_cast<std::size_t>(2 * k + 1)];
+      }
+      frames[static_cast<std::size_t>(t)]->points[static_cast<std::size_t>(k)].x = x;
+      frames[static_cast<std::size_t>(t)]->points[static_cast<std::size_t>(k)].y = y;
+    }
+  }
+}
 
 void swapLeftRight(PoseLandmarks& pose, LeftRightGroup group) {
   for (const auto& [l, r] : pairsOf(group, false))
@@ -245,6 +296,9 @@ PoseDetectionRun detectPoses(const std::filesystem::path& videoFile, const PoseD
   }
   run.people = numberPeopleInOrderOfAppearance(run);
   if (options.fixLeftRight) fixLeftRightOfEachPerson(run);
+  const int halfWindow = static_cast<int>(std::lround(options.smoothSeconds * (run.video.fps > 0 ? run.video.fps : 30.0) / 2.0));
+  if (halfWindow >= 1)
+    for (const auto& personRun : runsOfEachPerson(run)) smoothLandmarks(personRun, halfWindow);
   run.totalSeconds = secondsSince(start);
   return run;
 }

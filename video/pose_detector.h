@@ -36,6 +36,10 @@ struct PoseDetectionOptions {
   // Left and right labels made consistent through time (a whole-body swap the model makes on
   // a frame is undone): pose_detector.cpp, fixLeftRight.
   bool fixLeftRight = true;
+  // A centred (zero-lag) smoothing of each landmark's path over this span, in seconds: a
+  // quadratic Savitzky-Golay fit, which follows a swinging foot's turn instead of cutting
+  // it as a causal filter's lag does. 0: none (docs/DETECTOR.md, "Smoothing", measures both).
+  double smoothSeconds = 0.0;
   // Frames [firstFrame, lastFrame]; lastFrame −1: to the end.
   int firstFrame = 0;
   int lastFrame = -1;
@@ -88,6 +92,11 @@ inline constexpr double kLimbSwapCost = 0.3;
 // frame, whether to swap.
 std::vector<bool> consistentLeftRight(const std::vector<const PoseLandmarks*>& frames,
                                       LeftRightGroup group = LeftRightGroup::Body, double swapCost = kBodySwapCost);
+
+// Each landmark's x and y over consecutive poses smoothed by a centred quadratic
+// Savitzky-Golay filter of 2 * halfWindow + 1 frames (shrunk at the ends of the run); poses
+// of fewer than 2 * halfWindow + 1 frames are left as they are.
+void smoothLandmarks(const std::vector<PoseLandmarks*>& frames, int halfWindow);
 
 // Swaps the group's left/right pairs of the MediaPipe-33 layout (Body: all 16).
 void swapLeftRight(PoseLandmarks& pose, LeftRightGroup group = LeftRightGroup::Body);

@@ -29,6 +29,7 @@ using nlohmann::json;
 struct DetectArgs {
   std::string video, out, model = "full", format = "mediapipe-csv", compare;
   int first = 0, last = -1, compareOffset = 0;
+  double smoothSeconds = 0.0;
   std::optional<int> person;
   bool noTiles = false, noCache = false, json = false, keepModelLabels = false;
 };
@@ -142,6 +143,7 @@ int runDetect(const DetectArgs& a) {
   o.model = parsePoseModelSize(a.model);
   o.tiles = !a.noTiles;
   o.fixLeftRight = !a.keepModelLabels;
+  o.smoothSeconds = a.smoothSeconds;
   o.firstFrame = a.first;
   o.lastFrame = a.last;
   int lastTenth = -1;
@@ -212,6 +214,9 @@ void addDetectCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--person", args->person, "the person to write as the walker (1-based; default: the one who walks)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--no-tiles", args->noTiles, "look for people in the whole frame only, not also in square tiles");
+  cmd->add_option("--smooth", args->smoothSeconds,
+                  "smooth each landmark's path over this many seconds, centred (no lag; default 0: none)")
+      ->check(CLI::Range(0.0, 2.0));
   cmd->add_flag("--keep-model-labels", args->keepModelLabels,
                 "keep left and right as the landmark model labels each frame (no consistency through time)");
   cmd->add_flag("--no-cache", args->noCache, "detect again even when the detections of this video are cached");
