@@ -61,6 +61,7 @@ struct ReconstructArgs {
   bool noDetectorOffsets = false;   // take a detector's hips for joint centres
   std::string detectModel = "full"; // a video's input: the built-in detector's model (--detect-model)
   std::optional<int> modelLoop;     // --model-loop: rounds of the detection loop
+  std::string corrections;          // --corrections: a keyframe file correcting the keypoints
   std::string imageSize;
   std::string camera, cameraName;   // a calibration file (--camera) and which of its cameras
   std::string engine = "eigenwalker";
@@ -407,6 +408,7 @@ int runReconstruct(const ReconstructArgs& a) {
     c.camera = a.camera, c.cameraName = a.cameraName;
     c.detectModel = a.detectModel;
     c.modelLoop = a.modelLoop;
+    c.corrections = a.corrections;
     return runReconstructCamera(chosen.model, c);
   }
   if (a.elevationDeg || !a.camera.empty())
@@ -549,6 +551,10 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--detect-model", args->detectModel,
                   "For a video: the built-in pose detector's model, lite, full (default) or heavy")
       ->check(CLI::IsMember({"lite", "full", "heavy"}));
+  cmd->add_option("--corrections", args->corrections,
+                  "With --unknown-camera: a keyframe file (docs/TRACKING.md) of joints corrected by hand; each "
+                  "correction is carried to the frames around it (0.25 s either side, fading)")
+      ->check(CLI::ExistingFile);
   cmd->add_option("--model-loop", args->modelLoop,
                   "With --unknown-camera: rounds of the model loop, where joints the detector is unsure of are pulled "
                   "towards the fitted walker and the fit is made again (default 1 for a video, 0 for keypoint files)")

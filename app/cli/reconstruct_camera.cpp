@@ -1,6 +1,8 @@
 #include "app/cli/reconstruct_camera.h"
 #include "app/cli/video_input.h"
 #include "core/camera/detection_loop.h"
+#include "core/tracking/corrected_track.h"
+#include "core/tracking/keyframes.h"
 
 #include <cmath>
 #include <iomanip>
@@ -186,6 +188,25 @@ std::string principalPointPrior(const CameraFitOptions& o, const KeypointTrial& 
   return "none (the image's size unknown: --image-size gives it, or a video beside the keypoints)";
 }
 
+// How far a correction reaches either side of its frame: a detector's errors last a few
+// frames (a swapped leg, a wrist lost against the trunk).
+constexpr double kCorrectionSpanS = 0.25;
+
+// The keypoints corrected by hand (a keyframe file): the track redone around each correction
+// (core/tracking/corrected_track.h); a corrected joint is as sure as can be.
+void applyCorrections(const std::string& file, KeypointTrial& t) {
+  const Keyframes keys = readKeyframes(file);
+  if (t.imageSize) checkMarksWithin(keys, t.imageSize->width, t.imageSize->height, file);
+  const int span = static_cast<int>(std::lround(kCorrectionSpanS * t.rateHz));
+  t.jointsPx = correctTrack(t.jointsPx, keys, span);
+  if (t.jointConfidence.rows() == t.jointsPx.rows())
+    for (const Keyframe& key : keys.keyframes)
+      for (int j = 0; j < kJointCount && key.frame < t.jointConfidence.rows(); ++j)
+        if (std::isfinite(key.jointsPx(2 * j))) t.jointConfidence(key.frame, j) = 1.0;
+  std::cerr << "corrections from " << file << ": " << keys.keyframes.size() << " frames, each carried over "
+            << span << " frames either side\n";
+}
+
 // The model loop's rounds: as asked, else one for a video's detections (whose confidences say
 // where the detector is unsure), none for a keypoint file.
 int modelLoopRounds(const CameraArgs& a) { return a.modelLoop.value_or(isVideoFile(a.input) ? 1 : 0); }
@@ -253,6 +274,7 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   // A video is its own: the built-in detector finds the walker's keypoints in it.
   if (!isVideoFile(a.input)) takeTheVideoBeside(a.input, k);
   KeypointTrial keypoints = keypointTrialOf(a.input, k, {a.detectModel});
+  if (!a.corrections.empty()) applyCorrections(a.corrections, keypoints);
   const json imageSizeFrom = fromCalibration ? "the calibration file (" + a.camera + ")" : keypoints.imageSizeSource;
   const json lens = undistorted(a, calibration, keypoints);
   return fitAndReport(model, a, std::move(keypoints), o, focalSource, lens, imageSizeFrom);

@@ -24,6 +24,8 @@ struct CameraArgs {
   // Rounds of the model loop on the detections' confidences (core/camera/detection_loop.h);
   // unset: 1 for a video, 0 for keypoint files.
   std::optional<int> modelLoop;
+  // A keyframe file of corrections to the keypoints (core/tracking/corrected_track.h).
+  std::string corrections;
 };
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args);
