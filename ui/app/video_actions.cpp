@@ -604,6 +604,7 @@ void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>
     ++s.jobs.failures;
     v.detectError = outcome.error;
     actions::reportError(s, "Could not detect people in " + name, outcome.error);
+    s.jobs.notice->shortTitle = "Detection failed";
     return;
   }
   v.detected = *outcome.value;
@@ -616,6 +617,8 @@ void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>
     actions::reportError(s, "Nobody found in " + name,
                          "the detector found no person in its " + std::to_string(d.framesRead) +
                              " frames. Mark the walker's joints on one frame and track them (Mark the joints).");
+    s.jobs.notice->shortTitle = "Nobody found";
+    v.frame = 0;
     return;
   }
   v.showWalkerWhenFitted = true;

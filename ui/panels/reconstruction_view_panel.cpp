@@ -322,6 +322,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
                                  : s.jobs.detect.running() ? "detecting people… the walker appears when they are found"
                                  : tracked                 ? "no walk fits this track"
                                  : detected                ? "no walk fits the people detected"
+                                 : s.video->detected       ? "nobody detected: mark the joints on one frame, then Track"
                                                            : "detect the walker, or mark the joints on one frame, then Track")
                           : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : unfittedClipMessage(s.jobs.clipError))
                           : s.jobs.busy() ? "building models…" : "nothing to show";

@@ -148,7 +148,7 @@ ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool 
       legend.push_back({palette::kReconRight, "3D walker through the est. camera", true});
       legend.push_back({palette::kError, "residual", true});
     }
-  } else if (v.detecting || (v.detected && !v.tracked)) {
+  } else if (v.detecting || (v.detected && v.detected->people > 0 && !v.tracked)) {
     legend.push_back({palette::confidenceColour(1.0f), "detected: visible", false});
     legend.push_back({palette::confidenceColour(0.0f), "detected: hidden", false});
   } else if (v.tracked) {
