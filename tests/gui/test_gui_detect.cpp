@@ -13,6 +13,7 @@
 #include <string>
 
 #include "tests/gui/gui_run.h"
+#include "tests/gui/layout_checks.h"
 #include "tests/video/pose_models.h"
 
 namespace ew::test::gui {
@@ -85,6 +86,7 @@ TEST_F(GuiDetect, DetectsTheSports2dWalkerAndFitsHerOverTheFootage) {
   EXPECT_LE(fit["stature_m"].get<double>(), 1.75);
   EXPECT_GE(fit["stride_hz"].get<double>(), 0.7);
   EXPECT_LE(fit["stride_hz"].get<double>(), 1.3);
+  expectLayoutHolds(s, "demo.mp4 detected, 1600x900", {"input"});
   // The 2D view shows a frame of hers with the footage under the fit.
   EXPECT_GE(s["video"]["shown_frame"].get<int>(), 0);
   const cv::Mat shot = load("detected.png");
@@ -116,6 +118,7 @@ TEST_F(GuiDetect, SaysWhichCommandFetchesTheModelsWhenTheyAreMissing) {
   EXPECT_EQ(opened["notice"]["title"], "Detecting people needs the pose models");
   EXPECT_NE(opened["notice"]["detail"].get<std::string>().find("tools/pose_model/fetch_model.sh"), std::string::npos);
   EXPECT_FALSE(opened["video"]["detection"]["running"].get<bool>());
+  expectLayoutHolds(opened, "the models missing, 1280x720", {});
   const json asked = state("asked.json");
   EXPECT_NE(asked["video"]["detection"]["error"].get<std::string>().find("fetch_model.sh"), std::string::npos);
 }
@@ -137,6 +140,7 @@ TEST_F(GuiDetect, SaysSoWhenNobodyIsFound) {
   EXPECT_EQ(s["video"]["detection"]["done"]["frames"], 12);
   EXPECT_EQ(s["notice"]["title"], "Nobody found in nobody.avi");
   EXPECT_TRUE(s["clip"].is_null());
+  expectLayoutHolds(s, "nobody found, 1280x720", {});
 }
 
 }  // namespace

@@ -92,7 +92,7 @@ void detecting(AppState& s, const VideoSession& v) {
     ImGui::PopStyleColor();
   }
   bool onOpen = s.view.detectWhenVideoOpens;
-  if (ImGui::Checkbox("Detect when a video opens", &onOpen)) actions::setDetectWhenVideoOpens(s, onOpen);
+  if (checkboxWrapped("Detect when a video opens", &onOpen)) actions::setDetectWhenVideoOpens(s, onOpen);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("A video opened alone is handed to the detector at once\n"
                       "(opened with its keyframe file, it is for marking and tracking)");
