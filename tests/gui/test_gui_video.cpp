@@ -116,6 +116,7 @@ TEST_F(GuiVideo, WhileMarkingCtrlZUndoesTheKeyframes) {
 TEST_F(GuiVideo, PlaysTheVideosOwnFramesBeforeATrack) {
   const Footage f = writeWalkingFootage(dir);
   const json script = json::array({
+      {{"detect_on_open", false}},
       {{"open", f.video.string()}},
       {{"video_frame", 10}},
       {{"play", true}},
@@ -141,7 +142,8 @@ TEST_F(GuiVideo, MagnifiesThePictureToMarkTheWalker) {
   const int pelvis = index(Joint::Pelvis);
   const json centre = {f.truthPx(0, 2 * pelvis), f.truthPx(0, 2 * pelvis + 1)};
   const RunResult r =
-      runWholeZoomedWhole(dir, json::array({{{"open", f.video.string()}}}), "video_zoom", 4.0, centre);
+      runWholeZoomedWhole(dir, json::array({{{"detect_on_open", false}}, {{"open", f.video.string()}}}),
+                          "video_zoom", 4.0, centre);
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   const json whole = state("whole.json"), zoomed = state("zoomed.json"), again = state("again.json");
   EXPECT_EQ(zoomed["video"]["zoom"], 4.0);
@@ -163,7 +165,8 @@ TEST_F(GuiVideo, MagnifiesThePictureToMarkTheWalker) {
 // click shows the whole picture again.
 TEST_F(GuiVideo, TheMouseMagnifiesAboutTheCursorAndDragsThePicture) {
   const Footage f = writeWalkingFootage(dir);
-  const auto first = writeScript(dir, json::array({{{"open", f.video.string()}},
+  const auto first = writeScript(dir, json::array({{{"detect_on_open", false}},
+                                                   {{"open", f.video.string()}},
                                                    {{"wait_frames", 2}},
                                                    {{"export_state", path("layout.json")}}})
                                           .dump());
@@ -175,6 +178,7 @@ TEST_F(GuiVideo, TheMouseMagnifiesAboutTheCursorAndDragsThePicture) {
   // A point two fifths across the view and half-way down: on the picture, off its middle.
   const double px = view[0] + 0.4 * view[2], py = view[1] + 0.5 * view[3];
   const json script = json::array({
+      {{"detect_on_open", false}},
       {{"open", f.video.string()}},
       {{"wait_frames", 2}},
       {{"mouse", {{"at", {px, py}}}}},
@@ -358,6 +362,7 @@ TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideStatureAndProfile) {
                                  [](const Keyframe& k) { return k.frame == 120; });
   ASSERT_NE(k120, marks.keyframes.end());
   const json script = json::array({
+      {{"detect_on_open", false}},
       {{"open", json::array({clip.string()})}},
       {{"video_frame", 120}},
       {{"start_marking", true}},
@@ -459,6 +464,7 @@ TEST_F(GuiVideo, MarksAFrameFromAPoseEstimatorsKeypoints) {
   const fs::path detected = dir / "detected";
   writeOpenPoseBody25(detected, {{f.truthPx, Eigen::MatrixXd::Ones(f.truthPx.rows(), 15)}});
   const json script = json::array({
+      {{"detect_on_open", false}},
       {{"open", f.video.string()}},
       {{"video_frame", 12}},
       {{"mark_from_keypoints", detected.string()}},
@@ -491,6 +497,7 @@ TEST_F(GuiVideo, AKeypointClipOpenedAfterAVideoReplacesIt) {
   const fs::path detected = dir / "detected";
   writeOpenPoseBody25(detected, {{f.truthPx, Eigen::MatrixXd::Ones(f.truthPx.rows(), 15)}});
   const json script = json::array({
+      {{"detect_on_open", false}},
       {{"open", json::array({f.video.string(), detected.string()})}},
       {{"export_state", path("together.json")}},
       {{"open", detected.string()}},
@@ -543,6 +550,7 @@ TEST_F(GuiVideo, KeepsATrackNoWalkFitsOnScreenAndSaysWhy) {
   EW_REQUIRE_SHARED_DATA();
   const fs::path trial = sharedDataDir() / "pose2sim-balancing";
   const json script = json::array({
+      {{"detect_on_open", false}},
       {{"open", (trial / "videos" / "cam01.mp4").string()}},
       {{"mark_from_keypoints", (trial / "pose" / "cam01_json").string()}},
       {{"expect_failure", {{"track_video", {{"first", 0}, {"last", 99}, {"hold_trunk", true}}}}}},
@@ -580,6 +588,7 @@ TEST_F(GuiVideo, UprightFootageStandsBesideItsCaptionAtFullHeight) {
     }
   }
   const json script = json::array({
+      {{"detect_on_open", false}},
       {{"open", video.string()}},
       {{"video_frame", 3}},
       {{"wait_frames", 2}},

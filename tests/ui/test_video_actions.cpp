@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -157,6 +159,7 @@ TEST(VideoActions, AVideoOrItsKeyframeFileDroppedOpensIt) {
   const auto &dir = f.dir, &video = f.video, &keys = f.keys;
 
   AppState dropped;
+  dropped.view.detectWhenVideoOpens = false;  // opening only (the detector: the test below)
   actions::drop(dropped, {video});
   ASSERT_TRUE(dropped.video.has_value());
   EXPECT_EQ(dropped.video->path, video);
@@ -183,6 +186,44 @@ TEST(VideoActions, AVideoOrItsKeyframeFileDroppedOpensIt) {
   EXPECT_GE(browserFormat("keys.json"), 0);
   EXPECT_GE(browserFormat("model.ewm"), 0);
   EXPECT_EQ(browserFormat("notes.txt"), -1);
+}
+
+// Issue 52: a video dropped alone goes to the built-in detector; with its keyframe file it is
+// for marking and is not detected. Without the models it opens all the same, and the amber
+// banner says which command fetches them; tracking is refused while a detection runs.
+TEST(VideoActions, AVideoDroppedAloneGoesToTheDetectorAndSaysWhenTheModelsAreMissing) {
+  const Filmed f = filmWithKeyframes("video_actions_detect", 12, {0, 6});
+  const auto noModels = f.dir / "no_models";
+  std::filesystem::create_directories(noModels);
+  const char* before = std::getenv("EIGENWALKER_MODELS");
+  const std::string kept = before ? before : "";
+  setenv("EIGENWALKER_MODELS", noModels.c_str(), 1);
+
+  AppState alone;
+  actions::drop(alone, {f.video});
+  ASSERT_TRUE(alone.video.has_value()) << "opened for marking all the same";
+  EXPECT_FALSE(alone.jobs.detect.running());
+  ASSERT_TRUE(alone.jobs.notice.has_value());
+  EXPECT_FALSE(alone.jobs.notice->error);
+  EXPECT_EQ(alone.jobs.notice->title, "Detecting people needs the pose models");
+  EXPECT_NE(alone.jobs.notice->detail.find("tools/pose_model/fetch_model.sh"), std::string::npos);
+  EXPECT_EQ(alone.jobs.failures, 0);
+  EXPECT_THROW(actions::startDetection(alone), std::invalid_argument);
+  EXPECT_NE(alone.video->detectError.find("fetch_model.sh"), std::string::npos);
+
+  AppState withKeys;
+  actions::drop(withKeys, {f.video, f.keys});
+  ASSERT_TRUE(withKeys.video.has_value());
+  EXPECT_FALSE(withKeys.jobs.notice.has_value()) << "a video with its keyframes is not detected";
+  EXPECT_TRUE(withKeys.video->detectError.empty());
+
+  AppState off;
+  actions::setDetectWhenVideoOpens(off, false);
+  actions::drop(off, {f.video});
+  EXPECT_FALSE(off.jobs.notice.has_value());
+
+  if (before) setenv("EIGENWALKER_MODELS", kept.c_str(), 1);
+  else unsetenv("EIGENWALKER_MODELS");
 }
 
 // The viewer saves a track as `eigenwalker-cli track --out` does (the same files, read back to

@@ -367,7 +367,17 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& c) {
   for (const auto& caution : c->rec.cautions) s.log.warning(caution);
   if (s.jobs.lastError.starts_with("Clip fit failed")) s.jobs.lastError.clear();
   // A video's track: the fit shows the frame the user is at.
-  if (c->settings.tracked && s.video) setVideoFrame(s, s.video->frame);
+  if ((c->settings.tracked || c->settings.detected) && s.video) {
+    // A detection's first fit shows the walker halfway through the frames it is seen on.
+    if (c->settings.detected && std::exchange(s.video->showWalkerWhenFitted, false)) {
+      const auto& t = c->rec.trial;
+      if (t.chosen >= 0 && t.chosen < static_cast<int>(t.people.size())) {
+        const auto& seen = t.people[static_cast<std::size_t>(t.chosen)].frames;
+        if (!seen.empty()) s.video->frame = seen[seen.size() / 2];
+      }
+    }
+    setVideoFrame(s, s.video->frame);
+  }
   if (newClip) {
     dismissNotice(s);
     frameClipScene(s, *c);
@@ -413,6 +423,11 @@ void clipFailed(AppState& s, const std::string& error) {
   if (s.jobs.clipRunning.tracked) {
     // The video opened and tracked; opening it again would not fit the walk either.
     reportError(s, "No walk fits the track of " + s.jobs.clipRunning.path.filename().string(),
+                error);
+    return;
+  }
+  if (s.jobs.clipRunning.detected) {
+    reportError(s, "No walk fits the people detected in " + s.jobs.clipRunning.path.filename().string(),
                 error);
     return;
   }
@@ -468,6 +483,17 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
       }
     }
   }
+  // A video alone goes to the detector; with its keyframes, it is for marking and tracking.
+  if (opened && keyframeFiles.empty() && s.view.detectWhenVideoOpens) {
+    try {
+      startDetection(s);
+    } catch (const std::exception& e) {
+      // The video is open all the same: its joints can be marked and tracked.
+      const bool noModels = s.video && !s.video->detectError.empty();
+      reportNote(s, noModels ? "Detecting people needs the pose models" : "Detection did not start", e.what(),
+                 noModels ? "Pose models missing" : "");
+    }
+  }
   for (const auto& k : keyframeFiles) {
     try {
       // The video the file names, beside it, unless that one is open (the video opened with
@@ -510,6 +536,16 @@ void reportError(AppState& s, const std::string& title, const std::string& detai
   n.detail = detail;
   n.fullText = s.jobs.lastError;
   n.kept = keptDescription(s);
+  showNotice(s, std::move(n));
+}
+
+void reportNote(AppState& s, const std::string& title, const std::string& detail, const std::string& shortTitle) {
+  s.log.warning(detail.empty() ? title : title + ": " + detail);
+  OpenNotice n;
+  n.error = false;
+  n.title = title;
+  n.shortTitle = shortTitle;
+  n.detail = n.fullText = detail;
   showNotice(s, std::move(n));
 }
 

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/mapping/mapping_file.h"
@@ -27,6 +28,9 @@ void pollJobs(AppState& s);
 std::string describePaths(const std::vector<std::filesystem::path>& paths);
 // An error banner (title, the reason, what is still shown) and lastError; no Retry.
 void reportError(AppState& s, const std::string& title, const std::string& detail);
+// An amber banner (not an error: nothing failed, but the user should know), and the log.
+void reportNote(AppState& s, const std::string& title, const std::string& detail,
+                const std::string& shortTitle = "");
 // "Could not open PATHS" with the reason, and Retry (which opens `paths` again).
 void reportOpenError(AppState& s, const std::vector<std::filesystem::path>& paths,
                      const std::string& message);
@@ -252,10 +256,34 @@ std::shared_ptr<const EigenwalkerModel> modelForTracking(AppState& s);
 void startTracking(AppState& s);
 void cancelTracking(AppState& s);
 void closeVideo(AppState& s);
-// The video frame the 2D view shows: the tracked clip's playback frame, else the scrubbed one.
+// The video frame the 2D view shows: the fitted clip's playback frame (its track's or its
+// detections'), else the scrubbed one.
 int shownVideoFrame(const AppState& s);
 // The clip shown is the fit of the open video's last track.
 bool showsTrackFit(const AppState& s);
+// The clip shown is the fit of the open video's last detection.
+bool showsDetectionFit(const AppState& s);
+// Either: the open video's footage goes under the clip's fit.
+bool showsVideoFit(const AppState& s);
+// The video frames [first, last] the fitted clip covers (showsVideoFit), else nullopt.
+std::optional<std::pair<int, int>> videoFitFrames(const AppState& s);
+
+// [SECTION] Detecting the walker (ui/app/detection.h, docs/VIEWER.md "Detecting the walker")
+// Finds the people in the open video with the built-in detector on a worker, through the
+// detection cache; the 2D view draws each frame's people as they are found. When done, the
+// walker's keypoints are fitted as a keypoint clip with the video (the fit over its footage);
+// a video with nobody in it is reported. Throws std::invalid_argument when no video is open, a
+// detection or a track is running, or the models are missing (missingPoseModelAdvice()).
+void startDetection(AppState& s);
+void cancelDetection(AppState& s);
+// Which BlazePose landmark model the next detection uses (lite, full, heavy).
+void setDetectorModel(AppState& s, PoseModelSize model);
+// The last detection's keypoints fitted again as the clip (after a track took its place).
+void fitDetections(AppState& s);
+// The open video's people found on `frame`: the running detection's, else the last one's.
+std::vector<KeypointDetection> detectionsOn(const AppState& s, int frame);
+// Whether a video opened alone (no keyframe file with it) is handed to the detector.
+void setDetectWhenVideoOpens(AppState& s, bool detect);
 // One frame on (delta > 0) or back, of what the views show: the video's own frames while its
 // joints are marked or before it is tracked, the clip's frames (round its ends, as playback
 // loops), else 1/60 s of the synthesised walker's cycle. Pauses a clip or video.

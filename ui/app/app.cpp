@@ -277,16 +277,20 @@ class App {
 
   // Shows the frame just drawn: the changed rectangles when the back buffer is kept,
   // a swap otherwise. Without swaps nothing waits for the display, so an interactive
-  // run sleeps out the rest of a 60 Hz frame instead of redrawing as fast as it can.
+  // run sleeps out the rest of a 60 Hz frame instead of redrawing as fast as it can. A
+  // scripted run draws as fast as it can, except while it waits for a background job (a
+  // detection, a track, a model build): then 10 frames a second, and the job has the processor
+  // (with software GL, as under xvfb, a frame costs as much as a detected one).
   void present(std::chrono::steady_clock::time_point frameStart) {
     if (!presenter_) {
       glfwSwapBuffers(window_.get());
-      return;
+    } else {
+      int w = 0, h = 0;
+      glfwGetFramebufferSize(window_.get(), &w, &h);
+      presenter_->present(compositor_.changed(), h);
+      if (!scripted_) std::this_thread::sleep_until(frameStart + std::chrono::microseconds(16667));
     }
-    int w = 0, h = 0;
-    glfwGetFramebufferSize(window_.get(), &w, &h);
-    presenter_->present(compositor_.changed(), h);
-    if (!scripted_) std::this_thread::sleep_until(frameStart + std::chrono::microseconds(16667));
+    if (scripted_ && state_.jobs.busy()) std::this_thread::sleep_until(frameStart + std::chrono::milliseconds(100));
   }
 
   int loop() {

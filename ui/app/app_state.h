@@ -93,6 +93,7 @@ struct Jobs {
   BackgroundJob<std::shared_ptr<const DataSummary>> summary;      // the Data window's table
   BackgroundJob<std::shared_ptr<const ClipResult>> clip;           // a keypoint clip's camera fit
   BackgroundJob<std::shared_ptr<const TrackedVideo>> track;  // joints tracked through a video
+  BackgroundJob<std::shared_ptr<const DetectedVideo>> detect;  // people found in a video
   ClipSettings clipRunning;                  // the settings of the running clip fit
   std::optional<ClipSettings> clipFailed;    // not retried until the settings change
   std::string clipError;                     // why that fit failed (the controls show it)
@@ -110,7 +111,7 @@ struct Jobs {
 
   bool busy() const {
     return load.running() || models.running() || analysis.running() || summary.running() ||
-           clip.running() || track.running() || pendingOpen.has_value();
+           clip.running() || track.running() || detect.running() || pendingOpen.has_value();
   }
 };
 

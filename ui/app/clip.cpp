@@ -42,13 +42,19 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   o.elevationDeg = settings.elevationDeg;
   // A tracker's joints: its trunk holds where the crossing feet are lost (docs/TRACKING.md).
   if (settings.tracked) holdTheTrunksStride(*settings.tracked, o);
-  ClipResult r{settings,
-               model,
-               settings.tracked ? reconstructKeypointTrial(*model.model, *settings.tracked, o)
-                                : reconstructKeypointClip(*model.model, settings.path, k, o),
-               0.0,
-               {},
-               {}};
+  ClipResult r{settings, model, {}, 0.0, {}, {}};
+  if (settings.tracked) {
+    r.rec = reconstructKeypointTrial(*model.model, *settings.tracked, o);
+  } else if (settings.detected) {
+    // As `reconstruct --input V.mp4` reads a video (app/cli/video_input.cpp): the size and
+    // the rate are the video's, said so.
+    KeypointFrames frames = *settings.detected;
+    frames.imageSize.reset();
+    frames.rateHz.reset();
+    r.rec = reconstructKeypointTrial(*model.model, cleanKeypoints(frames, k), o);
+  } else {
+    r.rec = reconstructKeypointClip(*model.model, settings.path, k, o);
+  }
   extend(r.keypointBounds, r.rec.trial.jointsPx);
   r.shownBounds = r.keypointBounds;
   extend(r.shownBounds, r.rec.reprojectedPx);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/camera/clip_reconstruction.h"
+#include "core/keypoints/keypoint_frames.h"
 #include "core/engine/model.h"
 
 namespace ew::ui {
@@ -30,6 +31,10 @@ struct ClipSettings {
   // A video's tracked joints (ui/app/video.h) instead of a file: `path` is the video; layout,
   // fps and person do not apply.
   std::shared_ptr<const KeypointTrial> tracked;
+  // A video's people found by the built-in detector (ui/app/detection.h) instead of a file:
+  // `path` is the video, `video` its size and rate; read as a MediaPipe-33 file is (person,
+  // fps apply; the layout is the detector's).
+  std::shared_ptr<const KeypointFrames> detected;
   bool operator==(const ClipSettings&) const = default;
 };
 

@@ -19,6 +19,7 @@
 #include "ui/app/model_set.h"
 #include "ui/app/population.h"
 #include "ui/render/camera.h"
+#include "video/pose_model_files.h"
 
 namespace ew::ui {
 
@@ -146,6 +147,9 @@ struct ViewState {
   // about the image pixel (x right, y down) at its middle; a new clip starts at 1.
   double clipZoom = 1.0;
   double clipZoomCentreX = 0.0, clipZoomCentreY = 0.0;
+  // A video opened alone (no keyframe file with it) is handed to the built-in detector.
+  bool detectWhenVideoOpens = true;
+  PoseModelSize detectorModel = PoseModelSize::Full;  // BlazePose's landmark model for the next detection
 };
 
 }  // namespace ew::ui

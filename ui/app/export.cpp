@@ -199,9 +199,8 @@ bool VideoExport::step(const AppState& s, Renderer& renderer, double budgetMs) {
       // A keypoint clip: its input frames in image pixels, the walker where the camera saw it
       // (over the footage, for a tracked video).
       frame = clipFrameAt(*s.clip, cycles);
-      if (actions::showsTrackFit(s)) {  // its footage goes under it
-        renderFootage(m.footage, m.left, m.scene, s, renderer, lineScale, s.video->tracked->track.firstFrame + frame,
-                      aspectLeft);
+      if (const auto fit = actions::videoFitFrames(s)) {  // its footage goes under it
+        renderFootage(m.footage, m.left, m.scene, s, renderer, lineScale, fit->first + frame, aspectLeft);
       } else {
         const ClipImageFrame image = clipImageFrame(*s.clip, aspectLeft);
         buildClipInputScene(s, m.scene, lineScale, frame, image);

@@ -31,7 +31,8 @@ const std::set<std::string>& knownActions() {
       "set_engine", "video_frame", "video_zoom", "clip_zoom", "mark_joints", "start_marking", "stop_marking", "skip_joint",
       "undo_keyframes", "redo_keyframes", "remove_keyframe", "save_keyframes", "save_track", "mark_from_keypoints", "drag_joint", "track_video",
       "close_video", "export_gait_report", "compare_engines", "show_engine", "analysis_engines", "drawer_tab",
-      "set_semantic", "presentation", "key", "undo", "redo", "header_more", "mouse"};
+      "set_semantic", "presentation", "key", "undo", "redo", "header_more", "mouse", "detect_video",
+      "detect_on_open"};
   // clang-format on
   return names;
 }
@@ -319,6 +320,9 @@ void applyAction(AppState& s, const ScriptAction& a) {
     actions::markFromKeypoints(s, text(a));
   } else if (n == "close_video") {
     actions::closeVideo(s);
+  } else if (n == "detect_on_open") {
+    if (!a.argument.is_boolean()) throw std::invalid_argument("expects true or false");
+    actions::setDetectWhenVideoOpens(s, a.argument.get<bool>());
   } else if (n == "set_angle") {
     actions::setAngle(s, number(a));
   } else if (n == "set_method") {
@@ -504,6 +508,35 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
     failuresBefore_ = s.jobs.failures;
     checkLoad_ = true;
     actions::startTracking(s);
+  } else if (n == "detect_video") {
+    // A path, or {"path": P[, "model": "lite" | "full" | "heavy"]}: the video opened as a drop
+    // opens it and its people detected, then the walker fitted, in the background; a detection
+    // that finds nobody, or a fit that fails, fails the script like a failed open.
+    const auto& arg = a.argument;
+    const bool object = arg.is_object() && arg.contains("path") && arg["path"].is_string();
+    if (!arg.is_string() && !object)
+      throw std::invalid_argument(R"(expects a path or {"path": P, "model": "full"})");
+    if (object && arg.contains("model")) {
+      if (!arg["model"].is_string()) throw std::invalid_argument(R"("model" is "lite", "full" or "heavy")");
+      try {
+        actions::setDetectorModel(s, parsePoseModelSize(arg["model"].get<std::string>(), "model"));
+      } catch (const std::exception& e) {
+        throw std::invalid_argument(e.what());
+      }
+    }
+    const std::filesystem::path video = object ? arg["path"].get<std::string>() : arg.get<std::string>();
+    if (!isVideoFile(video)) throw std::invalid_argument(video.string() + ": not a video (.mp4 .avi .mov …)");
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = true;
+    const bool onOpen = std::exchange(s.view.detectWhenVideoOpens, true);
+    actions::open(s, {video});
+    s.view.detectWhenVideoOpens = onOpen;
+    if (s.jobs.failures != failuresBefore_) return;  // the video did not open: said as a failed open
+    if (!s.jobs.detect.running()) {
+      checkLoad_ = false;
+      throw std::invalid_argument(s.video && !s.video->detectError.empty() ? s.video->detectError
+                                                                           : "the detection did not start");
+    }
   } else if (n == "drag_joint") {
     // {"r_knee": [x, y]}: one joint dragged there on the frame shown and let go; a tracked
     // video is tracked again, and the script waits for it as for track_video.

@@ -135,7 +135,8 @@ nlohmann::json clipJson(const AppState& s) {
                       {"azimuth_deg_fixed", optionalJson(c.alphaDeg)},
                       {"elevation_deg_fixed", optionalJson(c.elevationDeg)},
                       {"image_size_given", imageSizeJson(c.imageSize)},
-                      {"fit_error", s.jobs.clipError}};
+                      {"fit_error", s.jobs.clipError},
+                      {"source", c.tracked ? "track" : c.detected ? "detections" : "file"}};
   if (!s.clip) return j;
   const ClipResult& r = *s.clip;
   const CameraFit& f = r.rec.fit;
@@ -205,6 +206,21 @@ nlohmann::json videoJson(const AppState& s) {
                       {"flatten_background", v.flattenBackground},
                       {"hold_trunk", v.holdTheTrunk},
                       {"model_loop", v.modelLoopRounds}};
+  j["detection"] = {{"running", s.jobs.detect.running()},
+                    {"model", std::string(poseModelSizeName(s.view.detectorModel))},
+                    {"error", v.detectError},
+                    {"shows_fit", actions::showsDetectionFit(s)},
+                    {"when_opened", s.view.detectWhenVideoOpens}};
+  if (v.detecting) j["detection"]["latest_frame"] = v.detecting->latestFrame();
+  if (v.detected) {
+    const DetectedVideo& d = *v.detected;
+    j["detection"]["done"] = {{"model", std::string(poseModelSizeName(d.model))},
+                              {"people", d.people},
+                              {"frames", d.framesRead},
+                              {"frames_with_people", d.framesWithPeople},
+                              {"from_cache", d.fromCache},
+                              {"seconds", d.seconds}};
+  }
   if (v.tracked) {
     const auto& t = *v.tracked;
     j["track"] = {{"tracker", trackerName(t.tracker)},

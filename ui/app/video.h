@@ -16,6 +16,7 @@
 #include "core/engine/model.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/tracking/keyframes.h"
+#include "ui/app/detection.h"
 #include "video/frame_cache.h"
 #include "video/joint_tracker.h"
 #include "video/model_loop.h"
@@ -69,6 +70,14 @@ struct VideoSession {
   std::shared_ptr<const TrackedVideo> tracked;  // the last finished track
   bool trackAgainWhenStopped = false;  // a joint let go while tracking: the running one stops
   std::string trackError;                       // why the last track failed ("" when none)
+  // The built-in detector (ui/app/detection.h): the running detection's frames as they come,
+  // the last finished one, and why the last could not run.
+  std::shared_ptr<LiveDetections> detecting;
+  std::shared_ptr<const DetectedVideo> detected;
+  std::string detectError;
+  // While detecting, the view shows the frame done last, until the user picks a frame.
+  bool followDetection = false;
+  bool showWalkerWhenFitted = false;  // the detection's first fit goes to the walker's frames
   std::string decodeErrorShown;  // the frame cache's decoding error last put in the banner
   // The frame last drawn and its number: shown while the frame asked for is decoding.
   std::shared_ptr<const cv::Mat> shown;

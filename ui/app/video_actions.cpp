@@ -1,17 +1,20 @@
 // The video actions of ui/app/actions.h ([SECTION] Video): opening, scrubbing, marking
 // keyframes with undo, and tracking on a worker whose track becomes a keypoint clip.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 
 #include "core/common/errors.h"
 #include "core/tracking/track_confidence.h"
 #include "ui/app/actions.h"
 #include "ui/app/video_poll.h"
+#include "video/pose_model_files.h"
 #include "video/track_files.h"
 
 namespace ew::ui::actions {
@@ -222,10 +225,10 @@ void setVideoFrame(AppState& s, int frame) {
   v.frame = std::clamp(frame, 0, std::max(v.frameCount() - 1, 0));
   v.playedFrames = 0.0;
   if (v.marking) v.markStep = nextUnmarked(v, 0);
-  // A tracked clip shows this frame too, when it covers it.
-  if (showsTrackFit(s) && v.frame >= v.tracked->track.firstFrame &&
-      v.frame <= v.tracked->lastFrame())
-    setClipFrame(s, v.frame - v.tracked->track.firstFrame + 1);
+  v.followDetection = false;  // the user's frame, not the detection's
+  // A tracked or detected clip shows this frame too, when it covers it.
+  if (const auto fit = videoFitFrames(s); fit && v.frame >= fit->first && v.frame <= fit->second)
+    setClipFrame(s, v.frame - fit->first + 1);
   s.view.playback.playing = false;
 }
 
@@ -367,6 +370,7 @@ std::function<bool(double)> frameProgress(JobProgress& p, int first, int last) {
 void startTracking(AppState& s) {
   VideoSession& v = session(s);
   if (s.jobs.track.running()) throw std::invalid_argument("a track is running");
+  if (s.jobs.detect.running()) throw std::invalid_argument("a detection is running: wait for it, or cancel it");
   const int last = v.lastFrame < 0 ? v.frameCount() - 1 : v.lastFrame;
   const bool any = std::any_of(
       v.keyframes.keyframes.begin(), v.keyframes.keyframes.end(), [&](const Keyframe& k) {
@@ -407,10 +411,72 @@ void startTracking(AppState& s) {
 
 void cancelTracking(AppState& s) { s.jobs.track.cancel(); }
 
+void startDetection(AppState& s) {
+  VideoSession& v = session(s);
+  // A detection cancelled (its video closed) stops at its next frame: waited for.
+  while (s.jobs.detect.running() && s.jobs.detect.cancelled() && !s.jobs.detect.poll())
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  if (s.jobs.detect.running()) throw std::invalid_argument("a detection is running");
+  if (s.jobs.track.running()) throw std::invalid_argument("a track is running: wait for it, or cancel it");
+  if (!findPoseModels(s.view.detectorModel)) {
+    v.detectError = missingPoseModelAdvice();
+    throw std::invalid_argument(v.detectError);
+  }
+  v.detectError.clear();
+  v.marking = false;
+  v.detecting = std::make_shared<LiveDetections>();
+  v.followDetection = true;
+  s.view.playback.playing = false;
+  const std::string title = "Detecting people in " + v.path.filename().string() + " (BlazePose " +
+                            std::string(poseModelSizeName(s.view.detectorModel)) + ")";
+  s.log.info(title);
+  s.jobs.detect.start(title, [path = v.path, model = s.view.detectorModel, live = v.detecting](JobProgress& p) {
+    const auto progress = [&p](int done, int total) {
+      try {
+        p.set(done, total, "frame " + std::to_string(done) + " of " + std::to_string(total));
+        return true;
+      } catch (const JobCancelled&) {
+        return false;
+      }
+    };
+    return std::make_shared<const DetectedVideo>(detectVideo(path, model, live, progress));
+  });
+}
+
+void cancelDetection(AppState& s) { s.jobs.detect.cancel(); }
+
+void setDetectorModel(AppState& s, PoseModelSize model) { s.view.detectorModel = model; }
+
+void setDetectWhenVideoOpens(AppState& s, bool detect) { s.view.detectWhenVideoOpens = detect; }
+
+void fitDetections(AppState& s) {
+  VideoSession& v = session(s);
+  if (!v.detected || v.detected->people == 0) throw std::invalid_argument("no people detected in this video yet");
+  // Fitted as a clip, keeping the camera values the user held for this video.
+  ClipSettings c = s.doc.clip && s.doc.clip->path == v.path ? *s.doc.clip : ClipSettings{};
+  c.path = v.path;
+  c.tracked.reset();
+  c.detected = v.detected->frames;
+  c.video = keypointVideoOf(*v.detected);
+  s.doc.clip = c;
+  s.doc.mode = Mode::Clip;
+  s.jobs.clipFailed.reset();
+}
+
+std::vector<KeypointDetection> detectionsOn(const AppState& s, int frame) {
+  if (!s.video) return {};
+  const VideoSession& v = *s.video;
+  if (v.detecting) return v.detecting->at(frame);
+  if (v.detected && frame >= 0 && frame < v.detected->frames->frameCount())
+    return v.detected->frames->frames[static_cast<std::size_t>(frame)];
+  return {};
+}
+
 void closeVideo(AppState& s) {
   if (!s.video) return;
   s.jobs.track.cancel();
-  if (s.doc.clip && s.doc.clip->tracked) closeClip(s);
+  s.jobs.detect.cancel();
+  if (s.doc.clip && (s.doc.clip->tracked || s.doc.clip->detected)) closeClip(s);
   s.video.reset();
 }
 
@@ -419,16 +485,30 @@ bool showsTrackFit(const AppState& s) {
          s.clip->settings.tracked == s.video->tracked->trial;
 }
 
+bool showsDetectionFit(const AppState& s) {
+  return s.video && s.clip && s.video->detected && s.clip->settings.detected &&
+         s.clip->settings.detected == s.video->detected->frames;
+}
+
+bool showsVideoFit(const AppState& s) { return showsTrackFit(s) || showsDetectionFit(s); }
+
+std::optional<std::pair<int, int>> videoFitFrames(const AppState& s) {
+  if (showsTrackFit(s)) return std::pair{s.video->tracked->track.firstFrame, s.video->tracked->lastFrame()};
+  // The detector's clip numbers its frames as the video does (keypointFramesOf).
+  if (showsDetectionFit(s)) return std::pair{0, std::max(s.clip->rec.trial.frameCount - 1, 0)};
+  return std::nullopt;
+}
+
 int shownVideoFrame(const AppState& s) {
   if (!s.video) return 0;
   const VideoSession& v = *s.video;
-  if (!v.marking && showsTrackFit(s))
-    return v.tracked->track.firstFrame + clipFrameAt(*s.clip, s.view.playback.cycles);
+  if (!v.marking)
+    if (const auto fit = videoFitFrames(s)) return fit->first + clipFrameAt(*s.clip, s.view.playback.cycles);
   return v.frame;
 }
 
 bool stepsVideoFrames(const AppState& s) {
-  return s.doc.mode == Mode::Clip && s.video && (s.video->marking || !showsTrackFit(s));
+  return s.doc.mode == Mode::Clip && s.video && (s.video->marking || !showsVideoFit(s));
 }
 
 namespace {
@@ -507,8 +587,54 @@ void reportDecodingError(AppState& s) {
                            (v.frameCount() == 1 ? " frame" : " frames"));
 }
 
+namespace {
+
+// A finished detection: the walker's keypoints fitted as the clip; nobody found, or a
+// detection that failed, said in the banner; a cancelled one logged.
+void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>& outcome) {
+  VideoSession& v = *s.video;
+  const std::string name = v.path.filename().string();
+  v.detecting.reset();
+  v.followDetection = false;
+  if (!outcome.value) {
+    if (outcome.error.find("cancelled") != std::string::npos) {
+      s.log.info("Detection cancelled");
+      return;
+    }
+    ++s.jobs.failures;
+    v.detectError = outcome.error;
+    actions::reportError(s, "Could not detect people in " + name, outcome.error);
+    s.jobs.notice->shortTitle = "Detection failed";
+    return;
+  }
+  v.detected = *outcome.value;
+  const DetectedVideo& d = *v.detected;
+  s.log.info("Detected in " + name + ": " + detectionSummary(d));
+  for (const auto& w : d.warnings) s.log.warning(w);
+  if (d.people == 0) {
+    ++s.jobs.failures;
+    v.detectError = "nobody found in its " + std::to_string(d.framesRead) + " frames";
+    actions::reportError(s, "Nobody found in " + name,
+                         "the detector found no person in its " + std::to_string(d.framesRead) +
+                             " frames. Mark the walker's joints on one frame and track them (Mark the joints).");
+    s.jobs.notice->shortTitle = "Nobody found";
+    v.frame = 0;
+    return;
+  }
+  v.showWalkerWhenFitted = true;
+  actions::fitDetections(s);
+}
+
+}  // namespace
+
 void pollVideo(AppState& s) {
   reportDecodingError(s);
+  if (auto detection = s.jobs.detect.poll()) {
+    // A detection of a video closed since is no detection of this one.
+    if (s.video && (!detection->value || (*detection->value)->video == s.video->path)) takeDetection(s, *detection);
+  }
+  if (s.video && s.video->detecting && s.video->followDetection)
+    s.video->frame = std::max(s.video->detecting->latestFrame(), 0);
   auto outcome = s.jobs.track.poll();
   if (!outcome || !s.video) return;
   VideoSession& v = *s.video;

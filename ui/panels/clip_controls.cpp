@@ -122,9 +122,18 @@ void drawClipControls(AppState& s) {
   if (!s.doc.clip) return;
   const ClipSettings c = *s.doc.clip;
   const ClipResult* r = s.clip.get();
-  if (!c.tracked) drawClipSource(s, c, r);
+  if (c.detected) {
+    // The detector's clip: its source is the video above; who walks can be picked.
+    if (r && r->rec.trial.people.size() > 1) {
+      sectionTitle("Walker");
+      personCombo(s, c, *r);
+      textDisabledWrapped(r->rec.trial.chosenReason.c_str());
+    }
+  } else if (!c.tracked) {
+    drawClipSource(s, c, r);
+  }
   drawCameraHolds(s, c, r);
-  if (!c.tracked && ImGui::Button("Close the clip")) actions::closeClip(s);
+  if (!c.tracked && !c.detected && ImGui::Button("Close the clip")) actions::closeClip(s);
 }
 
 static void drawClipSource(AppState& s, const ClipSettings& c, const ClipResult* r) {

@@ -122,11 +122,15 @@ ImRect screenRect(const VideoViewFrame& view, float aspect, ImVec2 p0, ImVec2 si
   return ImRect(ImVec2(p0.x + a.x * size.x, p0.y + a.y * size.y), ImVec2(p0.x + b.x * size.x, p0.y + b.y * size.y));
 }
 
-// Where the walker shown on `frame` is, in video pixels: its marks, else its tracked joints.
-std::optional<std::pair<glm::vec2, glm::vec2>> walkerExtentPx(const VideoSession& v, int frame) {
+// Where the walker shown on `frame` is, in video pixels: its marks, else the detector's fitted
+// joints, else its tracked joints.
+std::optional<std::pair<glm::vec2, glm::vec2>> walkerExtentPx(const AppState& s, int frame) {
+  const VideoSession& v = *s.video;
   Eigen::RowVectorXd points;
   if (const Keyframe* k = v.keyframeAt(frame)) {
     points = k->jointsPx;
+  } else if (actions::showsDetectionFit(s) && frame >= 0 && frame < s.clip->rec.trial.jointsPx.rows()) {
+    points = s.clip->rec.trial.jointsPx.row(frame);  // the detector's clip counts the video's frames
   } else if (v.tracked && frame >= v.tracked->track.firstFrame && frame <= v.tracked->lastFrame()) {
     points = v.tracked->track.jointsPx.row(frame - v.tracked->track.firstFrame);
   }
@@ -182,7 +186,7 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
   }
   const ImRect legendRect =
       drawLegend(dl, ImVec2(p0.x + pad, p0.y + size.y - pad), caption.legend, ctx.scale, size.x, clearOf);
-  if (const auto walker = walkerExtentPx(v, frame))
+  if (const auto walker = walkerExtentPx(s, frame))
     s.lastFrame.overlay("input.walker", toPanelRect(screenRect(view, aspect, p0, size, walker->first, walker->second)));
   s.lastFrame.overlay("input.caption", toPanelRect(captionRect));
   s.lastFrame.overlay("input.legend", toPanelRect(legendRect));

@@ -40,8 +40,9 @@ void videoFrameSlider(AppState& s, bool narrow) {
   const double seconds = v.fps() > 0.0 ? frame / v.fps() : 0.0;
   char format[64];
   std::snprintf(format, sizeof format, narrow ? "%%d of %d" : "frame %%d of %d (%.2f s)", v.frameCount(), seconds);
-  const int first = tracked ? v.tracked->track.firstFrame : 0;
-  const int last = tracked ? v.tracked->lastFrame() : std::max(v.frameCount() - 1, 0);
+  const auto fit = actions::videoFitFrames(s);
+  const int first = tracked && fit ? fit->first : 0;
+  const int last = tracked && fit ? fit->second : std::max(v.frameCount() - 1, 0);
   if (ImGui::SliderInt("##frame", &frame, first, last, format, ImGuiSliderFlags_AlwaysClamp))
     actions::setVideoFrame(s, frame);
   if (narrow && ImGui::IsItemHovered()) ImGui::SetTooltip("video frame (%.2f s)", seconds);
@@ -55,7 +56,7 @@ bool playsFrames(const AppState& s) {
 }
 
 void drawFrameSlider(AppState& s, bool narrow) {
-  if (actions::stepsVideoFrames(s) || actions::showsTrackFit(s))
+  if (actions::stepsVideoFrames(s) || actions::showsVideoFit(s))
     videoFrameSlider(s, narrow);
   else if (s.clip)
     clipFrameSlider(s, *s.clip, narrow);

@@ -314,11 +314,16 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       }
       if (!drawn) {
         const bool tracked = s.video && s.video->tracked;
-        const bool unfitted = clipMode && s.video && !s.doc.clip && tracked && !s.jobs.track.running();
+        const bool detected = s.video && s.video->detected && s.video->detected->people > 0;
+        const bool unfitted = clipMode && s.video && !s.doc.clip && (tracked || detected) && !s.jobs.track.running() &&
+                              !s.jobs.detect.running();
         const char* msg = clipMode && s.video && !s.doc.clip
-                              ? (s.jobs.track.running() ? "tracking…"
-                                 : tracked          ? "no walk fits this track"
-                                                    : "mark the walker's joints on one frame, then Track")
+                              ? (s.jobs.track.running()    ? "tracking…"
+                                 : s.jobs.detect.running() ? "detecting people… the walker appears when they are found"
+                                 : tracked                 ? "no walk fits this track"
+                                 : detected                ? "no walk fits the people detected"
+                                 : s.video->detected       ? "nobody detected: mark the joints on one frame, then Track"
+                                                           : "detect the walker, or mark the joints on one frame, then Track")
                           : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : unfittedClipMessage(s.jobs.clipError))
                           : s.jobs.busy() ? "building models…" : "nothing to show";
         const float height = drawCentredMessage(dl, p0, size, msg);

@@ -10,6 +10,7 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/render/palette.h"
+#include "video/pose_model_files.h"
 #include "ui/panels/clip_controls.h"
 #include "ui/widgets/flow.h"
 #include "ui/widgets/section_title.h"
@@ -51,6 +52,50 @@ void scrubber(AppState& s, const VideoSession& v) {
     default:
       break;
   }
+}
+
+// The built-in detector (ui/app/detection.h): which model, Detect with its progress and Cancel,
+// what it found; without the models, the command that fetches them.
+void detecting(AppState& s, const VideoSession& v) {
+  sectionTitle("Detect the walker");
+  if (s.jobs.detect.running()) {
+    ImGui::ProgressBar(s.jobs.detect.fraction(), ImVec2(-1.0f, 0.0f), s.jobs.detect.what().c_str());
+    if (buttonRow({{"Cancel", true}}) == 0) actions::cancelDetection(s);
+    return;
+  }
+  const bool haveModels = findPoseModels(s.view.detectorModel).has_value();
+  const char* const labels[] = {"Lite", "Full", "Heavy"};
+  int choice = static_cast<int>(s.view.detectorModel);
+  if (radioRow(labels, 3, &choice)) apply(s, [&] { actions::setDetectorModel(s, static_cast<PoseModelSize>(choice)); });
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("BlazePose's landmark model: lite is fastest, heavy most accurate (docs/DETECTOR.md)");
+  const char* label = v.detected ? "Detect again" : "Detect people";
+  if (buttonRow({{label, haveModels && !s.jobs.track.running()}}) == 0) apply(s, [&] { actions::startDetection(s); });
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("Find the people on every frame with the built-in detector (the walker's\n"
+                      "keypoints are then fitted through the unknown camera). Detections are\n"
+                      "cached per video: a second time is quick.");
+  if (!haveModels) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.78f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", missingPoseModelAdvice().c_str());
+    ImGui::PopStyleColor();
+  }
+  if (v.detected) {
+    textDisabledWrapped(detectionSummary(*v.detected).c_str());
+    if (v.detected->people > 0 && !actions::showsDetectionFit(s) && !s.jobs.clip.running() &&
+        buttonRow({{"Fit the detections", true}}) == 0)
+      apply(s, [&] { actions::fitDetections(s); });
+  }
+  if (!v.detectError.empty() && haveModels) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.55f, 1.0f));
+    ImGui::TextWrapped("%s", v.detectError.c_str());
+    ImGui::PopStyleColor();
+  }
+  bool onOpen = s.view.detectWhenVideoOpens;
+  if (checkboxWrapped("Detect when a video opens", &onOpen)) actions::setDetectWhenVideoOpens(s, onOpen);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("A video opened alone is handed to the detector at once\n"
+                      "(opened with its keyframe file, it is for marking and tracking)");
 }
 
 // The keypoint file or folder typed in the Mark section.
@@ -397,6 +442,7 @@ void drawVideoControls(AppState& s, float scale) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("codec %s", i.codec.empty() ? "unknown" : i.codec.c_str());
   scrubber(s, v);
+  detecting(s, v);
   marking(s, v);
   tracking(s, v, scale);
   saving(s, v);

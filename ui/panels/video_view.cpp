@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+#include <vector>
 #include <imgui.h>
 #include <opencv2/core.hpp>
 
@@ -51,6 +53,35 @@ void addKeyframeMarks(Scene& scene, const Keyframe& k, float radius, float lineS
     const glm::vec3 p(scenePoint(k.jointsPx(2 * j), k.jointsPx(2 * j + 1)), 2.0f);
     scene.glows.push_back({p, 1.5f * radius, glm::vec4(0.02f, 0.05f, 0.05f, 0.85f)});
     scene.glows.push_back({p, radius, palette::kCamera});
+  }
+}
+
+// The MediaPipe-33 body's lines (the face's points are drawn, not joined): trunk, arms, legs
+// and feet.
+constexpr std::pair<int, int> kDetectedBones[] = {
+    {11, 12}, {11, 23}, {12, 24}, {23, 24}, {11, 13}, {13, 15}, {12, 14}, {14, 16}, {23, 25}, {25, 27},
+    {27, 29}, {29, 31}, {27, 31}, {24, 26}, {26, 28}, {28, 30}, {30, 32}, {28, 32}};
+
+// The people the detector found on a frame: each point coloured by its visibility (sure blue,
+// unsure red, as the tracked joints are), the body's lines faint under them.
+void addDetectedPeople(Scene& scene, const std::vector<KeypointDetection>& people, float radius, float lineScale) {
+  for (const KeypointDetection& d : people) {
+    const Eigen::MatrixX3d& p = d.points;
+    const auto finite = [&](int i) { return i < p.rows() && std::isfinite(p(i, 0)) && std::isfinite(p(i, 1)); };
+    for (const auto& [a, b] : kDetectedBones) {
+      if (!finite(a) || !finite(b)) continue;
+      const float sure = static_cast<float>(std::min(p(a, 2), p(b, 2)));
+      scene.overlayLines.push_back({glm::vec3(scenePoint(p(a, 0), p(a, 1)), 1.0f), 2.0f * lineScale,
+                                    glm::vec3(scenePoint(p(b, 0), p(b, 1)), 1.0f), 0.0f,
+                                    glm::vec4(0.85f, 0.88f, 0.95f, 0.25f + 0.4f * std::clamp(sure, 0.0f, 1.0f))});
+    }
+    for (int i = 0; i < p.rows(); ++i) {
+      if (!finite(i)) continue;
+      // The face's eleven points smaller: the body's joints are what the fit reads.
+      const float r = i <= 10 ? 0.55f * radius : radius;
+      scene.glows.push_back({glm::vec3(scenePoint(p(i, 0), p(i, 1)), 0.5f), r,
+                             palette::confidenceColour(static_cast<float>(std::clamp(p(i, 2), 0.0, 1.0)))});
+    }
   }
 }
 
@@ -110,10 +141,15 @@ bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,
   if (!s.video) return false;
   const VideoSession& v = *s.video;
   const float radius = 5.0f * lineScale * videoPxPerScreenPx;
-  const bool fitted = actions::showsTrackFit(s) && !v.marking;
-  const int clipFrame = fitted ? frame - v.tracked->track.firstFrame : -1;
+  const auto fit = v.marking ? std::nullopt : actions::videoFitFrames(s);
+  const int clipFrame = fit ? frame - fit->first : -1;
+  const bool fitted = fit.has_value();
+  // A detection under way, or done and not fitted: the people found on the frame.
+  const bool detections = v.detecting || (v.detected && !v.tracked && !fitted);
   if (fitted && clipFrame >= 0 && clipFrame < s.clip->rec.trial.frameCount) {
     buildClipInputScene(s, scene, lineScale, clipFrame, clipImageFrame(*s.clip, 1.0f));
+  } else if (detections) {
+    addDetectedPeople(scene, actions::detectionsOn(s, frame), radius, lineScale);
   } else if (v.tracked) {
     addTrackedPose(scene, *v.tracked, frame, radius, lineScale);
   }
@@ -128,7 +164,7 @@ bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,
     scene.image.low = {0.0f, -static_cast<float>(mat->rows)};
     scene.image.high = {static_cast<float>(mat->cols), 0.0f};
     // Dimmed under a fit or while marking, so the marks read on any footage.
-    scene.image.brightness = fitted || v.marking || v.tracked ? 0.72f : 1.0f;
+    scene.image.brightness = fitted || v.marking || v.tracked || detections ? 0.72f : 1.0f;
   }
   return true;
 }

@@ -135,14 +135,22 @@ ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool 
   std::vector<LegendItem> legend;
   if (v.keyframeAt(frame))
     legend.push_back({palette::kCamera, onScreen ? "marked by hand (keyframe; drag to correct)" : "marked by hand (keyframe)", false});
-  const bool fitted = actions::showsTrackFit(s) && !v.marking;
+  const bool fitted = actions::showsVideoFit(s) && !v.marking;
+  if (v.detecting && onScreen) {
+    // The subtitle says how far the detection has come; the points' colours what they mean.
+    const std::size_t len = std::strlen(sub);
+    std::snprintf(sub + len, sizeof sub - len, " · detecting: %.0f %%", 100.0 * s.jobs.detect.fraction());
+  }
   if (fitted) {
-    legend.push_back({palette::kInputPoint, "tracked joints", false});
+    legend.push_back({palette::kInputPoint, actions::showsDetectionFit(s) ? "detected joints" : "tracked joints", false});
     legend.push_back({palette::kCamera, "principal point (est.)", true});
     if (s.view.overlays.reprojection) {
       legend.push_back({palette::kReconRight, "3D walker through the est. camera", true});
       legend.push_back({palette::kError, "residual", true});
     }
+  } else if (v.detecting || (v.detected && v.detected->people > 0 && !v.tracked)) {
+    legend.push_back({palette::confidenceColour(1.0f), "detected: visible", false});
+    legend.push_back({palette::confidenceColour(0.0f), "detected: hidden", false});
   } else if (v.tracked) {
     legend.push_back({palette::confidenceColour(1.0f), "tracked: sure", false});
     legend.push_back({palette::confidenceColour(0.0f), "tracked: lost", false});
@@ -217,8 +225,8 @@ ViewCaption clipReconstructionCaption(const AppState& s) {
 ViewCaption inputCaption(const AppState& s, int clipFrame) {
   if (s.doc.mode == Mode::Clip && s.video) {
     const VideoSession& v = *s.video;
-    return videoInputCaption(s, actions::showsTrackFit(s) ? v.tracked->track.firstFrame + clipFrame : v.frame, false,
-                             false);
+    const auto fit = actions::videoFitFrames(s);
+    return videoInputCaption(s, fit ? fit->first + clipFrame : v.frame, false, false);
   }
   return s.doc.mode == Mode::Clip && s.clip ? clipInputCaption(s, clipFrame) : walkerInputCaption(s);
 }
