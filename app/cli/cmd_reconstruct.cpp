@@ -62,6 +62,7 @@ struct ReconstructArgs {
   std::string detectModel = "full"; // a video's input: the built-in detector's model (--detect-model)
   std::optional<int> modelLoop;     // --model-loop: rounds of the detection loop
   std::string corrections;          // --corrections: a keyframe file correcting the keypoints
+  std::optional<int> person;        // --person: 1-based, instead of the one who walks
   std::string imageSize;
   std::string camera, cameraName;   // a calibration file (--camera) and which of its cameras
   std::string engine = "eigenwalker";
@@ -409,6 +410,7 @@ int runReconstruct(const ReconstructArgs& a) {
     c.detectModel = a.detectModel;
     c.modelLoop = a.modelLoop;
     c.corrections = a.corrections;
+    c.person = a.person;
     return runReconstructCamera(chosen.model, c);
   }
   if (a.elevationDeg || !a.camera.empty())
@@ -551,6 +553,10 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--detect-model", args->detectModel,
                   "For a video: the built-in pose detector's model, lite, full (default) or heavy")
       ->check(CLI::IsMember({"lite", "full", "heavy"}));
+  cmd->add_option("--person", args->person,
+                  "With --unknown-camera: the person to fit (1-based, as `info` and `detect` number them); default the "
+                  "one who walks")
+      ->check(CLI::PositiveNumber);
   cmd->add_option("--corrections", args->corrections,
                   "With --unknown-camera: a keyframe file (docs/TRACKING.md) of joints corrected by hand; each "
                   "correction is carried to the frames around it (0.25 s either side, fading)")

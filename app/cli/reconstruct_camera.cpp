@@ -267,6 +267,7 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   if (!a.imageSize.empty()) k.imageSize = parseKeypointImageSize(a.imageSize, "--image-size");
   k.fps = a.fps;
   k.detectorOffsets = a.detectorOffsets;
+  if (a.person) k.person = *a.person - 1;
   std::string focalSource;
   const std::optional<CalibratedCamera> calibration = calibrationOf(a);
   const CameraFitOptions o = fitOptionsOf(model, a, calibration, k, focalSource);

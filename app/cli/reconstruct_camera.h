@@ -26,6 +26,7 @@ struct CameraArgs {
   std::optional<int> modelLoop;
   // A keyframe file of corrections to the keypoints (core/tracking/corrected_track.h).
   std::string corrections;
+  std::optional<int> person;  // 1-based: the person to fit instead of the one who walks
 };
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args);
