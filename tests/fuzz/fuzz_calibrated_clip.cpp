@@ -9,6 +9,8 @@
 // the correct outcome; anything else is a finding (fuzz_common.h).
 
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/camera/calibration_file.h"
@@ -32,7 +34,10 @@ ew::KeypointImageSize imageOf(const ew::CalibratedCamera& c) {
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size < 1) return 0;
-  const auto [calibration, keypoints] = ew::fuzz::splitAtLine(ew::fuzz::asText(data + 1, size - 1), kKeypointsSeparator);
+  // Not a structured binding: clang 14 cannot capture one in a lambda.
+  const std::pair<std::string_view, std::string_view> files =
+      ew::fuzz::splitAtLine(ew::fuzz::asText(data + 1, size - 1), kKeypointsSeparator);
+  const std::string_view calibration = files.first, keypoints = files.second;
   ew::fuzz::acceptTypedErrors([&] {
     const std::vector<ew::CalibratedCamera> cameras = ew::parseCalibrationToml(calibration, "fuzz.toml");
     const ew::CalibratedCamera& camera = cameras.front();  // the reader returns one or throws
