@@ -504,7 +504,17 @@ std::size_t bytesPerPixel(const TrackerOptions& o) {
   return o.kind == TrackerKind::Appearance ? 3 : 1;
 }
 
+// A 1 × 1 video was "tracked" at confidence 0 (issue 53): no walker fits in a picture that small.
+void checkTrackableSize(const VideoInfo& info) {
+  if (info.widthPx < kMinTrackedSidePx || info.heightPx < kMinTrackedSidePx)
+    throwBadData(info.file, "",
+                 "frame size " + std::to_string(info.widthPx) + "x" + std::to_string(info.heightPx) +
+                     " px is too small to track a walker in (each side at least " +
+                     std::to_string(kMinTrackedSidePx) + " px)");
+}
+
 Range rangeFor(const VideoSource& video, const TrackerOptions& o) {
+  checkTrackableSize(video.info());
   const int count = video.info().frameCount;
   Range r{o.firstFrame, o.lastFrame < 0 ? count - 1 : o.lastFrame};
   if (r.first < 0 || r.last >= count || r.first > r.last)

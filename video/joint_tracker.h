@@ -86,9 +86,13 @@ double personHeightPx(const Keyframes& keys, int frameHeightPx);
 // Called with the share done (0-1); returning false cancels (Error(BadArgument) "cancelled").
 using TrackProgress = std::function<bool(double)>;
 
+// The smallest picture side tracked: the smallest patch matched (9 px) searched 6 px either way
+// spans 21 px, and a walker, head to ankles, spans several patches.
+inline constexpr int kMinTrackedSidePx = 32;
+
 // Throws Error(BadArgument) for a frame range outside the video or with no keyframe in it,
-// or when `progress` cancels; Error(BadData) from the video source when the stream ends
-// before the frames asked for.
+// or when `progress` cancels; Error(BadData) naming the video for a frame side under
+// kMinTrackedSidePx, and from the video source when the stream ends before the frames asked for.
 JointTrack trackJoints(VideoSource& video, const Keyframes& keyframes,
                        const TrackerOptions& options = {}, const TrackProgress& progress = {});
 

@@ -22,6 +22,7 @@
 #include "app/cli/video_input.h"
 #include "app/cli/reconstruct_camera.h"
 #include "app/cli/reconstruct_skeleton.h"
+#include "core/camera/focal_length.h"
 #include "core/common/errors.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
@@ -381,6 +382,9 @@ SkeletonArgs skeletonArgs(const ReconstructArgs& a) {
 
 int runReconstruct(const ReconstructArgs& a) {
   const EngineKind engine = parseEngineKind(a.engine, "--engine");
+  // Before any file is read: a clip that is not walking must not hide a focal length no camera has.
+  if (a.focalPx && !isPlausibleFocalPx(*a.focalPx))
+    throw Error(ErrorKind::BadArgument, "--focal-px", "", focalLengthProblem(*a.focalPx));
   if (engine != EngineKind::Skeleton && a.skeletonOnlyGiven())
     throw Error(ErrorKind::BadArgument, "--bones", "",
                 "--bones, --stature, --bone-frame, --reference-bone, --guide and --scale-depth-* apply to --engine skeleton only");

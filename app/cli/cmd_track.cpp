@@ -165,7 +165,10 @@ int runTrack(const TrackArgs& a) {
   VideoSource video(a.video);
   const VideoInfo& info = video.info();
   const Keyframes keys = keyframesFor(a, info);
-  checkMarksWithin(keys, info.widthPx, info.heightPx, a.keyframes.empty() ? a.keyframesFrom : a.keyframes);
+  // The keyframes' source is named for a mark or a frame the video does not have, not the video.
+  const std::string keysFile = a.keyframes.empty() ? a.keyframesFrom : a.keyframes;
+  checkKeyframesWithin(keys, info.frameCount, keysFile);
+  checkMarksWithin(keys, info.widthPx, info.heightPx, keysFile);
   TrackerOptions o;
   o.kind = trackerFromName(a.tracker);
   o.firstFrame = a.first;

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <map>
 
+#include "core/camera/focal_length.h"
 #include "core/common/errors.h"
 #include "core/io/file_bytes.h"
 #include "core/io/text_table.h"
+#include "core/keypoints/keypoint_frames.h"
 
 namespace ew {
 
@@ -72,7 +74,14 @@ Numbers parseNumbers(std::string_view v, const std::string& file, int line, std:
   return n;
 }
 
-bool isStringOrBool(std::string_view v) { return (!v.empty() && v.front() == '"') || v == "true" || v == "false"; }
+bool isString(std::string_view v) { return !v.empty() && v.front() == '"'; }
+bool isStringOrBool(std::string_view v) { return isString(v) || v == "true" || v == "false"; }
+
+// A string value ends with the quote it opened with: `name = "abc` must not become camera "ab".
+void checkTerminated(std::string_view value, const std::string& file, int line, const std::string& key) {
+  if (isString(value) && (value.size() < 2 || value.back() != '"'))
+    malformed(file, line, key + ": the string has no closing '\"'");
+}
 
 struct Table {
   std::string name;
@@ -82,7 +91,8 @@ struct Table {
 
 std::vector<Table> parseTables(std::string_view text, const std::string& file) {
   std::vector<Table> tables;
-  for (const TextLine& line : splitLines(text)) {
+  // A UTF-8 byte-order mark (Windows editors write one) is no part of the first line.
+  for (const TextLine& line : splitLines(withoutBom(text))) {
     const std::string_view raw = trim(withoutComment(line.text));
     const int number = line.number;
     if (raw.empty()) continue;
@@ -98,6 +108,7 @@ std::vector<Table> parseTables(std::string_view text, const std::string& file) {
     const std::string key(trim(raw.substr(0, eq)));
     const std::string_view value = trim(raw.substr(eq + 1));
     if (key.empty() || value.empty()) malformed(file, number, "expected key = value");
+    checkTerminated(value, file, number, key);
     tables.back().values[key] = {std::string(value), number};
   }
   return tables;
@@ -132,19 +143,26 @@ void readExtrinsics(const Table& t, const std::string& file, CalibratedCamera& c
 CalibratedCamera cameraOf(const Table& t, const std::string& file) {
   CalibratedCamera c;
   c.name = c.table = t.name;
-  const auto nameValue = t.values.find("name");
-  if (nameValue != t.values.end() && nameValue->second.first.size() >= 2 && nameValue->second.first.front() == '"')
-    c.name = nameValue->second.first.substr(1, nameValue->second.first.size() - 2);
+  if (const auto name = t.values.find("name"); name != t.values.end()) {
+    const std::string& value = name->second.first;  // quoted and terminated (parseTables)
+    if (!isString(value)) malformed(file, name->second.second, "[" + t.name + "] name: expected a \"quoted\" name");
+    c.name = value.substr(1, value.size() - 2);
+  }
   const Numbers m = *numbers(t, "matrix", file);
   const int line = t.values.find("matrix")->second.second;
   if (m.values.size() != 9 || m.rowSizes != std::vector<std::size_t>{3, 3, 3})
     malformed(file, line, "[" + t.name + "] matrix: expected 3 rows of 3 numbers");
   c.fxPx = m.values[0], c.cxPx = m.values[2], c.fyPx = m.values[4], c.cyPx = m.values[5];
-  if (!(c.fxPx > 0.0 && c.fyPx > 0.0)) malformed(file, line, "[" + t.name + "] matrix: focal lengths must be positive");
+  for (const double f : {c.fxPx, c.fyPx})
+    if (const std::string problem = focalLengthProblem(f); !problem.empty())
+      malformed(file, line, "[" + t.name + "] matrix: " + problem);
   if (const auto size = numbers(t, "size", file)) {
     const int sizeLine = t.values.find("size")->second.second;
-    if (size->values.size() != 2 || !(size->values[0] > 0.0 && size->values[1] > 0.0))
-      malformed(file, sizeLine, "[" + t.name + "] size: expected [width, height] in pixels");
+    // Bounded as an image size option is: the callers take the sides as int pixels.
+    const auto side = [](double v) { return v >= 1.0 && v <= kMaxKeypointImageSidePx; };
+    if (size->values.size() != 2 || !side(size->values[0]) || !side(size->values[1]))
+      malformed(file, sizeLine, "[" + t.name + "] size: expected [width, height] in pixels (1-" +
+                                    std::to_string(kMaxKeypointImageSidePx) + " each)");
     c.widthPx = size->values[0], c.heightPx = size->values[1];
   }
   if (const auto d = numbers(t, "distortions", file)) {

@@ -31,10 +31,11 @@ struct CalibratedCamera {
 };
 
 // Every camera table of a calibration file's text (tables other than [metadata] that have a
-// `matrix`). Throws Error(Malformed) naming `file` and the line for text that is not the
-// TOML these files use (tables, `key = value` with numbers, strings, booleans and nested
-// arrays of numbers), a matrix that is not 3 × 3 or focal lengths that are not positive, and
-// Error(BadData) when no table is a camera.
+// `matrix`; a UTF-8 byte-order mark before the first line is skipped). Throws Error(Malformed)
+// naming `file` and the line for text that is not the TOML these files use (tables,
+// `key = value` with numbers, terminated "strings", booleans and nested arrays of numbers), a
+// matrix that is not 3 × 3, focal lengths that are not a camera's (focal_length.h), a `size`
+// that is not an image's, and Error(BadData) when no table is a camera.
 std::vector<CalibratedCamera> parseCalibrationToml(std::string_view text, const std::string& file);
 
 // The camera `name` (its `name` or its table) of the file (its only camera when `name` is empty). Throws Error(Io)

@@ -7,6 +7,7 @@
 #include <limits>
 #include <numbers>
 
+#include "core/camera/focal_length.h"
 #include "core/common/errors.h"
 #include "core/common/nan.h"
 #include "core/common/statistics.h"
@@ -485,8 +486,8 @@ std::vector<double> startAngles(const ViewSearch& search, const CameraFitOptions
 }
 
 void checkOptions(const CameraFitOptions& o) {
-  if (o.focalPx && !(std::isfinite(*o.focalPx) && *o.focalPx > 0))
-    throw Error(ErrorKind::BadArgument, o.file, "--focal-px", "the focal length must be positive and finite");
+  if (o.focalPx && !isPlausibleFocalPx(*o.focalPx))
+    throw Error(ErrorKind::BadArgument, o.file, "--focal-px", focalLengthProblem(*o.focalPx));
   if (o.imageSizePx && !(o.imageSizePx->allFinite() && o.imageSizePx->minCoeff() > 0))
     throw Error(ErrorKind::BadArgument, o.file, "image size", "the image's width and height must be positive");
   if (o.principalPointPx && !o.principalPointPx->allFinite())

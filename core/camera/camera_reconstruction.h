@@ -113,7 +113,7 @@ double walkerHeadHeightMm(const Eigen::VectorXd& w);
 
 // jointsPx: T × 30 (u, v per joint, SPEC §1 order), NaN = not seen. Throws Error(BadData)
 // naming options.file when fewer than 8 frames or no start converges to a walker moving
-// forward, Error(BadArgument) for a focal length that is not positive and finite or a fixed
+// forward, Error(BadArgument) for a focal length that is not a camera's (focal_length.h) or a fixed
 // azimuth or elevation that is not finite (or an elevation outside −30…80°).
 CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const Eigen::MatrixXd& jointsPx,
                                    double rateHz, const CameraFitOptions& options = {});

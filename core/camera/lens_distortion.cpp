@@ -90,6 +90,11 @@ int undistortTrial(const CalibratedCamera& c, KeypointTrial& trial) {
     const int personLost = undistortPixels(c, px);
     if (&person != &trial.people[static_cast<std::size_t>(trial.chosen)]) lost += personLost;
   }
+  // The cleaning's promise (pelvis, knees and ankles seen) held before the points moved; a
+  // calibration not of this camera can push every one outside its field.
+  countSeenJoints(trial);
+  requireWalkJoints(trial, "once the calibration's lens distortion is taken out (" + std::to_string(lost) +
+                               " points fell outside its calibrated field: is it this camera's?)");
   return lost;
 }
 

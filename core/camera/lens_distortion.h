@@ -29,7 +29,9 @@ Eigen::Vector2d distortPixel(const CalibratedCamera& c, const Eigen::Vector2d& u
 // Every (u, v) pair of `px` (T × 2J, NaN = missing) undistorted in place; a point that does
 // not converge becomes missing. Returns how many did not.
 int undistortPixels(const CalibratedCamera& c, Eigen::MatrixXd& px);
-// The trial's walker and every other person's joints undistorted; returns the points lost.
+// The trial's walker and every other person's joints undistorted, its seen joints counted again
+// (countSeenJoints); returns the points lost. Error(BadData) naming the trial's file when the
+// walk's minimum joints are no longer seen (requireWalkJoints).
 int undistortTrial(const CalibratedCamera& c, KeypointTrial& trial);
 
 }  // namespace ew

@@ -15,6 +15,7 @@ namespace {
 
 struct TrcHeader {
   std::map<std::string, std::string> keys;  // lower-case key -> value
+  int valuesLine = 0;                       // the line number of the values under DataRate, …
   size_t nameRow = 0;                       // index into lines of the "Frame#" row
 };
 
@@ -30,6 +31,7 @@ TrcHeader readHeader(const std::vector<TextLine>& lines, const std::string& name
     }
     if (first == "datarate" && i + 1 < lines.size()) {
       auto values = splitTabs(lines[i + 1].text);
+      header.valuesLine = lines[i + 1].number;
       for (size_t k = 0; k < fields.size() && k < values.size(); ++k) {
         header.keys[toLower(fields[k])] = std::string(values[k]);
       }
@@ -88,6 +90,19 @@ void readRows(const std::vector<TextLine>& lines, size_t first, size_t markers,
   }
 }
 
+// NumFrames is checked, not trusted (the rows are the frames), and unlike NumMarkers a mismatch
+// is refused, as the QTM reader refuses NO_OF_FRAMES': fewer rows is a file cut short (a copy or
+// a write that stopped), more a header written for another take; either way one of the two lies.
+void checkStatedFrames(const TrcHeader& h, size_t rows, const std::string& name) {
+  const auto it = h.keys.find("numframes");
+  double stated = 0;
+  if (it == h.keys.end() || trim(it->second).empty() || !parseDouble(it->second, stated, false)) return;
+  if (stated == static_cast<double>(rows)) return;
+  throwMalformed(name, linePosition(h.valuesLine),
+                 "NumFrames says " + headerText(h, "numframes") + " frames, the file holds " + std::to_string(rows) +
+                     (static_cast<double>(rows) < stated ? " (cut short?)" : ""));
+}
+
 long firstFrameNumber(const std::vector<TextLine>& lines, size_t first) {
   for (size_t i = first; i < lines.size(); ++i) {
     auto fields = splitFields(lines[i].text, '\t');
@@ -123,6 +138,7 @@ RawTrial parseTrc(std::string_view text, const std::string& name, const LoadOpti
   std::vector<double> values, times;
   readRows(lines, header.nameRow + 2, raw.labels.size(), name, values, times);
   if (times.empty()) throwBadData(name, "", "no data rows");
+  checkStatedFrames(header, times.size(), name);
   raw.rateHz = headerNumber(header, "datarate");
   if (options.rateHzOverride) {
     raw.rateHz = checkedRateOverrideHz(*options.rateHzOverride, name);

@@ -4,6 +4,8 @@
 // the marker-name row (Frame# Time M1 _ _ M2 …), the X1 Y1 Z1 row, then data rows.
 // Tolerant of missing header keys: the rate falls back to the Time column, the marker
 // count to the name row, the unit to mm (with a warning). Empty cells are missing (NaN).
+// A NumFrames that is not the number of data rows is refused (Error(Malformed) naming the
+// header's line: "cut short?" when the rows are fewer), as the QTM reader refuses NO_OF_FRAMES.
 
 #include <filesystem>
 #include <string>

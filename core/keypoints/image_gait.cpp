@@ -22,13 +22,16 @@ namespace {
   throw Error(ErrorKind::BadData, t.file, "", "not walking: " + why);
 }
 
-// Mean pelvis position over the first (or last) tenth of the frames where it is seen.
+// Mean pelvis position over the first (or last) tenth of the frames where it is seen. A trial
+// whose pelvis is never seen is not walking (its points all dropped by a lens undistortion that
+// does not fit the camera, issue 53): there is no end to read.
 Eigen::Vector2d pelvisAtEnd(const KeypointTrial& t, bool last) {
   std::vector<Eigen::Vector2d> seen;
   for (Eigen::Index f = 0; f < t.jointsPx.rows(); ++f) {
     const Eigen::Vector2d p = t.jointsPx.block<1, 2>(f, 2 * index(Joint::Pelvis)).transpose();
     if (p.allFinite()) seen.push_back(p);
   }
+  if (seen.empty()) notWalking(t, "the pelvis is seen in none of the " + std::to_string(t.jointsPx.rows()) + " frames");
   const std::size_t n = std::max<std::size_t>(1, seen.size() / 10);
   Eigen::Vector2d sum = Eigen::Vector2d::Zero();
   for (std::size_t i = 0; i < n; ++i) sum += seen[last ? seen.size() - 1 - i : i];

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <set>
 
 #include "core/common/errors.h"
 #include "core/common/nan.h"
@@ -185,6 +186,22 @@ std::optional<double> rateFromTimes(const std::vector<double>& times, const std:
   return checkedFileRateHz(1.0 / step, file, "time column");
 }
 
+// MediaPipe's columns: a landmark's _visibility (no joint CSV has one), or the _x of two of
+// its landmarks (a joint CSV with one misnamed "nose" column keeps its own header error). Not
+// every landmark: a file cut down to a few is still MediaPipe's, answered with the columns it
+// lacks, not read as a 15-joint CSV of the wrong width (issue 53: "nose_x, nose_y, nose_z,
+// nose_visibility" holding a NaN).
+bool namesMediaPipeLandmarks(const std::vector<std::string_view>& fields) {
+  std::set<std::string> names;
+  for (std::string_view f : fields) names.insert(toLower(f));
+  int withX = 0;
+  for (const std::string& landmark : keypointLayoutNamed("MediaPipe-33").points) {
+    if (names.contains(landmark + "_visibility")) return true;
+    withX += names.contains(landmark + "_x");
+  }
+  return withX >= 2;
+}
+
 // [SECTION] DeepLabCut -----------------------------------------------------------------------
 
 struct DlcHeader {
@@ -324,11 +341,7 @@ KeypointCsvKind keypointCsvKind(std::string_view text) {
     if (isBlankOrComment(line)) continue;
     const auto fields = splitFields(line, ',');
     if (toLower(fields[0]) == "scorer") return KeypointCsvKind::DeepLabCut;
-    // Two of MediaPipe's own landmark names: a joint CSV with a "nose" column is not one.
-    auto has = [&fields](std::string_view name) {
-      return std::any_of(fields.begin(), fields.end(), [name](std::string_view f) { return toLower(f) == name; });
-    };
-    return has("nose_x") && has("left_eye_inner_x") ? KeypointCsvKind::MediaPipe : KeypointCsvKind::NotKeypoints;
+    return namesMediaPipeLandmarks(fields) ? KeypointCsvKind::MediaPipe : KeypointCsvKind::NotKeypoints;
   }
   return KeypointCsvKind::NotKeypoints;
 }

@@ -247,6 +247,9 @@ KeypointFrames parseOpenPoseFrames(const std::vector<std::pair<std::string, std:
 KeypointFrames parseAlphaPoseJson(const std::string& text, const std::string& name) {
   const json doc = parseJson(text, name);
   if (!doc.is_array()) throwMalformed(name, "", "AlphaPose results are a list of detections");
+  // What AlphaPose writes for a video with nobody in it: a result, not a malformed file, and
+  // nothing to place frames by (there is no first or last image).
+  if (doc.empty()) throw Error(ErrorKind::BadData, name, "", "no person detected (an empty list of detections)");
   KeypointFrames out;
   out.file = name;
   out.format = "AlphaPose JSON";
@@ -373,7 +376,8 @@ KeypointFrames readKeypointFrames(const fs::path& path, const std::optional<Keyp
   const bool openPose = (doc.is_object() && doc.contains("people")) ||
                         (doc.is_array() && !doc.empty() && doc[0].is_object() && doc[0].contains("people"));
   if (openPose) return parseOpenPoseFrames({{path.filename().string(), text}}, path.string());
-  if (doc.is_array() && !doc.empty() && doc[0].is_object() && doc[0].contains("image_id"))
+  // `[]` is AlphaPose's "nobody in the video" (an empty OpenPose or MMPose list says the same).
+  if (doc.is_array() && (doc.empty() || (doc[0].is_object() && doc[0].contains("image_id"))))
     return parseAlphaPoseJson(text, path.string());
   if ((doc.is_object() && doc.contains("instance_info")) ||
       (doc.is_array() && !doc.empty() && doc[0].is_object() && doc[0].contains("keypoint_scores")))

@@ -87,7 +87,8 @@ long trailingNumber(const std::string& fileName);
 // for an unreadable path, Error(Malformed) naming the file (and frame) for bad JSON, a
 // point count that changes, a keypoint list not a multiple of 3 (2 for MMPose), non-numeric
 // or non-finite values, more frames / points / people than the bounds above, and
-// Error(BadData) when no frame has anybody in it. A .csv path goes to readKeypointCsv.
+// Error(BadData) when no frame has anybody in it (also for `[]`, what AlphaPose writes for a
+// video with nobody in it). A .csv path goes to readKeypointCsv.
 // Per-frame files (OpenPose, YOLO) and AlphaPose's numbered images are placed by their frame
 // numbers: a frame with no file or entry is a frame with nobody (with a warning), so that a
 // clip's timing holds where the estimator wrote nothing. `imageSize` is for the readers of
@@ -113,8 +114,9 @@ KeypointImageSize parseKeypointImageSize(const std::string& text, const std::str
 enum class KeypointCsvKind { NotKeypoints, MediaPipe, DeepLabCut };
 
 // A CSV's kind from its first line that is neither blank nor a '#' comment: a first field
-// "scorer" is DeepLabCut, a "nose_x" column MediaPipe. The project's own CSVs
-// ("frame,time_s,head_x,…", "frame,time_s,head_u,…") are NotKeypoints.
+// "scorer" is DeepLabCut, a MediaPipe landmark's _visibility column or the _x columns of two
+// of its landmarks MediaPipe. The project's own CSVs ("frame,time_s,head_x,…", "frame,time_s,head_u,…") are
+// NotKeypoints.
 KeypointCsvKind keypointCsvKind(std::string_view text);
 
 // The same from the first 64 KiB of a file (not the whole file); NotKeypoints when unreadable.

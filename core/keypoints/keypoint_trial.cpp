@@ -280,31 +280,21 @@ const KeypointLayout& chooseLayout(const KeypointFrames& frames, const PersonTra
   return *best;
 }
 
+std::string confidenceText(double minConfidence) { return std::to_string(minConfidence).substr(0, 4); }
+
 // Which joints the trial sees and how often; a warning for those never seen; Error(BadData)
 // naming the file when the walk's minimum joints are among them.
 void checkSeenJoints(KeypointTrial& t, const KeypointOptions& options) {
-  std::vector<std::string> unseen;
-  for (int j = 0; j < kJointCount; ++j) {
-    const auto col = t.jointsPx.col(2 * j);
-    const auto seen = static_cast<double>(col.array().isFinite().count());
-    t.seenShare[static_cast<std::size_t>(j)] = t.frameCount ? seen / t.frameCount : 0.0;
-    t.missing[static_cast<std::size_t>(j)] = seen == 0;
+  for (int j = 0; j < kJointCount; ++j)
     t.derived[static_cast<std::size_t>(j)] = !t.layout->derived[static_cast<std::size_t>(j)].empty();
-    if (seen == 0) unseen.emplace_back(jointName(static_cast<Joint>(j)));
-  }
+  const std::string why = "above confidence " + confidenceText(options.minConfidence);
+  const std::vector<std::string> unseen = countSeenJoints(t);
   if (!unseen.empty()) {
     std::string list;
     for (const auto& u : unseen) list += (list.empty() ? "" : ", ") + u;
-    t.warnings.push_back("never seen above confidence " + std::to_string(options.minConfidence).substr(0, 4) +
-                         ": " + list + " (to be estimated from a model)");
+    t.warnings.push_back("never seen " + why + ": " + list + " (to be estimated from a model)");
   }
-  for (Joint j : {Joint::Pelvis, Joint::RKnee, Joint::LKnee, Joint::RAnkle, Joint::LAnkle}) {
-    if (t.missing[static_cast<std::size_t>(index(j))])
-      throw Error(ErrorKind::BadData, t.file, "",
-                  std::string(jointName(j)) + " of " + t.chosenReason.substr(0, t.chosenReason.find(':')) +
-                      " is never seen above confidence " + std::to_string(options.minConfidence).substr(0, 4) +
-                      ": a walk needs pelvis, knees and ankles");
-  }
+  requireWalkJoints(t, why);
 }
 
 // The 15 joints as their own layout, each its own point (a tracker's output).
@@ -320,6 +310,26 @@ std::shared_ptr<const KeypointLayout> jointLayout() {
 }
 
 }  // namespace
+
+std::vector<std::string> countSeenJoints(KeypointTrial& t) {
+  std::vector<std::string> unseen;
+  for (int j = 0; j < kJointCount; ++j) {
+    const auto seen = static_cast<double>(t.jointsPx.col(2 * j).array().isFinite().count());
+    t.seenShare[static_cast<std::size_t>(j)] = t.frameCount ? seen / t.frameCount : 0.0;
+    t.missing[static_cast<std::size_t>(j)] = seen == 0;
+    if (seen == 0) unseen.emplace_back(jointName(static_cast<Joint>(j)));
+  }
+  return unseen;
+}
+
+void requireWalkJoints(const KeypointTrial& t, const std::string& why) {
+  for (Joint j : {Joint::Pelvis, Joint::RKnee, Joint::LKnee, Joint::RAnkle, Joint::LAnkle}) {
+    if (t.missing[static_cast<std::size_t>(index(j))])
+      throw Error(ErrorKind::BadData, t.file, "",
+                  std::string(jointName(j)) + " of " + t.chosenReason.substr(0, t.chosenReason.find(':')) +
+                      " is never seen " + why + ": a walk needs pelvis, knees and ankles");
+  }
+}
 
 // [SECTION] Public API -------------------------------------------------------------------------
 

@@ -97,6 +97,13 @@ int personRowAt(const PersonTrack& person, int frame);
 // own points (DeepLabCut) takes its layout from layoutForPointNames (options.mappingFile).
 KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions& options = {});
 
+// Counts again which joints the trial sees (seenShare, missing) after its points changed (lens
+// distortion taken out, core/camera/lens_distortion.h); returns the names of those never seen.
+std::vector<std::string> countSeenJoints(KeypointTrial& trial);
+// Error(BadData) naming the trial's file when the walk's minimum joints (pelvis, knees,
+// ankles) are among those `missing`; `why` says since when ("above confidence 0.30").
+void requireWalkJoints(const KeypointTrial& trial, const std::string& why);
+
 // Reads a keypoint file or folder (readKeypointFrames, cleanKeypoints), or a 2D TRC
 // (readPlanarTrc).
 KeypointTrial readKeypointTrial(const std::filesystem::path& path, const KeypointOptions& options = {});

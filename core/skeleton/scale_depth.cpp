@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/camera/focal_length.h"
 #include "core/common/errors.h"
 
 namespace ew {
@@ -56,6 +57,9 @@ ScaleDepthFocal focalFromScaleDepth(const Eigen::Ref<const Eigen::RowVectorXd>& 
     throw Error(ErrorKind::BadData, what, "",
                 "the outer segments are at one depth: the scale-depth relation leaves the focal length undetermined");
   r.focalPx = r.depthStepMm / ds;
+  // Nearly parallel segments at nearly one depth give any number: not a camera's, not an answer.
+  if (const std::string problem = focalLengthProblem(r.focalPx); !problem.empty())
+    throw Error(ErrorKind::BadData, what, "", "the scale-depth relation gives a " + problem + " (choose another frame or chain)");
   return r;
 }
 

@@ -124,6 +124,14 @@ void checkMarksWithin(const Keyframes& keyframes, int widthPx, int heightPx, con
   }
 }
 
+void checkKeyframesWithin(const Keyframes& keyframes, int frameCount, const std::string& file) {
+  for (const Keyframe& k : keyframes.keyframes)
+    if (k.frame >= frameCount)
+      throwBadData(file, "keyframe on frame " + std::to_string(k.frame),
+                   "the video has " + std::to_string(frameCount) + " frames (0-" + std::to_string(frameCount - 1) +
+                       "): not marked on this video?");
+}
+
 bool isKeyframeFile(const std::filesystem::path& path) {
   if (path.extension() != ".json") return false;
   std::ifstream in(path, std::ios::binary);

@@ -41,6 +41,11 @@ inline constexpr double kMarkMarginShare = 0.25;
 // outside a widthPx × heightPx picture than kMarkMarginShare of its size.
 void checkMarksWithin(const Keyframes& keyframes, int widthPx, int heightPx, const std::string& file);
 
+// Throws Error(BadData) naming `file` (the keyframe file) and the keyframe for one on a frame
+// the video does not have (frameCount frames, 0-based): marked on another, longer video, or a
+// frame number typed wrong. Such a keyframe is no tracker's to skip: the file is at fault.
+void checkKeyframesWithin(const Keyframes& keyframes, int frameCount, const std::string& file);
+
 // True for a .json file whose start says it is a keyframe file (its "format" field), so a
 // keyframe file and a pose estimator's JSON can be told apart without reading either whole.
 bool isKeyframeFile(const std::filesystem::path& path);

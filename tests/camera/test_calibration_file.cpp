@@ -59,16 +59,56 @@ TEST(CalibrationFile, MalformedTextIsAnErrorNamingTheLine) {
   expectMalformed("[c]\nmatrix = [[1, 0, 2], [0, 1, 3]]\n", "line 2", "3 rows of 3");
   expectMalformed("[c]\nmatrix = [[1, 0, 2], [0, 1, 3], [0, 0, 1]\n", "line 2", "unbalanced");
   expectMalformed("[c]\nmatrix = [[1, 0, x], [0, 1, 3], [0, 0, 1]]\n", "line 2", "not a number");
-  expectMalformed("[c]\nmatrix = [[-5, 0, 2], [0, 1, 3], [0, 0, 1]]\n", "line 2", "positive");
+  expectMalformed("[c]\nmatrix = [[-5, 0, 2], [0, 1, 3], [0, 0, 1]]\n", "line 2", "focal length -5 px");
   expectMalformed("[c]\nmatrix = [[1e999, 0, 2], [0, 1, 3], [0, 0, 1]]\n", "line 2", "not");
   expectMalformed("[c]\nmatrix = \"text\"\n", "line 2", "expected numbers");
   expectMalformed("matrix = [[1, 0, 2], [0, 1, 3], [0, 0, 1]]\n", "line 1", "before any [table]");
   expectMalformed("[c\nmatrix = 1\n", "line 1", "[name]");
   expectMalformed("[c]\nmatrix [[1]]\n", "line 2", "key = value");
   expectMalformed("[c]\nmatrix = [[[[[1]]]]]\n", "line 2", "nested");
-  expectMalformed("[c]\nsize = [0, 10]\nmatrix = [[1, 0, 2], [0, 1, 3], [0, 0, 1]]\n", "line 2", "width, height");
+  expectMalformed("[c]\nsize = [0, 10]\nmatrix = [[1000, 0, 2], [0, 1000, 3], [0, 0, 1]]\n", "line 2", "width, height");
+  expectMalformed("[c]\nsize = [1e300, 10]\nmatrix = [[1000, 0, 2], [0, 1000, 3], [0, 0, 1]]\n", "line 2",
+                  "width, height");
   EXPECT_THROW(parseCalibrationToml("[metadata]\nerror = 0\n", "calib.toml"), Error);
   EXPECT_THROW(parseCalibrationToml("", "calib.toml"), Error);
+}
+
+// Issue 53: a focal length of 5e-324 px dropped every keypoint as outside the picture (and
+// crashed the gait cycles), one of 1e308 px was reported as "focal inf px". Each of fx and fy
+// must be a camera's (core/camera/focal_length.h), the bounds themselves accepted.
+TEST(CalibrationFile, AFocalLengthMustBeACamerasEach) {
+  const auto withFocals = [](const std::string& fx, const std::string& fy) {
+    return "[cam]\nsize = [1920, 1080]\nmatrix = [[" + fx + ", 0, 960], [0, " + fy + ", 540], [0, 0, 1]]\n";
+  };
+  expectMalformed(withFocals("5e-324", "5e-324"), "line 3", "focal length 4.94066e-324 px");
+  expectMalformed(withFocals("1e308", "1e308"), "line 3", "focal length 1e+308 px: a camera's is finite and 50-100000 px");
+  expectMalformed(withFocals("1400", "49.9"), "line 3", "focal length 49.9 px");
+  expectMalformed(withFocals("100001", "1400"), "line 3", "[cam] matrix: focal length 100001 px");
+  EXPECT_EQ(parseCalibrationToml(withFocals("50", "100000"), "calib.toml").front().focalPx(), 50025.0);
+}
+
+// Issue 53: a file saved by a Windows editor starts with a UTF-8 byte-order mark; it was
+// refused as "line 1: expected key = value" while the same file with CRLF line ends was read.
+TEST(CalibrationFile, AByteOrderMarkBeforeTheFirstTableIsSkipped) {
+  std::string crlf;
+  for (const char c : std::string(kOneCamera)) crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
+  for (const std::string& text : {"\xEF\xBB\xBF" + std::string(kOneCamera), "\xEF\xBB\xBF" + crlf}) {
+    const auto cameras = parseCalibrationToml(text, "bom.toml");
+    ASSERT_EQ(cameras.size(), 1u);
+    EXPECT_EQ(cameras.front().table, "demo");
+    EXPECT_EQ(cameras.front().name, "demo");
+    EXPECT_EQ(cameras.front().focalPx(), 2520.0);
+  }
+}
+
+// Issue 53: `name = "abc` was read as camera "ab" (the last character taken for the quote).
+TEST(CalibrationFile, AStringMustBeClosedAndANameQuoted) {
+  const std::string matrix = "matrix = [[1000, 0, 2], [0, 1000, 3], [0, 0, 1]]\n";
+  expectMalformed("[c]\nname = \"abc\n" + matrix, "line 2", "name: the string has no closing '\"'");
+  expectMalformed("[c]\nname = \"\n" + matrix, "line 2", "no closing");
+  expectMalformed("[c]\n" + matrix + "model = \"pinhole  # a comment\n", "line 3", "model: the string has no closing");
+  expectMalformed("[c]\nname = abc\n" + matrix, "line 2", "[c] name: expected a \"quoted\" name");
+  EXPECT_EQ(parseCalibrationToml("[c]\nname = \"a # b\" # c\n" + matrix, "calib.toml").front().name, "a # b");
 }
 
 TEST(CalibrationFile, SeveralCamerasNeedAName) {

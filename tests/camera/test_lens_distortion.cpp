@@ -10,10 +10,12 @@
 #include <nlohmann/json.hpp>
 
 #include "core/camera/lens_distortion.h"
+#include "core/keypoints/keypoint_trial.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
 #include "core/keypoints/openpose_writer.h"
 #include "tests/camera/filmed_walk.h"
+#include "tests/common/error_matchers.h"
 #include "tests/common/test_support.h"
 
 namespace ew {
@@ -63,6 +65,31 @@ TEST(LensDistortion, PointsTheIterationCannotBringBackAreDropped) {
   same << 1234.5, 67.25;
   EXPECT_EQ(undistortPixels(plain, same), 0);
   EXPECT_EQ(same(0, 0), 1234.5);
+}
+
+// Issue 53: a calibration not of this camera (here a lens 1000 times the wide one's, as a
+// tiny focal length made) pushes every point outside its calibrated field. The walk's joints
+// are then gone: an error naming the clip, not a trial whose pelvis is nowhere (which crashed the
+// gait cycles).
+TEST(LensDistortion, ACalibrationThatLosesTheWalksJointsIsAnError) {
+  KeypointTrial trial;
+  trial.file = "cam01_json";
+  trial.chosenReason = "person 1 of 1: in 2 of 2 frames";
+  trial.frameCount = 2;
+  trial.jointsPx = Eigen::MatrixXd::Constant(2, kDims2, 900.0);
+  trial.people.push_back(PersonTrack{{0, 1}, {0, 0}, 0.0, 500.0, trial.jointsPx});
+  CalibratedCamera c = wideLens();
+  c.distortions = {-250.0, 80.0, 0.0, 0.0};
+  c.cxPx = c.cyPx = 0.0;  // every point 900 px off-axis in both directions
+  KeypointTrial lost = trial;
+  EXPECT_TRUE(test::throwsError([&] { undistortTrial(c, lost); }, ErrorKind::BadData,
+                                {"cam01_json", "pelvis of person 1 of 1 is never seen once the calibration's lens",
+                                 "30 points fell outside its calibrated field: is it this camera's?"}));
+  // The wide lens itself keeps them, and counts them seen.
+  KeypointTrial kept = trial;
+  EXPECT_EQ(undistortTrial(wideLens(), kept), 0);
+  EXPECT_FALSE(kept.missing[static_cast<std::size_t>(index(Joint::Pelvis))]);
+  EXPECT_EQ(kept.seenShare[static_cast<std::size_t>(index(Joint::Pelvis))], 1.0);
 }
 
 // The mean walker filmed through the wide lens, as OpenPose JSON.

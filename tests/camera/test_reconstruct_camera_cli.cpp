@@ -194,5 +194,38 @@ TEST(ReconstructCameraCli, CalibrationFileGivesTheFocalLength) {
   EXPECT_NE(twice.output.find("not both"), std::string::npos) << twice.output;
 }
 
+// Issue 53's reproducers on the shared cam01 keypoints: a Pose2Sim-style calibration whose
+// focal lengths are 5e-324 px (undistortion dropped all 2519 points, then a SIGSEGV in the
+// gait cycles) or 1e308 px (reported as "focal inf px"), and --focal-px 1e308. Each is refused
+// naming where the number came from and the rule (core/camera/focal_length.h).
+TEST(ReconstructCameraCli, AFocalLengthNoCameraHasIsRefusedNamingItsSource) {
+  EW_REQUIRE_SHARED_DATA();
+  const fs::path cam01 = test::sharedDataDir() / "pose2sim-balancing" / "pose" / "cam01_json";
+  const fs::path dir = test::makeTempDir("camera_cli_focal");
+  for (const std::string focal : {"5e-324", "1e308"}) {
+    const fs::path calib = dir / ("Calib_" + focal + ".toml");
+    std::ofstream(calib) << "[cam_01]\nname = \"cam_01\"\nsize = [ 1088.0, 1920.0]\nmatrix = [[" << focal
+                         << ", 0, 960], [0, " << focal << ", 540], [0, 0, 1]]\n"
+                         << "distortions = [ -0.0007, 0.0022, 9.5e-06, 1.1e-05]\n";
+    const auto run = test::runProgram(EW_CLI_PATH,
+                                      {"reconstruct", "--input", cam01.string(), "--unknown-camera", "--camera",
+                                       calib.string(), "--out", (dir / "walk3d.csv").string()},
+                                      dir);
+    EXPECT_EQ(run.exitCode, 1) << run.output;
+    EXPECT_NE(run.output.find(calib.string() + ": line 4: [cam_01] matrix: focal length"), std::string::npos)
+        << run.output;
+    EXPECT_NE(run.output.find("finite and 50-100000 px"), std::string::npos) << run.output;
+  }
+  const auto given = test::runProgram(EW_CLI_PATH,
+                                      {"reconstruct", "--input", cam01.string(), "--unknown-camera", "--focal-px",
+                                       "1e308", "--out", (dir / "walk3d.csv").string()},
+                                      dir);
+  EXPECT_EQ(given.exitCode, 2) << given.output;
+  EXPECT_NE(given.output.find("--focal-px"), std::string::npos) << given.output;
+  EXPECT_NE(given.output.find("focal length 1e+308 px"), std::string::npos) << given.output;
+  EXPECT_EQ(given.output.find("focal inf"), std::string::npos) << given.output;
+  EXPECT_FALSE(fs::exists(dir / "walk3d.csv"));
+}
+
 }  // namespace
 }  // namespace ew

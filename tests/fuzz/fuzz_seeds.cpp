@@ -47,6 +47,7 @@
 #include "core/keypoints/keypoint_layout.h"
 #include "core/keypoints/openpose_writer.h"
 #include "core/synth/population.h"
+#include "tests/camera/filmed_walk.h"
 #include "tests/common/nexus_text.h"
 #include "tests/common/qtm_text.h"
 #include "tests/fuzz/fuzz_common.h"
@@ -611,6 +612,24 @@ void modelSeeds(SeedWriter& out, const fs::path& tmp) {
   out.write("model_file", "two_clusters.ewsp", readText(prior));
 }
 
+// A calibration for the calibrated clip's seeds (fuzz_calibrated_clip.cpp): a 640 × 480 camera
+// with a mild barrel, so that its keypoints are undistorted, not passed through.
+constexpr std::string_view kClipCalibration =
+    "[cam_01]\nname = \"cam_01\"\nsize = [ 640.0, 480.0]\n"
+    "matrix = [ [ 600.0, 0.0, 320.0], [ 0.0, 600.0, 240.0], [ 0.0, 0.0, 1.0]]\n"
+    "distortions = [ -0.05, 0.01, 0.0, 0.0]\n";
+
+// The camera of the walking seed below (tests/camera/filmed_walk.h's, with a mild barrel).
+constexpr std::string_view kWalkCalibration =
+    "[side]\nname = \"side\"\nsize = [ 1920.0, 1080.0]\n"
+    "matrix = [ [ 1400.0, 0.0, 960.0], [ 0.0, 1400.0, 540.0], [ 0.0, 0.0, 1.0]]\n"
+    "distortions = [ -0.02, 0.005, 0.0, 0.0]\n";
+
+std::string calibratedClip(std::string_view calibration, int reader, std::string_view keypoints) {
+  return std::string(1, static_cast<char>(reader)) + std::string(calibration) + "\n%%KEYPOINTS%%\n" +
+         std::string(keypoints);
+}
+
 void sharedDataSeeds(SeedWriter& out, const fs::path& data) {
   auto copy = [&](const std::string& harness, Format format, const fs::path& relative,
                   bool alsoPipeline) {
@@ -638,7 +657,12 @@ void sharedDataSeeds(SeedWriter& out, const fs::path& data) {
   copy("calibration", Format::Csv, "pose2sim-balancing/Calib_qualisys.toml", false);
   copy("calibration", Format::Csv, "video/sports2d-demo/Calib_demo.toml", false);
   const fs::path pose2sim = data / "pose2sim-balancing/pose/cam01_json/cam01.0000.json";
-  if (fs::is_regular_file(pose2sim)) out.write("keypoints", "shared_cam01.0000.json", std::string(1, '\0') + readText(pose2sim));
+  if (fs::is_regular_file(pose2sim)) {
+    out.write("keypoints", "shared_cam01.0000.json", std::string(1, '\0') + readText(pose2sim));
+    const fs::path calib = data / "pose2sim-balancing/Calib_qualisys.toml";
+    if (fs::is_regular_file(calib))
+      out.write("calibrated_clip", "shared_cam01.0000.json", calibratedClip(readText(calib), 0, readText(pose2sim)));
+  }
   copy("trc", Format::Trc, "pose2sim-balancing/pose-3d/S00_P00_T01_BalancingTrial_0-100.trc",
        false);
   const fs::path asf = data / "cmu-mocap-asfamc/35/35.asf",
@@ -649,11 +673,25 @@ void sharedDataSeeds(SeedWriter& out, const fs::path& data) {
   }
 }
 
+// The filmed walk's OpenPose frames (tests/camera/filmed_walk.h) as one JSON list of frames.
+std::string filmedWalkList(const fs::path& folder) {
+  ew::test::writeFilmedOpenPose(folder, ew::test::crossingPinhole(1400, 3.0), 90, 30.0);
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(folder)) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::string list = "[";
+  for (const fs::path& f : files) list += (list.size() > 1 ? ",\n" : "") + readText(f);
+  return list + "]\n";
+}
+
 // Keypoint files behind the harness's reader byte (fuzz_keypoints.cpp): an OpenPose frame of
-// a walker (core's writer), AlphaPose, MMPose, MediaPipe, DeepLabCut and YOLO files written here.
+// a walker (core's writer), AlphaPose, MMPose, MediaPipe, DeepLabCut and YOLO files written here,
+// each also empty and of one frame (issue 53); every one also behind a calibration for
+// fuzz_calibrated_clip.
 void keypointSeeds(SeedWriter& out, const fs::path& tmp) {
   auto put = [&](int reader, const std::string& name, const std::string& text) {
     out.write("keypoints", name, std::string(1, static_cast<char>(reader)) + text);
+    out.write("calibrated_clip", name, calibratedClip(kClipCalibration, reader, text));
   };
   Eigen::MatrixXd px(2, 30);
   for (int f = 0; f < 2; ++f)
@@ -687,10 +725,32 @@ void keypointSeeds(SeedWriter& out, const fs::path& tmp) {
   std::string yolo = "0 0.5 0.5 0.2 0.6";
   for (int k = 0; k < 17; ++k) yolo += " " + std::to_string(0.45 + 0.005 * k) + " " + std::to_string(0.2 + 0.04 * k) + " 0.9";
   put(5, "yolo.txt", yolo + " 0.87 1\n" + yolo + " 0.62 2\n");
+  // The empty result of every format (nobody detected), and one frame of each.
+  put(0, "openpose_nobody.json", "{\"version\": 1.3, \"people\": []}");
+  put(0, "openpose_no_frames.json", "[]");
+  put(1, "alphapose_nobody.json", "[]");
+  put(1, "alphapose_one_frame.json", "[{\"image_id\": \"0.jpg\", \"category_id\": 1, \"keypoints\": [" + coco +
+                                         "], \"score\": 2.5}]");
+  put(2, "mmpose_no_frames.json", "{\"meta_info\": {\"dataset_name\": \"coco\"}, \"instance_info\": []}");
+  put(2, "mmpose_nobody.json", "[]");
+  put(2, "mmpose_one_frame.json", "[{\"keypoints\": [" + xy + "], \"keypoint_scores\": [" + scores + "]}]");
+  put(3, "mediapipe_header_only.csv", header + "\n");
+  put(3, "mediapipe_one_frame.csv", header + "\n" + row0 + "\n");
+  put(4, "deeplabcut_header_only.csv",
+      "scorer,DLC,DLC,DLC\nbodyparts,hip,hip,hip\ncoords,x,y,likelihood\n");
+  put(4, "deeplabcut_one_frame.csv", "scorer,DLC,DLC,DLC\nbodyparts,hip,hip,hip\ncoords,x,y,likelihood\n0,10,20,0.9\n");
+  put(5, "yolo_empty.txt", "");
+  put(5, "yolo_one_frame.txt", yolo + " 0.87 1\n");
+  // A walk that gets through the gait cycles: the mean walker crossing a 1400 px camera for 3 s
+  // at 30 fps, its OpenPose frames as one file's list, and behind that camera's calibration.
+  const std::string walk = filmedWalkList(tmp / "walk");
+  out.write("keypoints", "openpose_walk_list.json", std::string(1, '\0') + walk);
+  out.write("calibrated_clip", "openpose_walk_list.json", calibratedClip(kWalkCalibration, 0, walk));
 }
 
 // Calibration files (fuzz_calibration.cpp): one camera, and two with a metadata table.
 void calibrationSeeds(SeedWriter& out) {
+  out.write("calibration", "clip_camera.toml", kClipCalibration);
   out.write("calibration", "one_camera.toml",
             "[demo]\nname = \"demo\"\nsize = [ 1768, 994]\n"
             "matrix = [ [ 2520.0, 0.0, 884.0], [ 0.0, 2520.0, 497.0], [ 0.0, 0.0, 1.0]]\n"
@@ -721,7 +781,7 @@ int main(int argc, char** argv) {
     SeedWriter out(root);
     for (const char* h :
          {"c3d", "bvh", "asf_amc", "trc", "qtm_tsv", "joint_csv", "model_file", "mapping_file", "pipeline",
-          "keypoints", "calibration"})
+          "keypoints", "calibration", "calibrated_clip"})
       out.reset(h);
     const fs::path tmp = root / ".tmp";
     fs::create_directories(tmp);

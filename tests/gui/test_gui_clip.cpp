@@ -89,6 +89,9 @@ TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
       {{"export_state", path("elevation.json")}},
       {{"set_clip", {{"elevation_deg", nullptr}, {"focal_px", 1400.0}}}},
       {{"export_state", path("focal.json")}},
+      // Issue 53: the viewer holds a focal length to the one rule (core/camera/focal_length.h).
+      {{"expect_failure", {{"set_clip", {{"focal_px", 1e308}}}}}},
+      {{"expect_failure", {{"set_clip", {{"focal_px", 49.0}}}}}},
       // The standing person does not walk: fitting it fails, and the walker's fit stays.
       {{"expect_failure", {{"set_clip", {{"person", 1}}}}}},
       {{"export_state", path("standing.json")}},

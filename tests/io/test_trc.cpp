@@ -52,6 +52,37 @@ TEST(Trc, MalformedRowsNameTheLine) {
   EXPECT_THROW(parseTrc("hello\nworld\n", "text.trc"), Error);
 }
 
+// Issue 53: a header declaring 2e9 frames over one row was read silently; the QTM reader
+// refuses the same mismatch. NumFrames is not trusted for an allocation, only compared.
+TEST(Trc, NumFramesThatIsNotTheRowsIsRefused) {
+  std::string huge = kTrc;
+  huge.replace(huge.find("60.00\t60.00\t3\t"), 14, "60.00\t60.00\t2e9\t");
+  huge.erase(huge.find("2\t0.0167"));  // one row left
+  try {
+    parseTrc(huge, "huge.trc");
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Malformed);
+    EXPECT_EQ(e.file(), "huge.trc");
+    EXPECT_EQ(e.position(), "line 3");
+    EXPECT_NE(std::string(e.what()).find("NumFrames says 2e9 frames, the file holds 1 (cut short?)"), std::string::npos)
+        << e.what();
+  }
+  std::string more = kTrc;
+  more.replace(more.find("60.00\t60.00\t3\t"), 14, "60.00\t60.00\t2\t");
+  try {
+    parseTrc(more, "more.trc");
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("NumFrames says 2 frames, the file holds 3"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("cut short"), std::string::npos) << e.what();
+  }
+  // Left empty, NumFrames states nothing to compare.
+  std::string unsaid = kTrc;
+  unsaid.replace(unsaid.find("60.00\t60.00\t3\t"), 14, "60.00\t60.00\t\t");
+  EXPECT_EQ(parseTrc(unsaid, "unsaid.trc").positionsMm.rows(), 3);
+}
+
 TEST(Trc, TruncationsNeverCrash) {
   const std::string text = kTrc;
   for (size_t n = 0; n < text.size(); ++n) {

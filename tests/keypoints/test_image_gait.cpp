@@ -13,6 +13,7 @@
 
 #include "core/camera/walk_camera.h"
 #include "core/common/errors.h"
+#include "core/common/nan.h"
 #include "core/engine/default_model.h"
 #include "core/engine/fourier.h"
 #include "core/keypoints/image_gait.h"
@@ -55,6 +56,23 @@ Clip meanWalkerClip(const std::string& stem, double alphaDeg, double speedMmS, d
   writeOpenPoseBody25(clip.folder,
                       {{projectWalk(synthesizeFrames(model.mean, omega, 0.0, t), t, camera), {}}});
   return clip;
+}
+
+// Issue 53: a trial whose pelvis is never seen (its points dropped by a lens undistortion
+// that did not fit the camera) crashed reading the last of no pelvis positions.
+TEST(ImageGait, APelvisNeverSeenIsNotWalking) {
+  KeypointTrial trial;
+  trial.file = "cam01_json";
+  trial.frameCount = 40;
+  trial.rateHz = kFps;
+  trial.jointsPx = Eigen::MatrixXd::Constant(40, kDims2, kNaN);
+  trial.people.push_back(PersonTrack{{}, {}, 0.0, 500.0, {}});
+  EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(trial); }, ErrorKind::BadData,
+                                {"cam01_json", "not walking: the pelvis is seen in none of the 40 frames"}));
+  trial.jointsPx.resize(0, kDims2);
+  trial.frameCount = 0;
+  EXPECT_TRUE(test::throwsError([&] { imageGaitCycles(trial); }, ErrorKind::BadData,
+                                {"the pelvis is seen in none of the 0 frames"}));
 }
 
 KeypointOptions at30Fps() {

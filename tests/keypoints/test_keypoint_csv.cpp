@@ -333,6 +333,26 @@ TEST(KeypointCsv, OnlyMediaPipeAndDeepLabCutCsvsAreKeypoints) {
   EXPECT_EQ(keypointCsvKind("frame,time_s,nose_x,nose_y,nose_z\n"), KeypointCsvKind::NotKeypoints);
   EXPECT_EQ(keypointCsvKind("Scorer,a,a,a\n"), KeypointCsvKind::DeepLabCut);
   EXPECT_EQ(keypointCsvKind(""), KeypointCsvKind::NotKeypoints);
+  // A MediaPipe file cut down to a few landmarks is still one (issue 53).
+  EXPECT_EQ(keypointCsvKind("nose_x,nose_y,nose_z,nose_visibility\n"), KeypointCsvKind::MediaPipe);
+  EXPECT_EQ(keypointCsvKind("frame,left_hip_x,left_hip_y,right_hip_x,right_hip_y\n"), KeypointCsvKind::MediaPipe);
+}
+
+// Issue 53: a MediaPipe CSV of one landmark holding a NaN was taken for a 15-joint CSV ("header
+// has 4 columns, expected 47"); it is read as MediaPipe's and refused naming what it lacks.
+TEST(KeypointCsv, AFewLandmarksHoldingANaNAreAMediaPipeFileThatLacksTheRest) {
+  const fs::path file = writeText("mp_few", "few.csv", "nose_x,nose_y,nose_z,nose_visibility\nNaN,NaN,NaN,NaN\n");
+  ASSERT_TRUE(looksLikeKeypointInput(file));
+  try {
+    readKeypointFrames(file, KeypointImageSize{640, 480});
+    FAIL() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::Malformed);
+    EXPECT_EQ(e.file(), file.string());
+    EXPECT_NE(std::string(e.what()).find("MediaPipe landmark columns missing: left_eye_inner_x/_y"), std::string::npos)
+        << e.what();
+    EXPECT_EQ(std::string(e.what()).find("expected 47"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

@@ -209,6 +209,23 @@ TEST(Keypoints, AlphaPoseCoco17ListGroupsDetectionsByImage) {
   EXPECT_TRUE(t.derived[static_cast<std::size_t>(index(Joint::Pelvis))]);
 }
 
+// Issue 53: AlphaPose writes `[]` for a video with nobody in it. Its reader took the first
+// and last image of none (begin()/rbegin() of an empty map) and the command line called the
+// file "not a keypoint file": it is "no person detected", from the reader and the file alike.
+TEST(Keypoints, AnEmptyAlphaPoseListIsNoPersonDetected) {
+  EXPECT_TRUE(test::throwsError([] { parseAlphaPoseJson("[]", "alphapose-results.json"); }, ErrorKind::BadData,
+                                {"alphapose-results.json", "no person detected"}));
+  EXPECT_TRUE(test::throwsError([] { parseAlphaPoseJson(" [ ]\n", "a.json"); }, ErrorKind::BadData, {"no person detected"}));
+  const fs::path file = writeText("alphapose_nobody", "alphapose-results.json", "[]\n");
+  EXPECT_TRUE(looksLikeKeypointInput(file));
+  EXPECT_TRUE(test::throwsError([&] { readKeypointFrames(file); }, ErrorKind::BadData,
+                                {file.string(), "no person detected (an empty list of detections)"}));
+  // The other formats' empty results say the same.
+  EXPECT_TRUE(test::throwsError([] { parseMmposeJson("[]", "m.json"); }, ErrorKind::BadData, {"no person detected"}));
+  EXPECT_TRUE(test::throwsError([] { parseOpenPoseFrames({{"f_0.json", R"({"people": []})"}}, "op"); },
+                                ErrorKind::BadData, {"no person detected"}));
+}
+
 TEST(Keypoints, MmposeVideoResultsStateTheirLayout) {
   const KeypointLayout& coco = keypointLayoutNamed("COCO-17");
   json frames = json::array();

@@ -124,6 +124,15 @@ TEST(ScaleDepth, RefusesFramesThatCannotGiveAFocalLength) {
   shortArm.mm[static_cast<std::size_t>(boneBetween(Joint::RShoulder, Joint::RElbow))] = 200.0;
   EXPECT_TRUE(test::throwsError([&] { focalFromScaleDepth(frame, kCx, kCy, kArm, shortArm, "f"); }, ErrorKind::BadData,
                                 {"f", "r_shoulder-r_elbow looks longer than it is"}));
+  // Issue 53: outer segments a hair apart in depth give any focal length; one no camera has
+  // (core/camera/focal_length.h) is refused, not handed to the skeleton's camera. Here the
+  // forearm is said longer by the ratio of the two depths (and 1e-7 more), so that its scale
+  // is the upper arm's within 1e-7: f = |dz| / |ds| ≈ 1e9 px.
+  const std::size_t forearm = static_cast<std::size_t>(boneBetween(Joint::RElbow, Joint::RWrist));
+  BoneLengths sameScale = bones;
+  sameScale.mm[forearm] *= 4000.0 / (4000.0 - 200.0) * (1.0 + 1e-7);
+  EXPECT_TRUE(test::throwsError([&] { focalFromScaleDepth(frame, kCx, kCy, kArm, sameScale, "f"); }, ErrorKind::BadData,
+                                {"f", "the scale-depth relation gives a focal length", "50-100000 px"}));
   // The whole arm parallel to the image plane: one depth, no relation.
   const auto flat = armPose(0.0);
   EXPECT_TRUE(test::throwsError([&] { focalFromScaleDepth(frameOf(flat), kCx, kCy, kArm, bonesOf(flat), "f"); },

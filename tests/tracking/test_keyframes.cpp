@@ -104,6 +104,23 @@ TEST(Keyframes, MarksFarOutsideThePictureAreRefused) {
   }
 }
 
+// Issue 53: a keyframe at frame 1e9 was reported as the tracker's "no keyframe within the
+// tracked frames", naming the video. The keyframe file is at fault, and named.
+TEST(Keyframes, AKeyframePastTheVideosLastFrameIsTheFilesFault) {
+  const Keyframes keys = parseKeyframes(
+      R"({"format": "eigenwalker-keyframes", "version": 1, "keyframes": [)"
+      R"({"frame": 0, "joints": {"head": [1, 2]}}, {"frame": 1000000000, "joints": {"head": [1, 2]}}]})",
+      "far.json");
+  EXPECT_TRUE(test::throwsError([&] { checkKeyframesWithin(keys, 30, "far.json"); }, ErrorKind::BadData,
+                                {"far.json", "keyframe on frame 1000000000", "the video has 30 frames (0-29)"}));
+  Keyframes last = keys;
+  last.keyframes.back().frame = 29;
+  EXPECT_NO_THROW(checkKeyframesWithin(last, 30, "far.json"));
+  last.keyframes.back().frame = 30;
+  EXPECT_TRUE(test::throwsError([&] { checkKeyframesWithin(last, 30, "far.json"); }, ErrorKind::BadData,
+                                {"keyframe on frame 30"}));
+}
+
 TEST(Keyframes, FromATrackAtChosenFrames) {
   Eigen::MatrixXd track = Eigen::MatrixXd::Constant(10, kDims2, kNaN);
   track.row(2).setLinSpaced(kDims2, 0.0, 29.0);

@@ -265,5 +265,32 @@ TEST(JointTracker, RefusesARangeWithoutKeyframesOrOutsideTheVideo) {
                                 {"frame 50 head", "far outside"}));
 }
 
+// Issue 53: a 1 × 1-pixel video was "tracked" for 10 frames at confidence 0. A picture too
+// small for a walker is refused, naming the video (OpenCV writes nothing under 2 × 2: the
+// smallest it writes, and two pixels under the bound); one of the smallest side tracked is not.
+TEST(JointTracker, RefusesAPictureTooSmallForAWalker) {
+  const fs::path dir = test::makeTempDir("tracker_tiny");
+  const auto clip = [&](int side) {
+    const fs::path file = dir / ("side_" + std::to_string(side) + ".avi");
+    cv::VideoWriter writer(file.string(), cv::CAP_FFMPEG, cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25.0,
+                           cv::Size(side, side));
+    EXPECT_TRUE(writer.isOpened()) << side;
+    for (int k = 0; k < 10; ++k) writer.write(cv::Mat(side, side, CV_8UC3, cv::Scalar(20.0 * k, 90, 160)));
+    return file;
+  };
+  Keyframes keys;
+  keys.keyframes.push_back({0, Eigen::RowVectorXd::Constant(kDims2, 0.5 * kMinTrackedSidePx)});
+  for (const int side : {2, kMinTrackedSidePx - 2}) {  // MJPG keeps even sides
+    VideoSource tiny(clip(side));
+    const std::string size = std::to_string(side) + "x" + std::to_string(side);
+    EXPECT_TRUE(test::throwsError([&] { trackJoints(tiny, keys); }, ErrorKind::BadData,
+                                  {"side_" + std::to_string(side) + ".avi",
+                                   "frame size " + size + " px is too small to track a walker in",
+                                   "at least " + std::to_string(kMinTrackedSidePx) + " px"}));
+  }
+  VideoSource smallest(clip(kMinTrackedSidePx));
+  EXPECT_EQ(trackJoints(smallest, keys).jointsPx.rows(), 10);
+}
+
 }  // namespace
 }  // namespace ew

@@ -117,6 +117,20 @@ TEST_F(TrackCli, RefusesAnUnknownTrackerAndAKeyframeFrameTheFileLacks) {
   EXPECT_FALSE(fs::exists(root_ / "bad" / "track.json"));
 }
 
+// Issue 53: a keyframe at frame 1e9 exited 2 naming the video ("no keyframe within the tracked
+// frames"); the keyframe file is at fault: exit 1, naming it and the keyframe.
+TEST_F(TrackCli, AKeyframePastTheVideosEndIsAnErrorNamingTheKeyframeFile) {
+  Keyframes far = keyframesFromTrack(truthPx_, {0}, "walk.avi");
+  far.keyframes.front().frame = 1000000000;
+  writeKeyframes(root_ / "far.json", far);
+  const test::ShellRun r = runCli("track --video walk.avi --keyframes far.json --out far_out", root_);
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("far.json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("keyframe on frame 1000000000"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the video has 30 frames"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(root_ / "far_out" / "track.json"));
+}
+
 // `--reconstruct` fits the track itself, as the viewer and the model loop do
 // (keypointTrialOf, the stride held at the trunk's bob), not the OpenPose files it writes: the
 // walk it writes is the walk the same fit finds in-process. Three gait cycles, keyframes

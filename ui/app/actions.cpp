@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "core/camera/focal_length.h"
 #include "core/common/errors.h"
 #include "core/engine/model.h"
 #include "core/engine/model_file.h"
@@ -1416,8 +1417,7 @@ void openClip(AppState& s, const std::filesystem::path& path) {
 }
 
 void setClipFocal(AppState& s, std::optional<double> focalPx) {
-  if (focalPx && !(std::isfinite(*focalPx) && *focalPx >= 50.0 && *focalPx <= 100000.0))
-    throw std::invalid_argument("focal length must lie in [50, 100000] px");
+  if (focalPx && !isPlausibleFocalPx(*focalPx)) throw std::invalid_argument(focalLengthProblem(*focalPx));
   clipSettings(s).focalPx = focalPx;
 }
 

@@ -100,12 +100,9 @@ void loadKeyframes(AppState& s, const std::filesystem::path& path) {
   } catch (const std::exception& e) {
     throw std::invalid_argument(e.what());
   }
-  for (const auto& f : k.keyframes)
-    if (f.frame >= v.frameCount())
-      throw std::invalid_argument(path.string() + ": keyframe on frame " + std::to_string(f.frame) +
-                                  ", the video has " + std::to_string(v.frameCount()) + " frames");
   try {
     const VideoInfo& info = v.frames->info();
+    checkKeyframesWithin(k, v.frameCount(), path.string());
     checkMarksWithin(k, info.widthPx, info.heightPx, path.string());
   } catch (const std::exception& e) {
     throw std::invalid_argument(e.what());

@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "core/camera/focal_length.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "core/keypoints/keypoint_layout.h"
 #include "ui/app/actions.h"
@@ -170,7 +171,8 @@ static void drawCameraHolds(AppState& s, const ClipSettings& c, const ClipResult
   const WalkCamera* cam = r ? &r->rec.fit.camera : nullptr;
   if (!cam || cam->model == CameraModel::Pinhole) {
     textDisabledWrapped("focal length (type, Enter)");
-    heldValue(s, "focal", "the focal length", c.focalPx, cam ? cam->focalPx : 1500.0, 50.0f, 100000.0f, "%.0f px", true,
+    heldValue(s, "focal", "the focal length", c.focalPx, cam ? cam->focalPx : 1500.0, static_cast<float>(kMinFocalPx),
+              static_cast<float>(kMaxFocalPx), "%.0f px", true,
               [&](std::optional<double> v) { actions::setClipFocal(s, v); });
   }
   textDisabledWrapped("elevation (looking down)");
