@@ -1,5 +1,6 @@
 // `eigenwalker-cli info [--json] PATH…`: one row (or JSON object) per trial.
 #include <iomanip>
+#include <set>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -132,11 +133,16 @@ int runInfo(const InfoArgs& args) {
   };
   // A video: the walker found by the built-in detector (through the detection cache).
   for (const auto& v : videos) summaries.push_back(videoSummary(v, keypoints, args.detectModel));
-  for (const auto& f : collectTrialFiles(paths, warnings)) {
-    summaries.push_back(looksLikeKeypointInput(f.path) ? keypointSummary(f.path) : summarizeTrial(f.path, options));
+  std::set<std::filesystem::path> summarised;  // a keypoint file both collectors find is shown once
+  if (!paths.empty()) {
+    for (const auto& f : collectTrialFiles(paths, warnings)) {
+      const bool isKeypointFile = looksLikeKeypointInput(f.path);
+      if (isKeypointFile) summarised.insert(f.path.lexically_normal());
+      summaries.push_back(isKeypointFile ? keypointSummary(f.path) : summarizeTrial(f.path, options));
+    }
+    for (const auto& p : collectKeypointInputs(paths))
+      if (summarised.insert(p.lexically_normal()).second) summaries.push_back(keypointSummary(p));
   }
-  if (!paths.empty())
-    for (const auto& p : collectKeypointInputs(paths)) summaries.push_back(keypointSummary(p));
   for (const auto& w : warnings) std::cerr << "warning: " << w << "\n";
   if (args.json) {
     nlohmann::json all = nlohmann::json::array();

@@ -58,6 +58,34 @@ TEST(PoseDetector, FollowsTheBalancingManAsOpenPoseSeesHim) {
   EXPECT_LT(d.medianAllPx, 15.0);
 }
 
+// A cut: the first 20 frames of cam01, then the first 20 of cam03 (the same man seen from
+// elsewhere in the room), as one clip at 540 x 960. The crop that followed him before the cut
+// loses him or finds him again; either way he is followed on the frames after it.
+TEST(PoseDetector, AfterACutThePersonIsFoundAgain) {
+  EW_REQUIRE_SHARED_DATA();
+  EW_REQUIRE_POSE_MODELS();
+  std::vector<cv::Mat> frames;
+  for (const char* camera : {"cam01.mp4", "cam03.mp4"}) {
+    cv::VideoCapture in((balancingTrial() / "videos" / camera).string());
+    cv::Mat f, small;
+    for (int i = 0; i < 20 && in.read(f); ++i) {
+      cv::resize(f, small, {540, 960}, 0, 0, cv::INTER_AREA);
+      frames.push_back(small.clone());
+    }
+  }
+  ASSERT_EQ(frames.size(), 40u);
+  const fs::path video = writeVideo(test::makeTempDir("cut") / "cut.avi", {540, 960}, 40,
+                                    [&](cv::Mat& m, int f) { frames[static_cast<std::size_t>(f)].copyTo(m); });
+  const PoseDetectionRun run = detectPoses(video);
+  ASSERT_EQ(run.poses.size(), 40u);
+  int before = 0, after = 0;
+  for (int f = 0; f < 40; ++f) (f < 20 ? before : after) += run.poses[static_cast<std::size_t>(f)].empty() ? 0 : 1;
+  EXPECT_EQ(before, 20);
+  EXPECT_GE(after, 18);  // re-found within two frames of the cut at most
+  EXPECT_GE(run.people, 1);
+  EXPECT_LE(run.people, 2);
+}
+
 TEST(PoseDetector, AVideoWithNobodyInItHasNobody) {
   EW_REQUIRE_POSE_MODELS();
   const fs::path video = writeVideo(test::makeTempDir("nobody") / "empty.avi", {320, 240}, 12, [](cv::Mat& m, int f) {
