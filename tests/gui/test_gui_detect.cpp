@@ -125,15 +125,19 @@ TEST_F(GuiDetect, ACorrectedJointRedoesTheTrackAroundItAndUndoes) {
   // Before and after at the corrected frame, 2 frames on, and just beyond the span.
   const int frames[] = {kFrame, kFrame + 2, kFrame + span + 1};
   json script = json::array({{{"detect_video", video.string()}}});
-  for (int f : frames)
-    script.push_back({{"video_frame", f}}), script.push_back({{"export_state", path("before" + std::to_string(f) + ".json")}});
+  for (int f : frames) {
+    script.push_back({{"video_frame", f}});
+    script.push_back({{"export_state", path("before" + std::to_string(f) + ".json")}});
+  }
   script.push_back({{"video_frame", kFrame}});
   script.push_back({{"drag_joint", {{"r_knee", {x, y}}}}});
   script.push_back({{"save_keyframes", path("corrections.json")}});
   script.push_back({{"video_zoom", {{"zoom", 3.0}, {"centre", {x, y - 80.0}}}}});  // the walker near
   script.push_back({{"screenshot", path("corrected.png")}});
-  for (int f : frames)
-    script.push_back({{"video_frame", f}}), script.push_back({{"export_state", path("after" + std::to_string(f) + ".json")}});
+  for (int f : frames) {
+    script.push_back({{"video_frame", f}});
+    script.push_back({{"export_state", path("after" + std::to_string(f) + ".json")}});
+  }
   script.push_back({{"video_frame", kFrame}});
   script.push_back({{"undo_keyframes", true}});
   script.push_back({{"export_state", path("undone.json")}});
