@@ -188,21 +188,12 @@ std::string principalPointPrior(const CameraFitOptions& o, const KeypointTrial& 
   return "none (the image's size unknown: --image-size gives it, or a video beside the keypoints)";
 }
 
-// How far a correction reaches either side of its frame: a detector's errors last a few
-// frames (a swapped leg, a wrist lost against the trunk).
-constexpr double kCorrectionSpanS = 0.25;
-
 // The keypoints corrected by hand (a keyframe file): the track redone around each correction
 // (core/tracking/corrected_track.h); a corrected joint is as sure as can be.
 void applyCorrections(const std::string& file, KeypointTrial& t) {
   const Keyframes keys = readKeyframes(file);
   if (t.imageSize) checkMarksWithin(keys, t.imageSize->width, t.imageSize->height, file);
-  const int span = static_cast<int>(std::lround(kCorrectionSpanS * t.rateHz));
-  t.jointsPx = correctTrack(t.jointsPx, keys, span);
-  if (t.jointConfidence.rows() == t.jointsPx.rows())
-    for (const Keyframe& key : keys.keyframes)
-      for (int j = 0; j < kJointCount && key.frame < t.jointConfidence.rows(); ++j)
-        if (std::isfinite(key.jointsPx(2 * j))) t.jointConfidence(key.frame, j) = 1.0;
+  const int span = correctTrial(t, keys);
   std::cerr << "corrections from " << file << ": " << keys.keyframes.size() << " frames, each carried over "
             << span << " frames either side\n";
 }

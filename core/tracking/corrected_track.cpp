@@ -76,4 +76,14 @@ Eigen::MatrixXd correctTrack(const Eigen::Ref<const Eigen::MatrixXd>& detectedPx
   return out;
 }
 
+int correctTrial(KeypointTrial& trial, const Keyframes& corrections) {
+  const int span = static_cast<int>(std::lround(kCorrectionSpanS * trial.rateHz));
+  trial.jointsPx = correctTrack(trial.jointsPx, corrections, span);
+  if (trial.jointConfidence.rows() == trial.jointsPx.rows())
+    for (const Keyframe& key : corrections.keyframes)
+      for (int j = 0; j < kJointCount && key.jointsPx.size() == kDims2 && key.frame >= 0 && key.frame < trial.jointConfidence.rows(); ++j)
+        if (std::isfinite(key.jointsPx(2 * j))) trial.jointConfidence(key.frame, j) = 1.0;
+  return span;
+}
+
 }  // namespace ew

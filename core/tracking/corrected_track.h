@@ -9,6 +9,7 @@
 // stands; on a corrected frame the correction does.
 #include <Eigen/Core>
 
+#include "core/keypoints/keypoint_trial.h"
 #include "core/tracking/keyframes.h"
 
 namespace ew {
@@ -18,5 +19,15 @@ namespace ew {
 // are ignored. Error(BadArgument) for a span under 0 or a track that is not T × 30.
 Eigen::MatrixXd correctTrack(const Eigen::Ref<const Eigen::MatrixXd>& detectedPx, const Keyframes& corrections,
                              int spanFrames);
+
+// How far a correction reaches either side of its frame: a detector's errors last a few
+// frames (a swapped leg, a wrist lost against the trunk).
+inline constexpr double kCorrectionSpanS = 0.25;
+
+// A pose estimator's trial (frames numbered as its video's) corrected by hand, as
+// `reconstruct --corrections` and the viewer do it: correctTrack over its 15 joints with a
+// span of kCorrectionSpanS at its rate, and each corrected joint as sure as can be there
+// (jointConfidence 1). Returns the span in frames. Throws what correctTrack throws.
+int correctTrial(KeypointTrial& trial, const Keyframes& corrections);
 
 }  // namespace ew

@@ -98,6 +98,95 @@ TEST_F(GuiDetect, DetectsTheSports2dWalkerAndFitsHerOverTheFootage) {
   EXPECT_GT(sd[0], 20.0) << "footage under the fit";
 }
 
+// Issue 52, "Marking and tracking become correction": a joint dragged on a detected frame is a
+// correction (a keyframe) that redoes the walker's track around it, fading over a quarter
+// second either side, and fits it again; undoing it puts the detections' fit back. The first
+// run finds where the knee was detected; the second, from the detection cache, corrects it.
+TEST_F(GuiDetect, ACorrectedJointRedoesTheTrackAroundItAndUndoes) {
+  EW_REQUIRE_SHARED_DATA();
+  EW_REQUIRE_POSE_MODELS();
+  const fs::path video = sharedDataDir() / "video" / "sports2d-demo" / "demo.mp4";
+  constexpr int kFrame = 60;
+  constexpr int kKnee = 10;  // r_knee (SPEC §1 order)
+  ASSERT_EQ(run(json::array({{{"detect_video", video.string()}},
+                             {{"video_frame", kFrame}},
+                             {{"export_state", path("found.json")}}}))
+                .exitCode,
+            0);
+  const json found = state("found.json");
+  ASSERT_TRUE(found["clip"]["fit"].is_object()) << found["clip"];
+  const json knee = found["clip"]["fit"]["frame_joints_px"];
+  ASSERT_EQ(knee.size(), 30u);
+  ASSERT_TRUE(knee[2 * kKnee].is_number()) << knee;
+  const double dx = 24.0, dy = -10.0;
+  const double x = knee[2 * kKnee].get<double>() + dx, y = knee[2 * kKnee + 1].get<double>() + dy;
+  const int span = static_cast<int>(std::lround(0.25 * found["clip"]["fit"]["rate_hz"].get<double>()));
+  ASSERT_GE(span, 2);
+  // Before and after at the corrected frame, 2 frames on, and just beyond the span.
+  const int frames[] = {kFrame, kFrame + 2, kFrame + span + 1};
+  json script = json::array({{{"detect_video", video.string()}}});
+  for (int f : frames) {
+    script.push_back({{"video_frame", f}});
+    script.push_back({{"export_state", path("before" + std::to_string(f) + ".json")}});
+  }
+  script.push_back({{"video_frame", kFrame}});
+  script.push_back({{"drag_joint", {{"r_knee", {x, y}}}}});
+  script.push_back({{"save_keyframes", path("corrections.json")}});
+  script.push_back({{"video_zoom", {{"zoom", 3.0}, {"centre", {x, y - 80.0}}}}});  // the walker near
+  script.push_back({{"screenshot", path("corrected.png")}});
+  for (int f : frames) {
+    script.push_back({{"video_frame", f}});
+    script.push_back({{"export_state", path("after" + std::to_string(f) + ".json")}});
+  }
+  script.push_back({{"video_frame", kFrame}});
+  script.push_back({{"undo_keyframes", true}});
+  script.push_back({{"export_state", path("undone.json")}});
+  const RunResult r = run(script);
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const auto at = [&](const std::string& name, int f) {
+    const json s = state(name + std::to_string(f) + ".json");
+    EXPECT_EQ(s["video"]["shown_frame"].get<int>(), f) << name;
+    return s;
+  };
+  const auto kneeOf = [](const json& s) {
+    const json& p = s["clip"]["fit"]["frame_joints_px"];
+    return std::pair{p[2 * kKnee].get<double>(), p[2 * kKnee + 1].get<double>()};
+  };
+  const json before = at("before", kFrame), after = at("after", kFrame);
+  EXPECT_TRUE(before["video"]["detection"]["done"]["from_cache"].get<bool>());
+  EXPECT_EQ(before["clip"]["fit"]["corrections"], 0);
+  // The fit is redone with the correction, and the clip's knee there is the correction.
+  EXPECT_EQ(after["clip"]["corrections"], 1);
+  EXPECT_EQ(after["clip"]["fit"]["corrections"], 1);
+  EXPECT_TRUE(after["clip"]["fit"]["current"].get<bool>());
+  EXPECT_TRUE(after["video"]["detection"]["shows_fit"].get<bool>());
+  EXPECT_NE(after["clip"]["fit"]["reprojection_rms_px"], before["clip"]["fit"]["reprojection_rms_px"]);
+  EXPECT_NEAR(kneeOf(after).first, x, 1e-9);
+  EXPECT_NEAR(kneeOf(after).second, y, 1e-9);
+  // Two frames on, the offset faded by 2 / (span + 1); beyond the span, the detection's.
+  const double w = 1.0 - 2.0 / (span + 1);
+  const auto b2 = kneeOf(at("before", kFrame + 2)), a2 = kneeOf(at("after", kFrame + 2));
+  EXPECT_NEAR(a2.first - b2.first, w * dx, 1e-6);
+  EXPECT_NEAR(a2.second - b2.second, w * dy, 1e-6);
+  EXPECT_EQ(at("after", kFrame + span + 1)["clip"]["fit"]["frame_joints_px"],
+            at("before", kFrame + span + 1)["clip"]["fit"]["frame_joints_px"]);
+  // Other joints on the corrected frame stay the detector's.
+  EXPECT_EQ(after["clip"]["fit"]["frame_joints_px"][2 * kKnee - 2], before["clip"]["fit"]["frame_joints_px"][2 * kKnee - 2]);
+  // The corrections save as a keyframe file (`reconstruct --corrections` reads it).
+  const json saved = json::parse(readAll(dir / "corrections.json"));
+  ASSERT_EQ(saved["keyframes"].size(), 1u);
+  EXPECT_EQ(saved["keyframes"][0]["frame"], kFrame);
+  EXPECT_NEAR(saved["keyframes"][0]["joints"]["r_knee"][0].get<double>(), x, 1e-6);
+  // Undone: no correction, the detections' fit again.
+  const json undone = state("undone.json");
+  EXPECT_EQ(undone["video"]["keyframes"].size(), 0u);
+  EXPECT_EQ(undone["clip"]["fit"]["corrections"], 0);
+  EXPECT_TRUE(undone["clip"]["fit"]["current"].get<bool>());
+  EXPECT_EQ(undone["clip"]["fit"]["frame_joints_px"], before["clip"]["fit"]["frame_joints_px"]);
+  EXPECT_EQ(undone["clip"]["fit"]["reprojection_rms_px"], before["clip"]["fit"]["reprojection_rms_px"]);
+  EXPECT_FALSE(load("corrected.png").empty());
+}
+
 // Without the models the video still opens for marking, and the banner says which command
 // fetches them; asking for a detection fails with the same words.
 TEST_F(GuiDetect, SaysWhichCommandFetchesTheModelsWhenTheyAreMissing) {

@@ -66,5 +66,22 @@ TEST(CorrectedTrack, AJointTheDetectorMissedIsTheMarkOnItsFrameOnly) {
   EXPECT_THROW(correctTrack(px.leftCols(10), {"v.mp4", {k}}, 5), Error);
 }
 
+// A pose estimator's trial corrected (reconstruct --corrections, the viewer): a span of
+// kCorrectionSpanS at its rate, the corrected joint sure there and only there.
+TEST(CorrectedTrack, ATrialIsCorrectedOverAQuarterSecondAndMadeSureThere) {
+  KeypointTrial t;
+  t.rateHz = 30.0;
+  t.jointsPx = track();
+  t.frameCount = static_cast<int>(t.jointsPx.rows());
+  t.jointConfidence = Eigen::MatrixXd::Constant(t.frameCount, kJointCount, 0.4);
+  const Eigen::MatrixXd px = t.jointsPx;
+  const Keyframes corrections{"v.mp4", {mark(20, px, {30.0, 0.0})}};
+  EXPECT_EQ(correctTrial(t, corrections), 8);  // 0.25 s at 30 Hz
+  EXPECT_TRUE(t.jointsPx.isApprox(correctTrack(px, corrections, 8)));
+  EXPECT_EQ(t.jointConfidence(20, kAnkle), 1.0);
+  EXPECT_EQ(t.jointConfidence(21, kAnkle), 0.4);
+  EXPECT_EQ(t.jointConfidence(20, kAnkle - 1), 0.4);
+}
+
 }  // namespace
 }  // namespace ew

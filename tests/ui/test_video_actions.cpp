@@ -99,6 +99,54 @@ TEST(VideoActions, AJointLetGoWhileTrackingTracksAgainWithIt) {
   EXPECT_EQ(s.video->trackError, "");
 }
 
+// On a detected video a joint let go is a correction (issue 52): the detections are fitted
+// again with the keyframes as their corrections, and undo, redo and removing a keyframe fit
+// them again; guided marking waits for Done. A track made since takes the marks back.
+TEST(VideoActions, OnADetectedVideoTheMarksAreCorrectionsOfTheFit) {
+  const Filmed f = filmWithKeyframes("video_actions_correct", 30, {0});
+  AppState s;
+  actions::openVideo(s, f.video);
+  EXPECT_FALSE(actions::correctsDetections(s)) << "not detected: mark and track";
+  auto d = std::make_shared<DetectedVideo>();
+  d->video = f.video;
+  d->frames = std::make_shared<const KeypointFrames>();
+  d->people = 1;
+  s.video->detected = d;
+  actions::fitDetections(s);
+  ASSERT_TRUE(actions::correctsDetections(s));
+  ASSERT_TRUE(s.doc.clip);
+  EXPECT_FALSE(s.doc.clip->corrections);
+
+  const int knee = index(Joint::RKnee);
+  s.video->frame = 12;
+  actions::markJoint(s, Joint::RKnee, f.truthPx(12, 2 * knee) + 20.0, f.truthPx(12, 2 * knee + 1));
+  EXPECT_TRUE(actions::letGoOfJoint(s)) << "the fit starts again";
+  ASSERT_TRUE(s.doc.clip->corrections);
+  const auto corrected = s.doc.clip->corrections;
+  ASSERT_EQ(corrected->keyframes.size(), 1u);
+  EXPECT_EQ(corrected->keyframes[0].frame, 12);
+  EXPECT_EQ(corrected->keyframes[0].jointsPx.array().isFinite().count(), 2) << "the knee alone";
+  EXPECT_EQ(corrected->keyframes[0].jointsPx(2 * knee), f.truthPx(12, 2 * knee) + 20.0);
+  actions::fitDetections(s);
+  EXPECT_EQ(s.doc.clip->corrections, corrected) << "the same corrections: no new fit";
+
+  actions::undoKeyframes(s);
+  EXPECT_FALSE(s.doc.clip->corrections);
+  actions::redoKeyframes(s);
+  ASSERT_TRUE(s.doc.clip->corrections);
+  EXPECT_TRUE(sameKeyframes(*s.doc.clip->corrections, *corrected));
+  actions::removeKeyframe(s, 12);
+  EXPECT_FALSE(s.doc.clip->corrections);
+
+  actions::startMarking(s);
+  actions::markJoint(s, Joint::Head, 10.0, 10.0);
+  EXPECT_FALSE(actions::letGoOfJoint(s));
+  EXPECT_FALSE(s.doc.clip->corrections) << "while marking, the fit waits for Done";
+  actions::stopMarking(s);
+  ASSERT_TRUE(s.doc.clip->corrections);
+  EXPECT_EQ(s.doc.clip->corrections->keyframes.size(), 1u);
+}
+
 // Marks far outside the picture, from a keyframe file or a pose estimator's keypoints, are
 // refused with the reason and leave the keyframes as they were (once, a track from them crashed).
 TEST(VideoActions, MarksFarOutsideThePictureAreRefusedWhereverTheyComeFrom) {

@@ -229,7 +229,8 @@ void skipMarkedJoint(AppState& s);  // the joint asked for is not visible: ask f
 void markJoint(AppState& s, Joint joint, double xPx, double yPx, bool newEdit = true);
 // A joint dragged (markJoint) and let go: on a tracked video, while not marking, the track is
 // redone from the keyframes as they now are (issue 14: "drag a joint on any frame, it becomes a
-// keyframe and the track is redone around it"). True when tracking started.
+// keyframe and the track is redone around it"); on a detected one, the detections are fitted
+// again with the keyframes as corrections (issue 52). True when tracking or the fit started.
 bool letGoOfJoint(AppState& s);
 // Marks the frame shown with a pose estimator's detections on that frame (a keypoint file or
 // folder, core/keypoints: OpenPose, AlphaPose, MMPose, CSV; the file's first frame is the
@@ -278,8 +279,14 @@ void startDetection(AppState& s);
 void cancelDetection(AppState& s);
 // Which BlazePose landmark model the next detection uses (lite, full, heavy).
 void setDetectorModel(AppState& s, PoseModelSize model);
-// The last detection's keypoints fitted again as the clip (after a track took its place).
+// The last detection's keypoints fitted again as the clip (after a track took its place), the
+// video's keyframes as corrections of them (ClipSettings::corrections).
 void fitDetections(AppState& s);
+// The open video's keyframes are corrections of its detections (issue 52: "marking and
+// tracking become correction"): people were detected and no track replaced them. Then each
+// edit of the keyframes outside guided marking (a joint let go, undo, redo, a keyframe
+// removed or read, marking done) fits the detections again with them.
+bool correctsDetections(const AppState& s);
 // The open video's people found on `frame`: the running detection's, else the last one's.
 std::vector<KeypointDetection> detectionsOn(const AppState& s, int frame);
 // Whether a video opened alone (no keyframe file with it) is handed to the detector.

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/engine/model.h"
+#include "core/tracking/corrected_track.h"
 
 namespace ew::ui {
 
@@ -51,7 +52,9 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
     KeypointFrames frames = *settings.detected;
     frames.imageSize.reset();
     frames.rateHz.reset();
-    r.rec = reconstructKeypointTrial(*model.model, cleanKeypoints(frames, k), o);
+    KeypointTrial walker = cleanKeypoints(frames, k);
+    if (settings.corrections) correctTrial(walker, *settings.corrections);
+    r.rec = reconstructKeypointTrial(*model.model, walker, o);
   } else {
     r.rec = reconstructKeypointClip(*model.model, settings.path, k, o);
   }

@@ -10,6 +10,7 @@
 
 #include "core/camera/clip_reconstruction.h"
 #include "core/keypoints/keypoint_frames.h"
+#include "core/tracking/keyframes.h"
 #include "core/engine/model.h"
 
 namespace ew::ui {
@@ -35,6 +36,10 @@ struct ClipSettings {
   // `path` is the video, `video` its size and rate; read as a MediaPipe-33 file is (person,
   // fps apply; the layout is the detector's).
   std::shared_ptr<const KeypointFrames> detected;
+  // The joints the user corrected on frames of `detected` (the video's keyframes, ui/app/video.h):
+  // the walker's track redone around each (correctTrial, core/tracking/corrected_track.h)
+  // before the fit. Null when none.
+  std::shared_ptr<const Keyframes> corrections;
   bool operator==(const ClipSettings&) const = default;
 };
 

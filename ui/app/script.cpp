@@ -537,9 +537,15 @@ void ScriptRunner::apply(AppState& s, const ScriptAction& a) {
       throw std::invalid_argument(s.video && !s.video->detectError.empty() ? s.video->detectError
                                                                            : "the detection did not start");
     }
+  } else if (n == "undo_keyframes" || n == "redo_keyframes" || n == "remove_keyframe") {
+    // A detected video's corrections changed: the script waits for the fit again.
+    applyAction(s, a);
+    failuresBefore_ = s.jobs.failures;
+    checkLoad_ = actions::correctsDetections(s) && !s.video->marking;
   } else if (n == "drag_joint") {
     // {"r_knee": [x, y]}: one joint dragged there on the frame shown and let go; a tracked
-    // video is tracked again, and the script waits for it as for track_video.
+    // video is tracked again, a detected one fitted again with it as a correction (issue 52),
+    // and the script waits for it as for track_video.
     if (!a.argument.is_object() || a.argument.size() != 1)
       throw std::invalid_argument(R"(expects {"joint name": [x, y]})");
     markJoints(s, a);

@@ -123,6 +123,15 @@ nlohmann::json imageSizeJson(const std::optional<KeypointImageSize>& size) {
   return std::to_string(size->width) + "x" + std::to_string(size->height);
 }
 
+// The walker's 15 joints on a frame of the clip as fitted (u, v each, null where missing).
+nlohmann::json frameJointsJson(const KeypointTrial& t, int frame) {
+  nlohmann::json j = nlohmann::json::array();
+  if (frame < 0 || frame >= t.jointsPx.rows()) return j;
+  for (Eigen::Index c = 0; c < t.jointsPx.cols(); ++c)
+    j.push_back(std::isfinite(t.jointsPx(frame, c)) ? nlohmann::json(t.jointsPx(frame, c)) : nlohmann::json(nullptr));
+  return j;
+}
+
 // The keypoint clip: what the user chose, and the last fit (camera, walk, residuals).
 nlohmann::json clipJson(const AppState& s) {
   if (!s.doc.clip) return nullptr;
@@ -136,7 +145,8 @@ nlohmann::json clipJson(const AppState& s) {
                       {"elevation_deg_fixed", optionalJson(c.elevationDeg)},
                       {"image_size_given", imageSizeJson(c.imageSize)},
                       {"fit_error", s.jobs.clipError},
-                      {"source", c.tracked ? "track" : c.detected ? "detections" : "file"}};
+                      {"source", c.tracked ? "track" : c.detected ? "detections" : "file"},
+                      {"corrections", c.corrections ? c.corrections->keyframes.size() : 0}};
   if (!s.clip) return j;
   const ClipResult& r = *s.clip;
   const CameraFit& f = r.rec.fit;
@@ -158,6 +168,8 @@ nlohmann::json clipJson(const AppState& s) {
       {"person", r.rec.trial.chosen},
       {"frame", clipFrameAt(r, s.view.playback.cycles) + 1},  // counted from 1, as the caption
       {"people_in_frame", peopleInFrame(r.rec.trial, clipFrameAt(r, s.view.playback.cycles))},
+      {"frame_joints_px", frameJointsJson(r.rec.trial, clipFrameAt(r, s.view.playback.cycles))},
+      {"corrections", r.settings.corrections ? r.settings.corrections->keyframes.size() : 0},
       {"alpha_deg", f.camera.alphaDeg},
       {"elevation_deg", f.camera.elevationDeg},
       {"focal_px", pinhole ? nlohmann::json(f.camera.focalPx) : nlohmann::json(nullptr)},

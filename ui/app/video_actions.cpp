@@ -68,6 +68,12 @@ Keyframe& keyframeHere(VideoSession& v) {
   return *list.insert(at, std::move(k));
 }
 
+// The keyframes edited: on a detected video, its track redone around them and fitted again
+// (marks placed while guided marking runs wait for Done).
+void keyframesEdited(AppState& s) {
+  if (actions::correctsDetections(s) && !s.video->marking) actions::fitDetections(s);
+}
+
 }  // namespace
 
 void openVideo(AppState& s, const std::filesystem::path& path) {
@@ -116,6 +122,7 @@ void loadKeyframes(AppState& s, const std::filesystem::path& path) {
   if (!v.keyframes.keyframes.empty()) v.frame = v.keyframes.keyframes.front().frame;
   s.log.info("Read " + std::to_string(v.keyframes.keyframes.size()) + " keyframes from " +
              path.string());
+  keyframesEdited(s);
 }
 
 void saveKeyframes(AppState& s, const std::filesystem::path& path) {
@@ -236,7 +243,10 @@ void startMarking(AppState& s) {
   v.markStep = nextUnmarked(v, 0);
 }
 
-void stopMarking(AppState& s) { session(s).marking = false; }
+void stopMarking(AppState& s) {
+  session(s).marking = false;
+  keyframesEdited(s);
+}
 
 void skipMarkedJoint(AppState& s) {
   VideoSession& v = session(s);
@@ -261,7 +271,12 @@ void markJoint(AppState& s, Joint joint, double xPx, double yPx, bool newEdit) {
 
 bool letGoOfJoint(AppState& s) {
   VideoSession& v = session(s);
-  if (!v.tracked || v.marking) return false;
+  if (v.marking) return false;
+  if (correctsDetections(s)) {
+    fitDetections(s);
+    return true;
+  }
+  if (!v.tracked) return false;
   if (s.jobs.track.running()) {
     // The running track is of the keyframes before this edit: stopped, and started again.
     v.trackAgainWhenStopped = true;
@@ -294,6 +309,7 @@ void markFromKeypoints(AppState& s, const std::filesystem::path& keypoints) {
   const auto found = detected.keyframes.front().jointsPx.array().isFinite().count() / 2;
   s.log.info("Marked frame " + std::to_string(v.frame) + " with " + std::to_string(found) +
              " joints from " + keypoints.string());
+  keyframesEdited(s);
 }
 
 void removeKeyframe(AppState& s, int frame) {
@@ -306,6 +322,7 @@ void removeKeyframe(AppState& s, int frame) {
   pushUndo(v);
   v.keyframes.keyframes.erase(v.keyframes.keyframes.begin() + (it - list.begin()));
   if (v.marking) v.markStep = nextUnmarked(v, 0);
+  keyframesEdited(s);
 }
 
 void undoKeyframes(AppState& s) {
@@ -315,6 +332,7 @@ void undoKeyframes(AppState& s) {
   v.keyframes = std::move(v.undo.back());
   v.undo.pop_back();
   if (v.marking) v.markStep = nextUnmarked(v, 0);
+  keyframesEdited(s);
 }
 
 void redoKeyframes(AppState& s) {
@@ -324,6 +342,7 @@ void redoKeyframes(AppState& s) {
   v.keyframes = std::move(v.redo.back());
   v.redo.pop_back();
   if (v.marking) v.markStep = nextUnmarked(v, 0);
+  keyframesEdited(s);
 }
 
 void setTrackRange(AppState& s, int first, int last) {
@@ -454,6 +473,11 @@ void fitDetections(AppState& s) {
   c.path = v.path;
   c.tracked.reset();
   c.detected = v.detected->frames;
+  // The video's keyframes are the corrections; the same ones keep the fit (no refit).
+  if (v.keyframes.keyframes.empty())
+    c.corrections.reset();
+  else if (!c.corrections || !sameKeyframes(*c.corrections, v.keyframes))
+    c.corrections = std::make_shared<const Keyframes>(v.keyframes);
   c.video = keypointVideoOf(*v.detected);
   s.doc.clip = c;
   s.doc.mode = Mode::Clip;
@@ -485,6 +509,10 @@ bool showsTrackFit(const AppState& s) {
 bool showsDetectionFit(const AppState& s) {
   return s.video && s.clip && s.video->detected && s.clip->settings.detected &&
          s.clip->settings.detected == s.video->detected->frames;
+}
+
+bool correctsDetections(const AppState& s) {
+  return s.video && s.video->detected && s.video->detected->people > 0 && !s.video->tracked;
 }
 
 bool showsVideoFit(const AppState& s) { return showsTrackFit(s) || showsDetectionFit(s); }

@@ -52,10 +52,18 @@ void drawPrompt(ImDrawList* dl, ImFont* font, ImVec2 p0, ImVec2 size, float top,
 }
 
 // The joint nearest to `px` within `reach` (video pixels) among the marks on `frame`, else
-// among the tracked joints there; -1 when none.
-int nearestJoint(const VideoSession& v, int frame, glm::vec2 px, float reach) {
+// among the tracked joints there; on a detected video, among the fitted walker's joints there
+// with the marks in their place. -1 when none.
+int nearestJoint(const AppState& s, int frame, glm::vec2 px, float reach) {
+  const VideoSession& v = *s.video;
+  const Keyframe* k = v.keyframeAt(frame);
   Eigen::RowVectorXd points;
-  if (const Keyframe* k = v.keyframeAt(frame)) {
+  const auto fit = actions::correctsDetections(s) ? actions::videoFitFrames(s) : std::nullopt;
+  if (fit && frame >= fit->first && frame <= fit->second) {
+    points = s.clip->rec.trial.jointsPx.row(frame - fit->first);
+    for (int j = 0; k && j < kJointCount; ++j)
+      if (std::isfinite(k->jointsPx(2 * j))) points.segment<2>(2 * j) = k->jointsPx.segment<2>(2 * j);
+  } else if (k) {
     points = k->jointsPx;
   } else if (v.tracked && frame >= v.tracked->track.firstFrame && frame <= v.tracked->lastFrame()) {
     points = v.tracked->track.jointsPx.row(frame - v.tracked->track.firstFrame);
@@ -244,7 +252,7 @@ void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVe
   // A mark (or a tracked joint) within reach of the click is dragged: the frame becomes a
   // keyframe; else the joint the marking asks for is placed.
   const float reach = 12.0f * ctx.scale * view.heightPx / size.y;
-  dragJoint_ = nearestJoint(v, frame, px, reach);
+  dragJoint_ = nearestJoint(s, frame, px, reach);
   if (dragJoint_ >= 0) {
     v.frame = frame;
     place(static_cast<Joint>(dragJoint_), true);

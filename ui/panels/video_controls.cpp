@@ -121,10 +121,15 @@ void marking(AppState& s, const VideoSession& v) {
   const int shown = actions::shownVideoFrame(s);
   const Keyframe* k = v.keyframeAt(shown);
   const int marked = k ? static_cast<int>(k->jointsPx.array().isFinite().count() / 2) : 0;
+  // On a detected video the marks are corrections of the detections (actions::correctsDetections).
+  const bool correcting = actions::correctsDetections(s);
   char status[96];
-  std::snprintf(status, sizeof status, "%zu keyframe%s · this frame: %d of 15 joints",
-                v.keyframes.keyframes.size(), v.keyframes.keyframes.size() == 1 ? "" : "s", marked);
+  std::snprintf(status, sizeof status, "%zu %s%s · this frame: %d of 15 joints", v.keyframes.keyframes.size(),
+                correcting ? "correction" : "keyframe", v.keyframes.keyframes.size() == 1 ? "" : "s", marked);
   textDisabledWrapped(status);
+  if (correcting && !v.marking)
+    textDisabledWrapped("Drag a joint where the detector went wrong: the track is redone around it "
+                        "and fitted again.");
   if (!v.marking) {
     if (buttonRow({{"Mark this frame", true}}) == 0) apply(s, [&] { actions::startMarking(s); });
   } else {
