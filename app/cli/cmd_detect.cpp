@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/commands.h"
+#include "app/cli/video_input.h"
 #include "core/common/errors.h"
 #include "core/io/atomic_write.h"
 #include "core/keypoints/keypoint_layout.h"
@@ -146,13 +147,7 @@ int runDetect(const DetectArgs& a) {
   o.smoothSeconds = a.smoothSeconds;
   o.firstFrame = a.first;
   o.lastFrame = a.last;
-  int lastTenth = -1;
-  o.progress = [&](int done, int total) {
-    const int tenth = done * 10 / std::max(total, 1);
-    if (tenth != lastTenth) std::cerr << "detecting: " << done << " of " << total << " frames\n";
-    lastTenth = tenth;
-    return true;
-  };
+  o.progress = detectionProgressOnStderr();
   bool fromCache = false;
   const PoseDetectionRun run = detectPosesCached(a.video, o, fromCache, !a.noCache);
   const KeypointFrames frames = keypointFramesOf(run);

@@ -21,6 +21,15 @@ bool isVideoFile(const std::filesystem::path& path) {
   return false;
 }
 
+std::function<bool(int, int)> detectionProgressOnStderr() {
+  return [lastTenth = -1](int done, int total) mutable {
+    const int tenth = done * 10 / std::max(total, 1);
+    if (tenth != lastTenth) std::cerr << "detecting: " << done << " of " << total << " frames\n";
+    lastTenth = tenth;
+    return true;
+  };
+}
+
 #ifdef EW_HAVE_VIDEO
 
 KeypointFrames detectKeypointFrames(const std::filesystem::path& video, const VideoDetectionSettings& settings,
@@ -28,14 +37,7 @@ KeypointFrames detectKeypointFrames(const std::filesystem::path& video, const Vi
   PoseDetectionOptions o;
   o.model = parsePoseModelSize(settings.model);
   o.tiles = settings.tiles;
-  int lastTenth = -1;
-  if (!settings.quiet)
-    o.progress = [&](int done, int total) {
-      const int tenth = done * 10 / std::max(total, 1);
-      if (tenth != lastTenth) std::cerr << "detecting: " << done << " of " << total << " frames\n";
-      lastTenth = tenth;
-      return true;
-    };
+  if (!settings.quiet) o.progress = detectionProgressOnStderr();
   bool fromCache = false;
   const PoseDetectionRun run = detectPosesCached(video, o, fromCache, settings.useCache);
   if (!settings.quiet) {

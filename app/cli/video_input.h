@@ -5,6 +5,7 @@
 // keypoint file. Without the video library (a build without OpenCV) a video is refused
 // with that reason.
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "core/keypoints/keypoint_trial.h"
@@ -20,6 +21,9 @@ struct VideoDetectionSettings {
   bool tiles = true;
   bool quiet = false;  // no progress lines on stderr
 };
+
+// A detection's progress on stderr, a line at each tenth of the frames.
+std::function<bool(int done, int total)> detectionProgressOnStderr();
 
 // The keypoint clip of `video` by the built-in detector (progress and timing on stderr).
 KeypointFrames detectKeypointFrames(const std::filesystem::path& video, const VideoDetectionSettings& settings,
