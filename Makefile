@@ -1,12 +1,13 @@
 # The README's two commands: `make run` and `make test`. Both install missing Debian
-# packages, configure into build/ and build; binaries land in build/bin/.
+# packages and configure into build/; `make run` builds the viewer and the CLI, `make test`
+# everything. Binaries land in build/bin/.
 BUILD_DIR      ?= build
 SANITIZE_DIR   ?= build-sanitize
 CMAKE_ARGS     ?=
 JOBS           ?= $(shell nproc 2>/dev/null || echo 2)
 CTEST_ARGS     ?=
 
-.PHONY: all deps configure build run test test-sanitize bench fuzz fuzz-build fuzz-regressions fuzz-sanitized clean
+.PHONY: all deps configure build apps run test test-sanitize bench fuzz fuzz-build fuzz-regressions fuzz-sanitized clean
 
 all: build
 
@@ -19,9 +20,19 @@ configure: deps
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
+# What `make run` runs, and only that: the viewer (when its GUI packages were found) and the
+# CLI, with the libraries they link and the pose detector's models (the video library depends
+# on them). No test or benchmark: `make test` builds those.
+apps: configure
+	@if cmake --build $(BUILD_DIR) --target help | grep -Eq '^(\.\.\. )?eigenwalker(:|$$)'; then \
+	  cmake --build $(BUILD_DIR) -j $(JOBS) --target eigenwalker eigenwalker-cli; \
+	else \
+	  cmake --build $(BUILD_DIR) -j $(JOBS) --target eigenwalker-cli; \
+	fi
+
 # The viewer on the synthetic default population (RUN_ARGS: data paths, --size, …).
 RUN_ARGS ?=
-run: build
+run: apps
 	@if [ -x ./$(BUILD_DIR)/bin/eigenwalker ]; then \
 	  ./$(BUILD_DIR)/bin/eigenwalker $(RUN_ARGS); \
 	else \
