@@ -450,7 +450,7 @@ class FlowPass final : public TrackingPass {
   // lost one walker's ankle (p95 22.8 px); from the front 5 of 5 with each.
   static constexpr double kApertureRatio = 0.2;
   // How far (a share of the person's height) a held joint's flow may stand from the trunk's
-  // place. On cam01: 0.02 gave a median of 19.9 px, 0.03 19.3, 0.05 20.8 (docs/TRACKING.md).
+  // place. On cam01: 0.02 gave a median of 19.9 px, 0.03 19.3, 0.05 20.8 (docs/TRACKING_DESIGN.md).
   static constexpr double kTrunkGateShare = 0.03;
 
   Geometry g_;

@@ -5,7 +5,7 @@
 // a constant-velocity Kalman filter per joint that carries a joint through frames where
 // neither finds it. Every keyframe is tracked forward to the next keyframe and backward to
 // the previous one; between two keyframes the two tracks are blended, each weighted by its
-// confidence and by how near its keyframe is (docs/TRACKING.md).
+// confidence and by how near its keyframe is (docs/TRACKING_DESIGN.md).
 
 #include <Eigen/Core>
 #include <cstddef>
@@ -36,7 +36,7 @@ struct TrackerOptions {
   double searchShare = 1.0 / 20.0;  // how far around the prediction a joint is sought
   // Place each joint where its segment looks as on the keyframe (video/segment_search.h).
   // Off by default: measured worse than each joint's own flow on both the synthetic
-  // footage and Pose2Sim's cam01 (docs/TRACKING.md, "Measured").
+  // footage and Pose2Sim's cam01 (docs/TRACKING_DESIGN.md, "Measured").
   bool searchSegments = false;
   // The model loop's prior (video/model_loop.h): where a model fitted to an earlier track
   // puts each joint, one row per tracked frame from firstFrame (30 columns, pixels; NaN or no
@@ -57,7 +57,7 @@ struct TrackerOptions {
   // pelvis→sternum line, it is put there. For a bare or plain upper body that bends but turns
   // little (Pose2Sim's balancing trial); off by default, as it made the synthetic walkers'
   // shoulders worse in side views, where the pelvis under the thighs is the joint tracked worst
-  // (docs/TRACKING.md, "Holding the trunk"). The flow tracker only.
+  // (docs/TRACKING_DESIGN.md, "Holding the trunk"). The flow tracker only.
   bool holdTheTrunk = false;
   // Grey frames held at once for the backward passes; a longer stretch between keyframes
   // is decoded again in pieces of this size.

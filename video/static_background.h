@@ -2,8 +2,8 @@
 // The still background of footage from a fixed camera, and frames with it taken out. A thin
 // limb fills little of the flow's window around its joint: the rest is background, which
 // does not move, and pulls the joint's flow towards standing still (measured on the synthetic
-// footage and the sports2d demo: docs/TRACKING.md, "Background"). With the background flattened
-// to one grey, only the person's own texture and outline move the flow.
+// footage and the sports2d demo: docs/TRACKING_DESIGN.md, "The still background"). With the
+// background flattened to one grey, only the person's own texture and outline move the flow.
 //
 // The background is each pixel's median over frames spread through the tracked range. It is
 // trusted only when the camera held still (most pixels agree with it on every sampled frame)

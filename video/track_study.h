@@ -1,6 +1,6 @@
 #pragma once
-// Issue 14's synthetic footage as a study (`eigenwalker-cli track-study`, docs/TRACKING.md "By
-// view"): held-out shared walkers, each its own two-harmonic walk carried forward for a few
+// Issue 14's synthetic footage as a study (`eigenwalker-cli track-study`, docs/TRACKING_DESIGN.md
+// "By view"): held-out shared walkers, each its own two-harmonic walk carried forward for a few
 // strides and filmed by writeFootage from chosen azimuths, tracked from its true joints on the
 // first frame with N rounds of the model loop; the track against the truth in pixels, and the
 // walk fitted to it through the unknown camera by the model built without that subject, beside

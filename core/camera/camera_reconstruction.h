@@ -74,8 +74,8 @@ struct CameraFit {
 
 // Walking in place, a level camera and a side or oblique view: the azimuth then rests on the
 // body's shape alone, and a walker the model does not hold is drawn as well by a longer stride
-// seen more obliquely (docs/TRACKING.md, "On a treadmill": up to 26° off from the true joints
-// with the camera level, within 6° from 3 m up). Limits of that study's views.
+// seen more obliquely (docs/TRACKING_DESIGN.md, "On a treadmill": up to 26° off from the true
+// joints with the camera level, within 6° from 3 m up). Limits of that study's views.
 inline constexpr double kLevelCameraElevationDeg = 10.0;   // below this the feet's depth barely shows
 inline constexpr double kEndOnViewDeg = 30.0;              // within this of the front or back: pinned
 // A sentence for the report when the fitted azimuth is that weak (the fit estimated it, walking

@@ -39,7 +39,7 @@ struct ClipReconstruction {
 // lead along the image's progression is short and the strikes come irregularly (measured on
 // synthetic footage of held-out walkers: 1.18 and 1.72 Hz for strides of 0.82 and 0.96 Hz from
 // behind, no stride from the front), where the bob reads within 1 % in every view
-// (docs/TRACKING.md); in a side view the two agree within a few per cent.
+// (docs/TRACKING_DESIGN.md); in a side view the two agree within a few per cent.
 inline constexpr double kFeetDisagreeWithTheBobShare = 0.15;
 
 // The camera fit's options are completed here: the stride hint from the image's foot strikes

@@ -263,7 +263,7 @@ std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minSha
   std::vector<BobSamples> paths;
   double variance = 0.0;
   // The upper trunk only: a tracker's pelvis and hips, hidden under the thigh tops in a side
-  // view, are dragged down by the near thigh once a stride (docs/TRACKING.md); the head, the
+  // view, are dragged down by the near thigh once a stride (docs/TRACKING_DESIGN.md); the head, the
   // sternum and the shoulders bob with them and stay in sight.
   for (Joint j : {Joint::Head, Joint::Sternum, Joint::RShoulder, Joint::LShoulder}) {
     const auto b = bobSamples(trial.jointsPx, j, trial.rateHz);

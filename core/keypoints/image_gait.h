@@ -54,7 +54,7 @@ ImageGait imageGaitCycles(const KeypointTrial& trial,
 
 // The stride frequency from the trunk's bob: the head, the sternum and the shoulders rise and
 // fall twice a stride (once a step), in any view (the pelvis and hips too, but a tracker's
-// slip under the thigh tops once a stride; docs/TRACKING.md). The vertical image paths of
+// slip under the thigh tops once a stride; docs/TRACKING_DESIGN.md). The vertical image paths of
 // those seen in at least 60 % of the frames, each detrended by a parabola in time (a walker
 // nearing the camera sinks along a curve), are fitted with a sinusoid over
 // step frequencies 1.0 … 3.2 Hz (strides of 0.5 … 1.6 Hz, 0.005 Hz apart); the frequency whose
@@ -62,7 +62,7 @@ ImageGait imageGaitCycles(const KeypointTrial& trial,
 // edges), halved. Unset when fewer than two such joints, no inner peak, the clip is shorter
 // than two steps at that frequency, or the best fit takes less than `minShare` of the variance
 // (no clear bob). For a joint tracker's output, whose trunk holds
-// where the feet are lost (docs/TRACKING.md, "The model loop").
+// where the feet are lost (docs/TRACKING_DESIGN.md, "The model loop").
 std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minShare = 0.3);
 
 }  // namespace ew

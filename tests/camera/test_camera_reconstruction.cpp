@@ -288,7 +288,7 @@ TEST(CameraReconstruction, AWalkerOnATreadmillIsFittedInPlace) {
 }
 
 // The caution on a weak azimuth: walking in place, estimated, a camera within 10° of level,
-// more than 30° from the front and the back (docs/TRACKING.md, "On a treadmill").
+// more than 30° from the front and the back (docs/TRACKING_DESIGN.md, "On a treadmill").
 TEST(CameraReconstruction, InPlaceAzimuthCautionOnlyForALevelSideOrObliqueView) {
   CameraFit fit;
   fit.inPlace = true;

@@ -168,7 +168,7 @@ TEST_F(GuiClip, ATreadmillClipIsFittedWalkingInPlace) {
   WalkCamera camera = crossingPinhole(1400, 5.0);
   camera.speedMmS = camera.startOffsetMm = 0.0;
   writeOpenPoseBody25(folder, {{projectWalk(walk, t, camera), Eigen::MatrixXd()}});
-  // And from a level camera, where the azimuth in place is weak (docs/TRACKING.md).
+  // And from a level camera, where the azimuth in place is weak (docs/TRACKING_DESIGN.md).
   const fs::path levelFolder = dir / "treadmill_level_json";
   WalkCamera level = camera;
   level.elevationDeg = 0.0;

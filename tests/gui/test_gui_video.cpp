@@ -394,7 +394,7 @@ TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideStatureAndProfile) {
   EXPECT_LE(fit["stature_m"].get<double>(), 1.95);
   EXPECT_NEAR(fit["alpha_deg"].get<double>(), -90.0, 20.0) << "a profile view, walking left";
   // A sound fit raises no caution (unflattened, the same track strides 1.6 times her stature
-  // through a camera 67° down, and says so: docs/TRACKING.md).
+  // through a camera 67° down, and says so: docs/TRACKING_DESIGN.md).
   EXPECT_EQ(fit["cautions"], json::array()) << fit["cautions"];
   EXPECT_NEAR(fit["elevation_deg"].get<double>(), 0.0, 5.0) << "a level camera";
   EXPECT_NEAR(fit["focal_px"].get<double>(), 2520.0, 0.25 * 2520.0) << "Sports2D's own estimate";

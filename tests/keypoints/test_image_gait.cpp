@@ -150,7 +150,7 @@ TEST(ImageGait, TrunkBobOfAWalkerComingTowardsTheCamera) {
 }
 
 // A tracker's pelvis and hips, hidden under the thigh tops in a side view, are dragged down by
-// the near thigh once a stride (docs/TRACKING.md: dips of 15-20 px on a 250 px walker). That
+// the near thigh once a stride (docs/TRACKING_DESIGN.md: dips of 15-20 px on a 250 px walker). That
 // drag, at the stride frequency itself, once outweighed the step bob at the band's lower edge
 // and the bob read half the stride (0.5 Hz for four of the five held-out walkers there). The
 // mean walker in profile with such a drag on the pelvis and hips: the bob gives its stride

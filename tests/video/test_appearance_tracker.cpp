@@ -102,7 +102,7 @@ TrackDistance trackedBy(TrackerKind kind, const test::WalkingFootage& footage) {
 }
 
 // Issue 16: the appearance tracker beside the optical-flow tracker on the same clip, from
-// one keyframe with the true joints. Measured (docs/TRACKING.md): flow median 10.8 px, p95
+// one keyframe with the true joints. Measured (docs/TRACKING_DESIGN.md): flow median 10.8 px, p95
 // 170 px; appearance median 19.8 px, p95 93.0 px. Guards against either getting worse
 // (about a quarter above the measured); neither meets issue 14's bar (3 px).
 TEST(AppearanceTracker, FollowsASyntheticWalkerBesideTheFlowTracker) {

@@ -2,7 +2,7 @@
 // video/synthetic_footage.h (1280×720, pinhole, textured limbs over a noise background) and
 // tracked from keyframes with the true joints. Not yet here: issue 14's walking footage
 // (median ≤ 3 px, p95 ≤ 10 px) — on a walking synthetic walker the tracker still loses the
-// legs (docs/TRACKING.md, "Measured").
+// legs (docs/TRACKING_DESIGN.md, "Measured").
 
 #include <gtest/gtest.h>
 
@@ -72,7 +72,7 @@ TEST(JointTracker, FollowsAGlidingFigureFromOneKeyframe) {
   const TrackDistance d = compareTracks(track.jointsPx, 0, footage.truthPx);
   printDistance(d);
   EXPECT_EQ(d.jointFrames, kJointCount * footage.truthPx.rows());
-  // Measured 4.0 px median: frame-to-frame flow drifts (docs/TRACKING.md). A guard against
+  // Measured 4.0 px median: frame-to-frame flow drifts (docs/TRACKING_DESIGN.md). A guard against
   // getting worse, not issue 14's bar (3 px on a walker).
   EXPECT_LE(d.medianAllPx, 5.5);
   EXPECT_LE(d.p95AllPx, 35.0);  // measured 28.1
@@ -190,7 +190,7 @@ KeypointTrial cam01OpenPose(const VideoSource& video) {
 
 // Pose2Sim's balancing man bends forward with bare shoulders: their own flow slides along
 // the arms and stays 80 px from OpenPose's shoulders at the median; held to the pelvis→sternum
-// line they follow his trunk (16–18 px, docs/TRACKING.md, "Holding the trunk").
+// line they follow his trunk (16–18 px, docs/TRACKING_DESIGN.md, "Holding the trunk").
 TEST(JointTracker, HoldingTheTrunkKeepsTheBalancingMansShouldersOnHim) {
   EW_REQUIRE_SHARED_DATA();
   VideoSource video(balancingTrialDir() / "videos/cam01.mp4");
@@ -216,7 +216,7 @@ TEST(JointTracker, HoldingTheTrunkKeepsTheBalancingMansShouldersOnHim) {
 // arms, and the tracker drifts with that motion. The frame framesToMarkNext names (62), marked
 // from OpenPose like frame 0, brings the track to 12.9 px from OpenPose's detections at the
 // median; the least sure frame (85) to 19.9 px, no better than frame 0 alone (19.2 px). Every
-// second keyframe from 5 to 99 gives 13.4-25.4 px (docs/TRACKING.md, "Holding the trunk").
+// second keyframe from 5 to 99 gives 13.4-25.4 px (docs/TRACKING_DESIGN.md, "Holding the trunk").
 TEST(JointTracker, TheFrameToMarkNextHelpsTheBalancingTrialMoreThanTheLeastSure) {
   EW_REQUIRE_SHARED_DATA();
   VideoSource video(balancingTrialDir() / "videos/cam01.mp4");

@@ -49,7 +49,7 @@ TrackDistance loopedDistance(int rounds, ModelLoopResult* out = nullptr) {
   return d;
 }
 
-// Measured (docs/TRACKING.md): without the loop median 10.8 px, p95 170 px; one round 10.9 /
+// Measured (docs/TRACKING_DESIGN.md): without the loop median 10.8 px, p95 170 px; one round 10.9 /
 // 61.9 px. The fit strides at the trunk's bob, 0.915 Hz against the walker's own 0.932 Hz;
 // the tail falls to about a third, the median hardly moves, and issue 14's 3 px is not reached.
 TEST(ModelLoop, OneRoundHalvesTheTrackersTailOnAWalker) {
@@ -101,8 +101,8 @@ TrackStudyOptions filmedAsTheStudy() {
 
 // Issue 14's bar for the walk from a track: within 1.3× the MPJPE of the same fit to the true
 // 2D. CMU06 filmed 30° off the side view and tracked from its true joints on frame 0. The
-// tracker alone misses (1.39×; docs/TRACKING.md has four more walkers, 1.8–2.5×); three rounds
-// of the model loop bring it within the bar (measured 1.14).
+// tracker alone misses (1.39×; docs/TRACKING_DESIGN.md has four more walkers, 1.8–2.5×); three
+// rounds of the model loop bring it within the bar (measured 1.14).
 TEST(ModelLoopOnSharedWalkers, ThreeRoundsBringAHeldOutWalkersFitWithinTheBar) {
   EW_REQUIRE_SHARED_DATA();
   const FilmedHeldOutWalker walker(sharedWalkers(), "CMU06", 30.0, filmedAsTheStudy());
@@ -142,8 +142,8 @@ void expectTheWholeBarAfterOneRound(const std::string& subject, double azimuthDe
 }
 
 // Met from the front: CMU06 coming towards the camera (measured 1.7 / 6.3 px, 1.00×; the five
-// walkers of docs/TRACKING.md 1.4–1.8 / 5.0–6.6 px, 1.00–1.06×). From the side the far limbs
-// pass behind the body and the bar is not met (the test above).
+// walkers of docs/TRACKING_DESIGN.md 1.4–1.8 / 5.0–6.6 px, 1.00–1.06×). From the side the far
+// limbs pass behind the body and the bar is not met (the test above).
 TEST(ModelLoopOnSharedWalkers, FromTheFrontOneRoundTracksAHeldOutWalkerWithinTheWholeBar) {
   EW_REQUIRE_SHARED_DATA();
   expectTheWholeBarAfterOneRound("CMU06", -90.0);

@@ -30,7 +30,8 @@ std::vector<std::string> csvFields(const std::string& line) {
 }
 
 // CMU06 from the front, the tracker alone (measured 2.0 px median, 11.2 px p95, 1.04× the true
-// 2D's MPJPE: docs/TRACKING.md "By view"): within a pixel of that and the same ratio to 0.05.
+// 2D's MPJPE: docs/TRACKING_DESIGN.md "By view"): within a pixel of that and the same ratio to
+// 0.05.
 TEST(TrackStudyCli, FilmsTracksAndFitsAHeldOutWalker) {
   EW_REQUIRE_SHARED_DATA();
   const fs::path dir = test::makeTempDir("track_study");

@@ -41,7 +41,7 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   o.focalPx = settings.focalPx;
   o.alphaDeg = settings.alphaDeg;
   o.elevationDeg = settings.elevationDeg;
-  // A tracker's joints: its trunk holds where the crossing feet are lost (docs/TRACKING.md).
+  // A tracker's joints: its trunk holds where the crossing feet are lost (docs/TRACKING_DESIGN.md).
   if (settings.tracked) holdTheTrunksStride(*settings.tracked, o);
   ClipResult r{settings, model, {}, 0.0, {}, {}};
   if (settings.tracked) {
