@@ -125,7 +125,7 @@ TEST_F(GuiAnalysis, AFileInspectedAgainstTheDefaultModelIsAnalysedAmongItsWalker
 // eigenwalker's.
 TEST_F(GuiAnalysis, OtherEnginesCurvesAreDrawnAndExported) {
   // Ten synthetic walkers: a snippet prior per fold makes these curves slow (23 s for the
-  // default 50 on this machine, docs/VIEWER.md); ten folds show the same.
+  // default 50 on this machine, docs/VIEWER_DESIGN.md); ten folds show the same.
   const auto syn = dir / "syn";
   const std::string synth = quote(EW_CLI_PATH) + " synth --out " + quote(syn.string()) +
                             " --count 10 --seed 7 --force > /dev/null 2>&1";

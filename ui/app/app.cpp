@@ -154,7 +154,7 @@ class ScopedFontScale {
 };
 
 // EIGENWALKER_PRESENT=swap: show frames by swapping buffers even where copying only the
-// changed rectangles is possible (docs/VIEWER.md, "Frame time").
+// changed rectangles is possible (docs/VIEWER_DESIGN.md, "Frame time").
 bool swapRequested() {
   const char* v = std::getenv("EIGENWALKER_PRESENT");
   return v && std::string(v) == "swap";

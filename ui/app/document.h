@@ -1,5 +1,5 @@
 #pragma once
-// The three kinds of state (docs/VIEWER.md):
+// The three kinds of state (docs/VIEWER_DESIGN.md, "State and threads"):
 //   Document  — what is loaded and what the user chose to compute (walker, view angle,
 //               estimator, coefficients); everything derived is a function of it.
 //   ViewState — how it is looked at (camera, overlays, playback, UI scale).

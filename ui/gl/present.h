@@ -4,7 +4,8 @@
 // buffers. The back buffer is then never swapped, so it keeps the previous frame's pixels
 // (which a swap leaves undefined): a frame draws only what changed (ui/render/compositor.h)
 // and sends only that to the window. Under llvmpipe the alternative, copying a whole
-// offscreen frame into a fresh back buffer, costs ~4 ms at 1600×900 (docs/VIEWER.md).
+// offscreen frame into a fresh back buffer, costs ~4 ms at 1600×900
+// (docs/VIEWER_DESIGN.md, "Frame time").
 
 #include <optional>
 #include <span>

@@ -3,7 +3,7 @@
 // fixed panels' backgrounds (scissored clears) and the two views' images (framebuffer
 // blits), collected while the panels are built. Under llvmpipe every ImGui pixel is a blended, textured fragment: drawing the
 // window backgrounds this way cut ImGui's shaded area at 1600×900 from ~2.0 to ~0.5
-// megapixels a frame (docs/VIEWER.md, "Frame time").
+// megapixels a frame (docs/VIEWER_DESIGN.md, "Frame time").
 
 #include <vector>
 

@@ -9,7 +9,7 @@
 //
 // Under llvmpipe most of a frame's time is Dear ImGui's triangles, and during playback
 // only the views and the playback bar change: repainting only those is what brings the
-// 1600×900 frame under 10 ms (docs/VIEWER.md, "Frame time"). No GL here (unit-tested).
+// 1600×900 frame under 10 ms (docs/VIEWER_DESIGN.md, "Frame time"). No GL here (unit-tested).
 
 #include <cstddef>
 #include <cstdint>
