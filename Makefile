@@ -24,7 +24,7 @@ build: configure
 # CLI, with the libraries they link and the pose detector's models (the video library depends
 # on them). No test or benchmark: `make test` builds those.
 apps: configure
-	@if cmake --build $(BUILD_DIR) --target help | grep -Eq '^(\.\.\. )?eigenwalker(:|$$)'; then \
+	@if cmake --build $(BUILD_DIR) --target help | grep -E '^(\.\.\. )?eigenwalker(:|$$)' >/dev/null; then \
 	  cmake --build $(BUILD_DIR) -j $(JOBS) --target eigenwalker eigenwalker-cli; \
 	else \
 	  cmake --build $(BUILD_DIR) -j $(JOBS) --target eigenwalker-cli; \
