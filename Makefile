@@ -22,7 +22,7 @@ build: configure
 
 # What `make run` runs, and only that: the viewer (when its GUI packages were found) and the
 # CLI, with the libraries they link and the pose detector's models (the video library depends
-# on them). No test or benchmark: `make test` builds those.
+# on them). No test or benchmark: `make test` builds those. Time: docs/DEVELOPING.md.
 apps: configure
 	@if cmake --build $(BUILD_DIR) --target help | grep -E '^(\.\.\. )?eigenwalker(:|$$)' >/dev/null; then \
 	  cmake --build $(BUILD_DIR) -j $(JOBS) --target eigenwalker eigenwalker-cli; \
@@ -51,29 +51,7 @@ test: build
 # 66 of 230 sanitized compilations in CI; they run unsanitized in `make test`.
 SANITIZE_CXX ?= clang++
 SANITIZE_GUI ?= OFF
-# Tests left out of the sanitized run (`make test` runs them): their code runs sanitized in
-# lighter tests (the model loop's rounds on held-out walkers, ModelLoopOnSharedWalkers.* and
-# track-study's TrackStudyCli.FilmsTracksAndFitsAHeldOutWalker, in
-# ModelLoop.OneRoundHalvesTheTrackersTailOnAWalker, the tracker's and CameraReconstruction's
-# tests; track-study's errors run sanitized in TrackStudyCli.RefusesWhatItCannotStudy); the engines experiment in
-# EnginesExperiment.EveryEngineSeesTheSameClipsInOneTable; the camera experiment's pieces,
-# OpenPose JSON written and read back and the unknown-camera fit, in the reconstruct CLI's and
-# CameraReconstruction's tests). Sanitized, the three-round held-out test, the evaluate CLI test
-# and the two experiment tests took 101, 38, 53 and 49 s of a 325 s
-# run on two cores, what kept CI near its 30-minute goal. Since 2026-11-27 also (sanitized 12.5,
-# 9.9, 7.0 and 8.3 s of 408 s): the track CLI's --reconstruct (the tracker through the CLI runs
-# sanitized in TrackCli.EachTrackerWritesTheTrackAndMeasuresItAgainstTheOtherKeyframes, the clip's
-# fit in CameraReconstruction.ATrackedClipIsFittedLikeAFile), two more camera geometries for the
-# unknown-camera fit the other CameraReconstruction tests run, and decoding the two shared
-# clips whole (OpenCV's work; VideoSource's seeking runs in
-# VideoSource.EveryFrameInAnyOrderIsTheFrameAskedFor). The treadmill walker filmed from seven
-# azimuths took 74 s sanitized (2026-11-27); the in-place fit runs sanitized once in
-# ReconstructCameraCli.ATreadmillWalkerIsFittedInPlace. The sports2d demo tracked whole for its
-# fit's cautions (4.7 s unsanitized; the cautions' code runs sanitized in
-# ReconstructCameraCli.ATreadmillWalkerIsFittedInPlace and CameraReconstruction's unit test).
-# The walking video detected whole and fitted through the CLI (about 25 s; 2026-11-29): the
-# detector's code runs sanitized in DetectCli's other tests and PoseDetector's, the fit in
-# the reconstruct CLI's tests. SANITIZE_SKIP= runs them.
+# Tests left out of the sanitized run, and where their code runs sanitized: docs/DEVELOPING.md.
 SANITIZE_SKIP ?= ^(ModelLoopOnSharedWalkers\..*|TrackStudyCli\.FilmsTracksAndFitsAHeldOutWalker|EngineCli\.EvaluateScoresTheEnginesAskedFor|EnginesExperiment\.NoiseIsOneDrawPerClipWhateverRunsBesideIt|CameraExperiment\.ClipsGoThroughOpenPoseJsonAndBack|TrackCli\.(ReconstructsTheTrackAsTheViewerFitsIt|ATreadmillWalkerIsTrackedAndFittedInPlace|AWalkPeopleDoNotWalkIsCautioned)|CameraReconstruction\.(SeenFromBehindOrTheSideTheFeetGiveTheStride|RecoversAnApproachingWalkerExactly|AWalkerOnATreadmillIsFittedInPlace)|VideoSource\.SeekingInTheSharedClipsGivesTheSequentialDecodesFrames|DetectCli\.TheWalkingVideoBecomesAWalkerWithNoOtherTool)$$
 test-sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_CXX_COMPILER=$(SANITIZE_CXX) -DCMAKE_BUILD_TYPE=Debug -DEW_SANITIZE=ON \
