@@ -1,4 +1,4 @@
-// Eigenwalker engine speed (SPEC §3–6) on synthetic walkers: R = 24, N = 22.
+// Eigenwalker engine speed (METHOD §3–6) on synthetic walkers: R = 24, N = 22.
 // Goals (docs/ENGINE.md): known-view LSQ/MAP ≤ 20 µs, unknown-view search ≤ 1 ms,
 // model build ≤ 5 ms, Fourier fit of a 4-cycle 120 Hz trial ≤ 1 ms.
 #include <benchmark/benchmark.h>

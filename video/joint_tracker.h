@@ -72,7 +72,7 @@ TrackerKind trackerFromName(const std::string& name);
 struct JointTrack {
   int firstFrame = 0;
   double fps = 0.0;
-  Eigen::MatrixXd jointsPx;    // frames × 30: x, y per joint (SPEC §1), NaN = never marked
+  Eigen::MatrixXd jointsPx;    // frames × 30: x, y per joint (METHOD §1), NaN = never marked
   Eigen::MatrixXd confidence;  // frames × 15, 0-1 (1 on a keyframe)
   // "flattened", "off", or why the footage has no still background to flatten.
   std::string background = "off";

@@ -65,7 +65,7 @@ class FilmedHeldOutWalker {
   double strideHz() const { return strideHz_; }
   Keyframes firstFrameMarked() const;
 
-  // SPEC §5's azimuth of the camera that filmed it: 90° − cameraBeside's azimuth, in (−180, 180].
+  // METHOD §5's azimuth of the camera that filmed it: 90° − cameraBeside's azimuth, in (−180, 180].
   double alphaDeg() const { return alphaDeg_; }
 
   // A fit's MPJPE (mm, translation removed) against the walk filmed, and the azimuth it found.
@@ -100,7 +100,7 @@ struct TrackStudyRow {
   double medianPx = 0.0, p95Px = 0.0;        // the track against the truth, every joint-frame
   std::array<double, kJointCount> jointMedianPx{}, jointP95Px{};  // the same per joint
   double mpjpeTruthMm = 0.0, mpjpeTrackMm = 0.0;  // NaN where that fit refused
-  double alphaDeg = 0.0;                          // the camera's, SPEC §5
+  double alphaDeg = 0.0;                          // the camera's, METHOD §5
   double alphaTruthFitDeg = 0.0, alphaTrackFitDeg = 0.0;  // what the fits found (NaN: refused)
   double strideHz = 0.0;                     // the walker's own
   std::string error;                         // a fit's refusal, else ""

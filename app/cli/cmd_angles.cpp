@@ -18,7 +18,7 @@ struct AnglesArgs {
   double rateHz = 0.0;
 };
 
-// The file's up axis where its format states one, else SPEC §2's rule: the signed axis
+// The file's up axis where its format states one, else METHOD §2's rule: the signed axis
 // nearest the body's mean head-above-ankles direction (a person balancing on one leg leans
 // 18° off it in the Pose2Sim trial; motion capture's up is an axis).
 Eigen::Vector3d upOf(const JointTrial& trial) {

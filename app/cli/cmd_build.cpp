@@ -1,5 +1,5 @@
 // `eigenwalker-cli build --data PATH… [--components N | --variance 0.95] [--no-sigma2-sweep]
-//  [--threads N] --out MODEL`: loads the walkers, builds the eigenwalker model (SPEC §4),
+//  [--threads N] --out MODEL`: loads the walkers, builds the eigenwalker model (METHOD §4),
 // measures the MAP σ² optimum on its own walkers (leave-one-subject-out sweep) and saves
 // both (docs/MODEL_FORMAT.md).
 // `build --engine snippet --data PATH… [--clusters M] [--components Q] [--em-iterations K]
@@ -100,7 +100,7 @@ int runBuild(const BuildArgs& a) {
 void addBuildCommand(CLI::App& app, int& exitCode) {
   auto args = std::make_shared<BuildArgs>();
   auto* cmd = app.add_subcommand("build",
-                                 "Build an eigenwalker model (SPEC §4) or, with --engine snippet, a snippet prior "
+                                 "Build an eigenwalker model (docs/METHOD.md §4) or, with --engine snippet, a snippet prior "
                                  "(docs/SNIPPETS.md) from walking trials and save it");
   cmd->add_option("--engine", args->engine, "eigenwalker (a .ewm model) or snippet (a .ewsp prior)")
       ->check(CLI::IsMember({"eigenwalker", "snippet", "skeleton"}))

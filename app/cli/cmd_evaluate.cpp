@@ -1,5 +1,5 @@
 // `eigenwalker-cli evaluate --data PATH… --out DIR [--experiment …] …`: the Zhang & Troje
-// (2007) evaluation, leave-one-subject-out (SPEC §7–8), as CSVs, PNG plots and summary.json.
+// (2007) evaluation, leave-one-subject-out (METHOD §7–8), as CSVs, PNG plots and summary.json.
 #include <unistd.h>
 
 #include <chrono>
@@ -289,7 +289,7 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
   auto args = std::make_shared<EvaluateArgs>();
   auto* cmd = app.add_subcommand(
       "evaluate",
-      "Leave-one-subject-out evaluation (Zhang & Troje 2007; SPEC §7-8). Writes into DIR:\n"
+      "Leave-one-subject-out evaluation (Zhang & Troje 2007; docs/METHOD.md §7-8). Writes into DIR:\n"
       "  harmonics.csv      walker,subject,source,stride_hz,h1_share,h2_share,residual_share\n"
       "  variance.csv       component,eigenvalue_mm2,variance_share,cumulative_share\n"
       "  sigma_sweep.csv    sigma2_mm2,method,mean_abs_error_mm2,mean_rel_error,mpjpe_mm\n"

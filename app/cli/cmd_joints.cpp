@@ -49,7 +49,7 @@ int runJoints(const JointsArgs& args) {
   if (args.segment != 0) prepare.segment = args.segment - 1;
   const WalkingTrial trial = loadWalkingTrial(args.file, options, prepare);
   std::vector<std::string> comments = {
-      "eigenwalker 15-joint trajectories, mm, x right, y forward, z up (SPEC §2)",
+      "eigenwalker 15-joint trajectories, mm, x right, y forward, z up (docs/METHOD.md §2)",
       "source=" + args.file + " (" + trial.joints.format + ", " + trial.joints.source + ")",
       "window_frames=" + std::to_string(trial.windowBegin) + "-" +
           std::to_string(trial.windowEnd - 1),

@@ -1,15 +1,15 @@
 // `eigenwalker-cli reconstruct [--model MODEL] [--components N] --input FILE
 //  (--angle DEG | --unknown-angle) [--method lsq|map] [--sigma2 MM2] --out OUT.csv
-//  [--project-angle DEG] [--json]`: the 3D walker behind a 2D sequence (SPEC §6). Without
+//  [--project-angle DEG] [--json]`: the 3D walker behind a 2D sequence (METHOD §6). Without
 // --model the default model of real walkers (core/engine/default_model.h); without
 // --sigma2 the σ² optimum stored in the model (else the paper's 70 mm²). FILE is a 2D CSV
 // (docs/EXPERIMENTS.md) or any 3D trial the loaders read, projected at --project-angle (ground
-// truth known: errors of SPEC §7 are reported).
+// truth known: errors of METHOD §7 are reported).
 // `--engine snippet [--prior PRIOR.ewsp]`: the snippet engine (core/snippet) instead, through
 // the engines' interface (core/engines/engine.h); without --prior its prior is learnt from
 // the default model's real walkers (without the input's subject when it is one of them). A 3D
 // input is then viewed overground (its progression put back), as the snippet prior was learnt.
-// A 3D input whose subject the model holds is reconstructed by the model without it (SPEC §4).
+// A 3D input whose subject the model holds is reconstructed by the model without it (METHOD §4).
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -160,7 +160,7 @@ Input readInput(const ReconstructArgs& a) {
 // subject's name or its data; model_membership.h), else "" (and for a 2D input).
 // A 3D input whose walker is one of the model's: the model
 // is rebuilt without that subject, as the viewer and the experiments reconstruct a walker
-// (SPEC §4), its component count kept; the subject's model name, or "" when none. Its errors
+// (METHOD §4), its component count kept; the subject's model name, or "" when none. Its errors
 // against the truth would otherwise be those of a walker the model has seen.
 std::string inputSubjectInModel(const EigenwalkerModel& model, const Input& in, const ReconstructArgs& a) {
   if (in.frames3d.rows() == 0) return "";
@@ -206,7 +206,7 @@ json minimaJson(const ViewSearch& s) {
   return out;
 }
 
-// SPEC §7 errors against the 3D truth: Fourier (one cycle) and raw frames. Joints the trial
+// METHOD §7 errors against the 3D truth: Fourier (one cycle) and raw frames. Joints the trial
 // did not measure have no truth: they are filled with the reconstruction (zero error), and
 // every error is averaged over the measured joints only (MPJPE over joints with 0 added
 // rescaled by 15 / measured); σ_m² is then that of the truth completed by the reconstruction.
@@ -501,7 +501,7 @@ void addReconstructCommand(CLI::App& app, int& exitCode) {
   auto args = std::make_shared<ReconstructArgs>();
   auto* cmd = app.add_subcommand(
       "reconstruct",
-      "3D walker from a 2D sequence (SPEC §6). --input is a 2D CSV frame,time_s,head_u,head_v,...,l_ankle_v "
+      "3D walker from a 2D sequence (docs/METHOD.md §6). --input is a 2D CSV frame,time_s,head_u,head_v,...,l_ankle_v "
       "(mm; docs/EXPERIMENTS.md) or a 3D trial viewed at --project-angle (errors against it reported). "
       "Writes the 15-joint 3D CSV over the input's duration.");
   cmd->add_option("--engine", args->engine,

@@ -53,7 +53,7 @@ json comparisonJson(const ReferenceComparison& c) {
 }
 
 // The result's up: in a calibration's world the axis nearest the body's head-above-ankles
-// direction (SPEC §2's rule); in a camera's frame that direction itself (the camera may be tilted).
+// direction (METHOD §2's rule); in a camera's frame that direction itself (the camera may be tilted).
 void writeAngles(const SkeletonArgs& a, const Eigen::MatrixXd& framesMm, double rateHz, bool world) {
   const Eigen::Vector3d up = bodyUp(framesMm, world ? 90.0 : 0.0);
   std::ostringstream upText;
@@ -96,7 +96,7 @@ struct ChosenBones {
 
 Joint jointNamed(const std::string& name, const char* option) {
   const auto j = jointFromName(name);
-  if (!j) throw Error(ErrorKind::BadArgument, option, "", "'" + name + "' is no joint of SPEC §1 (e.g. r_elbow)");
+  if (!j) throw Error(ErrorKind::BadArgument, option, "", "'" + name + "' is no joint of docs/METHOD.md §1 (e.g. r_elbow)");
   return *j;
 }
 

@@ -45,7 +45,7 @@ constexpr double kMaxRmsOfHeight = 0.10;
 // Above this share of the walker's height, the fit looks for a better basin from a grid of
 // azimuths (good fits: 1-3 %; 7 % for a 140 px walker at 5 px noise).
 constexpr double kRetryRmsOfHeight = 0.08;
-// A fit striding outside kMinStrideHz–kMaxStrideHz (SPEC §3's ω range) runs backwards in
+// A fit striding outside kMinStrideHz–kMaxStrideHz (METHOD §3's ω range) runs backwards in
 // time or its legs faster than anyone walks: a wrong basin however well it fits.
 // Candidates finished on every frame before the fit gives up on a start list.
 constexpr int kFinishedCandidates = 3;

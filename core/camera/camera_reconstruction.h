@@ -22,7 +22,7 @@ struct CameraFitOptions {
   std::optional<double> focalPx;        // known: a pinhole with this focal length
   bool estimateFocal = true;            // focal unknown: a pinhole estimating it, else scaled orthography
   // Known view: held at these values instead of estimated (the viewer's "fix" controls).
-  std::optional<double> alphaDeg;       // azimuth, SPEC §5
+  std::optional<double> alphaDeg;       // azimuth, METHOD §5
   std::optional<double> elevationDeg;   // camera looking down by this much
   // The image the joints were found in (width, height px), when known. A pinhole's c_x, c_y
   // are its principal point, which trades against the tilt when perspective is weak: a
@@ -111,7 +111,7 @@ std::vector<std::string> cameraFitCautions(const CameraFit& fit, const FitGivens
 // "height" the fit reports, and its truth in the experiment.
 double walkerHeadHeightMm(const Eigen::VectorXd& w);
 
-// jointsPx: T × 30 (u, v per joint, SPEC §1 order), NaN = not seen. Throws Error(BadData)
+// jointsPx: T × 30 (u, v per joint, METHOD §1 order), NaN = not seen. Throws Error(BadData)
 // naming options.file when fewer than 8 frames or no start converges to a walker moving
 // forward, Error(BadArgument) for a focal length that is not a camera's (focal_length.h) or a fixed
 // azimuth or elevation that is not finite (or an elevation outside −30…80°).

@@ -21,7 +21,7 @@ struct ClipReconstruction {
   ImageGait gait;
   CameraFit fit;
   Eigen::VectorXd timesS;    // T: each input frame's time
-  Eigen::MatrixXd framesMm;  // T × 45: the walker at each input frame (SPEC §2 canonical frame)
+  Eigen::MatrixXd framesMm;  // T × 45: the walker at each input frame (METHOD §2 canonical frame)
   Eigen::MatrixXd reprojectedPx;  // T × 30: the 3D walker through the camera, pixels, y down
   // Per joint, RMS over the frames that see it of |reprojected − input| (px); NaN if never seen.
   std::array<double, kJointCount> residualRmsPx{};

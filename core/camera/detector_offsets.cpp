@@ -11,7 +11,7 @@ namespace ew {
 
 EigenwalkerModel modelAsDetected(const EigenwalkerModel& model, const JointOffsetsMm& offsets) {
   EigenwalkerModel moved = model;
-  // p0 is the first block of w: joint-major, then x, y, z (SPEC §3).
+  // p0 is the first block of w: joint-major, then x, y, z (METHOD §3).
   for (int j = 0; j < kJointCount; ++j)
     for (int c = 0; c < 3; ++c) moved.mean[3 * j + c] += offsets[static_cast<std::size_t>(j)][static_cast<std::size_t>(c)];
   return moved;

@@ -21,7 +21,7 @@ struct KeypointTrial;
 // added to the mean posture p0; the eigenwalkers are unchanged, so coefficients carry over).
 EigenwalkerModel modelAsDetected(const EigenwalkerModel& model, const JointOffsetsMm& offsets);
 
-// A walker (225, SPEC §3) fitted to detector points, moved back to joint centres.
+// A walker (225, METHOD §3) fitted to detector points, moved back to joint centres.
 void removeOffsets(Eigen::VectorXd& w, const JointOffsetsMm& offsets);
 // A walker's frames (T × 45) as the detector would place its points.
 void addOffsets(Eigen::MatrixXd& framesMm, const JointOffsetsMm& offsets);

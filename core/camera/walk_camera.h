@@ -1,9 +1,9 @@
 #pragma once
 // A camera filming an overground walk (docs/CAMERA.md has the equations). The walker is
-// the periodic 15-joint motion X(t) of the canonical frame (SPEC §2: x right, y forward,
+// the periodic 15-joint motion X(t) of the canonical frame (METHOD §2: x right, y forward,
 // z up, mm, progression removed), carried forward along y at `speedMmS`:
 //   P(t) = X(t) + (0, y0 + v·t, −h)                  (relative to the look-at point)
-// seen from azimuth α (SPEC §5: u = x cos α + y sin α, d = −x sin α + y cos α) by a camera
+// seen from azimuth α (METHOD §5: u = x cos α + y sin α, d = −x sin α + y cos α) by a camera
 // tilted down by the elevation ε:
 //   X_c = u,   Y_c = −(d sin ε + z cos ε),   Z_c = D + d cos ε − z sin ε
 // and imaged in pixels, y down:
@@ -21,7 +21,7 @@ enum class CameraModel { Pinhole, ScaledOrthographic };
 
 struct WalkCamera {
   CameraModel model = CameraModel::ScaledOrthographic;
-  double alphaDeg = 0.0;      // azimuth, SPEC §5
+  double alphaDeg = 0.0;      // azimuth, METHOD §5
   double elevationDeg = 0.0;  // camera looking down by this much
   double focalPx = 1000.0;    // pinhole only
   double distanceMm = 5000.0; // pinhole: camera to the look-at point
@@ -33,7 +33,7 @@ struct WalkCamera {
 };
 
 // framesX45: T × 45 canonical frames (periodic, progression removed); timesS: T.
-// Returns T × 30 pixel coordinates (u, v per joint, SPEC §1 order). A point at or behind
+// Returns T × 30 pixel coordinates (u, v per joint, METHOD §1 order). A point at or behind
 // the pinhole (Z_c ≤ 1 mm) is NaN.
 Eigen::MatrixXd projectWalk(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
                             const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& camera);

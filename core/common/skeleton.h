@@ -1,5 +1,5 @@
 #pragma once
-// The 15-joint skeleton of SPEC §1: fixed joint order, names and drawing bones.
+// The 15-joint skeleton of METHOD §1: fixed joint order, names and drawing bones.
 // Every trajectory matrix in core stores frames as rows and joints joint-major:
 // columns x0,y0,z0,x1,y1,z1,… (45 columns in 3D) or u0,v0,u1,v1,… (30 in 2D).
 
@@ -34,7 +34,7 @@ enum class Joint : int {
 
 constexpr int index(Joint j) { return static_cast<int>(j); }
 
-// SPEC §1 names, also the CSV column stems (head_x, …, l_ankle_z).
+// METHOD §1 names, also the CSV column stems (head_x, …, l_ankle_z).
 inline constexpr std::array<std::string_view, kJointCount> kJointNames = {
     "head",    "sternum",    "pelvis", "r_shoulder", "r_elbow",
     "r_wrist", "l_shoulder", "l_elbow", "l_wrist",   "r_hip",

@@ -2,7 +2,7 @@
 // The data a trial passes through on its way to the model:
 //   file --(reader)--> RawTrial --(mapping)--> JointTrial --(normalise)--> WalkingTrial
 // RawTrial keeps the file's own points (markers or skeleton joints) in the file's axes,
-// already converted to millimetres. JointTrial has the 15 joints of SPEC §1.
+// already converted to millimetres. JointTrial has the 15 joints of METHOD §1.
 
 #include <Eigen/Core>
 #include <array>
@@ -66,7 +66,7 @@ struct JointTrial {
   std::string units;              // units the file stated (data here is always mm)
   std::vector<std::string> sourceLabels;  // the markers / skeleton joints the file had
   Eigen::MatrixXd positionsMm;    // frames x 45, joint-major x,y,z; file axes until normalised
-  std::array<bool, kJointCount> estimated{};  // joint estimated, not measured (SPEC §1)
+  std::array<bool, kJointCount> estimated{};  // joint estimated, not measured (METHOD §1)
   // Joint not measured at all (its columns are NaN in every frame): to be estimated from a
   // model (core/engine/joint_completion.h). Set by mappings whose marker set lacks it.
   std::array<bool, kJointCount> missing{};

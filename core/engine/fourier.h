@@ -1,5 +1,5 @@
 #pragma once
-// The Fourier representation of one walker (SPEC §3; Zhang & Troje 2007, eq. 3.1–3.2):
+// The Fourier representation of one walker (METHOD §3; Zhang & Troje 2007, eq. 3.1–3.2):
 //
 //   p(t) = p0 + p1 sin(ωt+φ) + q1 cos(ωt+φ) + p2 sin(2(ωt+φ)) + q2 cos(2(ωt+φ))
 //
@@ -27,9 +27,9 @@ struct FourierFitOptions {
   // Use exactly this ω (no scan): for data whose frequency is known, e.g. synthetic tests
   // or 2D frames rendered from a known walker.
   std::optional<double> omegaFixedRadS;
-  double omegaMinRadS = 2.0 * std::numbers::pi * 0.3;  // SPEC §3 scan range
+  double omegaMinRadS = 2.0 * std::numbers::pi * 0.3;  // METHOD §3 scan range
   double omegaMaxRadS = 2.0 * std::numbers::pi * 2.5;
-  // More missing frames than this fraction is an error (SPEC: the fit must see the cycle).
+  // More missing frames than this fraction is an error (METHOD §3: the fit must see the cycle).
   double maxMissingFraction = 0.2;
   // The hint and the scan's best ω "agree" when within this relative difference.
   double hintAgreement = 0.10;

@@ -84,7 +84,7 @@ FourierFit fitFourierMeasured(const Eigen::Ref<const Eigen::MatrixXd>& frames, d
     throw Error(ErrorKind::BadArgument, options.file, "",
                 "Fourier fit: frames must have 45 (3D) or 30 (2D) columns, got " +
                     std::to_string(frames.cols()));
-  // The phase reference z_l_ankle − z_r_ankle (SPEC §3) aligns the walker with the model's.
+  // The phase reference z_l_ankle − z_r_ankle (METHOD §3) aligns the walker with the model's.
   JointMask ankles{};
   for (Joint j : {Joint::RAnkle, Joint::LAnkle})
     ankles[static_cast<size_t>(index(j))] = missing[static_cast<size_t>(index(j))];

@@ -3,11 +3,11 @@
 //
 // A lower-body marker set measures pelvis, hips, knees and ankles; the trunk, head and
 // arms are unknown in every frame (JointTrial::missing). Zhang & Troje (2007) close with
-// "the same machinery recovers occluded markers": the reconstruction of SPEC §6 with the
+// "the same machinery recovers occluded markers": the reconstruction of METHOD §6 with the
 // projection C(α) replaced by the selection S_O of the measured entries of w.
 //
 // Derivation. Split w (225) into the entries O of measured joints (all 5 blocks × x,y,z)
-// and M of missing ones. The model (SPEC §4) says w = w̄ + E c with the prior
+// and M of missing ones. The model (METHOD §4) says w = w̄ + E c with the prior
 // c ~ N(0, Λ), Λ = diag(λ_n); the measured entries carry noise ε ~ N(0, σ² I):
 //   w_O = w̄_O + E_O c + ε.
 // The posterior of c is Gaussian; its mean (= its mode, the MAP estimate) is
@@ -19,12 +19,12 @@
 // an explicit inverse. With nothing missing, w passes through unchanged (ĉ = Eᵀ(w − w̄)
 // projection is still reported). σ² (mm²): the caller's, else EstimatorOptions' default.
 //
-// Phase: the model's walkers are phase-aligned by the ankle reference of SPEC §3
+// Phase: the model's walkers are phase-aligned by the ankle reference of METHOD §3
 // (z_l_ankle − z_r_ankle a pure +sine); a partial walker's fit uses the same reference,
 // so its w is aligned the same way and the ankles are part of the minimum below.
 //
 // Minimum (core/gait/missing_joints.h): both ankles (the floor, the gait cycles and the
-// phase reference), both hips or both knees (the heading, SPEC §2), the pelvis or both
+// phase reference), both hips or both knees (the heading, METHOD §2), the pelvis or both
 // hips (the progression). Below it: Error(BadData) naming the missing joints and saying
 // too few were measured to estimate the rest.
 

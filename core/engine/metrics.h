@@ -1,14 +1,14 @@
 #pragma once
-// Reconstruction errors (SPEC §7; Zhang & Troje 2007, eq. 4.1–4.4).
+// Reconstruction errors (METHOD §7; Zhang & Troje 2007, eq. 4.1–4.4).
 //
-// Depth d_j(t) = −x_j sin α + y_j cos α of joint j at view α (SPEC §5), mm.
+// Depth d_j(t) = −x_j sin α + y_j cos α of joint j at view α (METHOD §5), mm.
 //   E_abs(j) = mean over one cycle of (d_j(t) − d̃_j(t))²       (mm²)
 //            = Δp0² + ½(Δp1² + Δq1² + Δp2² + Δq2²)  for Fourier vectors (closed form)
 //   E_a      = mean over the 15 joints of E_abs(j)
 //   σ_m²     = (1/15) Σ_j Var_t d_j(t) = (1/15) Σ_j ½(p1² + q1² + p2² + q2²) of the true depth
 //   E_rel(j) = E_abs(j) / σ_m²,  E_r = mean over joints
 // Both walkers must share ω and φ (the reconstruction is synthesised with the test
-// walker's own ω and φ, SPEC §6), so Fourier coefficients compare directly.
+// walker's own ω and φ, METHOD §6), so Fourier coefficients compare directly.
 //
 // Preconditions (Error "error measures: …"): walkers of 225 finite values, frames T × 45,
 // finite angles, rates positive and finite (BadArgument); at least one complete frame, two

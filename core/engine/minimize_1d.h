@@ -1,6 +1,6 @@
 #pragma once
 // Bracketed 1-D minimisation (Brent: golden section with parabolic steps), used by the
-// ω refinement of the Fourier fit (SPEC §3) and the view-angle refinement (SPEC §6).
+// ω refinement of the Fourier fit (METHOD §3) and the view-angle refinement (METHOD §6).
 // Header-only so the objective inlines: both callers evaluate it in tight loops.
 
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// The eigenwalker model (SPEC §4; Zhang & Troje 2007, §3.1, eq. 3.3):
+// The eigenwalker model (METHOD §4; Zhang & Troje 2007, §3.1, eq. 3.3):
 //   W = [w_1 … w_R] (225 × R), w̄ = mean column, X = W − w̄1ᵀ = U S Vᵀ (thin SVD),
 //   e_n = U[:, n], λ_n = S_n² / (R − 1) (mm²), k_{n,r} = e_nᵀ (w_r − w̄),
 //   w ≈ w̄ + Σ_n k_n e_n.
@@ -13,7 +13,7 @@
 namespace ew {
 
 struct ModelOptions {
-  // Smallest N whose cumulative share of the variance reaches this (SPEC default 95 %).
+  // Smallest N whose cumulative share of the variance reaches this (METHOD §4 default 95 %).
   double varianceThreshold = 0.95;
   // Fixed N instead; an upper bound: clamped to R − 1 (the centred data's rank).
   std::optional<int> components;
@@ -26,7 +26,7 @@ inline constexpr double kPaperSigma2Mm2 = 70.0;
 // The MAP σ² that reconstructs this model's own walkers best, measured when the model was
 // built (core/experiments/model_build.h): a leave-one-subject-out sweep over a σ² grid,
 // each held-out walker projected at every angle of `anglesDeg` and reconstructed by MAP
-// with the model without its subject; the σ² with the smallest mean E_a (SPEC §7) wins.
+// with the model without its subject; the σ² with the smallest mean E_a (METHOD §7) wins.
 struct Sigma2Optimum {
   double sigma2Mm2 = kPaperSigma2Mm2;  // the optimum, mm²
   double meanAbsErrorMm2 = 0.0;        // its mean E_a over subjects and angles, mm²
@@ -92,7 +92,7 @@ EigenwalkerModel buildModel(const Eigen::Ref<const Eigen::MatrixXd>& w,
                             const Eigen::Ref<const Eigen::VectorXd>& omegasRadS,
                             const ModelOptions& options = {});
 
-// The model without every walker of `heldOutSubject` (SPEC §4 leave-one-subject-out):
+// The model without every walker of `heldOutSubject` (METHOD §4 leave-one-subject-out):
 // a refit of the remaining columns of W, so N follows the options on the R' remaining
 // walkers (at most R' − 1). Refit rather than an SVD downdate: a thin SVD of 225 × R' costs
 // O(225·R'²), well under a millisecond for R' in the tens, and is exact (docs/ENGINE.md).

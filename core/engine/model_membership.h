@@ -1,5 +1,5 @@
 #pragma once
-// Whether a walker is one of a model's walkers, and the model without it (SPEC §4: a subject is
+// Whether a walker is one of a model's walkers, and the model without it (METHOD §4: a subject is
 // never reconstructed by a model that has seen it). Shared by the viewer (ui/app/held_model.h)
 // and `reconstruct`.
 

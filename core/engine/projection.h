@@ -1,5 +1,5 @@
 #pragma once
-// Orthographic projection at a horizontal view angle (SPEC §5; Zhang & Troje 2007, eq. 3.5).
+// Orthographic projection at a horizontal view angle (METHOD §5; Zhang & Troje 2007, eq. 3.5).
 //
 // α in degrees: 0 = frontal, ±90 = profiles. For every block (p0, p1, q1, p2, q2) and joint:
 //   u = x cos α + y sin α,   v = z,   depth d = −x sin α + y cos α.

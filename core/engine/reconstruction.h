@@ -1,5 +1,5 @@
 #pragma once
-// 3D reconstruction of a walker from its 2D Fourier representation (SPEC §6; Zhang &
+// 3D reconstruction of a walker from its 2D Fourier representation (METHOD §6; Zhang &
 // Troje 2007, §3.2, §4.3, appendices A–B).
 //
 // Notation: ŵ (150, mm) the observed 2D Fourier vector at view α; ŵ̄(α) = C(α) w̄,
@@ -75,8 +75,8 @@ Reconstruction reconstructMap(const ModelGram& gram,
                               double sigma2Mm2);
 
 struct ViewSearchOptions {
-  double coarseStepDeg = 1.0;        // SPEC: 1° scan of (−180, 180]
-  double toleranceDeg = 1e-4;        // refinement bracket width (SPEC: < 0.01°)
+  double coarseStepDeg = 1.0;        // METHOD §6.4: 1° scan of (−180, 180]
+  double toleranceDeg = 1e-4;        // refinement bracket width (METHOD §6.4)
   double relationToleranceDeg = 20.0;  // how close to −α̂, 180° − α̂, α̂ + 180° (see below)
 };
 

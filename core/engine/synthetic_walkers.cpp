@@ -69,7 +69,7 @@ Eigen::VectorXd buildWalker(double size, const Eigen::VectorXd& swingGain, doubl
 }
 
 // Re-expressed so the fundamental of z_l_ankle − z_r_ankle is a pure positive sine again
-// (SPEC §3), as a fitted walker would be.
+// (METHOD §3), as a fitted walker would be.
 Eigen::VectorXd phaseAligned(const Eigen::VectorXd& w) {
   const double rs = w(at(1, Joint::LAnkle, 2)) - w(at(1, Joint::RAnkle, 2));
   const double rc = w(at(2, Joint::LAnkle, 2)) - w(at(2, Joint::RAnkle, 2));

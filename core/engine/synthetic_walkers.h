@@ -1,6 +1,6 @@
 #pragma once
-// Synthetic walkers: a plausible 15-joint walking pattern in Fourier form (SPEC §3 layout,
-// canonical frame of SPEC §2, mm) and random individual variations of it. For tests,
+// Synthetic walkers: a plausible 15-joint walking pattern in Fourier form (METHOD §3 layout,
+// canonical frame of METHOD §2, mm) and random individual variations of it. For tests,
 // benchmarks and demos that must not depend on recorded data.
 
 #include <Eigen/Core>

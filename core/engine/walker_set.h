@@ -1,5 +1,5 @@
 #pragma once
-// Walkers from a dataset (SPEC §4): a walker is one trial, or the mean Fourier vector of
+// Walkers from a dataset (METHOD §4): a walker is one trial, or the mean Fourier vector of
 // several trials of one subject in one condition. Builds the eigenwalker model from them.
 
 #include <map>
@@ -25,7 +25,7 @@ struct Walker {
 };
 
 // Groups trials by (subject, condition) in first-seen order and fits each trial with the
-// stride frequency of its gait cycles as the ω hint (SPEC §3). A trial whose fit fails is
+// stride frequency of its gait cycles as the ω hint (METHOD §3). A trial whose fit fails is
 // left out with a warning "file: reason" (as is a walker left with no trial); fit warnings
 // are kept on the walker, prefixed with the file. A trial whose joints are not 3D (45
 // columns) is left out the same way; a stride frequency that is not positive and finite is
@@ -54,7 +54,7 @@ Eigen::MatrixXd walkerMatrix(const std::vector<Walker>& walkers);
 // "model: …" naming the walker.
 EigenwalkerModel buildModel(const std::vector<Walker>& walkers, const ModelOptions& options = {});
 
-// Leave-one-subject-out model (SPEC §4, §8): every walker of `subject` left out.
+// Leave-one-subject-out model (METHOD §4, §8): every walker of `subject` left out.
 EigenwalkerModel buildModelWithoutSubject(const std::vector<Walker>& walkers,
                                           const std::string& subject,
                                           const ModelOptions& options = {});

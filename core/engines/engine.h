@@ -14,10 +14,10 @@
 //                                the pelvis; each bone's two depths chosen by the most
 //                                plausible pose and by continuity (skeleton_solve.h)
 //
-// Input: u, v in mm at the walker (v up), as SPEC §5's orthographic view C(α) renders the
+// Input: u, v in mm at the walker (v up), as METHOD §5's orthographic view C(α) renders the
 // walker's frame. The image may show the walker moving across it (overground) or walking
 // in place; the eigenwalker removes the pelvis's straight-line image drift before its
-// Fourier fit (a no-op for a view of SPEC §2's canonical frames, whose pelvis has no trend),
+// Fourier fit (a no-op for a view of METHOD §2's canonical frames, whose pelvis has no trend),
 // the snippet engine keeps it (its prior was learnt with the progression); the skeleton
 // engine places each frame's pelvis where the image shows it, at depth 0 (an orthographic
 // view says nothing of depth: its walker never moves along the line of sight).
@@ -82,7 +82,7 @@ using Engine = std::variant<EigenwalkerEngine, SnippetEngine, SkeletonEngine>;
 EngineKind engineKind(const Engine& engine);
 
 struct ViewInput {
-  Eigen::MatrixXd uvMm;                 // T × 30: u, v per joint (SPEC §1 order), NaN = not seen
+  Eigen::MatrixXd uvMm;                 // T × 30: u, v per joint (METHOD §1 order), NaN = not seen
   double rateHz = 0.0;
   std::optional<double> alphaDeg;       // the known view; unset: each engine finds it
   std::optional<double> strideHzHint;   // e.g. from gait events (the eigenwalker's ω scan)
@@ -122,7 +122,7 @@ EngineResult reconstructWithEngine(const Engine& engine, const ViewInput& input)
 // after removing the clip's mean translation (engines differ in what they know of where
 // the walker stands; shape and motion are compared): per frame the mean over joints of
 // the 3D error, its mean (MPJPE, mm) and E_a, the mean squared error along the line of
-// sight of view α (mm²; SPEC §7 on frames). Throws Error(BadArgument) for unequal shapes.
+// sight of view α (mm²; METHOD §7 on frames). Throws Error(BadArgument) for unequal shapes.
 struct ClipErrors {
   Eigen::VectorXd perFrameMm;
   double mpjpeMm = 0.0;
@@ -145,7 +145,7 @@ Eigen::MatrixXd removeImageDrift(const Eigen::Ref<const Eigen::MatrixXd>& uvMm, 
 BoneLengths estimateBoneLengthsFromView(const Eigen::Ref<const Eigen::MatrixXd>& uvMm, const std::string& name);
 
 // The view's frame (U along the image's horizontal, D away from the camera, V up) turned
-// into the walker's frame of SPEC §2 by the view angle α (inverse of SPEC §5): T × 45.
+// into the walker's frame of METHOD §2 by the view angle α (inverse of METHOD §5): T × 45.
 Eigen::MatrixXd viewFrameToWalker(const Eigen::Ref<const Eigen::MatrixXd>& viewFramesMm, double alphaDeg);
 
 // The view angle at which a pose seen in the view's frame walks forward: the body's forward
@@ -155,7 +155,7 @@ double viewAngleFromPoses(const Eigen::Ref<const Eigen::MatrixXd>& viewFramesMm)
 
 // [SECTION] Walkers known only as a Fourier vector (the viewer's population, a model)
 
-// The walker w (225, SPEC §3, phase origin 0) walked overground: `cycles` gait cycles at
+// The walker w (225, METHOD §3, phase origin 0) walked overground: `cycles` gait cycles at
 // `rateHz`, every joint carried forward along +y at `speedMps` (T × 45, mm). What an engine
 // is shown of a walker whose trials are not at hand; the snippet prior was learnt
 // overground, so it is shown the progression too. Throws Error(BadArgument) for a w that is

@@ -1,10 +1,10 @@
 #pragma once
-// The Zhang & Troje (2007) evaluation and the project's extensions (SPEC §7–8), as free
+// The Zhang & Troje (2007) evaluation and the project's extensions (METHOD §7–8), as free
 // functions over plain rows: the CLI writes them as CSV, the viewer can plot them.
 //
 // Protocol: leave-one-subject-out (leave_one_out.h); the held-out walker's own 3D Fourier
-// vector w is projected at α (SPEC §5), reconstructed (SPEC §6) and scored against w
-// (SPEC §7: E_a in closed form over one cycle, E_r, σ_m², MPJPE over one cycle).
+// vector w is projected at α (METHOD §5), reconstructed (METHOD §6) and scored against w
+// (METHOD §7: E_a in closed form over one cycle, E_r, σ_m², MPJPE over one cycle).
 
 #include <cstdint>
 #include <functional>
@@ -38,13 +38,13 @@ std::optional<Experiment> experimentFromName(const std::string& name);
 // folder per clip and takes minutes.
 const std::vector<Experiment>& allExperiments();
 
-// SPEC §8.2: the σ² grid (mm²).
+// METHOD §8.2: the σ² grid (mm²).
 std::vector<double> defaultSigma2GridMm2();
 
 // A set of 2D joints hidden from the reconstruction (their rows of Ê dropped).
 struct JointSet {
   std::string name;         // "r_wrist", "both_wrists", …
-  std::vector<int> joints;  // SPEC §1 indices
+  std::vector<int> joints;  // METHOD §1 indices
 };
 // Every single joint, then groups: both wrists, both arms (elbows + wrists), both ankles,
 // both lower legs (knees + ankles).
@@ -54,7 +54,7 @@ std::vector<JointSet> defaultMissingJointSets();
 using ExperimentProgressFn = std::function<void(int, int, const std::string&)>;
 
 struct EvaluationOptions {
-  std::vector<double> anglesDeg;        // view angles; empty = −90…90 step 1 (SPEC §8)
+  std::vector<double> anglesDeg;        // view angles; empty = −90…90 step 1 (METHOD §8)
   bool lsq = true;
   bool map = true;
   std::optional<double> sigma2Mm2;      // MAP σ²; unset = the sweep's optimum

@@ -1,5 +1,5 @@
 #pragma once
-// Leave-one-subject-out folds for the experiments (SPEC §4, §8): one eigenwalker model per
+// Leave-one-subject-out folds for the experiments (METHOD §4, §8): one eigenwalker model per
 // held-out subject, built once and reused by every experiment, with its Gram blocks
 // precomputed once (all joints observed).
 
@@ -17,14 +17,14 @@
 
 namespace ew {
 
-// A walker as the experiments see it: its 3D Fourier fit (SPEC §3) and, for the
+// A walker as the experiments see it: its 3D Fourier fit (METHOD §3) and, for the
 // experiments that start from frames (2D noise), the frames of its first trial.
 struct ExperimentWalker {
   std::string id;       // subject/condition
   std::string subject;
   std::string source;
   FourierFit fit;             // 3D: w (225), ω, φ, harmonic shares
-  Eigen::MatrixXd framesMm;   // T × 45, canonical frame (SPEC §2); empty if unknown
+  Eigen::MatrixXd framesMm;   // T × 45, canonical frame (METHOD §2); empty if unknown
   double rateHz = 0.0;        // of framesMm
 };
 

@@ -8,8 +8,8 @@
 // estimated from the fold's model by the conditional-Gaussian (MAP) completion
 //   ĉ = (E_Oᵀ E_O + σ² Λ⁻¹)⁻¹ E_Oᵀ (w_O − w̄_O),  ŵ_M = w̄_M + E_M ĉ
 // ("map" with the evaluation's σ², "lsq" with σ² = 0) and scored per joint by MPJPE over
-// one cycle (SPEC §7). Baseline "mean": the fold model's mean walker's joints in their
-// place — the same canonical frame (SPEC §2) and phase alignment (SPEC §3), so no other
+// one cycle (METHOD §7). Baseline "mean": the fold model's mean walker's joints in their
+// place — the same canonical frame (METHOD §2) and phase alignment (METHOD §3), so no other
 // placement is needed. The measured joints are kept as measured: their error is 0 by
 // construction and is not listed.
 
@@ -29,7 +29,7 @@ JointMask lowerBodyMeasured();
 struct LowerBodyRow {
   std::string subject;
   std::string walker;
-  std::string joint;   // SPEC §1 name of an estimated joint
+  std::string joint;   // METHOD §1 name of an estimated joint
   std::string method;  // "map", "lsq" or "mean" (baseline)
   double mpjpeMm = 0;  // MPJPE of that joint over one cycle, mm
 };

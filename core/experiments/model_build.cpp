@@ -84,7 +84,7 @@ std::optional<Sigma2Optimum> measureSigma2Optimum(const std::vector<ExperimentWa
   s.meanAbsErrorMm2 = best->meanAbsErrorMm2;
   s.gridMm2 = plan.gridMm2;
   s.anglesDeg = plan.anglesDeg;
-  s.criterion = "smallest mean E_a (SPEC 7, mm2) of MAP over subjects and " +
+  s.criterion = "smallest mean E_a (docs/METHOD.md §7, mm2) of MAP over subjects and " +
                 formatAngles(plan.anglesDeg) +
                 ", leave-one-subject-out (each held-out walker reconstructed by the model without "
                 "its subject)";

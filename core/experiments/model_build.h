@@ -1,5 +1,5 @@
 #pragma once
-// Building a model from data as the `build` command does (SPEC §4): load the walkers,
+// Building a model from data as the `build` command does (METHOD §4): load the walkers,
 // build the eigenwalker model, and measure the MAP σ² that reconstructs the model's own
 // walkers best (a leave-one-subject-out sweep, stored in the model: model.h
 // Sigma2Optimum). The default model of real walkers is this over

@@ -2,7 +2,7 @@
 // 2D joint sequences (an image-plane view of a walker), our CSV format:
 //   frame,time_s,head_u,head_v,sternum_u,…,l_ankle_v
 // one row per frame, millimetres (orthographic image coordinates: u horizontal, v up),
-// SPEC §1 joint order. Empty cell or "nan" = missing sample. '#' lines are comments;
+// METHOD §1 joint order. Empty cell or "nan" = missing sample. '#' lines are comments;
 // "# rate_hz=R" sets the rate, else it is 1 / median(Δtime_s). See docs/EXPERIMENTS.md.
 
 #include <Eigen/Core>

@@ -36,7 +36,7 @@ std::optional<BodySize> measureBodySize(const Eigen::Ref<const Eigen::MatrixXd>&
 // was read in; nullopt when the size is plausible or cannot be measured.
 std::optional<std::string> bodySizeWarning(const JointTrial& trial);
 
-// A walker's stature from its head joint (SPEC §1: the head's centre) above its ankles while
+// A walker's stature from its head joint (METHOD §1: the head's centre) above its ankles while
 // walking, the cycle mean of the head's height over the mean of the two ankles': that height
 // is this share of the stature in the 18 Schreiber-Moissenet walkers, whose C3D files record
 // each subject's height (0.843 ± 0.015, mean ± SD, 0.792–0.860; docs/CAMERA.md; measured by

@@ -1,5 +1,5 @@
 #pragma once
-// SPEC §2: the canonical frame. Millimetres; x = walker's right, y = walking direction,
+// METHOD §2: the canonical frame. Millimetres; x = walker's right, y = walking direction,
 // z = up (right-handed). All functions work in place on T x 45 joint-major matrices with
 // no NaN (gaps are handled before).
 

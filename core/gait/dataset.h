@@ -1,5 +1,5 @@
 #pragma once
-// Datasets (SPEC §4): a folder (recursive), a list of files, or a manifest CSV
+// Datasets (METHOD §4): a folder (recursive), a list of files, or a manifest CSV
 // (`file,subject,source,condition[,extra…]`, paths relative to the manifest). Extra
 // manifest columns are kept as walker attributes.
 
@@ -64,7 +64,7 @@ std::vector<TrialFile> collectTrialFiles(const std::vector<std::filesystem::path
 std::vector<std::filesystem::path> withoutSkeletonsOfGivenMotions(
     const std::vector<std::filesystem::path>& paths);
 
-// One file through the whole path: read, map to 15 joints, prepare (SPEC §1-2).
+// One file through the whole path: read, map to 15 joints, prepare (METHOD §1-2).
 WalkingTrial loadWalkingTrial(const std::filesystem::path& file, const LoadOptions& options = {},
                               const PrepareOptions& prepare = {});
 

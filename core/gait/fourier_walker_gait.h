@@ -1,5 +1,5 @@
 #pragma once
-// The gait of a Fourier walker (SPEC §3: two harmonics, one cycle, progression removed): walked
+// The gait of a Fourier walker (METHOD §3: two harmonics, one cycle, progression removed): walked
 // in place for kWalkerGaitCycles cycles at kWalkerGaitRateHz, events from its own kinematics
 // (gait_events.h), measures and flexion curves as gait_measures.h defines them. The viewer's gait
 // report and the semantic axes (core/semantic) measure every walker this one way, so a walker

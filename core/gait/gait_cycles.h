@@ -12,7 +12,7 @@
 
 namespace ew {
 
-inline constexpr double kMinStrideHz = 0.3;  // SPEC §3's ω range, as strides per second
+inline constexpr double kMinStrideHz = 0.3;  // METHOD §3's ω range, as strides per second
 inline constexpr double kMaxStrideHz = 2.5;
 // A walking foot moves ~±250-400 mm fore-aft relative to the pelvis; standing, swaying
 // or gesturing moves it a few cm. Below this range the trial is not walking.

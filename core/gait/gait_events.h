@@ -32,7 +32,7 @@ struct GaitEventSet {
 };
 
 // The ankle's forward lead on the pelvis (mm), smoothed over ~50 ms: y of the ankle minus y of
-// the pelvis in a canonical frame (SPEC §2: y forward). framesX45: T × 45.
+// the pelvis in a canonical frame (METHOD §2: y forward). framesX45: T × 45.
 Eigen::VectorXd ankleLeadMm(const Eigen::Ref<const Eigen::MatrixXd>& framesX45, double rateHz,
                             Side side);
 
@@ -60,7 +60,7 @@ GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& f
                                       double rateHz, double footOffLag = kAnkleFootOffLagOfStride);
 
 // The median time between consecutive strikes of one foot, over both feet, counting only
-// plausible strides (SPEC §3's stride frequencies); NaN without one.
+// plausible strides (METHOD §3's stride frequencies); NaN without one.
 double medianStrideS(const GaitEventSet& events);
 
 // The file's foot strikes and foot offs between 0 and durationS, sorted per side.

@@ -1,6 +1,6 @@
 #pragma once
 // The spatiotemporal gait measures a clinical gait report gives, from any 3D walker in a
-// canonical frame (SPEC §2: mm, x right, y forward, z up; progression may have been removed,
+// canonical frame (METHOD §2: mm, x right, y forward, z up; progression may have been removed,
 // as it is from prepared trials and from reconstructions), and the joint-angle curves over
 // the normalised gait cycle.
 //

@@ -37,7 +37,7 @@ struct JointAngles {
 // The column names, in order.
 const std::vector<std::string>& jointAngleNames();
 
-// framesMm: T × 45 (SPEC §1 joint order), any right-handed frame; upMm: the ground's up in
+// framesMm: T × 45 (METHOD §1 joint order), any right-handed frame; upMm: the ground's up in
 // it (any length). Throws Error(BadArgument) naming `name` for a bad shape or a zero or
 // non-finite up, and Error(BadData) when no frame has the pelvis, hips and sternum (no heading).
 JointAngles jointAngles(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, const Eigen::Vector3d& upMm,
@@ -45,7 +45,7 @@ JointAngles jointAngles(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, const
 
 // The body's up: the mean over frames of the unit vector from the ankles' midpoint to the
 // head (frames where any of the three is missing are skipped); snapped to the nearest signed
-// axis when within `snapDegrees` of it (motion capture's up is an axis; 90 always snaps, SPEC
+// axis when within `snapDegrees` of it (motion capture's up is an axis; 90 always snaps, METHOD
 // §2's rule; 0 never). Zero when no frame has them.
 Eigen::Vector3d bodyUp(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, double snapDegrees = 15.0);
 

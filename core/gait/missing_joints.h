@@ -3,7 +3,7 @@
 // opposed to gaps (a joint hidden for some frames, core/gait/gaps.h). Missing joints are
 // estimated from a model (core/engine/joint_completion.h), never interpolated.
 //
-// Minimum to prepare a trial (SPEC §2-3) and estimate the rest:
+// Minimum to prepare a trial (METHOD §2-3) and estimate the rest:
 //   - both ankles: the floor, the gait cycles and the phase reference z_l_ankle − z_r_ankle;
 //   - a left-right pair for the heading z × (right − left): both hips, else both knees;
 //   - a body centre for the progression and the steady window: the pelvis, else the
@@ -25,7 +25,7 @@ using JointMask = std::array<bool, kJointCount>;
 
 bool anyJoint(const JointMask& mask);
 int jointCount(const JointMask& mask);
-// "head, sternum, r_wrist" (SPEC §1 names, joint order); "" for an empty mask.
+// "head, sternum, r_wrist" (METHOD §1 names, joint order); "" for an empty mask.
 std::string jointList(const JointMask& mask);
 
 // Joints without one finite sample in any frame of a T × 45 (3D) or T × 30 (2D) matrix;

@@ -1,5 +1,5 @@
 #pragma once
-// The whole path from 15 joints in file axes to a WalkingTrial (SPEC §2): bridge short
+// The whole path from 15 joints in file axes to a WalkingTrial (METHOD §2): bridge short
 // gaps, take the longest complete run, make z up, find the steady straight-walking
 // window, face +y, remove progression, put the feet on the floor, find the gait cycles.
 

@@ -1,5 +1,5 @@
 #pragma once
-// A trial ready for the method: 15 joints in the canonical frame of SPEC §2 (mm, x right,
+// A trial ready for the method: 15 joints in the canonical frame of METHOD §2 (mm, x right,
 // y forward, z up, progression and heading removed), cropped to its steady straight-walking
 // window, with its gait cycles.
 

@@ -20,7 +20,7 @@
 // back each joint exactly when the walker's bone lengths are constant and its pelvis is
 // the mid-point of the hips (true of the synthetic walkers; docs/SYNTHETIC.md).
 //
-// Axes: BVH is +Y up. Ours (SPEC §2) is x right, y forward, z up, so X = x, Y = z, Z = −y
+// Axes: BVH is +Y up. Ours (METHOD §2) is x right, y forward, z up, so X = x, Y = z, Z = −y
 // (a proper rotation; the walker faces −Z, as Blender's importer expects). Units: mm.
 
 #include <Eigen/Core>
@@ -37,7 +37,7 @@ struct BvhWriteOptions {
   int decimals = 6;  // channel values: 1e-6 mm / 1e-6° (FK error well under 1e-3 mm)
 };
 
-// BVH text for frames (T × 45, SPEC §1 order, mm, canonical axes) at rateHz.
+// BVH text for frames (T × 45, METHOD §1 order, mm, canonical axes) at rateHz.
 // Throws Error(BadArgument) for a wrong shape, a non-positive rate, fewer than 1 frame
 // or non-finite values.
 std::string formatBvh(const Eigen::MatrixXd& framesX45, double rateHz,

@@ -1,8 +1,8 @@
 #pragma once
 // Our own 15-joint CSV format (documented in docs/FORMATS.md):
 //   frame,time_s,head_x,head_y,head_z,sternum_x,…,l_ankle_z
-// one row per frame, millimetres, SPEC §1 joint order and names, canonical axes of
-// SPEC §2 when written by eigenwalker (x right, y forward, z up). Empty cell or "nan"
+// one row per frame, millimetres, METHOD §1 joint order and names, canonical axes of
+// METHOD §2 when written by eigenwalker (x right, y forward, z up). Empty cell or "nan"
 // = missing sample. Lines starting with '#' are comments; a comment
 // "# rate_hz=120" or "# units=m" overrides what the time column implies / mm.
 

@@ -8,7 +8,7 @@
 //   <tab> <tab>  X1  Y1  Z1  X2  Y2  Z2 …
 //   <empty line>
 //   1  0.000000  x y z …                          (tab-separated; an empty cell is a missing value)
-// The 15 joints are the markers, named as in SPEC §1 and in its order (which our TRC reader
+// The 15 joints are the markers, named as in METHOD §1 and in its order (which our TRC reader
 // recognises as canonical joints). Axes are OpenSim's: X forward, Y up, Z right — the
 // canonical frame's (x right, y forward, z up) turned by a proper rotation (X, Y, Z) = (y, z, x).
 

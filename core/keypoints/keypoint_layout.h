@@ -2,7 +2,7 @@
 // Pose-estimator keypoint layouts as data: each table under assets/keypoint-layouts/ (one
 // JSON file per skeleton: BODY_25, BODY_25B, COCO-18, COCO-17, Halpe-26, MediaPipe-33)
 // names its points in the order a file writes them and, for each of the 15 joints of
-// SPEC §1, the points whose mean is the joint, as alternatives tried in order
+// METHOD §1, the points whose mean is the joint, as alternatives tried in order
 // (docs/KEYPOINTS.md). A joint a layout builds from other points (the head from the ears,
 // the sternum from the shoulders) is flagged derived, with the reason.
 
@@ -18,7 +18,7 @@
 
 namespace ew {
 
-// Per joint, a displacement in the walker's canonical frame (SPEC §2), mm.
+// Per joint, a displacement in the walker's canonical frame (METHOD §2), mm.
 using JointOffsetsMm = std::array<std::array<double, 3>, kJointCount>;
 bool anyOffset(const JointOffsetsMm& offsets);
 
@@ -31,7 +31,7 @@ struct KeypointLayout {
   std::array<std::vector<std::vector<int>>, kJointCount> joints;
   std::array<std::string, kJointCount> derived;  // non-empty: how the joint is derived
   // Where the detector puts a joint relative to motion capture's joint centre, in the walker's
-  // canonical frame (SPEC §2: x right, y forward, z up), mm; zero where the two agree. Only
+  // canonical frame (METHOD §2: x right, y forward, z up), mm; zero where the two agree. Only
   // the hips have one in the shipped tables (docs/KEYPOINTS.md, "Detector hips").
   JointOffsetsMm detectorOffsetMm{};
   std::string detectorOffsetSource;  // where the offsets come from, for the user

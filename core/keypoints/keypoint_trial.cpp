@@ -300,7 +300,7 @@ void checkSeenJoints(KeypointTrial& t, const KeypointOptions& options) {
 // The 15 joints as their own layout, each its own point (a tracker's output).
 std::shared_ptr<const KeypointLayout> jointLayout() {
   auto l = std::make_shared<KeypointLayout>();
-  l->name = "15 joints (SPEC §1)";
+  l->name = "15 joints (docs/METHOD.md §1)";
   l->about = "the joints themselves, as a tracker follows them";
   for (int j = 0; j < kJointCount; ++j) {
     l->points.emplace_back(jointName(static_cast<Joint>(j)));

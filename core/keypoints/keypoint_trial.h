@@ -47,7 +47,7 @@ struct PersonTrack {
   std::vector<int> detection;         // its detection index in each of those frames
   double travelPx = 0.0;              // how far its centre moves from where it starts (max)
   double sizePx = 0.0;                // median height of its keypoints' bounding box
-  // Its 15 joints (u, v per joint, SPEC §1 order, NaN = missing), one row per entry of
+  // Its 15 joints (u, v per joint, METHOD §1 order, NaN = missing), one row per entry of
   // `frames`, built by the clip's layout: what the viewer draws of the people not chosen.
   Eigen::MatrixXd jointsPx;
 };
@@ -64,7 +64,7 @@ struct KeypointTrial {
   std::vector<PersonTrack> people;    // every track, longest first
   int chosen = 0;                     // index into people
   std::string chosenReason;
-  Eigen::MatrixXd jointsPx;           // frames x 30: u, v per joint (SPEC §1 order), NaN = missing
+  Eigen::MatrixXd jointsPx;           // frames x 30: u, v per joint (METHOD §1 order), NaN = missing
   // frames x 15: each joint's confidence, the least of the points it is made of (NaN where
   // missing); empty for a trial made otherwise (a tracker's, a planar TRC).
   Eigen::MatrixXd jointConfidence;
@@ -127,7 +127,7 @@ KeypointTrial readPlanarTrc(const std::filesystem::path& path, const KeypointOpt
 // The same on a TRC already read (core/io/trc_reader.h).
 KeypointTrial planarTrcTrial(const RawTrial& raw, const KeypointOptions& options = {});
 
-// A trial from 15 joints already in SPEC §1 order (a joint tracker's output, one person):
+// A trial from 15 joints already in METHOD §1 order (a joint tracker's output, one person):
 // a point whose confidence is below options.minConfidence is missing, as in a file. `file`
 // and `format` name the source in errors and captions; the rate is options.fps (required).
 // Throws Error(BadData) naming `file` as cleanKeypoints does when the walk's minimum joints

@@ -12,7 +12,7 @@
 namespace ew {
 
 struct OpenPosePerson {
-  Eigen::MatrixXd jointsPx;    // T × 30 (u, v per joint, SPEC §1 order), NaN = not detected
+  Eigen::MatrixXd jointsPx;    // T × 30 (u, v per joint, METHOD §1 order), NaN = not detected
   Eigen::MatrixXd confidence;  // T × 15 per joint (empty: 0.9 everywhere)
 };
 

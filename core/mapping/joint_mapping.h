@@ -1,5 +1,5 @@
 #pragma once
-// From a file's own points to the 15 joints of SPEC §1.
+// From a file's own points to the 15 joints of METHOD §1.
 
 #include "core/common/trial.h"
 
@@ -16,7 +16,7 @@ JointTrial mapMarkerSet(const RawTrial& raw);
 // Skeleton joint centres (BVH / ASF) -> 15 joints: CMU and Mixamo-style names.
 JointTrial mapSkeletonJoints(const RawTrial& raw);
 
-// SPEC §1 head rule, shared by every mapping that lacks head points: the head centre is
+// METHOD §1 head rule, shared by every mapping that lacks head points: the head centre is
 // placed on the pelvis->sternum axis, above the sternum, at kHeadFractionOfTrunk of the
 // pelvis-sternum distance. 0.30: in stature fractions (Drillis & Contini 1966; Winter 2009,
 // fig. 4.1) the neck base (mid C7 / jugular notch) is at ~0.83 H, the head centre (ear

@@ -24,7 +24,7 @@ namespace ew {
 
 inline constexpr int kJointMappingVersion = 1;
 
-// One entry per joint (SPEC §1 order): the labels whose mean is the joint; empty = absent.
+// One entry per joint (METHOD §1 order): the labels whose mean is the joint; empty = absent.
 struct JointMapping {
   std::array<std::vector<std::string>, kJointCount> joints;
 };

@@ -495,7 +495,7 @@ JointTrial applyMarkerSetTable(const MarkerSetTable& table, const TablePlan& pla
       out.positionsMm.block<1, 3>(f, 3 * index(j)) = evaluate(r, c).transpose();
     }
   }
-  // Warnings in joint order (SPEC §1), as the readers and tests list joints.
+  // Warnings in joint order (METHOD §1), as the readers and tests list joints.
   for (int j = 0; j < kJointCount; ++j) {
     const int k = plan.rule[static_cast<std::size_t>(j)];
     if (k >= 0)

@@ -28,7 +28,7 @@ enum class RuleOp {
   MidJoints,      // mean of `joints` built before
   LateralMedial,  // mid lateral/medial; without the medial marker, lateral shifted medially
   ShoulderDrop,   // acromion lowered along the trunk (Rab 2002), needs pelvis and sternum
-  HeadAboveSternum,  // SPEC §1 head rule from pelvis and sternum
+  HeadAboveSternum,  // METHOD §1 head rule from pelvis and sternum
   FunctionalCentre,  // SCoRE centre of two clusters: `markers` proximal, `distal` (3+ each)
   FunctionalHip,     // hip of `side` from pelvis cluster `markers`, thighs `distal` (this side)
                      // and `otherDistal`, the pair set `widthMm` apart (symmetricFunctionalHips)

@@ -1,5 +1,5 @@
 #pragma once
-// Skin-marker sets -> the 15 joints of SPEC §1. Entry point: mapMarkerSet (declared in
+// Skin-marker sets -> the 15 joints of METHOD §1. Entry point: mapMarkerSet (declared in
 // joint_mapping.h). The sets are data: assets/marker-sets/*.json, read by
 // core/mapping/marker_set_table.h, whose named rules use the formulas below. Among the
 // tables whose identifying labels the file has, the one that builds the most joints wins

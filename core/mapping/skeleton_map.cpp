@@ -1,4 +1,4 @@
-// Skeleton joint centres (BVH, ASF/AMC) -> the 15 joints of SPEC §1.
+// Skeleton joint centres (BVH, ASF/AMC) -> the 15 joints of METHOD §1.
 // The rules, and why each point was chosen, are in docs/JOINTS.md ("BVH (CMU, Mixamo)",
 // "ASF/AMC (CMU)"). Each skeleton convention is a table of rules; a rule is a list of
 // alternatives, each the mean of one or more of the file's points (names compared without

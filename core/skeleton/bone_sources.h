@@ -10,7 +10,7 @@
 //                       sideways, the pelvis the hips' midpoint) is set to 0.87 S, where a
 //                       standing adult's head joint is above the ankles (core/gait/body_size.h).
 //   a walker            the median length of each bone over one gait cycle of a Fourier
-//                       walker (SPEC §3): the eigenwalker's reconstruction of this walker, or
+//                       walker (METHOD §3): the eigenwalker's reconstruction of this walker, or
 //                       a model's mean walker for a population's proportions.
 //   scaled to stature   any lengths scaled by one factor so that the same chain is 0.87 S.
 //   reference frame     §4.1: one frame where the body is parallel to the image plane;
@@ -36,12 +36,12 @@ double standingChainMm(const BoneLengths& bones);
 BoneLengths boneLengthsFromZouTable2(double statureMm, const std::string& what);
 BoneLengths scaledToStature(const BoneLengths& bones, double statureMm, const std::string& what);
 
-// w: 225 (SPEC §3); omegaRadS > 0. 64 frames over one cycle. Throws Error(BadArgument)
+// w: 225 (METHOD §3); omegaRadS > 0. 64 frames over one cycle. Throws Error(BadArgument)
 // naming `what` for a w that is not 225 finite values or a bone of length 0.
 BoneLengths boneLengthsFromWalker(const Eigen::Ref<const Eigen::VectorXd>& w, double omegaRadS,
                                   const std::string& what);
 
-// frame: 30 values (u, v per joint, SPEC §1 order); `referenceBone` indexes kBones. Throws
+// frame: 30 values (u, v per joint, METHOD §1 order); `referenceBone` indexes kBones. Throws
 // Error(BadData) naming `what` and the bone for a joint not seen in the frame or a
 // reference bone of no image length, Error(BadArgument) for a length that is not positive.
 BoneLengths boneLengthsFromReferenceFrame(const Eigen::Ref<const Eigen::RowVectorXd>& frame, int referenceBone,

@@ -22,7 +22,7 @@ struct ScaleDepthFocal {
   double depthStepMm = 0.0;                             // |dz| between the outer segments
 };
 
-// frame: 30 values (u, v per joint, SPEC §1 order; pixels); the principal point in pixels;
+// frame: 30 values (u, v per joint, METHOD §1 order; pixels); the principal point in pixels;
 // chain: a, b, c, d. Throws Error(BadArgument) naming `what` for joints that are not a
 // chain of three bones, Error(BadData) naming `what` and the joint or bone for a joint not
 // seen, an outer segment of no image length, a middle bone that looks longer than it is

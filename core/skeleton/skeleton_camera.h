@@ -43,7 +43,7 @@ struct SkeletonCameraResult {
   int filledPoints = 0;                 // joint-frames not seen, interpolated over time
 };
 
-// jointsPx: T × 30 (u, v per joint, SPEC §1 order; NaN = not seen). A joint missing in
+// jointsPx: T × 30 (u, v per joint, METHOD §1 order; NaN = not seen). A joint missing in
 // some frames is interpolated over time (held at the ends). Throws Error(BadData) naming
 // `name` and the joint for a joint never seen, Error(BadArgument) for no frames or a bad rate.
 SkeletonCameraResult reconstructThroughCamera(const Eigen::Ref<const Eigen::MatrixXd>& jointsPx,

@@ -79,7 +79,7 @@ struct PinholeIntrinsics {
 
 // The rays of one frame's 30 pixel coordinates (u, v per joint).
 JointRays pinholeRays(const Eigen::Ref<const Eigen::RowVectorXd>& uvPx, const PinholeIntrinsics& camera);
-// The rays of an orthographic view (SPEC §5): u, v in mm (v up), in the view's frame
+// The rays of an orthographic view (METHOD §5): u, v in mm (v up), in the view's frame
 // (U along the image's horizontal, D the depth away from the camera, V up): origin
 // (u, 0, v), direction (0, 1, 0).
 JointRays orthographicRays(const Eigen::Ref<const Eigen::RowVectorXd>& uvMm);

@@ -41,7 +41,7 @@ Eigen::VectorXd localSnippet(const Eigen::Ref<const Eigen::MatrixXd>& frames, in
 Eigen::MatrixXd placeSnippet(const Eigen::Ref<const Eigen::VectorXd>& snippet, int count,
                              const SnippetPlacement& placement);
 
-// A 3D trial the prior learns from: canonical-frame joints (SPEC §2), mm.
+// A 3D trial the prior learns from: canonical-frame joints (METHOD §2), mm.
 struct SnippetTrainingTrial {
   std::string subject;
   std::string name;           // file or walker id, for messages

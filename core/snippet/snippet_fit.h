@@ -3,7 +3,7 @@
 // eq. 2): maximise over the snippet x and the rendering (view angle α about the vertical,
 // scale s, image shift t)
 //   L(x, α, s, t) = log N(y; s C(α) x + t, ν I) + log p(x)
-// with p the snippet prior (snippet_prior.h), C(α) SPEC §5's orthographic view of every
+// with p the snippet prior (snippet_prior.h), C(α) METHOD §5's orthographic view of every
 // frame (u = x cos α + y sin α, v = z) and ν the image noise variance. EM over the mixture:
 //   E  responsibilities r_j ∝ π_j N(x; μ_j, C_j) at the current x;
 //   M  x maximising log N(y | x) + Σ_j r_j log N(x; μ_j, C_j): for one cluster the

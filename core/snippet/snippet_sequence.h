@@ -13,7 +13,7 @@
 // overlapping snippets, (b) a stance foot does not slide: the lower ankle, while its image
 // speed is below 20 % of the clip's 95th-percentile ankle speed, keeps its depth from one
 // frame to the next, and (c) Σ δ_k = 0, a small ridge on γ. The output is turned back
-// from the view by the clip's angle α̂ into the walker's frame of SPEC §2 (x right,
+// from the view by the clip's angle α̂ into the walker's frame of METHOD §2 (x right,
 // y forward, z up), mm.
 
 #include <Eigen/Core>

@@ -50,7 +50,7 @@ std::vector<SynthWalker> generatePopulation(const PopulationOptions& options = {
 // The attribute names, in the order the manifest writes them.
 std::vector<std::string> synthAttributeNames();
 
-// The population as a Dataset (SPEC §4) in memory: each trial through
+// The population as a Dataset (METHOD §4) in memory: each trial through
 // prepareWalkingTrial, subject = walker id, source "synthetic", attributes as text.
 // What the viewer opens when given no data: makeWalkers(syntheticDataset()) builds the model.
 Dataset syntheticDataset(const PopulationOptions& options = {});

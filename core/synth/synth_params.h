@@ -10,7 +10,7 @@
 
 namespace ew {
 
-// Joint-centre geometry (SPEC §1 joints) plus the foot, which the kinematics needs for
+// Joint-centre geometry (METHOD §1 joints) plus the foot, which the kinematics needs for
 // floor contact and the BVH writer for the toes.
 struct BodyDimensions {
   double heightMm = 1750.0;

@@ -1,7 +1,7 @@
 #pragma once
 // Forward kinematics of one synthetic walker (docs/SYNTHETIC.md, "Kinematics"):
 // joint angles over the gait cycle (normative curves shaped by SynthParams) → 15 joint
-// centres plus the feet, in the canonical frame of SPEC §2 (mm, x right, y forward, z up).
+// centres plus the feet, in the canonical frame of METHOD §2 (mm, x right, y forward, z up).
 //
 // The trunk and legs are chains of rigid segments, so every bone has a constant length.
 // The pelvis is placed from the legs, not prescribed:
@@ -32,7 +32,7 @@ struct SimulationOptions {
 };
 
 struct SynthTrajectories {
-  Eigen::MatrixXd jointsMm;  // frames × 45, joint-major x,y,z (SPEC §1 order)
+  Eigen::MatrixXd jointsMm;  // frames × 45, joint-major x,y,z (METHOD §1 order)
   Eigen::MatrixXd toesMm;    // frames × 6: right toe tip x,y,z, left toe tip x,y,z
   double rateHz = 0.0;
   double strideLengthMm = 0.0;  // produced by the legs (≈ the target after solving)

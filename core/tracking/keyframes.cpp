@@ -47,7 +47,7 @@ Keyframe parseKeyframe(const json& entry, const std::string& name, std::size_t p
     const auto joint = jointFromName(jointText);
     if (!joint)
       throwMalformed(name, where,
-                     "unknown joint \"" + jointText + "\" (SPEC §1 names: head, sternum, …)");
+                     "unknown joint \"" + jointText + "\" (docs/METHOD.md §1 names: head, sternum, …)");
     if (value.is_null()) continue;
     if (!value.is_array() || value.size() != 2)
       throwMalformed(name, where + " " + jointText, "is not an [x, y] pair");

@@ -15,7 +15,7 @@ namespace ew {
 
 struct Keyframe {
   int frame = 0;
-  Eigen::RowVectorXd jointsPx;  // 30: x, y per joint (SPEC §1 order), NaN = not marked
+  Eigen::RowVectorXd jointsPx;  // 30: x, y per joint (METHOD §1 order), NaN = not marked
 };
 
 struct Keyframes {

@@ -29,7 +29,7 @@ TEST(DefaultRealModel, LoadsOnceAndIsTheModelOfThe24SharedWalkers) {
   EXPECT_EQ(m.mean.size(), 225);
   EXPECT_GE(m.componentCount(), 2);
   EXPECT_LT(m.componentCount(), m.walkerCount());
-  EXPECT_GE(m.explainedVariance(), 0.95);  // built with the SPEC's 95 % default
+  EXPECT_GE(m.explainedVariance(), 0.95);  // built with METHOD §4's 95 % default
   EXPECT_TRUE(m.mean.allFinite() && m.eigenwalkers.allFinite());
   EXPECT_EQ(defaultRealModelName(), "24 real walkers (default)");
   // Stride frequencies of adults walking at their own pace: 0.6–1.4 Hz (slowest here 0.66).

@@ -1,4 +1,4 @@
-// The engine on the shared real walkers (SPEC §8 experiments 3–4, reduced): leave-one-
+// The engine on the shared real walkers (METHOD §8 experiments 3–4, reduced): leave-one-
 // subject-out reconstruction at 0°, 30°, 90° (MAP vs LSQ) and unknown-view recovery.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// SPEC §3: the Fourier fit recovers ω, φ and w from synthetic 2-harmonic walkers.
+// METHOD §3: the Fourier fit recovers ω, φ and w from synthetic 2-harmonic walkers.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -29,7 +29,7 @@ std::string readText(const fs::path& file) {
   return s.str();
 }
 
-// Joints (SPEC §1 indices) blanked in every frame; `dims` columns per joint.
+// Joints (METHOD §1 indices) blanked in every frame; `dims` columns per joint.
 Eigen::MatrixXd blank(Eigen::MatrixXd frames, std::initializer_list<Joint> joints) {
   const auto dims = static_cast<int>(frames.cols()) / kJointCount;
   for (Joint j : joints) frames.middleCols(dims * index(j), dims).setConstant(kNaN);

@@ -1,4 +1,4 @@
-// SPEC §7: depth errors (closed form over one cycle and against frames), MPJPE, view error.
+// METHOD §7: depth errors (closed form over one cycle and against frames), MPJPE, view error.
 #include <gtest/gtest.h>
 
 #include <numbers>

@@ -1,4 +1,4 @@
-// SPEC §4: the eigenwalker model (PCA of Fourier vectors) and leave-one-subject-out.
+// METHOD §4: the eigenwalker model (PCA of Fourier vectors) and leave-one-subject-out.
 #include <gtest/gtest.h>
 
 #include "core/common/errors.h"
@@ -40,7 +40,7 @@ TEST(Model, MeanEigenwalkersEigenvaluesAndCoefficients) {
                 .cwiseAbs().maxCoeff(), 1e-12);
   ASSERT_EQ(m.spectrum.size(), 23);
   for (int i = 1; i < m.spectrum.size(); ++i) EXPECT_LE(m.spectrum(i), m.spectrum(i - 1));
-  // λ_n is the variance of the walkers' coefficients on e_n (SPEC: S_n² / (R − 1)).
+  // λ_n is the variance of the walkers' coefficients on e_n (METHOD §4: S_n² / (R − 1)).
   for (int i = 0; i < n; ++i) {
     EXPECT_NEAR(m.coefficients.row(i).squaredNorm() / 23.0, m.eigenvalues(i),
                 1e-9 * m.eigenvalues(0));

@@ -1,4 +1,4 @@
-// SPEC §5: orthographic projection at a horizontal view angle, and depth.
+// METHOD §5: orthographic projection at a horizontal view angle, and depth.
 #include <gtest/gtest.h>
 
 #include "core/common/errors.h"

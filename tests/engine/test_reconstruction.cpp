@@ -1,4 +1,4 @@
-// SPEC §6: LSQ and MAP reconstruction at a known view, and the unknown-view search.
+// METHOD §6: LSQ and MAP reconstruction at a known view, and the unknown-view search.
 #include <gtest/gtest.h>
 
 #include <Eigen/Cholesky>

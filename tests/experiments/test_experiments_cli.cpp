@@ -165,7 +165,7 @@ TEST_F(ExperimentsCli, BuildThenReconstructA3DTrialAndIts2DView) {
   EXPECT_EQ(j["angle_deg"], 30.0);
   EXPECT_TRUE(j["held_out"].is_null());
   EXPECT_LT(j["errors"]["mpjpe_mm"].get<double>(), 10.0) << known.out;
-  // By default its subject is left out (SPEC §4), as the viewer does: the model of the other
+  // By default its subject is left out (METHOD §4), as the viewer does: the model of the other
   // four reconstructs it, less closely.
   const CliResult heldOut = runCli("reconstruct --model " + q(model) + " --input " + q(trial) +
                                        " --project-angle 30 --angle 30 --method lsq --json --out " + q(dir_ / "rec_loo.csv"),

@@ -21,7 +21,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 double rad(double deg) { return deg * kPi / 180.0; }
 
-// SPEC §2 frame: x right, y forward, z up.
+// METHOD §2 frame: x right, y forward, z up.
 const Eigen::Vector3d kUp(0, 0, 1);
 
 void setJoint(Eigen::MatrixXd& f, Joint j, const Eigen::Vector3d& p) { f.block<1, 3>(0, 3 * index(j)) = p.transpose(); }

@@ -75,7 +75,7 @@ TEST_F(GuiAnalysis, DrawsTheCurvesAndExportsThemAsCsv) {
     ++rows;
   }
   EXPECT_EQ(rows, 37);
-  // The prior helps on average (SPEC §6, Zhang & Troje 2007 Fig. 4).
+  // The prior helps on average (METHOD §6, Zhang & Troje 2007 Fig. 4).
   EXPECT_LT(mapMean, lsqMean);
   std::getline(in, line);
   EXPECT_EQ(line.rfind("sigma2_mm2,method", 0), 0u) << line;

@@ -107,7 +107,7 @@ TEST_F(GuiDetect, ACorrectedJointRedoesTheTrackAroundItAndUndoes) {
   EW_REQUIRE_POSE_MODELS();
   const fs::path video = sharedDataDir() / "video" / "sports2d-demo" / "demo.mp4";
   constexpr int kFrame = 60;
-  constexpr int kKnee = 10;  // r_knee (SPEC §1 order)
+  constexpr int kKnee = 10;  // r_knee (METHOD §1 order)
   ASSERT_EQ(run(json::array({{{"detect_video", video.string()}},
                              {{"video_frame", kFrame}},
                              {{"export_state", path("found.json")}}}))

@@ -189,7 +189,7 @@ Eigen::MatrixXd inPlace(const Eigen::MatrixXd& frames) {
   return out;
 }
 
-// Through the engines' interface: an orthographic view in mm (SPEC §5) of the rigid walker.
+// Through the engines' interface: an orthographic view in mm (METHOD §5) of the rigid walker.
 TEST(SkeletonEngine, AnOrthographicViewIsReconstructedAndItsAngleFound) {
   const RigidWalk& w = rigidWalk();
   const Eigen::MatrixXd frames = inPlace(w.framesMm);

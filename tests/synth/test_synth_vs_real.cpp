@@ -51,7 +51,7 @@ constexpr Segment kSegments[] = {
     {"sternum-head", Joint::Sternum, Joint::Head},
 };
 constexpr double kAngles[] = {0.0, 45.0, 90.0};
-constexpr double kSigma2Mm2 = 70.0;  // SPEC §6 default (the paper's optimum)
+constexpr double kSigma2Mm2 = 70.0;  // METHOD §6 default (the paper's optimum)
 
 struct PopulationStats {
   int walkers = 0;
@@ -106,7 +106,7 @@ void describeModel(const std::vector<Walker>& walkers, PopulationStats& s) {
   s.meanPostureShare = p0 / all;
 }
 
-// Leave-one-subject-out known-view reconstruction (SPEC §8.3), E_a and E_r per angle.
+// Leave-one-subject-out known-view reconstruction (METHOD §8.3), E_a and E_r per angle.
 void describeLoo(const std::vector<Walker>& walkers, PopulationStats& s) {
   std::vector<std::vector<double>> lsq(std::size(kAngles)), map(std::size(kAngles)),
       mapRel(std::size(kAngles));

@@ -56,7 +56,7 @@ TEST(TrackStudyCli, FilmsTracksAndFitsAHeldOutWalker) {
   EXPECT_NEAR(std::stod(row[5]), 2.0, 1.0);   // median px
   EXPECT_NEAR(std::stod(row[6]), 11.2, 1.0);  // p95 px
   EXPECT_NEAR(std::stod(row[9]), 1.04, 0.05);  // MPJPE ratio
-  EXPECT_EQ(std::stod(row[10]), 180.0);         // filmed from the front (SPEC §5)
+  EXPECT_EQ(std::stod(row[10]), 180.0);         // filmed from the front (METHOD §5)
   EXPECT_LT(std::abs(std::remainder(std::stod(row[12]) - 180.0, 360.0)), 10.0);  // the track's fit
   EXPECT_EQ(row[13], "0");                      // the p95 misses the bar without the loop
   fs::remove_all(dir);

@@ -81,7 +81,7 @@ struct ReconDisplay {
   Eigen::VectorXd kSd;           // coefficients in SD units (N)
   Eigen::VectorXd w;             // 225, model synthesis w̄ + E k
   Eigen::VectorXd reprojected;   // C(α_used) w (150)
-  DepthErrors errors;            // at the true α (SPEC §7), all 15 joints
+  DepthErrors errors;            // at the true α (METHOD §7), all 15 joints
   Eigen::VectorXd depthRmsMm;    // √E_abs(j) per joint, mm
   // The headline errors, over the joints the trial measured (all 15 unless a marker set
   // lacked some), as `reconstruct` reports them: a model-estimated joint has no truth.
@@ -218,7 +218,7 @@ class Derived {
 };
 
 // Pose helpers: w (225 or 150) evaluated at a gait phase (0 … 1); all walkers share the
-// phase origin of SPEC §3, so phase p is the same moment of the cycle for everyone.
+// phase origin of METHOD §3, so phase p is the same moment of the cycle for everyone.
 Eigen::VectorXd frameAtPhase(const Eigen::VectorXd& w, double phase01);
 Eigen::MatrixXd trailOverCycle(const Eigen::VectorXd& w, int samples);
 

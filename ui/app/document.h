@@ -27,11 +27,11 @@ namespace ew::ui {
 enum class Mode { Reconstruct, Explore, Clip };
 
 struct ReconstructionSettings {
-  double alphaDeg = 30.0;        // true view angle of the 2D input (SPEC §5)
+  double alphaDeg = 30.0;        // true view angle of the 2D input (METHOD §5)
   Estimator estimator = Estimator::Map;
   double sigma2Mm2 = 70.0;       // MAP σ²
   int components = 0;            // N; 0 = the smallest N reaching 95 % of the variance
-  bool unknownAngle = false;     // estimate α instead of using it (SPEC §6)
+  bool unknownAngle = false;     // estimate α instead of using it (METHOD §6)
   // Which engine reconstructs (core/engines/engine.h); the estimator, σ² and N are the
   // eigenwalker's own settings.
   EngineKind engine = EngineKind::Eigenwalker;

@@ -72,7 +72,7 @@ struct Exports {
 };
 
 // The displayed walker in the time domain: the reconstruction (edits included) in
-// reconstruct mode, the synthesised walker in explore mode. T × 45 (SPEC §1 order, mm).
+// reconstruct mode, the synthesised walker in explore mode. T × 45 (METHOD §1 order, mm).
 struct WalkerMotion {
   Eigen::MatrixXd framesX45;
   double rateHz = 120.0;

@@ -4,7 +4,7 @@
 // beside the loaded population's mean ± SD. GL-free; the panel draws it
 // (ui/panels/gait_panel.h), the export writes it.
 //
-// Every walker the viewer holds is a Fourier walker (SPEC §3: two harmonics, one cycle), so
+// Every walker the viewer holds is a Fourier walker (METHOD §3: two harmonics, one cycle), so
 // each is measured the same way: walked in place for kReportCycles cycles at kReportRateHz,
 // events from its kinematics. The motion capture's side and the population are given their
 // measured progression speed; a reconstruction has none, so its speed and footprints come from

@@ -3,7 +3,7 @@
 // holds one model source — the loaded population, the default model of real walkers, or an
 // opened .ewm — and every walker, a population member or a trial the user opened, is
 // reconstructed with it. A walker the model has seen is reconstructed with the model
-// without its subject (SPEC §4), as population members always were.
+// without its subject (METHOD §4), as population members always were.
 
 #include <filesystem>
 #include <memory>

@@ -66,7 +66,7 @@ void completeTrials(Dataset& dataset, const EigenwalkerModel* model,
   }
 }
 
-// Walkers and their facts from a loaded dataset (SPEC §3-4: fit, average per subject).
+// Walkers and their facts from a loaded dataset (METHOD §3-4: fit, average per subject).
 Population populationFromDataset(Dataset dataset, std::string label, const LoadProgress& progress,
                                  int minWalkers, const EigenwalkerModel* completion = nullptr) {
   Population p;

@@ -47,7 +47,7 @@ struct TrackedVideo {
 };
 
 // The order the guided marking asks for the joints: down the trunk, then each limb from
-// the body outwards (SPEC §1 names).
+// the body outwards (METHOD §1 names).
 const std::vector<Joint>& markingOrder();
 
 // The 2D view's largest magnification of a video: a 1080p frame's pixel about 8 screen pixels

@@ -14,7 +14,7 @@ inline std::string tiltText(double elevationDeg) {
   return s;
 }
 
-// The eye's height over the walker's canonical z = 0, which is her ankles' level (SPEC §2:
+// The eye's height over the walker's canonical z = 0, which is her ankles' level (METHOD §2:
 // the 5th percentile of the lower ankle), not the floor: "1.20 m above the ankles".
 inline std::string heightOverAnklesText(double heightMm) {
   char s[48];

@@ -1,5 +1,5 @@
 #pragma once
-// The metrics strip's values (SPEC §7: E_a, E_r, MPJPE, the 2D residual, α or est. α; a
+// The metrics strip's values (METHOD §7: E_a, E_r, MPJPE, the 2D residual, α or est. α; a
 // keypoint clip's walk in metres and its reprojection error) as text, for the strip and for
 // the captions of an exported video.
 

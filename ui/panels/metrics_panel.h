@@ -1,5 +1,5 @@
 #pragma once
-// The metrics strip (SPEC §7): E_a, E_r, MPJPE, the 2D residual, α and est. α with its error.
+// The metrics strip (METHOD §7): E_a, E_r, MPJPE, the 2D residual, α and est. α with its error.
 
 #include "ui/panels/panel_window.h"
 

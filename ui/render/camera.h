@@ -1,7 +1,7 @@
 #pragma once
 // Cameras of the two views. The 3D view orbits a target (yaw about the vertical axis,
 // pitch above the floor, distance); the 2D view is an orthographic image-plane camera
-// (u to the right, v up, both mm) — exactly the coordinates of SPEC §5.
+// (u to the right, v up, both mm) — exactly the coordinates of METHOD §5.
 
 #include <glm/glm.hpp>
 

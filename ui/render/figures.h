@@ -42,7 +42,7 @@ void addPolyline2(Scene& scene, std::span<const glm::vec2> points, const glm::ve
 void addErrorLines(Scene& scene, const Pose3& from, const Pose3& to, const glm::vec4& colour,
                    float widthPx);
 
-// A camera on the floor at `radiusMm`, looking at the walker from view angle α (SPEC §5:
+// A camera on the floor at `radiusMm`, looking at the walker from view angle α (METHOD §5:
 // it sees u = x cos α + y sin α to the right), with a dashed sight line.
 void addCameraGlyph(Scene& scene, double alphaDeg, float radiusMm, const glm::vec4& colour,
                     bool dashed);
