@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "core/camera/camera_knowledge.h"
 #include "core/camera/camera_reconstruction.h"
 #include "core/engine/default_model.h"
 #include "core/keypoints/image_gait.h"
@@ -43,7 +44,7 @@ BENCHMARK(BM_ReadAndCleanOpenPose300)->Unit(benchmark::kMillisecond);
 
 void BM_UnknownCameraReconstruction300(benchmark::State& state) {
   const ew::KeypointTrial t = ew::readKeypointTrial(clip(), options());
-  ew::CameraFitOptions o;
+  ew::CameraFitOptions o = ew::cameraFitOptions(ew::CameraKnowledge{});
   o.strideHzHint = ew::imageGaitCycles(t).strideHz;
   for (auto _ : state) benchmark::DoNotOptimize(ew::reconstructUnknownCamera(ew::defaultRealModel(), t.jointsPx, t.rateHz, o));
 }
@@ -53,7 +54,7 @@ BENCHMARK(BM_UnknownCameraReconstruction300)->Unit(benchmark::kMillisecond);
 void BM_OpenPoseClipToWalkerAndCamera300(benchmark::State& state) {
   for (auto _ : state) {
     const ew::KeypointTrial t = ew::readKeypointTrial(clip(), options());
-    ew::CameraFitOptions o;
+    ew::CameraFitOptions o = ew::cameraFitOptions(ew::CameraKnowledge{});
     o.strideHzHint = ew::imageGaitCycles(t).strideHz;
     benchmark::DoNotOptimize(ew::reconstructUnknownCamera(ew::defaultRealModel(), t.jointsPx, t.rateHz, o));
   }

@@ -1,5 +1,6 @@
 #include "video/model_loop.h"
 
+#include "core/engines/request.h"
 #include "core/camera/clip_reconstruction.h"
 #include "core/camera/self_occlusion.h"
 #include "core/common/errors.h"
@@ -24,10 +25,12 @@ ModelLoopResult trackWithModel(VideoSource& video, const Keyframes& keyframes,
     ++done;
     ClipReconstruction fit;
     try {
-      KeypointTrial trial = keypointTrialOf(result.track, video.info().file);
-      CameraFitOptions fitOptions;
-      holdTheTrunksStride(trial, fitOptions);
-      fit = reconstructKeypointTrial(model, std::move(trial), fitOptions);
+      // The track through the unknown camera, its trunk's bob holding the stride.
+      CameraView view;
+      view.keypoints = keypointTrialOf(result.track, video.info().file);
+      view.strideFromTrunk = true;
+      const EigenwalkerEngine engine{model, CameraFitOptions().estimator, {}};
+      fit = std::move(reconstruct(engine, {std::move(view)}).camera.eigenwalker->last);
     } catch (const Error& e) {
       result.stoppedBecause = e.what();
       break;

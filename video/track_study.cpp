@@ -7,6 +7,7 @@
 #include <numbers>
 #include <unistd.h>
 
+#include "core/engines/request.h"
 #include "core/camera/clip_reconstruction.h"
 #include "core/common/errors.h"
 #include "core/common/nan.h"
@@ -95,10 +96,11 @@ FilmedHeldOutWalker::Fit FilmedHeldOutWalker::fitToTrack(const JointTrack& track
 }
 
 FilmedHeldOutWalker::Fit FilmedHeldOutWalker::fitOf(const KeypointTrial& joints, bool tracked) const {
-  CameraFitOptions o;
-  o.estimator = {Estimator::Map, options_.sigma2Mm2};
-  if (tracked) holdTheTrunksStride(joints, o);
-  const ClipReconstruction c = reconstructKeypointTrial(*model_, joints, o);
+  CameraView view;
+  view.keypoints = joints;
+  view.strideFromTrunk = tracked;
+  const EigenwalkerEngine engine{*model_, {Estimator::Map, options_.sigma2Mm2}, {}};
+  const ClipReconstruction c = std::move(reconstruct(engine, {std::move(view)}).camera.eigenwalker->last);
   const Eigen::MatrixXd walk = synthesizeFrames(c.fit.w, c.fit.omegaRadS, c.fit.phaseRad, times_);
   return {mpjpeWithoutTranslation(walk, inPlace_), c.fit.camera.alphaDeg};
 }

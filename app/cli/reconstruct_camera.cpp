@@ -1,6 +1,7 @@
 #include "app/cli/reconstruct_camera.h"
 #include "app/cli/video_input.h"
 #include "core/camera/detection_loop.h"
+#include "core/engines/request.h"
 #include "core/tracking/corrected_track.h"
 #include "core/tracking/keyframes.h"
 
@@ -11,7 +12,7 @@
 #include <sstream>
 
 #include "app/cli/video_beside_keypoints.h"
-#include "core/camera/calibration_file.h"
+#include "core/camera/camera_knowledge.h"
 #include "core/camera/clip_reconstruction.h"
 #include "core/camera/lens_distortion.h"
 #include "core/common/errors.h"
@@ -49,7 +50,7 @@ json offsetsJson(const JointOffsetsMm& offsets) {
   return out;
 }
 
-json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fit) {
+json reportJson(const CameraArgs& a, const CameraKnowledge& camera, const KeypointTrial& t, const CameraFit& fit) {
   const WalkCamera& c = fit.camera;
   const bool pinhole = c.model == CameraModel::Pinhole;
   std::vector<std::string> unseen;
@@ -65,12 +66,11 @@ json reportJson(const CameraArgs& a, const KeypointTrial& t, const CameraFit& fi
           {"output", a.out},
           {"camera_model", pinhole ? "pinhole" : "scaled orthographic"},
           {"alpha_deg", c.alphaDeg},
-          {"alpha_source", a.alphaDeg ? "given (--angle)" : "estimated"},
+          {"alpha_source", camera.alphaSource},
           {"elevation_deg", c.elevationDeg},
-          {"elevation_source", a.elevationDeg ? "given (--elevation)" : "estimated"},
+          {"elevation_source", camera.elevationSource},
           {"focal_px", pinhole ? json(c.focalPx) : json(nullptr)},
-          {"focal_source",
-           pinhole ? json(a.focalPx ? "given (--focal-px)" : "estimated") : json(nullptr)},
+          {"focal_source", pinhole ? json(camera.focalSource) : json(nullptr)},
           {"distance_m", pinhole ? json(c.distanceMm / 1000.0) : json(nullptr)},
           {"px_per_mm", pinhole ? json(nullptr) : json(c.pxPerMm)},
           {"image_centre_px", {c.cxPx, c.cyPx}},
@@ -125,67 +125,37 @@ void printSummary(const json& r) {
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
 }
 
-// The calibration file's camera (--camera), if any.
-std::optional<CalibratedCamera> calibrationOf(const CameraArgs& a) {
-  if (a.camera.empty()) return std::nullopt;
-  if (a.focalPx)
-    throw Error(ErrorKind::BadArgument, "--camera", "", "give --focal-px or --camera, not both");
-  return readCalibratedCamera(
-      a.camera, a.cameraName.empty() ? std::nullopt : std::optional<std::string>(a.cameraName));
+// What the command line says of the camera (core/camera/camera_knowledge.h).
+CameraKnowledge cameraKnowledgeOf(const CameraArgs& a) {
+  CameraGivens g;
+  g.focalPx = a.focalPx;
+  g.calibrationFile = a.camera;
+  if (!a.cameraName.empty()) g.calibrationCamera = a.cameraName;
+  if (!a.imageSize.empty()) g.imageSize = parseKeypointImageSize(a.imageSize, "--image-size");
+  g.alphaDeg = a.alphaDeg;
+  g.elevationDeg = a.elevationDeg;
+  g.orthographic = a.orthographic;
+  CameraKnowledge k = resolveCameraKnowledge(g);
+  if (k.calibration)
+    std::cerr << "camera " << k.calibration->name << " of " << a.camera << ": focal " << *k.focalPx << " px\n";
+  return k;
 }
 
-// The focal length the user knows: --focal-px, or a calibration file's camera (which also
-// gives a MediaPipe CSV's image size). Says what it took.
-std::optional<double> knownFocal(const CameraArgs& a, const std::optional<CalibratedCamera>& c,
-                                 KeypointOptions& k, std::string& source) {
-  if (!c) {
-    source = a.focalPx ? "given (--focal-px)" : "estimated";
-    return a.focalPx;
-  }
-  source = "calibration file (" + c->name + ")";
-  if (!k.imageSize && c->widthPx > 0)
-    k.imageSize = KeypointImageSize{static_cast<int>(c->widthPx), static_cast<int>(c->heightPx)};
-  std::cerr << "camera " << c->name << " of " << a.camera << ": focal " << c->focalPx() << " px\n";
-  return c->focalPx();
+EstimatorOptions estimatorOf(const EigenwalkerModel& model, const CameraArgs& a) {
+  return {a.method == "map" ? Estimator::Map : Estimator::Lsq, a.sigma2Mm2.value_or(defaultSigma2Mm2(model))};
 }
 
 // A calibrated camera's lens distortion taken out of the keypoints (core/camera/lens_distortion.h).
-json undistorted(const CameraArgs& a, const std::optional<CalibratedCamera>& c, KeypointTrial& t) {
-  if (!c || !hasDistortion(*c)) return nullptr;
-  const int lost = undistortTrial(*c, t);
-  std::cerr << "keypoints undistorted with " << a.camera << " [" << c->table << "] (k1 "
-            << c->distortions[0] << ", k2 " << c->distortions[1] << ", p1 " << c->distortions[2]
-            << ", p2 " << c->distortions[3] << ")";
-  if (lost > 0) std::cerr << "; " << lost << " points outside the calibrated field dropped";
+json undistorted(const CameraArgs& a, const CameraKnowledge& camera, KeypointTrial& t) {
+  const std::optional<int> lost = undistortKeypoints(camera, t);
+  if (!lost) return nullptr;
+  const CalibratedCamera& c = *camera.calibration;
+  std::cerr << "keypoints undistorted with " << a.camera << " [" << c.table << "] (k1 "
+            << c.distortions[0] << ", k2 " << c.distortions[1] << ", p1 " << c.distortions[2]
+            << ", p2 " << c.distortions[3] << ")";
+  if (*lost > 0) std::cerr << "; " << *lost << " points outside the calibrated field dropped";
   std::cerr << "\n";
-  return {{"k1_k2_p1_p2", c->distortions}, {"points_dropped", lost}};
-}
-
-// The fit's options from the command line (the focal length's source said in `focalSource`).
-CameraFitOptions fitOptionsOf(const EigenwalkerModel& model, const CameraArgs& a,
-                              const std::optional<CalibratedCamera>& calibration,
-                              KeypointOptions& k, std::string& focalSource) {
-  CameraFitOptions o;
-  o.estimator = {a.method == "map" ? Estimator::Map : Estimator::Lsq,
-                 a.sigma2Mm2.value_or(defaultSigma2Mm2(model))};
-  o.focalPx = knownFocal(a, calibration, k, focalSource);
-  o.estimateFocal = !a.orthographic;
-  o.alphaDeg = a.alphaDeg;
-  o.elevationDeg = a.elevationDeg;
-  o.file = a.input;
-  if (calibration && calibration->widthPx > 0 && calibration->heightPx > 0) {
-    o.imageSizePx = Eigen::Vector2d(calibration->widthPx, calibration->heightPx);
-    o.principalPointPx = Eigen::Vector2d(calibration->cxPx, calibration->cyPx);
-  }
-  return o;
-}
-
-// Where the fit expected the principal point, for the report.
-std::string principalPointPrior(const CameraFitOptions& o, const KeypointTrial& t) {
-  if (!o.focalPx && !o.estimateFocal) return "none (scaled orthography has no principal point)";
-  if (o.principalPointPx) return "the calibration's";
-  if (o.imageSizePx || t.imageSize) return "the image's centre";
-  return "none (the image's size unknown: --image-size gives it, or a video beside the keypoints)";
+  return {{"k1_k2_p1_p2", c.distortions}, {"points_dropped", *lost}};
 }
 
 // The keypoints corrected by hand (a keyframe file): the track redone around each correction
@@ -214,12 +184,16 @@ json modelLoopJson(const DetectionLoop& loop, const DetectionLoopOptions& o) {
                       {"stature_m", loop.first.fit.statureMm / 1000.0}}}};
 }
 
+// The eigenwalker through the camera (reconstruct(engine, request), core/engines/request.h),
+// written and reported.
 int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
-                 const CameraFitOptions& o, const std::string& focalSource, const json& lens,
-                 const json& imageSizeFrom = nullptr) {
+                 const CameraKnowledge& camera, const json& lens, const json& imageSizeFrom = nullptr) {
   DetectionLoopOptions loopOptions;
   loopOptions.rounds = modelLoopRounds(a);
-  const DetectionLoop loop = reconstructWithDetectionLoop(model, keypoints, o, loopOptions);
+  const CameraFitOptions o = cameraFitOptions(camera, estimatorOf(model, a), a.input);
+  CameraView view{std::move(keypoints), camera, loopOptions.rounds, a.strideFromTrunk, {}, a.input};
+  const ReconstructionResult r = reconstruct(EigenwalkerEngine{model, o.estimator, {}}, {std::move(view)});
+  const DetectionLoop& loop = *r.camera.eigenwalker;
   const ClipReconstruction& clip = loop.last;
   const KeypointTrial& t = clip.trial;
   const CameraFit& fit = clip.fit;
@@ -229,14 +203,13 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
        << fit.camera.alphaDeg << " deg, elevation " << fit.camera.elevationDeg << " deg), model "
        << a.modelName;
   writeJointTrajectories(a.out, frames, t.rateHz, {what.str()});
-  json report = reportJson(a, t, fit);
+  json report = reportJson(a, camera, t, fit);
   json residuals = json::object();
   for (int j = 0; j < kJointCount; ++j)
     if (std::isfinite(clip.residualRmsPx[static_cast<std::size_t>(j)]))
       residuals[std::string(jointName(static_cast<Joint>(j)))] = clip.residualRmsPx[static_cast<std::size_t>(j)];
   report["residual_rms_px_per_joint"] = residuals;
   report["model_loop"] = modelLoopJson(loop, loopOptions);
-  if (report["focal_source"].is_string()) report["focal_source"] = focalSource;
   report["lens_undistorted"] = lens;
   report["stride_source"] = clip.strideSource;
   report["principal_point_prior"] = principalPointPrior(o, t);
@@ -252,34 +225,27 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
 }  // namespace
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
+  const CameraKnowledge camera = cameraKnowledgeOf(a);
   KeypointOptions k;
   if (!a.layout.empty()) k.layout = a.layout;
   if (!a.mapping.empty()) k.mappingFile = a.mapping;
-  if (!a.imageSize.empty()) k.imageSize = parseKeypointImageSize(a.imageSize, "--image-size");
+  k.imageSize = camera.imageSize;
   k.fps = a.fps;
   k.detectorOffsets = a.detectorOffsets;
   if (a.person) k.person = *a.person - 1;
-  std::string focalSource;
-  const std::optional<CalibratedCamera> calibration = calibrationOf(a);
-  const CameraFitOptions o = fitOptionsOf(model, a, calibration, k, focalSource);
-  const bool fromCalibration = a.imageSize.empty() && k.imageSize;
   // A video is its own: the built-in detector finds the walker's keypoints in it.
   if (!isVideoFile(a.input)) takeTheVideoBeside(a.input, k);
   KeypointTrial keypoints = keypointTrialOf(a.input, k, {a.detectModel});
   if (!a.corrections.empty()) applyCorrections(a.corrections, keypoints);
-  const json imageSizeFrom = fromCalibration ? "the calibration file (" + a.camera + ")" : keypoints.imageSizeSource;
-  const json lens = undistorted(a, calibration, keypoints);
-  return fitAndReport(model, a, std::move(keypoints), o, focalSource, lens, imageSizeFrom);
+  const json imageSizeFrom = camera.imageSizeFromCalibration ? json(camera.imageSizeSource) : json(keypoints.imageSizeSource);
+  const json lens = undistorted(a, camera, keypoints);
+  return fitAndReport(model, a, std::move(keypoints), camera, lens, imageSizeFrom);
 }
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial joints) {
-  KeypointOptions k;
-  std::string focalSource;
-  const std::optional<CalibratedCamera> calibration = calibrationOf(a);
-  CameraFitOptions o = fitOptionsOf(model, a, calibration, k, focalSource);
-  const json lens = undistorted(a, calibration, joints);
-  if (a.strideFromTrunk) holdTheTrunksStride(joints, o);  // the summary says when it held
-  return fitAndReport(model, a, std::move(joints), o, focalSource, lens);
+  const CameraKnowledge camera = cameraKnowledgeOf(a);
+  const json lens = undistorted(a, camera, joints);
+  return fitAndReport(model, a, std::move(joints), camera, lens);
 }
 
 }  // namespace ew::cli

@@ -9,6 +9,7 @@
 
 #include "app/cli/video_beside_keypoints.h"
 #include "core/camera/calibration_file.h"
+#include "core/camera/camera_knowledge.h"
 #include "core/common/errors.h"
 #include "core/common/statistics.h"
 #include "core/gait/joint_angles.h"
@@ -18,6 +19,7 @@
 #include "core/keypoints/keypoint_trial.h"
 #include "core/camera/clip_reconstruction.h"
 #include "core/camera/walk_camera.h"
+#include "core/engines/request.h"
 #include "core/engine/default_model.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "core/skeleton/bone_sources.h"
@@ -72,15 +74,14 @@ struct EigenwalkerOfClip {
   std::vector<JointMatrix> poses;  // the fitted walker in its camera's frame, per input frame
 };
 
-EigenwalkerOfClip eigenwalkerOf(const KeypointTrial& keypoints, std::optional<double> focalPx, const std::string& name) {
-  CameraFitOptions f;
-  f.focalPx = focalPx;
-  f.file = name;
-  const ClipReconstruction clip = reconstructKeypointTrial(defaultRealModel(), keypoints, f);
+EigenwalkerOfClip eigenwalkerOf(const KeypointTrial& keypoints, const CameraKnowledge& camera, const std::string& name) {
+  CameraView view{keypoints, camera, 0, false, {}, name};
+  const EigenwalkerEngine engine{defaultRealModel(), CameraFitOptions().estimator, {}};
+  const ClipReconstruction clip = std::move(reconstruct(engine, {std::move(view)}).camera.eigenwalker->last);
   EigenwalkerOfClip out{boneLengthsFromWalker(clip.fit.w, clip.fit.omegaRadS, name), {}};
-  const Eigen::MatrixXd camera = walkInCameraFrame(clip.framesMm, clip.timesS, clip.fit.camera);
-  for (Eigen::Index frame = 0; frame < camera.rows(); ++frame)
-    out.poses.push_back(Eigen::Map<const JointMatrix>(camera.row(frame).eval().data()));
+  const Eigen::MatrixXd inCamera = walkInCameraFrame(clip.framesMm, clip.timesS, clip.fit.camera);
+  for (Eigen::Index frame = 0; frame < inCamera.rows(); ++frame)
+    out.poses.push_back(Eigen::Map<const JointMatrix>(inCamera.row(frame).eval().data()));
   std::cerr << std::fixed << std::setprecision(1) << "eigenwalker fit of " << name << ": azimuth "
             << clip.fit.camera.alphaDeg << " deg, focal " << clip.fit.camera.focalPx << " px, reprojection RMS "
             << clip.fit.reprojectionRmsPx << " px\n";
@@ -216,6 +217,7 @@ KeypointTrial readKeypoints(const SkeletonArgs& a) {
   KeypointOptions ko;
   if (!a.layout.empty()) ko.layout = a.layout;
   ko.fps = a.fps;
+  if (a.person) ko.person = *a.person - 1;
   // Points given as fractions of the image (MediaPipe, YOLO) need its size.
   if (!a.imageSize.empty()) ko.imageSize = parseKeypointImageSize(a.imageSize, "--image-size");
   if (!isVideoFile(a.input)) takeTheVideoBeside(a.input, ko);
@@ -236,10 +238,11 @@ std::optional<JointTrial> referenceFor(const SkeletonArgs& a) {
 // the calibration or the user gives (else it estimates its own).
 std::optional<EigenwalkerOfClip> eigenwalkerIfAsked(const SkeletonArgs& a, const KeypointTrial& keypoints) {
   if (a.bones != "eigenwalker" && a.guide != "eigenwalker") return std::nullopt;
-  std::optional<double> focal = a.focalPx;
-  if (!a.camera.empty())
-    focal = readCalibratedCamera(a.camera, a.cameraName.empty() ? std::nullopt : std::optional<std::string>(a.cameraName)).focalPx();
-  return eigenwalkerOf(keypoints, focal, a.input);
+  CameraGivens given;
+  given.focalPx = a.focalPx;
+  given.calibrationFile = a.camera;
+  if (!a.cameraName.empty()) given.calibrationCamera = a.cameraName;
+  return eigenwalkerOf(keypoints, resolveCameraKnowledge(given), a.input);
 }
 
 }  // namespace
@@ -259,10 +262,15 @@ int runReconstructSkeleton(const SkeletonArgs& a) {
   const ChosenBones bones = bonesFor(a, keypoints, reference, fit);
   const ChosenCamera chosen = cameraFor(a, keypoints, bones.lengths);
   const CalibratedCamera& camera = chosen.camera;
-  SkeletonCameraOptions options;
-  if (fit && a.guide == "eigenwalker") options.solve.guideMm = fit->poses;
-  const SkeletonCameraResult r =
-      reconstructThroughCamera(keypoints.jointsPx, camera, bones.lengths, keypoints.rateHz, a.input, options);
+  SkeletonEngine engine{bones.lengths, {}};
+  if (fit && a.guide == "eigenwalker") engine.solve.guideMm = fit->poses;
+  CameraView view;
+  view.keypoints = keypoints;
+  view.camera.calibration = camera;
+  view.camera.focalPx = camera.focalPx();
+  view.name = a.input;
+  const ReconstructionResult result = reconstruct(engine, {std::move(view)});
+  const SkeletonCameraResult& r = *result.camera.skeleton;
   const bool world = camera.hasExtrinsics;
   const std::string cameraText = a.camera.empty() ? "a pinhole of " + std::to_string(camera.focalPx()) + " px"
                                                   : "camera " + camera.name + " of " + a.camera;

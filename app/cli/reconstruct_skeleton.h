@@ -10,29 +10,9 @@
 
 #include <optional>
 #include <string>
+#include "app/cli/reconstruct_args.h"
 
 namespace ew::cli {
-
-struct SkeletonArgs {
-  std::string input, out, layout, camera, cameraName, reference;
-  std::string angles;  // joint angles (.mot or .csv) of the result, when given
-  std::optional<double> fps;
-  bool json = false;
-  std::string detectModel = "full";  // a video's input: the built-in detector's model
-  // Without a calibration: a focal length, or T(dz) on a frame and a chain "a,b,c,d"; the
-  // principal point is the middle of --image-size WxH.
-  std::optional<double> focalPx;
-  std::string imageSize;
-  std::optional<int> scaleDepthFrame;
-  std::string scaleDepthChain;
-  // Bone lengths: "" (the reference's), reference, table2 (with statureM), eigenwalker
-  // (scaled to statureM when given), frame (boneFrame and referenceBone "a-b=MM").
-  std::string bones;
-  std::optional<double> statureM;
-  std::optional<int> boneFrame;
-  std::string referenceBone;
-  std::string guide;  // "" or eigenwalker
-};
 
 int runReconstructSkeleton(const SkeletonArgs& args);
 

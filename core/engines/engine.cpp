@@ -47,7 +47,7 @@ double reprojectionRms(const Eigen::MatrixXd& framesMm, double alphaDeg, const E
 EngineResult runEigenwalker(const EigenwalkerEngine& engine, const ViewInput& input) {
   EngineResult out;
   out.engine = EngineKind::Eigenwalker;
-  const Eigen::MatrixXd uv = removeImageDrift(input.uvMm, input.rateHz);
+  const Eigen::MatrixXd uv = input.inPlace ? Eigen::MatrixXd(input.uvMm) : removeImageDrift(input.uvMm, input.rateHz);
   const JointMask missing = jointsMissingThroughout(uv);
   FourierFitOptions fitOptions;
   if (input.strideHzHint) fitOptions.omegaHintRadS = 2.0 * std::numbers::pi * *input.strideHzHint;

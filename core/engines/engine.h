@@ -86,6 +86,10 @@ struct ViewInput {
   double rateHz = 0.0;
   std::optional<double> alphaDeg;       // the known view; unset: each engine finds it
   std::optional<double> strideHzHint;   // e.g. from gait events (the eigenwalker's ω scan)
+  // A view of a walk in place (METHOD §2's canonical frames, a treadmill): the eigenwalker
+  // leaves the pelvis's image drift alone. Over a fraction of a cycle the least-squares line
+  // through a periodic pelvis has a small slope, which removing would take from the walk.
+  bool inPlace = false;
   std::string name;                     // names the input in errors and warnings
 };
 

@@ -9,6 +9,7 @@
 #include <random>
 #include <unistd.h>
 
+#include "core/engines/request.h"
 #include "core/camera/camera_reconstruction.h"
 #include "core/camera/clip_reconstruction.h"
 #include "core/camera/detector_offsets.h"
@@ -175,13 +176,13 @@ struct EigenwalkerClip {
 EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, const Clip& clip,
                                               const KeypointTrial& t, const std::string& folder,
                                               const CameraExperimentOptions& o, CameraRow& row) {
-  CameraFitOptions f;
-  f.estimator = {Estimator::Map, o.sigma2Mm2};
-  std::string strideSource;
-  gaitForTheFit(t, f, strideSource);  // as `reconstruct --unknown-camera` starts its fit
-  f.file = folder;
+  // Everything unknown, as `reconstruct --unknown-camera` fits keypoint files.
+  CameraView view;
+  view.keypoints = t;
+  view.name = folder;
   const auto t0 = std::chrono::steady_clock::now();
-  const CameraFit fit = reconstructDetectedWalker(fold.model, t, f);
+  const ReconstructionResult r = reconstruct(EigenwalkerEngine{fold.model, {Estimator::Map, o.sigma2Mm2}, {}}, {std::move(view)});
+  const CameraFit& fit = r.camera.eigenwalker->last.fit;
   row.seconds = secondsSince(t0);
   row.alphaDeg = fit.camera.alphaDeg;
   row.elevationDeg = fit.camera.elevationDeg;
@@ -242,10 +243,14 @@ EngineClipScore skeletonOnClip(const Clip& clip, const KeypointTrial& t, const B
   EngineClipScore score{std::nan(""), 0, ""};
   const auto t0 = std::chrono::steady_clock::now();
   try {
-    SkeletonCameraOptions options;
-    if (guide) options.solve.guideMm = *guide;
-    SkeletonCameraResult r = reconstructThroughCamera(t.jointsPx, calibrationOf(clip.camera, kImageW, kImageH), bones,
-                                                      t.rateHz, name, options);
+    SkeletonEngine skeleton{bones, {}};
+    if (guide) skeleton.solve.guideMm = *guide;
+    CameraView view;
+    view.keypoints = t;
+    view.camera.calibration = calibrationOf(clip.camera, kImageW, kImageH);
+    view.camera.focalPx = view.camera.calibration->focalPx();
+    view.name = name;
+    SkeletonCameraResult r = std::move(*reconstruct(skeleton, {std::move(view)}).camera.skeleton);
     score.seconds = secondsSince(t0);
     const MatrixXd inPlace = shiftedByProgression(r.worldMm, clip, -1.0);
     score.mpjpeMm = mpjpeWithoutTranslation(inPlace, clip.truth);
@@ -270,7 +275,7 @@ EngineClipScore snippetOnClip(const Clip& clip, const KeypointTrial& t, const Sn
     in.rateHz = t.rateHz;
     in.alphaDeg = clip.camera.alphaDeg;
     in.name = name;
-    const EngineResult e = reconstructWithEngine(snippet, in);
+    const EngineResult e = reconstruct(snippet, {in}).engine;
     score.seconds = secondsSince(t0);
     const MatrixXd truth = shiftedByProgression(clip.truth, clip, 1.0);
     score.mpjpeMm = mpjpeWithoutTranslation(e.framesMm, truth);

@@ -6,6 +6,7 @@
 #include <mutex>
 #include <numbers>
 
+#include "core/engines/request.h"
 #include "core/common/errors.h"
 #include "core/engine/projection.h"
 #include "core/skeleton/skeleton_tree.h"
@@ -40,7 +41,7 @@ EngineViewRow scoreView(const std::string& subject, EngineKind kind, double alph
     in.alphaDeg = alpha;
     in.strideHzHint = strideHz;
     in.name = subject;
-    const ClipErrors e = clipErrors(reconstructWithEngine(engine, in).framesMm, frames, alpha);
+    const ClipErrors e = clipErrors(reconstruct(engine, {in}).engine.framesMm, frames, alpha);
     row.mpjpeMm = e.mpjpeMm;
     row.depthErrorMm2 = e.depthErrorMm2;
   } catch (const std::exception& e) {

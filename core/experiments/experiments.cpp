@@ -9,6 +9,7 @@
 #include <numbers>
 #include <random>
 
+#include "core/engines/request.h"
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
 #include "core/common/wall_time.h"
@@ -303,7 +304,7 @@ std::vector<ViewErrorRow> knownViewErrors(const std::vector<ExperimentWalker>& w
       for (double a : angles) {
         const Eigen::VectorXd obs = projectToView(wTrue, a);
         for (const Method& m : ms) {
-          const Reconstruction rec = reconstructKnownView(fold.gram, obs, a, m.estimator);
+          const Reconstruction rec = reconstructFourierView(fold.gram, obs, a, m.estimator).reconstruction;
           rows.push_back(scoreView(fold.subject, "", a, m.name, wTrue, rec.w));
         }
       }
@@ -326,7 +327,7 @@ std::vector<UnknownViewRow> unknownViewErrors(const std::vector<ExperimentWalker
       for (double a : angles) {
         const Eigen::VectorXd obs = projectToView(wTrue, a);
         for (const Method& m : ms) {
-          const ViewSearch s = searchViewAngle(fold.gram, obs, m.estimator);
+          const ViewSearch s = *reconstructFourierView(fold.gram, obs, std::nullopt, m.estimator).search;
           const double est = s.best.alphaDeg;
           // Depth at the true view: the reconstruction is a walker in its own frame.
           rows.push_back({fold.subject, a, m.name, est, viewAngleErrorDeg(est, a),
@@ -394,7 +395,7 @@ std::vector<ViewErrorRow> noiseErrors(const std::vector<ExperimentWalker>& walke
             continue;
           }
           for (const Method& m : ms) {
-            const Reconstruction rec = reconstructKnownView(fold.gram, fit2d.w, a, m.estimator);
+            const Reconstruction rec = reconstructFourierView(fold.gram, fit2d.w, a, m.estimator).reconstruction;
             const Eigen::VectorXd wRec = rephase(rec.w, fit2d.phaseRad, truth.phaseRad);
             foldRows.push_back(scoreView(fold.subject, formatLevel(level), a, m.name, truth.w, wRec));
           }
@@ -434,7 +435,7 @@ std::vector<ViewErrorRow> missingJointErrors(const std::vector<ExperimentWalker>
           Eigen::VectorXd obs = projectToView(wTrue, a);
           hideJoints(obs, set.joints);
           for (const Method& m : ms) {
-            const Reconstruction rec = reconstructKnownView(gram, obs, a, m.estimator);
+            const Reconstruction rec = reconstructFourierView(gram, obs, a, m.estimator).reconstruction;
             rows.push_back(scoreView(fold.subject, set.name, a, m.name, wTrue, rec.w));
           }
         }

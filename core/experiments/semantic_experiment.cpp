@@ -5,6 +5,7 @@
 #include <numbers>
 #include <set>
 
+#include "core/engines/request.h"
 #include "core/common/errors.h"
 #include "core/engine/projection.h"
 #include "core/engine/reconstruction.h"
@@ -130,10 +131,10 @@ std::vector<SemanticViewRow> foldViewRows(const FoldAxes& fa, const std::vector<
     const Eigen::VectorXd& k3d = heldOutK[static_cast<size_t>(r)];
     for (double angle : options.anglesDeg) {
       const Eigen::VectorXd observed = projectToView(w.fit.w, angle);
-      const Reconstruction known = reconstructKnownView(gram, observed, angle, map);
+      const Reconstruction known = reconstructFourierView(gram, observed, angle, map).reconstruction;
       addPredictions(fa, w, k3d, known.k, angle, angle, "known", static_cast<size_t>(r), out);
       if (!options.unknownView) continue;
-      const ViewSearch search = searchViewAngle(gram, observed, map);
+      const ViewSearch search = *reconstructFourierView(gram, observed, std::nullopt, map).search;
       addPredictions(fa, w, k3d, search.best.k, angle, search.best.alphaDeg, "unknown", static_cast<size_t>(r), out);
     }
   }

@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 
+#include "core/engines/request.h"
 #include "core/common/errors.h"
 #include "core/common/wall_time.h"
 #include "core/engine/fourier.h"
@@ -143,8 +144,8 @@ void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& cli
       // removed by the engine either way: tests/engines/test_engine.cpp).
       if (hasEngine(o.engines, EngineKind::Snippet))
         out.rows.push_back(engineRow(fold, "snippet MAP", clipName, alpha, level, clip.withProgression, [&] {
-          return reconstructWithEngine(fold.snippet, knownView(fold, clip.withProgression, alpha, clip.strideHz, noise))
-              .framesMm;
+          return reconstruct(fold.snippet, {knownView(fold, clip.withProgression, alpha, clip.strideHz, noise)})
+              .engine.framesMm;
         }, out, scoring));
       // The skeleton engine is given the walker's own bone lengths (the paper measures its
       // performer) and the frames in place: an orthographic view says nothing of depth, so
@@ -153,13 +154,13 @@ void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& cli
         out.rows.push_back(engineRow(fold, "skeleton", clipName, alpha, level, clip.withoutProgression, [&] {
           SkeletonEngine skeleton;
           skeleton.bones = boneLengthsFromFrames(clip.withoutProgression, fold.subject);
-          return reconstructWithEngine(skeleton,
-                                       knownView(fold, clip.withoutProgression, alpha, clip.strideHz, noise)).framesMm;
+          return reconstruct(skeleton, {knownView(fold, clip.withoutProgression, alpha, clip.strideHz, noise)})
+              .engine.framesMm;
         }, out, scoring));
       if (hasEngine(o.engines, EngineKind::Eigenwalker))
         out.rows.push_back(engineRow(fold, "eigenwalker MAP", clipName, alpha, level, clip.withoutProgression, [&] {
-          return reconstructWithEngine(fold.eigenwalker,
-                                       knownView(fold, clip.withoutProgression, alpha, clip.strideHz, noise)).framesMm;
+          return reconstruct(fold.eigenwalker, {knownView(fold, clip.withoutProgression, alpha, clip.strideHz, noise)})
+              .engine.framesMm;
         }, out, scoring));
     }
 }
@@ -170,7 +171,7 @@ void unknownView(const SnippetFold& fold, const Clip& clip, const SnippetExperim
     ViewInput in = knownView(fold, clip.withProgression, alpha, clip.strideHz);
     in.alphaDeg.reset();
     try {
-      const SnippetSequence seq = *reconstructWithEngine(fold.snippet, in).snippet;
+      const SnippetSequence seq = *reconstruct(fold.snippet, {in}).engine.snippet;
       for (size_t k = 0; k < seq.starts.size(); ++k) {
         const SnippetPlacement place = snippetPlacement(clip.withProgression, seq.starts[k], length);
         ThetaRow row;

@@ -325,7 +325,7 @@ TEST_F(EngineCli, TheSkeletonEnginesNewOptionsSayWhatIsMissing) {
   }
   const test::ShellRun other = runCli("reconstruct --input " + heldOut() + " --project-angle 30 --guide eigenwalker --out bad.csv", root_);
   EXPECT_EQ(other.exitCode, 2) << other.err;
-  EXPECT_NE(other.err.find("apply to --engine skeleton only"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("applies to --engine skeleton only"), std::string::npos) << other.err;
   EXPECT_FALSE(fs::exists(root_ / "bad.csv"));
 }
 

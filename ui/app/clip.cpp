@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <vector>
 
+#include "core/camera/camera_knowledge.h"
 #include "core/engine/model.h"
+#include "core/engines/request.h"
 #include "core/tracking/corrected_track.h"
 
 namespace ew::ui {
@@ -25,6 +27,34 @@ void extend(PixelBounds& b, const Eigen::MatrixXd& px) {
   }
 }
 
+// What the viewer's fields say of the camera, resolved by the rule the CLI's options follow
+// (core/camera/camera_knowledge.h), each field named in its errors.
+CameraKnowledge cameraOf(const ClipSettings& settings) {
+  CameraGivens g;
+  g.focalPx = settings.focalPx;
+  g.calibrationFile = settings.calibrationFile;
+  if (!settings.calibrationCamera.empty()) g.calibrationCamera = settings.calibrationCamera;
+  g.imageSize = settings.imageSize;
+  g.alphaDeg = settings.alphaDeg;
+  g.elevationDeg = settings.elevationDeg;
+  g.names = {"the focal length", "the calibration file", "the image's size", "the azimuth", "the elevation"};
+  return resolveCameraKnowledge(g);
+}
+
+// The eigenwalker through the camera (core/engines/request.h), with the σ² the model stores
+// as its optimum, as `reconstruct --unknown-camera` fits; a calibrated lens undone first.
+ClipReconstruction fitThroughCamera(const ClipModel& model, KeypointTrial trial, const CameraKnowledge& camera,
+                                    bool tracked) {
+  undistortKeypoints(camera, trial);
+  CameraView view;
+  view.keypoints = std::move(trial);
+  view.camera = camera;
+  // A tracker's joints: its trunk holds where the crossing feet are lost (docs/TRACKING_DESIGN.md).
+  view.strideFromTrunk = tracked;
+  const EigenwalkerEngine engine{*model.model, {Estimator::Map, defaultSigma2Mm2(*model.model)}, {}};
+  return std::move(reconstruct(engine, {std::move(view)}).camera.eigenwalker->last);
+}
+
 }  // namespace
 
 ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
@@ -33,19 +63,12 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   if (!settings.layout.empty()) k.layout = settings.layout;
   if (settings.fps > 0.0) k.fps = settings.fps;
   if (settings.person >= 0) k.person = settings.person;
-  k.imageSize = settings.imageSize;
+  const CameraKnowledge camera = cameraOf(settings);
+  k.imageSize = camera.imageSize;
   k.video = settings.video;  // what the file does not store, from the video it was made from
-  CameraFitOptions o;
-  // The σ² the model stores as its optimum, as `reconstruct --unknown-camera` uses.
-  o.estimator = {Estimator::Map, defaultSigma2Mm2(*model.model)};
-  o.focalPx = settings.focalPx;
-  o.alphaDeg = settings.alphaDeg;
-  o.elevationDeg = settings.elevationDeg;
-  // A tracker's joints: its trunk holds where the crossing feet are lost (docs/TRACKING_DESIGN.md).
-  if (settings.tracked) holdTheTrunksStride(*settings.tracked, o);
   ClipResult r{settings, model, {}, 0.0, {}, {}};
   if (settings.tracked) {
-    r.rec = reconstructKeypointTrial(*model.model, *settings.tracked, o);
+    r.rec = fitThroughCamera(model, *settings.tracked, camera, true);
   } else if (settings.detected) {
     // As `reconstruct --input V.mp4` reads a video (app/cli/video_input.cpp): the size and
     // the rate are the video's, said so.
@@ -54,9 +77,9 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
     frames.rateHz.reset();
     KeypointTrial walker = cleanKeypoints(frames, k);
     if (settings.corrections) correctTrial(walker, *settings.corrections);
-    r.rec = reconstructKeypointTrial(*model.model, walker, o);
+    r.rec = fitThroughCamera(model, std::move(walker), camera, false);
   } else {
-    r.rec = reconstructKeypointClip(*model.model, settings.path, k, o);
+    r.rec = fitThroughCamera(model, readKeypointTrial(settings.path, k), camera, false);
   }
   extend(r.keypointBounds, r.rec.trial.jointsPx);
   r.shownBounds = r.keypointBounds;
@@ -85,6 +108,11 @@ int clipFrameAt(const ClipResult& clip, double cycles) {
 std::string heldCameraValues(const ClipSettings& settings) {
   std::vector<std::string> parts;
   char buf[64];
+  if (!settings.calibrationFile.empty()) {
+    std::string calibration = "calibration " + settings.calibrationFile.filename().string();
+    if (!settings.calibrationCamera.empty()) calibration += " (" + settings.calibrationCamera + ")";
+    parts.push_back(calibration);
+  }
   if (settings.focalPx) {
     std::snprintf(buf, sizeof buf, "focal %.0f px", *settings.focalPx);
     parts.emplace_back(buf);

@@ -21,6 +21,10 @@ struct ClipSettings {
   double fps = 0.0;                // 0 = the file's, else 30 (JSON stores none)
   int person = -1;                 // -1 = the one who walks
   std::optional<double> focalPx;   // known focal length (else estimated)
+  // A calibration file (Pose2Sim's Calib_*.toml; docs/CAMERA.md) and which of its cameras
+  // ("" = its only one): the focal length, the principal point and the lens's distortion.
+  std::filesystem::path calibrationFile;
+  std::string calibrationCamera;
   std::optional<double> alphaDeg;  // azimuth held at this value (else estimated)
   std::optional<double> elevationDeg;
   // The image's size, given by the user: else the file's, else the video's found beside the

@@ -8,6 +8,7 @@
 #include <tuple>
 #include <utility>
 
+#include "core/engines/request.h"
 #include "core/engine/fourier.h"
 #include "core/engine/model.h"
 #include "core/engine/projection.h"
@@ -104,7 +105,7 @@ void reconstructWithSnippets(const Document& doc, const ReconKey& key, const Wal
   in.rateHz = 30.0;
   if (!key.settings.unknownAngle) in.alphaDeg = key.settings.alphaDeg;
   in.name = walker.id;
-  const EngineResult e = reconstructWithEngine(SnippetEngine{prior.prior, {}}, in);
+  const EngineResult e = reconstruct(SnippetEngine{prior.prior, {}}, {in}).engine;
   summariseAsOneCycle(e, omega, r);
   r.snippets = e.snippet;
 }
@@ -123,7 +124,7 @@ void reconstructWithSkeleton(const ReconKey& key, const Walker& walker, ReconBas
   in.name = walker.id;
   SkeletonEngine engine;
   engine.bones = boneLengthsFromFrames(frames, walker.id);
-  const EngineResult e = reconstructWithEngine(engine, in);
+  const EngineResult e = reconstruct(engine, {in}).engine;
   summariseAsOneCycle(e, omega, r);
   r.skeleton = e.skeleton;
 }
@@ -168,12 +169,10 @@ std::unique_ptr<ReconBase> computeRecon(const Document& doc, const ReconKey& key
   EstimatorOptions est;
   est.estimator = key.settings.estimator;
   est.sigma2Mm2 = key.settings.sigma2Mm2;
-  if (key.settings.unknownAngle) {
-    r->search = searchViewAngle(r->gram, r->observed, est);
-    r->estimate = r->search->best;
-  } else {
-    r->estimate = reconstructKnownView(r->gram, r->observed, key.settings.alphaDeg, est);
-  }
+  EigenwalkerDiagnostics d = reconstructFourierView(
+      r->gram, r->observed, key.settings.unknownAngle ? std::nullopt : std::optional<double>(key.settings.alphaDeg), est);
+  r->search = std::move(d.search);
+  r->estimate = std::move(d.reconstruction);
   r->alphaUsedDeg = r->estimate.alphaDeg;
   return r;
 }
