@@ -8,7 +8,7 @@
 
 #include "core/camera/camera_knowledge.h"
 #include "core/camera/camera_reconstruction.h"
-#include "core/engine/default_model.h"
+#include "core/eigenwalker/default_model.h"
 #include "core/keypoints/image_gait.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "tests/camera/filmed_walk.h"

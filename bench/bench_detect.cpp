@@ -20,7 +20,7 @@
 #include <opencv2/videoio.hpp>
 
 #include "core/camera/clip_reconstruction.h"
-#include "core/engine/default_model.h"
+#include "core/eigenwalker/default_model.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "video/pose_detector.h"
 

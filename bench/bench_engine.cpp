@@ -5,11 +5,11 @@
 
 #include <numbers>
 
-#include "core/engine/fourier.h"
-#include "core/engine/model.h"
-#include "core/engine/projection.h"
-#include "core/engine/reconstruction.h"
-#include "core/engine/synthetic_walkers.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/model.h"
+#include "core/eigenwalker/projection.h"
+#include "core/eigenwalker/reconstruction.h"
+#include "core/eigenwalker/synthetic_walkers.h"
 
 namespace {
 

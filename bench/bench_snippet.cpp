@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "core/engine/projection.h"
+#include "core/eigenwalker/projection.h"
 #include "core/experiments/snippet_experiment.h"
 #include "core/snippet/snippet_fit.h"
 #include "core/snippet/snippet_sequence.h"

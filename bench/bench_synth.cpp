@@ -3,7 +3,7 @@
 // the default (50 walkers × 4 cycles at 120 Hz) including the model.
 #include <benchmark/benchmark.h>
 
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/synth/population.h"
 
 namespace {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "video/joint_tracker.h"
 
 namespace ew {

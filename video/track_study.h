@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/common/skeleton.h"
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "core/experiments/leave_one_out.h"
 #include "core/tracking/keyframes.h"
 #include "video/joint_tracker.h"

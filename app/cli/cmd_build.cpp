@@ -12,7 +12,7 @@
 
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
-#include "core/engine/model_file.h"
+#include "core/eigenwalker/model_file.h"
 #include "core/engines/engine.h"
 #include "core/experiments/model_build.h"
 #include "core/experiments/snippet_experiment.h"

@@ -13,7 +13,7 @@
 
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/engines/engine.h"
 #include "core/experiments/experiments.h"
 #include "core/experiments/results_folder.h"

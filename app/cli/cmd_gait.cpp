@@ -14,7 +14,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/reconstruct_camera.h"
 #include "app/cli/video_input.h"
-#include "core/engine/default_model.h"
+#include "core/eigenwalker/default_model.h"
 #include "core/common/errors.h"
 #include "core/gait/dataset.h"
 #include "core/gait/gait_measures.h"

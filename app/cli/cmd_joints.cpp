@@ -5,9 +5,9 @@
 #include <sstream>
 
 #include "app/cli/commands.h"
-#include "core/engine/default_model.h"
-#include "core/engine/joint_completion.h"
-#include "core/engine/model_file.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/joint_completion.h"
+#include "core/eigenwalker/model_file.h"
 #include "core/gait/dataset.h"
 #include "core/io/joint_csv.h"
 #include "core/io/trc_writer.h"

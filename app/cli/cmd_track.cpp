@@ -19,7 +19,7 @@
 #include "app/cli/commands.h"
 #include "app/cli/reconstruct_camera.h"
 #include "core/common/errors.h"
-#include "core/engine/default_model.h"
+#include "core/eigenwalker/default_model.h"
 #include "core/io/atomic_write.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/tracking/keyframes.h"

@@ -14,8 +14,8 @@
 
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
-#include "core/engine/projection.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/projection.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/gait/dataset.h"
 #include "core/io/atomic_write.h"
 #include "video/track_study.h"

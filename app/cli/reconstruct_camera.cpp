@@ -16,7 +16,7 @@
 #include "core/camera/clip_reconstruction.h"
 #include "core/camera/lens_distortion.h"
 #include "core/common/errors.h"
-#include "core/engine/model_file.h"
+#include "core/eigenwalker/model_file.h"
 #include "core/io/joint_csv.h"
 #include "core/io/trc_writer.h"
 

@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "app/cli/reconstruct_args.h"
 

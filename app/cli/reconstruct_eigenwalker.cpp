@@ -11,10 +11,10 @@
 #include <sstream>
 
 #include "app/cli/reconstruct_view.h"
-#include "core/engine/fourier.h"
-#include "core/engine/joint_completion.h"
-#include "core/engine/metrics.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/joint_completion.h"
+#include "core/eigenwalker/metrics.h"
+#include "core/eigenwalker/projection.h"
 #include "core/engines/request.h"
 #include "core/io/joint_csv.h"
 

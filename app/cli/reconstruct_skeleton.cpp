@@ -20,7 +20,7 @@
 #include "core/camera/clip_reconstruction.h"
 #include "core/camera/walk_camera.h"
 #include "core/engines/request.h"
-#include "core/engine/default_model.h"
+#include "core/eigenwalker/default_model.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "core/skeleton/bone_sources.h"
 #include "core/skeleton/scale_depth.h"

@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "app/cli/reconstruct_view.h"
-#include "core/engine/default_model.h"
-#include "core/engine/metrics.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/metrics.h"
+#include "core/eigenwalker/projection.h"
 #include "core/engines/request.h"
 #include "core/experiments/snippet_experiment.h"
 #include "core/io/joint_csv.h"

@@ -6,12 +6,12 @@
 #include <numbers>
 
 #include "core/common/errors.h"
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
-#include "core/engine/joint_completion.h"
-#include "core/engine/model_file.h"
-#include "core/engine/model_membership.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/joint_completion.h"
+#include "core/eigenwalker/model_file.h"
+#include "core/eigenwalker/model_membership.h"
+#include "core/eigenwalker/projection.h"
 #include "core/gait/dataset.h"
 
 namespace ew::cli {

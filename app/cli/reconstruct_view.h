@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/cli/reconstruct_args.h"
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "core/engines/engine.h"
 #include "core/experiments/view_csv.h"
 #include "core/gait/missing_joints.h"

@@ -4,7 +4,7 @@
 // for a known focal length), image translation and the walker's progression, with the
 // eigenwalker coefficients, stride frequency and phase. Levenberg-Marquardt on the
 // reprojection error of every frame (plus the MAP prior), started from the orthographic
-// view-angle search of core/engine/reconstruction.h at each of its best minima.
+// view-angle search of core/eigenwalker/reconstruction.h at each of its best minima.
 
 #include <Eigen/Core>
 #include <optional>
@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "core/camera/walk_camera.h"
-#include "core/engine/model.h"
-#include "core/engine/reconstruction.h"
+#include "core/eigenwalker/model.h"
+#include "core/eigenwalker/reconstruction.h"
 
 namespace ew {
 

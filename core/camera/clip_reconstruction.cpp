@@ -7,8 +7,8 @@
 #include <utility>
 
 #include "core/camera/detector_offsets.h"
-#include "core/engine/fourier.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/projection.h"
 
 namespace ew {
 

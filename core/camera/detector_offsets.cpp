@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "core/common/errors.h"
-#include "core/engine/fourier.h"
+#include "core/eigenwalker/fourier.h"
 #include "core/keypoints/keypoint_trial.h"
 
 namespace ew {

@@ -10,7 +10,7 @@
 
 #include "core/camera/camera_reconstruction.h"
 #include "core/common/skeleton.h"
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "core/keypoints/keypoint_layout.h"
 
 namespace ew {

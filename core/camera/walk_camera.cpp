@@ -7,7 +7,7 @@
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/projection.h"
 
 namespace ew {
 

@@ -68,7 +68,7 @@ struct JointTrial {
   Eigen::MatrixXd positionsMm;    // frames x 45, joint-major x,y,z; file axes until normalised
   std::array<bool, kJointCount> estimated{};  // joint estimated, not measured (METHOD §1)
   // Joint not measured at all (its columns are NaN in every frame): to be estimated from a
-  // model (core/engine/joint_completion.h). Set by mappings whose marker set lacks it.
+  // model (core/eigenwalker/joint_completion.h). Set by mappings whose marker set lacks it.
   std::array<bool, kJointCount> missing{};
   std::optional<SignedAxis> upAxis;
   std::vector<GaitEvent> events;

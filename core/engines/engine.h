@@ -4,7 +4,7 @@
 // 3D walker at every input frame, the view angle, and how well the result reprojects —
 // plus its own diagnostics. The GUI, the CLI and the experiments pick an engine by name.
 //
-//   eigenwalker  core/engine/   Zhang & Troje 2007: the 2D Fourier fit of the whole clip
+//   eigenwalker  core/eigenwalker/   Zhang & Troje 2007: the 2D Fourier fit of the whole clip
 //                                (at least one gait cycle), MAP or LSQ coefficients of the
 //                                eigenwalker model at the known view or over the circle
 //   snippet      core/snippet/  Howe, Leventon & Freeman 1999: overlapping 11-frame
@@ -34,9 +34,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/engine/fourier.h"
-#include "core/engine/model.h"
-#include "core/engine/reconstruction.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/model.h"
+#include "core/eigenwalker/reconstruction.h"
 #include "core/snippet/snippet_data.h"
 #include "core/snippet/snippet_fit.h"
 #include "core/skeleton/skeleton_solve.h"

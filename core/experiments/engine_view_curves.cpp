@@ -8,7 +8,7 @@
 
 #include "core/engines/request.h"
 #include "core/common/errors.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/projection.h"
 #include "core/skeleton/skeleton_tree.h"
 #include "core/snippet/snippet_prior.h"
 

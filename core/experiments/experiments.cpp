@@ -13,8 +13,8 @@
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
 #include "core/common/wall_time.h"
-#include "core/engine/metrics.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/metrics.h"
+#include "core/eigenwalker/projection.h"
 
 namespace ew {
 namespace {

@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/fourier.h"
-#include "core/engine/model.h"
-#include "core/engine/reconstruction.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/model.h"
+#include "core/eigenwalker/reconstruction.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/gait/dataset.h"
 
 namespace ew {

@@ -5,8 +5,8 @@
 #include <map>
 
 #include "core/common/errors.h"
-#include "core/engine/joint_completion.h"
-#include "core/engine/metrics.h"
+#include "core/eigenwalker/joint_completion.h"
+#include "core/eigenwalker/metrics.h"
 
 namespace ew {
 namespace {

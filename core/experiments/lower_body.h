@@ -1,7 +1,7 @@
 #pragma once
 // Experiment "lower-body" (issue 12; beyond the paper): a lower-body marker set measures
 // the pelvis, hips, knees and ankles; how well does the eigenwalker model estimate the
-// trunk, head and arms from them (core/engine/joint_completion.h)?
+// trunk, head and arms from them (core/eigenwalker/joint_completion.h)?
 //
 // Protocol: leave-one-subject-out (leave_one_out.h). The held-out walker's own 3D Fourier
 // vector w keeps the seven lower-body joints (all 5 blocks, x,y,z); the other eight are

@@ -5,7 +5,7 @@
 
 #include "core/common/errors.h"
 #include "core/common/wall_time.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/experiments/experiments.h"
 #include "core/gait/dataset.h"
 

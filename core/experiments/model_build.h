@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "core/experiments/leave_one_out.h"
 #include "core/io/load_trial.h"
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "core/common/errors.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/projection.h"
 
 namespace ew {
 

@@ -7,8 +7,8 @@
 
 #include "core/engines/request.h"
 #include "core/common/errors.h"
-#include "core/engine/projection.h"
-#include "core/engine/reconstruction.h"
+#include "core/eigenwalker/projection.h"
+#include "core/eigenwalker/reconstruction.h"
 #include "core/experiments/leave_one_out.h"
 
 namespace ew {

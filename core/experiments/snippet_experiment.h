@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/model.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/model.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/engines/engine.h"
 #include "core/experiments/gait_agreement.h"
 #include "core/gait/dataset.h"

@@ -4,7 +4,7 @@
 #include <numbers>
 
 #include "core/common/errors.h"
-#include "core/engine/fourier.h"
+#include "core/eigenwalker/fourier.h"
 #include "core/gait/gait_events.h"
 #include "core/gait/joint_angles.h"
 

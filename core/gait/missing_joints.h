@@ -1,7 +1,7 @@
 #pragma once
 // Joints a trial did not measure at all (JointTrial::missing: NaN in every frame), as
 // opposed to gaps (a joint hidden for some frames, core/gait/gaps.h). Missing joints are
-// estimated from a model (core/engine/joint_completion.h), never interpolated.
+// estimated from a model (core/eigenwalker/joint_completion.h), never interpolated.
 //
 // Minimum to prepare a trial (METHOD §2-3) and estimate the rest:
 //   - both ankles: the floor, the gait cycles and the phase reference z_l_ankle − z_r_ankle;

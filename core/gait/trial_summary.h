@@ -23,7 +23,7 @@ struct TrialSummary {
   std::string source;          // marker set / skeleton recognised
   std::vector<std::string> estimatedJoints;
   // Joints the file does not measure at all (JointTrial::missing): a model estimates them
-  // (core/engine/joint_completion.h) when the trial is reconstructed or inspected.
+  // (core/eigenwalker/joint_completion.h) when the trial is reconstructed or inspected.
   std::vector<std::string> modelEstimatedJoints;
   int windowFrames = 0;        // frames in the steady walking window
   double cycles = 0.0;

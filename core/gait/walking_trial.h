@@ -34,7 +34,7 @@ struct WalkingTrial {
   std::vector<StraightSegment> segments;
   int segment = -1;
   // Joints not measured are joints.missing (their columns NaN after prepare). Once a model
-  // completes the trial (core/engine/joint_completion.h), their columns hold frames
+  // completes the trial (core/eigenwalker/joint_completion.h), their columns hold frames
   // synthesised from the model and they are flagged here: draw them differently and report
   // their errors apart from the measured joints'.
   std::array<bool, kJointCount> modelEstimated{};

@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/model.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/model.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/semantic/walker_attributes.h"
 
 namespace ew {

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/walker_set.h"
 
 namespace ew {
 

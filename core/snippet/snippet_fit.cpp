@@ -8,8 +8,8 @@
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
-#include "core/engine/minimize_1d.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/minimize_1d.h"
+#include "core/eigenwalker/projection.h"
 
 namespace ew {
 

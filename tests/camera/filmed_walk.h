@@ -9,8 +9,8 @@
 #include <numbers>
 
 #include "core/camera/walk_camera.h"
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
 #include "core/keypoints/openpose_writer.h"
 
 namespace ew::test {

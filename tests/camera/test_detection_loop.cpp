@@ -6,8 +6,8 @@
 #include <numbers>
 
 #include "core/camera/detection_loop.h"
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
 #include "tests/camera/filmed_walk.h"
 
 namespace ew {

@@ -11,8 +11,8 @@
 
 #include "core/camera/lens_distortion.h"
 #include "core/keypoints/keypoint_trial.h"
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
 #include "core/keypoints/openpose_writer.h"
 #include "tests/camera/filmed_walk.h"
 #include "tests/common/error_matchers.h"

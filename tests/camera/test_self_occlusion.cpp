@@ -5,8 +5,8 @@
 
 #include "core/camera/self_occlusion.h"
 #include "core/common/skeleton.h"
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
 
 namespace ew {
 namespace {

@@ -10,8 +10,8 @@
 #include "core/camera/walk_camera.h"
 #include "tests/camera/filmed_walk.h"
 #include "core/common/errors.h"
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
 #include "core/skeleton/skeleton_camera.h"
 #include "tests/common/error_matchers.h"
 

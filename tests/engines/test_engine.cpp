@@ -7,11 +7,11 @@
 #include <numbers>
 
 #include "core/common/errors.h"
-#include "core/engine/fourier.h"
-#include "core/engine/joint_completion.h"
-#include "core/engine/metrics.h"
-#include "core/engine/projection.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/joint_completion.h"
+#include "core/eigenwalker/metrics.h"
+#include "core/eigenwalker/projection.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/engines/engine.h"
 #include "core/experiments/snippet_experiment.h"
 #include "core/gait/missing_joints.h"

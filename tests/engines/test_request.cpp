@@ -8,9 +8,9 @@
 
 #include "core/camera/clip_reconstruction.h"
 #include "core/common/errors.h"
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/projection.h"
 #include "core/engines/request.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/skeleton/bone_sources.h"

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "core/common/errors.h"
-#include "core/engine/synthetic_walkers.h"
+#include "core/eigenwalker/synthetic_walkers.h"
 #include "core/experiments/camera_experiment.h"
 #include "core/experiments/results_folder.h"
 #include "tests/common/error_matchers.h"

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/engine/model_file.h"
+#include "core/eigenwalker/model_file.h"
 #include "tests/common/test_support.h"
 
 namespace ew {

@@ -11,8 +11,8 @@
 #include <sstream>
 
 #include "core/common/errors.h"
-#include "core/engine/fourier.h"
-#include "core/engine/synthetic_walkers.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/synthetic_walkers.h"
 #include "core/experiments/experiments.h"
 #include "plots/raster_plot.h"
 #include "core/experiments/results_folder.h"

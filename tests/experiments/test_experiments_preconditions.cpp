@@ -15,8 +15,8 @@
 
 #include "core/common/errors.h"
 #include "core/common/nan.h"
-#include "core/engine/fourier.h"
-#include "core/engine/synthetic_walkers.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/synthetic_walkers.h"
 #include "core/experiments/experiments.h"
 #include "core/experiments/results_folder.h"
 #include "core/experiments/view_csv.h"

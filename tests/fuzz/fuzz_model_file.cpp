@@ -1,5 +1,5 @@
 // libFuzzer harness: the two binary files of the project's own layout (header lines, JSON
-// metadata, sizes, checksums, payload) -> ew::parseModel (.ewm, core/engine/model_file.h, the
+// metadata, sizes, checksums, payload) -> ew::parseModel (.ewm, core/eigenwalker/model_file.h, the
 // in-memory half of loadModel) and ew::parseSnippetPrior (.ewsp, core/snippet/snippet_file.h).
 // Each input goes to both readers, twice: as it is, then with line 3 rewritten to hold the right
 // FNV-1a 64 checksum of line 2, so that mutated metadata gets past the header checksum
@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/engine/model_file.h"
+#include "core/eigenwalker/model_file.h"
 #include "core/snippet/snippet_file.h"
 #include "tests/fuzz/fuzz_common.h"
 

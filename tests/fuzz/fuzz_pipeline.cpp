@@ -6,7 +6,7 @@
 // The first input byte picks the format (value % 5: C3D, BVH, ASF+AMC, TRC, CSV: the 15-joint CSV or a Vicon Nexus export); the rest
 // is the file (for ASF+AMC: skeleton, a line "%%AMC%%", motion). The fit gets the stride
 // frequency of the gait cycles as its ω hint, as a trial becomes a walker in
-// core/engine/walker_set.cpp. A typed ew::Error at any stage is the correct outcome;
+// core/eigenwalker/walker_set.cpp. A typed ew::Error at any stage is the correct outcome;
 // anything else is a finding (fuzz_common.h), and so is a fit that succeeds with a
 // non-finite Fourier vector or frequency (it would poison every model built from it).
 
@@ -15,9 +15,9 @@
 #include <cstdlib>
 #include <numbers>
 
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
-#include "core/engine/joint_completion.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/joint_completion.h"
 #include "core/gait/gait_measures.h"
 #include "core/gait/prepare.h"
 #include "core/io/asf_amc_reader.h"

@@ -36,11 +36,11 @@
 #include <vector>
 
 #include "core/common/errors.h"
-#include "core/engine/model_file.h"
+#include "core/eigenwalker/model_file.h"
 #include "core/snippet/snippet_file.h"
 #include "core/snippet/snippet_prior.h"
 #include "core/mapping/mapping_file.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/io/bvh_writer.h"
 #include "core/io/file_bytes.h"
 #include "core/io/joint_csv.h"

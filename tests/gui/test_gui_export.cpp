@@ -10,7 +10,7 @@
 #include <opencv2/videoio.hpp>
 #include <regex>
 
-#include "core/engine/model_file.h"
+#include "core/eigenwalker/model_file.h"
 #include "core/io/bvh_reader.h"
 #include "core/io/joint_csv.h"
 #include "core/mapping/joint_mapping.h"

@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/engine/default_model.h"
+#include "core/eigenwalker/default_model.h"
 #include "core/io/trc_reader.h"
 #include "tests/common/test_support.h"
 #include "tests/gui/gui_run.h"

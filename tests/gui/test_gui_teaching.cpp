@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "core/engine/default_model.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/semantic/walker_attributes.h"
 #include "tests/common/test_support.h"
 #include "tests/gui/gui_run.h"

@@ -14,7 +14,7 @@
 
 #include "core/camera/clip_reconstruction.h"
 #include "core/common/errors.h"
-#include "core/engine/default_model.h"
+#include "core/eigenwalker/default_model.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "core/keypoints/keypoint_summary.h"
 #include "core/keypoints/keypoint_trial.h"

@@ -17,7 +17,7 @@
 
 #include "core/camera/clip_reconstruction.h"
 #include "core/common/errors.h"
-#include "core/engine/default_model.h"
+#include "core/eigenwalker/default_model.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "core/keypoints/keypoint_layout.h"
 #include "core/keypoints/keypoint_trial.h"

@@ -7,8 +7,8 @@
 #include <numbers>
 
 #include "core/common/errors.h"
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
 #include "core/skeleton/bone_sources.h"
 #include "tests/common/error_matchers.h"
 

@@ -12,7 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "core/common/errors.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/projection.h"
 #include "core/engines/engine.h"
 #include "core/skeleton/skeleton_solve.h"
 #include "tests/skeleton/synthetic_camera.h"

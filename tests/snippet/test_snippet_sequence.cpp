@@ -5,8 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "core/common/errors.h"
-#include "core/engine/fourier.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/projection.h"
 #include "core/engines/engine.h"
 #include "core/experiments/snippet_experiment.h"
 #include "tests/common/test_support.h"

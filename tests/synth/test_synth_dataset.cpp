@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/synth/population.h"
 
 namespace ew {

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "core/common/errors.h"
-#include "core/engine/fourier.h"
+#include "core/eigenwalker/fourier.h"
 #include "core/gait/prepare.h"
 #include "core/io/joint_csv.h"
 #include "core/synth/normative_gait.h"

@@ -10,10 +10,10 @@
 #include <cstdio>
 #include <numeric>
 
-#include "core/engine/metrics.h"
-#include "core/engine/projection.h"
-#include "core/engine/reconstruction.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/metrics.h"
+#include "core/eigenwalker/projection.h"
+#include "core/eigenwalker/reconstruction.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/synth/population.h"
 #include "tests/common/test_support.h"
 

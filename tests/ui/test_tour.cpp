@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "core/engine/projection.h"
-#include "core/engine/reconstruction.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/projection.h"
+#include "core/eigenwalker/reconstruction.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/synth/population.h"
 #include "ui/app/tour.h"
 

@@ -11,10 +11,10 @@
 #include <numbers>
 
 #include "core/camera/clip_reconstruction.h"
-#include "core/engine/default_model.h"
-#include "core/engine/fourier.h"
-#include "core/engine/metrics.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/metrics.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/experiments/leave_one_out.h"
 #include "core/gait/dataset.h"
 #include "core/tracking/track_compare.h"

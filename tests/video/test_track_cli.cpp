@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/camera/clip_reconstruction.h"
-#include "core/engine/default_model.h"
+#include "core/eigenwalker/default_model.h"
 #include "core/synth/population.h"
 #include "core/tracking/keyframes.h"
 #include "tests/common/test_support.h"

@@ -10,9 +10,9 @@
 
 #include "core/camera/focal_length.h"
 #include "core/common/errors.h"
-#include "core/engine/model.h"
-#include "core/engine/model_file.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/model.h"
+#include "core/eigenwalker/model_file.h"
+#include "core/eigenwalker/projection.h"
 #include "core/gait/joint_angles.h"
 #include "core/io/atomic_write.h"
 #include "core/io/bvh_writer.h"

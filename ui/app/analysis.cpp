@@ -6,7 +6,7 @@
 #include <ostream>
 #include <thread>
 
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/io/atomic_write.h"
 
 namespace ew::ui {

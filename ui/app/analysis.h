@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/experiments/engine_view_curves.h"
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "core/experiments/experiments.h"
 #include "ui/app/population.h"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "core/camera/camera_knowledge.h"
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "core/engines/request.h"
 #include "core/tracking/corrected_track.h"
 

@@ -11,7 +11,7 @@
 #include "core/camera/clip_reconstruction.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "core/tracking/keyframes.h"
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 
 namespace ew::ui {
 

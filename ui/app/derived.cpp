@@ -9,9 +9,9 @@
 #include <utility>
 
 #include "core/engines/request.h"
-#include "core/engine/fourier.h"
-#include "core/engine/model.h"
-#include "core/engine/projection.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/model.h"
+#include "core/eigenwalker/projection.h"
 #include "core/engines/engine.h"
 #include "core/snippet/snippet_prior.h"
 #include "ui/app/held_model.h"

@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
-#include "core/engine/metrics.h"
-#include "core/engine/reconstruction.h"
+#include "core/eigenwalker/metrics.h"
+#include "core/eigenwalker/reconstruction.h"
 #include "ui/app/document.h"
 #include "ui/app/semantic.h"
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/reconstruction.h"
+#include "core/eigenwalker/reconstruction.h"
 #include "core/engines/engine.h"
 #include "ui/app/clip.h"
 #include "ui/app/model_set.h"

@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "core/engine/fourier.h"
+#include "core/eigenwalker/fourier.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/export_captions.h"

@@ -8,8 +8,8 @@
 #include <sstream>
 
 #include "core/common/errors.h"
-#include "core/engine/fourier.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/fourier.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/gait/joint_angles.h"
 #include "core/io/atomic_write.h"
 #include "ui/app/population.h"

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "core/gait/fourier_walker_gait.h"
 #include "core/gait/gait_measures.h"
 

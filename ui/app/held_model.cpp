@@ -2,9 +2,9 @@
 
 #include <stdexcept>
 
-#include "core/engine/default_model.h"
-#include "core/engine/model_membership.h"
-#include "core/engine/model_file.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/model_membership.h"
+#include "core/eigenwalker/model_file.h"
 
 namespace ew::ui {
 

@@ -41,10 +41,10 @@ std::string heldModelPhrase(const Document& doc);
 // "population", "default", "file".
 const char* modelSourceName(ModelSource source);
 
-// The default model of real walkers (core/engine/default_model.h), named for the header.
+// The default model of real walkers (core/eigenwalker/default_model.h), named for the header.
 // Throws ew::Error when its asset is missing or corrupt.
 std::shared_ptr<const SavedModel> readDefaultModel();
-// A saved model (core/engine/model_file.h). Throws ew::Error naming the file.
+// A saved model (core/eigenwalker/model_file.h). Throws ew::Error naming the file.
 std::shared_ptr<const SavedModel> readModelFile(const std::filesystem::path& file);
 // True for a path ending in .ewm (any case).
 bool isModelFile(const std::filesystem::path& path);

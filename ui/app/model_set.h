@@ -9,7 +9,7 @@
 #include <map>
 #include <string>
 
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "ui/app/population.h"
 
 namespace ew::ui {

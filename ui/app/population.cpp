@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "core/common/errors.h"
-#include "core/engine/joint_completion.h"
+#include "core/eigenwalker/joint_completion.h"
 #include "core/gait/missing_joints.h"
 #include "core/synth/population.h"
 #include "ui/app/background_job.h"

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/model.h"
-#include "core/engine/walker_set.h"
+#include "core/eigenwalker/model.h"
+#include "core/eigenwalker/walker_set.h"
 #include "core/gait/dataset.h"
 
 namespace ew::ui {
@@ -22,7 +22,7 @@ struct WalkerFacts {
   double strideHz = 0.0;                 // ω / 2π
   std::optional<double> speedMps;        // mean over the trials (absent: unknown / treadmill)
   std::vector<std::string> estimatedJoints;  // joints estimated rather than measured
-  // Joints the trial's marker set lacks, filled in from a model (core/engine/
+  // Joints the trial's marker set lacks, filled in from a model (core/eigenwalker/
   // joint_completion.h): drawn differently, their errors reported apart.
   std::array<bool, kJointCount> modelEstimated{};
   int trials = 0;

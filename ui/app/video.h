@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/tracking/keyframes.h"
 #include "ui/app/detection.h"

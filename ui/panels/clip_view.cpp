@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/engine/projection.h"
+#include "core/eigenwalker/projection.h"
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
 #include "ui/render/figures.h"

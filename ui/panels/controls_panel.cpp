@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <utility>
 
-#include "core/engine/model.h"
+#include "core/eigenwalker/model.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/convert.h"

@@ -10,7 +10,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/engine/reconstruction.h"
+#include "core/eigenwalker/reconstruction.h"
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
 #include "ui/panels/clip_view.h"
