@@ -308,12 +308,11 @@ ClipModel clipModel(AppState& s) {
 void startClipFit(AppState& s) {
   if (!s.doc.clip || s.jobs.clip.running()) return;
   const ClipModel model = clipModel(s);
-  if (s.clip && s.clip->settings == *s.doc.clip && s.clip->model == model) return;
-  if (s.jobs.clipFailed == s.doc.clip) return;
-  s.jobs.clipRunning = *s.doc.clip;
+  if (s.clip() && s.clip()->settings == *s.doc.clip && s.clip()->model == model) return;
+  if (s.jobs.clip.failed(*s.doc.clip)) return;
   const std::string title = "Fitting the camera of " + describePaths({s.doc.clip->path});
   s.log.info(title);
-  s.jobs.clip.start(title, [settings = *s.doc.clip, model](JobProgress& progress) {
+  s.jobs.clip.start(*s.doc.clip, title, [settings = *s.doc.clip, model](JobProgress& progress) {
     progress.set(0, 1, "reading and fitting");
     return std::make_shared<const ClipResult>(fitClip(settings, model));
   });
@@ -353,11 +352,10 @@ void noticeFitCautions(AppState& s, const ClipResult& c) {
   showNotice(s, std::move(n));
 }
 
-void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& c) {
-  const bool newClip = !s.clip || s.clip->settings.path != c->settings.path;
-  s.clip = c;
-  s.jobs.clipFailed.reset();
-  s.jobs.clipError.clear();
+// `before`: the fit shown until `c` (jobs.clip keeps `c` as its latest, and clears its failure).
+void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& before,
+              const std::shared_ptr<const ClipResult>& c) {
+  const bool newClip = !before || before->settings.path != c->settings.path;
   const auto& cam = c->rec.fit.camera;
   char buf[200];
   std::snprintf(buf, sizeof buf, "azimuth %.1f°, elevation %.1f°, reprojection RMS %.2f px, in %.0f ms",
@@ -391,22 +389,21 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& c) {
 }
 
 // A fit that failed: at open, a failed open (the clip shown before, if any, stays); after a
-// change of settings, the controls say why and the last fit stays on screen.
-void clipFailed(AppState& s, const std::string& error) {
+// change of settings, the controls say why and the last fit stays on screen. `running`: the
+// settings that failed (jobs.clip has them as its failed key, and the error).
+void clipFailed(AppState& s, const ClipSettings& running, const std::string& error) {
   ++s.jobs.failures;
-  s.jobs.clipFailed = s.jobs.clipRunning;
-  s.jobs.clipError = error;
-  const bool atOpen = !s.clip || s.clip->settings.path != s.jobs.clipRunning.path;
+  const bool atOpen = !s.clip() || s.clip()->settings.path != running.path;
   if (!atOpen) {
-    s.jobs.lastError = "Clip fit failed (" + heldCameraValues(s.jobs.clipRunning) + "): " + error;
+    s.jobs.lastError = "Clip fit failed (" + heldCameraValues(running) + "): " + error;
     s.log.error(s.jobs.lastError);
     return;
   }
-  if (error.find(kNeedsImageSize) != std::string::npos && s.doc.clip == s.jobs.clipRunning) {
+  if (error.find(kNeedsImageSize) != std::string::npos && s.doc.clip == running) {
     // Points as fractions of an image of unknown size: the clip stays open, its controls ask
     // for the size (no video beside it gave one).
-    s.clip.reset();
-    s.jobs.lastError = "Give the image size of " + s.jobs.clipRunning.path.filename().string();
+    s.jobs.clip.reset();
+    s.jobs.lastError = "Give the image size of " + running.path.filename().string();
     s.log.error(error);
     OpenNotice n;
     n.title = s.jobs.lastError + " (the Keypoint clip panel)";
@@ -415,24 +412,24 @@ void clipFailed(AppState& s, const std::string& error) {
     showNotice(s, std::move(n));
     return;
   }
-  if (s.doc.clip == s.jobs.clipRunning) {
-    s.doc.clip = s.clip ? std::optional<ClipSettings>(s.clip->settings) : std::nullopt;
+  if (s.doc.clip == running) {
+    s.doc.clip = s.clip() ? std::optional<ClipSettings>(s.clip()->settings) : std::nullopt;
     // A video stays shown with its track when the walk cannot be fitted to it (a clip that
     // is not walking): the track is still worth seeing over the footage.
     if (!s.doc.clip && !s.video && s.doc.mode == Mode::Clip) s.doc.mode = Mode::Reconstruct;
   }
-  if (s.jobs.clipRunning.tracked) {
+  if (running.tracked) {
     // The video opened and tracked; opening it again would not fit the walk either.
-    reportError(s, "No walk fits the track of " + s.jobs.clipRunning.path.filename().string(),
+    reportError(s, "No walk fits the track of " + running.path.filename().string(),
                 error);
     return;
   }
-  if (s.jobs.clipRunning.detected) {
-    reportError(s, "No walk fits the people detected in " + s.jobs.clipRunning.path.filename().string(),
+  if (running.detected) {
+    reportError(s, "No walk fits the people detected in " + running.path.filename().string(),
                 error);
     return;
   }
-  reportOpenError(s, {s.jobs.clipRunning.path}, error);
+  reportOpenError(s, {running.path}, error);
 }
 
 // Opens the first keypoint clip among `paths` and returns the others; further clips are
@@ -631,39 +628,31 @@ void pollJobs(AppState& s) {
       s.jobs.notice->canRetry = true;
     }
   }
-  if (auto outcome = s.jobs.clip.poll()) {
-    if (outcome->value) {
-      takeClip(s, *outcome->value);
+  const auto shownFit = s.clip();
+  if (auto done = s.jobs.clip.poll()) {
+    if (done->ok()) {
+      takeClip(s, shownFit, done->value);
     } else {
-      clipFailed(s, outcome->error);
+      clipFailed(s, done->key, done->error);
     }
   }
   pollVideo(s);
   try {
     startClipFit(s);
   } catch (const std::exception& e) {
-    s.jobs.clipRunning = *s.doc.clip;
-    clipFailed(s, e.what());
+    s.jobs.clip.fail(*s.doc.clip, e.what());
+    clipFailed(s, *s.doc.clip, e.what());
   }
-  if (auto outcome = s.jobs.summary.poll()) {
-    if (outcome->value) {
-      s.dataSummary = *outcome->value;
-    } else {
-      s.log.error("Data summary failed: " + outcome->error);
-    }
-  }
-  if (auto outcome = s.jobs.analysis.poll()) {
-    if (outcome->value) {
-      const auto& result = *outcome->value;
-      s.analysis.add(result);
-      s.jobs.analysisError.clear();
+  if (auto done = s.jobs.summary.poll(); done && !done->ok())
+    s.log.error("Data summary failed: " + done->error);
+  if (auto done = s.jobs.analysis.poll()) {
+    if (done->ok()) {
+      const auto& result = done->value;
       s.log.info("Analysis: " + std::to_string(result->subjects.size()) + " held-out subjects × " +
                  std::to_string(result->anglesDeg.size()) + " view angles in " +
                  std::to_string(static_cast<int>(result->seconds * 1000.0)) + " ms");
     } else {
-      s.jobs.analysisFailed = s.jobs.analysisRunning;
-      s.jobs.analysisError = "Analysis failed: " + outcome->error;
-      s.log.error(s.jobs.analysisError);
+      s.log.error("Analysis failed: " + done->error);
     }
   }
   if (s.jobs.pendingOpen && !s.jobs.load.running() && !s.jobs.models.running()) {
@@ -1037,10 +1026,8 @@ std::string analysisSubject(const AppState& s) {
 void requestAnalysis(AppState& s) {
   if ((!s.doc.population && !heldModelOtherThanThePopulations(s.doc)) || s.jobs.load.running() || s.jobs.analysis.running()) return;
   const AnalysisKey key = analysisKey(s);
-  if (s.analysis.find(key) || s.jobs.analysisFailed == key) return;
-  s.jobs.analysisRunning = key;
-  s.jobs.analysis.start(
-      "Analysis (leave-one-subject-out, −90…90°)",
+  s.jobs.analysis.request(
+      key, "Analysis (leave-one-subject-out, −90…90°)",
       [walkers = analysisWalkers(s), key](JobProgress& progress) -> std::shared_ptr<const AnalysisResult> {
         return std::make_shared<const AnalysisResult>(computeAnalysis(
             walkers, key, [&progress](int done, int total, const std::string& what) {
@@ -1051,9 +1038,9 @@ void requestAnalysis(AppState& s) {
 
 std::shared_ptr<const AnalysisResult> analysisNow(AppState& s) {
   const AnalysisKey key = analysisKey(s);
-  if (auto cached = s.analysis.find(key)) return cached;
+  if (auto cached = s.jobs.analysis.find(key)) return cached;
   auto result = std::make_shared<const AnalysisResult>(computeAnalysis(analysisWalkers(s), key, {}));
-  s.analysis.add(result);
+  s.jobs.analysis.put(key, result);
   return result;
 }
 
@@ -1100,7 +1087,7 @@ namespace {
 GaitReportText gaitReportSubject(const AppState& s) {
   if (s.doc.mode == Mode::Explore) return {"explore", "synthesised"};
   if (s.doc.mode == Mode::Clip)
-    return {s.clip ? s.clip->settings.path.filename().string() : std::string(),
+    return {s.clip() ? s.clip()->settings.path.filename().string() : std::string(),
             "eigenwalker through the estimated camera"};
   const Walker* w = s.doc.selectedWalker();
   return {w ? w->id : std::string(), engineName(s.doc.recon.engine)};
@@ -1213,12 +1200,11 @@ void writeJointMapping(AppState& s, const std::filesystem::path& file,
 
 void requestDataSummary(AppState& s) {
   if (!s.doc.population || s.jobs.load.running() || s.jobs.summary.running()) return;
-  if (s.dataSummary && s.dataSummary->generation == s.doc.generation) return;
   auto paths = s.doc.sourcePaths;
   auto overrides = s.doc.fileOverrides;
   const auto generation = s.doc.generation;
-  s.jobs.summary.start(
-      "Summarising the data",
+  s.jobs.summary.request(
+      generation, "Summarising the data",
       [paths, overrides, generation](JobProgress& progress) -> std::shared_ptr<const DataSummary> {
         auto d =
             summarizeData(paths, overrides, [&progress](int done, int total, const std::string& w) {
@@ -1231,11 +1217,12 @@ void requestDataSummary(AppState& s) {
 
 std::shared_ptr<const DataSummary> dataSummaryNow(AppState& s) {
   requireLoaded(s);
-  if (s.dataSummary && s.dataSummary->generation == s.doc.generation) return s.dataSummary;
+  if (auto kept = s.jobs.summary.find(s.doc.generation)) return kept;
   auto d = summarizeData(s.doc.sourcePaths, s.doc.fileOverrides);
   d.generation = s.doc.generation;
-  s.dataSummary = std::make_shared<const DataSummary>(std::move(d));
-  return s.dataSummary;
+  auto summary = std::make_shared<const DataSummary>(std::move(d));
+  s.jobs.summary.put(s.doc.generation, summary);
+  return summary;
 }
 
 void exportDataSummary(AppState& s, const std::filesystem::path& path) {
@@ -1331,7 +1318,7 @@ void showPanel(AppState& s, const std::string& name, bool shown) {
 }
 
 double playbackStrideHz(const AppState& s) {
-  if (s.doc.mode == Mode::Clip) return s.clip ? s.clip->rec.fit.strideHz : 0.9;
+  if (s.doc.mode == Mode::Clip) return s.clip() ? s.clip()->rec.fit.strideHz : 0.9;
   if (s.doc.mode == Mode::Explore) {
     const auto* e = s.derived.explore();
     return e ? e->strideHz : 0.9;
@@ -1412,7 +1399,7 @@ void openClip(AppState& s, const std::filesystem::path& path) {
   settings.video = videoBesideKeypoints(path);
   s.doc.clip = settings;
   s.doc.mode = Mode::Clip;
-  s.jobs.clipFailed.reset();
+  s.jobs.clip.retry();
   s.log.info("Opening the keypoint clip " + path.string());
 }
 
@@ -1461,15 +1448,15 @@ void setClipImageSize(AppState& s, std::optional<KeypointImageSize> size) {
 
 void setClipPerson(AppState& s, int person) {
   if (person < -1) throw std::invalid_argument("person must be -1 (the walker) or a track index");
-  if (s.clip && person >= static_cast<int>(s.clip->rec.trial.people.size()))
+  if (s.clip() && person >= static_cast<int>(s.clip()->rec.trial.people.size()))
     throw std::invalid_argument("person " + std::to_string(person) + " out of range (" +
-                                std::to_string(s.clip->rec.trial.people.size()) + " tracks)");
+                                std::to_string(s.clip()->rec.trial.people.size()) + " tracks)");
   clipSettings(s).person = person;
 }
 
 void setClipFrame(AppState& s, int frame) {
-  if (s.doc.mode != Mode::Clip || !s.clip) throw std::invalid_argument("no keypoint clip is shown");
-  const ClipResult& c = *s.clip;
+  if (s.doc.mode != Mode::Clip || !s.clip()) throw std::invalid_argument("no keypoint clip is shown");
+  const ClipResult& c = *s.clip();
   if (frame < 1 || frame > c.rec.trial.frameCount)
     throw std::invalid_argument("frame must lie in [1, " + std::to_string(c.rec.trial.frameCount) + "]");
   // Half a frame in, so that the frame shown is this one however the time rounds.
@@ -1479,9 +1466,8 @@ void setClipFrame(AppState& s, int frame) {
 
 void closeClip(AppState& s) {
   s.doc.clip.reset();
-  s.clip.reset();
-  s.jobs.clipFailed.reset();
-  s.jobs.clipError.clear();
+  s.jobs.clip.reset();
+  s.jobs.clip.clearFailure();
   if (s.doc.mode == Mode::Clip) s.doc.mode = Mode::Reconstruct;
 }
 

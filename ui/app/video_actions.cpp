@@ -217,7 +217,7 @@ void setVideoZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
 }
 
 void setClipZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
-  if (!s.clip) throw std::invalid_argument("no keypoint clip is shown");
+  if (!s.clip()) throw std::invalid_argument("no keypoint clip is shown");
   if (!std::isfinite(zoom) || !centrePx.allFinite()) throw std::invalid_argument("clip zoom: not a number");
   s.view.clipZoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
   s.view.clipZoomCentreX = centrePx.x();
@@ -481,7 +481,7 @@ void fitDetections(AppState& s) {
   c.video = keypointVideoOf(*v.detected);
   s.doc.clip = c;
   s.doc.mode = Mode::Clip;
-  s.jobs.clipFailed.reset();
+  s.jobs.clip.retry();
 }
 
 std::vector<KeypointDetection> detectionsOn(const AppState& s, int frame) {
@@ -502,13 +502,13 @@ void closeVideo(AppState& s) {
 }
 
 bool showsTrackFit(const AppState& s) {
-  return s.video && s.clip && s.video->tracked && s.clip->settings.tracked &&
-         s.clip->settings.tracked == s.video->tracked->trial;
+  return s.video && s.clip() && s.video->tracked && s.clip()->settings.tracked &&
+         s.clip()->settings.tracked == s.video->tracked->trial;
 }
 
 bool showsDetectionFit(const AppState& s) {
-  return s.video && s.clip && s.video->detected && s.clip->settings.detected &&
-         s.clip->settings.detected == s.video->detected->frames;
+  return s.video && s.clip() && s.video->detected && s.clip()->settings.detected &&
+         s.clip()->settings.detected == s.video->detected->frames;
 }
 
 bool correctsDetections(const AppState& s) {
@@ -520,7 +520,7 @@ bool showsVideoFit(const AppState& s) { return showsTrackFit(s) || showsDetectio
 std::optional<std::pair<int, int>> videoFitFrames(const AppState& s) {
   if (showsTrackFit(s)) return std::pair{s.video->tracked->track.firstFrame, s.video->tracked->lastFrame()};
   // The detector's clip numbers its frames as the video does (keypointFramesOf).
-  if (showsDetectionFit(s)) return std::pair{0, std::max(s.clip->rec.trial.frameCount - 1, 0)};
+  if (showsDetectionFit(s)) return std::pair{0, std::max(s.clip()->rec.trial.frameCount - 1, 0)};
   return std::nullopt;
 }
 
@@ -528,7 +528,7 @@ int shownVideoFrame(const AppState& s) {
   if (!s.video) return 0;
   const VideoSession& v = *s.video;
   if (!v.marking)
-    if (const auto fit = videoFitFrames(s)) return fit->first + clipFrameAt(*s.clip, s.view.playback.cycles);
+    if (const auto fit = videoFitFrames(s)) return fit->first + clipFrameAt(*s.clip(), s.view.playback.cycles);
   return v.frame;
 }
 
@@ -539,8 +539,8 @@ bool stepsVideoFrames(const AppState& s) {
 namespace {
 
 bool stepsClipFrames(const AppState& s) {
-  return s.doc.mode == Mode::Clip && s.clip && s.clip->rec.trial.frameCount > 0 &&
-         s.clip->rec.fit.strideHz > 0.0;
+  return s.doc.mode == Mode::Clip && s.clip() && s.clip()->rec.trial.frameCount > 0 &&
+         s.clip()->rec.fit.strideHz > 0.0;
 }
 
 }  // namespace
@@ -549,8 +549,8 @@ void stepFrame(AppState& s, int delta) {
   if (stepsVideoFrames(s)) {
     setVideoFrame(s, shownVideoFrame(s) + delta);
   } else if (stepsClipFrames(s)) {
-    const int n = s.clip->rec.trial.frameCount;
-    const int shown = clipFrameAt(*s.clip, s.view.playback.cycles);
+    const int n = s.clip()->rec.trial.frameCount;
+    const int shown = clipFrameAt(*s.clip(), s.view.playback.cycles);
     setClipFrame(s, ((shown + delta) % n + n) % n + 1);
   } else {
     s.view.playback.step(delta, playbackStrideHz(s));
@@ -577,7 +577,7 @@ void advancePlayback(AppState& s, double seconds) {
 
 double frameStepS(const AppState& s) {
   if (stepsVideoFrames(s) && s.video->fps() > 0.0) return 1.0 / s.video->fps();
-  if (stepsClipFrames(s) && s.clip->rec.trial.rateHz > 0.0) return 1.0 / s.clip->rec.trial.rateHz;
+  if (stepsClipFrames(s) && s.clip()->rec.trial.rateHz > 0.0) return 1.0 / s.clip()->rec.trial.rateHz;
   return 1.0 / 60.0;
 }
 
@@ -693,7 +693,7 @@ void pollVideo(AppState& s) {
   c.tracked = v.tracked->trial;
   s.doc.clip = c;
   s.doc.mode = Mode::Clip;
-  s.jobs.clipFailed.reset();
+  s.jobs.clip.retry();
   // A joint let go while this track ran, which finished before it saw the cancel.
   if (v.trackAgainWhenStopped) trackAgain(s);
 }
