@@ -375,8 +375,9 @@ void pollJobs(AppState& s) {
   try {
     startClipFit(s);
   } catch (const std::exception& e) {
-    s.jobs.clip.fail(*s.doc.clip, e.what());
-    clipFailed(s, *s.doc.clip, e.what());
+    const ClipSettings settings = *s.doc.clip;  // a copy: clipFailed may change doc.clip
+    s.jobs.clip.fail(settings, e.what());
+    clipFailed(s, settings, e.what());
   }
   if (auto done = s.jobs.summary.poll(); done && !done->ok())
     s.log.error("Data summary failed: " + done->error);
