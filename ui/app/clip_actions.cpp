@@ -5,9 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <random>
 #include <stdexcept>
-#include <string_view>
 
 #include "core/camera/focal_length.h"
 #include "core/common/errors.h"
@@ -17,8 +15,6 @@
 #include "ui/app/actions.h"
 #include "ui/app/actions_internal.h"
 #include "ui/app/held_model.h"
-#include "ui/app/script.h"
-#include "ui/app/state_json.h"
 #include "video/video_beside.h"
 
 namespace ew::ui::actions {

@@ -3,17 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <random>
 #include <stdexcept>
-#include <string_view>
 
 #include "core/engine/model.h"
 #include "ui/app/actions.h"
 #include "ui/app/actions_internal.h"
-#include "ui/app/script.h"
-#include "ui/app/state_json.h"
 
 namespace ew::ui::actions {
 

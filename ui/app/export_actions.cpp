@@ -3,11 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <numbers>
-#include <random>
 #include <stdexcept>
-#include <string_view>
 
 #include "core/common/errors.h"
 #include "core/engine/model.h"
@@ -21,7 +17,6 @@
 #include "ui/app/actions.h"
 #include "ui/app/actions_internal.h"
 #include "ui/app/held_model.h"
-#include "ui/app/script.h"
 #include "ui/app/state_json.h"
 
 namespace ew::ui::actions {

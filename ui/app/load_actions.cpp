@@ -3,11 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <numbers>
-#include <random>
 #include <stdexcept>
-#include <string_view>
 
 #include "core/common/errors.h"
 #include "core/engine/model.h"
@@ -15,8 +11,6 @@
 #include "ui/app/actions.h"
 #include "ui/app/actions_internal.h"
 #include "ui/app/held_model.h"
-#include "ui/app/script.h"
-#include "ui/app/state_json.h"
 #include "ui/app/video_poll.h"
 
 namespace ew::ui::actions {

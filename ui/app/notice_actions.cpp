@@ -3,9 +3,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <numbers>
-#include <random>
 #include <stdexcept>
 #include <string_view>
 
@@ -14,8 +11,6 @@
 #include "ui/app/actions.h"
 #include "ui/app/actions_internal.h"
 #include "ui/app/held_model.h"
-#include "ui/app/script.h"
-#include "ui/app/state_json.h"
 
 namespace ew::ui::actions {
 

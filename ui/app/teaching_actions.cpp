@@ -3,16 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <numbers>
-#include <random>
 #include <stdexcept>
-#include <string_view>
 
 #include "ui/app/actions.h"
 #include "ui/app/actions_internal.h"
 #include "ui/app/script.h"
-#include "ui/app/state_json.h"
 #include "ui/app/theme.h"
 #include "ui/app/tour.h"
 
