@@ -1,4 +1,4 @@
-// The viewer's video actions without a window (ui/app/video_actions.cpp): a joint let go while a
+// The viewer's video actions without a window (ui/app/video_actions.h): a joint let go while a
 // track runs stops that track and tracks again with the new keyframe. The running track may see
 // the cancel or finish first (the test cannot choose which); either way it is tracked again.
 

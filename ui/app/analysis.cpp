@@ -65,18 +65,6 @@ AnalysisResult computeAnalysis(const AnalysisWalkers& from, const AnalysisKey& k
   return r;
 }
 
-std::shared_ptr<const AnalysisResult> AnalysisCache::find(const AnalysisKey& key) const {
-  for (const auto& r : results)
-    if (r->key == key) return r;
-  return nullptr;
-}
-
-void AnalysisCache::add(std::shared_ptr<const AnalysisResult> result) {
-  std::erase_if(results, [&](const auto& r) { return r->key == result->key; });
-  results.push_back(std::move(result));
-  if (results.size() > 6) results.erase(results.begin());
-}
-
 namespace {
 
 double metricValue(const ViewErrorRow& row, ErrorMetric m) {

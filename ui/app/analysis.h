@@ -58,13 +58,6 @@ struct AnalysisResult {
   double seconds = 0.0;                    // wall time of the computation
 };
 
-// Finished results by key (the last few), so going back to earlier settings is instant.
-struct AnalysisCache {
-  std::vector<std::shared_ptr<const AnalysisResult>> results;  // newest last, at most 6
-  std::shared_ptr<const AnalysisResult> find(const AnalysisKey& key) const;
-  void add(std::shared_ptr<const AnalysisResult> result);
-};
-
 // Runs the evaluation; progress(done, total, what). Throws on failure.
 AnalysisResult computeAnalysis(const AnalysisWalkers& walkers, const AnalysisKey& key, const ProgressFn& progress);
 

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "ui/app/actions.h"
+#include "ui/app/app_platform.h"
 #include "ui/app/app_state.h"
 #include "ui/app/layout.h"
 #include "ui/app/overflow.h"
@@ -43,115 +44,7 @@ namespace ew::ui {
 
 namespace {
 
-// [SECTION] Platform: GLFW and Dear ImGui lifetimes
-
-void glfwErrorCallback(int code, const char* description) {
-  std::fprintf(stderr, "eigenwalker: GLFW error %d: %s\n", code, description);
-}
-
-struct GlfwSession {
-  GlfwSession() {
-    glfwSetErrorCallback(glfwErrorCallback);
-    if (!glfwInit()) throw std::runtime_error("cannot initialise GLFW (no display?)");
-  }
-  ~GlfwSession() { glfwTerminate(); }
-  GlfwSession(const GlfwSession&) = delete;
-  GlfwSession& operator=(const GlfwSession&) = delete;
-};
-
-struct WindowDeleter {
-  void operator()(GLFWwindow* w) const { glfwDestroyWindow(w); }
-};
-using WindowPtr = std::unique_ptr<GLFWwindow, WindowDeleter>;
-
-WindowPtr createWindow(int width, int height) {
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-  // The window only shows ImGui and the views' finished images: no depth or stencil
-  // buffer (llvmpipe clears one tile by tile, a third of a 1600×900 frame's time).
-  glfwWindowHint(GLFW_DEPTH_BITS, 0);
-  glfwWindowHint(GLFW_STENCIL_BITS, 0);
-  WindowPtr window(glfwCreateWindow(width, height, "Eigenwalker", nullptr, nullptr));
-  if (!window) throw std::runtime_error("cannot create an OpenGL 3.3 core window");
-  glfwMakeContextCurrent(window.get());
-  return window;
-}
-
-struct ImGuiSession {
-  explicit ImGuiSession(GLFWwindow* window) {
-    IMGUI_CHECKVERSION();
-    ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; nothing to save
-    if (!ImGui_ImplGlfw_InitForOpenGL(window, true)) throw std::runtime_error("ImGui GLFW backend failed");
-    if (!ImGui_ImplOpenGL3_Init("#version 330")) throw std::runtime_error("ImGui OpenGL3 backend failed");
-  }
-  ~ImGuiSession() {
-    ImGui_ImplOpenGL3_Shutdown();
-    ImGui_ImplGlfw_Shutdown();
-    ImGui::DestroyContext();
-  }
-  ImGuiSession(const ImGuiSession&) = delete;
-  ImGuiSession& operator=(const ImGuiSession&) = delete;
-};
-
-// [SECTION] Frame timing for --bench-frames
-
-struct FrameStats {
-  std::vector<double> ms;
-  std::string json() const {
-    std::vector<double> v = ms;
-    std::sort(v.begin(), v.end());
-    auto pick = [&](double q) {
-      if (v.empty()) return 0.0;
-      const auto i = static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5);
-      return v[std::min(i, v.size() - 1)];
-    };
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "{\"frames\": %zu, \"median_ms\": %.3f, \"p95_ms\": %.3f, \"max_ms\": %.3f}",
-                  v.size(), pick(0.5), pick(0.95), v.empty() ? 0.0 : v.back());
-    return buf;
-  }
-};
-
 // [SECTION] The application
-
-// Draws with another set of fonts (presentation mode's larger ones) until it goes out of scope:
-// the panels read AppState::fonts and ImGui's current font.
-class ScopedFonts {
- public:
-  ScopedFonts(AppState& s, const Fonts& fonts) : state_(s), saved_(s.fonts) {
-    s.fonts = fonts;
-    if (fonts.body) ImGui::PushFont(fonts.body);
-  }
-  ~ScopedFonts() {
-    if (state_.fonts.body) ImGui::PopFont();
-    state_.fonts = saved_;
-  }
-  ScopedFonts(const ScopedFonts&) = delete;
-  ScopedFonts& operator=(const ScopedFonts&) = delete;
-
- private:
-  AppState& state_;
-  Fonts saved_;
-};
-
-// Text drawn `factor` times its size until it goes out of scope (ImGui's global font scale,
-// which windows begun meanwhile take up).
-class ScopedFontScale {
- public:
-  explicit ScopedFontScale(float factor) : saved_(ImGui::GetIO().FontGlobalScale) {
-    ImGui::GetIO().FontGlobalScale = factor;
-  }
-  ~ScopedFontScale() { ImGui::GetIO().FontGlobalScale = saved_; }
-  ScopedFontScale(const ScopedFontScale&) = delete;
-  ScopedFontScale& operator=(const ScopedFontScale&) = delete;
-
- private:
-  float saved_;
-};
 
 // EIGENWALKER_PRESENT=swap: show frames by swapping buffers even where copying only the
 // changed rectangles is possible (docs/VIEWER_DESIGN.md, "Frame time").

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ui/app/analysis.h"
+#include "ui/app/async_cache.h"
 #include "ui/app/background_job.h"
 #include "ui/app/data_summary.h"
 #include "ui/app/derived.h"
@@ -89,17 +90,14 @@ struct LoadedData {
 struct Jobs {
   BackgroundJob<std::shared_ptr<const Population>> load;
   BackgroundJob<std::shared_ptr<const ModelSet>> models;
-  BackgroundJob<std::shared_ptr<const AnalysisResult>> analysis;  // the analysis panel's curves
-  BackgroundJob<std::shared_ptr<const DataSummary>> summary;      // the Data window's table
-  BackgroundJob<std::shared_ptr<const ClipResult>> clip;           // a keypoint clip's camera fit
   BackgroundJob<std::shared_ptr<const TrackedVideo>> track;  // joints tracked through a video
   BackgroundJob<std::shared_ptr<const DetectedVideo>> detect;  // people found in a video
-  ClipSettings clipRunning;                  // the settings of the running clip fit
-  std::optional<ClipSettings> clipFailed;    // not retried until the settings change
-  std::string clipError;                     // why that fit failed (the controls show it)
-  AnalysisKey analysisRunning;            // the key of the running analysis job
-  std::optional<AnalysisKey> analysisFailed;  // not retried until the inputs change
-  std::string analysisError;
+  // Slow derived work, kept by the inputs it was computed from (ui/app/async_cache.h).
+  // A keypoint clip's camera fit, by its settings; latest() is the last fit that succeeded
+  // (AppState::clip()), error() why the last one failed (the controls show it).
+  AsyncCache<ClipSettings, ClipResult> clip{1};
+  AsyncCache<AnalysisKey, AnalysisResult> analysis{6};  // the analysis panel's curves
+  AsyncCache<std::uint64_t, DataSummary> summary{1};    // the Data window's table, by generation
   // An open requested while a load was running: started when it finishes.
   std::optional<OpenRequest> pendingOpen;
   OpenRequest loading;                   // the open under way (or the last one)
@@ -173,9 +171,8 @@ struct AppState {
   Derived derived;
   Jobs jobs;
   Exports exports;
-  AnalysisCache analysis;
-  std::shared_ptr<const DataSummary> dataSummary;  // of the current generation, once computed
-  std::shared_ptr<const ClipResult> clip;          // the last clip fit that succeeded
+  // The last clip fit that succeeded (kept by jobs.clip).
+  const std::shared_ptr<const ClipResult>& clip() const { return jobs.clip.latest(); }
   std::optional<VideoSession> video;               // the video open (Mode::Clip shows it)
   Log log;
   Fonts fonts;

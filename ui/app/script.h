@@ -15,6 +15,20 @@ namespace ew::ui {
 
 struct AppState;
 
+// What an action leaves the runner to wait for before the next one (ScriptRunner::step).
+struct ScriptWaits {
+  int failuresBefore = 0;
+  bool checkLoad = false;      // it started work whose failure fails the script (a load, a fit…)
+  bool expectFailure = false;  // … and that work must fail (expect_failure)
+  int exportFailuresBefore = 0;
+  bool checkExport = false;  // it started a PNG / video export
+  int frames = 0;            // frames to draw before the next action (wait_frames, mouse)
+  std::optional<std::filesystem::path> capture;  // a screenshot, once the work is done
+
+  // The work just started: its failure (jobs.failures moving on) fails the script.
+  void load(const AppState& s);
+};
+
 struct ScriptAction {
   std::string name;
   nlohmann::json argument;
@@ -26,9 +40,9 @@ struct ScriptAction {
 std::vector<ScriptAction> readScript(const std::filesystem::path& file);
 std::vector<ScriptAction> parseScript(const nlohmann::json& script, const std::string& name);
 
-// Applies one action that needs no waiting (everything except open, wait_frames,
-// screenshot, export_png and export_video, which only a ScriptRunner can wait for): the
-// guided tour's steps go through it too. Throws std::invalid_argument on a bad argument.
+// Applies one action that needs no waiting (every action of the table in script_actions.h
+// but those only a ScriptRunner can wait for: open, wait_frames, screenshot, export_png…):
+// the guided tour's steps go through it too. Throws std::invalid_argument on a bad argument.
 void applyAction(AppState& s, const ScriptAction& a);
 
 class ScriptRunner {
@@ -41,8 +55,8 @@ class ScriptRunner {
   // A screenshot to write at the end of this frame, if one is due (taken once).
   std::optional<std::filesystem::path> takeCapture();
 
-  bool active() const { return !actions_.empty() || waitFrames_ > 0 || capture_; }
-  bool finished() const { return next_ >= actions_.size() && waitFrames_ == 0 && !capture_ && !checkExport_; }
+  bool active() const { return !actions_.empty() || waits_.frames > 0 || capture_; }
+  bool finished() const { return next_ >= actions_.size() && waits_.frames == 0 && !capture_ && !waits_.checkExport; }
   bool failed() const { return !error_.empty(); }
   const std::string& error() const { return error_; }
 
@@ -50,20 +64,10 @@ class ScriptRunner {
   void requestCapture(std::filesystem::path file);
 
  private:
-  void apply(AppState& s, const ScriptAction& a);
-  // {"expect_failure": {NAME: ARG}}: the action (or the load it starts) must fail; the failure
-  // is shown as in an interactive session and the script goes on.
-  void applyExpectingFailure(AppState& s, const ScriptAction& a);
-
   std::vector<ScriptAction> actions_;
   std::string name_;
   std::size_t next_ = 0;
-  int waitFrames_ = 0;
-  int failuresBefore_ = 0;
-  bool checkLoad_ = false;                     // the last action opened data
-  bool expectFailure_ = false;                 // … and that open must fail
-  int exportFailuresBefore_ = 0;
-  bool checkExport_ = false;                   // the last action started a PNG / video export
+  ScriptWaits waits_;  // what the last action left to wait for
   std::optional<std::filesystem::path> capture_;
   int captureSettle_ = 0;
   bool captureDue_ = false;

@@ -144,11 +144,11 @@ nlohmann::json clipJson(const AppState& s) {
                       {"azimuth_deg_fixed", optionalJson(c.alphaDeg)},
                       {"elevation_deg_fixed", optionalJson(c.elevationDeg)},
                       {"image_size_given", imageSizeJson(c.imageSize)},
-                      {"fit_error", s.jobs.clipError},
+                      {"fit_error", s.jobs.clip.error()},
                       {"source", c.tracked ? "track" : c.detected ? "detections" : "file"},
                       {"corrections", c.corrections ? c.corrections->keyframes.size() : 0}};
-  if (!s.clip) return j;
-  const ClipResult& r = *s.clip;
+  if (!s.clip()) return j;
+  const ClipResult& r = *s.clip();
   const CameraFit& f = r.rec.fit;
   const bool pinhole = f.camera.model == CameraModel::Pinhole;
   std::vector<double> residuals(r.rec.residualRmsPx.begin(), r.rec.residualRmsPx.end());

@@ -1,5 +1,7 @@
-// The video actions of ui/app/actions.h ([SECTION] Video): opening, scrubbing, marking
-// keyframes with undo, and tracking on a worker whose track becomes a keypoint clip.
+// The video actions (ui/app/video_actions.h): opening, scrubbing, marking keyframes with undo,
+// and tracking on a worker whose track becomes a keypoint clip (picked up in video_poll.cpp).
+#include "ui/app/video_actions.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -217,7 +219,7 @@ void setVideoZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
 }
 
 void setClipZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
-  if (!s.clip) throw std::invalid_argument("no keypoint clip is shown");
+  if (!s.clip()) throw std::invalid_argument("no keypoint clip is shown");
   if (!std::isfinite(zoom) || !centrePx.allFinite()) throw std::invalid_argument("clip zoom: not a number");
   s.view.clipZoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
   s.view.clipZoomCentreX = centrePx.x();
@@ -481,7 +483,7 @@ void fitDetections(AppState& s) {
   c.video = keypointVideoOf(*v.detected);
   s.doc.clip = c;
   s.doc.mode = Mode::Clip;
-  s.jobs.clipFailed.reset();
+  s.jobs.clip.retry();
 }
 
 std::vector<KeypointDetection> detectionsOn(const AppState& s, int frame) {
@@ -502,13 +504,13 @@ void closeVideo(AppState& s) {
 }
 
 bool showsTrackFit(const AppState& s) {
-  return s.video && s.clip && s.video->tracked && s.clip->settings.tracked &&
-         s.clip->settings.tracked == s.video->tracked->trial;
+  return s.video && s.clip() && s.video->tracked && s.clip()->settings.tracked &&
+         s.clip()->settings.tracked == s.video->tracked->trial;
 }
 
 bool showsDetectionFit(const AppState& s) {
-  return s.video && s.clip && s.video->detected && s.clip->settings.detected &&
-         s.clip->settings.detected == s.video->detected->frames;
+  return s.video && s.clip() && s.video->detected && s.clip()->settings.detected &&
+         s.clip()->settings.detected == s.video->detected->frames;
 }
 
 bool correctsDetections(const AppState& s) {
@@ -520,7 +522,7 @@ bool showsVideoFit(const AppState& s) { return showsTrackFit(s) || showsDetectio
 std::optional<std::pair<int, int>> videoFitFrames(const AppState& s) {
   if (showsTrackFit(s)) return std::pair{s.video->tracked->track.firstFrame, s.video->tracked->lastFrame()};
   // The detector's clip numbers its frames as the video does (keypointFramesOf).
-  if (showsDetectionFit(s)) return std::pair{0, std::max(s.clip->rec.trial.frameCount - 1, 0)};
+  if (showsDetectionFit(s)) return std::pair{0, std::max(s.clip()->rec.trial.frameCount - 1, 0)};
   return std::nullopt;
 }
 
@@ -528,7 +530,7 @@ int shownVideoFrame(const AppState& s) {
   if (!s.video) return 0;
   const VideoSession& v = *s.video;
   if (!v.marking)
-    if (const auto fit = videoFitFrames(s)) return fit->first + clipFrameAt(*s.clip, s.view.playback.cycles);
+    if (const auto fit = videoFitFrames(s)) return fit->first + clipFrameAt(*s.clip(), s.view.playback.cycles);
   return v.frame;
 }
 
@@ -539,8 +541,8 @@ bool stepsVideoFrames(const AppState& s) {
 namespace {
 
 bool stepsClipFrames(const AppState& s) {
-  return s.doc.mode == Mode::Clip && s.clip && s.clip->rec.trial.frameCount > 0 &&
-         s.clip->rec.fit.strideHz > 0.0;
+  return s.doc.mode == Mode::Clip && s.clip() && s.clip()->rec.trial.frameCount > 0 &&
+         s.clip()->rec.fit.strideHz > 0.0;
 }
 
 }  // namespace
@@ -549,8 +551,8 @@ void stepFrame(AppState& s, int delta) {
   if (stepsVideoFrames(s)) {
     setVideoFrame(s, shownVideoFrame(s) + delta);
   } else if (stepsClipFrames(s)) {
-    const int n = s.clip->rec.trial.frameCount;
-    const int shown = clipFrameAt(*s.clip, s.view.playback.cycles);
+    const int n = s.clip()->rec.trial.frameCount;
+    const int shown = clipFrameAt(*s.clip(), s.view.playback.cycles);
     setClipFrame(s, ((shown + delta) % n + n) % n + 1);
   } else {
     s.view.playback.step(delta, playbackStrideHz(s));
@@ -577,125 +579,8 @@ void advancePlayback(AppState& s, double seconds) {
 
 double frameStepS(const AppState& s) {
   if (stepsVideoFrames(s) && s.video->fps() > 0.0) return 1.0 / s.video->fps();
-  if (stepsClipFrames(s) && s.clip->rec.trial.rateHz > 0.0) return 1.0 / s.clip->rec.trial.rateHz;
+  if (stepsClipFrames(s) && s.clip()->rec.trial.rateHz > 0.0) return 1.0 / s.clip()->rec.trial.rateHz;
   return 1.0 / 60.0;
 }
 
 }  // namespace ew::ui::actions
-
-namespace ew::ui {
-
-namespace {
-
-// The track asked for again after an edit that came while one ran (actions::letGoOfJoint).
-void trackAgain(AppState& s) {
-  s.video->trackAgainWhenStopped = false;
-  try {
-    actions::startTracking(s);
-  } catch (const std::exception& e) {
-    s.log.error(e.what());
-  }
-}
-
-}  // namespace
-
-// A frame the stream does not have (a file cut short, a damaged frame) is said once, in the
-// banner, with how long the video now is: scrubbing never shows it, it only stops short.
-void reportDecodingError(AppState& s) {
-  if (!s.video || !s.video->frames) return;
-  VideoSession& v = *s.video;
-  const std::string error = v.frames->error();
-  if (error.empty() || error == v.decodeErrorShown) return;
-  v.decodeErrorShown = error;
-  actions::reportError(s, "Part of " + v.path.filename().string() + " cannot be decoded",
-                       error + "; the video is taken to end after " + std::to_string(v.frameCount()) +
-                           (v.frameCount() == 1 ? " frame" : " frames"));
-}
-
-namespace {
-
-// A finished detection: the walker's keypoints fitted as the clip; nobody found, or a
-// detection that failed, said in the banner; a cancelled one logged.
-void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>& outcome) {
-  VideoSession& v = *s.video;
-  const std::string name = v.path.filename().string();
-  v.detecting.reset();
-  v.followDetection = false;
-  if (!outcome.value) {
-    if (outcome.error.find("cancelled") != std::string::npos) {
-      s.log.info("Detection cancelled");
-      return;
-    }
-    ++s.jobs.failures;
-    v.detectError = outcome.error;
-    actions::reportError(s, "Could not detect people in " + name, outcome.error);
-    s.jobs.notice->shortTitle = "Detection failed";
-    return;
-  }
-  v.detected = *outcome.value;
-  const DetectedVideo& d = *v.detected;
-  s.log.info("Detected in " + name + ": " + detectionSummary(d));
-  for (const auto& w : d.warnings) s.log.warning(w);
-  if (d.people == 0) {
-    ++s.jobs.failures;
-    v.detectError = "nobody found in its " + std::to_string(d.framesRead) + " frames";
-    actions::reportError(s, "Nobody found in " + name,
-                         "the detector found no person in its " + std::to_string(d.framesRead) +
-                             " frames. Mark the walker's joints on one frame and track them (Mark the joints).");
-    s.jobs.notice->shortTitle = "Nobody found";
-    v.frame = 0;
-    return;
-  }
-  v.showWalkerWhenFitted = true;
-  actions::fitDetections(s);
-}
-
-}  // namespace
-
-void pollVideo(AppState& s) {
-  reportDecodingError(s);
-  if (auto detection = s.jobs.detect.poll()) {
-    // A detection of a video closed since is no detection of this one.
-    if (s.video && (!detection->value || (*detection->value)->video == s.video->path)) takeDetection(s, *detection);
-  }
-  if (s.video && s.video->detecting && s.video->followDetection)
-    s.video->frame = std::max(s.video->detecting->latestFrame(), 0);
-  auto outcome = s.jobs.track.poll();
-  if (!outcome || !s.video) return;
-  VideoSession& v = *s.video;
-  // A track of a video closed since (cancelled, or finished first) is no track of this one.
-  if (outcome->value && (*outcome->value)->video != v.path) return;
-  if (!outcome->value) {
-    const bool cancelled = outcome->error.find("cancelled") != std::string::npos;
-    v.trackError = cancelled ? "" : outcome->error;
-    if (cancelled && v.trackAgainWhenStopped) {
-      trackAgain(s);
-      return;
-    }
-    if (cancelled) {
-      s.log.info("Tracking cancelled");
-    } else {
-      ++s.jobs.failures;
-      actions::reportError(s, "Could not track " + v.path.filename().string(), outcome->error);
-    }
-    return;
-  }
-  v.tracked = *outcome->value;
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "Tracked %s%d frames (%d-%d) in %.1f s (%.0f frames/s)",
-                v.tracked->ranPart() ? "again " : "", v.tracked->framesRan(), v.tracked->ranFirst,
-                v.tracked->ranLast, v.tracked->seconds, v.tracked->framesRan() / std::max(v.tracked->seconds, 1e-9));
-  s.log.info(buf);
-  for (const auto& w : v.tracked->trial->warnings) s.log.warning(w);
-  // Fitted as a clip, keeping the camera values the user held for this video.
-  ClipSettings c = s.doc.clip && s.doc.clip->path == v.path ? *s.doc.clip : ClipSettings{};
-  c.path = v.path;
-  c.tracked = v.tracked->trial;
-  s.doc.clip = c;
-  s.doc.mode = Mode::Clip;
-  s.jobs.clipFailed.reset();
-  // A joint let go while this track ran, which finished before it saw the cancel.
-  if (v.trackAgainWhenStopped) trackAgain(s);
-}
-
-}  // namespace ew::ui

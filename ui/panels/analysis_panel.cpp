@@ -96,7 +96,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
     return;
   }
   actions::requestAnalysis(s);
-  const auto result = s.analysis.find(actions::analysisKey(s));
+  const auto result = s.jobs.analysis.find(actions::analysisKey(s));
   // The selected walker's own curves when it is one of the analysed subjects.
   const std::string subject = actions::analysisSubject(s);
 
@@ -104,8 +104,8 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
   if (s.jobs.analysis.running()) {
     ImGui::ProgressBar(s.jobs.analysis.fraction(), ImVec2(-1.0f, 0.0f),
                        ("computing: " + s.jobs.analysis.what()).c_str());
-  } else if (!s.jobs.analysisError.empty()) {
-    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", s.jobs.analysisError.c_str());
+  } else if (!s.jobs.analysis.error().empty()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.5f, 1.0f), "%s", ("Analysis failed: " + s.jobs.analysis.error()).c_str());
   } else if (result) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     ImGui::TextWrapped("%zu held-out subjects of %s · σ² = %.0f mm² · N = %s · %.1f s (cached by inputs)%s%s",
@@ -118,7 +118,7 @@ void AnalysisPanel::draw(AppState& s, const FrameContext& ctx) {
     ImGui::PopStyleColor();
   }
   if (!result) {
-    if (!s.jobs.analysis.running() && s.jobs.analysisError.empty()) ImGui::TextDisabled("waiting for data…");
+    if (!s.jobs.analysis.running() && s.jobs.analysis.error().empty()) ImGui::TextDisabled("waiting for data…");
     ImGui::End();
     return;
   }

@@ -122,7 +122,7 @@ static void drawCameraHolds(AppState& s, const ClipSettings& c, const ClipResult
 void drawClipControls(AppState& s) {
   if (!s.doc.clip) return;
   const ClipSettings c = *s.doc.clip;
-  const ClipResult* r = s.clip.get();
+  const ClipResult* r = s.clip().get();
   if (c.detected) {
     // The detector's clip: its source is the video above; who walks can be picked.
     if (r && r->rec.trial.people.size() > 1) {
@@ -184,9 +184,9 @@ static void drawCameraHolds(AppState& s, const ClipSettings& c, const ClipResult
 
   if (s.jobs.clip.running()) {
     ImGui::TextDisabled("fitting…");
-  } else if (!s.jobs.clipError.empty() && s.jobs.clipFailed == s.doc.clip) {
+  } else if (!s.jobs.clip.error().empty() && s.doc.clip && s.jobs.clip.failed(*s.doc.clip)) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.55f, 1.0f));
-    ImGui::TextWrapped("These settings do not fit: %s", s.jobs.clipError.c_str());
+    ImGui::TextWrapped("These settings do not fit: %s", s.jobs.clip.error().c_str());
     ImGui::PopStyleColor();
   } else if (r) {
     ImGui::TextDisabled("fitted in %.0f ms", 1000.0 * r->seconds);

@@ -174,7 +174,7 @@ void DataPanel::draw(AppState& s, const FrameContext& ctx) {
     // [SECTION] Summary: one row per trial, warnings, overrides
     if (ImGui::BeginTabItem("Summary")) {
       actions::requestDataSummary(s);
-      const auto& d = s.dataSummary;
+      const auto& d = s.jobs.summary.latest();
       if (s.doc.sourcePaths.empty()) {
         ImGui::TextDisabled("The synthetic default population has no files.");
       } else if (s.jobs.summary.running()) {

@@ -204,7 +204,7 @@ std::vector<std::string> clipLines(const ClipResult& c) {
 std::vector<std::string> modelLines(const AppState& s) {
   std::string full, medium, brief;
   if (s.doc.mode == Mode::Clip) {
-    if (s.clip) return clipLines(*s.clip);
+    if (s.clip()) return clipLines(*s.clip());
     return {"", "", "", ""};
   }
   if (s.doc.mode == Mode::Reconstruct) {

@@ -185,7 +185,7 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
   const ImVec2 p1{p0.x + size.x, p0.y + size.y};
   const float pad = 10.0f * ctx.scale;
   const ViewCaption caption = clipInputCaption(s, shown, true);
-  const ImRect walker = clipWalkerRect(*s.clip, shown, p0, size, frame);
+  const ImRect walker = clipWalkerRect(*s.clip(), shown, p0, size, frame);
   const ImRect captionRect = drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle,
                                          s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), walker);
   const float screenPerPx = size.y / frame.heightPx;
@@ -199,7 +199,7 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
   const ImRect barRect(ImVec2(barLeft.x, barLeft.y - ImGui::GetTextLineHeight() - 6.0f * ctx.scale),
                        ImVec2(barLeft.x + len, barLeft.y + 5.0f * ctx.scale));
   if (!overlaps(barRect, legendRect) && !overlaps(barRect, walker)) drawScaleBar(dl, barLeft, len, label, ctx.scale);
-  drawOtherPeopleLabels(dl, s.clip->rec.trial, shown, p0, size, frame);
+  drawOtherPeopleLabels(dl, s.clip()->rec.trial, shown, p0, size, frame);
   if (walker.GetWidth() > 0.0f) {
     s.lastFrame.overlay("input.walker", toPanelRect(walker));
     s.lastFrame.overlay("input.caption", toPanelRect(captionRect));
@@ -305,12 +305,12 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
 
 void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
   const float aspect = size.x / size.y;
-  const int frame = s.clip ? clipFrameAt(*s.clip, s.view.playback.cycles) : 0;
-  const ClipImageFrame whole = s.clip ? clipImageFrame(*s.clip, aspect) : ClipImageFrame{};
+  const int frame = s.clip() ? clipFrameAt(*s.clip(), s.view.playback.cycles) : 0;
+  const ClipImageFrame whole = s.clip() ? clipImageFrame(*s.clip(), aspect) : ClipImageFrame{};
   const ClipImageFrame image = zoomedFrame(
       whole, s.view.clipZoom,
       {static_cast<float>(s.view.clipZoomCentreX), static_cast<float>(s.view.clipZoomCentreY)});
-  if (s.clip) zoomAndPanClip(s, p0, size, image);
+  if (s.clip()) zoomAndPanClip(s, p0, size, image);
   const bool drawn = buildClipInputScene(s, scene, ctx.scale, frame, image);
   ctx.renderer.render(target, scene, clipInputCamera(image, aspect));
   ctx.backdrop.image(target, {p0.x, p0.y});
@@ -319,7 +319,7 @@ void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p
   } else {
     drawCentredMessage(ImGui::GetWindowDrawList(), p0, size,
                        s.jobs.clip.running() ? "reading the keypoints and fitting the camera…"
-                                             : unfittedClipMessage(s.jobs.clipError));
+                                             : unfittedClipMessage(s.jobs.clip.error()));
   }
 }
 

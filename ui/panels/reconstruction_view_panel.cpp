@@ -31,7 +31,7 @@ namespace {
 // the view).
 // A message in the middle of the view, wrapped at 0.8 of its width; returns its height.
 void drawWhyNoWalkFits(ImDrawList* dl, const AppState& s, ImVec2 p0, ImVec2 size, float messageHeight) {
-  std::string why = s.jobs.clipError;
+  std::string why = s.jobs.clip.error();
   const std::string file = s.video->path.string() + ": ";
   if (why.rfind(file, 0) == 0) why.erase(0, file.size());
   if (why.empty()) return;
@@ -271,10 +271,10 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       float errorScale = 1.0f;
       const bool clipMode = s.doc.mode == Mode::Clip;
       const bool drawn =
-          clipMode ? buildClipReconstructionScene(s, scene, ctx.scale, s.clip ? clipFrameAt(*s.clip, s.view.playback.cycles) : 0)
+          clipMode ? buildClipReconstructionScene(s, scene, ctx.scale, s.clip() ? clipFrameAt(*s.clip(), s.view.playback.cycles) : 0)
                    : buildReconstructionScene(s, scene, ctx.scale, s.view.playback.cycles, &errorScale);
       const float aspect = size.x / size.y;
-      const OrbitCamera view = clipMode && s.clip ? clipViewCamera(s.view.camera, *s.clip, clipFrameAt(*s.clip, s.view.playback.cycles))
+      const OrbitCamera view = clipMode && s.clip() ? clipViewCamera(s.view.camera, *s.clip(), clipFrameAt(*s.clip(), s.view.playback.cycles))
                                                   : s.view.camera;
       const ViewCaption caption = walkerReconstructionCaption(s);
       const char* title = caption.title.c_str();
@@ -324,7 +324,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
                                  : detected                ? "no walk fits the people detected"
                                  : s.video->detected       ? "nobody detected: mark the joints on one frame, then Track"
                                                            : "detect the walker, or mark the joints on one frame, then Track")
-                          : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : unfittedClipMessage(s.jobs.clipError))
+                          : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : unfittedClipMessage(s.jobs.clip.error()))
                           : s.jobs.busy() ? "building models…" : "nothing to show";
         const float height = drawCentredMessage(dl, p0, size, msg);
         if (unfitted) drawWhyNoWalkFits(dl, s, p0, size, height);

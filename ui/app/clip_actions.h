@@ -1,0 +1,36 @@
+#pragma once
+// Keypoint clips (clip_actions.cpp): opening one, the fit's settings, its frames.
+// Part of the viewer's actions (ui/app/actions.h): each validates its argument and throws
+// std::invalid_argument with a readable message when it cannot apply.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "ui/app/app_state.h"
+
+namespace ew::ui::actions {
+
+// [SECTION] Keypoint clips (ui/app/clip.h, docs/VIEWER.md "Keypoint clips")
+// True for what openClip takes: an OpenPose folder, a keypoint JSON, a MediaPipe / DLC CSV.
+bool isKeypointClip(const std::filesystem::path& path);
+// Opens a pose estimator's clip in Mode::Clip; its camera fit runs in the background. A clip
+// that cannot be read or fitted is reported as a failed open, and what was shown stays.
+void openClip(AppState& s, const std::filesystem::path& path);
+// The clip fit's choices, each refitting in the background; nullopt / "" / 0 / -1: estimated,
+// guessed, the file's or 30 fps, the walker. Throw std::invalid_argument for values out of range.
+void setClipFocal(AppState& s, std::optional<double> focalPx);
+void setClipAzimuth(AppState& s, std::optional<double> alphaDeg);
+void setClipElevation(AppState& s, std::optional<double> elevationDeg);
+void setClipLayout(AppState& s, const std::string& layout);
+void setClipFps(AppState& s, double fps);
+void setClipPerson(AppState& s, int person);
+// The image's size in pixels (nullopt: the file's, else the video's beside it); a clip whose
+// points are fractions of the image opens without one and waits for it.
+void setClipImageSize(AppState& s, std::optional<KeypointImageSize> size);
+void closeClip(AppState& s);
+// Shows the clip's frame `frame` (from 1, as the 2D view's caption counts) and pauses.
+void setClipFrame(AppState& s, int frame);
+
+}  // namespace ew::ui::actions

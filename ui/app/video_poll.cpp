@@ -1,0 +1,127 @@
+// Picking up the open video's background work (ui/app/video_poll.h): a detection becomes the
+// clip to fit, a track becomes the clip to fit, and what failed is said in the banner.
+#include "ui/app/video_poll.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "ui/app/actions.h"
+
+namespace ew::ui {
+
+namespace {
+
+// The track asked for again after an edit that came while one ran (actions::letGoOfJoint).
+void trackAgain(AppState& s) {
+  s.video->trackAgainWhenStopped = false;
+  try {
+    actions::startTracking(s);
+  } catch (const std::exception& e) {
+    s.log.error(e.what());
+  }
+}
+
+}  // namespace
+
+// A frame the stream does not have (a file cut short, a damaged frame) is said once, in the
+// banner, with how long the video now is: scrubbing never shows it, it only stops short.
+void reportDecodingError(AppState& s) {
+  if (!s.video || !s.video->frames) return;
+  VideoSession& v = *s.video;
+  const std::string error = v.frames->error();
+  if (error.empty() || error == v.decodeErrorShown) return;
+  v.decodeErrorShown = error;
+  actions::reportError(s, "Part of " + v.path.filename().string() + " cannot be decoded",
+                       error + "; the video is taken to end after " + std::to_string(v.frameCount()) +
+                           (v.frameCount() == 1 ? " frame" : " frames"));
+}
+
+namespace {
+
+// A finished detection: the walker's keypoints fitted as the clip; nobody found, or a
+// detection that failed, said in the banner; a cancelled one logged.
+void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>& outcome) {
+  VideoSession& v = *s.video;
+  const std::string name = v.path.filename().string();
+  v.detecting.reset();
+  v.followDetection = false;
+  if (!outcome.value) {
+    if (outcome.error.find("cancelled") != std::string::npos) {
+      s.log.info("Detection cancelled");
+      return;
+    }
+    ++s.jobs.failures;
+    v.detectError = outcome.error;
+    actions::reportError(s, "Could not detect people in " + name, outcome.error);
+    s.jobs.notice->shortTitle = "Detection failed";
+    return;
+  }
+  v.detected = *outcome.value;
+  const DetectedVideo& d = *v.detected;
+  s.log.info("Detected in " + name + ": " + detectionSummary(d));
+  for (const auto& w : d.warnings) s.log.warning(w);
+  if (d.people == 0) {
+    ++s.jobs.failures;
+    v.detectError = "nobody found in its " + std::to_string(d.framesRead) + " frames";
+    actions::reportError(s, "Nobody found in " + name,
+                         "the detector found no person in its " + std::to_string(d.framesRead) +
+                             " frames. Mark the walker's joints on one frame and track them (Mark the joints).");
+    s.jobs.notice->shortTitle = "Nobody found";
+    v.frame = 0;
+    return;
+  }
+  v.showWalkerWhenFitted = true;
+  actions::fitDetections(s);
+}
+
+}  // namespace
+
+void pollVideo(AppState& s) {
+  reportDecodingError(s);
+  if (auto detection = s.jobs.detect.poll()) {
+    // A detection of a video closed since is no detection of this one.
+    if (s.video && (!detection->value || (*detection->value)->video == s.video->path)) takeDetection(s, *detection);
+  }
+  if (s.video && s.video->detecting && s.video->followDetection)
+    s.video->frame = std::max(s.video->detecting->latestFrame(), 0);
+  auto outcome = s.jobs.track.poll();
+  if (!outcome || !s.video) return;
+  VideoSession& v = *s.video;
+  // A track of a video closed since (cancelled, or finished first) is no track of this one.
+  if (outcome->value && (*outcome->value)->video != v.path) return;
+  if (!outcome->value) {
+    const bool cancelled = outcome->error.find("cancelled") != std::string::npos;
+    v.trackError = cancelled ? "" : outcome->error;
+    if (cancelled && v.trackAgainWhenStopped) {
+      trackAgain(s);
+      return;
+    }
+    if (cancelled) {
+      s.log.info("Tracking cancelled");
+    } else {
+      ++s.jobs.failures;
+      actions::reportError(s, "Could not track " + v.path.filename().string(), outcome->error);
+    }
+    return;
+  }
+  v.tracked = *outcome->value;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "Tracked %s%d frames (%d-%d) in %.1f s (%.0f frames/s)",
+                v.tracked->ranPart() ? "again " : "", v.tracked->framesRan(), v.tracked->ranFirst,
+                v.tracked->ranLast, v.tracked->seconds, v.tracked->framesRan() / std::max(v.tracked->seconds, 1e-9));
+  s.log.info(buf);
+  for (const auto& w : v.tracked->trial->warnings) s.log.warning(w);
+  // Fitted as a clip, keeping the camera values the user held for this video.
+  ClipSettings c = s.doc.clip && s.doc.clip->path == v.path ? *s.doc.clip : ClipSettings{};
+  c.path = v.path;
+  c.tracked = v.tracked->trial;
+  s.doc.clip = c;
+  s.doc.mode = Mode::Clip;
+  s.jobs.clip.retry();
+  // A joint let go while this track ran, which finished before it saw the cancel.
+  if (v.trackAgainWhenStopped) trackAgain(s);
+}
+
+}  // namespace ew::ui
