@@ -3,7 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <initializer_list>
+#include <utility>
+#include <vector>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
@@ -134,6 +138,85 @@ TEST_F(GuiDefault, RepaintingWhatChangedMatchesAFullRedraw) {
 
 TEST_F(GuiDefault, RepaintingWhatChangedMatchesAFullRedrawWhenSwapping) {
   expectRepaintsMatchAFullRedraw(dir, std::string(kNoSettings) + " EIGENWALKER_PRESENT=swap");
+}
+
+// The share of a width × height window covered by the panels named in the layout export_state
+// reported (rectangles [x, y, w, h], which do not overlap).
+double shareOfWindow(const nlohmann::json& layout, std::initializer_list<const char*> panels,
+                     int width, int height) {
+  double area = 0.0;
+  for (const char* name : panels) {
+    const auto& r = layout.at(name);
+    area += r[2].get<double>() * r[3].get<double>();
+  }
+  return area / (static_cast<double>(width) * height);
+}
+
+// During playback only the two views and the playback row change (the walker moves, the
+// phase slider's text counts), so only they may be repainted: under llvmpipe the rest of the
+// window's UI is most of a frame's time (docs/VIEWER.md, "Frame time"). Panels overlapping
+// their neighbours by a pixel once spread every frame's repaint, neighbour by neighbour, over
+// the whole window (issue 54). The bound is exactly what those three panels cover in the
+// layout the viewer reports; the two views, whose images change every frame, are the least.
+// What really changes everything (the theme, the presentation layout) must still repaint the
+// whole window, and every partial repaint must match a full redraw (--check-repaint).
+void expectPlaybackRepaintsOnlyTheViewsAndPlaybackRow(const std::filesystem::path& dir, int width,
+                                                       int height) {
+  const auto exportState = [&](const char* file) {
+    return nlohmann::json{{"export_state", (dir / file).string()}};
+  };
+  const auto wait = [](int frames) { return nlohmann::json{{"wait_frames", frames}}; };
+  nlohmann::json actions = nlohmann::json::parse(
+      R"([{"select_subject": "SYN005"}, {"unknown_angle": true}, {"set_angle": 30}, {"play": true}])");
+  for (const auto& a : {wait(130), exportState("playing.json"), nlohmann::json{{"set_theme", "light"}},
+                        wait(2), exportState("theme.json"), nlohmann::json{{"presentation", true}},
+                        wait(2), exportState("presenting.json")})
+    actions.push_back(a);
+  const auto script = writeScript(dir, actions.dump(2));
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  const RunResult r =
+      runViewer(dir, "--size " + size + " --check-repaint --script " + quote(script.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find(" 0 differ from a full redraw"), std::string::npos) << r.out;
+
+  const auto playing = nlohmann::json::parse(readAll(dir / "playing.json"));
+  ASSERT_TRUE(playing.at("view").at("playing").get<bool>());
+  const auto& layout = playing.at("layout");
+  const double views = shareOfWindow(layout, {"input", "reconstruction"}, width, height);
+  const double bound =
+      shareOfWindow(layout, {"input", "reconstruction", "playback"}, width, height);
+  // The viewer keeps the last 120 frames' shares: 130 frames into playback, all are of it.
+  const auto shares = layout.at("repainted_shares").get<std::vector<double>>();
+  ASSERT_EQ(shares.size(), 120u);
+  const auto [least, most] = std::minmax_element(shares.begin(), shares.end());
+  EXPECT_LE(*most, bound) << size << ": frame " << most - shares.begin()
+                          << " of playback repainted more than the views and the playback row ("
+                          << bound << " of the window)";
+  EXPECT_GE(*least, views) << size << ": frame " << least - shares.begin()
+                           << " of playback did not repaint the views";
+
+  for (const char* changed : {"theme.json", "presenting.json"}) {
+    const auto after = nlohmann::json::parse(readAll(dir / changed))
+                           .at("layout")
+                           .at("repainted_shares")
+                           .get<std::vector<double>>();
+    ASSERT_GE(after.size(), 3u);
+    EXPECT_DOUBLE_EQ(*std::max_element(after.end() - 3, after.end()), 1.0)
+        << size << ": " << changed << ", the window was not repainted whole after it all changed";
+  }
+}
+
+TEST_F(GuiDefault, PlaybackRepaintsOnlyTheViewsAndThePlaybackRow) {
+  expectPlaybackRepaintsOnlyTheViewsAndPlaybackRow(dir, 1600, 900);
+}
+
+TEST_F(GuiDefault, PlaybackRepaintsOnlyTheViewsAndThePlaybackRowAtOtherSizes) {
+  // 1366×768: the side columns' widths are not whole pixels; 1024×768: the drawer layout.
+  for (const auto& [w, h] : {std::pair{1366, 768}, std::pair{1024, 768}}) {
+    const auto sub = dir / (std::to_string(w) + "x" + std::to_string(h));
+    std::filesystem::create_directories(sub);
+    expectPlaybackRepaintsOnlyTheViewsAndPlaybackRow(sub, w, h);
+  }
 }
 
 TEST_F(GuiDefault, FullRedrawStillWorks) {

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -37,9 +38,9 @@ std::vector<Named> drawnPanels(const Layout& l, bool notice) {
 }
 
 bool overlap(const PanelRect& a, const PanelRect& b) {
-  constexpr float kSlack = 0.5f;  // shared edges are not overlaps
-  return a.pos.x + a.size.x > b.pos.x + kSlack && b.pos.x + b.size.x > a.pos.x + kSlack &&
-         a.pos.y + a.size.y > b.pos.y + kSlack && b.pos.y + b.size.y > a.pos.y + kSlack;
+  // Edges are whole pixels (PanelsMeetOnWholePixels): a shared edge is no overlap, one pixel is.
+  return a.pos.x + a.size.x > b.pos.x && b.pos.x + b.size.x > a.pos.x &&
+         a.pos.y + a.size.y > b.pos.y && b.pos.y + b.size.y > a.pos.y;
 }
 
 TEST(Layout, HoldsAtEveryTeachingSizeAndScale) {
@@ -67,7 +68,8 @@ TEST(Layout, HoldsAtEveryTeachingSizeAndScale) {
             EXPECT_FALSE(overlap(panels[i].rect, panels[j].rect)) << cell << ": " << panels[i].name << " and "
                                                                   << panels[j].name;
         for (const PanelRect& view : {l.input, l.reconstruction}) {
-          EXPECT_GE(view.size.x, w / 3.0f - 0.5f) << cell;
+          // Less a pixel: each edge is rounded to a whole pixel, by up to half a pixel.
+          EXPECT_GE(view.size.x, w / 3.0f - 1.0f) << cell;
           EXPECT_GE(view.size.y, 0.35f * h) << cell;
         }
       }
@@ -120,6 +122,35 @@ TEST(Layout, PresentationKeepsOnlyTheViewsAndTheirBar) {
         }
         EXPECT_GE(l.presentationBar.size.x, w - 0.5f) << cell;
       }
+}
+
+bool onWholePixels(const PanelRect& r) {
+  for (float edge : {r.pos.x, r.pos.y, r.pos.x + r.size.x, r.pos.y + r.size.y})
+    if (edge != std::round(edge)) return false;
+  return true;
+}
+
+// Every panel's edges on whole pixels, in every layout. A panel's fill and its Dear ImGui window
+// rounded a fractional edge differently, so neighbours both painted the pixels between them
+// and the repaint of one reached the other, and on through the window: during playback every
+// frame was repainted whole (issue 54).
+TEST(Layout, PanelsMeetOnWholePixels) {
+  const std::pair<float, float> sizes[] = {{1024, 768},  {1280, 720},  {1366, 768},
+                                           {1600, 900}, {1920, 1080}, {3840, 2160}};
+  const float scales[] = {1.0f, 1.3f, 1.5f, 1.95f, 2.0f, 2.6f};
+  for (const auto& [w, h] : sizes)
+    for (float scale : scales)
+      for (bool notice : {false, true})
+        for (const Layout& l :
+             {computeLayout(w, h, scale, notice), computePresentationLayout(w, h, scale, notice)})
+          for (const PanelRect& r :
+               {l.header, l.notice, l.subjects, l.controls, l.metrics, l.input, l.reconstruction,
+                l.playback, l.coefficients, l.jointErrors, l.profile, l.log, l.drawerTabs,
+                l.presentationBar})
+            EXPECT_TRUE(onWholePixels(r))
+                << w << "x" << h << " at " << scale << (notice ? " with the notice row" : "")
+                << (l.presentation ? ", presenting" : "") << ": [" << r.pos.x << ", " << r.pos.y
+                << ", " << r.size.x << ", " << r.size.y << "]";
 }
 
 TEST(Layout, TheDrawersTabsWrapOntoMoreRowsWhenNarrow) {

@@ -534,12 +534,20 @@ class App {
                      state_.view.theme == Theme::Light ? glm::vec4{0.93f, 0.935f, 0.945f, 1.0f}
                                                        : glm::vec4{0.05f, 0.055f, 0.065f, 1.0f},
                      w, h);
+    recordRepaintedShare();
     if (profile_) {
       gl::finish();
       profile_->imgui += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - r0).count();
       profile_->vertices += ImGui::GetDrawData()->TotalVtxCount;
       profile_->repainted += compositor_.lastRepaintedShare();
     }
+  }
+
+  // For export_state (AppState::repaintedShares).
+  void recordRepaintedShare() {
+    auto& shares = state_.repaintedShares;
+    shares.push_back(compositor_.lastRepaintedShare());
+    if (shares.size() > AppState::kRepaintHistoryFrames) shares.pop_front();
   }
 
   AppOptions options_;

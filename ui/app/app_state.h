@@ -5,7 +5,9 @@
 // caches, the background jobs, the log, and one struct per panel (each panel's own
 // state lives in its struct, never in function-local statics).
 
+#include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -179,6 +181,11 @@ struct AppState {
   Fonts presentationFonts;  // the same, kPresentationTextScale larger
   Panels panels;
   FrameRecord lastFrame;
+  // The share of the window's pixels each of the last frames repainted (oldest first; 1 = all,
+  // ui/render/compositor.h). export_state reports them: during playback only the views and
+  // the playback row change, and a test checks that only they are repainted.
+  static constexpr std::size_t kRepaintHistoryFrames = 120;
+  std::deque<double> repaintedShares;
   // The pointer a script drives (its `mouse` action); a scripted run has no other.
   struct ScriptedPointer {
     bool present = false;          // over the window at (x, y), window pixels

@@ -1,6 +1,7 @@
 #include "ui/app/layout.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string_view>
 
 namespace ew::ui {
@@ -84,6 +85,26 @@ Layout drawerLayout(float width, float height, float scale, const Rows& r) {
   return l;
 }
 
+// A rectangle with each edge rounded to the nearest whole pixel: neighbours that share an edge
+// still do, and no pixel belongs to two of them.
+PanelRect onWholePixels(const PanelRect& r) {
+  const float x0 = std::round(r.pos.x), y0 = std::round(r.pos.y);
+  return {{x0, y0}, {std::round(r.pos.x + r.size.x) - x0, std::round(r.pos.y + r.size.y) - y0}};
+}
+
+// Panels meet on whole pixels. Dear ImGui puts a window at whole pixels (it floors its position
+// and size) while the backdrop rounds the window's fill to the nearest, so on a fractional edge
+// both neighbours painted the pixels between them. Repainting what changed spreads to every
+// item touching what it repaints (ui/render/damage.h): from the views, through those shared
+// pixels, panel by panel over the whole window — every frame of playback (issue 54).
+Layout onWholePixels(Layout l) {
+  for (PanelRect* r : {&l.header, &l.notice, &l.subjects, &l.controls, &l.metrics, &l.input,
+                       &l.reconstruction, &l.playback, &l.coefficients, &l.jointErrors, &l.profile,
+                       &l.log, &l.drawerTabs, &l.presentationBar})
+    *r = onWholePixels(*r);
+  return l;
+}
+
 }  // namespace
 
 float noticeRowHeight(float scale) { return 34.0f * scale; }
@@ -102,7 +123,7 @@ Layout computePresentationLayout(float width, float height, float scale, bool no
   l.input = {{0, noticeH}, {halfW, viewsH}};
   l.reconstruction = {{halfW, noticeH}, {width - halfW, viewsH}};
   l.presentationBar = {{0, noticeH + viewsH}, {width, height - noticeH - viewsH}};
-  return l;
+  return onWholePixels(l);
 }
 
 float drawerComboHeight(float scale) { return 44.0f * scale; }
@@ -142,10 +163,10 @@ Layout computeLayout(float width, float height, float scale, bool noticeRow) {
   Layout l = fullLayout(width, height, scale, rows);
   l.header = {{0, 0}, {width, rows.header}};
   l.notice = {{0, rows.header}, {width, rows.notice}};
-  if (fits(l, width, height)) return l;
+  if (fits(l, width, height)) return onWholePixels(l);
   Layout d = drawerLayout(width, height, scale, rows);
   d.header = l.header;
-  return d;
+  return onWholePixels(d);
 }
 
 }  // namespace ew::ui

@@ -45,6 +45,7 @@ struct Layout {
   PanelRect presentationBar;  // play / pause and the view angle (presentation only)
 };
 
+// Every rectangle's edges are whole pixels (layout.cpp says why).
 // `noticeRow`: a row under the header for the error / warning notice, so that it covers
 // nothing at any window size (the views move down by its height).
 Layout computeLayout(float width, float height, float scale, bool noticeRow = false);

@@ -364,6 +364,7 @@ nlohmann::json layoutJson(const FrameRecord& f) {
           {"drawn", f.drawn},
           {"input", rectJson(l.input)},
           {"reconstruction", rectJson(l.reconstruction)},
+          {"playback", rectJson(l.playback)},
           {"presentation_bar", rectJson(l.presentationBar)},
           {"header", rectJson(l.header)},
           {"overlays", overlaysJson(f)},
@@ -410,6 +411,10 @@ nlohmann::json stateJson(const AppState& s) {
       {"presentation", v.presentation},
       {"clip_zoom", v.clipZoom}};
   j["layout"] = layoutJson(s.lastFrame);
+  // Beside the last frame's layout: a record of the frames drawn, not of the session (tests that
+  // compare two sessions' states leave "layout" out).
+  j["layout"]["repainted_shares"] =
+      std::vector<double>(s.repaintedShares.begin(), s.repaintedShares.end());
   j["undo"] = {{"steps", s.history.undoSteps()}, {"redo_steps", s.history.redoSteps()}};
   // The drawer layout (small window or large scale): the tab shown; null in the full layout.
   j["view"]["drawer"] = s.panels.drawer.inUse
