@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <opencv2/videoio.hpp>
@@ -242,6 +243,64 @@ TEST_F(GuiClip, ClipModeHoldsAtTheTeachingSizes) {
 
 // A keypoint file that cannot be read is a failed open naming the file, and what was shown
 // stays (the synthetic walkers).
+// Issue 54: the viewer reads a calibration as the CLI's --camera does (one rule,
+// core/camera/camera_knowledge.h). Dropped with the keypoint folder, the file's camera whose
+// name the folder carries is taken ("clip" for clip_json, not "side"): its focal length is held,
+// its principal point is the fit's prior. A focal length typed replaces it; another camera of
+// the file can be chosen; a missing file or camera is refused and the fit stays.
+TEST_F(GuiClip, AKeypointFolderOpensWithACalibrationFile) {
+  const fs::path clip = writeClip(dir);
+  const fs::path calibration = dir / "Calib_clip.toml";
+  {
+    std::ofstream out(calibration);
+    out << "[clip]\nname = \"clip\"\nsize = [ 1920, 1080]\n"
+           "matrix = [ [ 1400.0, 0.0, 960.0], [ 0.0, 1400.0, 540.0], [ 0.0, 0.0, 1.0]]\n"
+           "distortions = [ 0.0, 0.0, 0.0, 0.0]\n\n"
+           "[side]\nname = \"side\"\nsize = [ 1920, 1080]\n"
+           "matrix = [ [ 900.0, 0.0, 960.0], [ 0.0, 900.0, 540.0], [ 0.0, 0.0, 1.0]]\n"
+           "distortions = [ 0.0, 0.0, 0.0, 0.0]\n";
+  }
+  const json script = json::array({
+      {{"drop", {clip.string(), calibration.string()}}},
+      {{"set_frame", 10}},
+      {{"wait_frames", 2}},
+      {{"export_state", path("calibrated.json")}},
+      {{"screenshot", path("calibrated.png")}},
+      {{"set_clip", {{"focal_px", 1500.0}}}},
+      {{"export_state", path("typed.json")}},
+      {{"set_clip", {{"calibration", calibration.string()}, {"calibration_camera", "side"}}}},
+      {{"export_state", path("side.json")}},
+      {{"expect_failure", {{"set_clip", {{"calibration", (dir / "missing.toml").string()}}}}}},
+      {{"expect_failure", {{"set_clip", {{"calibration", calibration.string()}, {"calibration_camera", "top"}}}}}},
+      {{"export_state", path("kept.json")}},
+  });
+  const auto file = writeScript(dir, script.dump(2));
+  const RunResult r = runViewer(dir, "--size 1600x900 --script " + quote(file.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+
+  const json calibrated = state("calibrated.json")["clip"];
+  EXPECT_EQ(calibrated["calibration"], calibration.string());
+  EXPECT_EQ(calibrated["calibration_camera"], "clip");
+  EXPECT_TRUE(calibrated["focal_px_fixed"].is_null());
+  ASSERT_TRUE(calibrated["fit"].is_object()) << calibrated.dump(1);
+  // Held at the calibration's focal length: the fit does not move it.
+  EXPECT_EQ(calibrated["fit"]["focal_px"].get<double>(), 1400.0);
+  EXPECT_NEAR(calibrated["fit"]["alpha_deg"].get<double>(), 40.0, 3.0);
+  EXPECT_EQ(calibrated["fit"]["image_size_from"], "the calibration's");
+
+  const json typed = state("typed.json")["clip"];
+  EXPECT_TRUE(typed["calibration"].is_null());
+  EXPECT_EQ(typed["focal_px_fixed"], 1500.0);
+  EXPECT_EQ(typed["fit"]["focal_px"].get<double>(), 1500.0);
+
+  const json side = state("side.json")["clip"];
+  EXPECT_EQ(side["calibration_camera"], "side");
+  EXPECT_EQ(side["fit"]["focal_px"].get<double>(), 900.0);
+  const json kept = state("kept.json")["clip"];
+  EXPECT_EQ(kept["calibration_camera"], "side");
+  EXPECT_EQ(kept["fit"]["focal_px"].get<double>(), 900.0);
+}
+
 TEST_F(GuiClip, BrokenKeypointFileIsAFailedOpen) {
   const fs::path bad = dir / "broken.json";
   std::ofstream(bad) << R"({"people": [{"pose_keypoints_2d": [1, 2)";

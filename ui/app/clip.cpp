@@ -81,6 +81,9 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   } else {
     r.rec = fitThroughCamera(model, readKeypointTrial(settings.path, k), camera, false);
   }
+  // The reader took the size as given: say it was the calibration's, as the CLI's report does.
+  if (camera.imageSizeFromCalibration && r.rec.trial.imageSize == camera.imageSize)
+    r.rec.trial.imageSizeSource = "the calibration's";
   extend(r.keypointBounds, r.rec.trial.jointsPx);
   r.shownBounds = r.keypointBounds;
   extend(r.shownBounds, r.rec.reprojectedPx);

@@ -2,13 +2,17 @@
 #include "ui/app/clip_actions.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <stdexcept>
 
+#include "core/camera/calibration_file.h"
+#include "core/camera/camera_knowledge.h"
 #include "core/camera/focal_length.h"
 #include "core/common/errors.h"
+#include "core/io/file_bytes.h"
 #include "core/eigenwalker/model.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "core/keypoints/keypoint_layout.h"
@@ -171,10 +175,12 @@ void clipFailed(AppState& s, const ClipSettings& running, const std::string& err
 // refused (one clip at a time), and every clip when a video was opened with them.
 std::vector<std::filesystem::path> openClips(AppState& s, std::vector<std::filesystem::path> paths,
                                              std::vector<std::string>& refused, bool withVideo) {
-  std::vector<std::filesystem::path> rest;
+  std::vector<std::filesystem::path> rest, calibrations;
   bool opened = false;
   for (auto& p : paths) {
-    if (!isKeypointClip(p)) {
+    if (isCalibrationFile(p)) {
+      calibrations.push_back(std::move(p));
+    } else if (!isKeypointClip(p)) {
       rest.push_back(std::move(p));
     } else if (withVideo) {
       refused.push_back(p.string() +
@@ -187,12 +193,53 @@ std::vector<std::filesystem::path> openClips(AppState& s, std::vector<std::files
       opened = true;
     }
   }
+  // A calibration goes to the clip opened with it, or to the one open.
+  for (const auto& file : calibrations) {
+    if (!s.doc.clip) {
+      refused.push_back(file.string() + ": a calibration is for a keypoint clip: open one with it");
+      continue;
+    }
+    try {
+      setClipCalibration(s, file, "");
+    } catch (const std::exception& e) {
+      refused.push_back(e.what());
+    }
+  }
   return rest;
 }
 
 std::shared_ptr<const EigenwalkerModel> modelForTracking(AppState& s) { return clipModel(s).model; }
 
 namespace {
+
+std::string lettersAndDigits(const std::string& text) {
+  std::string out;
+  for (unsigned char ch : text)
+    if (std::isalnum(ch)) out.push_back(static_cast<char>(std::tolower(ch)));
+  return out;
+}
+
+// The camera of a calibration with several whose name the clip's folder or file carries
+// (Pose2Sim: cam_01 for pose/cam01_json), else "" (the file's only camera, or an error listing
+// them when the fit reads it).
+std::string calibrationCameraFor(const std::filesystem::path& file, const std::filesystem::path& clip) {
+  std::vector<CalibratedCamera> cameras;
+  try {
+    cameras = parseCalibrationToml(readFileText(file), file.string());
+  } catch (const std::exception&) {
+    return "";  // resolveCameraKnowledge says what is wrong with it
+  }
+  if (cameras.size() < 2) return "";
+  const std::string clipName = lettersAndDigits(clip.filename().string());
+  std::string match;
+  for (const CalibratedCamera& c : cameras) {
+    const std::string name = lettersAndDigits(c.name);
+    if (name.empty() || clipName.rfind(name, 0) != 0) continue;
+    if (!match.empty()) return "";  // two fit: the user chooses
+    match = c.name;
+  }
+  return match;
+}
 
 ClipSettings& clipSettings(AppState& s) {
   if (!s.doc.clip) throw std::invalid_argument("no keypoint clip is open");
@@ -227,7 +274,39 @@ void openClip(AppState& s, const std::filesystem::path& path) {
 
 void setClipFocal(AppState& s, std::optional<double> focalPx) {
   if (focalPx && !isPlausibleFocalPx(*focalPx)) throw std::invalid_argument(focalLengthProblem(*focalPx));
-  clipSettings(s).focalPx = focalPx;
+  ClipSettings& c = clipSettings(s);
+  c.focalPx = focalPx;
+  // The last given wins: a focal length typed replaces a calibration's.
+  if (focalPx) c.calibrationFile.clear(), c.calibrationCamera.clear();
+}
+
+bool isCalibrationFile(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  return extension == ".toml";
+}
+
+void setClipCalibration(AppState& s, const std::filesystem::path& file, const std::string& camera) {
+  ClipSettings& c = clipSettings(s);
+  if (file.empty()) {
+    c.calibrationFile.clear();
+    c.calibrationCamera.clear();
+    return;
+  }
+  const std::string chosen = camera.empty() ? calibrationCameraFor(file, c.path) : camera;
+  CameraGivens given;
+  given.calibrationFile = file;
+  if (!chosen.empty()) given.calibrationCamera = chosen;
+  try {
+    resolveCameraKnowledge(given);  // reads and checks it now, not in the fit
+  } catch (const std::exception& e) {
+    throw std::invalid_argument(e.what());
+  }
+  c.calibrationFile = file;
+  c.calibrationCamera = chosen;
+  c.focalPx.reset();
+  s.log.info("Calibration " + file.filename().string() + (chosen.empty() ? "" : " (" + chosen + ")") +
+             " for the keypoint clip");
 }
 
 void setClipAzimuth(AppState& s, std::optional<double> alphaDeg) {

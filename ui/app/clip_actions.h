@@ -29,6 +29,16 @@ void setClipPerson(AppState& s, int person);
 // The image's size in pixels (nullopt: the file's, else the video's beside it); a clip whose
 // points are fractions of the image opens without one and waits for it.
 void setClipImageSize(AppState& s, std::optional<KeypointImageSize> size);
+// A calibration file (Pose2Sim's Calib_*.toml, docs/CAMERA.md) for the clip's camera: its focal
+// length, principal point and lens distortion, resolved as `reconstruct --camera` resolves it
+// (core/camera/camera_knowledge.h). `camera` names one of the file's cameras; "" takes its
+// only one, or the one whose name the clip's folder or file carries (cam_01 for cam01_json).
+// A focal length held before gives way to the calibration's, as a focal length typed after
+// clears the calibration. An empty `file` clears it. Throws std::invalid_argument naming the
+// file and the problem (unreadable, several cameras and none chosen, not a camera's focal).
+void setClipCalibration(AppState& s, const std::filesystem::path& file, const std::string& camera);
+// A Pose2Sim-style calibration (.toml), what setClipCalibration takes.
+bool isCalibrationFile(const std::filesystem::path& path);
 void closeClip(AppState& s);
 // Shows the clip's frame `frame` (from 1, as the 2D view's caption counts) and pauses.
 void setClipFrame(AppState& s, int frame);

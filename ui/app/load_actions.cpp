@@ -403,12 +403,13 @@ void drop(AppState& s, const std::vector<std::filesystem::path>& paths) {
     if (!std::filesystem::exists(p, ec)) {
       request.refused.push_back(p.string() + ": no such file or folder");
     } else if (!std::filesystem::is_directory(p, ec) && !isSupportedDataFile(p) &&
-               !isModelFile(p) && !isKeypointClip(p) && !isVideoFile(p) && !isKeyframeFile(p)) {
+               !isModelFile(p) && !isKeypointClip(p) && !isVideoFile(p) && !isKeyframeFile(p) &&
+               !isCalibrationFile(p)) {
       request.refused.push_back(p.string() +
                                 ": not a motion-capture file (.c3d .bvh .asf .amc .trc .csv .tsv), a "
                                 "pose estimator's keypoints (.json, MediaPipe / DeepLabCut .csv), a "
                                 "video (.mp4 .avi .mov .mkv .webm .m4v .mpg), a keyframe file, a "
-                                "model (.ewm) or a folder");
+                                "camera calibration (.toml), a model (.ewm) or a folder");
     } else {
       request.paths.push_back(p);
     }

@@ -147,6 +147,15 @@ void applyClipSettings(AppState& s, const ScriptAction& a) {
     } else if (key == "person") {
       if (!v.is_number_integer()) throw std::invalid_argument("person must be a whole number");
       actions::setClipPerson(s, v.get<int>());
+    } else if (key == "calibration") {
+      if (!v.is_null() && !v.is_string()) throw std::invalid_argument("calibration must be a file's path or null");
+      const auto camera = a.argument.find("calibration_camera");
+      if (camera != a.argument.end() && !camera->is_string())
+        throw std::invalid_argument("calibration_camera must be a camera's name");
+      actions::setClipCalibration(s, v.is_null() ? std::filesystem::path() : std::filesystem::path(v.get<std::string>()),
+                                  camera == a.argument.end() ? "" : camera->get<std::string>());
+    } else if (key == "calibration_camera") {
+      if (!a.argument.contains("calibration")) throw std::invalid_argument("calibration_camera goes with calibration");
     } else if (key == "image_size") {
       if (!v.is_null() && !v.is_string()) throw std::invalid_argument("image_size must be \"WxH\" or null");
       actions::setClipImageSize(s, v.is_null() ? std::nullopt
@@ -154,7 +163,8 @@ void applyClipSettings(AppState& s, const ScriptAction& a) {
     } else {
       throw std::invalid_argument(
           "unknown clip setting \"" + key +
-          "\" (known: focal_px, azimuth_deg, elevation_deg, layout, fps, person, image_size)");
+          "\" (known: focal_px, azimuth_deg, elevation_deg, layout, fps, person, image_size, calibration, "
+          "calibration_camera)");
     }
   }
 }

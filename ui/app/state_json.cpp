@@ -141,6 +141,9 @@ nlohmann::json clipJson(const AppState& s) {
                       {"fps_chosen", c.fps},
                       {"person_chosen", c.person},
                       {"focal_px_fixed", optionalJson(c.focalPx)},
+                      {"calibration", c.calibrationFile.empty() ? nlohmann::json(nullptr)
+                                                                : nlohmann::json(c.calibrationFile.string())},
+                      {"calibration_camera", c.calibrationCamera},
                       {"azimuth_deg_fixed", optionalJson(c.alphaDeg)},
                       {"elevation_deg_fixed", optionalJson(c.elevationDeg)},
                       {"image_size_given", imageSizeJson(c.imageSize)},

@@ -166,11 +166,24 @@ static void drawClipSource(AppState& s, const ClipSettings& c, const ClipResult*
   if (r) personCombo(s, c, *r);
 }
 
+// A calibration file gives the focal length, the principal point and the lens: said instead of
+// the focal length's field, with a way back to estimating it.
+static void drawCalibration(AppState& s, const ClipSettings& c) {
+  std::string text = "calibration " + c.calibrationFile.filename().string();
+  if (!c.calibrationCamera.empty()) text += " (" + c.calibrationCamera + ")";
+  ImGui::TextWrapped("%s: focal length, principal point and lens", text.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", c.calibrationFile.string().c_str());
+  if (ImGui::SmallButton("Estimate the camera instead"))
+    apply(s, [&] { actions::setClipCalibration(s, {}, ""); });
+}
+
 static void drawCameraHolds(AppState& s, const ClipSettings& c, const ClipResult* r) {
   sectionTitle("Camera (tick to hold a value)");
   const WalkCamera* cam = r ? &r->rec.fit.camera : nullptr;
-  if (!cam || cam->model == CameraModel::Pinhole) {
-    textDisabledWrapped("focal length (type, Enter)");
+  if (!c.calibrationFile.empty()) {
+    drawCalibration(s, c);
+  } else if (!cam || cam->model == CameraModel::Pinhole) {
+    textDisabledWrapped("focal length (type, Enter; or drop a calibration .toml)");
     heldValue(s, "focal", "the focal length", c.focalPx, cam ? cam->focalPx : 1500.0, static_cast<float>(kMinFocalPx),
               static_cast<float>(kMaxFocalPx), "%.0f px", true,
               [&](std::optional<double> v) { actions::setClipFocal(s, v); });

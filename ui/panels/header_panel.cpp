@@ -183,7 +183,8 @@ std::vector<std::string> clipLines(const ClipResult& c) {
   char camera[200], brief[120];
   if (cam.model == CameraModel::Pinhole) {
     std::snprintf(camera, sizeof camera, "camera: azimuth %.1f° · %s · focal %.0f px%s · %.2f m away · reprojection %.1f px RMS",
-                  cam.alphaDeg, tiltText(cam.elevationDeg).c_str(), cam.focalPx, c.settings.focalPx ? "" : " (est.)",
+                  cam.alphaDeg, tiltText(cam.elevationDeg).c_str(), cam.focalPx,
+                  c.settings.focalPx || !c.settings.calibrationFile.empty() ? "" : " (est.)",
                   cam.distanceMm / 1000.0, f.reprojectionRmsPx);
     std::snprintf(brief, sizeof brief, "az %.1f° · %s · f %.0f px · %.1f m · %.1f px", cam.alphaDeg,
                   tiltText(cam.elevationDeg).c_str(), cam.focalPx, cam.distanceMm / 1000.0, f.reprojectionRmsPx);
