@@ -22,6 +22,7 @@
 #include "core/engines/request.h"
 #include "core/eigenwalker/default_model.h"
 #include "core/keypoints/keypoint_frames.h"
+#include "core/skeleton/bone_choice.h"
 #include "core/skeleton/bone_sources.h"
 #include "core/skeleton/scale_depth.h"
 #include "core/skeleton/skeleton_camera.h"
@@ -88,69 +89,17 @@ EigenwalkerOfClip eigenwalkerOf(const KeypointTrial& keypoints, const CameraKnow
   return out;
 }
 
-// [SECTION] Where the bone lengths come from
-
-struct ChosenBones {
-  BoneLengths lengths;
-  std::string source;
-};
-
-Joint jointNamed(const std::string& name, const char* option) {
-  const auto j = jointFromName(name);
-  if (!j) throw Error(ErrorKind::BadArgument, option, "", "'" + name + "' is no joint of docs/METHOD.md §1 (e.g. r_elbow)");
-  return *j;
-}
-
-// "a-b=MM": the bone between joints a and b, and its length in mm.
-std::pair<int, double> referenceBoneOf(const std::string& text) {
-  const auto dash = text.find('-'), equals = text.find('=');
-  if (dash == std::string::npos || equals == std::string::npos || equals < dash)
-    throw Error(ErrorKind::BadArgument, "--reference-bone", "", "expects JOINT-JOINT=MM, e.g. r_elbow-r_wrist=260");
-  const Joint a = jointNamed(text.substr(0, dash), "--reference-bone");
-  const Joint b = jointNamed(text.substr(dash + 1, equals - dash - 1), "--reference-bone");
-  const int bone = boneBetween(a, b);
-  if (bone < 0) throw Error(ErrorKind::BadArgument, "--reference-bone", "", "no bone joins " + text.substr(0, equals));
-  double mm = 0.0;
-  try {
-    mm = std::stod(text.substr(equals + 1));
-  } catch (const std::exception&) {
-    throw Error(ErrorKind::BadArgument, "--reference-bone", "", "the length after '=' is not a number of mm");
-  }
-  return {bone, mm};
-}
-
-Eigen::RowVectorXd frameRow(const KeypointTrial& k, int frame, const char* option) {
-  if (frame < 0 || frame >= k.jointsPx.rows())
-    throw Error(ErrorKind::BadArgument, option, "",
-                "frame " + std::to_string(frame) + " is not among the input's 0-" + std::to_string(k.jointsPx.rows() - 1));
-  return k.jointsPx.row(frame);
-}
+// [SECTION] Where the bone lengths come from (core/skeleton/bone_choice.h)
 
 ChosenBones bonesFor(const SkeletonArgs& a, const KeypointTrial& keypoints, const std::optional<JointTrial>& reference,
                      const std::optional<EigenwalkerOfClip>& fit) {
-  const std::string source = a.bones.empty() ? (reference ? "reference" : "") : a.bones;
-  if (source == "reference") {
-    require(reference.has_value(), "--reference", "--bones reference needs --reference FILE, a 3D trial of the same person");
-    return {boneLengthsFromFrames(reference->positionsMm, a.reference), "the reference " + a.reference};
-  }
-  if (source == "table2") {
-    require(a.statureM.has_value(), "--stature", "--bones table2 scales Zou et al.'s Table 2 to the walker's stature: give --stature M");
-    return {boneLengthsFromZouTable2(1000.0 * *a.statureM, "--stature"), "Zou et al.'s Table 2 at a stature of " + std::to_string(*a.statureM) + " m"};
-  }
-  if (source == "eigenwalker") {
-    const BoneLengths b = a.statureM ? scaledToStature(fit->bones, 1000.0 * *a.statureM, "--stature") : fit->bones;
-    return {b, a.statureM ? "the eigenwalker's fit, scaled to the stature" : "the eigenwalker's fit"};
-  }
-  if (source == "frame") {
-    require(a.boneFrame.has_value() && !a.referenceBone.empty(), "--bone-frame",
-            "--bones frame needs --bone-frame F (the body parallel to the image plane) and --reference-bone JOINT-JOINT=MM");
-    const auto [bone, mm] = referenceBoneOf(a.referenceBone);
-    return {boneLengthsFromReferenceFrame(frameRow(keypoints, *a.boneFrame, "--bone-frame"), bone, mm, a.input),
-            "frame " + std::to_string(*a.boneFrame) + " with " + a.referenceBone};
-  }
-  throw Error(ErrorKind::BadArgument, "--bones", "",
-              "the skeleton engine needs the bone lengths: give --reference FILE (a 3D trial of the same person), "
-              "or --bones table2|eigenwalker|frame");
+  BoneChoice choice;
+  if (!a.bones.empty()) choice.source = parseBoneSource(a.bones, "--bones");
+  if (a.statureM) choice.statureMm = 1000.0 * *a.statureM;
+  choice.frame = a.boneFrame;
+  choice.referenceBone = a.referenceBone;
+  return chooseBones(choice, keypoints, reference ? &*reference : nullptr, a.reference,
+                     fit ? std::optional<BoneLengths>(fit->bones) : std::nullopt);
 }
 
 // [SECTION] The camera
@@ -203,7 +152,7 @@ ChosenCamera cameraFor(const SkeletonArgs& a, const KeypointTrial& keypoints, co
           "the skeleton engine needs a camera: --camera FILE, --focal-px F, or Zou et al.'s scale-depth relation on a "
           "frame with --scale-depth-frame F --scale-depth-chain a,b,c,d (the outer two segments parallel to the image)");
   const CalibratedCamera middle = plainPinhole(1.0, a.imageSize);
-  const ScaleDepthFocal f = focalFromScaleDepth(frameRow(keypoints, *a.scaleDepthFrame, "--scale-depth-frame"),
+  const ScaleDepthFocal f = focalFromScaleDepth(keypointFrame(keypoints, *a.scaleDepthFrame, "--scale-depth-frame"),
                                                 middle.cxPx, middle.cyPx, chainOf(a.scaleDepthChain), bones, a.input);
   std::cerr << std::fixed << std::setprecision(1) << "scale-depth relation on frame " << *a.scaleDepthFrame << " ("
             << a.scaleDepthChain << "): depth step " << f.depthStepMm << " mm, focal length " << f.focalPx << " px\n";
