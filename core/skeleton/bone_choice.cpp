@@ -12,11 +12,6 @@ void require(bool given, const std::string& option, const std::string& why) {
   if (!given) throw Error(ErrorKind::BadArgument, option, "", why);
 }
 
-std::string statureText(double statureMm) {
-  std::string m = std::to_string(statureMm / 1000.0);
-  return m;
-}
-
 }  // namespace
 
 BoneSource parseBoneSource(const std::string& name, const std::string& where) {
@@ -73,7 +68,7 @@ ChosenBones chooseBones(const BoneChoice& c, const KeypointTrial& keypoints, con
       require(c.statureMm.has_value(), n.stature,
               n.source + " table2 scales Zou et al.'s Table 2 to the walker's stature: give " + n.stature + " M");
       return {boneLengthsFromZouTable2(*c.statureMm, n.stature),
-              "Zou et al.'s Table 2 at a stature of " + statureText(*c.statureMm) + " m"};
+              "Zou et al.'s Table 2 at a stature of " + std::to_string(*c.statureMm / 1000.0) + " m"};
     case BoneSource::Eigenwalker: {
       require(eigenwalker.has_value(), n.source, "the eigenwalker's fit of the walker is needed");
       const BoneLengths b = c.statureMm ? scaledToStature(*eigenwalker, *c.statureMm, n.stature) : *eigenwalker;

@@ -282,7 +282,7 @@ void setClipFocal(AppState& s, std::optional<double> focalPx) {
 
 bool isCalibrationFile(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
   return extension == ".toml";
 }
 
