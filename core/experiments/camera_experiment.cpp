@@ -31,6 +31,7 @@
 namespace ew {
 
 const char* const kCameraEigenwalker = "eigenwalker";
+const char* const kCameraEigenwalkerStatureGiven = "eigenwalker, stature given";
 const char* const kCameraSkeletonOwnBones = "skeleton (own bones)";
 const char* const kCameraSkeletonGuided = "skeleton (own bones, eigenwalker's branches)";
 const char* const kCameraSkeletonTable2 = "skeleton (Table 2 x stature)";
@@ -143,14 +144,18 @@ MatrixXd bystander(const MatrixXd& px, std::mt19937& rng) {
 }
 
 // Where an engine's gait rows go when options.gait asks for them: beside the walker's own
-// measures, both from frames in the walker's frame at the clip's rate.
+// measures, both from frames in the walker's frame at the clip's rate. The truth walks over the
+// floor at the clip's speed; `reconstructed` says what the engine knows of its own walk.
 struct GaitSink {
   bool on;
   double fps;
   CameraRow& row;
-  void add(const char* engine, const Clip& clip, const MatrixXd& truth, const MatrixXd& frames) const {
+  void add(const char* engine, const Clip& clip, const MatrixXd& truth, const MatrixXd& frames,
+           const GaitSideWalk& reconstructed = {}) const {
     if (!on) return;
-    for (auto& g : gaitAgreementRows(row.subject, engine, clip.camera.alphaDeg, truth, frames, fps)) {
+    const GaitSideWalk truthWalk{clip.camera.speedMmS / 1000.0, false};
+    for (auto& g : gaitAgreementRows(row.subject, engine, clip.camera.alphaDeg, truth, frames, fps, truthWalk,
+                                     reconstructed)) {
       g.setting = "camera";
       g.noise = row.noisePx;
       g.camera = row.camera;
@@ -197,7 +202,16 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   const MatrixXd frames = synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, times);
   row.mpjpeMm = mpjpeWithoutTranslation(frames, clip.truth);
   row.reprojectionRmsPx = fit.reprojectionRmsPx;
-  GaitSink{o.gait, o.fps, row}.add(kCameraEigenwalker, clip, clip.truth, frames);
+  // The fit's walk over the floor is its camera's progression (walking in place: none, the
+  // stance feet of its two-harmonic walker tell).
+  const GaitSideWalk walked = fit.inPlace ? GaitSideWalk{std::nullopt, true}
+                                          : GaitSideWalk{fit.speedMps, false};
+  const GaitSink gait{o.gait, o.fps, row};
+  gait.add(kCameraEigenwalker, clip, clip.truth, frames, walked);
+  const double toStature = height / fit.headHeightMm;  // head height stands for the stature
+  gait.add(kCameraEigenwalkerStatureGiven, clip, clip.truth, frames * toStature,
+           {walked.progressionMps ? std::optional<double>(*walked.progressionMps * toStature) : std::nullopt,
+            walked.twoHarmonicWalker});
   EigenwalkerClip out{fit.w, fit.omegaRadS, {}};
   const MatrixXd camera = walkInCameraFrame(frames, times, fit.camera);
   for (Eigen::Index frame = 0; frame < camera.rows(); ++frame)

@@ -91,6 +91,9 @@ struct CameraRow {
 
 // The engine labels of CameraRow::gait, in the order of the columns of camera.csv.
 extern const char* const kCameraEigenwalker;
+// Its gait with the walker's stature given: the fit scaled to it (a pinhole's image is the same
+// for a walker s times taller s times further away, so only a known size fixes the scale).
+extern const char* const kCameraEigenwalkerStatureGiven;
 extern const char* const kCameraSkeletonOwnBones;
 extern const char* const kCameraSkeletonGuided;
 extern const char* const kCameraSkeletonTable2;

@@ -104,7 +104,8 @@ void compareOnCameras(const std::vector<ExperimentWalker>& walkers, const std::v
     // The eigenwalker always runs (the guided skeleton variants need its fit); its gait
     // rows are reported when it was asked for.
     for (const GaitAgreementRow& g : row.gait)
-      if (eigenwalker || g.engine != kCameraEigenwalker) out.gait.push_back(g);
+      if (eigenwalker || (g.engine != kCameraEigenwalker && g.engine != kCameraEigenwalkerStatureGiven))
+        out.gait.push_back(g);
   }
 }
 

@@ -174,7 +174,8 @@ std::string gaitAgreementCsv(const std::vector<GaitAgreementRow>& rows) {
 std::string blandAltmanCsv(const std::vector<BlandAltmanRow>& rows) {
   return csv(kBlandAltmanHeader, rows, [](const BlandAltmanRow& r) {
     return join({r.engine, num(r.angleDeg), r.measure, r.unit, std::to_string(r.pairs), std::to_string(r.unmeasured),
-                 num(r.mocapMean), num(r.bias), num(r.sd), num(r.loaLow), num(r.loaHigh), num(r.meanAbsDifference)});
+                 num(r.mocapMean), num(r.bias), num(r.sd), num(r.loaLow), num(r.loaHigh), num(r.meanAbsDifference),
+                 num(r.medianAbsDifference)});
   });
 }
 
@@ -209,9 +210,10 @@ std::string enginesGaitAgreementCsv(const std::vector<GaitAgreementRow>& rows) {
 
 std::string enginesBlandAltmanCsv(const std::vector<BlandAltmanRow>& rows) {
   return csv(kEnginesBlandAltmanHeader, rows, [](const BlandAltmanRow& r) {
-    return join({r.setting, quotedCell(r.engine), numOrEmpty(r.angleDeg), num(r.noise), r.measure, r.unit,
+    return join({r.setting, quotedCell(r.engine), numOrEmpty(r.angleDeg), r.band, num(r.noise), r.measure, r.unit,
                  std::to_string(r.pairs), std::to_string(r.unmeasured), numOrEmpty(r.mocapMean), numOrEmpty(r.bias),
-                 numOrEmpty(r.sd), numOrEmpty(r.loaLow), numOrEmpty(r.loaHigh), numOrEmpty(r.meanAbsDifference)});
+                 numOrEmpty(r.sd), numOrEmpty(r.loaLow), numOrEmpty(r.loaHigh), numOrEmpty(r.meanAbsDifference),
+                 numOrEmpty(r.medianAbsDifference)});
   });
 }
 

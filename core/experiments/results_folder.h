@@ -37,7 +37,8 @@ inline constexpr const char* kSnippetThetaHeader =
 inline constexpr const char* kSnippetClustersHeader = "clusters,held_out_log_likelihood,em_held_out_log_likelihood";
 inline constexpr const char* kGaitAgreementHeader = "subject,engine,angle_deg,measure,mocap,reconstructed";
 inline constexpr const char* kBlandAltmanHeader =
-    "engine,angle_deg,measure,unit,pairs,unmeasured,mocap_mean,bias,sd,loa_low,loa_high,mean_abs_difference";
+    "engine,angle_deg,measure,unit,pairs,unmeasured,mocap_mean,bias,sd,loa_low,loa_high,mean_abs_difference,"
+    "median_abs_difference";
 
 inline constexpr const char* kEnginesHeader =
     "setting,subject,engine,variant,angle_deg,camera,noise,noise_unit,frames,mpjpe_mm,depth_error_mm2,seconds,error";
@@ -46,8 +47,8 @@ inline constexpr const char* kEnginesSummaryHeader =
 inline constexpr const char* kEnginesGaitAgreementHeader =
     "setting,subject,engine,angle_deg,camera,noise,measure,mocap,reconstructed";
 inline constexpr const char* kEnginesBlandAltmanHeader =
-    "setting,engine,angle_deg,noise,measure,unit,pairs,unmeasured,mocap_mean,bias,sd,loa_low,loa_high,"
-    "mean_abs_difference";
+    "setting,engine,angle_deg,band,noise,measure,unit,pairs,unmeasured,mocap_mean,bias,sd,loa_low,loa_high,"
+    "mean_abs_difference,median_abs_difference";
 
 inline constexpr const char* kSemanticAxesHeader =
     "attribute,label,source,kind,walkers,mean,sd,loo_r2,loo_rmse,loo_accuracy,chance,gain,steerable,"

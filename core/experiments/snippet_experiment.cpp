@@ -54,6 +54,7 @@ ViewInput knownView(const SnippetFold& fold, const Eigen::MatrixXd& frames, doub
 struct Clip {
   Eigen::MatrixXd withProgression, withoutProgression;  // T × 45 at 30 Hz
   double strideHz = 0.0;
+  double speedMps = 0.0;  // the trial's progression (its gait's truth is measured with it)
 };
 
 Clip clipOf(const WalkingTrial& trial) {
@@ -61,6 +62,7 @@ Clip clipOf(const WalkingTrial& trial) {
   c.withProgression = resampleFrames(framesWithProgression(trial), trial.joints.rateHz, kClipRateHz);
   c.withoutProgression = resampleFrames(trial.joints.positionsMm, trial.joints.rateHz, kClipRateHz);
   c.strideHz = trial.cycles.strideHz;
+  c.speedMps = trial.speedMps;
   return c;
 }
 
@@ -86,6 +88,7 @@ struct FoldOutput {
 struct ClipScoring {
   bool phase = false;
   bool gait = false;
+  double truthSpeedMps = 0.0;  // the trial's progression
 };
 
 // One engine's row for a clip at one view: its frames scored, or the reason it gave none.
@@ -103,7 +106,10 @@ EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const st
     row.seconds = elapsed();
     const ClipErrors e = clipErrors(frames, truth, alpha);
     if (scoring.gait) {
-      for (auto& g : gaitAgreementRows(fold.subject, engine, alpha, truth, frames, kClipRateHz)) {
+      // The eigenwalker's walker is two harmonics in place: its stance feet are read as such.
+      const GaitSideWalk reconstructed{std::nullopt, engine.starts_with("eigenwalker")};
+      for (auto& g : gaitAgreementRows(fold.subject, engine, alpha, truth, frames, kClipRateHz,
+                                       {scoring.truthSpeedMps, false}, reconstructed)) {
         g.noise = noiseMm;
         out.gait.push_back(std::move(g));
       }
@@ -134,7 +140,7 @@ Eigen::MatrixXd viewNoise(const SnippetFold& fold, const SnippetExperimentOption
 
 void scoreClip(const SnippetFold& fold, const Clip& clip, const std::string& clipName, const SnippetExperimentOptions& o,
                FoldOutput& out, const FourierFit* phaseFit) {
-  const ClipScoring scoring{phaseFit != nullptr, clipName == "trial"};
+  const ClipScoring scoring{phaseFit != nullptr, clipName == "trial", clip.speedMps};
   for (size_t a = 0; a < o.anglesDeg.size(); ++a)
     for (size_t l = 0; l < o.noiseMm.size(); ++l) {
       const double alpha = o.anglesDeg[a], level = o.noiseMm[l];

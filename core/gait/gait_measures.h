@@ -56,7 +56,9 @@ struct GaitMeasures {
   double strideLengthM = NAN;
   double stepWidthM = NAN;
   double speedMps = NAN;
-  std::string speedSource;  // "progression", "stance feet" or "stride length × stride frequency"
+  // "progression", "stance feet", "stance feet of a two-harmonic walker" (fourier_walker_gait.h)
+  // or "stride length × stride frequency"
+  std::string speedSource;
   double stanceFootSpeedMps = NAN;  // from the stance feet, whatever speedSource is
   double stanceRightPct = NAN;
   double stanceLeftPct = NAN;

@@ -35,7 +35,7 @@ TEST(BlandAltman, BiasAndLimitsOfAgreementAreComputedPerEngineViewAndMeasure) {
 }
 
 // Experiment "engines": each setting and noise level is its own group; a camera group pools
-// every camera's azimuth (its angle is NaN).
+// the cameras of one azimuth band (its angle is NaN, its band named).
 TEST(BlandAltman, SettingsAndNoiseLevelsAreGroupsAndCamerasPoolTheirAzimuths) {
   std::vector<GaitAgreementRow> rows;
   const auto add = [&](const char* setting, double angle, double noise, double diff) {
@@ -46,16 +46,22 @@ TEST(BlandAltman, SettingsAndNoiseLevelsAreGroupsAndCamerasPoolTheirAzimuths) {
   };
   add("view", 30.0, 0.0, 0.1);
   add("view", 30.0, 10.0, 0.2);
-  add("camera", 17.0, 0.0, 0.3);
+  add("camera", 47.0, 0.0, 0.3);
   add("camera", -120.0, 0.0, 0.5);
   add("camera", 40.0, 2.0, 0.7);
+  add("camera", -170.0, 0.0, 0.9);  // from behind: a band of its own
+  add("camera", 29.0, 0.0, 1.1);    // from the front
   const auto ba = blandAltman(rows);
-  ASSERT_EQ(ba.size(), 4u);
+  ASSERT_EQ(ba.size(), 6u);
   EXPECT_EQ(ba[1].noise, 10.0);
   EXPECT_EQ(ba[2].setting, "camera");
+  EXPECT_EQ(ba[2].band, "side");
   EXPECT_TRUE(std::isnan(ba[2].angleDeg));
   EXPECT_EQ(ba[2].pairs, 2);
   EXPECT_DOUBLE_EQ(ba[2].bias, 0.4);
+  EXPECT_DOUBLE_EQ(ba[2].medianAbsDifference, 0.4);
+  EXPECT_EQ(ba[4].band, "back");
+  EXPECT_EQ(ba[5].band, "front");
   EXPECT_EQ(ba[3].noise, 2.0);
 }
 
@@ -88,6 +94,22 @@ TEST(GaitAgreement, AReconstructionThatDoesNotWalkIsUnmeasuredNotAnError) {
     EXPECT_TRUE(std::isnan(r.reconstructed)) << r.measure;
   }
   EXPECT_EQ(blandAltman(rows).front().unmeasured, 1);
+}
+
+// A side's known walk over the floor is its speed, and puts its footprints down with it.
+TEST(GaitAgreement, AKnownProgressionIsTheSidesSpeed) {
+  const WalkingTrial t = syntheticTrial();
+  const auto& m = t.joints.positionsMm;
+  const auto rows = gaitAgreementRows("SYN001", "walked", 0.0, m, m, t.joints.rateHz, {1.234, false}, {0.9, false});
+  for (const auto& r : rows) {
+    if (r.measure == "speed") {
+      EXPECT_DOUBLE_EQ(r.mocap, 1.234);
+      EXPECT_DOUBLE_EQ(r.reconstructed, 0.9);
+    }
+    if (r.measure == "cadence") EXPECT_NEAR(r.reconstructed, r.mocap, 1e-9);
+    if (r.measure == "stride_length") EXPECT_LT(r.reconstructed, r.mocap - 0.2);
+    if (r.measure == "knee_flexion_curve") EXPECT_NEAR(r.reconstructed, 0.0, 1e-9);
+  }
 }
 
 }  // namespace
