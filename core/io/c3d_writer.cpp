@@ -179,16 +179,27 @@ bool printableAscii(const std::string& s) {
   return std::all_of(s.begin(), s.end(), [](char c) { return c >= 0x20 && c < 0x7F; });
 }
 
-// A text C3D pads with spaces and readers trim: it must come back as it went in.
+// Free text (descriptions, notes) may be UTF-8, as the guide allows; no control characters.
+bool freeText(const std::string& s) {
+  return std::none_of(s.begin(), s.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u < 0x20 || u == 0x7F;
+  });
+}
+
+// A text C3D pads with spaces and readers trim: it must come back as it went in. Labels are
+// names readers match: printable ASCII; descriptions (mayBeEmpty) may be UTF-8.
 void checkText(const std::filesystem::path& file, const std::string& position,
-               const std::string& what, const std::string& s, bool mayBeEmpty) {
-  if (s.empty() && !mayBeEmpty) refuse(file, position, what + " is empty");
+               const std::string& what, const std::string& s, bool isLabel) {
+  if (s.empty() && isLabel) refuse(file, position, what + " is empty");
   if (s.size() > kC3dMaxTextChars)
     refuse(file, position,
            what + " has " + std::to_string(s.size()) + " characters; C3D holds at most " +
                std::to_string(kC3dMaxTextChars) + " (a parameter dimension is one byte)");
-  if (!printableAscii(s))
-    refuse(file, position, what + " has a character that is not printable ASCII");
+  if (isLabel ? !printableAscii(s) : !freeText(s))
+    refuse(file, position,
+           what + (isLabel ? " has a character that is not printable ASCII"
+                           : " has a control character"));
   if (!s.empty() && (s.front() == ' ' || s.back() == ' '))
     refuse(file, position,
            what + " '" + s + "' begins or ends with a space, which C3D's space-padded text loses");
@@ -210,8 +221,8 @@ long checkPoints(const std::filesystem::path& file, const C3dContent& c) {
   for (std::size_t i = 0; i < c.points.size(); ++i) {
     const C3dPointTrajectory& p = c.points[i];
     const std::string where = "point " + std::to_string(i + 1);
-    checkText(file, where, "the label", p.label, false);
-    checkText(file, where, "the description", p.description, true);
+    checkText(file, where, "the label", p.label, true);
+    checkText(file, where, "the description", p.description, false);
     if (!seen.insert(p.label).second) refuse(file, where, "the label '" + p.label + "' is used twice");
     if (p.positionsMm.rows() != frames)
       refuse(file, where + " (" + p.label + ")",
@@ -243,9 +254,9 @@ void checkContent(const std::filesystem::path& file, const C3dContent& c) {
     const std::string where = "event " + std::to_string(i + 1);
     if (!std::isfinite(e.timeS) || e.timeS < 0)
       refuse(file, where, "time " + std::to_string(e.timeS) + " s is not a time from the first frame");
-    checkText(file, where, "the label", e.label, true);
+    if (!e.label.empty()) checkText(file, where, "the label", e.label, true);
   }
-  checkText(file, "EVENT:DESCRIPTIONS", "the event description", c.eventDescription, true);
+  checkText(file, "EVENT:DESCRIPTIONS", "the event description", c.eventDescription, false);
   for (const auto* axis : {&c.xScreen, &c.yScreen}) {
     const std::string& s = *axis;
     if (s.size() != 2 || (s[0] != '+' && s[0] != '-') || s[1] < 'X' || s[1] > 'Z')
@@ -254,7 +265,7 @@ void checkContent(const std::filesystem::path& file, const C3dContent& c) {
   if (c.xScreen[1] == c.yScreen[1])
     refuse(file, "POINT:Y_SCREEN", "X_SCREEN and Y_SCREEN name the same axis " + c.xScreen);
   for (const auto& line : c.notes)
-    if (!printableAscii(line)) refuse(file, "MANUFACTURER:NOTES", "a note is not printable ASCII");
+    if (!freeText(line)) refuse(file, "MANUFACTURER:NOTES", "a note has a control character");
 }
 
 // [SECTION] Parameters ------------------------------------------------------------------
@@ -272,12 +283,19 @@ unsigned eventIcon(const GaitEvent& e) {
   return 0;
 }
 
-// Lines cut to C3D's 255 characters; at most 255 of them.
+// Lines cut to C3D's 255 bytes, never inside a UTF-8 character; at most 255 of them.
 std::vector<std::string> noteLines(const std::vector<std::string>& notes) {
+  auto continuation = [](char c) { return (static_cast<unsigned char>(c) & 0xC0u) == 0x80u; };
   std::vector<std::string> lines;
-  for (const auto& note : notes)
-    for (std::size_t at = 0; at < std::max<std::size_t>(note.size(), 1); at += kC3dMaxTextChars)
-      lines.push_back(note.substr(at, kC3dMaxTextChars));
+  for (const auto& note : notes) {
+    std::size_t at = 0;
+    do {
+      std::size_t end = std::min(note.size(), at + kC3dMaxTextChars);
+      while (end < note.size() && end > at + 1 && continuation(note[end])) --end;
+      lines.push_back(note.substr(at, end - at));
+      at = end;
+    } while (at < note.size());
+  }
   if (lines.size() > 255) lines.resize(255);
   return lines;
 }

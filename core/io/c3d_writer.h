@@ -52,7 +52,7 @@ inline constexpr long kC3dMaxFrames = 16777216;
 // coordinate not finite is a missing sample.
 struct C3dPointTrajectory {
   std::string label;        // POINT:LABELS: printable ASCII, 1–255 chars, no edge spaces, unique
-  std::string description;  // POINT:DESCRIPTIONS (may be empty)
+  std::string description;  // POINT:DESCRIPTIONS (may be empty; UTF-8, as the guide allows)
   Eigen::MatrixX3d positionsMm;
 };
 
@@ -65,8 +65,8 @@ struct C3dContent {
   std::string eventDescription;  // EVENT:DESCRIPTIONS of every event (may be empty)
   std::string xScreen = "+Y", yScreen = "+Z";  // POINT:X_SCREEN / Y_SCREEN: the lab's axes
                                                // drawn right and up on screen
-  std::vector<std::string> notes;  // MANUFACTURER:NOTES; lines longer than 255 chars are cut
-                                   // into several
+  std::vector<std::string> notes;  // MANUFACTURER:NOTES (UTF-8); lines longer than 255 bytes
+                                   // are cut into several
 };
 
 // Writes `content` to `file` atomically (core/io/atomic_write.h). Throws Error(BadArgument)
