@@ -9,7 +9,8 @@
 //                  key (12345) with no header events — the events are in the EVENT group, as
 //                  Vicon Nexus writes them (c3d-samples/sample03: key set, count 0), so a
 //                  reader that merges both lists does not show every event twice
-//   block 2 …      the parameters (processor type 84, Intel), groups in this order:
+//   block 2 …      the parameters (processor type 84, Intel; the last record's offset to the
+//                  next is 0, where the guide says the section ends), groups in this order:
 //                  POINT   USED, SCALE (−1), RATE, FRAMES, DATA_START, UNITS ("mm"), LABELS,
 //                          DESCRIPTIONS, X_SCREEN, Y_SCREEN (+ LONG_FRAMES past 65535 frames)
 //                  ANALOG  USED 0, RATE (no analog channels)
@@ -83,8 +84,10 @@ std::vector<C3dPointTrajectory> jointPointTrajectories(
 // A 3D walker (T × 45 joints, mm, any axes with the body upright along one of them) as C3D:
 // the 15 joints, then `extraPoints` (feet markers, …), and the gait events its own kinematics
 // give (gaitEventsFromKinematics, core/gait/gait_events.h, on a copy turned to z up and facing
-// +y; none when a joint sample is missing). X_SCREEN / Y_SCREEN name the walker's forward and
-// up axes, so a viewer shows it from the side. `notes` go to MANUFACTURER:NOTES.
+// +y; none when a joint sample is missing, and a note says so; past kC3dMaxEvents the first
+// 255 are written and a note says how many were left out). X_SCREEN / Y_SCREEN name the
+// walker's forward and up axes, so a viewer shows it from the side. `notes` go to
+// MANUFACTURER:NOTES.
 void writeWalkerC3d(const std::filesystem::path& file,
                     const Eigen::Ref<const Eigen::MatrixXd>& framesX45, double rateHz,
                     const std::vector<std::string>& notes = {},
