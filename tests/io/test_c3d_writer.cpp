@@ -20,6 +20,7 @@
 #include "core/io/c3d_reader.h"
 #include "core/io/c3d_writer.h"
 #include "core/io/joint_csv.h"
+#include "core/io/trc_writer.h"
 #include "core/synth/population.h"
 #include "tests/common/test_support.h"
 
@@ -323,6 +324,10 @@ TEST(C3dWriter, AWalkerCarriesTheEventsOfItsOwnKinematicsAndOpensAsAWalker) {
     for (std::size_t i = 0; i < back.of(side).strikesS.size(); ++i)
       EXPECT_NEAR(turnedBack.of(side).strikesS[i], back.of(side).strikesS[i], 1e-4);
   }
+
+  // The extension chooses the format in any case, as the CLI's --out does.
+  writeJointTrajectories(dir / "UPPER.C3D", frames, 100.0, {"a comment"});
+  EXPECT_EQ(readC3d(dir / "UPPER.C3D").positionsMm.rows(), frames.rows());
 
   // A walker with a gap has no kinematic events, and says so in the file.
   Eigen::MatrixXd gap = frames;
