@@ -80,7 +80,9 @@ void addJointsCommand(CLI::App& app, int& exitCode) {
                                  "Write one trial's normalised 15-joint trajectories "
                                  "(steady window, canonical frame, mm) as CSV");
   cmd->add_option("file", args->file, "Motion-capture file (.c3d .bvh .amc .trc .csv .tsv)")->required();
-  cmd->add_option("--out", args->out, "Output: the 15-joint CSV, or a TRC (OpenSim's axes) when it ends in .trc; written atomically")->required();
+  cmd->add_option("--out", args->out, "Output: the 15-joint CSV; a TRC (OpenSim's axes) when it ends in .trc; a C3D when it "
+                  "ends in .c3d (the 15 joints and the gait events of their kinematics in the EVENT "
+                  "group, docs/CLI.md); written atomically")->required();
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
   cmd->add_option("--mapping", args->mapping,

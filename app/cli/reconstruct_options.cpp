@@ -207,7 +207,9 @@ void addReconstructOptions(CLI::App& cmd, ReconstructArgs& a) {
   cmd.add_option("--mapping", a.mapping,
                   "Joint mapping file (JSON, docs/FORMATS.md) for a 3D marker input whose set "
                   "the program does not know, or a DeepLabCut keypoint file's body parts");
-  cmd.add_option("--out", a.out, "3D joints to write: the 15-joint CSV, or a TRC (OpenSim's axes) when it ends in .trc")->required();
+  cmd.add_option("--out", a.out, "3D joints to write: the 15-joint CSV; a TRC (OpenSim's axes) when it ends in .trc; a C3D "
+                 "when it ends in .c3d (the 15 joints and, in its EVENT group, the foot strikes and "
+                 "offs of the reconstruction's own kinematics, docs/CLI.md)")->required();
   cmd.add_option("--angle", a.alphaDeg, "Known view angle in degrees (0 frontal, +-90 profile)");
   cmd.add_flag("--unknown-angle", a.unknownAngle, "Estimate the view angle over the whole circle");
   cmd.add_option("--method", a.method, "lsq or map")->check(CLI::IsMember({"lsq", "map"}))->capture_default_str();

@@ -4,7 +4,8 @@
 // INT and REAL storage, POINT:SCALE/RATE/UNITS/LABELS/LABELS2/USED/FRAMES/LONG_FRAMES,
 // first/last frame, negative residual = missing (NaN), EVENT group.
 //
-// What comes out (RawTrial): kind Markers, format "C3D", one label per 3D point (trimmed,
+// What comes out (RawTrial): kind Markers (CanonicalJoints when the labels are exactly our 15
+// joints in METHOD §1's order, as core/io/c3d_writer.h writes a walker), format "C3D", one label per 3D point (trimmed,
 // in file order, POINT:LABELS then LABELS2, LABELS3, …), positions in millimetres in the
 // file's own axes, NaN where the residual is negative (or a coordinate is not finite),
 // firstFrame = the header's first frame number, upAxis from POINT:Y_SCREEN when present,

@@ -1,11 +1,13 @@
 #include "core/io/trc_writer.h"
 
+#include <cctype>
 #include <cmath>
 #include <iomanip>
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
 #include "core/io/atomic_write.h"
+#include "core/io/c3d_writer.h"
 #include "core/io/joint_csv.h"
 
 namespace ew {
@@ -62,8 +64,12 @@ void writeTrc(const std::filesystem::path& file, const Eigen::Ref<const Eigen::M
 
 void writeJointTrajectories(const std::filesystem::path& file, const Eigen::MatrixXd& framesMm, double rateHz,
                             const std::vector<std::string>& commentLines) {
-  if (file.extension() == ".trc") {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension == ".trc") {
     writeTrc(file, framesMm, rateHz, "mm");
+  } else if (extension == ".c3d") {
+    writeWalkerC3d(file, framesMm, rateHz, commentLines);
   } else {
     writeJointCsv(file, framesMm, rateHz, commentLines);
   }

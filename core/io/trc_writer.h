@@ -29,8 +29,10 @@ void writeTrc(const std::filesystem::path& file, const Eigen::Ref<const Eigen::M
 Eigen::Vector3d canonicalToOpenSim(const Eigen::Vector3d& p);
 Eigen::Vector3d openSimToCanonical(const Eigen::Vector3d& p);
 
-// A 3D walker written by the file's extension: .trc (writeTrc, mm) or anything else as the
-// project's joint CSV (core/io/joint_csv.h, with its comment lines; a TRC has no place for them).
+// A 3D walker written by the file's extension (any case): .trc (writeTrc, mm), .c3d
+// (writeWalkerC3d, core/io/c3d_writer.h: the 15 joints, the gait events of its own kinematics,
+// the comment lines as MANUFACTURER:NOTES) or anything else as the project's joint CSV
+// (core/io/joint_csv.h, with its comment lines; a TRC has no place for them).
 void writeJointTrajectories(const std::filesystem::path& file, const Eigen::MatrixXd& framesMm,
                             double rateHz, const std::vector<std::string>& commentLines = {});
 
