@@ -4,6 +4,8 @@
 // the plots; and its summary arithmetic on hand-made rows.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <map>
 #include <set>
@@ -95,11 +97,17 @@ TEST_F(EnginesExperiment, EveryEngineSeesTheSameClipsInOneTable) {
   std::set<std::string> settings;
   for (const auto& b : readCsv(ev / "engines_gait_bland_altman.csv")) {
     settings.insert(b.at("setting") + " " + b.at("noise"));
-    // A camera row pools every random camera: it has no view angle.
+    // A camera row pools the random cameras of an azimuth band: it has no view angle.
     EXPECT_EQ(b.at("angle_deg").empty(), b.at("setting") == "camera");
+    EXPECT_EQ(b.at("band").empty(), b.at("setting") != "camera");
   }
   EXPECT_EQ(settings, (std::set<std::string>{"view 0", "view 10", "view 20", "camera 0", "camera 2", "camera 5"}));
-  EXPECT_EQ(readCsv(ev / "engines_gait_agreement.csv").size(), rows.size() * agreementMeasures().size());
+  // A row of measures per engine and clip, and one more per camera clip: the eigenwalker with
+  // the stature given.
+  const auto cameraClips = std::count_if(engines.begin(), engines.end(),
+                                         [](const auto& e) { return std::get<0>(e.first) == "camera"; });
+  EXPECT_EQ(readCsv(ev / "engines_gait_agreement.csv").size(),
+            (rows.size() + static_cast<size_t>(cameraClips)) * agreementMeasures().size());
   for (const char* png : {"engines_views.png", "engines_cameras.png", "engines_time.png",
                           "engines_gait_stride_length_views.png", "engines_gait_stride_length_cameras.png"})
     EXPECT_GT(fs::file_size(ev / png), 5000u) << png;
