@@ -17,6 +17,7 @@
 #include "core/eigenwalker/default_model.h"
 #include "core/common/errors.h"
 #include "core/gait/dataset.h"
+#include "core/gait/fourier_walker_gait.h"
 #include "core/gait/gait_measures.h"
 #include "core/gait/joint_angles.h"
 #include "core/io/atomic_write.h"
@@ -28,6 +29,7 @@ struct GaitArgs {
   std::vector<std::string> paths;
   std::string events = "auto", out, curves, units, mapping;
   double rateHz = 0.0;
+  std::optional<double> statureM;  // a video's walker: its camera fit scaled to it
   bool json = false, wholeTrial = false;
 };
 
@@ -61,22 +63,48 @@ std::vector<CycleCurve> curvesOf(const WalkingTrial& t, const GaitMeasures& g) {
   return flexionCycleCurves(angles.degrees, angles.names, t.joints.rateHz, g);
 }
 
+// A video's walker: its 3D joints in place (a temporary CSV) and what its camera fit saw of
+// its walk over the floor.
+struct VideoWalker {
+  TrialFile file;
+  std::optional<double> progressionMps;  // unset: walking in place (a treadmill)
+};
+
 // A video: the walker the built-in detector finds, reconstructed through the unknown camera as
 // `reconstruct --input V.mp4` does (its summary on stderr), written beside the other outputs
-// in a temporary CSV and measured like any reconstruction's.
-TrialFile reconstructedFromVideo(const std::filesystem::path& video, const std::filesystem::path& folder) {
+// in a temporary CSV and measured like any reconstruction's, at its fit's progression.
+VideoWalker reconstructedFromVideo(const std::filesystem::path& video, const std::filesystem::path& folder,
+                                   std::optional<double> statureM) {
   CameraArgs c;
   c.input = video.string();
   c.out = (folder / (video.stem().string() + "_walk3d.csv")).string();
   c.modelName = defaultRealModelName();
-  runReconstructCamera(defaultRealModel(), c);
-  TrialFile f;
-  f.path = c.out;
-  f.info.subject = video.stem().string();
-  return f;
+  c.statureM = statureM;
+  CameraFit fit;
+  runReconstructCamera(defaultRealModel(), c, &fit);
+  VideoWalker w;
+  w.file.path = c.out;
+  w.file.info.subject = video.stem().string();
+  if (!fit.inPlace) w.progressionMps = fit.speedMps;
+  return w;
 }
 
-std::vector<MeasuredTrial> measureFile(const TrialFile& f, const GaitArgs& args) {
+// A reconstruction's walk, in place: its progression as its camera fit found it, or (on a
+// treadmill) its two-harmonic walker's stance feet (core/gait/fourier_walker_gait.h).
+struct ReconstructedWalk {
+  std::optional<double> progressionMps;
+};
+
+GaitMeasures measuredWalk(const WalkingTrial& t, const GaitEventSet& events, const std::string& name,
+                          const std::optional<ReconstructedWalk>& reconstructed) {
+  if (!reconstructed) return measureGait(t.joints.positionsMm, t.joints.rateHz, events, t.speedMps, name);
+  if (reconstructed->progressionMps)
+    return measureGait(t.joints.positionsMm, t.joints.rateHz, events, reconstructed->progressionMps, name);
+  return measureTwoHarmonicGait(t.joints.positionsMm, t.joints.rateHz, events, name);
+}
+
+std::vector<MeasuredTrial> measureFile(const TrialFile& f, const GaitArgs& args,
+                                       const std::optional<ReconstructedWalk>& reconstructed = std::nullopt) {
   LoadOptions options;
   if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
@@ -86,8 +114,7 @@ std::vector<MeasuredTrial> measureFile(const TrialFile& f, const GaitArgs& args)
   const WalkingTrial t = loadWalkingTrial(f.path, options, prepare);
   std::vector<MeasuredTrial> out;
   for (const auto& events : eventSetsFor(t, args.events)) {
-    MeasuredTrial m{f.path.string(), f.info.subject,
-                    measureGait(t.joints.positionsMm, t.joints.rateHz, events, t.speedMps, f.path.string()), {}};
+    MeasuredTrial m{f.path.string(), f.info.subject, measuredWalk(t, events, f.path.string(), reconstructed), {}};
     m.curves = curvesOf(t, m.measures);
     out.push_back(std::move(m));
   }
@@ -204,6 +231,9 @@ void printTable(const std::vector<MeasuredTrial>& all) {
 int runGait(const GaitArgs& args) {
   std::vector<std::filesystem::path> paths, videos;
   for (const auto& p : args.paths) (isVideoFile(p) ? videos : paths).emplace_back(p);
+  if (args.statureM && videos.empty())
+    throw Error(ErrorKind::BadArgument, "--stature", "",
+                "it scales a video's camera fit; a 3D trial's lengths are its own");
   std::vector<std::string> warnings;
   std::vector<MeasuredTrial> all;
   int failed = 0;
@@ -213,8 +243,8 @@ int runGait(const GaitArgs& args) {
   for (const auto& v : videos) {
     try {
       std::filesystem::create_directories(scratch, ec);
-      TrialFile f = reconstructedFromVideo(v, scratch);
-      for (auto& m : measureFile(f, args)) {
+      const VideoWalker walker = reconstructedFromVideo(v, scratch, args.statureM);
+      for (auto& m : measureFile(walker.file, args, ReconstructedWalk{walker.progressionMps})) {
         m.file = v.string();
         all.push_back(std::move(m));
       }
@@ -270,6 +300,10 @@ void addGaitCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz, overriding the file's");
   cmd->add_option("--units", args->units, "Length unit overriding the file's: mm, cm, m, in, cmu");
   cmd->add_option("--mapping", args->mapping, "Joint mapping file (JSON, docs/FORMATS.md)");
+  cmd->add_option("--stature", args->statureM,
+                  "A video's walker's stature in metres: the camera fit is scaled to it (without it the scale, and "
+                  "every length and speed, is the model's prior on body size)")
+      ->check(CLI::Range(0.5, 2.5));
   cmd->callback([args, &exitCode] { exitCode = runGait(*args); });
 }
 

@@ -25,6 +25,9 @@ struct KeypointSourceArgs {
   std::string detectModel = "full";   // a video's input: the built-in detector's model
   std::optional<double> fps, focalPx;
   std::optional<int> person;          // 1-based: the person to fit instead of the one who walks
+  // The walker's stature (m), when known: the eigenwalker's camera fit is scaled to it
+  // (core/camera/known_stature.h); the skeleton engine's table2 and eigenwalker bones use it.
+  std::optional<double> statureM;
   bool json = false;
 };
 
@@ -53,7 +56,6 @@ struct SkeletonOptions {
   // Bone lengths: "" (the reference's), reference, table2 (with statureM), eigenwalker
   // (scaled to statureM when given), frame (boneFrame and referenceBone "a-b=MM").
   std::string bones;
-  std::optional<double> statureM;
   std::optional<int> boneFrame;
   std::string referenceBone;
   std::string guide;  // "" or eigenwalker

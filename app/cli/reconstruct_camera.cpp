@@ -84,6 +84,7 @@ json reportJson(const CameraArgs& a, const CameraKnowledge& camera, const Keypoi
           {"stride_length_m", fit.strideLengthM},
           {"head_height_m", fit.headHeightMm / 1000.0},
           {"stature_m", fit.statureMm / 1000.0},
+          {"stature_source", camera.statureSource},
           {"k", std::vector<double>(fit.k.data(), fit.k.data() + fit.k.size())},
           {"joints_model_estimated", unseen},
           {"minima", startsJson(fit)},
@@ -135,6 +136,7 @@ CameraKnowledge cameraKnowledgeOf(const CameraArgs& a) {
   g.alphaDeg = a.alphaDeg;
   g.elevationDeg = a.elevationDeg;
   g.orthographic = a.orthographic;
+  if (a.statureM) g.statureMm = 1000.0 * *a.statureM;
   CameraKnowledge k = resolveCameraKnowledge(g);
   if (k.calibration)
     std::cerr << "camera " << k.calibration->name << " of " << a.camera << ": focal " << *k.focalPx << " px\n";
@@ -187,7 +189,8 @@ json modelLoopJson(const DetectionLoop& loop, const DetectionLoopOptions& o) {
 // The eigenwalker through the camera (reconstruct(engine, request), core/engines/request.h),
 // written and reported.
 int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
-                 const CameraKnowledge& camera, const json& lens, const json& imageSizeFrom = nullptr) {
+                 const CameraKnowledge& camera, const json& lens, const json& imageSizeFrom = nullptr,
+                 CameraFit* fitOut = nullptr) {
   DetectionLoopOptions loopOptions;
   loopOptions.rounds = modelLoopRounds(a);
   const CameraFitOptions o = cameraFitOptions(camera, estimatorOf(model, a), a.input);
@@ -219,12 +222,13 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
   report["cautions"] = clip.cautions;
   printSummary(report);
   if (a.json) std::cout << report.dump(2) << "\n";
+  if (fitOut) *fitOut = fit;
   return 0;
 }
 
 }  // namespace
 
-int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
+int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a, CameraFit* fitOut) {
   const CameraKnowledge camera = cameraKnowledgeOf(a);
   KeypointOptions k;
   if (!a.layout.empty()) k.layout = a.layout;
@@ -239,7 +243,7 @@ int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a) {
   if (!a.corrections.empty()) applyCorrections(a.corrections, keypoints);
   const json imageSizeFrom = camera.imageSizeFromCalibration ? json(camera.imageSizeSource) : json(keypoints.imageSizeSource);
   const json lens = undistorted(a, camera, keypoints);
-  return fitAndReport(model, a, std::move(keypoints), camera, lens, imageSizeFrom);
+  return fitAndReport(model, a, std::move(keypoints), camera, lens, imageSizeFrom, fitOut);
 }
 
 int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial joints) {

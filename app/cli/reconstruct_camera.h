@@ -7,12 +7,14 @@
 #include <string>
 
 #include "core/eigenwalker/model.h"
+#include "core/camera/camera_reconstruction.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "app/cli/reconstruct_args.h"
 
 namespace ew::cli {
 
-int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args);
+// fitOut: when given, the camera fit written (its speed and stride for `gait V.mp4`).
+int runReconstructCamera(const EigenwalkerModel& model, const CameraArgs& args, CameraFit* fitOut = nullptr);
 
 // The same for joints already in hand (a joint tracker's track, read as the viewer reads it):
 // args.input only names them in the report; layout, mapping and detector offsets do not apply.

@@ -59,7 +59,7 @@ std::vector<OptionScope> optionScopes(const ReconstructArgs& a) {
       {"--reference", !s.reference.empty(), kSkeleton, ""},
       {"--angles", !s.angles.empty(), kSkeleton, "for another engine run `angles` on the 3D CSV it writes"},
       {"--bones", !s.bones.empty(), kSkeleton, ""},
-      {"--stature", s.statureM.has_value(), kSkeleton, ""},
+      {"--stature", a.statureM.has_value(), kKeypoints, ""},
       {"--bone-frame", s.boneFrame.has_value(), kSkeleton, ""},
       {"--reference-bone", !s.referenceBone.empty(), kSkeleton, ""},
       {"--guide", !s.guide.empty(), kSkeleton, ""},
@@ -126,7 +126,9 @@ void addReconstructOptions(CLI::App& cmd, ReconstructArgs& a) {
                   "given), table2 (Zou et al.'s Table 2 at --stature), eigenwalker (the eigenwalker's fit of this "
                   "walker, scaled to --stature when given), frame (--bone-frame and --reference-bone)")
       ->check(CLI::IsMember({"reference", "table2", "eigenwalker", "frame"}));
-  cmd.add_option("--stature", a.skeleton.statureM, "--engine skeleton: the walker's stature in metres (--bones table2, eigenwalker)")
+  cmd.add_option("--stature", a.statureM,
+                 "The walker's stature in metres: the unknown camera's fit is scaled to it (no image fixes the scale); "
+                 "--engine skeleton: the bones of --bones table2, eigenwalker")
       ->check(CLI::Range(0.5, 2.5));
   cmd.add_option("--bone-frame", a.skeleton.boneFrame,
                   "--engine skeleton, --bones frame: a frame (0-based) with the body parallel to the image plane (§4.1)")

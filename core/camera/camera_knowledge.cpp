@@ -1,6 +1,9 @@
 #include "core/camera/camera_knowledge.h"
 
+#include <sstream>
+
 #include "core/camera/focal_length.h"
+#include "core/camera/known_stature.h"
 #include "core/camera/lens_distortion.h"
 #include "core/common/errors.h"
 #include "core/keypoints/keypoint_trial.h"
@@ -58,6 +61,14 @@ CameraKnowledge resolveCameraKnowledge(const CameraGivens& given) {
   k.elevationDeg = given.elevationDeg;
   k.alphaSource = given.alphaDeg ? givenBy(given.names.alpha) : "estimated";
   k.elevationSource = given.elevationDeg ? givenBy(given.names.elevation) : "estimated";
+  if (given.statureMm && !(*given.statureMm >= 1000.0 * kMinStatureM && *given.statureMm <= 1000.0 * kMaxStatureM)) {
+    std::ostringstream problem;
+    problem << *given.statureMm / 1000.0 << " m is not a person's stature (" << kMinStatureM << "-" << kMaxStatureM
+            << " m)";
+    throw Error(ErrorKind::BadArgument, given.names.stature, "", problem.str());
+  }
+  k.statureMm = given.statureMm;
+  k.statureSource = given.statureMm ? givenBy(given.names.stature) : "the model's prior";
   return k;
 }
 

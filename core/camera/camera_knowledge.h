@@ -27,11 +27,12 @@ struct CameraGivens {
   std::optional<KeypointImageSize> imageSize;     // the image's size in px
   std::optional<double> alphaDeg, elevationDeg;   // held instead of estimated
   bool orthographic = false;                      // no focal known: scaled orthography, not estimated
+  std::optional<double> statureMm;                // the walker's: the scale (known_stature.h)
   // How the program names each given in errors and sources (the CLI's options by default;
   // the viewer passes its fields' names).
   struct Names {
     std::string focal = "--focal-px", calibration = "--camera", imageSize = "--image-size";
-    std::string alpha = "--angle", elevation = "--elevation";
+    std::string alpha = "--angle", elevation = "--elevation", stature = "--stature";
   } names;
 };
 
@@ -48,11 +49,15 @@ struct CameraKnowledge {
   std::optional<Eigen::Vector2d> principalPointPx;  // the calibration's
   std::optional<double> alphaDeg, elevationDeg;
   std::string alphaSource, elevationSource;     // "given (--angle)" or "estimated"
+  // The walker's stature when given: the fit is scaled to it (known_stature.h); else the scale
+  // is the model's prior on body size.
+  std::optional<double> statureMm;
+  std::string statureSource;                    // "given (--stature)" or "the model's prior"
 };
 
 // Reads the calibration file (readCalibratedCamera's errors) and checks what was given:
-// Error(BadArgument) naming the given for a focal length no camera has (focal_length.h) and for
-// a focal length and a calibration both given.
+// Error(BadArgument) naming the given for a focal length no camera has (focal_length.h), for
+// a focal length and a calibration both given, and for a stature no person has.
 CameraKnowledge resolveCameraKnowledge(const CameraGivens& given);
 
 // The one construction site of the camera fit's options: the knowledge, the estimator and the

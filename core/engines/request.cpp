@@ -3,6 +3,7 @@
 #include <limits>
 
 #include "core/camera/clip_reconstruction.h"
+#include "core/camera/known_stature.h"
 #include "core/camera/lens_distortion.h"
 #include "core/common/errors.h"
 
@@ -54,6 +55,7 @@ ReconstructionResult eigenwalkerThroughCamera(const EigenwalkerEngine& engine, c
   loop.rounds = view.modelLoopRounds;
   ReconstructionResult r;
   r.camera.eigenwalker = reconstructWithDetectionLoop(engine.model, view.keypoints, fit, loop);
+  if (view.camera.statureMm) scaleToStature(*r.camera.eigenwalker, *view.camera.statureMm);
   r.engine = fromCameraFit(r.camera.eigenwalker->last);
   r.engine.alphaEstimated = !view.camera.alphaDeg;
   return r;

@@ -67,6 +67,28 @@ test::ProgramRun reconstructAt1400Px(const fs::path& clip, const std::vector<std
 
 json reportOf(const test::ProgramRun& run) { return json::parse(run.output.substr(run.output.find("{\n"))); }
 
+// The walker's stature given: the same image, a walker scaled to it, and the camera's distance
+// and the walk's speed with it (core/camera/known_stature.h).
+TEST(ReconstructCameraCli, AGivenStatureScalesTheFitNotTheImage) {
+  const fs::path clip = filmedOpenPose("camera_cli_stature");
+  const json free = reportOf(reconstructAt1400Px(clip));
+  const test::ProgramRun run = reconstructAt1400Px(clip, {"--stature", "1.95"});
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const json given = reportOf(run);
+  EXPECT_NEAR(given["stature_m"].get<double>(), 1.95, 1e-9);
+  EXPECT_EQ(given["stature_source"], "given (--stature)");
+  EXPECT_EQ(free["stature_source"], "the model's prior");
+  const double s = 1.95 / free["stature_m"].get<double>();
+  EXPECT_NEAR(given["distance_m"].get<double>(), s * free["distance_m"].get<double>(), 1e-6);
+  EXPECT_NEAR(given["speed_mps"].get<double>(), s * free["speed_mps"].get<double>(), 1e-6);
+  EXPECT_NEAR(given["stride_length_m"].get<double>(), s * free["stride_length_m"].get<double>(), 1e-6);
+  EXPECT_NEAR(given["alpha_deg"].get<double>(), free["alpha_deg"].get<double>(), 1e-9);
+  EXPECT_NEAR(given["reprojection_rms_px"].get<double>(), free["reprojection_rms_px"].get<double>(), 1e-9);
+  const test::ProgramRun wrong = reconstructAt1400Px(clip, {"--stature", "175"});  // cm for m
+  EXPECT_NE(wrong.exitCode, 0);
+  EXPECT_NE(wrong.output.find("--stature"), std::string::npos) << wrong.output;
+}
+
 // The same walker on a treadmill: fitted walking in place, its speed the belt's (stance feet).
 TEST(ReconstructCameraCli, ATreadmillWalkerIsFittedInPlace) {
   const fs::path clip = test::makeTempDir("camera_cli_treadmill");

@@ -79,6 +79,14 @@ TEST_F(GaitCli, ATrialThatCannotBeMeasuredIsNamedAndTheExitCodeIsOne) {
   EXPECT_NE(file.err.find("has no foot strike events"), std::string::npos) << file.err;
 }
 
+// A known stature scales a video's camera fit; a 3D trial's lengths are measured, not scaled.
+TEST_F(GaitCli, AStatureIsForAVideosWalkerOnly) {
+  const test::ShellRun r = runCli("gait pop/SYN001_T1.csv --stature 1.7", root_);
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("--stature"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("video"), std::string::npos) << r.err;
+}
+
 TEST_F(GaitCli, ATrcWrittenByJointsIsMeasuredLikeItsSource) {
   ASSERT_EQ(runCli("joints pop/SYN002_T1.csv --out syn2.trc", root_).exitCode, 0);
   const test::ShellRun a = runCli("gait pop/SYN002_T1.csv --json", root_);
