@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/eigenwalker/default_model.h"
+#include "core/io/c3d_reader.h"
 #include "core/io/trc_reader.h"
 #include "tests/common/test_support.h"
 #include "tests/gui/gui_run.h"
@@ -51,6 +52,7 @@ TEST_F(GuiGait, MeasuresTheWalkerAndItsReconstructionAndExportsThem) {
     {"export_gait_report": ")" + d + R"(/report.csv"},
     {"export_gait_report": ")" + d + R"(/report.json"},
     {"export_gait_report": ")" + d + R"(/walk.trc"},
+    {"export_gait_report": ")" + d + R"(/walk.c3d"},
     {"export_state": ")" + d + R"(/state.json"},
     {"set_mode": "explore"},
     {"export_gait_report": ")" + d + R"(/explore_mean.csv"},
@@ -96,6 +98,11 @@ TEST_F(GuiGait, MeasuresTheWalkerAndItsReconstructionAndExportsThem) {
   const int pelvisX = 3 * 2;  // pelvis, OpenSim X = forward
   const double travelled = trc.positionsMm(trc.frameCount() - 1, pelvisX) - trc.positionsMm(0, pelvisX);
   EXPECT_GT(travelled, 3000.0);  // four strides of about 1.4 m
+  // And as C3D: the same 15 joints (float precision) and the walk's gait events.
+  const RawTrial c3d = readC3d(dir / "walk.c3d");
+  EXPECT_DOUBLE_EQ(c3d.rateHz, 100.0);
+  EXPECT_EQ(c3d.frameCount(), trc.frameCount());
+  EXPECT_GE(c3d.events.size(), 6u);  // four strides: a strike and a foot off per foot per stride
   const std::string mot = readAll(dir / "walk.mot");
   EXPECT_NE(mot.find("inDegrees=yes\n"), std::string::npos);
   EXPECT_NE(mot.find("endheader\ntime\t"), std::string::npos);

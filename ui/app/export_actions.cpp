@@ -12,6 +12,7 @@
 #include "core/io/atomic_write.h"
 #include "core/io/bvh_writer.h"
 #include "core/io/joint_csv.h"
+#include "core/io/c3d_writer.h"
 #include "core/io/trc_writer.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "ui/app/actions.h"
@@ -153,8 +154,13 @@ void exportGaitReport(AppState& s, const std::filesystem::path& path) {
     mot.replace_extension(".mot");
     writeJointAngles(mot.string(), jointAngles(frames, Eigen::Vector3d::UnitZ(), path.string()), kReportRateHz,
                      {"gait report: the reconstruction's joint angles (eigenwalker)"});
+  } else if (ext == ".c3d") {
+    // For gait labs' tools (Visual3D, Mokka): the joints and the gait events of its own kinematics.
+    writeWalkerC3d(path, walkedOverTheFloor(recon), kReportRateHz,
+                   {"gait report: the reconstruction walked over the floor at its measured speed"});
   } else {
-    throw std::invalid_argument("gait report: export to .csv, .json or .trc (with its .mot), not '" + ext + "'");
+    throw std::invalid_argument("gait report: export to .csv, .json, .trc (with its .mot) or .c3d, not '" + ext +
+                                "'");
   }
   p.status = "wrote " + path.filename().string() + (ext == ".trc" ? " and its .mot" : "");
   s.log.info("Wrote " + path.string() + " (gait report)");

@@ -287,6 +287,10 @@ void drawExport(AppState& s, GaitPanel& p, float scale) {
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("the reconstruction (in compare mode the selected engine's) walked over the floor at its\n"
                       "measured speed, as an OpenSim marker file, and its joint angles as an OpenSim motion file");
+  sameLineOrWrap(buttonWidth("C3D"));
+  if (ImGui::Button("C3D")) run("C3D", [&] { actions::exportGaitReport(s, base + ".c3d"); });
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the same walk with its gait events, as a C3D file for gait labs' tools (Visual3D, Mokka)");
   if (!p.status.empty()) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s", p.status.c_str());
