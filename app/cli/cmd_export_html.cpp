@@ -44,7 +44,8 @@ std::optional<double> meanKnownSpeed(const EigenwalkerModel& model) {
   return sum / n;
 }
 
-int walkerIndex(const EigenwalkerModel& model, const std::string& key, const std::string& modelName) {
+int walkerIndex(const EigenwalkerModel& model, const std::string& key,
+                const std::string& modelName) {
   for (int r = 0; r < model.walkerCount(); ++r)
     if (model.walkerIds[static_cast<std::size_t>(r)] == key) return r;
   try {
@@ -68,7 +69,8 @@ ChosenWalker chooseWalker(const ExportHtmlArgs& args) {
     if (!args.units.empty()) options.unitsOverride = args.units;
     if (!args.mapping.empty()) options.mappingFile = args.mapping;
     const CompletedTrial t = completeWalkingTrial(loadWalkingTrial(args.input, options), model);
-    for (const auto& w : t.trial.joints.warnings) std::cerr << "warning: " << args.input << ": " << w << "\n";
+    for (const auto& w : t.trial.joints.warnings)
+      std::cerr << "warning: " << args.input << ": " << w << "\n";
     c.walker = {t.fit.w, t.fit.omegaRadS, t.fit.phaseRad, args.input};
     if (t.trial.speedMps > 0.0) c.speedMps = t.trial.speedMps;
     c.speedSource = "the trial's own";
@@ -84,14 +86,16 @@ ChosenWalker chooseWalker(const ExportHtmlArgs& args) {
   }
   // The mean walker: the walkers are phase-aligned (METHOD §3), so their mean is a walk; its
   // ω is the mean of theirs.
-  c.walker = {model.mean, model.omegasRadS.mean(), 0.0, "the mean walker of the model " + modelName};
+  c.walker = {model.mean, model.omegasRadS.mean(), 0.0,
+              "the mean walker of the model " + modelName};
   c.speedMps = meanKnownSpeed(model);
   c.speedSource = "the mean of the model's walkers";
   return c;
 }
 
 template <class T>
-T pickName(const std::string& value, const std::string& option, std::initializer_list<std::pair<const char*, T>> names) {
+T pickName(const std::string& value, const std::string& option,
+           std::initializer_list<std::pair<const char*, T>> names) {
   std::string known;
   for (const auto& [name, v] : names) {
     if (value == name) return v;
@@ -111,14 +115,18 @@ void parseSize(const std::string& size, HtmlWalkerSettings& s) {
     }
   } catch (const std::exception&) {
   }
-  throw Error(ErrorKind::BadArgument, "--size", "", "\"" + size + "\": expected WIDTHxHEIGHT in pixels, e.g. 800x600");
+  throw Error(ErrorKind::BadArgument, "--size", "",
+              "\"" + size + "\": expected WIDTHxHEIGHT in pixels, e.g. 800x600");
 }
 
 int runExportHtml(ExportHtmlArgs args) {
   HtmlWalkerSettings& s = args.settings;
   s.theme = pickName<HtmlTheme>(args.theme, "--theme",
-                                {{"dark", HtmlTheme::Dark}, {"light", HtmlTheme::Light}, {"projector", HtmlTheme::Projector}});
-  s.framing = pickName<HtmlFraming>(args.framing, "--framing", {{"fit", HtmlFraming::Fit}, {"viewer", HtmlFraming::Viewer}});
+                                {{"dark", HtmlTheme::Dark},
+                                 {"light", HtmlTheme::Light},
+                                 {"projector", HtmlTheme::Projector}});
+  s.framing = pickName<HtmlFraming>(args.framing, "--framing",
+                                    {{"fit", HtmlFraming::Fit}, {"viewer", HtmlFraming::Viewer}});
   parseSize(args.size, s);
   const ChosenWalker c = chooseWalker(args);
   std::string speedSource = "given";
@@ -131,9 +139,11 @@ int runExportHtml(ExportHtmlArgs args) {
     speedSource = "a typical adult's, the walker's own unknown";
   }
   writeWalkerHtml(args.out, c.walker, s);
-  std::cerr << "wrote " << args.out << ": " << c.walker.name << ", view angle " << s.viewAngleDeg << " deg, "
-            << s.widthPx << "x" << s.heightPx << " px";
-  if (s.translate) std::cerr << ", walking overground at " << s.translateSpeedMps << " m/s (" << speedSource << ")";
+  std::cerr << "wrote " << args.out << ": " << c.walker.name << ", view angle " << s.viewAngleDeg
+            << " deg, " << s.widthPx << "x" << s.heightPx << " px";
+  if (s.translate)
+    std::cerr << ", walking overground at " << s.translateSpeedMps << " m/s (" << speedSource
+              << ")";
   std::cerr << "\n";
   return 0;
 }
@@ -143,46 +153,63 @@ int runExportHtml(ExportHtmlArgs args) {
 void addExportHtmlCommand(CLI::App& app, int& exitCode) {
   auto args = std::make_shared<ExportHtmlArgs>();
   HtmlWalkerSettings& s = args->settings;
-  auto* cmd = app.add_subcommand("export-html",
-                                 "Write one walker as a self-contained HTML page that animates it as point "
-                                 "lights in any browser (no server, nothing fetched)");
+  auto* cmd =
+      app.add_subcommand("export-html",
+                         "Write one walker as a self-contained HTML page that animates it as point "
+                         "lights in any browser (no server, nothing fetched)");
   cmd->add_option("--out", args->out, "Output .html (written atomically)")->required();
-  auto* input = cmd->add_option("--input", args->input,
-                                "A 3D trial (.c3d .bvh .amc .trc .csv .tsv) to fit, as `joints` prepares it; joints "
-                                "it lacks come from the model")
-                    ->check(CLI::ExistingFile);
-  cmd->add_option("--walker", args->walker,
-                  "A walker of the model, by id or 1-based number (`info` on the model's data lists them); "
-                  "default: the model's mean walker")
+  auto* input =
+      cmd->add_option(
+             "--input", args->input,
+             "A 3D trial (.c3d .bvh .amc .trc .csv .tsv) to fit, as `joints` prepares it; joints "
+             "it lacks come from the model")
+          ->check(CLI::ExistingFile);
+  cmd->add_option(
+         "--walker", args->walker,
+         "A walker of the model, by id or 1-based number (`info` on the model's data lists them); "
+         "default: the model's mean walker")
       ->excludes(input);
-  cmd->add_option("--model", args->model, "Model (.ewm) whose walker is shown or that completes a trial; "
-                                           "default: the model of real walkers shipped with the program")
+  cmd->add_option("--model", args->model,
+                  "Model (.ewm) whose walker is shown or that completes a trial; "
+                  "default: the model of real walkers shipped with the program")
       ->check(CLI::ExistingFile);
-  cmd->add_option("--rate", args->rateHz, "With --input: frame rate in Hz, overriding the file's")->needs(input);
-  cmd->add_option("--units", args->units, "With --input: length unit overriding the file's: mm, cm, m, in, cmu")
+  cmd->add_option("--rate", args->rateHz, "With --input: frame rate in Hz, overriding the file's")
       ->needs(input);
-  cmd->add_option("--mapping", args->mapping, "With --input: joint mapping file (JSON, docs/FORMATS.md)")->needs(input);
-  cmd->add_option("--angle", s.viewAngleDeg, "View angle α in degrees (docs/METHOD.md §5): 0 from behind, 90 the "
-                                             "walker's right side")
+  cmd->add_option("--units", args->units,
+                  "With --input: length unit overriding the file's: mm, cm, m, in, cmu")
+      ->needs(input);
+  cmd->add_option("--mapping", args->mapping,
+                  "With --input: joint mapping file (JSON, docs/FORMATS.md)")
+      ->needs(input);
+  cmd->add_option("--angle", s.viewAngleDeg,
+                  "View angle α in degrees (docs/METHOD.md §5): 0 from behind, 90 the "
+                  "walker's right side")
       ->capture_default_str();
-  cmd->add_option("--elevation", s.elevationDeg, "Camera elevation in degrees, -90 to 90 (> 0 looks down)")
+  cmd->add_option("--elevation", s.elevationDeg,
+                  "Camera elevation in degrees, -90 to 90 (> 0 looks down)")
       ->capture_default_str();
-  cmd->add_option("--speed", s.playbackSpeed, "Playback speed, -5 to 5 (1 real time; < 0 walks backwards)")
+  cmd->add_option("--speed", s.playbackSpeed,
+                  "Playback speed, -5 to 5 (1 real time; < 0 walks backwards)")
       ->capture_default_str();
-  cmd->add_option("--phase", s.startPhase01, "Where in the gait cycle the page starts, 0 to 1 (the viewer's phase)")
+  cmd->add_option("--phase", s.startPhase01,
+                  "Where in the gait cycle the page starts, 0 to 1 (the viewer's phase)")
       ->capture_default_str();
   cmd->add_flag("--lines", s.lines, "Draw the 14 bones between the dots (a stick figure)");
-  cmd->add_flag("--translate", s.translate, "Walk overground across the page (default: on a treadmill)");
+  cmd->add_flag("--translate", s.translate,
+                "Walk overground across the page (default: on a treadmill)");
   cmd->add_option("--translate-speed", args->translateSpeedMps,
                   "Overground speed in m/s; default: the walker's own where known, else 1.3");
-  cmd->add_option("--size", args->size, "Canvas size in pixels, WIDTHxHEIGHT")->capture_default_str();
+  cmd->add_option("--size", args->size, "Canvas size in pixels, WIDTHxHEIGHT")
+      ->capture_default_str();
   cmd->add_option("--dot-radius", s.dotRadiusPx, "Dot radius in pixels")->capture_default_str();
   cmd->add_option("--theme", args->theme, "dark, light or projector")->capture_default_str();
   cmd->add_option("--dot-colour", s.dotColour, "Dot colour #rrggbb (default: the theme's)");
-  cmd->add_option("--background", s.backgroundColour, "Background colour #rrggbb (default: the theme's)");
-  cmd->add_option("--framing", args->framing,
-                  "How millimetres map to pixels: fit (the walker fills the canvas) or viewer (the viewer's "
-                  "2D view: 2.35 m high, every walker to one scale)")
+  cmd->add_option("--background", s.backgroundColour,
+                  "Background colour #rrggbb (default: the theme's)");
+  cmd->add_option(
+         "--framing", args->framing,
+         "How millimetres map to pixels: fit (the walker fills the canvas) or viewer (the viewer's "
+         "2D view: 2.35 m high, every walker to one scale)")
       ->capture_default_str();
   cmd->add_option("--title", s.title, "The page's title")->capture_default_str();
   cmd->add_option("--caption", s.caption, "A caption under the title");

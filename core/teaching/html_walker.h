@@ -58,22 +58,22 @@ enum class HtmlTheme { Dark, Light, Projector };
 enum class HtmlFraming { Fit, Viewer };
 
 struct HtmlWalkerSettings {
-  double viewAngleDeg = 90.0;    // α, degrees (METHOD §5): +90 shows the walker's right side
-  double elevationDeg = 0.0;     // ε in [−90, 90]: > 0 looks down on the walker
-  double playbackSpeed = 1.0;    // walker seconds per second, in [−5, 5]; < 0 walks backwards
-  double startPhase01 = 0.0;     // the cycle's fraction θ / 2π at τ = 0, finite
-  bool lines = false;            // the 14 bones (kBones) drawn behind the dots
-  bool translate = false;        // overground (the walker progresses) or treadmill
+  double viewAngleDeg = 90.0;      // α, degrees (METHOD §5): +90 shows the walker's right side
+  double elevationDeg = 0.0;       // ε in [−90, 90]: > 0 looks down on the walker
+  double playbackSpeed = 1.0;      // walker seconds per second, in [−5, 5]; < 0 walks backwards
+  double startPhase01 = 0.0;       // the cycle's fraction θ / 2π at τ = 0, finite
+  bool lines = false;              // the 14 bones (kBones) drawn behind the dots
+  bool translate = false;          // overground (the walker progresses) or treadmill
   double translateSpeedMps = 1.3;  // progression speed, m/s, in [0, 10]
-  int widthPx = 800;             // canvas size in CSS pixels, each in [64, 4096]
+  int widthPx = 800;               // canvas size in CSS pixels, each in [64, 4096]
   int heightPx = 600;
-  double dotRadiusPx = 5.0;      // in (0, 50]
+  double dotRadiusPx = 5.0;  // in (0, 50]
   HtmlTheme theme = HtmlTheme::Dark;
   std::string dotColour;         // "#rrggbb"; empty: the theme's
   std::string backgroundColour;  // "#rrggbb"; empty: the theme's
   HtmlFraming framing = HtmlFraming::Fit;
   std::string title = "A point-light walker";  // at most 200 characters, HTML-escaped
-  std::string caption;                          // at most 2000 characters, HTML-escaped
+  std::string caption;                         // at most 2000 characters, HTML-escaped
 };
 
 // The theme's colours ("#rrggbb"), the settings' own where given.

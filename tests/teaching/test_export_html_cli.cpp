@@ -17,7 +17,8 @@ class ExportHtmlCli : public ::testing::Test {
 TEST_F(ExportHtmlCli, WritesTheMeanWalkerByDefault) {
   const test::ShellRun r = runCli("export-html --out walker.html", dir_);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.err.find("wrote walker.html: the mean walker of the model 24 real walkers (default), view angle 90"),
+  EXPECT_NE(r.err.find("wrote walker.html: the mean walker of the model 24 real walkers (default), "
+                       "view angle 90"),
             std::string::npos)
       << r.err;
   const std::string page = test::readTextFile(dir_ / "walker.html");
@@ -27,24 +28,29 @@ TEST_F(ExportHtmlCli, WritesTheMeanWalkerByDefault) {
 
 TEST_F(ExportHtmlCli, PassesTheSettings) {
   const test::ShellRun r = runCli(
-      "export-html --out w.html --walker 2 --angle 45 --elevation 10 --speed -1 --phase 0.25 --lines --translate "
-      "--size 640x480 --dot-radius 3 --theme light --dot-colour '#aa0000' --framing viewer --title 'Walker two' "
+      "export-html --out w.html --walker 2 --angle 45 --elevation 10 --speed -1 --phase 0.25 "
+      "--lines --translate "
+      "--size 640x480 --dot-radius 3 --theme light --dot-colour '#aa0000' --framing viewer --title "
+      "'Walker two' "
       "--caption 'From the default model'",
       dir_);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("walking overground at"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("(the walker's own)"), std::string::npos) << r.err;
   const std::string page = test::readTextFile(dir_ / "w.html");
-  for (const char* part : {"const S = {width: 640, height: 480, viewAngleDeg: 45, elevationDeg: 10, playbackSpeed: -1, "
-                           "startPhase01: 0.25, lines: true, translate: true",
-                           "dotRadiusPx: 3}", "dot: \"#aa0000\"", "background: \"#ffffff\"", "<h1>Walker two</h1>",
-                           "From the default model", "pxPerMm: 0.20425531914893616"})
+  for (const char* part :
+       {"const S = {width: 640, height: 480, viewAngleDeg: 45, elevationDeg: 10, playbackSpeed: "
+        "-1, "
+        "startPhase01: 0.25, lines: true, translate: true",
+        "dotRadiusPx: 3}", "dot: \"#aa0000\"", "background: \"#ffffff\"", "<h1>Walker two</h1>",
+        "From the default model", "pxPerMm: 0.20425531914893616"})
     EXPECT_NE(page.find(part), std::string::npos) << part;
 }
 
 TEST_F(ExportHtmlCli, FitsATrial) {
   ASSERT_EQ(runCli("synth --count 1 --seed 7 --cycles 4 --out pop/", dir_).exitCode, 0);
-  const test::ShellRun r = runCli("export-html --input pop/SYN001_T1.csv --out trial.html --translate", dir_);
+  const test::ShellRun r =
+      runCli("export-html --input pop/SYN001_T1.csv --out trial.html --translate", dir_);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("wrote trial.html: pop/SYN001_T1.csv"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("(the trial's own)"), std::string::npos) << r.err;
@@ -61,7 +67,8 @@ TEST_F(ExportHtmlCli, RefusesBadOptions) {
   refused("--framing wide", "--framing: \"wide\" is not one of fit, viewer");
   refused("--walker 99", "--walker: \"99\" is no walker's id, nor a number from 1 to 24");
   refused("--size 800", "--size: \"800\": expected WIDTHxHEIGHT");
-  refused("--elevation 91", "bad.html: HTML walker: the elevation (degrees) must be in [-90, 90], got 91");
+  refused("--elevation 91",
+          "bad.html: HTML walker: the elevation (degrees) must be in [-90, 90], got 91");
   refused("--dot-colour red", "bad.html: HTML walker: the dot colour must be #rrggbb");
   test::writeBinaryFile(dir_ / "x.csv", "");
   refused("--walker 1 --input x.csv", "excludes");

@@ -31,10 +31,12 @@ TEST(HtmlWalker, PageIsSelfContained) {
   s.title = "Walker <one> & \"two\"";
   s.caption = "line one\nline two";
   const std::string page = walkerHtml(realWalker(), s);
-  for (const char* banned : {"http:", "https:", "://", "src=", "fetch", "XMLHttpRequest", "import", "url(",
-                             "<link", "<img", "<iframe", "WebSocket", "EventSource", "sendBeacon", "<script src"})
+  for (const char* banned :
+       {"http:", "https:", "://", "src=", "fetch", "XMLHttpRequest", "import", "url(", "<link",
+        "<img", "<iframe", "WebSocket", "EventSource", "sendBeacon", "<script src"})
     EXPECT_EQ(page.find(banned), std::string::npos) << banned;
-  EXPECT_NE(page.find("Content-Security-Policy\" content=\"default-src 'none';"), std::string::npos);
+  EXPECT_NE(page.find("Content-Security-Policy\" content=\"default-src 'none';"),
+            std::string::npos);
   EXPECT_EQ(page.find("<one>"), std::string::npos) << "the title is escaped";
   EXPECT_NE(page.find("Walker &lt;one&gt; &amp; &quot;two&quot;"), std::string::npos);
   EXPECT_NE(page.find("line one<br>line two"), std::string::npos);
@@ -56,7 +58,8 @@ TEST(HtmlWalker, PageHoldsTheCoefficientsExactly) {
   }
   EXPECT_TRUE(test::bitwiseEqual(parsed, walker.w));
   char omega[96];
-  std::snprintf(omega, sizeof omega, "const OMEGA = %.17g, PHI = %.17g;", walker.omegaRadS, walker.phaseRad);
+  std::snprintf(omega, sizeof omega, "const OMEGA = %.17g, PHI = %.17g;", walker.omegaRadS,
+                walker.phaseRad);
   EXPECT_NE(page.find(omega), std::string::npos);
 }
 
@@ -78,8 +81,10 @@ TEST(HtmlWalker, FirstFrameIsTheViewersProjection) {
       const Eigen::MatrixXd uv = synthesizeFrames(projectToView(walker.w, alpha), 1.0, 0.0, theta);
       const double pxPerMm = 600.0 / 2350.0;
       for (int j = 0; j < kJointCount; ++j) {
-        EXPECT_NEAR(dots(j, 0), 400.0 + pxPerMm * uv(0, 2 * j), 1e-9) << "α " << alpha << " joint " << j;
-        EXPECT_NEAR(dots(j, 1), 300.0 - pxPerMm * (uv(0, 2 * j + 1) - 975.0), 1e-9) << "α " << alpha;
+        EXPECT_NEAR(dots(j, 0), 400.0 + pxPerMm * uv(0, 2 * j), 1e-9)
+            << "α " << alpha << " joint " << j;
+        EXPECT_NEAR(dots(j, 1), 300.0 - pxPerMm * (uv(0, 2 * j + 1) - 975.0), 1e-9)
+            << "α " << alpha;
       }
     }
   }
@@ -95,10 +100,16 @@ TEST(HtmlWalker, DotsFollowTheWalkersTime) {
   s.playbackSpeed = -0.5;
   s.startPhase01 = 0.3;
   for (double tau : {0.0, 0.37, 2.0})
-    EXPECT_LT((htmlWalkerDotsPx(walker, s, tau) - htmlWalkerDotsPx(shifted, s, tau)).cwiseAbs().maxCoeff(), 1e-9);
+    EXPECT_LT((htmlWalkerDotsPx(walker, s, tau) - htmlWalkerDotsPx(shifted, s, tau))
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-9);
   // One stride at speed −0.5 is 2 · 2π/ω seconds of page time: the same frame again.
   const double stride = 2.0 * 2.0 * std::numbers::pi / walker.omegaRadS;
-  EXPECT_LT((htmlWalkerDotsPx(walker, s, stride) - htmlWalkerDotsPx(walker, s, 0.0)).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((htmlWalkerDotsPx(walker, s, stride) - htmlWalkerDotsPx(walker, s, 0.0))
+                .cwiseAbs()
+                .maxCoeff(),
+            1e-9);
 }
 
 // The fitted framing keeps every dot inside the canvas, by its margin, at every α and phase.
@@ -141,13 +152,15 @@ TEST(HtmlWalker, TranslationMovesAndWraps) {
   s.translate = true;
   const HtmlCanvasMapping m = htmlCanvasMapping(walker, s);
   const Eigen::MatrixXd moved = htmlWalkerDotsPx(walker, s, 0.25);
-  EXPECT_NEAR((moved.col(0) - still.col(0)).mean(), 250.0 * m.pxPerMm, 1e-6);  // 250 mm to the right
+  EXPECT_NEAR((moved.col(0) - still.col(0)).mean(), 250.0 * m.pxPerMm,
+              1e-6);  // 250 mm to the right
   EXPECT_LT((moved.col(1) - still.col(1)).cwiseAbs().maxCoeff(), 1e-9);
   // Later, past the right edge: back from the left, the offset within half a period.
   const double tau = 0.8 * m.wrapXPx / (1000.0 * m.pxPerMm);
   HtmlWalkerSettings treadmill = s;
   treadmill.translate = false;
-  const double offset = (htmlWalkerDotsPx(walker, s, tau) - htmlWalkerDotsPx(walker, treadmill, tau)).col(0).mean();
+  const double offset =
+      (htmlWalkerDotsPx(walker, s, tau) - htmlWalkerDotsPx(walker, treadmill, tau)).col(0).mean();
   EXPECT_NEAR(offset, (0.8 - 1.0) * m.wrapXPx, 1e-6);
 }
 
@@ -192,8 +205,8 @@ TEST(HtmlWalker, RefusesBadInputNamingTheFile) {
   bad([](HtmlWalkerSettings& s) { s.backgroundColour = "#12345g"; }, "#rrggbb");
   bad([](HtmlWalkerSettings& s) { s.title = "a\tb"; }, "control character");
   bad([](HtmlWalkerSettings& s) { s.caption = std::string(2001, 'x'); }, "at most 2000");
-  EXPECT_TRUE(test::throwsError([&] { htmlWalkerDotsPx(good, {}, std::nan("")); }, ErrorKind::BadArgument,
-                                {"time must be finite"}));
+  EXPECT_TRUE(test::throwsError([&] { htmlWalkerDotsPx(good, {}, std::nan("")); },
+                                ErrorKind::BadArgument, {"time must be finite"}));
 }
 
 TEST(HtmlWalker, WritesThePageAtomically) {
@@ -203,7 +216,8 @@ TEST(HtmlWalker, WritesThePageAtomically) {
   s.lines = true;
   writeWalkerHtml(dir / "walker.html", realWalker(), s);
   EXPECT_EQ(test::readTextFile(dir / "walker.html"), walkerHtml(realWalker(), s));
-  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1) << "no temporary file left";
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1)
+      << "no temporary file left";
   EXPECT_EQ(htmlColours(s).background, "#ffffff");
   EXPECT_EQ(htmlFrozenFragment(0.25), "#t=0.25");
 }

@@ -21,7 +21,9 @@ namespace {
 constexpr int kWidth = 800, kHeight = 600;
 
 cv::Vec3d rgbOf(const std::string& hex) {
-  const auto channel = [&](int i) { return static_cast<double>(std::stoi(hex.substr(1 + 2 * i, 2), nullptr, 16)); };
+  const auto channel = [&](int i) {
+    return static_cast<double>(std::stoi(hex.substr(1 + 2 * i, 2), nullptr, 16));
+  };
   return {channel(0), channel(1), channel(2)};
 }
 
@@ -32,13 +34,15 @@ struct Screenshot {
   std::string log;
 };
 
-Screenshot screenshot(const std::filesystem::path& page, double timeS, const std::filesystem::path& dir) {
+Screenshot screenshot(const std::filesystem::path& page, double timeS,
+                      const std::filesystem::path& dir) {
   const auto png = dir / (page.stem().string() + ".png");
   const auto start = std::chrono::steady_clock::now();
   const test::ProgramRun run = test::runProgram(
       test::findProgram("timeout").string(),
-      {"60", test::headlessChromium().string(), "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
-       "--no-first-run", "--user-data-dir=" + (dir / "profile").string(), "--screenshot=" + png.string(),
+      {"60", test::headlessChromium().string(), "--headless", "--no-sandbox", "--disable-gpu",
+       "--hide-scrollbars", "--force-device-scale-factor=1", "--no-first-run",
+       "--user-data-dir=" + (dir / "profile").string(), "--screenshot=" + png.string(),
        "--window-size=" + std::to_string(kWidth) + "," + std::to_string(kHeight),
        "file://" + std::filesystem::absolute(page).string() + htmlFrozenFragment(timeS)},
       dir);
@@ -85,7 +89,8 @@ struct Comparison {
 
 // Each dot alone has a blob within 1 px of where htmlWalkerDotsPx put it; dots that may
 // touch have a blob near them; every blob is a dot's (nothing else is drawn in the colour).
-Comparison compareDots(const std::vector<Blob>& blobs, const Eigen::MatrixXd& expected, double radiusPx) {
+Comparison compareDots(const std::vector<Blob>& blobs, const Eigen::MatrixXd& expected,
+                       double radiusPx) {
   Comparison c;
   std::vector<int> group(kJointCount);
   for (int j = 0; j < kJointCount; ++j) group[static_cast<std::size_t>(j)] = j;
@@ -95,7 +100,8 @@ Comparison compareDots(const std::vector<Blob>& blobs, const Eigen::MatrixXd& ex
   };
   for (int a = 0; a < kJointCount; ++a)
     for (int b = a + 1; b < kJointCount; ++b)
-      if ((expected.row(a) - expected.row(b)).norm() < touchingPx(radiusPx)) group[static_cast<std::size_t>(rootOf(b))] = rootOf(a);
+      if ((expected.row(a) - expected.row(b)).norm() < touchingPx(radiusPx))
+        group[static_cast<std::size_t>(rootOf(b))] = rootOf(a);
   std::vector<int> roots;
   for (int j = 0; j < kJointCount; ++j) {
     const int r = rootOf(j);
@@ -105,15 +111,18 @@ Comparison compareDots(const std::vector<Blob>& blobs, const Eigen::MatrixXd& ex
   EXPECT_LE(blobs.size(), static_cast<std::size_t>(kJointCount)) << "more blobs than dots";
   for (const Blob& b : blobs) {  // nothing drawn where no dot is
     double nearest = 1e9;
-    for (int j = 0; j < kJointCount; ++j) nearest = std::min(nearest, cv::norm(b.centre - cv::Point2d(expected(j, 0), expected(j, 1))));
-    EXPECT_LE(nearest, 0.5 * touchingPx(radiusPx) + 1.0) << "a blob of " << b.area << " px at (" << b.centre.x << ", " << b.centre.y << ")";
+    for (int j = 0; j < kJointCount; ++j)
+      nearest = std::min(nearest, cv::norm(b.centre - cv::Point2d(expected(j, 0), expected(j, 1))));
+    EXPECT_LE(nearest, 0.5 * touchingPx(radiusPx) + 1.0)
+        << "a blob of " << b.area << " px at (" << b.centre.x << ", " << b.centre.y << ")";
   }
   double sum = 0.0;
   for (int j = 0; j < kJointCount; ++j) {
     const cv::Point2d want(expected(j, 0), expected(j, 1));
-    const auto nearest = std::min_element(blobs.begin(), blobs.end(), [&](const Blob& a, const Blob& b) {
-      return cv::norm(a.centre - want) < cv::norm(b.centre - want);
-    });
+    const auto nearest =
+        std::min_element(blobs.begin(), blobs.end(), [&](const Blob& a, const Blob& b) {
+          return cv::norm(a.centre - want) < cv::norm(b.centre - want);
+        });
     if (nearest == blobs.end()) {
       ADD_FAILURE() << "no dot drawn at all";
       return c;
@@ -123,13 +132,15 @@ Comparison compareDots(const std::vector<Blob>& blobs, const Eigen::MatrixXd& ex
     for (int k = 0; k < kJointCount; ++k) members += rootOf(k) == rootOf(j) ? 1 : 0;
     const bool alone = members == 1;
     if (alone) {
-      EXPECT_LE(error, 1.0) << kJointNames[static_cast<std::size_t>(j)] << " drawn at (" << nearest->centre.x << ", "
-                            << nearest->centre.y << "), expected (" << want.x << ", " << want.y << ")";
+      EXPECT_LE(error, 1.0) << kJointNames[static_cast<std::size_t>(j)] << " drawn at ("
+                            << nearest->centre.x << ", " << nearest->centre.y << "), expected ("
+                            << want.x << ", " << want.y << ")";
       c.maxErrorPx = std::max(c.maxErrorPx, error);
       sum += error;
       ++c.isolated;
     } else {
-      EXPECT_LE(error, touchingPx(radiusPx) * 2.0) << kJointNames[static_cast<std::size_t>(j)] << " (touching)";
+      EXPECT_LE(error, touchingPx(radiusPx) * 2.0)
+          << kJointNames[static_cast<std::size_t>(j)] << " (touching)";
     }
   }
   c.meanErrorPx = c.isolated > 0 ? sum / c.isolated : 0.0;
@@ -141,7 +152,8 @@ HtmlWalker defaultMeanWalker() {
   return {model.mean, model.omegasRadS.mean(), 0.4, "mean walker"};
 }
 
-void checkPage(const std::string& name, const HtmlWalker& walker, const HtmlWalkerSettings& settings, double timeS) {
+void checkPage(const std::string& name, const HtmlWalker& walker,
+               const HtmlWalkerSettings& settings, double timeS) {
   const auto dir = test::makeTempDir("html_walker_browser_" + name);
   const auto page = dir / (name + ".html");
   writeWalkerHtml(page, walker, settings);
@@ -150,14 +162,15 @@ void checkPage(const std::string& name, const HtmlWalker& walker, const HtmlWalk
   ASSERT_EQ(shot.image.cols, kWidth);
   ASSERT_EQ(shot.image.rows, kHeight);
   const Eigen::MatrixXd expected = htmlWalkerDotsPx(walker, settings, timeS);
-  const Comparison c = compareDots(findDots(shot.image, htmlColours(settings)), expected, settings.dotRadiusPx);
+  const Comparison c =
+      compareDots(findDots(shot.image, htmlColours(settings)), expected, settings.dotRadiusPx);
   EXPECT_GE(c.isolated, 10) << "too few dots apart from the others to measure";
   // 1 px tells frames apart: 50 ms later some dot has moved several pixels.
   const Eigen::MatrixXd later = htmlWalkerDotsPx(walker, settings, timeS + 0.05);
   EXPECT_GT((later - expected).rowwise().norm().maxCoeff(), 3.0);
-  std::cout << name << ": " << c.isolated << " dots apart, error max " << c.maxErrorPx << " px, mean "
-            << c.meanErrorPx << " px; page " << std::filesystem::file_size(page) << " bytes; Chromium "
-            << shot.seconds << " s\n";
+  std::cout << name << ": " << c.isolated << " dots apart, error max " << c.maxErrorPx
+            << " px, mean " << c.meanErrorPx << " px; page " << std::filesystem::file_size(page)
+            << " bytes; Chromium " << shot.seconds << " s\n";
   ::testing::Test::RecordProperty("max_error_px", std::to_string(c.maxErrorPx));
 }
 
