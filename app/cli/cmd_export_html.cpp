@@ -79,7 +79,7 @@ ChosenWalker chooseWalker(const ExportHtmlArgs& args) {
   if (!args.walker.empty()) {
     const int r = walkerIndex(model, args.walker, modelName);
     c.walker = {storedWalkerVectors(model).col(r), model.omegasRadS(r), 0.0,
-                model.walkerIds[static_cast<std::size_t>(r)] + " of the model " + modelName};
+                model.walkerIds[static_cast<std::size_t>(r)] + ", one of " + modelName};
     c.speedMps = model.speedMpsOf(r);
     c.speedSource = "the walker's own";
     return c;
@@ -87,7 +87,7 @@ ChosenWalker chooseWalker(const ExportHtmlArgs& args) {
   // The mean walker: the walkers are phase-aligned (METHOD §3), so their mean is a walk; its
   // ω is the mean of theirs.
   c.walker = {model.mean, model.omegasRadS.mean(), 0.0,
-              "the mean walker of the model " + modelName};
+              "the mean walker of " + modelName};
   c.speedMps = meanKnownSpeed(model);
   c.speedSource = "the mean of the model's walkers";
   return c;

@@ -12,7 +12,8 @@
 //   posture       p = p0 + p1 sin θ + q1 cos θ + p2 sin 2θ + q2 cos 2θ    (synthesizeFrames)
 //   progression   y += 1000 · translateSpeedMps · t_w (mm) when translate is on
 //   view          u = x cos α + y sin α,  d = −x sin α + y cos α           (METHOD §5)
-//                 v = z cos ε + d sin ε   (ε the elevation; ε = 0 gives v = z, the viewer's view)
+//                 v = z cos ε + d sin ε   (ε the elevation, the camera tilted down by ε as in
+//                 docs/CAMERA.md; ε = 0 gives v = z, the viewer's view)
 //   canvas        X = centreXPx + pxPerMm · u,   Y = centreYPx − pxPerMm · v   (CSS pixels,
 //                 (0, 0) the canvas's top-left corner, pixel i covering [i, i + 1))
 //                 the progression's offset wraps (below) so the walker re-enters the canvas.

@@ -17,7 +17,7 @@ class ExportHtmlCli : public ::testing::Test {
 TEST_F(ExportHtmlCli, WritesTheMeanWalkerByDefault) {
   const test::ShellRun r = runCli("export-html --out walker.html", dir_);
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.err.find("wrote walker.html: the mean walker of the model 24 real walkers (default), "
+  EXPECT_NE(r.err.find("wrote walker.html: the mean walker of 24 real walkers (default), "
                        "view angle 90"),
             std::string::npos)
       << r.err;
