@@ -21,8 +21,6 @@ namespace {
 
 constexpr int kCycleSamples = 360;          // samples of θ over which the Fit framing is measured
 constexpr double kFitMarginShare = 0.05;    // of the canvas's smaller side, beside the dot radius
-constexpr double kViewerHeightMm = 2350.0;  // ui/panels/input_view_panel.cpp: kViewHeightMm
-constexpr double kViewerCentreVMm = 975.0;  //                                  kViewCentreVMm
 
 [[noreturn]] void refuse(const std::string& file, const std::string& problem) {
   throw Error(ErrorKind::BadArgument, file, "", "HTML walker: " + problem);
@@ -124,8 +122,8 @@ HtmlCanvasMapping mappingOf(const HtmlWalker& walker, const HtmlWalkerSettings& 
   HtmlCanvasMapping m;
   m.centreXPx = 0.5 * width;
   if (s.framing == HtmlFraming::Viewer) {
-    m.pxPerMm = height / kViewerHeightMm;
-    m.centreYPx = 0.5 * height + kViewerCentreVMm * m.pxPerMm;
+    m.pxPerMm = height / kViewerViewHeightMm;
+    m.centreYPx = 0.5 * height + kViewerViewCentreVMm * m.pxPerMm;
   } else {
     const double margin = s.dotRadiusPx + kFitMarginShare * std::min(width, height);
     m.pxPerMm = std::min((width - 2.0 * margin) / (2.0 * x.radiusMm),
