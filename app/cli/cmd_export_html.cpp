@@ -56,7 +56,8 @@ int walkerIndex(const EigenwalkerModel& model, const std::string& key,
   }
   throw Error(ErrorKind::BadArgument, "--walker", "",
               "\"" + key + "\" is no walker's id, nor a number from 1 to " +
-                  std::to_string(model.walkerCount()) + ", in the model " + modelName);
+                  std::to_string(model.walkerCount()) + ", in the model " + modelName +
+                  " (its walkers: " + listForMessage(model.walkerIds, 6) + ")");
 }
 
 ChosenWalker chooseWalker(const ExportHtmlArgs& args) {
@@ -166,7 +167,7 @@ void addExportHtmlCommand(CLI::App& app, int& exitCode) {
           ->check(CLI::ExistingFile);
   cmd->add_option(
          "--walker", args->walker,
-         "A walker of the model, by id or 1-based number (`info` on the model's data lists them); "
+         "A walker of the model, by id or 1-based number (an unknown one is answered with the ids); "
          "default: the model's mean walker")
       ->excludes(input);
   cmd->add_option("--model", args->model,

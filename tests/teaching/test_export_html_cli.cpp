@@ -66,6 +66,7 @@ TEST_F(ExportHtmlCli, RefusesBadOptions) {
   refused("--theme neon", "--theme: \"neon\" is not one of dark, light, projector");
   refused("--framing wide", "--framing: \"wide\" is not one of fit, viewer");
   refused("--walker 99", "--walker: \"99\" is no walker's id, nor a number from 1 to 24");
+  refused("--walker SM2014", "(its walkers: SM2014001/spontaneous, ");
   refused("--size 800", "--size: \"800\": expected WIDTHxHEIGHT");
   refused("--elevation 91",
           "bad.html: HTML walker: the elevation (degrees) must be in [-90, 90], got 91");
