@@ -16,6 +16,9 @@ packages=(
   # build converts its .tflite files to ONNX with python3-onnx and numpy
   # (tools/pose_model/); python3-opencv runs the converter's test.
   python3-onnx python3-numpy python3-opencv
+  # The HTML walker's test opens the exported page in headless Chromium and screenshots it
+  # (tests/video/test_html_walker_browser.cpp; docs/CLI.md, export-html).
+  chromium
 )
 # npm as Debian packages it, unless the machine already has an npm (NodeSource's nodejs
 # package carries its own and conflicts with Debian's npm).

@@ -17,6 +17,7 @@ void addSynthCommand(CLI::App& app, int& exitCode);
 void addBuildCommand(CLI::App& app, int& exitCode);
 void addEvaluateCommand(CLI::App& app, int& exitCode);
 void addReconstructCommand(CLI::App& app, int& exitCode);
+void addExportHtmlCommand(CLI::App& app, int& exitCode);
 // Only when the video library was built (OpenCV found): EW_HAVE_VIDEO.
 void addTrackCommand(CLI::App& app, int& exitCode);
 void addTrackStudyCommand(CLI::App& app, int& exitCode);

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   ew::cli::addBuildCommand(app, exitCode);
   ew::cli::addEvaluateCommand(app, exitCode);
   ew::cli::addReconstructCommand(app, exitCode);
+  ew::cli::addExportHtmlCommand(app, exitCode);
 #ifdef EW_HAVE_VIDEO
   ew::cli::addTrackCommand(app, exitCode);
   ew::cli::addDetectCommand(app, exitCode);

@@ -11,12 +11,14 @@
 #include <sstream>
 
 #include "app/cli/reconstruct_view.h"
+#include "core/common/errors.h"
 #include "core/eigenwalker/fourier.h"
 #include "core/eigenwalker/joint_completion.h"
 #include "core/eigenwalker/metrics.h"
 #include "core/eigenwalker/projection.h"
 #include "core/engines/request.h"
 #include "core/io/joint_csv.h"
+#include "core/io/trc_writer.h"
 
 namespace ew::cli {
 

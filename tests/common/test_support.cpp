@@ -95,6 +95,26 @@ bool dataRequired() {
   return env && std::string(env) == "1";
 }
 
+std::filesystem::path findProgram(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::stringstream folders(path ? path : "");
+  std::string folder;
+  while (std::getline(folders, folder, ':')) {
+    if (folder.empty()) continue;
+    const std::filesystem::path candidate = std::filesystem::path(folder) / name;
+    if (access(candidate.c_str(), X_OK) == 0) return candidate;
+  }
+  return {};
+}
+
+std::filesystem::path headlessChromium() {
+  if (const char* env = std::getenv("EIGENWALKER_CHROMIUM"); env && *env)
+    return access(env, X_OK) == 0 ? std::filesystem::path(env) : std::filesystem::path();
+  for (const char* name : {"chromium", "chromium-browser"})
+    if (auto found = findProgram(name); !found.empty()) return found;
+  return {};
+}
+
 ProgramRun runProgram(const std::string& program, const std::vector<std::string>& arguments,
                       const std::filesystem::path& dir) {
   const std::string log = (dir / "program_output.txt").string();

@@ -25,6 +25,13 @@ std::filesystem::path makeTempDir(const std::string& stem);
 
 bool dataRequired();
 
+// A program on $PATH by name (the first executable found), empty when there is none.
+std::filesystem::path findProgram(const std::string& name);
+
+// Debian's Chromium for the tests that open a page in a real browser: $EIGENWALKER_CHROMIUM
+// if set, else `chromium` (then `chromium-browser`) on $PATH. Empty when there is none.
+std::filesystem::path headlessChromium();
+
 // A program run to completion: exit code (-1 when killed), the signal that killed it,
 // its peak resident memory, and what it printed (stdout and stderr together).
 struct ProgramRun {
@@ -74,6 +81,22 @@ bool bitwiseEqual(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b);
       } else {                                                                          \
         GTEST_SKIP() << "../shared/data not found beside the checkout (set "            \
                         "EIGENWALKER_DATA to its path to run this test)";               \
+      }                                                                                 \
+    }                                                                                   \
+  } while (0)
+
+// Use at the top of a test that opens a page in headless Chromium: skips when it is not
+// installed (fails with EIGENWALKER_REQUIRE_DATA=1, as in CI, where .ci/install-deps.sh
+// installs it).
+#define EW_REQUIRE_BROWSER()                                                            \
+  do {                                                                                  \
+    if (::ew::test::headlessChromium().empty()) {                                       \
+      if (::ew::test::dataRequired()) {                                                 \
+        FAIL() << "chromium not found and EIGENWALKER_REQUIRE_DATA=1 (apt-get install " \
+                  "chromium, or set EIGENWALKER_CHROMIUM)";                             \
+      } else {                                                                          \
+        GTEST_SKIP() << "chromium not found (apt-get install chromium, or set "         \
+                        "EIGENWALKER_CHROMIUM to a Chromium to run this test)";         \
       }                                                                                 \
     }                                                                                   \
   } while (0)
