@@ -398,9 +398,12 @@ OrthoStart orthographicStart(const EigenwalkerModel& model, const MatrixXd& px, 
   FourierFitOptions f;
   // The image's foot strikes fix the start's frequency: the detrended image keeps slow
   // drifts (perspective, sway) that a scan could take for the gait.
-  if (o.strideHzHint) f.omegaFixedRadS = 2 * std::numbers::pi * *o.strideHzHint;
-  f.file = o.file;
+  // A clip of a stride and a bit whose strikes read it under one cycle starts from one cycle
+  // over the clip (the Fourier fit needs one; the refinement frees ω).
   const double rate = 1.0 / (times[1] - times[0]);
+  const double oneCycleHz = rate / static_cast<double>(std::max<Eigen::Index>(px.rows() - 1, 1));
+  if (o.strideHzHint) f.omegaFixedRadS = 2 * std::numbers::pi * std::max(*o.strideHzHint, oneCycleHz);
+  f.file = o.file;
   s.fit = fitFourierMeasured(seen, rate, unseen, f);
   std::vector<int> missing;
   for (int j = 0; j < kJointCount; ++j)
