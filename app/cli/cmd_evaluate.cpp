@@ -308,7 +308,8 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "                     engines given the true camera (skeleton_*, snippet_* columns; --engine narrows)\n"
       "  camera_wide.csv    the camera experiment widened (issue 55; --experiment camera-wide only): the\n"
       "                     eigenwalker alone at 2 px, one factor changed at a time (clip length in strides,\n"
-      "                     walker height in px, speed, layout, fps, elevation) and all at their hardest;\n"
+      "                     walker height in px, speed, layout, fps, elevation, image size known, where the\n"
+      "                     camera aims) and all at their hardest;\n"
       "                     camera_wide_summary.csv per factor and level: refusals, MPJPE, elevation and\n"
       "                     distance errors (--factor narrows, --cameras per walker; docs/CAMERA.md)\n"
       "  snippet_engines.csv subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error,seconds: the snippet engine\n"
@@ -362,7 +363,7 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
                   "Experiment 'camera-wide': the factors to run beside the base (repeat or comma-separate; "
                   "default all)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"length", "height", "speed", "layout", "fps", "elevation", "hardest"}));
+      ->check(CLI::IsMember({"length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "hardest"}));
   cmd->add_option("--method", args->method, "lsq, map or both")
       ->check(CLI::IsMember({"lsq", "map", "both"}))->capture_default_str();
   cmd->add_option("--sigma2", args->sigma2Mm2, "MAP noise variance in mm^2 (default: the sigma-sweep optimum)")

@@ -73,6 +73,8 @@ void checkOptions(const CameraExperimentOptions& o) {
   if (!(std::abs(o.cadenceSpeedExponent) <= 2)) badCameraOption("the cadence's exponent must be within ±2");
   if (!(o.minElevationDeg >= -30 && o.minElevationDeg <= o.maxElevationDeg && o.maxElevationDeg <= 80))
     badCameraOption("the elevations must be -30 <= min <= max <= 80 degrees");
+  if (!(o.minLookAtHeightMm >= -5000 && o.minLookAtHeightMm <= o.maxLookAtHeightMm && o.maxLookAtHeightMm <= 10000))
+    badCameraOption("the look-at heights must be -5000 <= min <= max <= 10000 mm");
 }
 
 const char* layoutName(ClipLayout layout) { return layout == ClipLayout::Coco17 ? "COCO-17" : "BODY_25"; }
@@ -145,7 +147,9 @@ Clip filmWalker(const ExperimentWalker& w, const CameraExperimentOptions& o, con
     c.distanceMm = lo + (hi - lo) * uni(rng);
     c.cxPx = kImageW / 2;
     c.cyPx = kImageH / 2;
-    c.lookAtHeightMm = 1000.0;
+    c.lookAtHeightMm = o.minLookAtHeightMm;
+    if (o.maxLookAtHeightMm > o.minLookAtHeightMm)  // no draw for the default: the same cameras
+      c.lookAtHeightMm += (o.maxLookAtHeightMm - o.minLookAtHeightMm) * uni(rng);
     const double slowMmS = 1000.0 * o.minSpeedMps, fastMmS = 1000.0 * o.maxSpeedMps;
     c.speedMmS = slowMmS + (fastMmS - slowMmS) * uni(rng);
     c.startOffsetMm = -c.speedMmS * kClipS / 2;
@@ -418,6 +422,8 @@ void reconstructClip(const Fold& fold, const ExperimentWalker& w, const Clip& cl
     KeypointOptions k;
     k.fps = o.fps;
     k.detectorOffsets = o.allowForDetectorOffsets;
+    if (o.imageSizeKnown)
+      k.imageSize = KeypointImageSize{static_cast<int>(std::lround(clip.imageW)), static_cast<int>(std::lround(clip.imageH))};
     const KeypointTrial t = readKeypointTrial(input, k);
     std::optional<EigenwalkerClip> walker;
     try {
@@ -616,12 +622,26 @@ std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOpti
          o.minElevationDeg = 20;
          o.maxElevationDeg = 35;
        }},
+      {"image", "size known", [](CameraExperimentOptions& o) { o.imageSizeKnown = true; }},
+      {"aim", "look-at 0-2 m high", [](CameraExperimentOptions& o) {
+         o.minLookAtHeightMm = 0;
+         o.maxLookAtHeightMm = 2000;
+       }},
+      {"aim", "look-at 0-2 m high, 1.2 strides", [](CameraExperimentOptions& o) {
+         o.minLookAtHeightMm = 0;
+         o.maxLookAtHeightMm = 2000;
+         o.clipStrides = 1.2;
+       }},
       {"hardest", "1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17, 25 fps, 0-35 deg", hardest},
+      {"hardest", "the same, image size known", [&](CameraExperimentOptions& o) {
+         hardest(o);
+         o.imageSizeKnown = true;
+       }},
   };
   const auto firstWord = [](const std::string& f) { return f.substr(0, f.find(' ')); };
   for (const auto& f : factors) {
     const bool known = std::any_of(all.begin(), all.end(), [&](const auto& c) { return firstWord(std::get<0>(c)) == f; });
-    if (!known) badCameraOption("no factor '" + f + "' (length, height, speed, layout, fps, elevation, hardest)");
+    if (!known) badCameraOption("no factor '" + f + "' (length, height, speed, layout, fps, elevation, image, aim, hardest)");
   }
   std::vector<CameraWideCondition> out;
   for (const auto& [factor, level, change] : all) {

@@ -77,6 +77,12 @@ struct CameraExperimentOptions {
   double cadenceSpeedExponent = 0.0;
   ClipLayout layout = ClipLayout::Body25;
   double minElevationDeg = 0.0, maxElevationDeg = 30.0;  // the camera's tilt, uniform
+  // The reader told the image's size (as a video's is known): the fit then holds the principal
+  // point near its centre (docs/CAMERA.md); false, bare keypoint files, the hardest case.
+  bool imageSizeKnown = false;
+  // The height of the point the camera looks at (where the walker passes mid-clip), uniform
+  // (mm); equal, no draw: the clip above, aimed at 1 m (about the walker's pelvis).
+  double minLookAtHeightMm = 1000.0, maxLookAtHeightMm = 1000.0;
 };
 
 // Another engine's result on a clip: NaN MPJPE and the reason when it gave none.
@@ -156,10 +162,11 @@ struct CameraWideCondition {
 
 // The conditions over `base` (its seed, noise, threads, σ² …): the base, then per factor its
 // levels (length 3 / 2 / 1.5 / 1.2 strides; height 400 / 240 / 160 / 120 px; speed
-// 1.5-2.0 m/s with the cadence taking half; COCO-17; 25 fps; elevation 0-35° and 20-35°),
-// then "all hardest" (1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17, 25 fps, 0-35°). `factors`
-// keeps only the factors named (their first word: "length", "height", "speed", "layout",
-// "fps", "elevation", "hardest"); empty: all. Error(BadArgument) naming an unknown factor.
+// 1.5-2.0 m/s with the cadence taking half; COCO-17; 25 fps; elevation 0-35° and 20-35°;
+// the image's size known; the camera aimed 0-2 m high), then "all hardest" (1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17,
+// 25 fps, 0-35°, image unknown). `factors` keeps only the factors named (their first word:
+// "length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "hardest");
+// empty: all. Error(BadArgument) naming an unknown factor.
 std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOptions& base,
                                                       const std::vector<std::string>& factors = {});
 
