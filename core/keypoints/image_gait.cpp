@@ -66,9 +66,21 @@ double extentAtEnd(const KeypointTrial& t, bool last) {
   return sum / static_cast<double>(n);
 }
 
+// A clip read as a stride and a bit (one strike a side, or the ankles' swing alone) must be
+// short, and the walker must travel (across the picture, or towards or away from the camera):
+// in a longer clip a walker strikes more often, and a person balancing or shifting their
+// weight on the spot, whose feet move once or twice, is not walking.
+constexpr double kMaxShortClipStrides = 2.5;
+// A walker who does not cross the picture travels when a line in time explains this share of
+// the variance of their size in it (steadySizeChange; a foot's lift makes the size bob with the
+// steps): the widened camera experiment's walkers seen from within 20° of behind over 1.2
+// strides 0.46-0.82, the Pose2Sim balancing trial's views whose size changes 0.11.
+constexpr double kMinSteadySizeChange = 0.3;
+
 // Stride frequency from same-side strike intervals (strides per second); a clip of a stride
-// and a bit has one strike a side: then from the step between them, half a stride.
-double strideHz(const std::vector<double>& right, const std::vector<double>& left) {
+// and a bit has one strike a side: then from the step between them, half a stride, when the
+// clip (`durationS`) holds fewer than kMaxShortClipStrides of them.
+double strideHz(const std::vector<double>& right, const std::vector<double>& left, double durationS) {
   double total = 0.0;
   int count = 0;
   for (const auto* side : {&right, &left}) {
@@ -78,7 +90,27 @@ double strideHz(const std::vector<double>& right, const std::vector<double>& lef
   }
   if (count > 0 && total > 0) return count / total;
   const double step = right.size() == 1 && left.size() == 1 ? std::abs(right.front() - left.front()) : 0.0;
-  return step > 0 ? 0.5 / step : 0.0;
+  return step > 0 && durationS < kMaxShortClipStrides * 2.0 * step ? 0.5 / step : 0.0;
+}
+
+// The share of the variance of the walker's per-frame size (frameSizePx) a line in time
+// explains: near 1 for a walker nearing or leaving the camera, low for one who stays and
+// lifts a foot; 0 with fewer than 8 frames measured.
+double steadySizeChange(const KeypointTrial& t) {
+  std::vector<double> ts, sizes;
+  for (Eigen::Index f = 0; f < t.jointsPx.rows(); ++f) {
+    const double size = frameSizePx(t, f);
+    if (std::isfinite(size)) ts.push_back(static_cast<double>(f)), sizes.push_back(size);
+  }
+  if (sizes.size() < 8) return 0.0;
+  const auto n = static_cast<Eigen::Index>(sizes.size());
+  Eigen::MatrixXd line(n, 2);
+  line.col(0).setOnes();
+  line.col(1) = Eigen::Map<const Eigen::VectorXd>(ts.data(), n);
+  const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(sizes.data(), n);
+  const double total = (y.array() - y.mean()).square().sum();
+  const double left = (y - line * line.colPivHouseholderQr().solve(y)).squaredNorm();
+  return total > 0.0 ? 1.0 - left / total : 0.0;
 }
 
 // A clip too short for the strikes' frequency (defined with the trunk's bob, below).
@@ -205,8 +237,12 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
   }
   g.rightStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Right);
   g.leftStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Left);
-  g.strikesStrideHz = strideHz(g.rightStrikesS, g.leftStrikesS);
-  if (g.strikesStrideHz < kMinStrideHz || g.strikesStrideHz > kMaxStrideHz)
+  const double durationS = static_cast<double>(t.frameCount) / t.rateHz;
+  // The readings of a stride and a bit, for a walker who travels: across the picture, or
+  // nearing or leaving the camera at a steady rate.
+  const bool travels = crosses || (!g.inPlace && steadySizeChange(t) >= kMinSteadySizeChange);
+  g.strikesStrideHz = strideHz(g.rightStrikesS, g.leftStrikesS, travels ? durationS : INFINITY);
+  if (travels && (g.strikesStrideHz < kMinStrideHz || g.strikesStrideHz > kMaxStrideHz))
     g.strikesStrideHz = ankleLeadsStrideHz(frames.col(3 * index(Joint::RAnkle) + 1) - frames.col(3 * index(Joint::LAnkle) + 1),
                                            t.rateHz)
                             .value_or(g.strikesStrideHz);
@@ -217,7 +253,7 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
                       fixed1(t.rateHz) + " fps" +
                       // A video's own rate (a track) is no guess to correct.
                       (t.rateAssumed ? ", assumed: give the video's --fps if it is not that)" : ")"));
-  g.cycles = static_cast<double>(t.frameCount) / t.rateHz * g.strideHz;
+  g.cycles = durationS * g.strideHz;
   if (g.cycles < kMinImageCycles)
     throw Error(ErrorKind::BadData, t.file, "",
                 "shorter than a gait cycle (" + fixed(g.cycles, 2) + " cycles): at least " +
@@ -274,7 +310,7 @@ double explained(const BobSamples& b, double f) {
 // The ankles' leads swing in opposition once a stride: their difference's detrended path
 // (a line through it taken out: a walker nearing the camera grows), fitted by a sinusoid over
 // the bob's stride band; the frequency explaining most of it, when that is at least half its
-// variance and a whole cycle fits in the clip.
+// variance and the clip holds kMinImageCycles to kMaxShortClipStrides cycles of it.
 std::optional<double> ankleLeadsStrideHz(const Eigen::VectorXd& rightMinusLeft, double rateHz) {
   const Eigen::Index n = rightMinusLeft.size();
   if (n < 8 || !rightMinusLeft.allFinite()) return std::nullopt;
@@ -290,7 +326,8 @@ std::optional<double> ankleLeadsStrideHz(const Eigen::VectorXd& rightMinusLeft, 
     const double share = explained(b, f) / variance;
     if (share > bestShare) bestShare = share, bestHz = f;
   }
-  if (bestShare < 0.5 || static_cast<double>(n) / rateHz * bestHz < 1.0) return std::nullopt;
+  const double strides = static_cast<double>(n) / rateHz * bestHz;
+  if (bestShare < 0.5 || strides < kMinImageCycles || strides > kMaxShortClipStrides) return std::nullopt;
   return bestHz;
 }
 

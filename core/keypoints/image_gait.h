@@ -50,9 +50,11 @@ struct ImageGait {
 // Throws Error(BadData) naming the file with "not walking: …" when an ankle does not swing
 // about the pelvis (whether the pelvis crosses the image or not), or the strikes give no
 // stride frequency in kMinStrideHz-kMaxStrideHz, and "shorter than a gait cycle" below
-// kMinImageCycles. The strikes read the frequency from each foot's strikes, from the step
-// between one strike a side, or, for a clip too short for either, from the ankles' leads'
-// opposed swing (a sinusoid over strides of 0.5-1.6 Hz explaining at least half of it).
+// kMinImageCycles. The strikes read the frequency from each foot's strikes; in a clip shorter
+// than 2.5 strides of a walker who travels (a person balancing on the spot moves a foot once
+// or twice) also from
+// the step between one strike a side, or from the ankles' leads' opposed swing (a sinusoid
+// over strides of 0.5-1.6 Hz explaining at least half of it).
 // `heldStrideHz`: the stride frequency known otherwise (the trunk's bob, below), which then
 // stands for the strikes' (a tracker's lost ankles may strike irregularly or not at all).
 ImageGait imageGaitCycles(const KeypointTrial& trial,
