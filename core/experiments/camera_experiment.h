@@ -1,8 +1,9 @@
 #pragma once
 // Experiment "camera" (issue 13): each held-out walker filmed by random real cameras and
 // reconstructed with everything unknown, through the whole user path — the clip is written
-// as OpenPose BODY_25 JSON, read back, cleaned (core/keypoints) and reconstructed
-// (core/camera/camera_reconstruction.h) with the fold's model (docs/CAMERA.md).
+// as OpenPose BODY_25 JSON (or AlphaPose COCO-17: options.layout), read back, cleaned
+// (core/keypoints) and reconstructed (core/camera/camera_reconstruction.h) with the fold's
+// model (docs/CAMERA.md).
 //
 // Cameras: azimuth uniform over the circle, elevation 0-30°, focal 800-3000 px, distance
 // 3.5-8 m (further when the walker would not fit the 1080 px height), 1920 × 1080 image,
