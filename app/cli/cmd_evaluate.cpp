@@ -33,7 +33,8 @@ struct EvaluateArgs {
   std::string out;
   std::vector<std::string> experiments{"all"};
   std::string angles;      // empty: each experiment's default views
-  int cameras = 0;         // experiment "engines": random cameras per walker (0 = its default)
+  int cameras = 0;         // experiments "engines", "camera-wide": random cameras per walker (0 = default)
+  std::vector<std::string> factors;  // experiment "camera-wide": the factors to run (empty: all)
   std::optional<double> detectorHipOffsetMm;  // experiment "camera": the simulated detector's hips
   bool noDetectorOffsets = false;              // experiment "camera": the reader ignores the offsets
   std::string method = "both";
@@ -142,6 +143,8 @@ EvaluationOptions evaluationOptions(const EvaluateArgs& a, ProgressPrinter& prin
   o.cameraSnippet = asksFor(a, EngineKind::Snippet);
   o.cameraDetectorHipOffsetMm = a.detectorHipOffsetMm;
   o.cameraAllowForDetectorOffsets = !a.noDetectorOffsets;
+  o.cameraWideFactors = a.factors;
+  if (a.cameras > 0) o.cameraWideCameras = a.cameras;
   o.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   o.progress = [&printer](int done, int total, const std::string& what) { printer(done, total, what); };
   return o;
@@ -303,6 +306,12 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "                     OpenPose JSON, read back and reconstructed with everything unknown (--experiment\n"
       "                     camera only, not in all; docs/CAMERA.md); beside it the skeleton and snippet\n"
       "                     engines given the true camera (skeleton_*, snippet_* columns; --engine narrows)\n"
+      "  camera_wide.csv    the camera experiment widened (issue 55; --experiment camera-wide only): the\n"
+      "                     eigenwalker alone at 2 px, one factor changed at a time (clip length in strides,\n"
+      "                     walker height in px, speed, layout, fps, elevation, image size known, where the\n"
+      "                     camera aims) and all at their hardest;\n"
+      "                     camera_wide_summary.csv per factor and level: refusals, MPJPE, elevation and\n"
+      "                     distance errors (--factor narrows, --cameras per walker; docs/CAMERA.md)\n"
       "  snippet_engines.csv subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error,seconds: the snippet engine\n"
       "                     (Howe, Leventon & Freeman 1999) beside the eigenwalker on the same 2D frames; clip is\n"
       "                     trial, 0.5 s or whole trial (--experiment snippet only; docs/SNIPPETS.md)\n"
@@ -331,11 +340,12 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--data", args->data, "Trial files, folders (recursive) or manifest CSVs")->required();
   cmd->add_option("--out", args->out, "Output folder (replaced only after success)")->required();
   cmd->add_option("--experiment", args->experiments,
-                  "variance, sigma-sweep, known-view, unknown-view, noise, missing-joints, lower-body, camera, snippet, "
+                  "variance, sigma-sweep, known-view, unknown-view, noise, missing-joints, lower-body, camera, "
+                  "camera-wide, snippet, "
                   "snippet-clusters, engines, semantic or all "
                   "(repeat or comma-separate)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "lower-body", "camera", "snippet", "snippet-clusters", "engines", "semantic", "all"}))
+      ->check(CLI::IsMember({"variance", "sigma-sweep", "known-view", "unknown-view", "noise", "missing-joints", "lower-body", "camera", "camera-wide", "snippet", "snippet-clusters", "engines", "semantic", "all"}))
       ->capture_default_str();
   cmd->add_option("--angles", args->angles,
                   "View angles in degrees: FROM:TO:STEP or a list a,b,c (default -90:90:1; experiment 'engines' "
@@ -346,8 +356,14 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(-200.0, 200.0));
   cmd->add_flag("--no-detector-offsets", args->noDetectorOffsets,
                 "Experiment 'camera': read the clips taking the detector's hips for joint centres");
-  cmd->add_option("--cameras", args->cameras, "Experiment 'engines': random cameras per held-out walker (default 3)")
+  cmd->add_option("--cameras", args->cameras,
+                  "Experiments 'engines' and 'camera-wide': random cameras per held-out walker (default 3)")
       ->check(CLI::Range(1, 100));
+  cmd->add_option("--factor", args->factors,
+                  "Experiment 'camera-wide': the factors to run beside the base (repeat or comma-separate; "
+                  "default all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "hardest"}));
   cmd->add_option("--method", args->method, "lsq, map or both")
       ->check(CLI::IsMember({"lsq", "map", "both"}))->capture_default_str();
   cmd->add_option("--sigma2", args->sigma2Mm2, "MAP noise variance in mm^2 (default: the sigma-sweep optimum)")

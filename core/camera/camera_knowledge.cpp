@@ -97,7 +97,8 @@ std::string principalPointPrior(const CameraFitOptions& o, const KeypointTrial& 
   if (!o.focalPx && !o.estimateFocal) return "none (scaled orthography has no principal point)";
   if (o.principalPointPx) return "the calibration's";
   if (o.imageSizePx || t.imageSize) return "the image's centre";
-  return "none (the image's size unknown: --image-size gives it, or a video beside the keypoints)";
+  if (!o.framingPrior) return "none (the image's size unknown: --image-size gives it, or a video beside the keypoints)";
+  return "the walker's row (the image's size unknown: --image-size gives it, or a video beside the keypoints)";
 }
 
 std::optional<int> undistortKeypoints(const CameraKnowledge& camera, KeypointTrial& trial) {

@@ -105,11 +105,19 @@ struct Problem {
   // The principal point's prior: sqrt(σ²) / SD per pixel off it (zero: none), and where it is.
   double principalPointWeight = 0.0;
   Eigen::Vector2d principalPointPx = Eigen::Vector2d::Zero();
+  // Without the image, the framing's prior on c_y (kFramingSdOfHeight): weight and centre.
+  double framingWeight = 0.0, framingCyPx = 0.0;
+};
+
+// Where a camera filming a walker is expected to point when its image is not known: the row of
+// the walker's pelvis at mid-clip, with an SD in px (docs/CAMERA.md, "Framing").
+struct Framing {
+  double cyPx = 0.0, sdPx = 0.0;
 };
 
 // The problem on every `stride`-th frame: the seen samples, the data weight and the prior.
 Problem makeProblem(const EigenwalkerModel& model, Layout layout, const CameraFitOptions& o, const MatrixXd& px,
-                    const VectorXd& times, double mmPerPx, int stride) {
+                    const VectorXd& times, double mmPerPx, int stride, const Framing& framing) {
   const auto rows = (px.rows() + stride - 1) / stride;
   MatrixXd observed(rows, px.cols());
   VectorXd t(rows);
@@ -125,6 +133,9 @@ Problem makeProblem(const EigenwalkerModel& model, Layout layout, const CameraFi
   if (o.imageSizePx && layout.pinhole) {
     p.principalPointWeight = std::sqrt(o.estimator.sigma2Mm2) / (kPrincipalPointSdShare * o.imageSizePx->maxCoeff());
     p.principalPointPx = o.principalPointPx.value_or(0.5 * *o.imageSizePx);
+  } else if (layout.pinhole && o.framingPrior && framing.sdPx > 0.0) {
+    p.framingWeight = std::sqrt(o.estimator.sigma2Mm2) / framing.sdPx;
+    p.framingCyPx = framing.cyPx;
   }
   return p;
 }
@@ -163,7 +174,7 @@ MatrixXd imageOf(const Problem& p, const VectorXd& t) { return projectWalk(frame
 // by the camera of θ, then the prior's and the elevation bound's.
 VectorXd residualsOfFrames(const Problem& p, const MatrixXd& frames, const VectorXd& t) {
   const MatrixXd image = projectWalk(frames, p.timesS, cameraOf(p, t));
-  VectorXd r(static_cast<Eigen::Index>(p.seen.size()) + p.priorWeight.size() + 3);
+  VectorXd r(static_cast<Eigen::Index>(p.seen.size()) + p.priorWeight.size() + 4);
   for (std::size_t i = 0; i < p.seen.size(); ++i) {
     const double d = image.data()[p.seen[i]] - p.observed.data()[p.seen[i]];
     // A point behind a pinhole camera: a large, smooth penalty rather than NaN.
@@ -173,7 +184,8 @@ VectorXd residualsOfFrames(const Problem& p, const MatrixXd& frames, const Vecto
     r.segment(static_cast<Eigen::Index>(p.seen.size()), p.priorWeight.size()) =
         p.priorWeight.cwiseProduct(t.head(p.layout.n));
   const Eigen::Vector2d c(t[p.layout.cx()], t[p.layout.cy()]);
-  r.segment<2>(r.size() - 3) = p.principalPointWeight * (c - p.principalPointPx);
+  r.segment<2>(r.size() - 4) = p.principalPointWeight * (c - p.principalPointPx);
+  r[r.size() - 2] = p.framingWeight * (c.y() - p.framingCyPx);
   const double e = t[p.layout.elevation()];
   r[r.size() - 1] = 1e3 * (std::max(0.0, e - kMaxElevationDeg) + std::max(0.0, kMinElevationDeg - e));
   return r;
@@ -398,9 +410,12 @@ OrthoStart orthographicStart(const EigenwalkerModel& model, const MatrixXd& px, 
   FourierFitOptions f;
   // The image's foot strikes fix the start's frequency: the detrended image keeps slow
   // drifts (perspective, sway) that a scan could take for the gait.
-  if (o.strideHzHint) f.omegaFixedRadS = 2 * std::numbers::pi * *o.strideHzHint;
-  f.file = o.file;
+  // A clip of a stride and a bit whose strikes read it under one cycle starts from one cycle
+  // over the clip (the Fourier fit needs one; the refinement frees ω).
   const double rate = 1.0 / (times[1] - times[0]);
+  const double oneCycleHz = rate / static_cast<double>(std::max<Eigen::Index>(px.rows() - 1, 1));
+  if (o.strideHzHint) f.omegaFixedRadS = 2 * std::numbers::pi * std::max(*o.strideHzHint, oneCycleHz);
+  f.file = o.file;
   s.fit = fitFourierMeasured(seen, rate, unseen, f);
   std::vector<int> missing;
   for (int j = 0; j < kJointCount; ++j)
@@ -651,10 +666,13 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
   const Layout layout{static_cast<int>(model.eigenvalues.size()), pinhole, pinhole && !o.focalPx,
                       o.alphaDeg.has_value(), o.elevationDeg.has_value(), o.holdStrideHz && o.strideHzHint.has_value(),
                       o.inPlace};
-  const Problem p = makeProblem(model, layout, o, jointsPx, times, 1.0 / start.pxPerMm, 1);
+  const double midT = 0.5 * (times[0] + times[times.size() - 1]);
+  const Framing framing{start.pelvisV[0] + start.pelvisV[1] * midT,
+                        kFramingSdOfHeight * start.pxPerMm * walkerHeadHeightMm(model.mean)};
+  const Problem p = makeProblem(model, layout, o, jointsPx, times, 1.0 / start.pxPerMm, 1, framing);
   // Screening sees every few frames (the walk is smooth; ~8 frames a stride are plenty).
   const int stride = std::max(1, static_cast<int>(rateHz / (kScreeningFramesPerStride * start.fit.omegaRadS / (2 * std::numbers::pi))));
-  const Problem coarse = makeProblem(model, layout, o, jointsPx, times, 1.0 / start.pxPerMm, stride);
+  const Problem coarse = makeProblem(model, layout, o, jointsPx, times, 1.0 / start.pxPerMm, stride, framing);
   const std::vector<double> elevations =
       o.elevationDeg ? std::vector<double>{*o.elevationDeg}
                      : std::vector<double>(std::begin(kStartElevationsDeg), std::end(kStartElevationsDeg));
@@ -686,7 +704,7 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
     if (g.count == 0 || g.shareOfSquares < kGlitchShareToRefit) break;
     kept = g.kept;
     fit.outlierSamples += g.count;
-    const Problem robust = makeProblem(model, layout, o, kept, times, 1.0 / start.pxPerMm, 1);
+    const Problem robust = makeProblem(model, layout, o, kept, times, 1.0 / start.pxPerMm, 1, framing);
     const LmResult again = levenbergMarquardt(robust, theta, o.maxIterations);
     theta = again.theta;
     fillOutputs(robust, theta, fit);

@@ -30,6 +30,10 @@ struct CameraFitOptions {
   // with an SD of kPrincipalPointSdShare of the image's longer side (docs/CAMERA.md).
   std::optional<Eigen::Vector2d> imageSizePx;
   std::optional<Eigen::Vector2d> principalPointPx;
+  // Without the image: a Gaussian prior on c_y alone, centred on the row of the walker's
+  // pelvis at mid-clip with an SD of kFramingSdOfHeight of the walker's height in the image
+  // (a camera filming a walker points at them; docs/CAMERA.md, "Framing"). false: none.
+  bool framingPrior = true;
   std::optional<double> strideHzHint;   // from the image's foot strikes (image_gait.h)
   // Hold the stride frequency at the hint instead of refining it: a hint more trustworthy than
   // the image's limbs (the model loop's trunk bob, when the tracker has lost the feet).
@@ -47,6 +51,10 @@ struct CameraFitOptions {
 // looser SD also lets the fit's camera, whose axis must cross the walking line and which has
 // no roll, stand for one that does not quite.
 inline constexpr double kPrincipalPointSdShare = 0.25;
+// Without the image, the principal point's row is expected within this share of the walker's
+// head-to-ankles height of the walker's pelvis at mid-clip (one SD): whoever films a walker
+// frames them, and c_y otherwise trades against the tilt in a clip too short for perspective.
+inline constexpr double kFramingSdOfHeight = 0.5;
 
 struct CameraStart {
   double startAlphaDeg = 0.0, alphaDeg = 0.0, elevationDeg = 0.0;

@@ -4,9 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <random>
+#include <tuple>
 #include <unistd.h>
 
 #include "core/engines/request.h"
@@ -63,11 +66,23 @@ void checkOptions(const CameraExperimentOptions& o) {
   if (!(o.fps >= 1 && o.fps <= 240)) badCameraOption("the frame rate must be 1-240 fps");
   if (o.detectorHipOffsetMm && !(std::abs(*o.detectorHipOffsetMm) <= kMaxDetectorOffsetMm))
     badCameraOption("the detector's hip offset must be within ±200 mm");
+  if (o.clipStrides && !(*o.clipStrides >= 0.5 && *o.clipStrides <= 10)) badCameraOption("a clip must be 0.5-10 strides");
+  if (o.walkerHeightPx && !(*o.walkerHeightPx >= 20 && *o.walkerHeightPx <= 5000))
+    badCameraOption("the walker's height must be 20-5000 px");
+  if (!(o.minSpeedMps > 0 && o.minSpeedMps <= o.maxSpeedMps && o.maxSpeedMps <= 5))
+    badCameraOption("the speeds must be 0 < min <= max <= 5 m/s");
+  if (!(std::abs(o.cadenceSpeedExponent) <= 2)) badCameraOption("the cadence's exponent must be within ±2");
+  if (!(o.minElevationDeg >= -30 && o.minElevationDeg <= o.maxElevationDeg && o.maxElevationDeg <= 80))
+    badCameraOption("the elevations must be -30 <= min <= max <= 80 degrees");
+  if (!(o.minLookAtHeightMm >= -5000 && o.minLookAtHeightMm <= o.maxLookAtHeightMm && o.maxLookAtHeightMm <= 10000))
+    badCameraOption("the look-at heights must be -5000 <= min <= max <= 10000 mm");
 }
+
+const char* layoutName(ClipLayout layout) { return layout == ClipLayout::Coco17 ? "COCO-17" : "BODY_25"; }
 
 // Where the simulated detector puts its points relative to the joint centres.
 JointOffsetsMm simulatedDetector(const CameraExperimentOptions& o) {
-  const JointOffsetsMm table = keypointLayoutNamed("BODY_25").detectorOffsetMm;
+  const JointOffsetsMm table = keypointLayoutNamed(layoutName(o.layout)).detectorOffsetMm;
   if (!o.detectorHipOffsetMm) return table;
   JointOffsetsMm hips{};
   hips[static_cast<std::size_t>(index(Joint::RHip))] = {*o.detectorHipOffsetMm, 0.0, 0.0};
@@ -80,7 +95,22 @@ struct Clip {
   VectorXd times;    // of the kept frames
   MatrixXd truth;    // T × 45 canonical frames of the walker
   MatrixXd px;       // T × 30 clean image positions, where the detector puts the points
+  double imageW = kImageW, imageH = kImageH;
+  double strides = 0;  // the clip's length in the walker's strides
 };
+
+// Head to ankles in the image (px), median over the frames.
+double medianHeightPx(const MatrixXd& px) {
+  std::vector<double> h;
+  for (Eigen::Index f = 0; f < px.rows(); ++f) {
+    const double ankles = 0.5 * (px(f, 2 * index(Joint::LAnkle) + 1) + px(f, 2 * index(Joint::RAnkle) + 1));
+    const double v = std::abs(ankles - px(f, 2 * index(Joint::Head) + 1));
+    if (std::isfinite(v)) h.push_back(v);
+  }
+  if (h.empty()) return std::nan("");
+  std::nth_element(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(h.size() / 2), h.end());
+  return h[h.size() / 2];
+}
 
 // The longest run of frames whose pelvis is inside the image.
 std::pair<Eigen::Index, Eigen::Index> longestInside(const MatrixXd& px) {
@@ -98,44 +128,69 @@ std::pair<Eigen::Index, Eigen::Index> longestInside(const MatrixXd& px) {
   return best;
 }
 
-// A random camera filming the walker; redrawn until the clip holds kMinStrides strides.
-Clip filmWalker(const ExperimentWalker& w, double fps, const JointOffsetsMm& detector, std::mt19937& rng) {
+// A random camera filming the walker; redrawn until the clip holds kMinStrides strides (or
+// the options' clipStrides, to which it is then cut), the options' factors applied.
+Clip filmWalker(const ExperimentWalker& w, const CameraExperimentOptions& o, const JointOffsetsMm& detector,
+                std::mt19937& rng) {
   std::uniform_real_distribution<double> uni(0.0, 1.0);
+  const double fps = o.fps;
   const int n = static_cast<int>(kClipS * fps);
   const VectorXd all = frameTimes(n, fps);
-  const MatrixXd frames = synthesizeFrames(w.fit.w, w.fit.omegaRadS, 0.0, all);
-  MatrixXd detected = frames;  // where the detector puts the points
-  addOffsets(detected, detector);
-  const double strideS = 2 * std::numbers::pi / w.fit.omegaRadS;
+  const double minStrides = o.clipStrides.value_or(kMinStrides);
   for (int draw = 0; draw < kMaxCameraDraws; ++draw) {
     WalkCamera c;
     c.model = CameraModel::Pinhole;
     c.alphaDeg = -180.0 + 360.0 * uni(rng);
-    c.elevationDeg = 30.0 * uni(rng);
+    c.elevationDeg = o.minElevationDeg + (o.maxElevationDeg - o.minElevationDeg) * uni(rng);
     c.focalPx = 800.0 + 2200.0 * uni(rng);
     const double fitsMm = c.focalPx * kWalkerFitHeightMm / (0.85 * kImageH);
     const double lo = std::max(3500.0, fitsMm), hi = std::max(8000.0, lo + 1000.0);
     c.distanceMm = lo + (hi - lo) * uni(rng);
     c.cxPx = kImageW / 2;
     c.cyPx = kImageH / 2;
-    c.lookAtHeightMm = 1000.0;
-    c.speedMmS = 1100.0 + 400.0 * uni(rng);
+    c.lookAtHeightMm = o.minLookAtHeightMm;
+    if (o.maxLookAtHeightMm > o.minLookAtHeightMm)  // no draw for the default: the same cameras
+      c.lookAtHeightMm += (o.maxLookAtHeightMm - o.minLookAtHeightMm) * uni(rng);
+    const double slowMmS = 1000.0 * o.minSpeedMps, fastMmS = 1000.0 * o.maxSpeedMps;
+    c.speedMmS = slowMmS + (fastMmS - slowMmS) * uni(rng);
     c.startOffsetMm = -c.speedMmS * kClipS / 2;
-    const MatrixXd px = projectWalk(detected, all, c);
-    const auto [a, b] = longestInside(px);
-    if (static_cast<double>(b - a) / fps < kMinStrides * strideS) continue;
-    return {c, all.segment(a, b - a), frames.middleRows(a, b - a), px.middleRows(a, b - a)};
+    const double omega = w.fit.omegaRadS * std::pow(c.speedMmS / 1300.0, o.cadenceSpeedExponent);
+    const MatrixXd frames = synthesizeFrames(w.fit.w, omega, 0.0, all);
+    MatrixXd detected = frames;  // where the detector puts the points
+    addOffsets(detected, detector);
+    const double strideS = 2 * std::numbers::pi / omega;
+    MatrixXd px = projectWalk(detected, all, c);
+    auto [a, b] = longestInside(px);
+    if (static_cast<double>(b - a) / fps < minStrides * strideS) continue;
+    if (o.clipStrides) {  // the middle of the run, cut to the strides asked for
+      const Eigen::Index keep = std::max<Eigen::Index>(2, std::lround(*o.clipStrides * strideS * fps));
+      a += (b - a - keep) / 2;
+      b = a + keep;
+    }
+    Clip clip{c, all.segment(a, b - a), frames.middleRows(a, b - a), px.middleRows(a, b - a)};
+    clip.strides = static_cast<double>(b - a) / fps / strideS;
+    if (o.walkerHeightPx) {  // the same scene through a camera of another resolution
+      const double k = *o.walkerHeightPx / medianHeightPx(clip.px);
+      clip.camera.focalPx *= k;
+      clip.camera.cxPx *= k;
+      clip.camera.cyPx *= k;
+      clip.imageW *= k;
+      clip.imageH *= k;
+      clip.px *= k;
+    }
+    return clip;
   }
-  throw Error(ErrorKind::BadData, w.id, "", "camera: no camera draw kept the walker in the image for 1.5 strides");
+  throw Error(ErrorKind::BadData, w.id, "", "camera: no camera draw kept the walker in the image for " +
+                                                std::to_string(minStrides) + " strides");
 }
 
 // Someone standing still: the walker's first pose, smaller, elsewhere in the image.
-MatrixXd bystander(const MatrixXd& px, std::mt19937& rng) {
+MatrixXd bystander(const MatrixXd& px, double imageW, std::mt19937& rng) {
   std::uniform_real_distribution<double> uni(0.0, 1.0);
   const Eigen::RowVectorXd pose = px.row(0);
   Eigen::RowVectorXd moved(pose.size());
   const double u0 = pose[2 * index(Joint::Pelvis)], v0 = pose[2 * index(Joint::Pelvis) + 1];
-  const double u = 200 + (kImageW - 400) * uni(rng), scale = 0.7;
+  const double u = (200 + (kImageW - 400) * uni(rng)) * (imageW / kImageW), scale = 0.7;
   for (int j = 0; j < kJointCount; ++j) {
     moved[2 * j] = u + scale * (pose[2 * j] - u0);
     moved[2 * j + 1] = v0 + scale * (pose[2 * j + 1] - v0);
@@ -198,6 +253,7 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   row.focalRelError = std::abs(fit.camera.focalPx - clip.camera.focalPx) / clip.camera.focalPx;
   const double height = walkerHeadHeightMm(w.fit.w);
   row.heightRelError = std::abs(fit.headHeightMm - height) / height;
+  const MatrixXd trueCamera = walkInCameraFrame(clip.truth, clip.times, clip.camera);
   const VectorXd times = frameTimes(static_cast<int>(clip.times.size()), o.fps);
   const MatrixXd frames = synthesizeFrames(fit.w, fit.omegaRadS, fit.phaseRad, times);
   row.mpjpeMm = mpjpeWithoutTranslation(frames, clip.truth);
@@ -214,6 +270,12 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
             walked.twoHarmonicWalker});
   EigenwalkerClip out{fit.w, fit.omegaRadS, {}};
   const MatrixXd camera = walkInCameraFrame(frames, times, fit.camera);
+  const auto pelvisDistanceM = [](const MatrixXd& inCamera) {
+    return inCamera.middleCols<3>(3 * index(Joint::Pelvis)).rowwise().norm().mean() / 1000;
+  };
+  row.trueWalkerDistanceM = pelvisDistanceM(trueCamera);
+  row.walkerDistanceM = pelvisDistanceM(camera);
+  row.distanceRelError = std::abs(row.walkerDistanceM - row.trueWalkerDistanceM) / row.trueWalkerDistanceM;
   for (Eigen::Index frame = 0; frame < camera.rows(); ++frame)
     out.guideMm.push_back(Eigen::Map<const Eigen::Matrix<double, 3, kJointCount>>(camera.row(frame).eval().data()));
   return out;
@@ -261,7 +323,7 @@ EngineClipScore skeletonOnClip(const Clip& clip, const KeypointTrial& t, const B
     if (guide) skeleton.solve.guideMm = *guide;
     CameraView view;
     view.keypoints = t;
-    view.camera.calibration = calibrationOf(clip.camera, kImageW, kImageH);
+    view.camera.calibration = calibrationOf(clip.camera, clip.imageW, clip.imageH);
     view.camera.focalPx = view.camera.calibration->focalPx();
     view.name = name;
     SkeletonCameraResult r = std::move(*reconstruct(skeleton, {std::move(view)}).camera.skeleton);
@@ -362,12 +424,21 @@ void reconstructClip(const Fold& fold, const ExperimentWalker& w, const Clip& cl
   fs::remove_all(folder);
   std::vector<OpenPosePerson> people{{observed, confidence}};
   if (other) people.push_back({*other, MatrixXd()});
-  writeOpenPoseBody25(folder, people);
+  fs::path input = folder;
+  if (o.layout == ClipLayout::Coco17) {
+    fs::create_directories(folder);
+    input = folder / "alphapose-results.json";
+    writeAlphaPoseCoco17(input, people);
+  } else {
+    writeOpenPoseBody25(folder, people);
+  }
   try {
     KeypointOptions k;
     k.fps = o.fps;
     k.detectorOffsets = o.allowForDetectorOffsets;
-    const KeypointTrial t = readKeypointTrial(folder, k);
+    if (o.imageSizeKnown)
+      k.imageSize = KeypointImageSize{static_cast<int>(std::lround(clip.imageW)), static_cast<int>(std::lround(clip.imageH))};
+    const KeypointTrial t = readKeypointTrial(input, k);
     std::optional<EigenwalkerClip> walker;
     try {
       walker = eigenwalkerOnClip(fold, w, clip, t, folder.string(), o, row);
@@ -426,10 +497,10 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
     const ExperimentWalker& w = walkers[static_cast<std::size_t>(job.walker)];
     // One generator per (walker, camera): the same camera and bystander at every noise level.
     std::mt19937 rng(o.seed + 7919u * static_cast<unsigned>(job.walker) + 104729u * static_cast<unsigned>(job.camera));
-    const Clip clip = filmWalker(w, o.fps, detector, rng);
+    const Clip clip = filmWalker(w, o, detector, rng);
     std::uniform_real_distribution<double> uni(0.0, 1.0);
     const bool withBystander = uni(rng) < o.bystanderShare;
-    const MatrixXd other = withBystander ? bystander(clip.px, rng) : MatrixXd();
+    const MatrixXd other = withBystander ? bystander(clip.px, clip.imageW, rng) : MatrixXd();
     for (std::size_t l = 0; l < levels; ++l) {
       std::normal_distribution<double> noise(0.0, 1.0);
       MatrixXd observed = clip.px;
@@ -448,6 +519,8 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
       row.trueElevationDeg = clip.camera.elevationDeg;
       row.trueFocalPx = clip.camera.focalPx;
       row.trueDistanceM = clip.camera.distanceMm / 1000;
+      row.walkerHeightPx = medianHeightPx(clip.px);
+      row.strides = clip.strides;
       const auto& prior = priors[static_cast<std::size_t>(job.fold)];
       const SnippetEngine snippet{prior, {}};
       reconstructClip(folds[static_cast<std::size_t>(job.fold)], w, clip, observed, confidence,
@@ -460,6 +533,12 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
 }
 
 namespace {
+
+double medianOf(std::vector<double> v) {
+  if (v.empty()) return std::nan("");
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
 
 CameraSummary::Other summarizeOtherEngine(const std::vector<const CameraRow*>& rows,
                                           std::optional<EngineClipScore> CameraRow::*score) {
@@ -484,11 +563,6 @@ CameraSummary::Other summarizeOtherEngine(const std::vector<const CameraRow*>& r
 std::vector<CameraSummary> summarizeCamera(const std::vector<CameraRow>& rows) {
   std::map<double, std::vector<const CameraRow*>> byNoise;
   for (const auto& r : rows) byNoise[r.noisePx].push_back(&r);
-  const auto median = [](std::vector<double> v) {
-    if (v.empty()) return std::nan("");
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-  };
   std::vector<CameraSummary> out;
   for (const auto& [noise, list] : byNoise) {
     CameraSummary s;
@@ -516,12 +590,132 @@ std::vector<CameraSummary> summarizeCamera(const std::vector<CameraRow>& rows) {
     s.snippet = summarizeOtherEngine(list, &CameraRow::snippet);
     const int ok = s.clips - s.failures;
     s.meanMpjpeMm = ok ? mpjpe / ok : std::nan("");
-    s.medianAlphaErrorDeg = median(alpha);
-    s.medianElevationErrorDeg = median(elevation);
-    s.medianFocalRelError = median(focal);
-    s.medianHeightRelError = median(height);
+    s.medianAlphaErrorDeg = medianOf(alpha);
+    s.medianElevationErrorDeg = medianOf(elevation);
+    s.medianFocalRelError = medianOf(focal);
+    s.medianHeightRelError = medianOf(height);
     s.heightWithin5Share = ok ? static_cast<double>(within) / ok : 0.0;
     out.push_back(s);
+  }
+  return out;
+}
+
+// [SECTION] The widened experiment
+
+std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOptions& base,
+                                                      const std::vector<std::string>& factors) {
+  const auto fast = [](CameraExperimentOptions& o) {
+    o.minSpeedMps = 1.5;
+    o.maxSpeedMps = 2.0;
+    o.cadenceSpeedExponent = 0.5;
+  };
+  const auto hardest = [&](CameraExperimentOptions& o) {
+    o.clipStrides = 1.2;
+    o.walkerHeightPx = 120;
+    fast(o);
+    o.layout = ClipLayout::Coco17;
+    o.fps = 25;
+    o.maxElevationDeg = 35;
+  };
+  using Change = std::function<void(CameraExperimentOptions&)>;
+  const std::vector<std::tuple<const char*, std::string, Change>> all = {
+      {"base", "as the camera experiment", [](CameraExperimentOptions&) {}},
+      {"length (strides)", "3", [](CameraExperimentOptions& o) { o.clipStrides = 3; }},
+      {"length (strides)", "2", [](CameraExperimentOptions& o) { o.clipStrides = 2; }},
+      {"length (strides)", "1.5", [](CameraExperimentOptions& o) { o.clipStrides = 1.5; }},
+      {"length (strides)", "1.2", [](CameraExperimentOptions& o) { o.clipStrides = 1.2; }},
+      {"height (px)", "400", [](CameraExperimentOptions& o) { o.walkerHeightPx = 400; }},
+      {"height (px)", "240", [](CameraExperimentOptions& o) { o.walkerHeightPx = 240; }},
+      {"height (px)", "160", [](CameraExperimentOptions& o) { o.walkerHeightPx = 160; }},
+      {"height (px)", "120", [](CameraExperimentOptions& o) { o.walkerHeightPx = 120; }},
+      {"speed (m/s)", "1.5-2.0", fast},
+      {"layout", "COCO-17", [](CameraExperimentOptions& o) { o.layout = ClipLayout::Coco17; }},
+      {"fps", "25", [](CameraExperimentOptions& o) { o.fps = 25; }},
+      {"elevation (deg)", "0-35", [](CameraExperimentOptions& o) { o.maxElevationDeg = 35; }},
+      {"elevation (deg)", "20-35", [](CameraExperimentOptions& o) {
+         o.minElevationDeg = 20;
+         o.maxElevationDeg = 35;
+       }},
+      {"image", "size known", [](CameraExperimentOptions& o) { o.imageSizeKnown = true; }},
+      {"aim", "look-at 0-2 m high", [](CameraExperimentOptions& o) {
+         o.minLookAtHeightMm = 0;
+         o.maxLookAtHeightMm = 2000;
+       }},
+      {"aim", "look-at 0-2 m high, 1.2 strides", [](CameraExperimentOptions& o) {
+         o.minLookAtHeightMm = 0;
+         o.maxLookAtHeightMm = 2000;
+         o.clipStrides = 1.2;
+       }},
+      {"hardest", "1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17, 25 fps, 0-35 deg", hardest},
+      {"hardest", "the same, image size known", [&](CameraExperimentOptions& o) {
+         hardest(o);
+         o.imageSizeKnown = true;
+       }},
+  };
+  const auto firstWord = [](const std::string& f) { return f.substr(0, f.find(' ')); };
+  for (const auto& f : factors) {
+    const bool known = std::any_of(all.begin(), all.end(), [&](const auto& c) { return firstWord(std::get<0>(c)) == f; });
+    if (!known) badCameraOption("no factor '" + f + "' (length, height, speed, layout, fps, elevation, image, aim, hardest)");
+  }
+  std::vector<CameraWideCondition> out;
+  for (const auto& [factor, level, change] : all) {
+    const bool asked = factors.empty() || std::find(factors.begin(), factors.end(), firstWord(factor)) != factors.end();
+    if (!asked && std::string(factor) != "base") continue;
+    CameraWideCondition c{factor, level, base};
+    change(c.options);
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::vector<CameraWideRow> cameraWideErrors(const std::vector<ExperimentWalker>& walkers,
+                                            const std::vector<Fold>& folds,
+                                            const std::vector<CameraWideCondition>& conditions) {
+  std::vector<CameraWideRow> out;
+  for (const auto& c : conditions)
+    for (auto& row : cameraErrors(walkers, folds, c.options)) out.push_back({c.factor, c.level, std::move(row)});
+  return out;
+}
+
+std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideRow>& rows) {
+  std::vector<CameraWideSummary> out;
+  std::vector<std::vector<const CameraRow*>> groups;
+  for (const auto& r : rows) {
+    if (out.empty() || out.back().factor != r.factor || out.back().level != r.level) {
+      out.push_back({r.factor, r.level});
+      groups.emplace_back();
+    }
+    groups.back().push_back(&r.clip);
+  }
+  for (std::size_t g = 0; g < out.size(); ++g) {
+    CameraWideSummary& s = out[g];
+    std::vector<double> mpjpe, alpha, elevation, distance, height, strides;
+    int elevationOver5 = 0, distanceOver20 = 0;
+    for (const CameraRow* r : groups[g]) {
+      ++s.clips;
+      height.push_back(r->walkerHeightPx);
+      strides.push_back(r->strides);
+      if (!r->error.empty()) {
+        ++s.refusals;
+        continue;
+      }
+      mpjpe.push_back(r->mpjpeMm);
+      alpha.push_back(r->alphaErrorDeg);
+      elevation.push_back(r->elevationErrorDeg);
+      distance.push_back(r->distanceRelError);
+      elevationOver5 += r->elevationErrorDeg > 5;
+      distanceOver20 += r->distanceRelError > 0.2;
+    }
+    const double ok = static_cast<double>(mpjpe.size());
+    s.meanMpjpeMm = ok > 0 ? std::accumulate(mpjpe.begin(), mpjpe.end(), 0.0) / ok : std::nan("");
+    s.medianMpjpeMm = medianOf(mpjpe);
+    s.medianAlphaErrorDeg = medianOf(alpha);
+    s.medianElevationErrorDeg = medianOf(elevation);
+    s.medianDistanceRelError = medianOf(distance);
+    s.elevationOver5Share = ok > 0 ? elevationOver5 / ok : std::nan("");
+    s.distanceOver20Share = ok > 0 ? distanceOver20 / ok : std::nan("");
+    s.medianWalkerHeightPx = medianOf(height);
+    s.medianStrides = medianOf(strides);
   }
   return out;
 }

@@ -1,8 +1,9 @@
 #pragma once
 // Experiment "camera" (issue 13): each held-out walker filmed by random real cameras and
 // reconstructed with everything unknown, through the whole user path — the clip is written
-// as OpenPose BODY_25 JSON, read back, cleaned (core/keypoints) and reconstructed
-// (core/camera/camera_reconstruction.h) with the fold's model (docs/CAMERA.md).
+// as OpenPose BODY_25 JSON (or AlphaPose COCO-17: options.layout), read back, cleaned
+// (core/keypoints) and reconstructed (core/camera/camera_reconstruction.h) with the fold's
+// model (docs/CAMERA.md).
 //
 // Cameras: azimuth uniform over the circle, elevation 0-30°, focal 800-3000 px, distance
 // 3.5-8 m (further when the walker would not fit the 1080 px height), 1920 × 1080 image,
@@ -40,6 +41,9 @@
 
 namespace ew {
 
+// How the simulated detector's clip is written (openpose_writer.h).
+enum class ClipLayout { Body25, Coco17 };  // OpenPose BODY_25 JSON, AlphaPose COCO-17 JSON
+
 struct CameraExperimentOptions {
   int camerasPerWalker = 3;
   std::vector<double> noisePx{0.0, 2.0, 5.0};
@@ -59,6 +63,27 @@ struct CameraExperimentOptions {
   // (docs/KEYPOINTS.md, "Detector hips"). The truth stays the joint centres.
   std::optional<double> detectorHipOffsetMm;
   bool allowForDetectorOffsets = true;  // false: the reader takes the hips for centres
+  // The widened experiment's factors (issue 55); each default is the clip described above.
+  // The clip cut to this many strides around the middle of the walker's run in the image
+  // (a camera is drawn again until the run holds them); unset: the whole run (≥ 1.5 strides).
+  std::optional<double> clipStrides;
+  // The camera's focal length and image (and so its principal point) scaled, after the draw,
+  // so that the walker's head-to-ankles height in the image is this (median over the clip):
+  // a lower-resolution camera seeing the same scene; unset: as drawn (about 200-900 px).
+  std::optional<double> walkerHeightPx;
+  double minSpeedMps = 1.1, maxSpeedMps = 1.5;  // the walker's progression, uniform
+  // The walker's stride frequency scaled by (speed / 1.3 m/s)^exponent: 0 keeps each walker's
+  // own (the stride lengthens with the speed alone); 0.5 shares a faster speed between the
+  // cadence and the stride, as people walking faster do.
+  double cadenceSpeedExponent = 0.0;
+  ClipLayout layout = ClipLayout::Body25;
+  double minElevationDeg = 0.0, maxElevationDeg = 30.0;  // the camera's tilt, uniform
+  // The reader told the image's size (as a video's is known): the fit then holds the principal
+  // point near its centre (docs/CAMERA.md); false, bare keypoint files, the hardest case.
+  bool imageSizeKnown = false;
+  // The height of the point the camera looks at (where the walker passes mid-clip), uniform
+  // (mm); equal, no draw: the clip above, aimed at 1 m (about the walker's pelvis).
+  double minLookAtHeightMm = 1000.0, maxLookAtHeightMm = 1000.0;
 };
 
 // Another engine's result on a clip: NaN MPJPE and the reason when it gave none.
@@ -80,6 +105,11 @@ struct CameraRow {
   double alphaDeg = 0, elevationDeg = 0, focalPx = 0, distanceM = 0;
   double alphaErrorDeg = 0, elevationErrorDeg = 0, focalRelError = 0, heightRelError = 0;
   double mpjpeMm = 0, reprojectionRmsPx = 0;
+  // The camera's distance from the walker's pelvis, mean over the clip (m): true, the fit's
+  // (in its own camera) and the relative error; what a user reads as "how far away".
+  double trueWalkerDistanceM = 0, walkerDistanceM = 0, distanceRelError = 0;
+  double walkerHeightPx = 0;  // head to ankles in the image, median over the clip
+  double strides = 0;         // the clip's length in the walker's strides
   double seconds = 0;       // the eigenwalker's wall time: fit through the unknown camera
   std::string error;        // empty: reconstructed; else why not (a failure)
   std::optional<EngineClipScore> skeleton, snippet;  // unset: not asked for
@@ -120,5 +150,49 @@ struct CameraSummary {
   Other skeleton, skeletonGuided, skeletonTable2, skeletonEigenwalkerBones, snippet;
 };
 std::vector<CameraSummary> summarizeCamera(const std::vector<CameraRow>& rows);
+
+// [SECTION] The widened experiment (issue 55: "camera-wide")
+//
+// The eigenwalker alone (no other engine) on clips made as above at one noise level (2 px),
+// one factor changed at a time from the clip above (the "base" level of every factor) — the
+// clip's length in strides, the walker's height in pixels, the walking speed, the layout
+// written, the frame rate, the camera's elevation — and a condition with every factor at
+// its hardest level at once. Each condition draws the same cameras (the same seed).
+
+struct CameraWideCondition {
+  std::string factor, level;        // "length (strides)", "1.2"; the base is factor "base"
+  CameraExperimentOptions options;  // the clip's options for this condition
+};
+
+// The conditions over `base` (its seed, noise, threads, σ² …): the base, then per factor its
+// levels (length 3 / 2 / 1.5 / 1.2 strides; height 400 / 240 / 160 / 120 px; speed
+// 1.5-2.0 m/s with the cadence taking half; COCO-17; 25 fps; elevation 0-35° and 20-35°;
+// the image's size known; the camera aimed 0-2 m high), then "all hardest" (1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17,
+// 25 fps, 0-35°, image unknown). `factors` keeps only the factors named (their first word:
+// "length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "hardest");
+// empty: all. Error(BadArgument) naming an unknown factor.
+std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOptions& base,
+                                                      const std::vector<std::string>& factors = {});
+
+struct CameraWideRow {
+  std::string factor, level;
+  CameraRow clip;
+};
+
+std::vector<CameraWideRow> cameraWideErrors(const std::vector<ExperimentWalker>& walkers,
+                                            const std::vector<Fold>& folds,
+                                            const std::vector<CameraWideCondition>& conditions);
+
+// Per condition (in the order of the rows): refusals, mean and median MPJPE, medians of
+// |α error|, |elevation error| and the distance's relative error, the share of clips whose
+// elevation is more than 5° off and whose distance is more than 20 % off.
+struct CameraWideSummary {
+  std::string factor, level;
+  int clips = 0, refusals = 0;
+  double meanMpjpeMm = 0, medianMpjpeMm = 0, medianAlphaErrorDeg = 0, medianElevationErrorDeg = 0;
+  double medianDistanceRelError = 0, elevationOver5Share = 0, distanceOver20Share = 0;
+  double medianWalkerHeightPx = 0, medianStrides = 0;
+};
+std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideRow>& rows);
 
 }  // namespace ew

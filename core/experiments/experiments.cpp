@@ -155,6 +155,7 @@ std::string experimentName(Experiment e) {
     case Experiment::MissingJoints: return "missing-joints";
     case Experiment::LowerBody: return "lower-body";
     case Experiment::Camera: return "camera";
+    case Experiment::CameraWide: return "camera-wide";
     case Experiment::Snippet: return "snippet";
     case Experiment::SnippetClusters: return "snippet-clusters";
     case Experiment::Engines: return "engines";
@@ -175,7 +176,7 @@ std::optional<Experiment> experimentFromName(const std::string& name) {
   for (Experiment e : allExperiments()) {
     if (experimentName(e) == name) return e;
   }
-  for (Experiment e : {Experiment::Camera, Experiment::Snippet, Experiment::SnippetClusters, Experiment::Engines,
+  for (Experiment e : {Experiment::Camera, Experiment::CameraWide, Experiment::Snippet, Experiment::SnippetClusters, Experiment::Engines,
                        Experiment::Semantic})
     if (name == experimentName(e)) return e;
   return std::nullopt;
@@ -544,6 +545,15 @@ EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
     camera.detectorHipOffsetMm = options.cameraDetectorHipOffsetMm;
     camera.allowForDetectorOffsets = options.cameraAllowForDetectorOffsets;
     res.camera = cameraErrors(walkers, folds, camera);
+  });
+  timed(Experiment::CameraWide, [&] {
+    CameraExperimentOptions base;  // the eigenwalker alone at 2 px
+    base.sigma2Mm2 = s2;
+    base.threads = options.threads;
+    base.skeleton = base.snippet = false;
+    base.noisePx = {2.0};
+    if (options.cameraWideCameras) base.camerasPerWalker = *options.cameraWideCameras;
+    res.cameraWide = cameraWideErrors(walkers, folds, cameraWideConditions(base, options.cameraWideFactors));
   });
   return res;
 }

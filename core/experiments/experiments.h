@@ -29,6 +29,7 @@ enum class Experiment {
   SnippetClusters,  // the snippet prior's cluster count by held-out likelihood; by name only
   Engines,          // the three engines on the same views, noise and cameras (engines_experiment.h)
   Semantic,         // semantic axes of the walkers' attributes (semantic_experiment.h); by name only
+  CameraWide,       // the camera experiment's factors one at a time (camera_experiment.h); by name only
 };
 
 std::string experimentName(Experiment e);  // "variance", "sigma-sweep", …
@@ -69,6 +70,10 @@ struct EvaluationOptions {
   // (CameraExperimentOptions::detectorHipOffsetMm, allowForDetectorOffsets).
   std::optional<double> cameraDetectorHipOffsetMm;
   bool cameraAllowForDetectorOffsets = true;
+  // Experiment "camera-wide": the factors to run (cameraWideConditions; empty: all) and the
+  // cameras per held-out walker (unset: the camera experiment's 3).
+  std::vector<std::string> cameraWideFactors;
+  std::optional<int> cameraWideCameras;
   int threads = 1;
   ExperimentProgressFn progress;
 };
@@ -122,6 +127,7 @@ struct EvaluationResults {
   std::vector<UnknownViewRow> unknownView;
   std::vector<LowerBodyRow> lowerBody;  // experiment "lower-body" (lower_body.h)
   std::vector<CameraRow> camera;        // experiment "camera" (camera_experiment.h)
+  std::vector<CameraWideRow> cameraWide;  // experiment "camera-wide" (camera_experiment.h)
   // Experiments "snippet" and "snippet-clusters" (snippet_experiment.h): they need the
   // dataset's trials, so the caller runs them (snippetComparison, chooseSnippetClusters).
   SnippetExperimentResults snippet;

@@ -240,6 +240,28 @@ std::string cameraCsv(const std::vector<CameraRow>& rows) {
   });
 }
 
+std::string cameraWideCsv(const std::vector<CameraWideRow>& rows) {
+  return csv(kCameraWideHeader, rows, [](const CameraWideRow& w) {
+    const CameraRow& r = w.clip;
+    return join({quotedCell(w.factor), quotedCell(w.level), r.subject, r.walker, std::to_string(r.camera),
+                 num(r.noisePx), r.bystander ? "1" : "0", std::to_string(r.frames), num(r.strides),
+                 num(r.walkerHeightPx), num(r.trueAlphaDeg), num(r.trueElevationDeg), num(r.trueFocalPx),
+                 num(r.trueWalkerDistanceM), num(r.alphaDeg), num(r.elevationDeg), num(r.focalPx),
+                 num(r.walkerDistanceM), num(r.alphaErrorDeg), num(r.elevationErrorDeg), num(r.distanceRelError),
+                 num(r.focalRelError), num(r.heightRelError), num(r.mpjpeMm), num(r.reprojectionRmsPx),
+                 num(r.seconds), quotedCell(r.error)});
+  });
+}
+
+std::string cameraWideSummaryCsv(const std::vector<CameraWideSummary>& rows) {
+  return csv(kCameraWideSummaryHeader, rows, [](const CameraWideSummary& s) {
+    return join({quotedCell(s.factor), quotedCell(s.level), std::to_string(s.clips), std::to_string(s.refusals),
+                 num(s.medianStrides), num(s.medianWalkerHeightPx), num(s.meanMpjpeMm), num(s.medianMpjpeMm),
+                 num(s.medianAlphaErrorDeg), num(s.medianElevationErrorDeg), num(s.medianDistanceRelError),
+                 num(s.elevationOver5Share), num(s.distanceOver20Share)});
+  });
+}
+
 // [SECTION] summary.json
 
 namespace {
@@ -427,6 +449,16 @@ std::string summaryJson(const EvaluationResults& r, const EvaluationProvenance& 
     }
     s["camera"] = camera;
   }
+  if (r.ran.count(Experiment::CameraWide)) {
+    json wide = json::array();  // per factor and level, at 2 px
+    for (const auto& c : summarizeCameraWide(r.cameraWide))
+      wide.push_back({{"factor", c.factor}, {"level", c.level}, {"clips", c.clips}, {"refusals", c.refusals},
+                      {"mean_mpjpe_mm", c.meanMpjpeMm}, {"median_mpjpe_mm", c.medianMpjpeMm},
+                      {"median_alpha_error_deg", c.medianAlphaErrorDeg},
+                      {"median_elevation_error_deg", c.medianElevationErrorDeg},
+                      {"median_distance_rel_error", c.medianDistanceRelError}});
+    s["camera_wide"] = wide;
+  }
   if (r.ran.count(Experiment::Snippet)) s["snippet"] = snippetSummary(r.snippet);
   if (r.ran.count(Experiment::Engines)) s["engines"] = enginesSummary(r.engines);
   if (r.ran.count(Experiment::Semantic)) s["semantic"] = semanticSummary(r.semantic);
@@ -494,6 +526,10 @@ std::vector<std::string> writeResultsFolder(const fs::path& dir, const Evaluatio
     if (r.ran.count(Experiment::MissingJoints)) add("missing_joints.csv", missingJointsCsv(r.missingJoints));
     if (r.ran.count(Experiment::LowerBody)) add("lower_body.csv", lowerBodyCsv(r.lowerBody));
     if (r.ran.count(Experiment::Camera)) add("camera.csv", cameraCsv(r.camera));
+    if (r.ran.count(Experiment::CameraWide)) {
+      add("camera_wide.csv", cameraWideCsv(r.cameraWide));
+      add("camera_wide_summary.csv", cameraWideSummaryCsv(summarizeCameraWide(r.cameraWide)));
+    }
     if (r.ran.count(Experiment::Snippet)) {
       add("snippet_engines.csv", snippetEnginesCsv(r.snippet.rows));
       add("snippet_phase.csv", snippetPhaseCsv(r.snippet.phase));

@@ -28,6 +28,15 @@ inline constexpr const char* kCameraHeader =
     "focal_rel_error,height_rel_error,mpjpe_mm,reprojection_rms_px,error,skeleton_mpjpe_mm,"
     "skeleton_clamped_bone_frames,skeleton_error,skeleton_guided_mpjpe_mm,skeleton_guided_error,skeleton_table2_mpjpe_mm,skeleton_table2_error,"
     "skeleton_eigenwalker_bones_mpjpe_mm,skeleton_eigenwalker_bones_error,snippet_mpjpe_mm,snippet_error";
+inline constexpr const char* kCameraWideHeader =
+    "factor,level,subject,walker,camera,noise_px,bystander,frames,strides,walker_height_px,true_alpha_deg,"
+    "true_elevation_deg,true_focal_px,true_walker_distance_m,alpha_deg,elevation_deg,focal_px,walker_distance_m,"
+    "alpha_error_deg,elevation_error_deg,distance_rel_error,focal_rel_error,height_rel_error,mpjpe_mm,"
+    "reprojection_rms_px,seconds,error";
+inline constexpr const char* kCameraWideSummaryHeader =
+    "factor,level,clips,refusals,median_strides,median_walker_height_px,mean_mpjpe_mm,median_mpjpe_mm,"
+    "median_alpha_error_deg,median_elevation_error_deg,median_distance_rel_error,elevation_over_5deg_share,"
+    "distance_over_20pct_share";
 
 inline constexpr const char* kSnippetEnginesHeader =
     "subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error,seconds";
@@ -83,6 +92,8 @@ std::string noiseCsv(const std::vector<ViewErrorRow>& rows);
 std::string missingJointsCsv(const std::vector<ViewErrorRow>& rows);
 std::string lowerBodyCsv(const std::vector<LowerBodyRow>& rows);
 std::string cameraCsv(const std::vector<CameraRow>& rows);
+std::string cameraWideCsv(const std::vector<CameraWideRow>& rows);
+std::string cameraWideSummaryCsv(const std::vector<CameraWideSummary>& rows);
 
 // What produced the results (recorded in summary.json).
 struct EvaluationProvenance {

@@ -66,8 +66,21 @@ double extentAtEnd(const KeypointTrial& t, bool last) {
   return sum / static_cast<double>(n);
 }
 
-// Stride frequency from same-side strike intervals (strides per second).
-double strideHz(const std::vector<double>& right, const std::vector<double>& left) {
+// A clip read as a stride and a bit (one strike a side, or the ankles' swing alone) must be
+// short, and the walker must travel (across the picture, or towards or away from the camera):
+// in a longer clip a walker strikes more often, and a person balancing or shifting their
+// weight on the spot, whose feet move once or twice, is not walking.
+constexpr double kMaxShortClipStrides = 2.5;
+// A walker who does not cross the picture travels when a line in time explains this share of
+// the variance of their size in it (steadySizeChange; a foot's lift makes the size bob with the
+// steps): the widened camera experiment's walkers seen from within 20° of behind over 1.2
+// strides 0.46-0.82, the Pose2Sim balancing trial's views whose size changes 0.11.
+constexpr double kMinSteadySizeChange = 0.3;
+
+// Stride frequency from same-side strike intervals (strides per second); a clip of a stride
+// and a bit has one strike a side: then from the step between them, half a stride, when the
+// clip (`durationS`) holds fewer than kMaxShortClipStrides of them.
+double strideHz(const std::vector<double>& right, const std::vector<double>& left, double durationS) {
   double total = 0.0;
   int count = 0;
   for (const auto* side : {&right, &left}) {
@@ -75,8 +88,33 @@ double strideHz(const std::vector<double>& right, const std::vector<double>& lef
     total += side->back() - side->front();
     count += static_cast<int>(side->size()) - 1;
   }
-  return count > 0 && total > 0 ? count / total : 0.0;
+  if (count > 0 && total > 0) return count / total;
+  const double step = right.size() == 1 && left.size() == 1 ? std::abs(right.front() - left.front()) : 0.0;
+  return step > 0 && durationS < kMaxShortClipStrides * 2.0 * step ? 0.5 / step : 0.0;
 }
+
+// The share of the variance of the walker's per-frame size (frameSizePx) a line in time
+// explains: near 1 for a walker nearing or leaving the camera, low for one who stays and
+// lifts a foot; 0 with fewer than 8 frames measured.
+double steadySizeChange(const KeypointTrial& t) {
+  std::vector<double> ts, sizes;
+  for (Eigen::Index f = 0; f < t.jointsPx.rows(); ++f) {
+    const double size = frameSizePx(t, f);
+    if (std::isfinite(size)) ts.push_back(static_cast<double>(f)), sizes.push_back(size);
+  }
+  if (sizes.size() < 8) return 0.0;
+  const auto n = static_cast<Eigen::Index>(sizes.size());
+  Eigen::MatrixXd line(n, 2);
+  line.col(0).setOnes();
+  line.col(1) = Eigen::Map<const Eigen::VectorXd>(ts.data(), n);
+  const Eigen::VectorXd y = Eigen::Map<const Eigen::VectorXd>(sizes.data(), n);
+  const double total = (y.array() - y.mean()).square().sum();
+  const double left = (y - line * line.colPivHouseholderQr().solve(y)).squaredNorm();
+  return total > 0.0 ? 1.0 - left / total : 0.0;
+}
+
+// A clip too short for the strikes' frequency (defined with the trunk's bob, below).
+std::optional<double> ankleLeadsStrideHz(const Eigen::VectorXd& rightMinusLeft, double rateHz);
 
 // The ankles' offsets from the pelvis spread along their swing this many times more (in
 // variance) than across it, or there is no swing to read a direction from.
@@ -169,7 +207,11 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
   if (crosses) {
     g.direction = travel / g.travelPx;
   } else {
-    const auto swing = ankleSwingDirection(t);
+    std::optional<Eigen::Vector2d> swing = ankleSwingDirection(t);
+    // Too short a clip to read a swing from, but the walker grows or shrinks: towards the
+    // camera the feet come down the image, away from it they go up.
+    if (!swing && sizeChange > kMaxInPlaceSizeChange)
+      swing = Eigen::Vector2d(0.0, extentAtEnd(t, true) > extentAtEnd(t, false) ? 1.0 : -1.0);
     if (!swing) notWalking(t, prefix + "the ankles do not swing about the pelvis (as on a treadmill)");
     g.direction = *swing;
   }
@@ -195,7 +237,15 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
   }
   g.rightStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Right);
   g.leftStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Left);
-  g.strikesStrideHz = strideHz(g.rightStrikesS, g.leftStrikesS);
+  const double durationS = static_cast<double>(t.frameCount) / t.rateHz;
+  // The readings of a stride and a bit, for a walker who travels: across the picture, or
+  // nearing or leaving the camera at a steady rate.
+  const bool travels = crosses || (!g.inPlace && steadySizeChange(t) >= kMinSteadySizeChange);
+  g.strikesStrideHz = strideHz(g.rightStrikesS, g.leftStrikesS, travels ? durationS : INFINITY);
+  if (travels && (g.strikesStrideHz < kMinStrideHz || g.strikesStrideHz > kMaxStrideHz))
+    g.strikesStrideHz = ankleLeadsStrideHz(frames.col(3 * index(Joint::RAnkle) + 1) - frames.col(3 * index(Joint::LAnkle) + 1),
+                                           t.rateHz)
+                            .value_or(g.strikesStrideHz);
   g.strideHz = heldStrideHz.value_or(g.strikesStrideHz);
   if (g.strideHz < kMinStrideHz || g.strideHz > kMaxStrideHz)
     notWalking(t, prefix + "no regular foot strikes (" + std::to_string(g.rightStrikesS.size()) +
@@ -203,11 +253,11 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
                       fixed1(t.rateHz) + " fps" +
                       // A video's own rate (a track) is no guess to correct.
                       (t.rateAssumed ? ", assumed: give the video's --fps if it is not that)" : ")"));
-  g.cycles = static_cast<double>(t.frameCount) / t.rateHz * g.strideHz;
-  if (g.cycles < 1.0)
+  g.cycles = durationS * g.strideHz;
+  if (g.cycles < kMinImageCycles)
     throw Error(ErrorKind::BadData, t.file, "",
-                "shorter than one gait cycle (" + fixed1(g.cycles) +
-                    " cycles): at least one full cycle is needed");
+                "shorter than a gait cycle (" + fixed(g.cycles, 2) + " cycles): at least " +
+                    fixed(kMinImageCycles, 2) + " of one is needed");
   return g;
 }
 
@@ -255,6 +305,30 @@ double explained(const BobSamples& b, double f) {
   const Eigen::Vector2d rhs = basis.transpose() * b.v;
   if (std::abs(gram.determinant()) < 1e-12) return 0.0;
   return rhs.dot(gram.ldlt().solve(rhs));
+}
+
+// The ankles' leads swing in opposition once a stride: their difference's detrended path
+// (a line through it taken out: a walker nearing the camera grows), fitted by a sinusoid over
+// the bob's stride band; the frequency explaining most of it, when that is at least half its
+// variance and the clip holds kMinImageCycles to kMaxShortClipStrides cycles of it.
+std::optional<double> ankleLeadsStrideHz(const Eigen::VectorXd& rightMinusLeft, double rateHz) {
+  const Eigen::Index n = rightMinusLeft.size();
+  if (n < 8 || !rightMinusLeft.allFinite()) return std::nullopt;
+  BobSamples b{Eigen::VectorXd::LinSpaced(n, 0.0, static_cast<double>(n - 1) / rateHz), rightMinusLeft};
+  Eigen::MatrixXd trend(n, 2);
+  trend.col(0).setOnes();
+  trend.col(1) = b.t;
+  b.v -= trend * trend.colPivHouseholderQr().solve(b.v);
+  const double variance = b.v.squaredNorm();
+  if (!(variance > 0.0)) return std::nullopt;
+  double bestHz = 0.0, bestShare = 0.0;
+  for (double f = kBobMinStrideHz; f <= kBobMaxStrideHz; f += kBobStepHz) {
+    const double share = explained(b, f) / variance;
+    if (share > bestShare) bestShare = share, bestHz = f;
+  }
+  const double strides = static_cast<double>(n) / rateHz * bestHz;
+  if (bestShare < 0.5 || strides < kMinImageCycles || strides > kMaxShortClipStrides) return std::nullopt;
+  return bestHz;
 }
 
 }  // namespace

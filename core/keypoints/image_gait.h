@@ -28,6 +28,10 @@ inline constexpr double kMinImageAnkleLeadOfHeight = 0.08;
 // from behind: 0.07–0.08 of their height; a person standing: 0.00).
 inline constexpr double kMinImageAnkleLeadInPlaceOfHeight = 0.05;
 
+// The shortest clip read as walking, in gait cycles at the stride frequency found: a person
+// sees a walker in a stride and a bit, and one step's strikes misread the stride by a tenth.
+inline constexpr double kMinImageCycles = 0.8;
+
 struct ImageGait {
   Eigen::Vector2d direction = Eigen::Vector2d::Zero();  // progression in the image, unit
   double travelPx = 0.0;                                // pelvis, first to last tenth
@@ -45,8 +49,12 @@ struct ImageGait {
 
 // Throws Error(BadData) naming the file with "not walking: …" when an ankle does not swing
 // about the pelvis (whether the pelvis crosses the image or not), or the strikes give no
-// stride frequency in kMinStrideHz-kMaxStrideHz, and "shorter than one gait cycle" below one
-// cycle.
+// stride frequency in kMinStrideHz-kMaxStrideHz, and "shorter than a gait cycle" below
+// kMinImageCycles. The strikes read the frequency from each foot's strikes; in a clip shorter
+// than 2.5 strides of a walker who travels (a person balancing on the spot moves a foot once
+// or twice) also from
+// the step between one strike a side, or from the ankles' leads' opposed swing (a sinusoid
+// over strides of 0.5-1.6 Hz explaining at least half of it).
 // `heldStrideHz`: the stride frequency known otherwise (the trunk's bob, below), which then
 // stands for the strikes' (a tracker's lost ankles may strike irregularly or not at all).
 ImageGait imageGaitCycles(const KeypointTrial& trial,

@@ -167,6 +167,22 @@ TEST(ImageGait, TrunkBobIsNotATrackersHipsDraggedOnceAStride) {
   EXPECT_NEAR(trunkBobStrideHz(t).value_or(0.0), clip.strideHz, 0.02 * clip.strideHz);
 }
 
+// A clip of a stride and a bit (issue 55) has one strike a foot, or none on one: the stride
+// comes from the step between them or from the ankles' opposed swing, within 10 % (a step is
+// 15-17 frames: one frame is 6 %), where it used to be "not walking: no regular foot strikes".
+TEST(ImageGait, AStrideAndABitIsWalking) {
+  for (const double alpha : {90.0, 45.0}) {
+    for (const double strides : {1.2, 1.5}) {
+      SCOPED_TRACE(std::to_string(alpha) + " deg, " + std::to_string(strides) + " strides");
+      const double strideHz = defaultRealModel().omegasRadS.mean() / (2 * M_PI);
+      const Clip clip = meanWalkerClip("gait_short", alpha, 1300, strides / strideHz);
+      const ImageGait g = imageGaitCycles(readKeypointTrial(clip.folder, at30Fps()));
+      EXPECT_NEAR(g.strideHz, clip.strideHz, 0.1 * clip.strideHz);
+      EXPECT_GE(g.cycles, kMinImageCycles);
+    }
+  }
+}
+
 // A stride frequency known otherwise (the trunk's bob of a tracked clip) stands for feet that
 // do not strike: here each ankle slides once from behind the pelvis to before it, as a
 // tracker's lost ankle may. The walking checks still apply.

@@ -5,11 +5,15 @@
 
 #include <cmath>
 
+#include "core/camera/walk_camera.h"
 #include "core/common/errors.h"
+#include "core/eigenwalker/default_model.h"
+#include "core/eigenwalker/fourier.h"
 #include "core/keypoints/keypoint_frames.h"
 #include "core/keypoints/keypoint_layout.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/keypoints/keypoint_writers.h"
+#include "core/keypoints/openpose_writer.h"
 #include "tests/common/test_support.h"
 
 namespace ew {
@@ -80,6 +84,40 @@ TEST(KeypointWriters, OpenPoseJsonKeepsEverybodyAndTheirIds) {
   EXPECT_EQ(back.frames[0][1].trackId, 1);
   EXPECT_NEAR(back.frames[1][1].points(7, 0), k.frames[1][1].points(7, 0), 1e-9);
   EXPECT_TRUE(std::isnan(back.frames[1][1].points(5, 0)));  // written 0, 0, 0: missing
+}
+
+// The camera experiment's AlphaPose COCO-17 clips (openpose_writer.h) read back as COCO-17 to
+// the same joints: the limbs and the head (the ears' centre) where they were, the sternum and
+// the pelvis, which COCO-17 lacks, at the shoulders' and the hips' midpoints.
+TEST(KeypointWriters, AnAlphaPoseCoco17ClipReadsBackToItsJoints) {
+  const EigenwalkerModel& model = defaultRealModel();
+  const Eigen::VectorXd t = frameTimes(20, 25.0);
+  WalkCamera camera;
+  camera.alphaDeg = 60;
+  camera.pxPerMm = 0.3;
+  camera.cxPx = 640;
+  camera.cyPx = 500;
+  camera.speedMmS = 1300;
+  const Eigen::MatrixXd px = projectWalk(synthesizeFrames(model.mean, model.omegasRadS.mean(), 0.0, t), t, camera);
+  const auto folder = test::makeTempDir("alphapose_coco17");
+  writeAlphaPoseCoco17(folder / "alphapose-results.json", {{px, {}}});
+  KeypointOptions o;
+  o.fps = 25.0;
+  o.detectorOffsets = false;
+  const KeypointTrial trial = readKeypointTrial(folder / "alphapose-results.json", o);
+  EXPECT_EQ(trial.format, "AlphaPose JSON");
+  ASSERT_NE(trial.layout, nullptr);
+  EXPECT_EQ(trial.layout->name, "COCO-17");
+  ASSERT_EQ(trial.jointsPx.rows(), px.rows());
+  const auto at = [](const Eigen::MatrixXd& m, Eigen::Index f, Joint j) {
+    return Eigen::Vector2d(m(f, 2 * index(j)), m(f, 2 * index(j) + 1));
+  };
+  for (Eigen::Index f = 0; f < px.rows(); ++f) {
+    for (Joint j : {Joint::Head, Joint::RShoulder, Joint::LElbow, Joint::RWrist, Joint::LHip, Joint::RKnee, Joint::LAnkle})
+      EXPECT_LT((at(trial.jointsPx, f, j) - at(px, f, j)).norm(), 1e-6) << kJointNames[static_cast<std::size_t>(index(j))];
+    EXPECT_LT((at(trial.jointsPx, f, Joint::Sternum) - 0.5 * (at(px, f, Joint::RShoulder) + at(px, f, Joint::LShoulder))).norm(), 1e-6);
+    EXPECT_LT((at(trial.jointsPx, f, Joint::Pelvis) - 0.5 * (at(px, f, Joint::RHip) + at(px, f, Joint::LHip))).norm(), 1e-6);
+  }
 }
 
 TEST(KeypointWriters, WithoutAnImageSizeACsvIsRefused) {
