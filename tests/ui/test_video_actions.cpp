@@ -114,37 +114,37 @@ TEST(VideoActions, OnADetectedVideoTheMarksAreCorrectionsOfTheFit) {
   s.video->detected = d;
   actions::fitDetections(s);
   ASSERT_TRUE(actions::correctsDetections(s));
-  ASSERT_TRUE(s.doc.clip);
-  EXPECT_FALSE(s.doc.clip->corrections);
+  ASSERT_TRUE(s.clip.settings);
+  EXPECT_FALSE(s.clip.settings->corrections);
 
   const int knee = index(Joint::RKnee);
   s.video->frame = 12;
   actions::markJoint(s, Joint::RKnee, f.truthPx(12, 2 * knee) + 20.0, f.truthPx(12, 2 * knee + 1));
   EXPECT_TRUE(actions::letGoOfJoint(s)) << "the fit starts again";
-  ASSERT_TRUE(s.doc.clip->corrections);
-  const auto corrected = s.doc.clip->corrections;
+  ASSERT_TRUE(s.clip.settings->corrections);
+  const auto corrected = s.clip.settings->corrections;
   ASSERT_EQ(corrected->keyframes.size(), 1u);
   EXPECT_EQ(corrected->keyframes[0].frame, 12);
   EXPECT_EQ(corrected->keyframes[0].jointsPx.array().isFinite().count(), 2) << "the knee alone";
   EXPECT_EQ(corrected->keyframes[0].jointsPx(2 * knee), f.truthPx(12, 2 * knee) + 20.0);
   actions::fitDetections(s);
-  EXPECT_EQ(s.doc.clip->corrections, corrected) << "the same corrections: no new fit";
+  EXPECT_EQ(s.clip.settings->corrections, corrected) << "the same corrections: no new fit";
 
   actions::undoKeyframes(s);
-  EXPECT_FALSE(s.doc.clip->corrections);
+  EXPECT_FALSE(s.clip.settings->corrections);
   actions::redoKeyframes(s);
-  ASSERT_TRUE(s.doc.clip->corrections);
-  EXPECT_TRUE(sameKeyframes(*s.doc.clip->corrections, *corrected));
+  ASSERT_TRUE(s.clip.settings->corrections);
+  EXPECT_TRUE(sameKeyframes(*s.clip.settings->corrections, *corrected));
   actions::removeKeyframe(s, 12);
-  EXPECT_FALSE(s.doc.clip->corrections);
+  EXPECT_FALSE(s.clip.settings->corrections);
 
   actions::startMarking(s);
   actions::markJoint(s, Joint::Head, 10.0, 10.0);
   EXPECT_FALSE(actions::letGoOfJoint(s));
-  EXPECT_FALSE(s.doc.clip->corrections) << "while marking, the fit waits for Done";
+  EXPECT_FALSE(s.clip.settings->corrections) << "while marking, the fit waits for Done";
   actions::stopMarking(s);
-  ASSERT_TRUE(s.doc.clip->corrections);
-  EXPECT_EQ(s.doc.clip->corrections->keyframes.size(), 1u);
+  ASSERT_TRUE(s.clip.settings->corrections);
+  EXPECT_EQ(s.clip.settings->corrections->keyframes.size(), 1u);
 }
 
 // Marks far outside the picture, from a keyframe file or a pose estimator's keypoints, are

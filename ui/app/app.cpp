@@ -183,7 +183,7 @@ class App {
       presenter_->present(compositor_.changed(), h);
       if (!scripted_) std::this_thread::sleep_until(frameStart + std::chrono::microseconds(16667));
     }
-    if (scripted_ && state_.jobs.busy()) std::this_thread::sleep_until(frameStart + std::chrono::milliseconds(100));
+    if (scripted_ && state_.jobsBusy()) std::this_thread::sleep_until(frameStart + std::chrono::milliseconds(100));
   }
 
   int loop() {

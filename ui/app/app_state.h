@@ -17,6 +17,7 @@
 #include "ui/app/analysis.h"
 #include "ui/app/async_cache.h"
 #include "ui/app/background_job.h"
+#include "ui/app/clip.h"
 #include "ui/app/data_summary.h"
 #include "ui/app/derived.h"
 #include "ui/app/document.h"
@@ -95,9 +96,6 @@ struct Jobs {
   BackgroundJob<std::shared_ptr<const TrackedVideo>> track;  // joints tracked through a video
   BackgroundJob<std::shared_ptr<const DetectedVideo>> detect;  // people found in a video
   // Slow derived work, kept by the inputs it was computed from (ui/app/async_cache.h).
-  // A keypoint clip's camera fit, by its settings; latest() is the last fit that succeeded
-  // (AppState::clip()), error() why the last one failed (the controls show it).
-  AsyncCache<ClipSettings, ClipResult> clip{1};
   AsyncCache<AnalysisKey, AnalysisResult> analysis{6};  // the analysis panel's curves
   AsyncCache<std::uint64_t, DataSummary> summary{1};    // the Data window's table, by generation
   // An open requested while a load was running: started when it finishes.
@@ -111,7 +109,7 @@ struct Jobs {
 
   bool busy() const {
     return load.running() || models.running() || analysis.running() || summary.running() ||
-           clip.running() || track.running() || detect.running() || pendingOpen.has_value();
+           track.running() || detect.running() || pendingOpen.has_value();
   }
 };
 
@@ -162,19 +160,22 @@ struct Panels {
 };
 
 struct AppState {
-  // Loading, model building or an export under way (scripts wait for it).
+  // A background job running or an open waiting for one: loading, models, a clip's fit, a
+  // track, a detection, the analysis, the data table.
+  bool jobsBusy() const { return clip.fits.running() || jobs.busy(); }
+  // That, an export, or video frames being read (scripts wait for it).
   bool busy() const {
-    return jobs.busy() || exports.busy() || (video && video->frames && video->frames->pending());
+    return jobsBusy() || exports.busy() || (video && video->frames && video->frames->pending());
   }
 
   Document doc;
   ViewState view;
   ParameterHistory history;  // undo / redo of the parameters (ui/app/undo.h)
   Derived derived;
+  // One struct per feature that has grown one (docs/ARCHITECTURE.md, "The viewer").
+  ClipFeature clip;  // the keypoint clip: its settings, its fits, its zoom (clip.h)
   Jobs jobs;
   Exports exports;
-  // The last clip fit that succeeded (kept by jobs.clip).
-  const std::shared_ptr<const ClipResult>& clip() const { return jobs.clip.latest(); }
   std::optional<VideoSession> video;               // the video open (Mode::Clip shows it)
   Log log;
   Fonts fonts;

@@ -302,12 +302,12 @@ void open(AppState& s, std::vector<std::filesystem::path> paths) {
   for (const auto& r : request.refused) s.log.warning("skipped: " + r);
   if (hadPaths && request.paths.empty()) {
     // Only a clip or a video: the synthetic walkers load too when nothing is, for the other modes.
-    if (!s.doc.population && !s.jobs.busy()) requestOpen(s, OpenRequest{});
+    if (!s.doc.population && !s.jobsBusy()) requestOpen(s, OpenRequest{});
     return;
   }
   if (onlyModels) {
     // A model alone, with nothing to inspect yet: the synthetic walkers, against it.
-    if (s.doc.walkerCount() > 0 || s.jobs.busy() || s.doc.modelSource != ModelSource::File) return;
+    if (s.doc.walkerCount() > 0 || s.jobsBusy() || s.doc.modelSource != ModelSource::File) return;
     request.keepModel = true;
   }
   requestOpen(s, std::move(request));
@@ -357,22 +357,9 @@ void pollJobs(AppState& s) {
       s.jobs.notice->canRetry = true;
     }
   }
-  const auto shownFit = s.clip();
-  if (auto done = s.jobs.clip.poll()) {
-    if (done->ok()) {
-      takeClip(s, shownFit, done->value);
-    } else {
-      clipFailed(s, done->key, done->error);
-    }
-  }
-  pollVideo(s);
-  try {
-    startClipFit(s);
-  } catch (const std::exception& e) {
-    const ClipSettings settings = *s.doc.clip;  // a copy: clipFailed may change doc.clip
-    s.jobs.clip.fail(settings, e.what());
-    clipFailed(s, settings, e.what());
-  }
+  pollClipFit(s);
+  pollVideo(s);  // may give the clip a new track to fit
+  refitClip(s);
   if (auto done = s.jobs.summary.poll(); done && !done->ok())
     s.log.error("Data summary failed: " + done->error);
   if (auto done = s.jobs.analysis.poll()) {

@@ -34,7 +34,7 @@ void setMode(AppState& s, const A& a, W&) {
   } else if (m == "explore") {
     actions::setMode(s, Mode::Explore);
   } else if (m == "clip") {
-    if (!s.doc.clip) throw std::invalid_argument("no keypoint clip is open");
+    if (!s.clip.settings) throw std::invalid_argument("no keypoint clip is open");
     actions::setMode(s, Mode::Clip);
   } else {
     throw std::invalid_argument("mode must be \"reconstruct\", \"explore\" or \"clip\"");

@@ -47,7 +47,7 @@ void nextEngine(AppState& s) {
 
 // The clip or video view, when one is open (as the Controls panel's third mode button).
 void clipMode(AppState& s) {
-  if (s.doc.clip || s.video) actions::setMode(s, Mode::Clip);
+  if (s.clip.settings || s.video) actions::setMode(s, Mode::Clip);
 }
 
 

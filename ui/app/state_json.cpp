@@ -134,8 +134,8 @@ nlohmann::json frameJointsJson(const KeypointTrial& t, int frame) {
 
 // The keypoint clip: what the user chose, and the last fit (camera, walk, residuals).
 nlohmann::json clipJson(const AppState& s) {
-  if (!s.doc.clip) return nullptr;
-  const ClipSettings& c = *s.doc.clip;
+  if (!s.clip.settings) return nullptr;
+  const ClipSettings& c = *s.clip.settings;
   nlohmann::json j = {{"path", c.path.string()},
                       {"layout_chosen", c.layout},
                       {"fps_chosen", c.fps},
@@ -147,11 +147,11 @@ nlohmann::json clipJson(const AppState& s) {
                       {"azimuth_deg_fixed", optionalJson(c.alphaDeg)},
                       {"elevation_deg_fixed", optionalJson(c.elevationDeg)},
                       {"image_size_given", imageSizeJson(c.imageSize)},
-                      {"fit_error", s.jobs.clip.error()},
+                      {"fit_error", s.clip.fits.error()},
                       {"source", c.tracked ? "track" : c.detected ? "detections" : "file"},
                       {"corrections", c.corrections ? c.corrections->keyframes.size() : 0}};
-  if (!s.clip()) return j;
-  const ClipResult& r = *s.clip();
+  if (!s.clip.fit()) return j;
+  const ClipResult& r = *s.clip.fit();
   const CameraFit& f = r.rec.fit;
   const bool pinhole = f.camera.model == CameraModel::Pinhole;
   std::vector<double> residuals(r.rec.residualRmsPx.begin(), r.rec.residualRmsPx.end());
@@ -412,7 +412,7 @@ nlohmann::json stateJson(const AppState& s) {
         {"distance_mm", v.camera.distanceMm}}},
       {"point_lights", v.overlays.pointLights},
       {"presentation", v.presentation},
-      {"clip_zoom", v.clipZoom}};
+      {"clip_zoom", s.clip.zoom}};
   j["layout"] = layoutJson(s.lastFrame);
   // Beside the last frame's layout: a record of the frames drawn, not of the session (tests that
   // compare two sessions' states leave "layout" out).

@@ -21,7 +21,9 @@ Parameters captureParameters(const AppState& s) {
 
 ParameterContext captureParameterContext(const AppState& s) {
   const Document& d = s.doc;
-  const std::string clip = s.video ? s.video->path.string() : d.clip ? d.clip->path.string() : std::string();
+  const std::string clip = s.video            ? s.video->path.string()
+                           : s.clip.settings ? s.clip.settings->path.string()
+                                             : std::string();
   return {d.generation, d.modelSource, d.modelFile, d.inspected.get(), clip};
 }
 
@@ -30,7 +32,7 @@ void restoreParameters(AppState& s, const Parameters& p) {
   const int walker = std::clamp(p.walker, 0, std::max(0, d.walkerCount() - 1));
   if (walker != d.walker) s.panels.subjects.scrollToSelection = true;  // bring it into the list's view
   d.walker = walker;
-  d.mode = p.mode == Mode::Clip && !d.clip && !s.video ? Mode::Reconstruct : p.mode;
+  d.mode = p.mode == Mode::Clip && !s.clip.settings && !s.video ? Mode::Reconstruct : p.mode;
   const double sigma2 = d.recon.sigma2Mm2;
   d.recon = p.recon;
   d.sigma2Chosen = p.sigma2Chosen;

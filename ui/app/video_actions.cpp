@@ -86,7 +86,7 @@ void openVideo(AppState& s, const std::filesystem::path& path) {
     throw std::invalid_argument(e.what());
   }
   closeVideo(s);
-  if (s.doc.clip) closeClip(s);
+  if (s.clip.settings) closeClip(s);
   VideoSession v;
   v.path = path;
   v.frames = std::move(frames);
@@ -219,11 +219,11 @@ void setVideoZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
 }
 
 void setClipZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
-  if (!s.clip()) throw std::invalid_argument("no keypoint clip is shown");
+  if (!s.clip.fit()) throw std::invalid_argument("no keypoint clip is shown");
   if (!std::isfinite(zoom) || !centrePx.allFinite()) throw std::invalid_argument("clip zoom: not a number");
-  s.view.clipZoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
-  s.view.clipZoomCentreX = centrePx.x();
-  s.view.clipZoomCentreY = centrePx.y();
+  s.clip.zoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
+  s.clip.zoomCentreX = centrePx.x();
+  s.clip.zoomCentreY = centrePx.y();
 }
 
 void setVideoFrame(AppState& s, int frame) {
@@ -471,7 +471,7 @@ void fitDetections(AppState& s) {
   VideoSession& v = session(s);
   if (!v.detected || v.detected->people == 0) throw std::invalid_argument("no people detected in this video yet");
   // Fitted as a clip, keeping the camera values the user held for this video.
-  ClipSettings c = s.doc.clip && s.doc.clip->path == v.path ? *s.doc.clip : ClipSettings{};
+  ClipSettings c = s.clip.settings && s.clip.settings->path == v.path ? *s.clip.settings : ClipSettings{};
   c.path = v.path;
   c.tracked.reset();
   c.detected = v.detected->frames;
@@ -481,9 +481,9 @@ void fitDetections(AppState& s) {
   else if (!c.corrections || !sameKeyframes(*c.corrections, v.keyframes))
     c.corrections = std::make_shared<const Keyframes>(v.keyframes);
   c.video = keypointVideoOf(*v.detected);
-  s.doc.clip = c;
+  s.clip.settings = c;
   s.doc.mode = Mode::Clip;
-  s.jobs.clip.retry();
+  s.clip.fits.retry();
 }
 
 std::vector<KeypointDetection> detectionsOn(const AppState& s, int frame) {
@@ -499,18 +499,18 @@ void closeVideo(AppState& s) {
   if (!s.video) return;
   s.jobs.track.cancel();
   s.jobs.detect.cancel();
-  if (s.doc.clip && (s.doc.clip->tracked || s.doc.clip->detected)) closeClip(s);
+  if (s.clip.settings && (s.clip.settings->tracked || s.clip.settings->detected)) closeClip(s);
   s.video.reset();
 }
 
 bool showsTrackFit(const AppState& s) {
-  return s.video && s.clip() && s.video->tracked && s.clip()->settings.tracked &&
-         s.clip()->settings.tracked == s.video->tracked->trial;
+  return s.video && s.clip.fit() && s.video->tracked && s.clip.fit()->settings.tracked &&
+         s.clip.fit()->settings.tracked == s.video->tracked->trial;
 }
 
 bool showsDetectionFit(const AppState& s) {
-  return s.video && s.clip() && s.video->detected && s.clip()->settings.detected &&
-         s.clip()->settings.detected == s.video->detected->frames;
+  return s.video && s.clip.fit() && s.video->detected && s.clip.fit()->settings.detected &&
+         s.clip.fit()->settings.detected == s.video->detected->frames;
 }
 
 bool correctsDetections(const AppState& s) {
@@ -522,7 +522,7 @@ bool showsVideoFit(const AppState& s) { return showsTrackFit(s) || showsDetectio
 std::optional<std::pair<int, int>> videoFitFrames(const AppState& s) {
   if (showsTrackFit(s)) return std::pair{s.video->tracked->track.firstFrame, s.video->tracked->lastFrame()};
   // The detector's clip numbers its frames as the video does (keypointFramesOf).
-  if (showsDetectionFit(s)) return std::pair{0, std::max(s.clip()->rec.trial.frameCount - 1, 0)};
+  if (showsDetectionFit(s)) return std::pair{0, std::max(s.clip.fit()->rec.trial.frameCount - 1, 0)};
   return std::nullopt;
 }
 
@@ -530,7 +530,7 @@ int shownVideoFrame(const AppState& s) {
   if (!s.video) return 0;
   const VideoSession& v = *s.video;
   if (!v.marking)
-    if (const auto fit = videoFitFrames(s)) return fit->first + clipFrameAt(*s.clip(), s.view.playback.cycles);
+    if (const auto fit = videoFitFrames(s)) return fit->first + clipFrameAt(*s.clip.fit(), s.view.playback.cycles);
   return v.frame;
 }
 
@@ -541,8 +541,8 @@ bool stepsVideoFrames(const AppState& s) {
 namespace {
 
 bool stepsClipFrames(const AppState& s) {
-  return s.doc.mode == Mode::Clip && s.clip() && s.clip()->rec.trial.frameCount > 0 &&
-         s.clip()->rec.fit.strideHz > 0.0;
+  return s.doc.mode == Mode::Clip && s.clip.fit() && s.clip.fit()->rec.trial.frameCount > 0 &&
+         s.clip.fit()->rec.fit.strideHz > 0.0;
 }
 
 }  // namespace
@@ -551,8 +551,8 @@ void stepFrame(AppState& s, int delta) {
   if (stepsVideoFrames(s)) {
     setVideoFrame(s, shownVideoFrame(s) + delta);
   } else if (stepsClipFrames(s)) {
-    const int n = s.clip()->rec.trial.frameCount;
-    const int shown = clipFrameAt(*s.clip(), s.view.playback.cycles);
+    const int n = s.clip.fit()->rec.trial.frameCount;
+    const int shown = clipFrameAt(*s.clip.fit(), s.view.playback.cycles);
     setClipFrame(s, ((shown + delta) % n + n) % n + 1);
   } else {
     s.view.playback.step(delta, playbackStrideHz(s));
@@ -579,7 +579,7 @@ void advancePlayback(AppState& s, double seconds) {
 
 double frameStepS(const AppState& s) {
   if (stepsVideoFrames(s) && s.video->fps() > 0.0) return 1.0 / s.video->fps();
-  if (stepsClipFrames(s) && s.clip()->rec.trial.rateHz > 0.0) return 1.0 / s.clip()->rec.trial.rateHz;
+  if (stepsClipFrames(s) && s.clip.fit()->rec.trial.rateHz > 0.0) return 1.0 / s.clip.fit()->rec.trial.rateHz;
   return 1.0 / 60.0;
 }
 

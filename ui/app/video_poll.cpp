@@ -114,12 +114,12 @@ void pollVideo(AppState& s) {
   s.log.info(buf);
   for (const auto& w : v.tracked->trial->warnings) s.log.warning(w);
   // Fitted as a clip, keeping the camera values the user held for this video.
-  ClipSettings c = s.doc.clip && s.doc.clip->path == v.path ? *s.doc.clip : ClipSettings{};
+  ClipSettings c = s.clip.settings && s.clip.settings->path == v.path ? *s.clip.settings : ClipSettings{};
   c.path = v.path;
   c.tracked = v.tracked->trial;
-  s.doc.clip = c;
+  s.clip.settings = c;
   s.doc.mode = Mode::Clip;
-  s.jobs.clip.retry();
+  s.clip.fits.retry();
   // A joint let go while this track ran, which finished before it saw the cancel.
   if (v.trackAgainWhenStopped) trackAgain(s);
 }

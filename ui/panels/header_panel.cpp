@@ -55,9 +55,9 @@ float drawProgress(AppState& s, const FrameContext& ctx, float right) {
     if (ImGui::SmallButton("Cancel")) actions::cancelTracking(s);
     return x;
   }
-  if (!s.jobs.busy()) return right;
+  if (!s.jobsBusy()) return right;
   const bool loading = s.jobs.load.running();
-  const bool clipping = !loading && !s.jobs.models.running() && s.jobs.clip.running();
+  const bool clipping = !loading && !s.jobs.models.running() && s.clip.fits.running();
   const bool analysing = !loading && !clipping && !s.jobs.models.running() && s.jobs.analysis.running();
   // The camera fit reports no steps: the bar runs empty with its title.
   const float fraction = loading     ? s.jobs.load.fraction()
@@ -65,7 +65,7 @@ float drawProgress(AppState& s, const FrameContext& ctx, float right) {
                          : analysing ? s.jobs.analysis.fraction()
                                      : s.jobs.models.fraction();
   const std::string what = loading     ? s.jobs.load.title() + ": " + s.jobs.load.what()
-                           : clipping  ? s.jobs.clip.title() + "…"
+                           : clipping  ? s.clip.fits.title() + "…"
                            : analysing ? s.jobs.analysis.title()
                                        : s.jobs.models.title() + ": " + s.jobs.models.what();
   ImGui::SameLine(right - w);
@@ -205,7 +205,7 @@ std::vector<std::string> clipLines(const ClipResult& c) {
 std::vector<std::string> modelLines(const AppState& s) {
   std::string full, medium, brief;
   if (s.doc.mode == Mode::Clip) {
-    if (s.clip()) return clipLines(*s.clip());
+    if (s.clip.fit()) return clipLines(*s.clip.fit());
     return {"", "", "", ""};
   }
   if (s.doc.mode == Mode::Reconstruct) {

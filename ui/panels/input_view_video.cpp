@@ -60,7 +60,7 @@ int nearestJoint(const AppState& s, int frame, glm::vec2 px, float reach) {
   Eigen::RowVectorXd points;
   const auto fit = actions::correctsDetections(s) ? actions::videoFitFrames(s) : std::nullopt;
   if (fit && frame >= fit->first && frame <= fit->second) {
-    points = s.clip()->rec.trial.jointsPx.row(frame - fit->first);
+    points = s.clip.fit()->rec.trial.jointsPx.row(frame - fit->first);
     for (int j = 0; k && j < kJointCount; ++j)
       if (std::isfinite(k->jointsPx(2 * j))) points.segment<2>(2 * j) = k->jointsPx.segment<2>(2 * j);
   } else if (k) {
@@ -137,8 +137,8 @@ std::optional<std::pair<glm::vec2, glm::vec2>> walkerExtentPx(const AppState& s,
   Eigen::RowVectorXd points;
   if (const Keyframe* k = v.keyframeAt(frame)) {
     points = k->jointsPx;
-  } else if (actions::showsDetectionFit(s) && frame >= 0 && frame < s.clip()->rec.trial.jointsPx.rows()) {
-    points = s.clip()->rec.trial.jointsPx.row(frame);  // the detector's clip counts the video's frames
+  } else if (actions::showsDetectionFit(s) && frame >= 0 && frame < s.clip.fit()->rec.trial.jointsPx.rows()) {
+    points = s.clip.fit()->rec.trial.jointsPx.row(frame);  // the detector's clip counts the video's frames
   } else if (v.tracked && frame >= v.tracked->track.firstFrame && frame <= v.tracked->lastFrame()) {
     points = v.tracked->track.jointsPx.row(frame - v.tracked->track.firstFrame);
   }

@@ -38,7 +38,7 @@ std::size_t filePrefixEnd(const std::string& line) {
 std::vector<const char*> buttonsFor(const AppState& s, const NoticeView& n) {
   std::vector<const char*> buttons{"Details…"};
   if (n.canRetry) buttons.push_back("Retry");
-  if (n.kind == NoticeView::Kind::Open && n.error && s.doc.walkerCount() == 0 && !s.jobs.busy())
+  if (n.kind == NoticeView::Kind::Open && n.error && s.doc.walkerCount() == 0 && !s.jobsBusy())
     buttons.push_back("Open the synthetic default");
   buttons.push_back("Dismiss");
   return buttons;

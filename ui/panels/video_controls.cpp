@@ -82,7 +82,7 @@ void detecting(AppState& s, const VideoSession& v) {
   }
   if (v.detected) {
     textDisabledWrapped(detectionSummary(*v.detected).c_str());
-    if (v.detected->people > 0 && !actions::showsDetectionFit(s) && !s.jobs.clip.running() &&
+    if (v.detected->people > 0 && !actions::showsDetectionFit(s) && !s.clip.fits.running() &&
         buttonRow({{"Fit the detections", true}}) == 0)
       apply(s, [&] { actions::fitDetections(s); });
   }

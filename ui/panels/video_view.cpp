@@ -146,8 +146,8 @@ bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,
   const bool fitted = fit.has_value();
   // A detection under way, or done and not fitted: the people found on the frame.
   const bool detections = v.detecting || (v.detected && !v.tracked && !fitted);
-  if (fitted && clipFrame >= 0 && clipFrame < s.clip()->rec.trial.frameCount) {
-    buildClipInputScene(s, scene, lineScale, clipFrame, clipImageFrame(*s.clip(), 1.0f));
+  if (fitted && clipFrame >= 0 && clipFrame < s.clip.fit()->rec.trial.frameCount) {
+    buildClipInputScene(s, scene, lineScale, clipFrame, clipImageFrame(*s.clip.fit(), 1.0f));
   } else if (detections) {
     addDetectedPeople(scene, actions::detectionsOn(s, frame), radius, lineScale);
   } else if (v.tracked) {

@@ -89,9 +89,9 @@ ViewCaption walkerInputCaption(const AppState& s) {
 }
 
 ViewCaption clipInputCaption(const AppState& s, int shown, bool onScreen) {
-  const ClipReconstruction& rec = s.clip()->rec;
+  const ClipReconstruction& rec = s.clip.fit()->rec;
   char zoom[48] = "";
-  if (onScreen && s.view.clipZoom > 1.0) std::snprintf(zoom, sizeof zoom, " · zoom %.1f×", s.view.clipZoom);
+  if (onScreen && s.clip.zoom > 1.0) std::snprintf(zoom, sizeof zoom, " · zoom %.1f×", s.clip.zoom);
   char sub[260];
   std::snprintf(sub, sizeof sub, "%s · %s · frame %d / %d (%.2f s) · pixels, y down%s",
                 rec.trial.format.c_str(), rec.trial.layout->name.c_str(), shown + 1, rec.trial.frameCount,
@@ -198,14 +198,14 @@ ViewCaption walkerReconstructionCaption(const AppState& s) {
 }
 
 ViewCaption clipReconstructionCaption(const AppState& s) {
-  const CameraFit& fit = s.clip()->rec.fit;
+  const CameraFit& fit = s.clip.fit()->rec.fit;
   const WalkCamera& c = fit.camera;
   char sub[240];
   if (c.model == CameraModel::Pinhole) {
-    const ClipWorld w = clipWorld(*s.clip(), 0);
+    const ClipWorld w = clipWorld(*s.clip.fit(), 0);
     // The camera's distance to the walker's path (the line x = 0 of the walk).
     // A weak azimuth says so where it is read (the log has the whole sentence).
-    const bool weak = inPlaceAzimuthIsWeak(fit, s.clip()->settings.alphaDeg.has_value());
+    const bool weak = inPlaceAzimuthIsWeak(fit, s.clip.fit()->settings.alphaDeg.has_value());
     std::snprintf(sub, sizeof sub, "camera %s, %.1f m from the %s, azimuth %.1f°%s, %s",
                   heightOverAnklesText(w.eye.z).c_str(), std::abs(w.eye.x) / 1000.0,
                   fit.inPlace ? "treadmill's line (walking in place)" : "walking line", c.alphaDeg,
@@ -228,11 +228,11 @@ ViewCaption inputCaption(const AppState& s, int clipFrame) {
     const auto fit = actions::videoFitFrames(s);
     return videoInputCaption(s, fit ? fit->first + clipFrame : v.frame, false, false);
   }
-  return s.doc.mode == Mode::Clip && s.clip() ? clipInputCaption(s, clipFrame) : walkerInputCaption(s);
+  return s.doc.mode == Mode::Clip && s.clip.fit() ? clipInputCaption(s, clipFrame) : walkerInputCaption(s);
 }
 
 ViewCaption reconstructionCaption(const AppState& s) {
-  return s.doc.mode == Mode::Clip && s.clip() ? clipReconstructionCaption(s) : walkerReconstructionCaption(s);
+  return s.doc.mode == Mode::Clip && s.clip.fit() ? clipReconstructionCaption(s) : walkerReconstructionCaption(s);
 }
 
 }  // namespace ew::ui
