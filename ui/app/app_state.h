@@ -22,6 +22,7 @@
 #include "ui/app/derived.h"
 #include "ui/app/document.h"
 #include "ui/app/export.h"
+#include "ui/app/loading.h"
 #include "ui/app/log.h"
 #include "ui/app/undo.h"
 #include "ui/app/video.h"
@@ -53,17 +54,6 @@ namespace ew::ui {
 class Backdrop;
 class Renderer;
 
-// An open: the paths to load (empty = the synthetic default) and the dropped items that were
-// left out before loading (not motion capture, missing), each with its reason.
-struct OpenRequest {
-  std::vector<std::filesystem::path> paths;
-  std::vector<std::string> refused;
-  std::vector<std::filesystem::path> named;  // every item the user named (empty: `paths`)
-  // The population loaded is shown with the model held (a .ewm opened with nothing else
-  // loaded: the synthetic walkers are inspected against it) instead of its own.
-  bool keepModel = false;
-};
-
 // What the banner over the views says after an open went wrong (ui/panels/notice_panel.h):
 // an open that failed (the previous data stays), or one that succeeded without some of the
 // items the user named.
@@ -79,37 +69,19 @@ struct OpenNotice {
   std::string shortTitle;    // for a row too narrow for the title ("Doubtful camera fit")
 };
 
-// The data shown before a load replaced it, kept until the new data's models are built: a
-// model build that fails puts it back.
-struct LoadedData {
-  std::shared_ptr<const Population> population;
-  std::shared_ptr<const ModelSet> models;
-  std::vector<std::filesystem::path> sourcePaths;
-  int walker = 0;
-  std::vector<double> editedSd, exploreSd;
-  ModelSource modelSource = ModelSource::Population;
-};
-
 struct Jobs {
-  BackgroundJob<std::shared_ptr<const Population>> load;
-  BackgroundJob<std::shared_ptr<const ModelSet>> models;
   BackgroundJob<std::shared_ptr<const TrackedVideo>> track;  // joints tracked through a video
   BackgroundJob<std::shared_ptr<const DetectedVideo>> detect;  // people found in a video
   // Slow derived work, kept by the inputs it was computed from (ui/app/async_cache.h).
   AsyncCache<AnalysisKey, AnalysisResult> analysis{6};  // the analysis panel's curves
   AsyncCache<std::uint64_t, DataSummary> summary{1};    // the Data window's table, by generation
-  // An open requested while a load was running: started when it finishes.
-  std::optional<OpenRequest> pendingOpen;
-  OpenRequest loading;                   // the open under way (or the last one)
-  std::optional<LoadedData> beforeLoad;  // until the models of the new data are built
   std::string lastError;  // the last failed open or model build ("" once dismissed or opened)
   std::optional<OpenNotice> notice;  // the banner over the views, until dismissed
   std::uint64_t noticeSerial = 0;
   int failures = 0;        // loads or model builds that failed (scripts check it)
 
   bool busy() const {
-    return load.running() || models.running() || analysis.running() || summary.running() ||
-           track.running() || detect.running() || pendingOpen.has_value();
+    return analysis.running() || summary.running() || track.running() || detect.running();
   }
 };
 
@@ -162,7 +134,7 @@ struct Panels {
 struct AppState {
   // A background job running or an open waiting for one: loading, models, a clip's fit, a
   // track, a detection, the analysis, the data table.
-  bool jobsBusy() const { return clip.fits.running() || jobs.busy(); }
+  bool jobsBusy() const { return loading.busy() || clip.fits.running() || jobs.busy(); }
   // That, an export, or video frames being read (scripts wait for it).
   bool busy() const {
     return jobsBusy() || exports.busy() || (video && video->frames && video->frames->pending());
@@ -173,7 +145,8 @@ struct AppState {
   ParameterHistory history;  // undo / redo of the parameters (ui/app/undo.h)
   Derived derived;
   // One struct per feature that has grown one (docs/ARCHITECTURE.md, "The viewer").
-  ClipFeature clip;  // the keypoint clip: its settings, its fits, its zoom (clip.h)
+  LoadingFeature loading;  // opening data: the load, the models, the open waiting (loading.h)
+  ClipFeature clip;        // the keypoint clip: its settings, its fits, its zoom (clip.h)
   Jobs jobs;
   Exports exports;
   std::optional<VideoSession> video;               // the video open (Mode::Clip shows it)

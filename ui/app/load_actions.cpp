@@ -43,11 +43,11 @@ namespace {
 void startLoad(AppState& s, OpenRequest request) {
   const auto paths = request.paths;
   auto completion = paths.empty() ? nullptr : completionModel(s);
-  s.jobs.loading = std::move(request);
+  s.loading.request = std::move(request);
   const std::string title =
       paths.empty() ? "Synthesising the default population" : "Loading " + describePaths(paths);
   s.log.info(title);
-  s.jobs.load.start(title,
+  s.loading.population.start(title,
                     [paths, overrides = s.doc.fileOverrides,
                      completion](JobProgress& progress) -> std::shared_ptr<const Population> {
                       auto report = [&progress](int done, int total, const std::string& what) {
@@ -64,8 +64,8 @@ void startLoad(AppState& s, OpenRequest request) {
 
 // Starts the open now, or once the running load / model build is done.
 void requestOpen(AppState& s, OpenRequest request) {
-  if (s.jobs.load.running() || s.jobs.models.running()) {
-    s.jobs.pendingOpen = std::move(request);
+  if (s.loading.population.running() || s.loading.models.running()) {
+    s.loading.pending = std::move(request);
     return;
   }
   startLoad(s, std::move(request));
@@ -73,7 +73,7 @@ void requestOpen(AppState& s, OpenRequest request) {
 
 void startModels(AppState& s) {
   auto population = s.doc.population;
-  s.jobs.models.start("Building leave-one-out models",
+  s.loading.models.start("Building leave-one-out models",
                       [population](JobProgress& progress) -> std::shared_ptr<const ModelSet> {
                         return std::make_shared<const ModelSet>(buildModelSet(
                             *population, [&progress](int done, int total, const std::string& what) {
@@ -170,7 +170,7 @@ std::vector<std::filesystem::path> openModelFiles(AppState& s,
 // population: always while a saved or default model is held; with the population's model,
 // when they are too few for a leave-one-out population of their own.
 bool inspectLoaded(const AppState& s, const Population& loaded) {
-  if (s.jobs.loading.paths.empty()) return false;  // the synthetic default population
+  if (s.loading.request.paths.empty()) return false;  // the synthetic default population
   // A model is not built from its own estimates: completed trials are always inspected.
   return s.doc.modelSource != ModelSource::Population || loaded.walkerCount() < kMinPopulation ||
          hasModelEstimated(loaded);
@@ -207,26 +207,26 @@ void addInspected(AppState& s, const Population& loaded) {
 // A load finished: the new population (its models built next), or walkers to inspect.
 void takeLoaded(AppState& s, const std::shared_ptr<const Population>& pop) {
   dismissNotice(s);
-  for (const auto& w : s.jobs.loading.refused) s.log.warning("skipped: " + w);
+  for (const auto& w : s.loading.request.refused) s.log.warning("skipped: " + w);
   for (const auto& w : pop->warnings) s.log.warning(w);
   if (inspectLoaded(s, *pop)) {
     addInspected(s, *pop);
-    noticeSkipped(s, s.jobs.loading, *pop);
+    noticeSkipped(s, s.loading.request, *pop);
     return;
   }
   // What was shown stays until the new models are built (a failed build puts it back).
-  if (s.doc.population) s.jobs.beforeLoad = loadedData(s.doc);
+  if (s.doc.population) s.loading.before = loadedData(s.doc);
   s.doc.population = pop;
   s.doc.models.reset();
-  if (!s.jobs.loading.keepModel) s.doc.modelSource = ModelSource::Population;
-  s.doc.sourcePaths = s.jobs.loading.paths;
+  if (!s.loading.request.keepModel) s.doc.modelSource = ModelSource::Population;
+  s.doc.sourcePaths = s.loading.request.paths;
   ++s.doc.generation;
   s.doc.walker = 0;
   s.doc.editedSd.clear();
   s.doc.exploreSd.clear();
   s.doc.exploreOmegaOffsetRadS = 0.0;
   s.log.info("Loaded " + pop->label + ": " + std::to_string(pop->walkerCount()) + " walkers");
-  noticeSkipped(s, s.jobs.loading, *pop);
+  noticeSkipped(s, s.loading.request, *pop);
   startModels(s);
 }
 
@@ -314,7 +314,7 @@ void open(AppState& s, std::vector<std::filesystem::path> paths) {
 }
 
 void pollJobs(AppState& s) {
-  if (auto outcome = s.jobs.load.poll()) {
+  if (auto outcome = s.loading.population.poll()) {
     bool taken = false;
     if (outcome->value) {
       try {
@@ -327,17 +327,17 @@ void pollJobs(AppState& s) {
     if (!taken) {
       ++s.jobs.failures;
       std::string why = outcome->error;
-      for (const auto& r : s.jobs.loading.refused) why += "\nalso skipped: " + r;
-      reportOpenError(s, s.jobs.loading.paths, why);
+      for (const auto& r : s.loading.request.refused) why += "\nalso skipped: " + r;
+      reportOpenError(s, s.loading.request.paths, why);
       const auto& named =
-          s.jobs.loading.named.empty() ? s.jobs.loading.paths : s.jobs.loading.named;
+          s.loading.request.named.empty() ? s.loading.request.paths : s.loading.request.named;
       s.jobs.notice->detail = shortenPaths(why, named);
     }
   }
-  if (auto outcome = s.jobs.models.poll()) {
+  if (auto outcome = s.loading.models.poll()) {
     if (outcome->value) {
       s.doc.models = *outcome->value;
-      s.jobs.beforeLoad.reset();
+      s.loading.before.reset();
       for (auto it = s.doc.sourcePaths.rbegin(); it != s.doc.sourcePaths.rend(); ++it) {
         std::erase(s.recentPaths, *it);
         s.recentPaths.insert(s.recentPaths.begin(), *it);
@@ -350,10 +350,10 @@ void pollJobs(AppState& s) {
       ++s.jobs.failures;
       // The new data cannot be shown without its models: back to what was shown before.
       const std::string what = s.doc.population ? s.doc.population->label : std::string("the data");
-      restoreData(s, s.jobs.beforeLoad ? std::move(*s.jobs.beforeLoad) : LoadedData{});
-      s.jobs.beforeLoad.reset();
+      restoreData(s, s.loading.before ? std::move(*s.loading.before) : LoadedData{});
+      s.loading.before.reset();
       reportError(s, "Could not build the models for " + what, outcome->error);
-      s.jobs.notice->retryPaths = s.jobs.loading.paths;
+      s.jobs.notice->retryPaths = s.loading.request.paths;
       s.jobs.notice->canRetry = true;
     }
   }
@@ -372,9 +372,9 @@ void pollJobs(AppState& s) {
       s.log.error("Analysis failed: " + done->error);
     }
   }
-  if (s.jobs.pendingOpen && !s.jobs.load.running() && !s.jobs.models.running()) {
-    auto request = std::move(*s.jobs.pendingOpen);
-    s.jobs.pendingOpen.reset();
+  if (s.loading.pending && !s.loading.population.running() && !s.loading.models.running()) {
+    auto request = std::move(*s.loading.pending);
+    s.loading.pending.reset();
     startLoad(s, std::move(request));
   }
 }
@@ -457,7 +457,7 @@ void writeJointMapping(AppState& s, const std::filesystem::path& file,
 }
 
 void requestDataSummary(AppState& s) {
-  if (!s.doc.population || s.jobs.load.running() || s.jobs.summary.running()) return;
+  if (!s.doc.population || s.loading.population.running() || s.jobs.summary.running()) return;
   auto paths = s.doc.sourcePaths;
   auto overrides = s.doc.fileOverrides;
   const auto generation = s.doc.generation;

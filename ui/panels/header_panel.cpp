@@ -56,18 +56,18 @@ float drawProgress(AppState& s, const FrameContext& ctx, float right) {
     return x;
   }
   if (!s.jobsBusy()) return right;
-  const bool loading = s.jobs.load.running();
-  const bool clipping = !loading && !s.jobs.models.running() && s.clip.fits.running();
-  const bool analysing = !loading && !clipping && !s.jobs.models.running() && s.jobs.analysis.running();
+  const bool loading = s.loading.population.running();
+  const bool clipping = !loading && !s.loading.models.running() && s.clip.fits.running();
+  const bool analysing = !loading && !clipping && !s.loading.models.running() && s.jobs.analysis.running();
   // The camera fit reports no steps: the bar runs empty with its title.
-  const float fraction = loading     ? s.jobs.load.fraction()
+  const float fraction = loading     ? s.loading.population.fraction()
                          : clipping  ? 0.0f
                          : analysing ? s.jobs.analysis.fraction()
-                                     : s.jobs.models.fraction();
-  const std::string what = loading     ? s.jobs.load.title() + ": " + s.jobs.load.what()
+                                     : s.loading.models.fraction();
+  const std::string what = loading     ? s.loading.population.title() + ": " + s.loading.population.what()
                            : clipping  ? s.clip.fits.title() + "…"
                            : analysing ? s.jobs.analysis.title()
-                                       : s.jobs.models.title() + ": " + s.jobs.models.what();
+                                       : s.loading.models.title() + ": " + s.loading.models.what();
   ImGui::SameLine(right - w);
   ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
   ImGui::ProgressBar(fraction, ImVec2(w, 0.0f), fitText(what, w).c_str());
