@@ -70,8 +70,6 @@ struct OpenNotice {
 };
 
 struct Jobs {
-  BackgroundJob<std::shared_ptr<const TrackedVideo>> track;  // joints tracked through a video
-  BackgroundJob<std::shared_ptr<const DetectedVideo>> detect;  // people found in a video
   // Slow derived work, kept by the inputs it was computed from (ui/app/async_cache.h).
   AsyncCache<AnalysisKey, AnalysisResult> analysis{6};  // the analysis panel's curves
   AsyncCache<std::uint64_t, DataSummary> summary{1};    // the Data window's table, by generation
@@ -80,9 +78,7 @@ struct Jobs {
   std::uint64_t noticeSerial = 0;
   int failures = 0;        // loads or model builds that failed (scripts check it)
 
-  bool busy() const {
-    return analysis.running() || summary.running() || track.running() || detect.running();
-  }
+  bool busy() const { return analysis.running() || summary.running(); }
 };
 
 struct Fonts {
@@ -134,10 +130,14 @@ struct Panels {
 struct AppState {
   // A background job running or an open waiting for one: loading, models, a clip's fit, a
   // track, a detection, the analysis, the data table.
-  bool jobsBusy() const { return loading.busy() || clip.fits.running() || jobs.busy(); }
+  bool jobsBusy() const {
+    return loading.busy() || clip.fits.running() || video.track.running() ||
+           video.detect.running() || jobs.busy();
+  }
   // That, an export, or video frames being read (scripts wait for it).
   bool busy() const {
-    return jobsBusy() || exports.busy() || (video && video->frames && video->frames->pending());
+    return jobsBusy() || exports.busy() ||
+           (video.session && video.session->frames && video.session->frames->pending());
   }
 
   Document doc;
@@ -147,9 +147,9 @@ struct AppState {
   // One struct per feature that has grown one (docs/ARCHITECTURE.md, "The viewer").
   LoadingFeature loading;  // opening data: the load, the models, the open waiting (loading.h)
   ClipFeature clip;        // the keypoint clip: its settings, its fits, its zoom (clip.h)
+  VideoFeature video;  // the video open, its track and detection, the detector's choices (video.h)
   Jobs jobs;
   Exports exports;
-  std::optional<VideoSession> video;               // the video open (Mode::Clip shows it)
   Log log;
   Fonts fonts;
   Fonts presentationFonts;  // the same, kPresentationTextScale larger

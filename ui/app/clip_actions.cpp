@@ -99,16 +99,16 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& before,
   for (const auto& caution : c->rec.cautions) s.log.warning(caution);
   if (s.jobs.lastError.starts_with("Clip fit failed")) s.jobs.lastError.clear();
   // A video's track: the fit shows the frame the user is at.
-  if ((c->settings.tracked || c->settings.detected) && s.video) {
+  if ((c->settings.tracked || c->settings.detected) && s.video.session) {
     // A detection's first fit shows the walker halfway through the frames it is seen on.
-    if (c->settings.detected && std::exchange(s.video->showWalkerWhenFitted, false)) {
+    if (c->settings.detected && std::exchange(s.video.session->showWalkerWhenFitted, false)) {
       const auto& t = c->rec.trial;
       if (t.chosen >= 0 && t.chosen < static_cast<int>(t.people.size())) {
         const auto& seen = t.people[static_cast<std::size_t>(t.chosen)].frames;
-        if (!seen.empty()) s.video->frame = seen[seen.size() / 2];
+        if (!seen.empty()) s.video.session->frame = seen[seen.size() / 2];
       }
     }
-    setVideoFrame(s, s.video->frame);
+    setVideoFrame(s, s.video.session->frame);
   }
   if (newClip) {
     dismissNotice(s);
@@ -149,7 +149,8 @@ void clipFailed(AppState& s, const ClipSettings& running, const std::string& err
     s.clip.settings = s.clip.fit() ? std::optional<ClipSettings>(s.clip.fit()->settings) : std::nullopt;
     // A video stays shown with its track when the walk cannot be fitted to it (a clip that
     // is not walking): the track is still worth seeing over the footage.
-    if (!s.clip.settings && !s.video && s.doc.mode == Mode::Clip) s.doc.mode = Mode::Reconstruct;
+    if (!s.clip.settings && !s.video.session && s.doc.mode == Mode::Clip)
+      s.doc.mode = Mode::Reconstruct;
   }
   if (running.tracked) {
     // The video opened and tracked; opening it again would not fit the walk either.

@@ -18,7 +18,6 @@
 #include "ui/app/model_set.h"
 #include "ui/app/population.h"
 #include "ui/render/camera.h"
-#include "video/pose_model_files.h"
 
 namespace ew::ui {
 
@@ -140,9 +139,6 @@ struct ViewState {
   // Presentation mode (F5): only the two views and the presentation bar. Never saved: every
   // run starts in the workspace.
   bool presentation = false;
-  // A video opened alone (no keyframe file with it) is handed to the built-in detector.
-  bool detectWhenVideoOpens = true;
-  PoseModelSize detectorModel = PoseModelSize::Full;  // BlazePose's landmark model for the next detection
 };
 
 }  // namespace ew::ui

@@ -116,7 +116,7 @@ void blitRgb(const std::vector<unsigned char>& rgb, int w, int h, cv::Mat& dst, 
 // tracked joints and the walker drawn back over it (ui/panels/video_view.h).
 void renderFootage(std::optional<VideoSource>& footage, gl::RenderTarget& target, Scene& scene, const AppState& s,
                    Renderer& renderer, float lineScale, int videoFrame, float aspect) {
-  if (!footage) footage.emplace(s.video->path);
+  if (!footage) footage.emplace(s.video.session->path);
   const cv::Mat picture = footage->frame(videoFrame);
   const VideoInfo& info = footage->info();
   const VideoViewFrame view = videoViewFrame(info.widthPx, info.heightPx, aspect);

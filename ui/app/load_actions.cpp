@@ -257,12 +257,12 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
     }
   }
   // A video alone goes to the detector; with its keyframes, it is for marking and tracking.
-  if (opened && keyframeFiles.empty() && s.view.detectWhenVideoOpens) {
+  if (opened && keyframeFiles.empty() && s.video.detectWhenOpens) {
     try {
       startDetection(s);
     } catch (const std::exception& e) {
       // The video is open all the same: its joints can be marked and tracked.
-      const bool noModels = s.video && !s.video->detectError.empty();
+      const bool noModels = s.video.session && !s.video.session->detectError.empty();
       reportNote(s, noModels ? "Detecting people needs the pose models" : "Detection did not start", e.what(),
                  noModels ? "Pose models missing" : "");
     }
@@ -274,9 +274,10 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
       const Keyframes named = readKeyframes(k);
       const auto beside = k.parent_path() / named.video;
       const bool besideExists = !named.video.empty() && std::filesystem::exists(beside);
-      if (!s.video && !besideExists)
+      if (!s.video.session && !besideExists)
         throw std::invalid_argument(k.string() + ": open the video the keyframes were marked on first");
-      if (!s.video || (!opened && besideExists && s.video->path.filename() != named.video))
+      if (!s.video.session ||
+          (!opened && besideExists && s.video.session->path.filename() != named.video))
         openVideo(s, beside);
       loadKeyframes(s, k);
     } catch (const std::exception& e) {

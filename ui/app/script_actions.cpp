@@ -60,7 +60,7 @@ void zoom(AppState& s, const A& a, W&) {
 // the script waits for the fit again.
 void keyframesEdited(AppState& s, W& w) {
   w.failuresBefore = s.jobs.failures;
-  w.checkLoad = actions::correctsDetections(s) && !s.video->marking;
+  w.checkLoad = actions::correctsDetections(s) && !s.video.session->marking;
 }
 
 // {"first": F, "last": L[, "tracker": "flow" | "appearance"][, "flatten_background": B]
@@ -115,14 +115,15 @@ void detectVideo(AppState& s, const A& a, W& w) {
   const std::filesystem::path video = object ? arg["path"].get<std::string>() : arg.get<std::string>();
   if (!isVideoFile(video)) throw std::invalid_argument(video.string() + ": not a video (.mp4 .avi .mov …)");
   w.load(s);
-  const bool onOpen = std::exchange(s.view.detectWhenVideoOpens, true);
+  const bool onOpen = std::exchange(s.video.detectWhenOpens, true);
   actions::open(s, {video});
-  s.view.detectWhenVideoOpens = onOpen;
+  s.video.detectWhenOpens = onOpen;
   if (s.jobs.failures != w.failuresBefore) return;  // the video did not open: said as a failed open
-  if (!s.jobs.detect.running()) {
+  if (!s.video.detect.running()) {
     w.checkLoad = false;
-    throw std::invalid_argument(s.video && !s.video->detectError.empty() ? s.video->detectError
-                                                                         : "the detection did not start");
+    throw std::invalid_argument(s.video.session && !s.video.session->detectError.empty()
+                                    ? s.video.session->detectError
+                                    : "the detection did not start");
   }
 }
 

@@ -194,8 +194,8 @@ nlohmann::json clipJson(const AppState& s) {
 
 // The video open: its frames, the keyframes marked and the last track.
 nlohmann::json videoJson(const AppState& s) {
-  if (!s.video) return nullptr;
-  const VideoSession& v = *s.video;
+  if (!s.video.session) return nullptr;
+  const VideoSession& v = *s.video.session;
   const VideoInfo& i = v.frames->info();
   nlohmann::json keyframes = nlohmann::json::array();
   for (const auto& k : v.keyframes.keyframes)
@@ -221,11 +221,11 @@ nlohmann::json videoJson(const AppState& s) {
                       {"flatten_background", v.flattenBackground},
                       {"hold_trunk", v.holdTheTrunk},
                       {"model_loop", v.modelLoopRounds}};
-  j["detection"] = {{"running", s.jobs.detect.running()},
-                    {"model", std::string(poseModelSizeName(s.view.detectorModel))},
+  j["detection"] = {{"running", s.video.detect.running()},
+                    {"model", std::string(poseModelSizeName(s.video.detectorModel))},
                     {"error", v.detectError},
                     {"shows_fit", actions::showsDetectionFit(s)},
-                    {"when_opened", s.view.detectWhenVideoOpens}};
+                    {"when_opened", s.video.detectWhenOpens}};
   if (v.detecting) j["detection"]["latest_frame"] = v.detecting->latestFrame();
   if (v.detected) {
     const DetectedVideo& d = *v.detected;

@@ -43,13 +43,13 @@ float drawProgress(AppState& s, const FrameContext& ctx, float right) {
     if (ImGui::SmallButton("Cancel")) actions::cancelVideoExport(s);
     return x;
   }
-  if (s.jobs.track.running()) {
-    const std::string what = s.jobs.track.title() + ": " + s.jobs.track.what();
+  if (s.video.track.running()) {
+    const std::string what = s.video.track.title() + ": " + s.video.track.what();
     const float cancelW = ImGui::CalcTextSize("Cancel").x + 2.0f * ImGui::GetStyle().FramePadding.x;
     const float x = right - w - cancelW - ImGui::GetStyle().ItemSpacing.x;
     ImGui::SameLine(x);
     ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
-    ImGui::ProgressBar(s.jobs.track.fraction(), ImVec2(w, 0.0f), fitText(what, w).c_str());
+    ImGui::ProgressBar(s.video.track.fraction(), ImVec2(w, 0.0f), fitText(what, w).c_str());
     ImGui::PopStyleColor();
     ImGui::SameLine();
     if (ImGui::SmallButton("Cancel")) actions::cancelTracking(s);

@@ -220,7 +220,7 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
       target.ensure(static_cast<int>(size.x * fbScale.x), static_cast<int>(size.y * fbScale.y),
                     ctx.renderer.samples());
       lastImage = {p0, size};
-      if (s.doc.mode == Mode::Clip && s.video) {
+      if (s.doc.mode == Mode::Clip && s.video.session) {
         drawVideoView(s, ctx, p0, size);
       } else if (s.doc.mode == Mode::Clip) {
         drawClipView(s, ctx, p0, size);

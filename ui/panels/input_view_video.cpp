@@ -55,7 +55,7 @@ void drawPrompt(ImDrawList* dl, ImFont* font, ImVec2 p0, ImVec2 size, float top,
 // among the tracked joints there; on a detected video, among the fitted walker's joints there
 // with the marks in their place. -1 when none.
 int nearestJoint(const AppState& s, int frame, glm::vec2 px, float reach) {
-  const VideoSession& v = *s.video;
+  const VideoSession& v = *s.video.session;
   const Keyframe* k = v.keyframeAt(frame);
   Eigen::RowVectorXd points;
   const auto fit = actions::correctsDetections(s) ? actions::videoFitFrames(s) : std::nullopt;
@@ -133,7 +133,7 @@ ImRect screenRect(const VideoViewFrame& view, float aspect, ImVec2 p0, ImVec2 si
 // Where the walker shown on `frame` is, in video pixels: its marks, else the detector's fitted
 // joints, else its tracked joints.
 std::optional<std::pair<glm::vec2, glm::vec2>> walkerExtentPx(const AppState& s, int frame) {
-  const VideoSession& v = *s.video;
+  const VideoSession& v = *s.video.session;
   Eigen::RowVectorXd points;
   if (const Keyframe* k = v.keyframeAt(frame)) {
     points = k->jointsPx;
@@ -154,7 +154,7 @@ std::optional<std::pair<glm::vec2, glm::vec2>> walkerExtentPx(const AppState& s,
 }  // namespace
 
 void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
-  VideoSession& v = *s.video;
+  VideoSession& v = *s.video.session;
   const int frame = actions::shownVideoFrame(s);
   if (auto f = v.frames->frame(frame)) {
     v.shown = std::move(f);
@@ -203,8 +203,8 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
 
 // The magnifier (magnifierInput) over the video.
 void InputViewPanel::zoomAndPanVideo(AppState& s, ImVec2 size, glm::vec2 cursorPx) {
-  const auto change =
-      magnifierInput(s.video->zoom, videoViewMiddle(videoFrame_), cursorPx, videoFrame_.heightPx / size.y);
+  const auto change = magnifierInput(s.video.session->zoom, videoViewMiddle(videoFrame_), cursorPx,
+                                     videoFrame_.heightPx / size.y);
   if (!change) return;
   try {
     actions::setVideoZoom(s, change->zoom, Eigen::Vector2d(change->middlePx.x, change->middlePx.y));
@@ -215,7 +215,7 @@ void InputViewPanel::zoomAndPanVideo(AppState& s, ImVec2 size, glm::vec2 cursorP
 
 void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size,
                                       int frame) {
-  VideoSession& v = *s.video;
+  VideoSession& v = *s.video.session;
   const VideoInfo& info = v.frames->info();
   const float aspect = size.x / size.y;
   const VideoViewFrame& view = videoFrame_;

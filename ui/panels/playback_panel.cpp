@@ -34,7 +34,7 @@ void clipFrameSlider(AppState& s, const ClipResult& c, bool narrow) {
 // files and `track --first/--last` count them): over the tracked range when its track's fit
 // is shown, else over the whole video.
 void videoFrameSlider(AppState& s, bool narrow) {
-  const VideoSession& v = *s.video;
+  const VideoSession& v = *s.video.session;
   const bool tracked = !actions::stepsVideoFrames(s);
   int frame = actions::shownVideoFrame(s);
   const double seconds = v.fps() > 0.0 ? frame / v.fps() : 0.0;

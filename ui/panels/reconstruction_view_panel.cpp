@@ -32,7 +32,7 @@ namespace {
 // A message in the middle of the view, wrapped at 0.8 of its width; returns its height.
 void drawWhyNoWalkFits(ImDrawList* dl, const AppState& s, ImVec2 p0, ImVec2 size, float messageHeight) {
   std::string why = s.clip.fits.error();
-  const std::string file = s.video->path.string() + ": ";
+  const std::string file = s.video.session->path.string() + ": ";
   if (why.rfind(file, 0) == 0) why.erase(0, file.size());
   if (why.empty()) return;
   const float wrap = 0.8f * size.x;
@@ -314,17 +314,18 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       }
       }
       if (!drawn) {
-        const bool tracked = s.video && s.video->tracked;
-        const bool detected = s.video && s.video->detected && s.video->detected->people > 0;
-        const bool unfitted = clipMode && s.video && !s.clip.settings && (tracked || detected) && !s.jobs.track.running() &&
-                              !s.jobs.detect.running();
-        const char* msg = clipMode && s.video && !s.clip.settings
-                              ? (s.jobs.track.running()    ? "tracking…"
-                                 : s.jobs.detect.running() ? "detecting people… the walker appears when they are found"
-                                 : tracked                 ? "no walk fits this track"
-                                 : detected                ? "no walk fits the people detected"
-                                 : s.video->detected       ? "nobody detected: mark the joints on one frame, then Track"
-                                                           : "detect the walker, or mark the joints on one frame, then Track")
+        const std::optional<VideoSession>& video = s.video.session;
+        const bool tracked = video && video->tracked;
+        const bool detected = video && video->detected && video->detected->people > 0;
+        const bool unfitted = clipMode && video && !s.clip.settings && (tracked || detected) &&
+                              !s.video.track.running() && !s.video.detect.running();
+        const char* msg = clipMode && video && !s.clip.settings
+                              ? (s.video.track.running()    ? "tracking…"
+                                 : s.video.detect.running() ? "detecting people… the walker appears when they are found"
+                                 : tracked                  ? "no walk fits this track"
+                                 : detected                 ? "no walk fits the people detected"
+                                 : video->detected          ? "nobody detected: mark the joints on one frame, then Track"
+                                                            : "detect the walker, or mark the joints on one frame, then Track")
                           : clipMode ? (s.clip.fits.running() ? "fitting the camera…" : unfittedClipMessage(s.clip.fits.error()))
                           : s.jobsBusy() ? "building models…" : "nothing to show";
         const float height = drawCentredMessage(dl, p0, size, msg);

@@ -138,8 +138,8 @@ bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,
   scene.floor.visible = false;
   scene.backgroundTop = {0.085f, 0.09f, 0.105f, 1.0f};
   scene.backgroundBottom = {0.04f, 0.045f, 0.055f, 1.0f};
-  if (!s.video) return false;
-  const VideoSession& v = *s.video;
+  if (!s.video.session) return false;
+  const VideoSession& v = *s.video.session;
   const float radius = 5.0f * lineScale * videoPxPerScreenPx;
   const auto fit = v.marking ? std::nullopt : actions::videoFitFrames(s);
   const int clipFrame = fit ? frame - fit->first : -1;

@@ -124,7 +124,7 @@ ViewCaption clipInputCaption(const AppState& s, int shown, bool onScreen) {
 }
 
 ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool onScreen) {
-  const VideoSession& v = *s.video;
+  const VideoSession& v = *s.video.session;
   const VideoInfo& info = v.frames->info();
   char zoom[48] = "";
   if (onScreen && v.zoom > 1.0) std::snprintf(zoom, sizeof zoom, " · zoom %.1f×", v.zoom);
@@ -139,7 +139,8 @@ ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool 
   if (v.detecting && onScreen) {
     // The subtitle says how far the detection has come; the points' colours what they mean.
     const std::size_t len = std::strlen(sub);
-    std::snprintf(sub + len, sizeof sub - len, " · detecting: %.0f %%", 100.0 * s.jobs.detect.fraction());
+    std::snprintf(sub + len, sizeof sub - len, " · detecting: %.0f %%",
+                  100.0 * s.video.detect.fraction());
   }
   if (fitted) {
     legend.push_back({palette::kInputPoint, actions::showsDetectionFit(s) ? "detected joints" : "tracked joints", false});
@@ -223,8 +224,8 @@ ViewCaption clipReconstructionCaption(const AppState& s) {
 }
 
 ViewCaption inputCaption(const AppState& s, int clipFrame) {
-  if (s.doc.mode == Mode::Clip && s.video) {
-    const VideoSession& v = *s.video;
+  if (s.doc.mode == Mode::Clip && s.video.session) {
+    const VideoSession& v = *s.video.session;
     const auto fit = actions::videoFitFrames(s);
     return videoInputCaption(s, fit ? fit->first + clipFrame : v.frame, false, false);
   }
