@@ -383,6 +383,14 @@ void setClipFrame(AppState& s, int frame) {
   s.view.playback.playing = false;
 }
 
+void setClipZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
+  if (!s.clip.fit()) throw std::invalid_argument("no keypoint clip is shown");
+  if (!std::isfinite(zoom) || !centrePx.allFinite()) throw std::invalid_argument("clip zoom: not a number");
+  s.clip.zoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
+  s.clip.zoomCentreX = centrePx.x();
+  s.clip.zoomCentreY = centrePx.y();
+}
+
 void closeClip(AppState& s) {
   s.clip.settings.reset();
   s.clip.fits.reset();

@@ -221,14 +221,6 @@ void setVideoZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
   v.zoomCentrePx = centrePx.cwiseMax(0.0).cwiseMin(Eigen::Vector2d(i.widthPx, i.heightPx));
 }
 
-void setClipZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
-  if (!s.clip.fit()) throw std::invalid_argument("no keypoint clip is shown");
-  if (!std::isfinite(zoom) || !centrePx.allFinite()) throw std::invalid_argument("clip zoom: not a number");
-  s.clip.zoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
-  s.clip.zoomCentreX = centrePx.x();
-  s.clip.zoomCentreY = centrePx.y();
-}
-
 void setVideoFrame(AppState& s, int frame) {
   VideoSession& v = session(s);
   v.frame = std::clamp(frame, 0, std::max(v.frameCount() - 1, 0));
