@@ -190,15 +190,15 @@ TEST(VideoActions, AVideoCutShortSaysSoInTheBanner) {
     s.video.session->frames->waitFrame(k);
   ASSERT_FALSE(s.video.session->frames->error().empty()) << "half the file decoded whole";
   pollVideo(s);
-  ASSERT_TRUE(s.jobs.notice.has_value());
-  EXPECT_EQ(s.jobs.notice->title, "Part of cut.avi cannot be decoded");
-  EXPECT_NE(s.jobs.notice->detail.find("taken to end after " +
+  ASSERT_TRUE(s.notices.banner.has_value());
+  EXPECT_EQ(s.notices.banner->title, "Part of cut.avi cannot be decoded");
+  EXPECT_NE(s.notices.banner->detail.find("taken to end after " +
                                        std::to_string(s.video.session->frameCount())),
             std::string::npos)
-      << s.jobs.notice->detail;
+      << s.notices.banner->detail;
   actions::dismissNotice(s);
   pollVideo(s);
-  EXPECT_FALSE(s.jobs.notice.has_value()) << "said once";
+  EXPECT_FALSE(s.notices.banner.has_value()) << "said once";
 }
 
 // A video dropped on the window opens, and so does a keyframe file dropped alone (with the
@@ -253,24 +253,24 @@ TEST(VideoActions, AVideoDroppedAloneGoesToTheDetectorAndSaysWhenTheModelsAreMis
   actions::drop(alone, {f.video});
   ASSERT_TRUE(alone.video.session.has_value()) << "opened for marking all the same";
   EXPECT_FALSE(alone.video.detect.running());
-  ASSERT_TRUE(alone.jobs.notice.has_value());
-  EXPECT_FALSE(alone.jobs.notice->error);
-  EXPECT_EQ(alone.jobs.notice->title, "Detecting people needs the pose models");
-  EXPECT_NE(alone.jobs.notice->detail.find("tools/pose_model/fetch_model.sh"), std::string::npos);
-  EXPECT_EQ(alone.jobs.failures, 0);
+  ASSERT_TRUE(alone.notices.banner.has_value());
+  EXPECT_FALSE(alone.notices.banner->error);
+  EXPECT_EQ(alone.notices.banner->title, "Detecting people needs the pose models");
+  EXPECT_NE(alone.notices.banner->detail.find("tools/pose_model/fetch_model.sh"), std::string::npos);
+  EXPECT_EQ(alone.notices.failures, 0);
   EXPECT_THROW(actions::startDetection(alone), std::invalid_argument);
   EXPECT_NE(alone.video.session->detectError.find("fetch_model.sh"), std::string::npos);
 
   AppState withKeys;
   actions::drop(withKeys, {f.video, f.keys});
   ASSERT_TRUE(withKeys.video.session.has_value());
-  EXPECT_FALSE(withKeys.jobs.notice.has_value()) << "a video with its keyframes is not detected";
+  EXPECT_FALSE(withKeys.notices.banner.has_value()) << "a video with its keyframes is not detected";
   EXPECT_TRUE(withKeys.video.session->detectError.empty());
 
   AppState off;
   actions::setDetectWhenVideoOpens(off, false);
   actions::drop(off, {f.video});
-  EXPECT_FALSE(off.jobs.notice.has_value());
+  EXPECT_FALSE(off.notices.banner.has_value());
 
   if (before) setenv("EIGENWALKER_MODELS", kept.c_str(), 1);
   else unsetenv("EIGENWALKER_MODELS");

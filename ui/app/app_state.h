@@ -24,6 +24,7 @@
 #include "ui/app/export.h"
 #include "ui/app/loading.h"
 #include "ui/app/log.h"
+#include "ui/app/notices.h"
 #include "ui/app/undo.h"
 #include "ui/app/video.h"
 #include "ui/panels/analysis_panel.h"
@@ -54,29 +55,10 @@ namespace ew::ui {
 class Backdrop;
 class Renderer;
 
-// What the banner over the views says after an open went wrong (ui/panels/notice_panel.h):
-// an open that failed (the previous data stays), or one that succeeded without some of the
-// items the user named.
-struct OpenNotice {
-  bool error = true;     // false: opened, but some items were skipped
-  std::string title;     // "Could not open walk.csv"
-  std::string detail;    // why: the file, where in it, the problem (the opened paths shortened)
-  std::string fullText;  // the same with full paths, as in the log (the banner's tooltip)
-  std::string kept;      // what the viewer still shows
-  std::vector<std::filesystem::path> retryPaths;  // what Retry opens
-  bool canRetry = false;
-  std::uint64_t serial = 0;  // a new notice comes to the front once
-  std::string shortTitle;    // for a row too narrow for the title ("Doubtful camera fit")
-};
-
 struct Jobs {
   // Slow derived work, kept by the inputs it was computed from (ui/app/async_cache.h).
   AsyncCache<AnalysisKey, AnalysisResult> analysis{6};  // the analysis panel's curves
   AsyncCache<std::uint64_t, DataSummary> summary{1};    // the Data window's table, by generation
-  std::string lastError;  // the last failed open or model build ("" once dismissed or opened)
-  std::optional<OpenNotice> notice;  // the banner over the views, until dismissed
-  std::uint64_t noticeSerial = 0;
-  int failures = 0;        // loads or model builds that failed (scripts check it)
 
   bool busy() const { return analysis.running() || summary.running(); }
 };
@@ -147,8 +129,9 @@ struct AppState {
   // One struct per feature that has grown one (docs/ARCHITECTURE.md, "The viewer").
   LoadingFeature loading;  // opening data: the load, the models, the open waiting (loading.h)
   ClipFeature clip;        // the keypoint clip: its settings, its fits, its zoom (clip.h)
-  VideoFeature video;  // the video open, its track and detection, the detector's choices (video.h)
-  Jobs jobs;
+  VideoFeature video;      // the video open, its track and detection, the detector's choices
+  Notices notices;         // what went wrong: the banner, the last error, the failures (notices.h)
+  Jobs jobs;               // the analysis's and the Data table's slow derived work
   Exports exports;
   Log log;
   Fonts fonts;

@@ -73,7 +73,7 @@ void frameClipScene(AppState& s, const ClipResult& c) {
 constexpr const char* kFitCautionTitle = "The fitted camera may be wrong";
 void noticeFitCautions(AppState& s, const ClipResult& c) {
   if (c.rec.cautions.empty()) {
-    if (s.jobs.notice && s.jobs.notice->title.starts_with(kFitCautionTitle)) s.jobs.notice.reset();
+    if (s.notices.banner && s.notices.banner->title.starts_with(kFitCautionTitle)) s.notices.banner.reset();
     return;
   }
   OpenNotice n;
@@ -97,7 +97,7 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& before,
              c->rec.trial.layout->name + "): " + buf);
   for (const auto& w : c->rec.trial.warnings) s.log.warning(w);
   for (const auto& caution : c->rec.cautions) s.log.warning(caution);
-  if (s.jobs.lastError.starts_with("Clip fit failed")) s.jobs.lastError.clear();
+  if (s.notices.lastError.starts_with("Clip fit failed")) s.notices.lastError.clear();
   // A video's track: the fit shows the frame the user is at.
   if ((c->settings.tracked || c->settings.detected) && s.video.session) {
     // A detection's first fit shows the walker halfway through the frames it is seen on.
@@ -125,21 +125,21 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& before,
 // change of settings, the controls say why and the last fit stays on screen. `running`: the
 // settings that failed (clip.fits has them as its failed key, and the error).
 void clipFailed(AppState& s, const ClipSettings& running, const std::string& error) {
-  ++s.jobs.failures;
+  ++s.notices.failures;
   const bool atOpen = !s.clip.fit() || s.clip.fit()->settings.path != running.path;
   if (!atOpen) {
-    s.jobs.lastError = "Clip fit failed (" + heldCameraValues(running) + "): " + error;
-    s.log.error(s.jobs.lastError);
+    s.notices.lastError = "Clip fit failed (" + heldCameraValues(running) + "): " + error;
+    s.log.error(s.notices.lastError);
     return;
   }
   if (error.find(kNeedsImageSize) != std::string::npos && s.clip.settings == running) {
     // Points as fractions of an image of unknown size: the clip stays open, its controls ask
     // for the size (no video beside it gave one).
     s.clip.fits.reset();
-    s.jobs.lastError = "Give the image size of " + running.path.filename().string();
+    s.notices.lastError = "Give the image size of " + running.path.filename().string();
     s.log.error(error);
     OpenNotice n;
-    n.title = s.jobs.lastError + " (the Keypoint clip panel)";
+    n.title = s.notices.lastError + " (the Keypoint clip panel)";
     n.shortTitle = "Image size needed";
     n.detail = n.fullText = error;
     showNotice(s, std::move(n));

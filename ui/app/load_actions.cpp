@@ -159,7 +159,7 @@ std::vector<std::filesystem::path> openModelFiles(AppState& s,
       holdModel(s, readModelFile(p));
       dismissNotice(s);
     } catch (const std::exception& e) {
-      ++s.jobs.failures;
+      ++s.notices.failures;
       reportOpenError(s, {p}, e.what());
     }
   }
@@ -249,7 +249,7 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
       try {
         openVideo(s, p);
       } catch (const std::exception& e) {
-        ++s.jobs.failures;
+        ++s.notices.failures;
         reportOpenError(s, {p}, e.what());
         opened = false;
         return rest;
@@ -281,7 +281,7 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
         openVideo(s, beside);
       loadKeyframes(s, k);
     } catch (const std::exception& e) {
-      ++s.jobs.failures;
+      ++s.notices.failures;
       reportOpenError(s, {k}, e.what());
     }
   }
@@ -326,13 +326,13 @@ void pollJobs(AppState& s) {
       }
     }
     if (!taken) {
-      ++s.jobs.failures;
+      ++s.notices.failures;
       std::string why = outcome->error;
       for (const auto& r : s.loading.request.refused) why += "\nalso skipped: " + r;
       reportOpenError(s, s.loading.request.paths, why);
       const auto& named =
           s.loading.request.named.empty() ? s.loading.request.paths : s.loading.request.named;
-      s.jobs.notice->detail = shortenPaths(why, named);
+      s.notices.banner->detail = shortenPaths(why, named);
     }
   }
   if (auto outcome = s.loading.models.poll()) {
@@ -348,14 +348,14 @@ void pollJobs(AppState& s) {
                  " leave-one-out models and the full model (" +
                  std::to_string(s.doc.models->all.walkerCount()) + " walkers)");
     } else {
-      ++s.jobs.failures;
+      ++s.notices.failures;
       // The new data cannot be shown without its models: back to what was shown before.
       const std::string what = s.doc.population ? s.doc.population->label : std::string("the data");
       restoreData(s, s.loading.before ? std::move(*s.loading.before) : LoadedData{});
       s.loading.before.reset();
       reportError(s, "Could not build the models for " + what, outcome->error);
-      s.jobs.notice->retryPaths = s.loading.request.paths;
-      s.jobs.notice->canRetry = true;
+      s.notices.banner->retryPaths = s.loading.request.paths;
+      s.notices.banner->canRetry = true;
     }
   }
   pollClipFit(s);

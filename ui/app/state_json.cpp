@@ -427,10 +427,10 @@ nlohmann::json stateJson(const AppState& s) {
   j["tour"] = s.panels.tour.active ? nlohmann::json{{"step", s.panels.tour.step}, {"text_folded", s.panels.tour.folded}}
                                    : nlohmann::json();
   j["busy"] = s.busy();
-  j["failures"] = s.jobs.failures;
-  j["error"] = s.jobs.lastError;
-  if (s.jobs.notice) {
-    const auto& n = *s.jobs.notice;
+  j["failures"] = s.notices.failures;
+  j["error"] = s.notices.lastError;
+  if (s.notices.banner) {
+    const auto& n = *s.notices.banner;
     j["notice"] = {{"level", n.error ? "error" : "warning"},
                    {"title", n.title},
                    {"detail", n.detail},

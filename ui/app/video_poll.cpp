@@ -52,10 +52,10 @@ void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>
       s.log.info("Detection cancelled");
       return;
     }
-    ++s.jobs.failures;
+    ++s.notices.failures;
     v.detectError = outcome.error;
     actions::reportError(s, "Could not detect people in " + name, outcome.error);
-    s.jobs.notice->shortTitle = "Detection failed";
+    s.notices.banner->shortTitle = "Detection failed";
     return;
   }
   v.detected = *outcome.value;
@@ -63,12 +63,12 @@ void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>
   s.log.info("Detected in " + name + ": " + detectionSummary(d));
   for (const auto& w : d.warnings) s.log.warning(w);
   if (d.people == 0) {
-    ++s.jobs.failures;
+    ++s.notices.failures;
     v.detectError = "nobody found in its " + std::to_string(d.framesRead) + " frames";
     actions::reportError(s, "Nobody found in " + name,
                          "the detector found no person in its " + std::to_string(d.framesRead) +
                              " frames. Mark the walker's joints on one frame and track them (Mark the joints).");
-    s.jobs.notice->shortTitle = "Nobody found";
+    s.notices.banner->shortTitle = "Nobody found";
     v.frame = 0;
     return;
   }
@@ -103,7 +103,7 @@ void pollVideo(AppState& s) {
     if (cancelled) {
       s.log.info("Tracking cancelled");
     } else {
-      ++s.jobs.failures;
+      ++s.notices.failures;
       actions::reportError(s, "Could not track " + v.path.filename().string(), outcome->error);
     }
     return;
