@@ -30,7 +30,7 @@ namespace {
 // Polls until no track runs and none is waiting to start (at most a minute).
 void settle(AppState& s) {
   const auto until = std::chrono::steady_clock::now() + std::chrono::minutes(1);
-  while ((s.jobs.track.running() || s.video->trackAgainWhenStopped) &&
+  while ((s.video.track.running() || s.video.session->trackAgainWhenStopped) &&
          std::chrono::steady_clock::now() < until) {
     pollVideo(s);
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
@@ -83,20 +83,20 @@ TEST(VideoActions, AJointLetGoWhileTrackingTracksAgainWithIt) {
   const Eigen::MatrixXd& truthPx = f.truthPx;
   AppState s;
   openAndTrack(s, f);
-  ASSERT_TRUE(s.video->tracked);
-  EXPECT_EQ(s.video->tracked->keyframes.keyframes.size(), 2u);
+  ASSERT_TRUE(s.video.session->tracked);
+  EXPECT_EQ(s.video.session->tracked->keyframes.keyframes.size(), 2u);
 
   actions::startTracking(s);
-  s.video->frame = 30;
+  s.video.session->frame = 30;
   const int knee = index(Joint::RKnee);
   actions::markJoint(s, Joint::RKnee, truthPx(30, 2 * knee), truthPx(30, 2 * knee + 1));
   EXPECT_FALSE(actions::letGoOfJoint(s)) << "a track was running: it is asked to stop first";
-  EXPECT_TRUE(s.video->trackAgainWhenStopped);
+  EXPECT_TRUE(s.video.session->trackAgainWhenStopped);
   settle(s);
-  ASSERT_TRUE(s.video->tracked);
-  EXPECT_FALSE(s.jobs.track.running());
-  EXPECT_EQ(s.video->tracked->keyframes.keyframes.size(), 3u);
-  EXPECT_EQ(s.video->trackError, "");
+  ASSERT_TRUE(s.video.session->tracked);
+  EXPECT_FALSE(s.video.track.running());
+  EXPECT_EQ(s.video.session->tracked->keyframes.keyframes.size(), 3u);
+  EXPECT_EQ(s.video.session->trackError, "");
 }
 
 // On a detected video a joint let go is a correction (issue 52): the detections are fitted
@@ -111,40 +111,40 @@ TEST(VideoActions, OnADetectedVideoTheMarksAreCorrectionsOfTheFit) {
   d->video = f.video;
   d->frames = std::make_shared<const KeypointFrames>();
   d->people = 1;
-  s.video->detected = d;
+  s.video.session->detected = d;
   actions::fitDetections(s);
   ASSERT_TRUE(actions::correctsDetections(s));
-  ASSERT_TRUE(s.doc.clip);
-  EXPECT_FALSE(s.doc.clip->corrections);
+  ASSERT_TRUE(s.clip.settings);
+  EXPECT_FALSE(s.clip.settings->corrections);
 
   const int knee = index(Joint::RKnee);
-  s.video->frame = 12;
+  s.video.session->frame = 12;
   actions::markJoint(s, Joint::RKnee, f.truthPx(12, 2 * knee) + 20.0, f.truthPx(12, 2 * knee + 1));
   EXPECT_TRUE(actions::letGoOfJoint(s)) << "the fit starts again";
-  ASSERT_TRUE(s.doc.clip->corrections);
-  const auto corrected = s.doc.clip->corrections;
+  ASSERT_TRUE(s.clip.settings->corrections);
+  const auto corrected = s.clip.settings->corrections;
   ASSERT_EQ(corrected->keyframes.size(), 1u);
   EXPECT_EQ(corrected->keyframes[0].frame, 12);
   EXPECT_EQ(corrected->keyframes[0].jointsPx.array().isFinite().count(), 2) << "the knee alone";
   EXPECT_EQ(corrected->keyframes[0].jointsPx(2 * knee), f.truthPx(12, 2 * knee) + 20.0);
   actions::fitDetections(s);
-  EXPECT_EQ(s.doc.clip->corrections, corrected) << "the same corrections: no new fit";
+  EXPECT_EQ(s.clip.settings->corrections, corrected) << "the same corrections: no new fit";
 
   actions::undoKeyframes(s);
-  EXPECT_FALSE(s.doc.clip->corrections);
+  EXPECT_FALSE(s.clip.settings->corrections);
   actions::redoKeyframes(s);
-  ASSERT_TRUE(s.doc.clip->corrections);
-  EXPECT_TRUE(sameKeyframes(*s.doc.clip->corrections, *corrected));
+  ASSERT_TRUE(s.clip.settings->corrections);
+  EXPECT_TRUE(sameKeyframes(*s.clip.settings->corrections, *corrected));
   actions::removeKeyframe(s, 12);
-  EXPECT_FALSE(s.doc.clip->corrections);
+  EXPECT_FALSE(s.clip.settings->corrections);
 
   actions::startMarking(s);
   actions::markJoint(s, Joint::Head, 10.0, 10.0);
   EXPECT_FALSE(actions::letGoOfJoint(s));
-  EXPECT_FALSE(s.doc.clip->corrections) << "while marking, the fit waits for Done";
+  EXPECT_FALSE(s.clip.settings->corrections) << "while marking, the fit waits for Done";
   actions::stopMarking(s);
-  ASSERT_TRUE(s.doc.clip->corrections);
-  EXPECT_EQ(s.doc.clip->corrections->keyframes.size(), 1u);
+  ASSERT_TRUE(s.clip.settings->corrections);
+  EXPECT_EQ(s.clip.settings->corrections->keyframes.size(), 1u);
 }
 
 // Marks far outside the picture, from a keyframe file or a pose estimator's keypoints, are
@@ -170,7 +170,7 @@ TEST(VideoActions, MarksFarOutsideThePictureAreRefusedWhereverTheyComeFrom) {
   };
   EXPECT_TRUE(refused([&] { actions::loadKeyframes(s, keys); }));
   EXPECT_TRUE(refused([&] { actions::markFromKeypoints(s, dir / "far_keypoints"); }));
-  EXPECT_TRUE(s.video->keyframes.keyframes.empty());
+  EXPECT_TRUE(s.video.session->keyframes.keyframes.empty());
 }
 
 // A video cut short: the frame past the cut is said once in the banner, with the length the
@@ -185,18 +185,20 @@ TEST(VideoActions, AVideoCutShortSaysSoInTheBanner) {
 
   AppState s;
   actions::openVideo(s, cut);
-  const int announced = s.video->frameCount();
-  for (int k = 0; k < announced && s.video->frames->error().empty(); ++k) s.video->frames->waitFrame(k);
-  ASSERT_FALSE(s.video->frames->error().empty()) << "half the file decoded whole";
+  const int announced = s.video.session->frameCount();
+  for (int k = 0; k < announced && s.video.session->frames->error().empty(); ++k)
+    s.video.session->frames->waitFrame(k);
+  ASSERT_FALSE(s.video.session->frames->error().empty()) << "half the file decoded whole";
   pollVideo(s);
-  ASSERT_TRUE(s.jobs.notice.has_value());
-  EXPECT_EQ(s.jobs.notice->title, "Part of cut.avi cannot be decoded");
-  EXPECT_NE(s.jobs.notice->detail.find("taken to end after " + std::to_string(s.video->frameCount())),
+  ASSERT_TRUE(s.notices.banner.has_value());
+  EXPECT_EQ(s.notices.banner->title, "Part of cut.avi cannot be decoded");
+  EXPECT_NE(s.notices.banner->detail.find("taken to end after " +
+                                       std::to_string(s.video.session->frameCount())),
             std::string::npos)
-      << s.jobs.notice->detail;
+      << s.notices.banner->detail;
   actions::dismissNotice(s);
   pollVideo(s);
-  EXPECT_FALSE(s.jobs.notice.has_value()) << "said once";
+  EXPECT_FALSE(s.notices.banner.has_value()) << "said once";
 }
 
 // A video dropped on the window opens, and so does a keyframe file dropped alone (with the
@@ -207,17 +209,17 @@ TEST(VideoActions, AVideoOrItsKeyframeFileDroppedOpensIt) {
   const auto &dir = f.dir, &video = f.video, &keys = f.keys;
 
   AppState dropped;
-  dropped.view.detectWhenVideoOpens = false;  // opening only (the detector: the test below)
+  dropped.video.detectWhenOpens = false;  // opening only (the detector: the test below)
   actions::drop(dropped, {video});
-  ASSERT_TRUE(dropped.video.has_value());
-  EXPECT_EQ(dropped.video->path, video);
+  ASSERT_TRUE(dropped.video.session.has_value());
+  EXPECT_EQ(dropped.video.session->path, video);
   EXPECT_EQ(dropped.doc.mode, Mode::Clip);
 
   AppState keysAlone;
   actions::drop(keysAlone, {keys});
-  ASSERT_TRUE(keysAlone.video.has_value());
-  EXPECT_EQ(keysAlone.video->path, video);
-  EXPECT_EQ(keysAlone.video->keyframes.keyframes.size(), 2u);
+  ASSERT_TRUE(keysAlone.video.session.has_value());
+  EXPECT_EQ(keysAlone.video.session->path, video);
+  EXPECT_EQ(keysAlone.video.session->keyframes.keyframes.size(), 2u);
 
   // Another video open: the keyframes open the video they name, beside them.
   const auto other = dir / "other.avi";
@@ -225,9 +227,9 @@ TEST(VideoActions, AVideoOrItsKeyframeFileDroppedOpensIt) {
   AppState otherOpen;
   actions::openVideo(otherOpen, other);
   actions::drop(otherOpen, {keys});
-  ASSERT_TRUE(otherOpen.video.has_value());
-  EXPECT_EQ(otherOpen.video->path, video);
-  EXPECT_EQ(otherOpen.video->keyframes.keyframes.size(), 2u);
+  ASSERT_TRUE(otherOpen.video.session.has_value());
+  EXPECT_EQ(otherOpen.video.session->path, video);
+  EXPECT_EQ(otherOpen.video.session->keyframes.keyframes.size(), 2u);
 
   EXPECT_EQ(browserFormat("walk.avi"), browserFormat("Clip.MP4"));
   EXPECT_GE(browserFormat("walk.avi"), 0);
@@ -249,26 +251,26 @@ TEST(VideoActions, AVideoDroppedAloneGoesToTheDetectorAndSaysWhenTheModelsAreMis
 
   AppState alone;
   actions::drop(alone, {f.video});
-  ASSERT_TRUE(alone.video.has_value()) << "opened for marking all the same";
-  EXPECT_FALSE(alone.jobs.detect.running());
-  ASSERT_TRUE(alone.jobs.notice.has_value());
-  EXPECT_FALSE(alone.jobs.notice->error);
-  EXPECT_EQ(alone.jobs.notice->title, "Detecting people needs the pose models");
-  EXPECT_NE(alone.jobs.notice->detail.find("tools/pose_model/fetch_model.sh"), std::string::npos);
-  EXPECT_EQ(alone.jobs.failures, 0);
+  ASSERT_TRUE(alone.video.session.has_value()) << "opened for marking all the same";
+  EXPECT_FALSE(alone.video.detect.running());
+  ASSERT_TRUE(alone.notices.banner.has_value());
+  EXPECT_FALSE(alone.notices.banner->error);
+  EXPECT_EQ(alone.notices.banner->title, "Detecting people needs the pose models");
+  EXPECT_NE(alone.notices.banner->detail.find("tools/pose_model/fetch_model.sh"), std::string::npos);
+  EXPECT_EQ(alone.notices.failures, 0);
   EXPECT_THROW(actions::startDetection(alone), std::invalid_argument);
-  EXPECT_NE(alone.video->detectError.find("fetch_model.sh"), std::string::npos);
+  EXPECT_NE(alone.video.session->detectError.find("fetch_model.sh"), std::string::npos);
 
   AppState withKeys;
   actions::drop(withKeys, {f.video, f.keys});
-  ASSERT_TRUE(withKeys.video.has_value());
-  EXPECT_FALSE(withKeys.jobs.notice.has_value()) << "a video with its keyframes is not detected";
-  EXPECT_TRUE(withKeys.video->detectError.empty());
+  ASSERT_TRUE(withKeys.video.session.has_value());
+  EXPECT_FALSE(withKeys.notices.banner.has_value()) << "a video with its keyframes is not detected";
+  EXPECT_TRUE(withKeys.video.session->detectError.empty());
 
   AppState off;
   actions::setDetectWhenVideoOpens(off, false);
   actions::drop(off, {f.video});
-  EXPECT_FALSE(off.jobs.notice.has_value());
+  EXPECT_FALSE(off.notices.banner.has_value());
 
   if (before) setenv("EIGENWALKER_MODELS", kept.c_str(), 1);
   else unsetenv("EIGENWALKER_MODELS");
@@ -284,7 +286,7 @@ TEST(VideoActions, TheTrackIsSavedAsTheCommandLineSavesIt) {
   EXPECT_THROW(actions::saveTrack(s, f.dir / "early"), std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(f.dir / "early"));
   openAndTrack(s, f);
-  ASSERT_TRUE(s.video->tracked);
+  ASSERT_TRUE(s.video.session->tracked);
 
   const auto out = f.dir / "saved";
   actions::saveTrack(s, out);
@@ -293,7 +295,7 @@ TEST(VideoActions, TheTrackIsSavedAsTheCommandLineSavesIt) {
   KeypointOptions o;
   o.fps = 30.0;
   const KeypointTrial back = readKeypointTrial(out / "keypoints", o);
-  const JointTrack& t = s.video->tracked->track;
+  const JointTrack& t = s.video.session->tracked->track;
   ASSERT_EQ(back.jointsPx.rows(), t.jointsPx.rows());
   // Every joint as tracked, with its confidence (a reader leaves out a point under 0.3, as
   // Pose2Sim does); BODY_25 has a neck, not a sternum, so reading it back puts the sternum
@@ -336,18 +338,18 @@ TEST(VideoActions, TheLeastSureFrameIsTheWeakestFrameNotAKeyframe) {
   actions::openVideo(s, f.video);
   EXPECT_EQ(actions::leastSureTrackedFrame(s), -1);
   openAndTrack(s, f);
-  s.video->frame = 20;
+  s.video.session->frame = 20;
   EXPECT_EQ(actions::neighbouringKeyframe(s, -1), 0);
   EXPECT_EQ(actions::neighbouringKeyframe(s, 1), -1) << "the only keyframe is frame 0";
-  s.video->frame = 0;
+  s.video.session->frame = 0;
   EXPECT_EQ(actions::neighbouringKeyframe(s, -1), -1) << "none before the first";
-  ASSERT_TRUE(s.video->tracked);
-  const JointTrack& t = s.video->tracked->track;
+  ASSERT_TRUE(s.video.session->tracked);
+  const JointTrack& t = s.video.session->tracked->track;
   const int least = actions::leastSureTrackedFrame(s);
   ASSERT_GT(least, 0) << "frame 0 is the keyframe";
   for (Eigen::Index r = 1; r < t.confidence.rows(); ++r)
     EXPECT_GE(t.confidence.row(r).mean(), t.confidence.row(least - t.firstFrame).mean()) << "frame " << r;
-  s.video->frame = least;
+  s.video.session->frame = least;
   const int j = index(Joint::Head);
   actions::markJoint(s, Joint::Head, truthPx(least, 2 * j), truthPx(least, 2 * j + 1));
   EXPECT_NE(actions::leastSureTrackedFrame(s), least) << "now a keyframe";
@@ -362,12 +364,12 @@ TEST(VideoActions, TheFrameToMarkNextIsNoKeyframeAndMovesOnOnceMarked) {
   actions::openVideo(s, f.video);
   EXPECT_EQ(actions::nextFrameToMark(s), -1);
   openAndTrack(s, f);
-  ASSERT_TRUE(s.video->tracked);
-  const JointTrack& t = s.video->tracked->track;
+  ASSERT_TRUE(s.video.session->tracked);
+  const JointTrack& t = s.video.session->tracked->track;
   const int next = actions::nextFrameToMark(s);
   EXPECT_EQ(std::vector<int>{next}, framesToMarkNext(t.jointsPx, t.firstFrame, {0}, 1));
   ASSERT_GT(next, 0) << "frame 0 is the keyframe";
-  s.video->frame = next;
+  s.video.session->frame = next;
   const int j = index(Joint::Head);
   actions::markJoint(s, Joint::Head, f.truthPx(next, 2 * j), f.truthPx(next, 2 * j + 1));
   const int after = actions::nextFrameToMark(s);
@@ -383,10 +385,10 @@ TEST(VideoActions, AnEditBetweenKeyframesTracksOnlyTheFramesBetweenItsNeighbours
   const Filmed f = filmWithKeyframes("video_actions_local", 60, {0, 30});
   AppState s;
   openAndTrack(s, f);
-  ASSERT_TRUE(s.video->tracked);
-  const JointTrack before = s.video->tracked->track;
+  ASSERT_TRUE(s.video.session->tracked);
+  const JointTrack before = s.video.session->tracked->track;
 
-  VideoSession& v = *s.video;
+  VideoSession& v = *s.video.session;
   v.frame = 45;
   const int knee = index(Joint::RKnee);
   actions::markJoint(s, Joint::RKnee, f.truthPx(45, 2 * knee), f.truthPx(45, 2 * knee + 1));
@@ -433,8 +435,8 @@ TEST(VideoActions, AnEditBetweenKeyframesWithTheTrunkHeldTracksTheSameAsTheWhole
   actions::loadKeyframes(s, f.keys);
   actions::startTracking(s);
   settle(s);
-  ASSERT_TRUE(s.video->tracked);
-  VideoSession& v = *s.video;
+  ASSERT_TRUE(s.video.session->tracked);
+  VideoSession& v = *s.video.session;
   v.frame = 32;
   const int wrist = index(Joint::LWrist);
   actions::markJoint(s, Joint::LWrist, f.truthPx(32, 2 * wrist), f.truthPx(32, 2 * wrist + 1));
@@ -456,7 +458,7 @@ TEST(VideoActions, PlaybackStepsTheVideosOwnFramesAtItsRate) {
   AppState s;
   actions::openVideo(s, video);
   ASSERT_TRUE(actions::stepsVideoFrames(s));
-  VideoSession& v = *s.video;
+  VideoSession& v = *s.video.session;
   s.view.playback.playing = true;
   s.view.playback.speed = 0.5f;
   v.shownIndex = 0;

@@ -25,13 +25,12 @@ std::string shortenPaths(std::string message, const std::vector<std::filesystem:
 void showNotice(AppState& s, OpenNotice notice);
 
 // [SECTION] Keypoint clips (clip_actions.cpp)
-// Starts the fit the document asks for, unless it is shown, running, or failed already.
-void startClipFit(AppState& s);
-// A fit that succeeded: shown. `before`: the fit shown until then.
-void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& before,
-              const std::shared_ptr<const ClipResult>& c);
-// A fit of the settings `running` that failed, and why (clip_actions.cpp says how it is shown).
-void clipFailed(AppState& s, const ClipSettings& running, const std::string& error);
+// Once a frame (pollJobs): a fit that finished is shown, or its failure said
+// (clip_actions.cpp says how).
+void pollClipFit(AppState& s);
+// Then: starts the fit the clip's settings ask for, unless it is shown, running, or failed
+// already; a fit that cannot start fails as one that ran.
+void refitClip(AppState& s);
 // Opens the first keypoint clip among `paths` and returns the others; further clips are
 // refused (one clip at a time), and every clip when a video was opened with them.
 std::vector<std::filesystem::path> openClips(AppState& s, std::vector<std::filesystem::path> paths,

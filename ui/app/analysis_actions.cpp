@@ -38,7 +38,7 @@ std::string analysisSubject(const AppState& s) {
 }
 
 void requestAnalysis(AppState& s) {
-  if ((!s.doc.population && !heldModelOtherThanThePopulations(s.doc)) || s.jobs.load.running() || s.jobs.analysis.running()) return;
+  if ((!s.doc.population && !heldModelOtherThanThePopulations(s.doc)) || s.loading.population.running() || s.jobs.analysis.running()) return;
   const AnalysisKey key = analysisKey(s);
   s.jobs.analysis.request(
       key, "Analysis (leave-one-subject-out, −90…90°)",

@@ -183,7 +183,7 @@ class App {
       presenter_->present(compositor_.changed(), h);
       if (!scripted_) std::this_thread::sleep_until(frameStart + std::chrono::microseconds(16667));
     }
-    if (scripted_ && state_.jobs.busy()) std::this_thread::sleep_until(frameStart + std::chrono::milliseconds(100));
+    if (scripted_ && state_.jobsBusy()) std::this_thread::sleep_until(frameStart + std::chrono::milliseconds(100));
   }
 
   int loop() {
@@ -253,8 +253,8 @@ class App {
           benchRemaining_ = options_.benchFrames;
           state_.view.playback.playing = true;
         } else if (options_.benchFrames == 0 || benchStarted_) {
-          if (!state_.jobs.lastError.empty() && !options_.script) {
-            std::fprintf(stderr, "eigenwalker: %s\n", state_.jobs.lastError.c_str());
+          if (!state_.notices.lastError.empty() && !options_.script) {
+            std::fprintf(stderr, "eigenwalker: %s\n", state_.notices.lastError.c_str());
             return 1;
           }
           return 0;

@@ -17,11 +17,14 @@
 #include "ui/app/analysis.h"
 #include "ui/app/async_cache.h"
 #include "ui/app/background_job.h"
+#include "ui/app/clip.h"
 #include "ui/app/data_summary.h"
 #include "ui/app/derived.h"
 #include "ui/app/document.h"
 #include "ui/app/export.h"
+#include "ui/app/loading.h"
 #include "ui/app/log.h"
+#include "ui/app/notices.h"
 #include "ui/app/undo.h"
 #include "ui/app/video.h"
 #include "ui/panels/analysis_panel.h"
@@ -52,67 +55,12 @@ namespace ew::ui {
 class Backdrop;
 class Renderer;
 
-// An open: the paths to load (empty = the synthetic default) and the dropped items that were
-// left out before loading (not motion capture, missing), each with its reason.
-struct OpenRequest {
-  std::vector<std::filesystem::path> paths;
-  std::vector<std::string> refused;
-  std::vector<std::filesystem::path> named;  // every item the user named (empty: `paths`)
-  // The population loaded is shown with the model held (a .ewm opened with nothing else
-  // loaded: the synthetic walkers are inspected against it) instead of its own.
-  bool keepModel = false;
-};
-
-// What the banner over the views says after an open went wrong (ui/panels/notice_panel.h):
-// an open that failed (the previous data stays), or one that succeeded without some of the
-// items the user named.
-struct OpenNotice {
-  bool error = true;     // false: opened, but some items were skipped
-  std::string title;     // "Could not open walk.csv"
-  std::string detail;    // why: the file, where in it, the problem (the opened paths shortened)
-  std::string fullText;  // the same with full paths, as in the log (the banner's tooltip)
-  std::string kept;      // what the viewer still shows
-  std::vector<std::filesystem::path> retryPaths;  // what Retry opens
-  bool canRetry = false;
-  std::uint64_t serial = 0;  // a new notice comes to the front once
-  std::string shortTitle;    // for a row too narrow for the title ("Doubtful camera fit")
-};
-
-// The data shown before a load replaced it, kept until the new data's models are built: a
-// model build that fails puts it back.
-struct LoadedData {
-  std::shared_ptr<const Population> population;
-  std::shared_ptr<const ModelSet> models;
-  std::vector<std::filesystem::path> sourcePaths;
-  int walker = 0;
-  std::vector<double> editedSd, exploreSd;
-  ModelSource modelSource = ModelSource::Population;
-};
-
 struct Jobs {
-  BackgroundJob<std::shared_ptr<const Population>> load;
-  BackgroundJob<std::shared_ptr<const ModelSet>> models;
-  BackgroundJob<std::shared_ptr<const TrackedVideo>> track;  // joints tracked through a video
-  BackgroundJob<std::shared_ptr<const DetectedVideo>> detect;  // people found in a video
   // Slow derived work, kept by the inputs it was computed from (ui/app/async_cache.h).
-  // A keypoint clip's camera fit, by its settings; latest() is the last fit that succeeded
-  // (AppState::clip()), error() why the last one failed (the controls show it).
-  AsyncCache<ClipSettings, ClipResult> clip{1};
   AsyncCache<AnalysisKey, AnalysisResult> analysis{6};  // the analysis panel's curves
   AsyncCache<std::uint64_t, DataSummary> summary{1};    // the Data window's table, by generation
-  // An open requested while a load was running: started when it finishes.
-  std::optional<OpenRequest> pendingOpen;
-  OpenRequest loading;                   // the open under way (or the last one)
-  std::optional<LoadedData> beforeLoad;  // until the models of the new data are built
-  std::string lastError;  // the last failed open or model build ("" once dismissed or opened)
-  std::optional<OpenNotice> notice;  // the banner over the views, until dismissed
-  std::uint64_t noticeSerial = 0;
-  int failures = 0;        // loads or model builds that failed (scripts check it)
 
-  bool busy() const {
-    return load.running() || models.running() || analysis.running() || summary.running() ||
-           clip.running() || track.running() || detect.running() || pendingOpen.has_value();
-  }
+  bool busy() const { return analysis.running() || summary.running(); }
 };
 
 struct Fonts {
@@ -162,20 +110,29 @@ struct Panels {
 };
 
 struct AppState {
-  // Loading, model building or an export under way (scripts wait for it).
+  // A background job running or an open waiting for one: loading, models, a clip's fit, a
+  // track, a detection, the analysis, the data table.
+  bool jobsBusy() const {
+    return loading.busy() || clip.fits.running() || video.track.running() ||
+           video.detect.running() || jobs.busy();
+  }
+  // That, an export, or video frames being read (scripts wait for it).
   bool busy() const {
-    return jobs.busy() || exports.busy() || (video && video->frames && video->frames->pending());
+    return jobsBusy() || exports.busy() ||
+           (video.session && video.session->frames && video.session->frames->pending());
   }
 
   Document doc;
   ViewState view;
   ParameterHistory history;  // undo / redo of the parameters (ui/app/undo.h)
   Derived derived;
-  Jobs jobs;
+  // One struct per feature that has grown one (docs/ARCHITECTURE.md, "The viewer").
+  LoadingFeature loading;  // opening data: the load, the models, the open waiting (loading.h)
+  ClipFeature clip;        // the keypoint clip: its settings, its fits, its zoom (clip.h)
+  VideoFeature video;      // the video open, its track and detection, the detector's choices
+  Notices notices;         // what went wrong: the banner, the last error, the failures (notices.h)
+  Jobs jobs;               // the analysis's and the Data table's slow derived work
   Exports exports;
-  // The last clip fit that succeeded (kept by jobs.clip).
-  const std::shared_ptr<const ClipResult>& clip() const { return jobs.clip.latest(); }
-  std::optional<VideoSession> video;               // the video open (Mode::Clip shows it)
   Log log;
   Fonts fonts;
   Fonts presentationFonts;  // the same, kPresentationTextScale larger

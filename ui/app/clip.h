@@ -1,7 +1,9 @@
 #pragma once
 // A pose estimator's keypoint clip in the viewer (docs/VIEWER.md, "Keypoint clips"): what the
-// user chose for it (the Document's part) and the reconstruction through the unknown camera
+// user chose for it and the reconstruction through the unknown camera
 // (core/camera/clip_reconstruction.h), computed in the background whenever the choice changes.
+// The feature's whole state is one struct, ClipFeature (AppState::clip, at the end); its
+// actions are ui/app/clip_actions.h, its panel ui/panels/clip_controls.h.
 
 #include <filesystem>
 #include <memory>
@@ -12,6 +14,7 @@
 #include "core/keypoints/keypoint_frames.h"
 #include "core/tracking/keyframes.h"
 #include "core/eigenwalker/model.h"
+#include "ui/app/async_cache.h"
 
 namespace ew::ui {
 
@@ -84,5 +87,30 @@ const char* unfittedClipMessage(const std::string& fitError);
 int clipFrameAt(const ClipResult& clip, double cycles);
 // Fixed values the fit held, for captions: "focal 1400 px, elevation 12°" ("" when none).
 std::string heldCameraValues(const ClipSettings& settings);
+
+// [SECTION] The feature's state
+// Everything the viewer keeps of the keypoint clip, in one place (AppState::clip): what the
+// user chose, the fits computed from it, how its 2D view is magnified.
+//
+// Undo: the settings live here, not in the Document, and that changes nothing undo does. Undo
+// restores named parameters (ui/app/undo.h: the walker, α, the overlays, …), not the Document
+// whole, and a clip's settings were never among them: changing one refits, and a new clip
+// starts a new history (undo's context is the clip's path, read from here). Were the settings
+// to become undoable, undo would capture `settings` from this struct, as it captures the
+// overlays from the view state.
+struct ClipFeature {
+  // The clip open (Mode::Clip shows it) and the user's choices for its fit; none: no clip.
+  std::optional<ClipSettings> settings;
+  // Its camera fits, by their settings: latest() is the last that succeeded (fit()), error()
+  // why the last one failed (the clip's controls show it).
+  AsyncCache<ClipSettings, ClipResult> fits{1};
+  // The 2D view magnified `zoom` times (1: the region the walker crosses) about the image
+  // pixel (x right, y down) at its middle; a new clip starts at 1.
+  double zoom = 1.0;
+  double zoomCentreX = 0.0, zoomCentreY = 0.0;
+
+  // The last fit that succeeded (null: none yet).
+  const std::shared_ptr<const ClipResult>& fit() const { return fits.latest(); }
+};
 
 }  // namespace ew::ui

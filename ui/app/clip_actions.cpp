@@ -1,4 +1,4 @@
-// Keypoint clips: opening one, its settings, its camera fit (jobs.clip).
+// Keypoint clips: opening one, its settings, its camera fit (AppState::clip, ui/app/clip.h).
 #include "ui/app/clip_actions.h"
 
 #include <algorithm>
@@ -37,23 +37,19 @@ ClipModel clipModel(AppState& s) {
   return m;
 }
 
-}  // namespace
-
-// Starts the fit the document asks for, unless it is shown, running, or failed already.
+// Starts the fit the clip's settings ask for, unless it is shown, running, or failed already.
 void startClipFit(AppState& s) {
-  if (!s.doc.clip || s.jobs.clip.running()) return;
+  if (!s.clip.settings || s.clip.fits.running()) return;
   const ClipModel model = clipModel(s);
-  if (s.clip() && s.clip()->settings == *s.doc.clip && s.clip()->model == model) return;
-  if (s.jobs.clip.failed(*s.doc.clip)) return;
-  const std::string title = "Fitting the camera of " + describePaths({s.doc.clip->path});
+  if (s.clip.fit() && s.clip.fit()->settings == *s.clip.settings && s.clip.fit()->model == model) return;
+  if (s.clip.fits.failed(*s.clip.settings)) return;
+  const std::string title = "Fitting the camera of " + describePaths({s.clip.settings->path});
   s.log.info(title);
-  s.jobs.clip.start(*s.doc.clip, title, [settings = *s.doc.clip, model](JobProgress& progress) {
+  s.clip.fits.start(*s.clip.settings, title, [settings = *s.clip.settings, model](JobProgress& progress) {
     progress.set(0, 1, "reading and fitting");
     return std::make_shared<const ClipResult>(fitClip(settings, model));
   });
 }
-
-namespace {
 
 // A 3D view that takes in the walker's path and the camera: from the side of the walker's
 // path away from the camera, raised, far enough to hold both.
@@ -77,7 +73,7 @@ void frameClipScene(AppState& s, const ClipResult& c) {
 constexpr const char* kFitCautionTitle = "The fitted camera may be wrong";
 void noticeFitCautions(AppState& s, const ClipResult& c) {
   if (c.rec.cautions.empty()) {
-    if (s.jobs.notice && s.jobs.notice->title.starts_with(kFitCautionTitle)) s.jobs.notice.reset();
+    if (s.notices.banner && s.notices.banner->title.starts_with(kFitCautionTitle)) s.notices.banner.reset();
     return;
   }
   OpenNotice n;
@@ -89,9 +85,7 @@ void noticeFitCautions(AppState& s, const ClipResult& c) {
   showNotice(s, std::move(n));
 }
 
-}  // namespace
-
-// `before`: the fit shown until `c` (jobs.clip keeps `c` as its latest, and clears its failure).
+// `before`: the fit shown until `c` (clip.fits keeps `c` as its latest, and clears its failure).
 void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& before,
               const std::shared_ptr<const ClipResult>& c) {
   const bool newClip = !before || before->settings.path != c->settings.path;
@@ -103,23 +97,23 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& before,
              c->rec.trial.layout->name + "): " + buf);
   for (const auto& w : c->rec.trial.warnings) s.log.warning(w);
   for (const auto& caution : c->rec.cautions) s.log.warning(caution);
-  if (s.jobs.lastError.starts_with("Clip fit failed")) s.jobs.lastError.clear();
+  if (s.notices.lastError.starts_with("Clip fit failed")) s.notices.lastError.clear();
   // A video's track: the fit shows the frame the user is at.
-  if ((c->settings.tracked || c->settings.detected) && s.video) {
+  if ((c->settings.tracked || c->settings.detected) && s.video.session) {
     // A detection's first fit shows the walker halfway through the frames it is seen on.
-    if (c->settings.detected && std::exchange(s.video->showWalkerWhenFitted, false)) {
+    if (c->settings.detected && std::exchange(s.video.session->showWalkerWhenFitted, false)) {
       const auto& t = c->rec.trial;
       if (t.chosen >= 0 && t.chosen < static_cast<int>(t.people.size())) {
         const auto& seen = t.people[static_cast<std::size_t>(t.chosen)].frames;
-        if (!seen.empty()) s.video->frame = seen[seen.size() / 2];
+        if (!seen.empty()) s.video.session->frame = seen[seen.size() / 2];
       }
     }
-    setVideoFrame(s, s.video->frame);
+    setVideoFrame(s, s.video.session->frame);
   }
   if (newClip) {
     dismissNotice(s);
     frameClipScene(s, *c);
-    s.view.clipZoom = 1.0;
+    s.clip.zoom = 1.0;
     std::erase(s.recentPaths, c->settings.path);
     s.recentPaths.insert(s.recentPaths.begin(), c->settings.path);
     if (s.recentPaths.size() > 10) s.recentPaths.resize(10);
@@ -129,33 +123,34 @@ void takeClip(AppState& s, const std::shared_ptr<const ClipResult>& before,
 
 // A fit that failed: at open, a failed open (the clip shown before, if any, stays); after a
 // change of settings, the controls say why and the last fit stays on screen. `running`: the
-// settings that failed (jobs.clip has them as its failed key, and the error).
+// settings that failed (clip.fits has them as its failed key, and the error).
 void clipFailed(AppState& s, const ClipSettings& running, const std::string& error) {
-  ++s.jobs.failures;
-  const bool atOpen = !s.clip() || s.clip()->settings.path != running.path;
+  ++s.notices.failures;
+  const bool atOpen = !s.clip.fit() || s.clip.fit()->settings.path != running.path;
   if (!atOpen) {
-    s.jobs.lastError = "Clip fit failed (" + heldCameraValues(running) + "): " + error;
-    s.log.error(s.jobs.lastError);
+    s.notices.lastError = "Clip fit failed (" + heldCameraValues(running) + "): " + error;
+    s.log.error(s.notices.lastError);
     return;
   }
-  if (error.find(kNeedsImageSize) != std::string::npos && s.doc.clip == running) {
+  if (error.find(kNeedsImageSize) != std::string::npos && s.clip.settings == running) {
     // Points as fractions of an image of unknown size: the clip stays open, its controls ask
     // for the size (no video beside it gave one).
-    s.jobs.clip.reset();
-    s.jobs.lastError = "Give the image size of " + running.path.filename().string();
+    s.clip.fits.reset();
+    s.notices.lastError = "Give the image size of " + running.path.filename().string();
     s.log.error(error);
     OpenNotice n;
-    n.title = s.jobs.lastError + " (the Keypoint clip panel)";
+    n.title = s.notices.lastError + " (the Keypoint clip panel)";
     n.shortTitle = "Image size needed";
     n.detail = n.fullText = error;
     showNotice(s, std::move(n));
     return;
   }
-  if (s.doc.clip == running) {
-    s.doc.clip = s.clip() ? std::optional<ClipSettings>(s.clip()->settings) : std::nullopt;
+  if (s.clip.settings == running) {
+    s.clip.settings = s.clip.fit() ? std::optional<ClipSettings>(s.clip.fit()->settings) : std::nullopt;
     // A video stays shown with its track when the walk cannot be fitted to it (a clip that
     // is not walking): the track is still worth seeing over the footage.
-    if (!s.doc.clip && !s.video && s.doc.mode == Mode::Clip) s.doc.mode = Mode::Reconstruct;
+    if (!s.clip.settings && !s.video.session && s.doc.mode == Mode::Clip)
+      s.doc.mode = Mode::Reconstruct;
   }
   if (running.tracked) {
     // The video opened and tracked; opening it again would not fit the walk either.
@@ -169,6 +164,29 @@ void clipFailed(AppState& s, const ClipSettings& running, const std::string& err
     return;
   }
   reportOpenError(s, {running.path}, error);
+}
+
+}  // namespace
+
+void pollClipFit(AppState& s) {
+  const auto shownFit = s.clip.fit();
+  if (auto done = s.clip.fits.poll()) {
+    if (done->ok()) {
+      takeClip(s, shownFit, done->value);
+    } else {
+      clipFailed(s, done->key, done->error);
+    }
+  }
+}
+
+void refitClip(AppState& s) {
+  try {
+    startClipFit(s);
+  } catch (const std::exception& e) {
+    const ClipSettings settings = *s.clip.settings;  // a copy: clipFailed may change them
+    s.clip.fits.fail(settings, e.what());
+    clipFailed(s, settings, e.what());
+  }
 }
 
 // Opens the first keypoint clip among `paths` and returns the others; further clips are
@@ -195,7 +213,7 @@ std::vector<std::filesystem::path> openClips(AppState& s, std::vector<std::files
   }
   // A calibration goes to the clip opened with it, or to the one open.
   for (const auto& file : calibrations) {
-    if (!s.doc.clip) {
+    if (!s.clip.settings) {
       refused.push_back(file.string() + ": a calibration is for a keypoint clip: open one with it");
       continue;
     }
@@ -242,8 +260,8 @@ std::string calibrationCameraFor(const std::filesystem::path& file, const std::f
 }
 
 ClipSettings& clipSettings(AppState& s) {
-  if (!s.doc.clip) throw std::invalid_argument("no keypoint clip is open");
-  return *s.doc.clip;
+  if (!s.clip.settings) throw std::invalid_argument("no keypoint clip is open");
+  return *s.clip.settings;
 }
 
 }  // namespace
@@ -264,11 +282,11 @@ void openClip(AppState& s, const std::filesystem::path& path) {
   // The clip takes the views' place, as a video opened takes a clip's.
   closeVideo(s);
   // A clip opened again keeps what the user chose for it; its video is looked for again.
-  if (s.doc.clip && s.doc.clip->path == path) settings = *s.doc.clip;
+  if (s.clip.settings && s.clip.settings->path == path) settings = *s.clip.settings;
   settings.video = videoBesideKeypoints(path);
-  s.doc.clip = settings;
+  s.clip.settings = settings;
   s.doc.mode = Mode::Clip;
-  s.jobs.clip.retry();
+  s.clip.fits.retry();
   s.log.info("Opening the keypoint clip " + path.string());
 }
 
@@ -349,15 +367,15 @@ void setClipImageSize(AppState& s, std::optional<KeypointImageSize> size) {
 
 void setClipPerson(AppState& s, int person) {
   if (person < -1) throw std::invalid_argument("person must be -1 (the walker) or a track index");
-  if (s.clip() && person >= static_cast<int>(s.clip()->rec.trial.people.size()))
+  if (s.clip.fit() && person >= static_cast<int>(s.clip.fit()->rec.trial.people.size()))
     throw std::invalid_argument("person " + std::to_string(person) + " out of range (" +
-                                std::to_string(s.clip()->rec.trial.people.size()) + " tracks)");
+                                std::to_string(s.clip.fit()->rec.trial.people.size()) + " tracks)");
   clipSettings(s).person = person;
 }
 
 void setClipFrame(AppState& s, int frame) {
-  if (s.doc.mode != Mode::Clip || !s.clip()) throw std::invalid_argument("no keypoint clip is shown");
-  const ClipResult& c = *s.clip();
+  if (s.doc.mode != Mode::Clip || !s.clip.fit()) throw std::invalid_argument("no keypoint clip is shown");
+  const ClipResult& c = *s.clip.fit();
   if (frame < 1 || frame > c.rec.trial.frameCount)
     throw std::invalid_argument("frame must lie in [1, " + std::to_string(c.rec.trial.frameCount) + "]");
   // Half a frame in, so that the frame shown is this one however the time rounds.
@@ -365,10 +383,18 @@ void setClipFrame(AppState& s, int frame) {
   s.view.playback.playing = false;
 }
 
+void setClipZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
+  if (!s.clip.fit()) throw std::invalid_argument("no keypoint clip is shown");
+  if (!std::isfinite(zoom) || !centrePx.allFinite()) throw std::invalid_argument("clip zoom: not a number");
+  s.clip.zoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
+  s.clip.zoomCentreX = centrePx.x();
+  s.clip.zoomCentreY = centrePx.y();
+}
+
 void closeClip(AppState& s) {
-  s.doc.clip.reset();
-  s.jobs.clip.reset();
-  s.jobs.clip.clearFailure();
+  s.clip.settings.reset();
+  s.clip.fits.reset();
+  s.clip.fits.clearFailure();
   if (s.doc.mode == Mode::Clip) s.doc.mode = Mode::Reconstruct;
 }
 

@@ -8,6 +8,8 @@
 #include <optional>
 #include <string>
 
+#include <Eigen/Core>
+
 #include "ui/app/app_state.h"
 
 namespace ew::ui::actions {
@@ -42,5 +44,8 @@ bool isCalibrationFile(const std::filesystem::path& path);
 void closeClip(AppState& s);
 // Shows the clip's frame `frame` (from 1, as the 2D view's caption counts) and pauses.
 void setClipFrame(AppState& s, int frame);
+// The clip's 2D view magnified `zoom` times (clamped to 1-16, as a video's; 1 shows the region
+// the walker crosses) with the image pixel `centrePx` (x right, y down) at its middle.
+void setClipZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx);
 
 }  // namespace ew::ui::actions

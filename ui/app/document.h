@@ -15,11 +15,9 @@
 
 #include "core/eigenwalker/reconstruction.h"
 #include "core/engines/engine.h"
-#include "ui/app/clip.h"
 #include "ui/app/model_set.h"
 #include "ui/app/population.h"
 #include "ui/render/camera.h"
-#include "video/pose_model_files.h"
 
 namespace ew::ui {
 
@@ -67,8 +65,6 @@ struct Document {
   std::shared_ptr<const Population> inspected;
 
   Mode mode = Mode::Reconstruct;
-  // The keypoint clip opened (Mode::Clip shows it) and the user's choices for its fit.
-  std::optional<ClipSettings> clip;
   // Index into the walkers: the population's first, then the inspected ones.
   int walker = 0;
   ReconstructionSettings recon;
@@ -143,13 +139,6 @@ struct ViewState {
   // Presentation mode (F5): only the two views and the presentation bar. Never saved: every
   // run starts in the workspace.
   bool presentation = false;
-  // A keypoint clip's 2D view magnified `clipZoom` times (1: the region the walker crosses)
-  // about the image pixel (x right, y down) at its middle; a new clip starts at 1.
-  double clipZoom = 1.0;
-  double clipZoomCentreX = 0.0, clipZoomCentreY = 0.0;
-  // A video opened alone (no keyframe file with it) is handed to the built-in detector.
-  bool detectWhenVideoOpens = true;
-  PoseModelSize detectorModel = PoseModelSize::Full;  // BlazePose's landmark model for the next detection
 };
 
 }  // namespace ew::ui

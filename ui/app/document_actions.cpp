@@ -264,7 +264,7 @@ void setCamera(AppState& s, const std::string& preset) {
 }
 
 double playbackStrideHz(const AppState& s) {
-  if (s.doc.mode == Mode::Clip) return s.clip() ? s.clip()->rec.fit.strideHz : 0.9;
+  if (s.doc.mode == Mode::Clip) return s.clip.fit() ? s.clip.fit()->rec.fit.strideHz : 0.9;
   if (s.doc.mode == Mode::Explore) {
     const auto* e = s.derived.explore();
     return e ? e->strideHz : 0.9;

@@ -35,14 +35,14 @@ WalkerMotion displayedWalkerMotion(const AppState& s, std::optional<double> cycl
   double defaultCycles = 4.0;
   WalkerMotion m;
   if (s.doc.mode == Mode::Clip) {
-    if (!s.clip()) throw std::invalid_argument("no keypoint clip fitted yet");
-    const CameraFit& fit = s.clip()->rec.fit;
+    if (!s.clip.fit()) throw std::invalid_argument("no keypoint clip fitted yet");
+    const CameraFit& fit = s.clip.fit()->rec.fit;
     w = &fit.w;
     strideHz = fit.strideHz;
-    defaultCycles = std::max(1.0, s.clip()->rec.gait.cycles);
-    m.description = "reconstruction of the keypoint clip " + s.clip()->settings.path.string() + " through its camera (azimuth " +
+    defaultCycles = std::max(1.0, s.clip.fit()->rec.gait.cycles);
+    m.description = "reconstruction of the keypoint clip " + s.clip.fit()->settings.path.string() + " through its camera (azimuth " +
                     std::to_string(fit.camera.alphaDeg) + " deg, elevation " + std::to_string(fit.camera.elevationDeg) +
-                    " deg), model " + s.clip()->model.name;
+                    " deg), model " + s.clip.fit()->model.name;
   } else if (s.doc.mode == Mode::Reconstruct) {
     const auto* r = s.derived.recon();
     const auto* d = s.derived.display();
@@ -116,7 +116,7 @@ void blitRgb(const std::vector<unsigned char>& rgb, int w, int h, cv::Mat& dst, 
 // tracked joints and the walker drawn back over it (ui/panels/video_view.h).
 void renderFootage(std::optional<VideoSource>& footage, gl::RenderTarget& target, Scene& scene, const AppState& s,
                    Renderer& renderer, float lineScale, int videoFrame, float aspect) {
-  if (!footage) footage.emplace(s.video->path);
+  if (!footage) footage.emplace(s.video.session->path);
   const cv::Mat picture = footage->frame(videoFrame);
   const VideoInfo& info = footage->info();
   const VideoViewFrame view = videoViewFrame(info.widthPx, info.heightPx, aspect);
@@ -195,20 +195,20 @@ bool VideoExport::step(const AppState& s, Renderer& renderer, double budgetMs) {
     const double cycles = static_cast<double>(m.done) * m.strideHz / m.settings.fps;
     const float aspectLeft = static_cast<float>(wl) / static_cast<float>(h);
     int frame = 0;
-    if (s.doc.mode == Mode::Clip && s.clip()) {
+    if (s.doc.mode == Mode::Clip && s.clip.fit()) {
       // A keypoint clip: its input frames in image pixels, the walker where the camera saw it
       // (over the footage, for a tracked video).
-      frame = clipFrameAt(*s.clip(), cycles);
+      frame = clipFrameAt(*s.clip.fit(), cycles);
       if (const auto fit = actions::videoFitFrames(s)) {  // its footage goes under it
         renderFootage(m.footage, m.left, m.scene, s, renderer, lineScale, fit->first + frame, aspectLeft);
       } else {
-        const ClipImageFrame image = clipImageFrame(*s.clip(), aspectLeft);
+        const ClipImageFrame image = clipImageFrame(*s.clip.fit(), aspectLeft);
         buildClipInputScene(s, m.scene, lineScale, frame, image);
         renderer.render(m.left, m.scene, clipInputCamera(image, aspectLeft));
       }
       buildClipReconstructionScene(s, m.scene, lineScale, frame);
       renderer.render(m.right, m.scene,
-                      clipViewCamera(s.view.camera, *s.clip(), frame).matrices(static_cast<float>(wr) / static_cast<float>(h)));
+                      clipViewCamera(s.view.camera, *s.clip.fit(), frame).matrices(static_cast<float>(wr) / static_cast<float>(h)));
     } else {
       buildInputScene(s, m.scene, lineScale, cycles - std::floor(cycles));
       renderer.render(m.left, m.scene, inputViewCamera(aspectLeft));

@@ -126,7 +126,7 @@ namespace {
 GaitReportText gaitReportSubject(const AppState& s) {
   if (s.doc.mode == Mode::Explore) return {"explore", "synthesised"};
   if (s.doc.mode == Mode::Clip)
-    return {s.clip() ? s.clip()->settings.path.filename().string() : std::string(),
+    return {s.clip.fit() ? s.clip.fit()->settings.path.filename().string() : std::string(),
             "eigenwalker through the estimated camera"};
   const Walker* w = s.doc.selectedWalker();
   return {w ? w->id : std::string(), engineName(s.doc.recon.engine)};

@@ -43,11 +43,11 @@ namespace {
 void startLoad(AppState& s, OpenRequest request) {
   const auto paths = request.paths;
   auto completion = paths.empty() ? nullptr : completionModel(s);
-  s.jobs.loading = std::move(request);
+  s.loading.request = std::move(request);
   const std::string title =
       paths.empty() ? "Synthesising the default population" : "Loading " + describePaths(paths);
   s.log.info(title);
-  s.jobs.load.start(title,
+  s.loading.population.start(title,
                     [paths, overrides = s.doc.fileOverrides,
                      completion](JobProgress& progress) -> std::shared_ptr<const Population> {
                       auto report = [&progress](int done, int total, const std::string& what) {
@@ -64,8 +64,8 @@ void startLoad(AppState& s, OpenRequest request) {
 
 // Starts the open now, or once the running load / model build is done.
 void requestOpen(AppState& s, OpenRequest request) {
-  if (s.jobs.load.running() || s.jobs.models.running()) {
-    s.jobs.pendingOpen = std::move(request);
+  if (s.loading.population.running() || s.loading.models.running()) {
+    s.loading.pending = std::move(request);
     return;
   }
   startLoad(s, std::move(request));
@@ -73,7 +73,7 @@ void requestOpen(AppState& s, OpenRequest request) {
 
 void startModels(AppState& s) {
   auto population = s.doc.population;
-  s.jobs.models.start("Building leave-one-out models",
+  s.loading.models.start("Building leave-one-out models",
                       [population](JobProgress& progress) -> std::shared_ptr<const ModelSet> {
                         return std::make_shared<const ModelSet>(buildModelSet(
                             *population, [&progress](int done, int total, const std::string& what) {
@@ -159,7 +159,7 @@ std::vector<std::filesystem::path> openModelFiles(AppState& s,
       holdModel(s, readModelFile(p));
       dismissNotice(s);
     } catch (const std::exception& e) {
-      ++s.jobs.failures;
+      ++s.notices.failures;
       reportOpenError(s, {p}, e.what());
     }
   }
@@ -170,7 +170,7 @@ std::vector<std::filesystem::path> openModelFiles(AppState& s,
 // population: always while a saved or default model is held; with the population's model,
 // when they are too few for a leave-one-out population of their own.
 bool inspectLoaded(const AppState& s, const Population& loaded) {
-  if (s.jobs.loading.paths.empty()) return false;  // the synthetic default population
+  if (s.loading.request.paths.empty()) return false;  // the synthetic default population
   // A model is not built from its own estimates: completed trials are always inspected.
   return s.doc.modelSource != ModelSource::Population || loaded.walkerCount() < kMinPopulation ||
          hasModelEstimated(loaded);
@@ -207,26 +207,26 @@ void addInspected(AppState& s, const Population& loaded) {
 // A load finished: the new population (its models built next), or walkers to inspect.
 void takeLoaded(AppState& s, const std::shared_ptr<const Population>& pop) {
   dismissNotice(s);
-  for (const auto& w : s.jobs.loading.refused) s.log.warning("skipped: " + w);
+  for (const auto& w : s.loading.request.refused) s.log.warning("skipped: " + w);
   for (const auto& w : pop->warnings) s.log.warning(w);
   if (inspectLoaded(s, *pop)) {
     addInspected(s, *pop);
-    noticeSkipped(s, s.jobs.loading, *pop);
+    noticeSkipped(s, s.loading.request, *pop);
     return;
   }
   // What was shown stays until the new models are built (a failed build puts it back).
-  if (s.doc.population) s.jobs.beforeLoad = loadedData(s.doc);
+  if (s.doc.population) s.loading.before = loadedData(s.doc);
   s.doc.population = pop;
   s.doc.models.reset();
-  if (!s.jobs.loading.keepModel) s.doc.modelSource = ModelSource::Population;
-  s.doc.sourcePaths = s.jobs.loading.paths;
+  if (!s.loading.request.keepModel) s.doc.modelSource = ModelSource::Population;
+  s.doc.sourcePaths = s.loading.request.paths;
   ++s.doc.generation;
   s.doc.walker = 0;
   s.doc.editedSd.clear();
   s.doc.exploreSd.clear();
   s.doc.exploreOmegaOffsetRadS = 0.0;
   s.log.info("Loaded " + pop->label + ": " + std::to_string(pop->walkerCount()) + " walkers");
-  noticeSkipped(s, s.jobs.loading, *pop);
+  noticeSkipped(s, s.loading.request, *pop);
   startModels(s);
 }
 
@@ -249,7 +249,7 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
       try {
         openVideo(s, p);
       } catch (const std::exception& e) {
-        ++s.jobs.failures;
+        ++s.notices.failures;
         reportOpenError(s, {p}, e.what());
         opened = false;
         return rest;
@@ -257,12 +257,12 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
     }
   }
   // A video alone goes to the detector; with its keyframes, it is for marking and tracking.
-  if (opened && keyframeFiles.empty() && s.view.detectWhenVideoOpens) {
+  if (opened && keyframeFiles.empty() && s.video.detectWhenOpens) {
     try {
       startDetection(s);
     } catch (const std::exception& e) {
       // The video is open all the same: its joints can be marked and tracked.
-      const bool noModels = s.video && !s.video->detectError.empty();
+      const bool noModels = s.video.session && !s.video.session->detectError.empty();
       reportNote(s, noModels ? "Detecting people needs the pose models" : "Detection did not start", e.what(),
                  noModels ? "Pose models missing" : "");
     }
@@ -274,13 +274,14 @@ std::vector<std::filesystem::path> openVideos(AppState& s, std::vector<std::file
       const Keyframes named = readKeyframes(k);
       const auto beside = k.parent_path() / named.video;
       const bool besideExists = !named.video.empty() && std::filesystem::exists(beside);
-      if (!s.video && !besideExists)
+      if (!s.video.session && !besideExists)
         throw std::invalid_argument(k.string() + ": open the video the keyframes were marked on first");
-      if (!s.video || (!opened && besideExists && s.video->path.filename() != named.video))
+      if (!s.video.session ||
+          (!opened && besideExists && s.video.session->path.filename() != named.video))
         openVideo(s, beside);
       loadKeyframes(s, k);
     } catch (const std::exception& e) {
-      ++s.jobs.failures;
+      ++s.notices.failures;
       reportOpenError(s, {k}, e.what());
     }
   }
@@ -302,19 +303,19 @@ void open(AppState& s, std::vector<std::filesystem::path> paths) {
   for (const auto& r : request.refused) s.log.warning("skipped: " + r);
   if (hadPaths && request.paths.empty()) {
     // Only a clip or a video: the synthetic walkers load too when nothing is, for the other modes.
-    if (!s.doc.population && !s.jobs.busy()) requestOpen(s, OpenRequest{});
+    if (!s.doc.population && !s.jobsBusy()) requestOpen(s, OpenRequest{});
     return;
   }
   if (onlyModels) {
     // A model alone, with nothing to inspect yet: the synthetic walkers, against it.
-    if (s.doc.walkerCount() > 0 || s.jobs.busy() || s.doc.modelSource != ModelSource::File) return;
+    if (s.doc.walkerCount() > 0 || s.jobsBusy() || s.doc.modelSource != ModelSource::File) return;
     request.keepModel = true;
   }
   requestOpen(s, std::move(request));
 }
 
 void pollJobs(AppState& s) {
-  if (auto outcome = s.jobs.load.poll()) {
+  if (auto outcome = s.loading.population.poll()) {
     bool taken = false;
     if (outcome->value) {
       try {
@@ -325,19 +326,19 @@ void pollJobs(AppState& s) {
       }
     }
     if (!taken) {
-      ++s.jobs.failures;
+      ++s.notices.failures;
       std::string why = outcome->error;
-      for (const auto& r : s.jobs.loading.refused) why += "\nalso skipped: " + r;
-      reportOpenError(s, s.jobs.loading.paths, why);
+      for (const auto& r : s.loading.request.refused) why += "\nalso skipped: " + r;
+      reportOpenError(s, s.loading.request.paths, why);
       const auto& named =
-          s.jobs.loading.named.empty() ? s.jobs.loading.paths : s.jobs.loading.named;
-      s.jobs.notice->detail = shortenPaths(why, named);
+          s.loading.request.named.empty() ? s.loading.request.paths : s.loading.request.named;
+      s.notices.banner->detail = shortenPaths(why, named);
     }
   }
-  if (auto outcome = s.jobs.models.poll()) {
+  if (auto outcome = s.loading.models.poll()) {
     if (outcome->value) {
       s.doc.models = *outcome->value;
-      s.jobs.beforeLoad.reset();
+      s.loading.before.reset();
       for (auto it = s.doc.sourcePaths.rbegin(); it != s.doc.sourcePaths.rend(); ++it) {
         std::erase(s.recentPaths, *it);
         s.recentPaths.insert(s.recentPaths.begin(), *it);
@@ -347,32 +348,19 @@ void pollJobs(AppState& s) {
                  " leave-one-out models and the full model (" +
                  std::to_string(s.doc.models->all.walkerCount()) + " walkers)");
     } else {
-      ++s.jobs.failures;
+      ++s.notices.failures;
       // The new data cannot be shown without its models: back to what was shown before.
       const std::string what = s.doc.population ? s.doc.population->label : std::string("the data");
-      restoreData(s, s.jobs.beforeLoad ? std::move(*s.jobs.beforeLoad) : LoadedData{});
-      s.jobs.beforeLoad.reset();
+      restoreData(s, s.loading.before ? std::move(*s.loading.before) : LoadedData{});
+      s.loading.before.reset();
       reportError(s, "Could not build the models for " + what, outcome->error);
-      s.jobs.notice->retryPaths = s.jobs.loading.paths;
-      s.jobs.notice->canRetry = true;
+      s.notices.banner->retryPaths = s.loading.request.paths;
+      s.notices.banner->canRetry = true;
     }
   }
-  const auto shownFit = s.clip();
-  if (auto done = s.jobs.clip.poll()) {
-    if (done->ok()) {
-      takeClip(s, shownFit, done->value);
-    } else {
-      clipFailed(s, done->key, done->error);
-    }
-  }
-  pollVideo(s);
-  try {
-    startClipFit(s);
-  } catch (const std::exception& e) {
-    const ClipSettings settings = *s.doc.clip;  // a copy: clipFailed may change doc.clip
-    s.jobs.clip.fail(settings, e.what());
-    clipFailed(s, settings, e.what());
-  }
+  pollClipFit(s);
+  pollVideo(s);  // may give the clip a new track to fit
+  refitClip(s);
   if (auto done = s.jobs.summary.poll(); done && !done->ok())
     s.log.error("Data summary failed: " + done->error);
   if (auto done = s.jobs.analysis.poll()) {
@@ -385,9 +373,9 @@ void pollJobs(AppState& s) {
       s.log.error("Analysis failed: " + done->error);
     }
   }
-  if (s.jobs.pendingOpen && !s.jobs.load.running() && !s.jobs.models.running()) {
-    auto request = std::move(*s.jobs.pendingOpen);
-    s.jobs.pendingOpen.reset();
+  if (s.loading.pending && !s.loading.population.running() && !s.loading.models.running()) {
+    auto request = std::move(*s.loading.pending);
+    s.loading.pending.reset();
     startLoad(s, std::move(request));
   }
 }
@@ -470,7 +458,7 @@ void writeJointMapping(AppState& s, const std::filesystem::path& file,
 }
 
 void requestDataSummary(AppState& s) {
-  if (!s.doc.population || s.jobs.load.running() || s.jobs.summary.running()) return;
+  if (!s.doc.population || s.loading.population.running() || s.jobs.summary.running()) return;
   auto paths = s.doc.sourcePaths;
   auto overrides = s.doc.fileOverrides;
   const auto generation = s.doc.generation;

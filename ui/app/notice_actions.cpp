@@ -61,8 +61,8 @@ std::string shortenPaths(std::string message, const std::vector<std::filesystem:
 }
 
 void showNotice(AppState& s, OpenNotice notice) {
-  notice.serial = ++s.jobs.noticeSerial;
-  s.jobs.notice = std::move(notice);
+  notice.serial = ++s.notices.serial;
+  s.notices.banner = std::move(notice);
 }
 
 std::string describePaths(const std::vector<std::filesystem::path>& paths) {
@@ -76,12 +76,12 @@ std::string describePaths(const std::vector<std::filesystem::path>& paths) {
 }
 
 void reportError(AppState& s, const std::string& title, const std::string& detail) {
-  s.jobs.lastError = detail.empty() ? title : title + ": " + detail;
-  s.log.error(s.jobs.lastError);
+  s.notices.lastError = detail.empty() ? title : title + ": " + detail;
+  s.log.error(s.notices.lastError);
   OpenNotice n;
   n.title = title;
   n.detail = detail;
-  n.fullText = s.jobs.lastError;
+  n.fullText = s.notices.lastError;
   n.kept = keptDescription(s);
   showNotice(s, std::move(n));
 }
@@ -99,14 +99,14 @@ void reportNote(AppState& s, const std::string& title, const std::string& detail
 void reportOpenError(AppState& s, const std::vector<std::filesystem::path>& paths,
                      const std::string& message) {
   reportError(s, "Could not open " + describePaths(paths), message);
-  s.jobs.notice->detail = shortenPaths(message, paths);
-  s.jobs.notice->retryPaths = paths;
-  s.jobs.notice->canRetry = true;
+  s.notices.banner->detail = shortenPaths(message, paths);
+  s.notices.banner->retryPaths = paths;
+  s.notices.banner->canRetry = true;
 }
 
 void dismissNotice(AppState& s) {
-  s.jobs.notice.reset();
-  s.jobs.lastError.clear();
+  s.notices.banner.reset();
+  s.notices.lastError.clear();
 }
 
 }  // namespace ew::ui::actions

@@ -82,16 +82,16 @@ void ScriptRunner::step(AppState& s) {
   if (waits_.checkLoad) {
     waits_.checkLoad = false;
     const bool expected = std::exchange(waits_.expectFailure, false);
-    if (expected && s.jobs.failures == waits_.failuresBefore) {
+    if (expected && s.notices.failures == waits_.failuresBefore) {
       error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) +
                " (expect_failure): the open was expected to fail, but it succeeded";
       return;
     }
     if (expected) {
       s.log.info("script: failed as expected");
-    } else if (s.jobs.failures != waits_.failuresBefore) {
+    } else if (s.notices.failures != waits_.failuresBefore) {
       error_ = name_ + ": action " + std::to_string(actions_[next_ - 1].position) + " (" +
-               actions_[next_ - 1].name + "): " + s.jobs.lastError;
+               actions_[next_ - 1].name + "): " + s.notices.lastError;
       return;
     }
   }

@@ -25,7 +25,7 @@ struct ScriptWaits {
   int frames = 0;            // frames to draw before the next action (wait_frames, mouse)
   std::optional<std::filesystem::path> capture;  // a screenshot, once the work is done
 
-  // The work just started: its failure (jobs.failures moving on) fails the script.
+  // The work just started: its failure (notices.failures moving on) fails the script.
   void load(const AppState& s);
 };
 

@@ -15,7 +15,7 @@
 namespace ew::ui {
 
 void ScriptWaits::load(const AppState& s) {
-  failuresBefore = s.jobs.failures;
+  failuresBefore = s.notices.failures;
   checkLoad = true;
 }
 
@@ -34,7 +34,7 @@ void setMode(AppState& s, const A& a, W&) {
   } else if (m == "explore") {
     actions::setMode(s, Mode::Explore);
   } else if (m == "clip") {
-    if (!s.doc.clip) throw std::invalid_argument("no keypoint clip is open");
+    if (!s.clip.settings) throw std::invalid_argument("no keypoint clip is open");
     actions::setMode(s, Mode::Clip);
   } else {
     throw std::invalid_argument("mode must be \"reconstruct\", \"explore\" or \"clip\"");
@@ -59,8 +59,8 @@ void zoom(AppState& s, const A& a, W&) {
 // undo_keyframes, redo_keyframes, remove_keyframe: a detected video's corrections changed, and
 // the script waits for the fit again.
 void keyframesEdited(AppState& s, W& w) {
-  w.failuresBefore = s.jobs.failures;
-  w.checkLoad = actions::correctsDetections(s) && !s.video->marking;
+  w.failuresBefore = s.notices.failures;
+  w.checkLoad = actions::correctsDetections(s) && !s.video.session->marking;
 }
 
 // {"first": F, "last": L[, "tracker": "flow" | "appearance"][, "flatten_background": B]
@@ -115,14 +115,15 @@ void detectVideo(AppState& s, const A& a, W& w) {
   const std::filesystem::path video = object ? arg["path"].get<std::string>() : arg.get<std::string>();
   if (!isVideoFile(video)) throw std::invalid_argument(video.string() + ": not a video (.mp4 .avi .mov …)");
   w.load(s);
-  const bool onOpen = std::exchange(s.view.detectWhenVideoOpens, true);
+  const bool onOpen = std::exchange(s.video.detectWhenOpens, true);
   actions::open(s, {video});
-  s.view.detectWhenVideoOpens = onOpen;
-  if (s.jobs.failures != w.failuresBefore) return;  // the video did not open: said as a failed open
-  if (!s.jobs.detect.running()) {
+  s.video.detectWhenOpens = onOpen;
+  if (s.notices.failures != w.failuresBefore) return;  // the video did not open: said as a failed open
+  if (!s.video.detect.running()) {
     w.checkLoad = false;
-    throw std::invalid_argument(s.video && !s.video->detectError.empty() ? s.video->detectError
-                                                                         : "the detection did not start");
+    throw std::invalid_argument(s.video.session && !s.video.session->detectError.empty()
+                                    ? s.video.session->detectError
+                                    : "the detection did not start");
   }
 }
 
@@ -140,7 +141,7 @@ void writeJointMapping(AppState& s, const A& a, W& w) {
   const std::string out = arg["out"].get<std::string>();
   tab.outPath.fill('\0');
   out.copy(tab.outPath.data(), tab.outPath.size() - 1);
-  w.failuresBefore = s.jobs.failures;
+  w.failuresBefore = s.notices.failures;
   tab.write(s, openNow);
   w.checkLoad = openNow;
 }
@@ -347,7 +348,7 @@ const ScriptActionKind kActions[] = {
   // The next action comes a frame after this one is seen.
   {"mouse", [](AppState& s, const A& a, W& w) { applyMouse(s, a.argument); w.frames = 1; }, true, true},
   // Keypoint clips: a refit runs in the background, and its failure fails the script.
-  {"set_clip", [](AppState& s, const A& a, W& w) { applyClipSettings(s, a); w.failuresBefore = s.jobs.failures; w.checkLoad = true; }, false, true},
+  {"set_clip", [](AppState& s, const A& a, W& w) { applyClipSettings(s, a); w.failuresBefore = s.notices.failures; w.checkLoad = true; }, false, true},
   {"close_clip", [](AppState& s, const A&, W&) { actions::closeClip(s); }},
   {"set_frame", [](AppState& s, const A& a, W&) {
      const double v = number(a);
@@ -375,7 +376,7 @@ const ScriptActionKind kActions[] = {
      if (!a.argument.is_object() || a.argument.size() != 1)
        throw std::invalid_argument(R"(expects {"joint name": [x, y]})");
      markJoints(s, a);
-     w.failuresBefore = s.jobs.failures;
+     w.failuresBefore = s.notices.failures;
      w.checkLoad = actions::letGoOfJoint(s);
    }, true},
   {"track_video", trackVideo, true},

@@ -47,8 +47,11 @@ void nextEngine(AppState& s) {
 
 // The clip or video view, when one is open (as the Controls panel's third mode button).
 void clipMode(AppState& s) {
-  if (s.doc.clip || s.video) actions::setMode(s, Mode::Clip);
+  if (s.clip.settings || s.video.session) actions::setMode(s, Mode::Clip);
 }
+
+// A video's joints being marked (the keys S and Enter answer only then).
+bool markingVideo(const AppState& s) { return s.video.session && s.video.session->marking; }
 
 
 // F12: a PNG of the window in the export folder, named with the time so none is overwritten.
@@ -111,8 +114,8 @@ std::vector<ShortcutRow> makeRows() {
         key(GLFW_KEY_3, [](AppState& s) { actions::setCamera(s, "top"); }),
         key(GLFW_KEY_4, [](AppState& s) { actions::setCamera(s, "three_quarter"); })}},
       {"S / Enter", "marking a video's joints: skip the joint asked for (hidden) / done",
-       {key(GLFW_KEY_S, [](AppState& s) { if (s.video && s.video->marking) actions::skipMarkedJoint(s); }),
-        key(GLFW_KEY_ENTER, [](AppState& s) { if (s.video && s.video->marking) actions::stopMarking(s); })}},
+       {key(GLFW_KEY_S, [](AppState& s) { if (markingVideo(s)) actions::skipMarkedJoint(s); }),
+        key(GLFW_KEY_ENTER, [](AppState& s) { if (markingVideo(s)) actions::stopMarking(s); })}},
       {"P", "point-light display on / off (dots only)",
        {key(GLFW_KEY_P, [](AppState& s) { s.view.overlays.pointLights = !s.view.overlays.pointLights; })}},
       {"Ctrl+Z", "undo the last change of a setting (marking a video's joints: of the keyframes)",

@@ -134,8 +134,8 @@ nlohmann::json frameJointsJson(const KeypointTrial& t, int frame) {
 
 // The keypoint clip: what the user chose, and the last fit (camera, walk, residuals).
 nlohmann::json clipJson(const AppState& s) {
-  if (!s.doc.clip) return nullptr;
-  const ClipSettings& c = *s.doc.clip;
+  if (!s.clip.settings) return nullptr;
+  const ClipSettings& c = *s.clip.settings;
   nlohmann::json j = {{"path", c.path.string()},
                       {"layout_chosen", c.layout},
                       {"fps_chosen", c.fps},
@@ -147,11 +147,11 @@ nlohmann::json clipJson(const AppState& s) {
                       {"azimuth_deg_fixed", optionalJson(c.alphaDeg)},
                       {"elevation_deg_fixed", optionalJson(c.elevationDeg)},
                       {"image_size_given", imageSizeJson(c.imageSize)},
-                      {"fit_error", s.jobs.clip.error()},
+                      {"fit_error", s.clip.fits.error()},
                       {"source", c.tracked ? "track" : c.detected ? "detections" : "file"},
                       {"corrections", c.corrections ? c.corrections->keyframes.size() : 0}};
-  if (!s.clip()) return j;
-  const ClipResult& r = *s.clip();
+  if (!s.clip.fit()) return j;
+  const ClipResult& r = *s.clip.fit();
   const CameraFit& f = r.rec.fit;
   const bool pinhole = f.camera.model == CameraModel::Pinhole;
   std::vector<double> residuals(r.rec.residualRmsPx.begin(), r.rec.residualRmsPx.end());
@@ -194,8 +194,8 @@ nlohmann::json clipJson(const AppState& s) {
 
 // The video open: its frames, the keyframes marked and the last track.
 nlohmann::json videoJson(const AppState& s) {
-  if (!s.video) return nullptr;
-  const VideoSession& v = *s.video;
+  if (!s.video.session) return nullptr;
+  const VideoSession& v = *s.video.session;
   const VideoInfo& i = v.frames->info();
   nlohmann::json keyframes = nlohmann::json::array();
   for (const auto& k : v.keyframes.keyframes)
@@ -221,11 +221,11 @@ nlohmann::json videoJson(const AppState& s) {
                       {"flatten_background", v.flattenBackground},
                       {"hold_trunk", v.holdTheTrunk},
                       {"model_loop", v.modelLoopRounds}};
-  j["detection"] = {{"running", s.jobs.detect.running()},
-                    {"model", std::string(poseModelSizeName(s.view.detectorModel))},
+  j["detection"] = {{"running", s.video.detect.running()},
+                    {"model", std::string(poseModelSizeName(s.video.detectorModel))},
                     {"error", v.detectError},
                     {"shows_fit", actions::showsDetectionFit(s)},
-                    {"when_opened", s.view.detectWhenVideoOpens}};
+                    {"when_opened", s.video.detectWhenOpens}};
   if (v.detecting) j["detection"]["latest_frame"] = v.detecting->latestFrame();
   if (v.detected) {
     const DetectedVideo& d = *v.detected;
@@ -412,7 +412,7 @@ nlohmann::json stateJson(const AppState& s) {
         {"distance_mm", v.camera.distanceMm}}},
       {"point_lights", v.overlays.pointLights},
       {"presentation", v.presentation},
-      {"clip_zoom", v.clipZoom}};
+      {"clip_zoom", s.clip.zoom}};
   j["layout"] = layoutJson(s.lastFrame);
   // Beside the last frame's layout: a record of the frames drawn, not of the session (tests that
   // compare two sessions' states leave "layout" out).
@@ -427,10 +427,10 @@ nlohmann::json stateJson(const AppState& s) {
   j["tour"] = s.panels.tour.active ? nlohmann::json{{"step", s.panels.tour.step}, {"text_folded", s.panels.tour.folded}}
                                    : nlohmann::json();
   j["busy"] = s.busy();
-  j["failures"] = s.jobs.failures;
-  j["error"] = s.jobs.lastError;
-  if (s.jobs.notice) {
-    const auto& n = *s.jobs.notice;
+  j["failures"] = s.notices.failures;
+  j["error"] = s.notices.lastError;
+  if (s.notices.banner) {
+    const auto& n = *s.notices.banner;
     j["notice"] = {{"level", n.error ? "error" : "warning"},
                    {"title", n.title},
                    {"detail", n.detail},

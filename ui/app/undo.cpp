@@ -21,7 +21,9 @@ Parameters captureParameters(const AppState& s) {
 
 ParameterContext captureParameterContext(const AppState& s) {
   const Document& d = s.doc;
-  const std::string clip = s.video ? s.video->path.string() : d.clip ? d.clip->path.string() : std::string();
+  const std::string clip = s.video.session   ? s.video.session->path.string()
+                           : s.clip.settings ? s.clip.settings->path.string()
+                                             : std::string();
   return {d.generation, d.modelSource, d.modelFile, d.inspected.get(), clip};
 }
 
@@ -30,7 +32,8 @@ void restoreParameters(AppState& s, const Parameters& p) {
   const int walker = std::clamp(p.walker, 0, std::max(0, d.walkerCount() - 1));
   if (walker != d.walker) s.panels.subjects.scrollToSelection = true;  // bring it into the list's view
   d.walker = walker;
-  d.mode = p.mode == Mode::Clip && !d.clip && !s.video ? Mode::Reconstruct : p.mode;
+  d.mode =
+      p.mode == Mode::Clip && !s.clip.settings && !s.video.session ? Mode::Reconstruct : p.mode;
   const double sigma2 = d.recon.sigma2Mm2;
   d.recon = p.recon;
   d.sigma2Chosen = p.sigma2Chosen;
@@ -92,7 +95,9 @@ std::optional<Parameters> ParameterHistory::redo(const Parameters& now) {
 
 namespace {
 
-bool marking(const AppState& s) { return s.video && s.video->marking && s.doc.mode == Mode::Clip; }
+bool marking(const AppState& s) {
+  return s.video.session && s.video.session->marking && s.doc.mode == Mode::Clip;
+}
 
 // The history brought up to date (a load just finished: a new context) before stepping in it.
 void observeSettled(AppState& s) { s.history.observe(captureParameters(s), captureParameterContext(s), true); }
@@ -101,7 +106,7 @@ void observeSettled(AppState& s) { s.history.observe(captureParameters(s), captu
 
 void undo(AppState& s) {
   if (marking(s)) {
-    if (!s.video->undo.empty()) actions::undoKeyframes(s);
+    if (!s.video.session->undo.empty()) actions::undoKeyframes(s);
     return;
   }
   observeSettled(s);
@@ -110,7 +115,7 @@ void undo(AppState& s) {
 
 void redo(AppState& s) {
   if (marking(s)) {
-    if (!s.video->redo.empty()) actions::redoKeyframes(s);
+    if (!s.video.session->redo.empty()) actions::redoKeyframes(s);
     return;
   }
   observeSettled(s);
@@ -118,11 +123,11 @@ void redo(AppState& s) {
 }
 
 bool canUndo(const AppState& s) {
-  return marking(s) ? !s.video->undo.empty() : s.history.undoSteps() > 0;
+  return marking(s) ? !s.video.session->undo.empty() : s.history.undoSteps() > 0;
 }
 
 bool canRedo(const AppState& s) {
-  return marking(s) ? !s.video->redo.empty() : s.history.redoSteps() > 0;
+  return marking(s) ? !s.video.session->redo.empty() : s.history.redoSteps() > 0;
 }
 
 }  // namespace ew::ui

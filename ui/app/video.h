@@ -16,6 +16,7 @@
 #include "core/eigenwalker/model.h"
 #include "core/keypoints/keypoint_trial.h"
 #include "core/tracking/keyframes.h"
+#include "ui/app/background_job.h"
 #include "ui/app/detection.h"
 #include "video/frame_cache.h"
 #include "video/joint_tracker.h"
@@ -133,5 +134,21 @@ TrackedVideo trackAgainBetween(const TrackedVideo& previous, const Keyframes& ke
 
 // True for the file names a video has (.mp4, .avi, .mov, .mkv, .webm, .m4v, .mpg, .mpeg).
 bool isVideoFile(const std::filesystem::path& path);
+
+// [SECTION] The feature's state
+// Everything the viewer keeps of videos, in one place (AppState::video): the video open, the
+// track and the detection that run for it, and the detector's choices, which outlast a video.
+// Its actions are ui/app/video_actions.h (and video_poll.h), its panels video_controls,
+// video_view and input_view_video. A video's fit is the keypoint clip's (ClipFeature, clip.h):
+// a track or a detection is fitted as a clip is.
+struct VideoFeature {
+  std::optional<VideoSession> session;  // the video open (Mode::Clip shows it); none: no video
+  BackgroundJob<std::shared_ptr<const TrackedVideo>> track;    // joints tracked through it
+  BackgroundJob<std::shared_ptr<const DetectedVideo>> detect;  // people found in it
+  // A video opened alone (no keyframe file with it) is handed to the built-in detector.
+  bool detectWhenOpens = true;
+  PoseModelSize detectorModel =
+      PoseModelSize::Full;  // BlazePose's landmark model for the next detection
+};
 
 }  // namespace ew::ui

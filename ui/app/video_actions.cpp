@@ -26,8 +26,8 @@ namespace {
 constexpr std::size_t kUndoDepth = 200;
 
 VideoSession& session(AppState& s) {
-  if (!s.video) throw std::invalid_argument("no video is open");
-  return *s.video;
+  if (!s.video.session) throw std::invalid_argument("no video is open");
+  return *s.video.session;
 }
 
 // Records the keyframes as they are before an edit.
@@ -73,7 +73,7 @@ Keyframe& keyframeHere(VideoSession& v) {
 // The keyframes edited: on a detected video, its track redone around them and fitted again
 // (marks placed while guided marking runs wait for Done).
 void keyframesEdited(AppState& s) {
-  if (actions::correctsDetections(s) && !s.video->marking) actions::fitDetections(s);
+  if (actions::correctsDetections(s) && !s.video.session->marking) actions::fitDetections(s);
 }
 
 }  // namespace
@@ -86,15 +86,15 @@ void openVideo(AppState& s, const std::filesystem::path& path) {
     throw std::invalid_argument(e.what());
   }
   closeVideo(s);
-  if (s.doc.clip) closeClip(s);
+  if (s.clip.settings) closeClip(s);
   VideoSession v;
   v.path = path;
   v.frames = std::move(frames);
   v.keyframes.video = path.filename().string();
-  s.video = std::move(v);
+  s.video.session = std::move(v);
   s.doc.mode = Mode::Clip;
   s.view.playback.playing = false;
-  const VideoInfo& i = s.video->frames->info();
+  const VideoInfo& i = s.video.session->frames->info();
   s.log.info("Opened the video " + path.string() + ": " + std::to_string(i.widthPx) + "×" +
              std::to_string(i.heightPx) + ", " + std::to_string(i.frameCount) + " frames at " +
              std::to_string(i.fps).substr(0, 5) + " fps");
@@ -169,10 +169,10 @@ void saveTrack(AppState& s, const std::filesystem::path& dir) {
 }
 
 int neighbouringKeyframe(const AppState& s, int delta) {
-  if (!s.video || delta == 0) return -1;
+  if (!s.video.session || delta == 0) return -1;
   const int shown = shownVideoFrame(s);
   int best = -1;
-  for (const Keyframe& k : s.video->keyframes.keyframes) {
+  for (const Keyframe& k : s.video.session->keyframes.keyframes) {
     const bool way = delta > 0 ? k.frame > shown : k.frame < shown;
     const bool nearer = best < 0 || (delta > 0 ? k.frame < best : k.frame > best);
     if (way && nearer) best = k.frame;
@@ -194,19 +194,22 @@ int firstOr(const std::vector<int>& frames) { return frames.empty() ? -1 : frame
 }  // namespace
 
 int leastSureTrackedFrame(const AppState& s) {
-  if (!s.video || !s.video->tracked) return -1;
-  const TrackedVideo& t = *s.video->tracked;
-  return firstOr(leastSureFrames(t.meanConfidence, t.track.firstFrame, keyframeFrames(*s.video), 1, 1));
+  if (!s.video.session || !s.video.session->tracked) return -1;
+  const TrackedVideo& t = *s.video.session->tracked;
+  return firstOr(leastSureFrames(t.meanConfidence, t.track.firstFrame,
+                                 keyframeFrames(*s.video.session), 1, 1));
 }
 
 int nextFrameToMark(const AppState& s) {
-  if (!s.video || !s.video->tracked) return -1;
-  const TrackedVideo& t = *s.video->tracked;
-  return firstOr(framesToMarkNextAlong(t.cumulativeMotionPx, t.track.firstFrame, keyframeFrames(*s.video), 1));
+  if (!s.video.session || !s.video.session->tracked) return -1;
+  const TrackedVideo& t = *s.video.session->tracked;
+  return firstOr(framesToMarkNextAlong(t.cumulativeMotionPx, t.track.firstFrame,
+                                       keyframeFrames(*s.video.session), 1));
 }
 
 std::filesystem::path defaultTrackFolder(const AppState& s) {
-  return s.video ? std::filesystem::path(s.video->path.stem().string() + "_track") : "track";
+  return s.video.session ? std::filesystem::path(s.video.session->path.stem().string() + "_track")
+                         : "track";
 }
 
 void setVideoZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
@@ -216,14 +219,6 @@ void setVideoZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
   v.zoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
   const VideoInfo& i = v.frames->info();
   v.zoomCentrePx = centrePx.cwiseMax(0.0).cwiseMin(Eigen::Vector2d(i.widthPx, i.heightPx));
-}
-
-void setClipZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx) {
-  if (!s.clip()) throw std::invalid_argument("no keypoint clip is shown");
-  if (!std::isfinite(zoom) || !centrePx.allFinite()) throw std::invalid_argument("clip zoom: not a number");
-  s.view.clipZoom = std::clamp(zoom, 1.0, kMaxVideoZoom);
-  s.view.clipZoomCentreX = centrePx.x();
-  s.view.clipZoomCentreY = centrePx.y();
 }
 
 void setVideoFrame(AppState& s, int frame) {
@@ -279,10 +274,10 @@ bool letGoOfJoint(AppState& s) {
     return true;
   }
   if (!v.tracked) return false;
-  if (s.jobs.track.running()) {
+  if (s.video.track.running()) {
     // The running track is of the keyframes before this edit: stopped, and started again.
     v.trackAgainWhenStopped = true;
-    s.jobs.track.cancel();
+    s.video.track.cancel();
     return false;
   }
   startTracking(s);
@@ -387,8 +382,9 @@ std::function<bool(double)> frameProgress(JobProgress& p, int first, int last) {
 
 void startTracking(AppState& s) {
   VideoSession& v = session(s);
-  if (s.jobs.track.running()) throw std::invalid_argument("a track is running");
-  if (s.jobs.detect.running()) throw std::invalid_argument("a detection is running: wait for it, or cancel it");
+  if (s.video.track.running()) throw std::invalid_argument("a track is running");
+  if (s.video.detect.running())
+    throw std::invalid_argument("a detection is running: wait for it, or cancel it");
   const int last = v.lastFrame < 0 ? v.frameCount() - 1 : v.lastFrame;
   const bool any = std::any_of(
       v.keyframes.keyframes.begin(), v.keyframes.keyframes.end(), [&](const Keyframe& k) {
@@ -407,7 +403,8 @@ void startTracking(AppState& s) {
       const std::string title = "Tracking " + v.path.filename().string() + " again, frames " +
                                 std::to_string(around->first) + "-" + std::to_string(around->second);
       s.log.info(title + " (the rest of the track is unchanged)");
-      s.jobs.track.start(title, [previous = v.tracked, keys = v.keyframes, around](JobProgress& p) {
+      s.video.track.start(title, [previous = v.tracked, keys = v.keyframes,
+                                  around](JobProgress& p) {
         return std::make_shared<const TrackedVideo>(trackAgainBetween(
             *previous, keys, around->first, around->second, frameProgress(p, around->first, around->second)));
       });
@@ -420,23 +417,24 @@ void startTracking(AppState& s) {
   const auto model = v.modelLoopRounds > 0 && v.tracker == TrackerKind::OpticalFlow
                          ? modelForTracking(s)
                          : nullptr;
-  s.jobs.track.start(
+  s.video.track.start(
       title, [path = v.path, keys = v.keyframes, settings, model](JobProgress& p) {
         return std::make_shared<const TrackedVideo>(
             trackVideo(path, keys, settings, model, frameProgress(p, settings.first, settings.last)));
       });
 }
 
-void cancelTracking(AppState& s) { s.jobs.track.cancel(); }
+void cancelTracking(AppState& s) { s.video.track.cancel(); }
 
 void startDetection(AppState& s) {
   VideoSession& v = session(s);
   // A detection cancelled (its video closed) stops at its next frame: waited for.
-  while (s.jobs.detect.running() && s.jobs.detect.cancelled() && !s.jobs.detect.poll())
+  while (s.video.detect.running() && s.video.detect.cancelled() && !s.video.detect.poll())
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  if (s.jobs.detect.running()) throw std::invalid_argument("a detection is running");
-  if (s.jobs.track.running()) throw std::invalid_argument("a track is running: wait for it, or cancel it");
-  if (!findPoseModels(s.view.detectorModel)) {
+  if (s.video.detect.running()) throw std::invalid_argument("a detection is running");
+  if (s.video.track.running())
+    throw std::invalid_argument("a track is running: wait for it, or cancel it");
+  if (!findPoseModels(s.video.detectorModel)) {
     v.detectError = missingPoseModelAdvice();
     throw std::invalid_argument(v.detectError);
   }
@@ -446,9 +444,10 @@ void startDetection(AppState& s) {
   v.followDetection = true;
   s.view.playback.playing = false;
   const std::string title = "Detecting people in " + v.path.filename().string() + " (BlazePose " +
-                            std::string(poseModelSizeName(s.view.detectorModel)) + ")";
+                            std::string(poseModelSizeName(s.video.detectorModel)) + ")";
   s.log.info(title);
-  s.jobs.detect.start(title, [path = v.path, model = s.view.detectorModel, live = v.detecting](JobProgress& p) {
+  s.video.detect.start(title, [path = v.path, model = s.video.detectorModel,
+                               live = v.detecting](JobProgress& p) {
     const auto progress = [&p](int done, int total) {
       try {
         p.set(done, total, "frame " + std::to_string(done) + " of " + std::to_string(total));
@@ -461,17 +460,17 @@ void startDetection(AppState& s) {
   });
 }
 
-void cancelDetection(AppState& s) { s.jobs.detect.cancel(); }
+void cancelDetection(AppState& s) { s.video.detect.cancel(); }
 
-void setDetectorModel(AppState& s, PoseModelSize model) { s.view.detectorModel = model; }
+void setDetectorModel(AppState& s, PoseModelSize model) { s.video.detectorModel = model; }
 
-void setDetectWhenVideoOpens(AppState& s, bool detect) { s.view.detectWhenVideoOpens = detect; }
+void setDetectWhenVideoOpens(AppState& s, bool detect) { s.video.detectWhenOpens = detect; }
 
 void fitDetections(AppState& s) {
   VideoSession& v = session(s);
   if (!v.detected || v.detected->people == 0) throw std::invalid_argument("no people detected in this video yet");
   // Fitted as a clip, keeping the camera values the user held for this video.
-  ClipSettings c = s.doc.clip && s.doc.clip->path == v.path ? *s.doc.clip : ClipSettings{};
+  ClipSettings c = s.clip.settings && s.clip.settings->path == v.path ? *s.clip.settings : ClipSettings{};
   c.path = v.path;
   c.tracked.reset();
   c.detected = v.detected->frames;
@@ -481,14 +480,14 @@ void fitDetections(AppState& s) {
   else if (!c.corrections || !sameKeyframes(*c.corrections, v.keyframes))
     c.corrections = std::make_shared<const Keyframes>(v.keyframes);
   c.video = keypointVideoOf(*v.detected);
-  s.doc.clip = c;
+  s.clip.settings = c;
   s.doc.mode = Mode::Clip;
-  s.jobs.clip.retry();
+  s.clip.fits.retry();
 }
 
 std::vector<KeypointDetection> detectionsOn(const AppState& s, int frame) {
-  if (!s.video) return {};
-  const VideoSession& v = *s.video;
+  if (!s.video.session) return {};
+  const VideoSession& v = *s.video.session;
   if (v.detecting) return v.detecting->at(frame);
   if (v.detected && frame >= 0 && frame < v.detected->frames->frameCount())
     return v.detected->frames->frames[static_cast<std::size_t>(frame)];
@@ -496,53 +495,59 @@ std::vector<KeypointDetection> detectionsOn(const AppState& s, int frame) {
 }
 
 void closeVideo(AppState& s) {
-  if (!s.video) return;
-  s.jobs.track.cancel();
-  s.jobs.detect.cancel();
-  if (s.doc.clip && (s.doc.clip->tracked || s.doc.clip->detected)) closeClip(s);
-  s.video.reset();
+  if (!s.video.session) return;
+  s.video.track.cancel();
+  s.video.detect.cancel();
+  if (s.clip.settings && (s.clip.settings->tracked || s.clip.settings->detected)) closeClip(s);
+  s.video.session.reset();
 }
 
 bool showsTrackFit(const AppState& s) {
-  return s.video && s.clip() && s.video->tracked && s.clip()->settings.tracked &&
-         s.clip()->settings.tracked == s.video->tracked->trial;
+  return s.video.session && s.clip.fit() && s.video.session->tracked &&
+         s.clip.fit()->settings.tracked &&
+         s.clip.fit()->settings.tracked == s.video.session->tracked->trial;
 }
 
 bool showsDetectionFit(const AppState& s) {
-  return s.video && s.clip() && s.video->detected && s.clip()->settings.detected &&
-         s.clip()->settings.detected == s.video->detected->frames;
+  return s.video.session && s.clip.fit() && s.video.session->detected &&
+         s.clip.fit()->settings.detected &&
+         s.clip.fit()->settings.detected == s.video.session->detected->frames;
 }
 
 bool correctsDetections(const AppState& s) {
-  return s.video && s.video->detected && s.video->detected->people > 0 && !s.video->tracked;
+  return s.video.session && s.video.session->detected && s.video.session->detected->people > 0 &&
+         !s.video.session->tracked;
 }
 
 bool showsVideoFit(const AppState& s) { return showsTrackFit(s) || showsDetectionFit(s); }
 
 std::optional<std::pair<int, int>> videoFitFrames(const AppState& s) {
-  if (showsTrackFit(s)) return std::pair{s.video->tracked->track.firstFrame, s.video->tracked->lastFrame()};
+  if (showsTrackFit(s))
+    return std::pair{s.video.session->tracked->track.firstFrame,
+                     s.video.session->tracked->lastFrame()};
   // The detector's clip numbers its frames as the video does (keypointFramesOf).
-  if (showsDetectionFit(s)) return std::pair{0, std::max(s.clip()->rec.trial.frameCount - 1, 0)};
+  if (showsDetectionFit(s)) return std::pair{0, std::max(s.clip.fit()->rec.trial.frameCount - 1, 0)};
   return std::nullopt;
 }
 
 int shownVideoFrame(const AppState& s) {
-  if (!s.video) return 0;
-  const VideoSession& v = *s.video;
+  if (!s.video.session) return 0;
+  const VideoSession& v = *s.video.session;
   if (!v.marking)
-    if (const auto fit = videoFitFrames(s)) return fit->first + clipFrameAt(*s.clip(), s.view.playback.cycles);
+    if (const auto fit = videoFitFrames(s)) return fit->first + clipFrameAt(*s.clip.fit(), s.view.playback.cycles);
   return v.frame;
 }
 
 bool stepsVideoFrames(const AppState& s) {
-  return s.doc.mode == Mode::Clip && s.video && (s.video->marking || !showsVideoFit(s));
+  return s.doc.mode == Mode::Clip && s.video.session &&
+         (s.video.session->marking || !showsVideoFit(s));
 }
 
 namespace {
 
 bool stepsClipFrames(const AppState& s) {
-  return s.doc.mode == Mode::Clip && s.clip() && s.clip()->rec.trial.frameCount > 0 &&
-         s.clip()->rec.fit.strideHz > 0.0;
+  return s.doc.mode == Mode::Clip && s.clip.fit() && s.clip.fit()->rec.trial.frameCount > 0 &&
+         s.clip.fit()->rec.fit.strideHz > 0.0;
 }
 
 }  // namespace
@@ -551,8 +556,8 @@ void stepFrame(AppState& s, int delta) {
   if (stepsVideoFrames(s)) {
     setVideoFrame(s, shownVideoFrame(s) + delta);
   } else if (stepsClipFrames(s)) {
-    const int n = s.clip()->rec.trial.frameCount;
-    const int shown = clipFrameAt(*s.clip(), s.view.playback.cycles);
+    const int n = s.clip.fit()->rec.trial.frameCount;
+    const int shown = clipFrameAt(*s.clip.fit(), s.view.playback.cycles);
     setClipFrame(s, ((shown + delta) % n + n) % n + 1);
   } else {
     s.view.playback.step(delta, playbackStrideHz(s));
@@ -564,7 +569,7 @@ void advancePlayback(AppState& s, double seconds) {
     s.view.playback.advance(seconds, playbackStrideHz(s));
     return;
   }
-  VideoSession& v = *s.video;
+  VideoSession& v = *s.video.session;
   const auto& p = s.view.playback;
   // One video frame at most per drawn frame, and none while the last is still decoding:
   // every frame is seen (a slow machine plays slower, never skips).
@@ -578,8 +583,8 @@ void advancePlayback(AppState& s, double seconds) {
 }
 
 double frameStepS(const AppState& s) {
-  if (stepsVideoFrames(s) && s.video->fps() > 0.0) return 1.0 / s.video->fps();
-  if (stepsClipFrames(s) && s.clip()->rec.trial.rateHz > 0.0) return 1.0 / s.clip()->rec.trial.rateHz;
+  if (stepsVideoFrames(s) && s.video.session->fps() > 0.0) return 1.0 / s.video.session->fps();
+  if (stepsClipFrames(s) && s.clip.fit()->rec.trial.rateHz > 0.0) return 1.0 / s.clip.fit()->rec.trial.rateHz;
   return 1.0 / 60.0;
 }
 

@@ -46,9 +46,6 @@ std::filesystem::path defaultTrackFolder(const AppState& s);
 // The video's 2D view magnified `zoom` times (clamped to 1-16; 1 shows the whole picture) with
 // the video pixel `centrePx` (x right, y down; kept on the picture) at its middle.
 void setVideoZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx);
-// The keypoint clip's 2D view magnified `zoom` times (clamped to 1-16; 1 shows the region the
-// walker crosses) with the image pixel `centrePx` (x right, y down) at its middle.
-void setClipZoom(AppState& s, double zoom, const Eigen::Vector2d& centrePx);
 // The frame shown (0-based, clamped to the video); pauses a tracked clip's playback there.
 void setVideoFrame(AppState& s, int frame);
 // Guided marking on the frame shown: clicks place the joint asked for, then the next.

@@ -15,7 +15,7 @@ namespace {
 
 // The track asked for again after an edit that came while one ran (actions::letGoOfJoint).
 void trackAgain(AppState& s) {
-  s.video->trackAgainWhenStopped = false;
+  s.video.session->trackAgainWhenStopped = false;
   try {
     actions::startTracking(s);
   } catch (const std::exception& e) {
@@ -28,8 +28,8 @@ void trackAgain(AppState& s) {
 // A frame the stream does not have (a file cut short, a damaged frame) is said once, in the
 // banner, with how long the video now is: scrubbing never shows it, it only stops short.
 void reportDecodingError(AppState& s) {
-  if (!s.video || !s.video->frames) return;
-  VideoSession& v = *s.video;
+  if (!s.video.session || !s.video.session->frames) return;
+  VideoSession& v = *s.video.session;
   const std::string error = v.frames->error();
   if (error.empty() || error == v.decodeErrorShown) return;
   v.decodeErrorShown = error;
@@ -43,7 +43,7 @@ namespace {
 // A finished detection: the walker's keypoints fitted as the clip; nobody found, or a
 // detection that failed, said in the banner; a cancelled one logged.
 void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>& outcome) {
-  VideoSession& v = *s.video;
+  VideoSession& v = *s.video.session;
   const std::string name = v.path.filename().string();
   v.detecting.reset();
   v.followDetection = false;
@@ -52,10 +52,10 @@ void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>
       s.log.info("Detection cancelled");
       return;
     }
-    ++s.jobs.failures;
+    ++s.notices.failures;
     v.detectError = outcome.error;
     actions::reportError(s, "Could not detect people in " + name, outcome.error);
-    s.jobs.notice->shortTitle = "Detection failed";
+    s.notices.banner->shortTitle = "Detection failed";
     return;
   }
   v.detected = *outcome.value;
@@ -63,12 +63,12 @@ void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>
   s.log.info("Detected in " + name + ": " + detectionSummary(d));
   for (const auto& w : d.warnings) s.log.warning(w);
   if (d.people == 0) {
-    ++s.jobs.failures;
+    ++s.notices.failures;
     v.detectError = "nobody found in its " + std::to_string(d.framesRead) + " frames";
     actions::reportError(s, "Nobody found in " + name,
                          "the detector found no person in its " + std::to_string(d.framesRead) +
                              " frames. Mark the walker's joints on one frame and track them (Mark the joints).");
-    s.jobs.notice->shortTitle = "Nobody found";
+    s.notices.banner->shortTitle = "Nobody found";
     v.frame = 0;
     return;
   }
@@ -80,15 +80,17 @@ void takeDetection(AppState& s, JobOutcome<std::shared_ptr<const DetectedVideo>>
 
 void pollVideo(AppState& s) {
   reportDecodingError(s);
-  if (auto detection = s.jobs.detect.poll()) {
+  if (auto detection = s.video.detect.poll()) {
     // A detection of a video closed since is no detection of this one.
-    if (s.video && (!detection->value || (*detection->value)->video == s.video->path)) takeDetection(s, *detection);
+    if (s.video.session &&
+        (!detection->value || (*detection->value)->video == s.video.session->path))
+      takeDetection(s, *detection);
   }
-  if (s.video && s.video->detecting && s.video->followDetection)
-    s.video->frame = std::max(s.video->detecting->latestFrame(), 0);
-  auto outcome = s.jobs.track.poll();
-  if (!outcome || !s.video) return;
-  VideoSession& v = *s.video;
+  if (s.video.session && s.video.session->detecting && s.video.session->followDetection)
+    s.video.session->frame = std::max(s.video.session->detecting->latestFrame(), 0);
+  auto outcome = s.video.track.poll();
+  if (!outcome || !s.video.session) return;
+  VideoSession& v = *s.video.session;
   // A track of a video closed since (cancelled, or finished first) is no track of this one.
   if (outcome->value && (*outcome->value)->video != v.path) return;
   if (!outcome->value) {
@@ -101,7 +103,7 @@ void pollVideo(AppState& s) {
     if (cancelled) {
       s.log.info("Tracking cancelled");
     } else {
-      ++s.jobs.failures;
+      ++s.notices.failures;
       actions::reportError(s, "Could not track " + v.path.filename().string(), outcome->error);
     }
     return;
@@ -114,12 +116,12 @@ void pollVideo(AppState& s) {
   s.log.info(buf);
   for (const auto& w : v.tracked->trial->warnings) s.log.warning(w);
   // Fitted as a clip, keeping the camera values the user held for this video.
-  ClipSettings c = s.doc.clip && s.doc.clip->path == v.path ? *s.doc.clip : ClipSettings{};
+  ClipSettings c = s.clip.settings && s.clip.settings->path == v.path ? *s.clip.settings : ClipSettings{};
   c.path = v.path;
   c.tracked = v.tracked->trial;
-  s.doc.clip = c;
+  s.clip.settings = c;
   s.doc.mode = Mode::Clip;
-  s.jobs.clip.retry();
+  s.clip.fits.retry();
   // A joint let go while this track ran, which finished before it saw the cancel.
   if (v.trackAgainWhenStopped) trackAgain(s);
 }

@@ -120,9 +120,9 @@ static void drawClipSource(AppState& s, const ClipSettings& c, const ClipResult*
 static void drawCameraHolds(AppState& s, const ClipSettings& c, const ClipResult* r);
 
 void drawClipControls(AppState& s) {
-  if (!s.doc.clip) return;
-  const ClipSettings c = *s.doc.clip;
-  const ClipResult* r = s.clip().get();
+  if (!s.clip.settings) return;
+  const ClipSettings c = *s.clip.settings;
+  const ClipResult* r = s.clip.fit().get();
   if (c.detected) {
     // The detector's clip: its source is the video above; who walks can be picked.
     if (r && r->rec.trial.people.size() > 1) {
@@ -195,11 +195,11 @@ static void drawCameraHolds(AppState& s, const ClipSettings& c, const ClipResult
   heldValue(s, "azimuth", "the azimuth", c.alphaDeg, cam ? cam->alphaDeg : 0.0, -180.0f, 180.0f, "%.1f°", false,
             [&](std::optional<double> v) { actions::setClipAzimuth(s, v); });
 
-  if (s.jobs.clip.running()) {
+  if (s.clip.fits.running()) {
     ImGui::TextDisabled("fitting…");
-  } else if (!s.jobs.clip.error().empty() && s.doc.clip && s.jobs.clip.failed(*s.doc.clip)) {
+  } else if (!s.clip.fits.error().empty() && s.clip.settings && s.clip.fits.failed(*s.clip.settings)) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.55f, 1.0f));
-    ImGui::TextWrapped("These settings do not fit: %s", s.jobs.clip.error().c_str());
+    ImGui::TextWrapped("These settings do not fit: %s", s.clip.fits.error().c_str());
     ImGui::PopStyleColor();
   } else if (r) {
     ImGui::TextDisabled("fitted in %.0f ms", 1000.0 * r->seconds);

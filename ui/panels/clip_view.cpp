@@ -184,8 +184,8 @@ bool buildClipInputScene(const AppState& s, Scene& scene, float lineScale, int f
   scene.floor.visible = false;
   scene.backgroundTop = {0.085f, 0.09f, 0.105f, 1.0f};
   scene.backgroundBottom = {0.04f, 0.045f, 0.055f, 1.0f};
-  if (!s.clip()) return false;
-  const ClipReconstruction& rec = s.clip()->rec;
+  if (!s.clip.fit()) return false;
+  const ClipReconstruction& rec = s.clip.fit()->rec;
   const auto& o = s.view.overlays;
   // Point-lights a fixed share of the view, whatever the image's resolution.
   const float glow = 0.012f * view.heightPx;
@@ -209,8 +209,8 @@ bool buildClipInputScene(const AppState& s, Scene& scene, float lineScale, int f
 
 bool buildClipReconstructionScene(const AppState& s, Scene& scene, float lineScale, int frame) {
   scene.clearItems();
-  if (!s.clip()) return false;
-  const ClipResult& clip = *s.clip();
+  if (!s.clip.fit()) return false;
+  const ClipResult& clip = *s.clip.fit();
   const ClipReconstruction& rec = clip.rec;
   const auto& o = s.view.overlays;
   const ClipWorld w = clipWorld(clip, frame);

@@ -15,12 +15,12 @@ namespace {
 // Mode::Clip: the fit's coefficients in SD units of the model it used (read only: the camera
 // and the walker are one fit).
 void drawClipCoefficients(const AppState& s, const FrameContext& ctx) {
-  if (!s.clip()) {
-    ImGui::TextDisabled(s.jobs.clip.running() ? "fitting…" : "no fit");
+  if (!s.clip.fit()) {
+    ImGui::TextDisabled(s.clip.fits.running() ? "fitting…" : "no fit");
     return;
   }
-  const EigenwalkerModel& m = *s.clip()->model.model;
-  const Eigen::VectorXd& k = s.clip()->rec.fit.k;
+  const EigenwalkerModel& m = *s.clip.fit()->model.model;
+  const Eigen::VectorXd& k = s.clip.fit()->rec.fit.k;
   textDisabledWrapped("fitted with the camera (SD units)");
   ImGui::Separator();
   const float labelW = 88.0f * ctx.scale;
@@ -107,7 +107,7 @@ void CoefficientsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRe
       ImGui::PopID();
     }
     ImGui::EndDisabled();
-    if (n == 0) ImGui::TextDisabled(s.jobs.busy() ? "building models…" : "no model");
+    if (n == 0) ImGui::TextDisabled(s.jobsBusy() ? "building models…" : "no model");
     if (!explore) semantic.drawFromView(s, ctx.scale);
   }
   ImGui::End();

@@ -20,8 +20,10 @@ void ControlsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& 
   if (beginPanel(ctx.backdrop, "Controls", rect)) {
     auto& doc = s.doc;
     int mode = static_cast<int>(doc.mode);
-    const char* modes[] = {"Reconstruct", "Explore gait space", s.video ? "Video" : "Keypoint clip"};
-    if (radioRow(modes, doc.clip || s.video ? 3 : 2, &mode)) actions::setMode(s, static_cast<Mode>(mode));
+    const char* modes[] = {"Reconstruct", "Explore gait space",
+                           s.video.session ? "Video" : "Keypoint clip"};
+    if (radioRow(modes, s.clip.settings || s.video.session ? 3 : 2, &mode))
+      actions::setMode(s, static_cast<Mode>(mode));
     if (doc.mode == Mode::Clip) {
       drawVideoControls(s, ctx.scale);
       drawClipControls(s);

@@ -46,11 +46,12 @@ struct Shown {
 // A keypoint clip's or tracked video's walker: the eigenwalker fitted through the estimated
 // camera, at the stride and speed that fit found (no motion capture to set beside it).
 std::optional<Shown> shownClip(const AppState& s) {
-  if (!s.clip() || s.clip()->rec.fit.w.size() == 0 || !(s.clip()->rec.fit.strideHz > 0.0)) return std::nullopt;
-  const CameraFit& f = s.clip()->rec.fit;
+  const ClipResult* clip = s.clip.fit().get();
+  if (!clip || clip->rec.fit.w.size() == 0 || !(clip->rec.fit.strideHz > 0.0)) return std::nullopt;
+  const CameraFit& f = clip->rec.fit;
   Shown out;
   out.strideHz = f.strideHz;
-  out.walker = s.clip()->settings.path.filename().string();
+  out.walker = clip->settings.path.filename().string();
   // Walking in place, the speed is the stance feet's: the report reads it off them itself.
   out.columns.push_back({"reconstruction", "through the estimated camera", -1, &f.w,
                          f.inPlace ? std::nullopt : std::optional<double>(f.speedMps)});

@@ -43,31 +43,31 @@ float drawProgress(AppState& s, const FrameContext& ctx, float right) {
     if (ImGui::SmallButton("Cancel")) actions::cancelVideoExport(s);
     return x;
   }
-  if (s.jobs.track.running()) {
-    const std::string what = s.jobs.track.title() + ": " + s.jobs.track.what();
+  if (s.video.track.running()) {
+    const std::string what = s.video.track.title() + ": " + s.video.track.what();
     const float cancelW = ImGui::CalcTextSize("Cancel").x + 2.0f * ImGui::GetStyle().FramePadding.x;
     const float x = right - w - cancelW - ImGui::GetStyle().ItemSpacing.x;
     ImGui::SameLine(x);
     ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
-    ImGui::ProgressBar(s.jobs.track.fraction(), ImVec2(w, 0.0f), fitText(what, w).c_str());
+    ImGui::ProgressBar(s.video.track.fraction(), ImVec2(w, 0.0f), fitText(what, w).c_str());
     ImGui::PopStyleColor();
     ImGui::SameLine();
     if (ImGui::SmallButton("Cancel")) actions::cancelTracking(s);
     return x;
   }
-  if (!s.jobs.busy()) return right;
-  const bool loading = s.jobs.load.running();
-  const bool clipping = !loading && !s.jobs.models.running() && s.jobs.clip.running();
-  const bool analysing = !loading && !clipping && !s.jobs.models.running() && s.jobs.analysis.running();
+  if (!s.jobsBusy()) return right;
+  const bool loading = s.loading.population.running();
+  const bool clipping = !loading && !s.loading.models.running() && s.clip.fits.running();
+  const bool analysing = !loading && !clipping && !s.loading.models.running() && s.jobs.analysis.running();
   // The camera fit reports no steps: the bar runs empty with its title.
-  const float fraction = loading     ? s.jobs.load.fraction()
+  const float fraction = loading     ? s.loading.population.fraction()
                          : clipping  ? 0.0f
                          : analysing ? s.jobs.analysis.fraction()
-                                     : s.jobs.models.fraction();
-  const std::string what = loading     ? s.jobs.load.title() + ": " + s.jobs.load.what()
-                           : clipping  ? s.jobs.clip.title() + "…"
+                                     : s.loading.models.fraction();
+  const std::string what = loading     ? s.loading.population.title() + ": " + s.loading.population.what()
+                           : clipping  ? s.clip.fits.title() + "…"
                            : analysing ? s.jobs.analysis.title()
-                                       : s.jobs.models.title() + ": " + s.jobs.models.what();
+                                       : s.loading.models.title() + ": " + s.loading.models.what();
   ImGui::SameLine(right - w);
   ImGui::PushStyleColor(ImGuiCol_PlotHistogram, ImVec4(0.32f, 0.88f, 0.76f, 0.9f));
   ImGui::ProgressBar(fraction, ImVec2(w, 0.0f), fitText(what, w).c_str());
@@ -205,7 +205,7 @@ std::vector<std::string> clipLines(const ClipResult& c) {
 std::vector<std::string> modelLines(const AppState& s) {
   std::string full, medium, brief;
   if (s.doc.mode == Mode::Clip) {
-    if (s.clip()) return clipLines(*s.clip());
+    if (s.clip.fit()) return clipLines(*s.clip.fit());
     return {"", "", "", ""};
   }
   if (s.doc.mode == Mode::Reconstruct) {

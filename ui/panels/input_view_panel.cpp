@@ -185,7 +185,7 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
   const ImVec2 p1{p0.x + size.x, p0.y + size.y};
   const float pad = 10.0f * ctx.scale;
   const ViewCaption caption = clipInputCaption(s, shown, true);
-  const ImRect walker = clipWalkerRect(*s.clip(), shown, p0, size, frame);
+  const ImRect walker = clipWalkerRect(*s.clip.fit(), shown, p0, size, frame);
   const ImRect captionRect = drawCaption(dl, ImVec2(p0.x + pad, p0.y + pad), caption.title, caption.subtitle,
                                          s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), walker);
   const float screenPerPx = size.y / frame.heightPx;
@@ -199,7 +199,7 @@ void drawClipAnnotations(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2
   const ImRect barRect(ImVec2(barLeft.x, barLeft.y - ImGui::GetTextLineHeight() - 6.0f * ctx.scale),
                        ImVec2(barLeft.x + len, barLeft.y + 5.0f * ctx.scale));
   if (!overlaps(barRect, legendRect) && !overlaps(barRect, walker)) drawScaleBar(dl, barLeft, len, label, ctx.scale);
-  drawOtherPeopleLabels(dl, s.clip()->rec.trial, shown, p0, size, frame);
+  drawOtherPeopleLabels(dl, s.clip.fit()->rec.trial, shown, p0, size, frame);
   if (walker.GetWidth() > 0.0f) {
     s.lastFrame.overlay("input.walker", toPanelRect(walker));
     s.lastFrame.overlay("input.caption", toPanelRect(captionRect));
@@ -220,7 +220,7 @@ void InputViewPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect&
       target.ensure(static_cast<int>(size.x * fbScale.x), static_cast<int>(size.y * fbScale.y),
                     ctx.renderer.samples());
       lastImage = {p0, size};
-      if (s.doc.mode == Mode::Clip && s.video) {
+      if (s.doc.mode == Mode::Clip && s.video.session) {
         drawVideoView(s, ctx, p0, size);
       } else if (s.doc.mode == Mode::Clip) {
         drawClipView(s, ctx, p0, size);
@@ -300,17 +300,17 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
     s.lastFrame.overlay("input.caption", toPanelRect(caption));
     s.lastFrame.overlay("input.legend", toPanelRect(legendRect));
   }
-  if (!drawn) drawCentredMessage(dl, p0, size, s.jobs.busy() ? "loading…" : "nothing loaded");
+  if (!drawn) drawCentredMessage(dl, p0, size, s.jobsBusy() ? "loading…" : "nothing loaded");
 }
 
 void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
   const float aspect = size.x / size.y;
-  const int frame = s.clip() ? clipFrameAt(*s.clip(), s.view.playback.cycles) : 0;
-  const ClipImageFrame whole = s.clip() ? clipImageFrame(*s.clip(), aspect) : ClipImageFrame{};
+  const int frame = s.clip.fit() ? clipFrameAt(*s.clip.fit(), s.view.playback.cycles) : 0;
+  const ClipImageFrame whole = s.clip.fit() ? clipImageFrame(*s.clip.fit(), aspect) : ClipImageFrame{};
   const ClipImageFrame image = zoomedFrame(
-      whole, s.view.clipZoom,
-      {static_cast<float>(s.view.clipZoomCentreX), static_cast<float>(s.view.clipZoomCentreY)});
-  if (s.clip()) zoomAndPanClip(s, p0, size, image);
+      whole, s.clip.zoom,
+      {static_cast<float>(s.clip.zoomCentreX), static_cast<float>(s.clip.zoomCentreY)});
+  if (s.clip.fit()) zoomAndPanClip(s, p0, size, image);
   const bool drawn = buildClipInputScene(s, scene, ctx.scale, frame, image);
   ctx.renderer.render(target, scene, clipInputCamera(image, aspect));
   ctx.backdrop.image(target, {p0.x, p0.y});
@@ -318,8 +318,8 @@ void InputViewPanel::drawClipView(AppState& s, const FrameContext& ctx, ImVec2 p
     drawClipAnnotations(s, ctx, p0, size, image, frame);
   } else {
     drawCentredMessage(ImGui::GetWindowDrawList(), p0, size,
-                       s.jobs.clip.running() ? "reading the keypoints and fitting the camera…"
-                                             : unfittedClipMessage(s.jobs.clip.error()));
+                       s.clip.fits.running() ? "reading the keypoints and fitting the camera…"
+                                             : unfittedClipMessage(s.clip.fits.error()));
   }
 }
 
@@ -331,7 +331,7 @@ void InputViewPanel::zoomAndPanClip(AppState& s, ImVec2 p0, ImVec2 size, const C
   const VideoViewFrame view{image.centre, image.heightPx};
   const ImVec2 m = ImGui::GetIO().MousePos;
   const glm::vec2 cursorPx = view.toVideoPx({(m.x - p0.x) / size.x, (m.y - p0.y) / size.y}, size.x / size.y);
-  const auto change = magnifierInput(s.view.clipZoom, videoViewMiddle(view), cursorPx, image.heightPx / size.y);
+  const auto change = magnifierInput(s.clip.zoom, videoViewMiddle(view), cursorPx, image.heightPx / size.y);
   if (!change) return;
   try {
     actions::setClipZoom(s, change->zoom, Eigen::Vector2d(change->middlePx.x, change->middlePx.y));

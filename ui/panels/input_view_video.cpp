@@ -55,12 +55,12 @@ void drawPrompt(ImDrawList* dl, ImFont* font, ImVec2 p0, ImVec2 size, float top,
 // among the tracked joints there; on a detected video, among the fitted walker's joints there
 // with the marks in their place. -1 when none.
 int nearestJoint(const AppState& s, int frame, glm::vec2 px, float reach) {
-  const VideoSession& v = *s.video;
+  const VideoSession& v = *s.video.session;
   const Keyframe* k = v.keyframeAt(frame);
   Eigen::RowVectorXd points;
   const auto fit = actions::correctsDetections(s) ? actions::videoFitFrames(s) : std::nullopt;
   if (fit && frame >= fit->first && frame <= fit->second) {
-    points = s.clip()->rec.trial.jointsPx.row(frame - fit->first);
+    points = s.clip.fit()->rec.trial.jointsPx.row(frame - fit->first);
     for (int j = 0; k && j < kJointCount; ++j)
       if (std::isfinite(k->jointsPx(2 * j))) points.segment<2>(2 * j) = k->jointsPx.segment<2>(2 * j);
   } else if (k) {
@@ -133,12 +133,12 @@ ImRect screenRect(const VideoViewFrame& view, float aspect, ImVec2 p0, ImVec2 si
 // Where the walker shown on `frame` is, in video pixels: its marks, else the detector's fitted
 // joints, else its tracked joints.
 std::optional<std::pair<glm::vec2, glm::vec2>> walkerExtentPx(const AppState& s, int frame) {
-  const VideoSession& v = *s.video;
+  const VideoSession& v = *s.video.session;
   Eigen::RowVectorXd points;
   if (const Keyframe* k = v.keyframeAt(frame)) {
     points = k->jointsPx;
-  } else if (actions::showsDetectionFit(s) && frame >= 0 && frame < s.clip()->rec.trial.jointsPx.rows()) {
-    points = s.clip()->rec.trial.jointsPx.row(frame);  // the detector's clip counts the video's frames
+  } else if (actions::showsDetectionFit(s) && frame >= 0 && frame < s.clip.fit()->rec.trial.jointsPx.rows()) {
+    points = s.clip.fit()->rec.trial.jointsPx.row(frame);  // the detector's clip counts the video's frames
   } else if (v.tracked && frame >= v.tracked->track.firstFrame && frame <= v.tracked->lastFrame()) {
     points = v.tracked->track.jointsPx.row(frame - v.tracked->track.firstFrame);
   }
@@ -154,7 +154,7 @@ std::optional<std::pair<glm::vec2, glm::vec2>> walkerExtentPx(const AppState& s,
 }  // namespace
 
 void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size) {
-  VideoSession& v = *s.video;
+  VideoSession& v = *s.video.session;
   const int frame = actions::shownVideoFrame(s);
   if (auto f = v.frames->frame(frame)) {
     v.shown = std::move(f);
@@ -203,8 +203,8 @@ void InputViewPanel::drawVideoView(AppState& s, const FrameContext& ctx, ImVec2 
 
 // The magnifier (magnifierInput) over the video.
 void InputViewPanel::zoomAndPanVideo(AppState& s, ImVec2 size, glm::vec2 cursorPx) {
-  const auto change =
-      magnifierInput(s.video->zoom, videoViewMiddle(videoFrame_), cursorPx, videoFrame_.heightPx / size.y);
+  const auto change = magnifierInput(s.video.session->zoom, videoViewMiddle(videoFrame_), cursorPx,
+                                     videoFrame_.heightPx / size.y);
   if (!change) return;
   try {
     actions::setVideoZoom(s, change->zoom, Eigen::Vector2d(change->middlePx.x, change->middlePx.y));
@@ -215,7 +215,7 @@ void InputViewPanel::zoomAndPanVideo(AppState& s, ImVec2 size, glm::vec2 cursorP
 
 void InputViewPanel::handleVideoMouse(AppState& s, const FrameContext& ctx, ImVec2 p0, ImVec2 size,
                                       int frame) {
-  VideoSession& v = *s.video;
+  VideoSession& v = *s.video.session;
   const VideoInfo& info = v.frames->info();
   const float aspect = size.x / size.y;
   const VideoViewFrame& view = videoFrame_;

@@ -81,7 +81,7 @@ int drawJointBars(const std::array<double, kJointCount>& values, const std::arra
 // Mode::Clip: each joint's reprojection residual, RMS over the frames that see it (px); a
 // joint never seen has none (the model estimated it).
 void drawClipResiduals(const AppState& s, float scale) {
-  const ClipReconstruction& rec = s.clip()->rec;
+  const ClipReconstruction& rec = s.clip.fit()->rec;
   std::array<bool, kJointCount> unseen{};
   for (int j : rec.fit.unseenJoints) unseen[static_cast<std::size_t>(j)] = true;
   double worst = 0.0;
@@ -230,7 +230,7 @@ void JointErrorsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRec
         ImGui::TextDisabled("no reconstruction");
       }
     } else if (clip) {
-      if (s.clip()) {
+      if (s.clip.fit()) {
         drawClipResiduals(s, ctx.scale);
       } else {
         ImGui::TextDisabled("no fit yet");

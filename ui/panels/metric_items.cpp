@@ -18,7 +18,7 @@ std::string formatted(const char* format, double value) {
 // A keypoint clip: the walk in metres and seconds (the prior knows how big people are) and
 // how well the walker drawn back through the camera meets the keypoints.
 std::vector<MetricItem> clipItems(const AppState& s) {
-  const ClipReconstruction& rec = s.clip()->rec;
+  const ClipReconstruction& rec = s.clip.fit()->rec;
   const CameraFit& f = rec.fit;
   return {{"stature  est.", formatted("%.2f m", f.statureMm / 1000.0),
            formatted("head %.2f m", f.headHeightMm / 1000.0)},
@@ -60,7 +60,7 @@ std::vector<MetricItem> reconstructionItems(const AppState& s, const ReconBase& 
 }  // namespace
 
 std::vector<MetricItem> metricItems(const AppState& s) {
-  if (s.doc.mode == Mode::Clip) return s.clip() ? clipItems(s) : std::vector<MetricItem>{};
+  if (s.doc.mode == Mode::Clip) return s.clip.fit() ? clipItems(s) : std::vector<MetricItem>{};
   const ReconBase* r = s.derived.recon();
   const ReconDisplay* d = s.derived.display();
   if (s.doc.mode != Mode::Reconstruct || !r || !d) return {};

@@ -79,9 +79,9 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
         metric(s, k == 0, items[k].label.c_str(), items[k].value.c_str(), items[k].note.c_str(), w,
                toneColour(items[k].tone));
     } else if (s.doc.mode == Mode::Clip) {
-      ImGui::TextDisabled(s.jobs.clip.running() ? "fitting the camera…" : "no fit");
+      ImGui::TextDisabled(s.clip.fits.running() ? "fitting the camera…" : "no fit");
     } else {
-      ImGui::TextDisabled(s.jobs.busy() ? "working…" : "no reconstruction");
+      ImGui::TextDisabled(s.jobsBusy() ? "working…" : "no reconstruction");
     }
   }
   ImGui::End();

@@ -38,7 +38,7 @@ std::size_t filePrefixEnd(const std::string& line) {
 std::vector<const char*> buttonsFor(const AppState& s, const NoticeView& n) {
   std::vector<const char*> buttons{"Details…"};
   if (n.canRetry) buttons.push_back("Retry");
-  if (n.kind == NoticeView::Kind::Open && n.error && s.doc.walkerCount() == 0 && !s.jobs.busy())
+  if (n.kind == NoticeView::Kind::Open && n.error && s.doc.walkerCount() == 0 && !s.jobsBusy())
     buttons.push_back("Open the synthetic default");
   buttons.push_back("Dismiss");
   return buttons;
@@ -56,8 +56,8 @@ std::string shortReason(const std::string& message) {
 }
 
 std::optional<NoticeView> NoticePanel::current(const AppState& s) const {
-  if (s.jobs.notice) {
-    const auto& o = *s.jobs.notice;
+  if (s.notices.banner) {
+    const auto& o = *s.notices.banner;
     return NoticeView{NoticeView::Kind::Open,
                       o.error,
                       o.title,
@@ -104,7 +104,7 @@ void NoticePanel::apply(AppState& s, const NoticeView& n, const std::string& cli
   } else if (n.kind == NoticeView::Kind::Reconstruction) {
     dismissedReconError = n.detail;
   } else if (clicked == "Retry") {
-    const auto paths = s.jobs.notice->retryPaths;
+    const auto paths = s.notices.banner->retryPaths;
     actions::dismissNotice(s);
     actions::open(s, paths);
   } else if (clicked == "Open the synthetic default") {

@@ -34,7 +34,7 @@ void clipFrameSlider(AppState& s, const ClipResult& c, bool narrow) {
 // files and `track --first/--last` count them): over the tracked range when its track's fit
 // is shown, else over the whole video.
 void videoFrameSlider(AppState& s, bool narrow) {
-  const VideoSession& v = *s.video;
+  const VideoSession& v = *s.video.session;
   const bool tracked = !actions::stepsVideoFrames(s);
   int frame = actions::shownVideoFrame(s);
   const double seconds = v.fps() > 0.0 ? frame / v.fps() : 0.0;
@@ -52,14 +52,14 @@ void videoFrameSlider(AppState& s, bool narrow) {
 
 bool playsFrames(const AppState& s) {
   return actions::stepsVideoFrames(s) ||
-         (s.doc.mode == Mode::Clip && s.clip() && actions::playbackStrideHz(s) > 0.0);
+         (s.doc.mode == Mode::Clip && s.clip.fit() && actions::playbackStrideHz(s) > 0.0);
 }
 
 void drawFrameSlider(AppState& s, bool narrow) {
   if (actions::stepsVideoFrames(s) || actions::showsVideoFit(s))
     videoFrameSlider(s, narrow);
-  else if (s.clip())
-    clipFrameSlider(s, *s.clip(), narrow);
+  else if (s.clip.fit())
+    clipFrameSlider(s, *s.clip.fit(), narrow);
 }
 
 void PlaybackPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {

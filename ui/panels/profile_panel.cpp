@@ -20,11 +20,11 @@ namespace {
 // Mode::Clip: where each start of the camera fit ended (azimuth, reprojection RMS): the
 // image's ambiguities (depth reversal, mirror, facing) as separate minima, the best marked.
 void drawClipStarts(const AppState& s, const FrameContext& ctx) {
-  if (!s.clip()) {
-    ImGui::TextDisabled(s.jobs.clip.running() ? "fitting…" : "no fit");
+  if (!s.clip.fit()) {
+    ImGui::TextDisabled(s.clip.fits.running() ? "fitting…" : "no fit");
     return;
   }
-  const auto& starts = s.clip()->rec.fit.starts;
+  const auto& starts = s.clip.fit()->rec.fit.starts;
   std::vector<double> alpha, rms, bestAlpha, bestRms;
   for (std::size_t i = 0; i < starts.size(); ++i) {
     auto& xs = i == 0 ? bestAlpha : alpha;

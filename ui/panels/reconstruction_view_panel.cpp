@@ -31,8 +31,8 @@ namespace {
 // the view).
 // A message in the middle of the view, wrapped at 0.8 of its width; returns its height.
 void drawWhyNoWalkFits(ImDrawList* dl, const AppState& s, ImVec2 p0, ImVec2 size, float messageHeight) {
-  std::string why = s.jobs.clip.error();
-  const std::string file = s.video->path.string() + ": ";
+  std::string why = s.clip.fits.error();
+  const std::string file = s.video.session->path.string() + ": ";
   if (why.rfind(file, 0) == 0) why.erase(0, file.size());
   if (why.empty()) return;
   const float wrap = 0.8f * size.x;
@@ -270,12 +270,13 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       const ReconDisplay* d = s.derived.display();
       float errorScale = 1.0f;
       const bool clipMode = s.doc.mode == Mode::Clip;
+      const ClipResult* fit = s.clip.fit().get();
+      const int clipFrame = fit ? clipFrameAt(*fit, s.view.playback.cycles) : 0;
       const bool drawn =
-          clipMode ? buildClipReconstructionScene(s, scene, ctx.scale, s.clip() ? clipFrameAt(*s.clip(), s.view.playback.cycles) : 0)
+          clipMode ? buildClipReconstructionScene(s, scene, ctx.scale, clipFrame)
                    : buildReconstructionScene(s, scene, ctx.scale, s.view.playback.cycles, &errorScale);
       const float aspect = size.x / size.y;
-      const OrbitCamera view = clipMode && s.clip() ? clipViewCamera(s.view.camera, *s.clip(), clipFrameAt(*s.clip(), s.view.playback.cycles))
-                                                  : s.view.camera;
+      const OrbitCamera view = clipMode && fit ? clipViewCamera(s.view.camera, *fit, clipFrame) : s.view.camera;
       const ViewCaption caption = walkerReconstructionCaption(s);
       const char* title = caption.title.c_str();
       const std::vector<LegendItem>& legend = caption.legend;
@@ -313,19 +314,20 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
       }
       }
       if (!drawn) {
-        const bool tracked = s.video && s.video->tracked;
-        const bool detected = s.video && s.video->detected && s.video->detected->people > 0;
-        const bool unfitted = clipMode && s.video && !s.doc.clip && (tracked || detected) && !s.jobs.track.running() &&
-                              !s.jobs.detect.running();
-        const char* msg = clipMode && s.video && !s.doc.clip
-                              ? (s.jobs.track.running()    ? "tracking…"
-                                 : s.jobs.detect.running() ? "detecting people… the walker appears when they are found"
-                                 : tracked                 ? "no walk fits this track"
-                                 : detected                ? "no walk fits the people detected"
-                                 : s.video->detected       ? "nobody detected: mark the joints on one frame, then Track"
-                                                           : "detect the walker, or mark the joints on one frame, then Track")
-                          : clipMode ? (s.jobs.clip.running() ? "fitting the camera…" : unfittedClipMessage(s.jobs.clip.error()))
-                          : s.jobs.busy() ? "building models…" : "nothing to show";
+        const std::optional<VideoSession>& video = s.video.session;
+        const bool tracked = video && video->tracked;
+        const bool detected = video && video->detected && video->detected->people > 0;
+        const bool unfitted = clipMode && video && !s.clip.settings && (tracked || detected) &&
+                              !s.video.track.running() && !s.video.detect.running();
+        const char* msg = clipMode && video && !s.clip.settings
+                              ? (s.video.track.running()    ? "tracking…"
+                                 : s.video.detect.running() ? "detecting people… the walker appears when they are found"
+                                 : tracked                  ? "no walk fits this track"
+                                 : detected                 ? "no walk fits the people detected"
+                                 : video->detected          ? "nobody detected: mark the joints on one frame, then Track"
+                                                            : "detect the walker, or mark the joints on one frame, then Track")
+                          : clipMode ? (s.clip.fits.running() ? "fitting the camera…" : unfittedClipMessage(s.clip.fits.error()))
+                          : s.jobsBusy() ? "building models…" : "nothing to show";
         const float height = drawCentredMessage(dl, p0, size, msg);
         if (unfitted) drawWhyNoWalkFits(dl, s, p0, size, height);
       }

@@ -58,19 +58,21 @@ void scrubber(AppState& s, const VideoSession& v) {
 // what it found; without the models, the command that fetches them.
 void detecting(AppState& s, const VideoSession& v) {
   sectionTitle("Detect the walker");
-  if (s.jobs.detect.running()) {
-    ImGui::ProgressBar(s.jobs.detect.fraction(), ImVec2(-1.0f, 0.0f), s.jobs.detect.what().c_str());
+  if (s.video.detect.running()) {
+    ImGui::ProgressBar(s.video.detect.fraction(), ImVec2(-1.0f, 0.0f),
+                       s.video.detect.what().c_str());
     if (buttonRow({{"Cancel", true}}) == 0) actions::cancelDetection(s);
     return;
   }
-  const bool haveModels = findPoseModels(s.view.detectorModel).has_value();
+  const bool haveModels = findPoseModels(s.video.detectorModel).has_value();
   const char* const labels[] = {"Lite", "Full", "Heavy"};
-  int choice = static_cast<int>(s.view.detectorModel);
+  int choice = static_cast<int>(s.video.detectorModel);
   if (radioRow(labels, 3, &choice)) apply(s, [&] { actions::setDetectorModel(s, static_cast<PoseModelSize>(choice)); });
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("BlazePose's landmark model: lite is fastest, heavy most accurate (docs/DETECTOR.md)");
   const char* label = v.detected ? "Detect again" : "Detect people";
-  if (buttonRow({{label, haveModels && !s.jobs.track.running()}}) == 0) apply(s, [&] { actions::startDetection(s); });
+  if (buttonRow({{label, haveModels && !s.video.track.running()}}) == 0)
+    apply(s, [&] { actions::startDetection(s); });
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("Find the people on every frame with the built-in detector (the walker's\n"
                       "keypoints are then fitted through the unknown camera). Detections are\n"
@@ -82,7 +84,7 @@ void detecting(AppState& s, const VideoSession& v) {
   }
   if (v.detected) {
     textDisabledWrapped(detectionSummary(*v.detected).c_str());
-    if (v.detected->people > 0 && !actions::showsDetectionFit(s) && !s.jobs.clip.running() &&
+    if (v.detected->people > 0 && !actions::showsDetectionFit(s) && !s.clip.fits.running() &&
         buttonRow({{"Fit the detections", true}}) == 0)
       apply(s, [&] { actions::fitDetections(s); });
   }
@@ -91,7 +93,7 @@ void detecting(AppState& s, const VideoSession& v) {
     ImGui::TextWrapped("%s", v.detectError.c_str());
     ImGui::PopStyleColor();
   }
-  bool onOpen = s.view.detectWhenVideoOpens;
+  bool onOpen = s.video.detectWhenOpens;
   if (checkboxWrapped("Detect when a video opens", &onOpen)) actions::setDetectWhenVideoOpens(s, onOpen);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("A video opened alone is handed to the detector at once\n"
@@ -363,8 +365,8 @@ void tracking(AppState& s, const VideoSession& v, float scale) {
                 : v.tracked ? "Track"
                             : "Track",
                 range[0], range[1]);
-  if (s.jobs.track.running()) {
-    ImGui::ProgressBar(s.jobs.track.fraction(), ImVec2(-1.0f, 0.0f), s.jobs.track.what().c_str());
+  if (s.video.track.running()) {
+    ImGui::ProgressBar(s.video.track.fraction(), ImVec2(-1.0f, 0.0f), s.video.track.what().c_str());
     if (buttonRow({{"Cancel", true}}) == 0) actions::cancelTracking(s);
   } else if (buttonRow({{label, !v.keyframes.keyframes.empty()}}) == 0) {
     apply(s, [&] { actions::startTracking(s); });
@@ -434,8 +436,8 @@ void saving(AppState& s, const VideoSession& v) {
 }  // namespace
 
 void drawVideoControls(AppState& s, float scale) {
-  if (!s.video) return;
-  const VideoSession& v = *s.video;
+  if (!s.video.session) return;
+  const VideoSession& v = *s.video.session;
   sectionTitle("Video");
   ImGui::TextWrapped("%s", v.path.filename().string().c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.path.string().c_str());

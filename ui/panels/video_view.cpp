@@ -138,16 +138,16 @@ bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,
   scene.floor.visible = false;
   scene.backgroundTop = {0.085f, 0.09f, 0.105f, 1.0f};
   scene.backgroundBottom = {0.04f, 0.045f, 0.055f, 1.0f};
-  if (!s.video) return false;
-  const VideoSession& v = *s.video;
+  if (!s.video.session) return false;
+  const VideoSession& v = *s.video.session;
   const float radius = 5.0f * lineScale * videoPxPerScreenPx;
   const auto fit = v.marking ? std::nullopt : actions::videoFitFrames(s);
   const int clipFrame = fit ? frame - fit->first : -1;
   const bool fitted = fit.has_value();
   // A detection under way, or done and not fitted: the people found on the frame.
   const bool detections = v.detecting || (v.detected && !v.tracked && !fitted);
-  if (fitted && clipFrame >= 0 && clipFrame < s.clip()->rec.trial.frameCount) {
-    buildClipInputScene(s, scene, lineScale, clipFrame, clipImageFrame(*s.clip(), 1.0f));
+  if (fitted && clipFrame >= 0 && clipFrame < s.clip.fit()->rec.trial.frameCount) {
+    buildClipInputScene(s, scene, lineScale, clipFrame, clipImageFrame(*s.clip.fit(), 1.0f));
   } else if (detections) {
     addDetectedPeople(scene, actions::detectionsOn(s, frame), radius, lineScale);
   } else if (v.tracked) {

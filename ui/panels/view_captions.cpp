@@ -89,9 +89,9 @@ ViewCaption walkerInputCaption(const AppState& s) {
 }
 
 ViewCaption clipInputCaption(const AppState& s, int shown, bool onScreen) {
-  const ClipReconstruction& rec = s.clip()->rec;
+  const ClipReconstruction& rec = s.clip.fit()->rec;
   char zoom[48] = "";
-  if (onScreen && s.view.clipZoom > 1.0) std::snprintf(zoom, sizeof zoom, " · zoom %.1f×", s.view.clipZoom);
+  if (onScreen && s.clip.zoom > 1.0) std::snprintf(zoom, sizeof zoom, " · zoom %.1f×", s.clip.zoom);
   char sub[260];
   std::snprintf(sub, sizeof sub, "%s · %s · frame %d / %d (%.2f s) · pixels, y down%s",
                 rec.trial.format.c_str(), rec.trial.layout->name.c_str(), shown + 1, rec.trial.frameCount,
@@ -124,7 +124,7 @@ ViewCaption clipInputCaption(const AppState& s, int shown, bool onScreen) {
 }
 
 ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool onScreen) {
-  const VideoSession& v = *s.video;
+  const VideoSession& v = *s.video.session;
   const VideoInfo& info = v.frames->info();
   char zoom[48] = "";
   if (onScreen && v.zoom > 1.0) std::snprintf(zoom, sizeof zoom, " · zoom %.1f×", v.zoom);
@@ -139,7 +139,8 @@ ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool 
   if (v.detecting && onScreen) {
     // The subtitle says how far the detection has come; the points' colours what they mean.
     const std::size_t len = std::strlen(sub);
-    std::snprintf(sub + len, sizeof sub - len, " · detecting: %.0f %%", 100.0 * s.jobs.detect.fraction());
+    std::snprintf(sub + len, sizeof sub - len, " · detecting: %.0f %%",
+                  100.0 * s.video.detect.fraction());
   }
   if (fitted) {
     legend.push_back({palette::kInputPoint, actions::showsDetectionFit(s) ? "detected joints" : "tracked joints", false});
@@ -198,14 +199,14 @@ ViewCaption walkerReconstructionCaption(const AppState& s) {
 }
 
 ViewCaption clipReconstructionCaption(const AppState& s) {
-  const CameraFit& fit = s.clip()->rec.fit;
+  const CameraFit& fit = s.clip.fit()->rec.fit;
   const WalkCamera& c = fit.camera;
   char sub[240];
   if (c.model == CameraModel::Pinhole) {
-    const ClipWorld w = clipWorld(*s.clip(), 0);
+    const ClipWorld w = clipWorld(*s.clip.fit(), 0);
     // The camera's distance to the walker's path (the line x = 0 of the walk).
     // A weak azimuth says so where it is read (the log has the whole sentence).
-    const bool weak = inPlaceAzimuthIsWeak(fit, s.clip()->settings.alphaDeg.has_value());
+    const bool weak = inPlaceAzimuthIsWeak(fit, s.clip.fit()->settings.alphaDeg.has_value());
     std::snprintf(sub, sizeof sub, "camera %s, %.1f m from the %s, azimuth %.1f°%s, %s",
                   heightOverAnklesText(w.eye.z).c_str(), std::abs(w.eye.x) / 1000.0,
                   fit.inPlace ? "treadmill's line (walking in place)" : "walking line", c.alphaDeg,
@@ -223,16 +224,16 @@ ViewCaption clipReconstructionCaption(const AppState& s) {
 }
 
 ViewCaption inputCaption(const AppState& s, int clipFrame) {
-  if (s.doc.mode == Mode::Clip && s.video) {
-    const VideoSession& v = *s.video;
+  if (s.doc.mode == Mode::Clip && s.video.session) {
+    const VideoSession& v = *s.video.session;
     const auto fit = actions::videoFitFrames(s);
     return videoInputCaption(s, fit ? fit->first + clipFrame : v.frame, false, false);
   }
-  return s.doc.mode == Mode::Clip && s.clip() ? clipInputCaption(s, clipFrame) : walkerInputCaption(s);
+  return s.doc.mode == Mode::Clip && s.clip.fit() ? clipInputCaption(s, clipFrame) : walkerInputCaption(s);
 }
 
 ViewCaption reconstructionCaption(const AppState& s) {
-  return s.doc.mode == Mode::Clip && s.clip() ? clipReconstructionCaption(s) : walkerReconstructionCaption(s);
+  return s.doc.mode == Mode::Clip && s.clip.fit() ? clipReconstructionCaption(s) : walkerReconstructionCaption(s);
 }
 
 }  // namespace ew::ui
