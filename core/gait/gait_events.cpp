@@ -119,15 +119,14 @@ GaitEventSet gaitEventsFromFeet(const Eigen::Ref<const Eigen::MatrixXd>& m,
   std::array<bool, 2> heelUsed{};
   for (Side side : {Side::Right, Side::Left}) {
     FootEvents& foot = side == Side::Right ? events.right : events.left;
-    const Eigen::VectorXd heel = footPointLeadMm(m, feet, rateHz, heelOf(side));
-    if (heel.allFinite()) {
-      foot.strikesS = extremesS(heel, rateHz);
+    const auto seen = [&](FootPoint p) { return feet.middleCols(3 * index(p), 3).allFinite(); };
+    if (seen(heelOf(side))) {
+      foot.strikesS = extremesS(footPointLeadMm(m, feet, rateHz, heelOf(side)), rateHz);
       heelUsed[side == Side::Right ? 0 : 1] = true;
       ++used;
     }
-    const Eigen::VectorXd toe = footPointLeadMm(m, feet, rateHz, toeOf(side));
-    if (toe.allFinite()) {
-      foot.offsS = extremesS(-toe, rateHz);
+    if (seen(toeOf(side))) {
+      foot.offsS = extremesS(-footPointLeadMm(m, feet, rateHz, toeOf(side)), rateHz);
       ++used;
     }
   }

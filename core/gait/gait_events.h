@@ -75,7 +75,7 @@ GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& f
 // this fraction of the stride after the heel's foremost point, the difference of the two
 // leads (stance otherwise reads 1.6 points long). tests/gait/test_foot_events.cpp measures it
 // again, and again leaving each trial out.
-inline constexpr double kHeelStrikeLagOfStride = 0.0185;
+inline constexpr double kHeelStrikeLagOfStride = 0.0184;
 
 // Each foot's strikes from its heel and its foot offs from its toe where that point is finite in
 // every frame; the ankle's events (gaitEventsFromKinematics, with its foot-off lag) for a point
