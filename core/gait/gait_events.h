@@ -73,8 +73,8 @@ GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& f
 // feet") the heel's foremost point comes 32.5 ± 13.8 ms before the strike and the toe's
 // rearmost 12.0 ± 11.6 ms before the foot off: the toe needs no lag, and the strike is put
 // this fraction of the stride after the heel's foremost point, the difference of the two
-// leads (stance otherwise reads 1.6 points long). tests/gait/test_foot_events.cpp measures it
-// again, and again leaving each trial out.
+// leads (stance otherwise reads 1.6 points long). FeetOnSharedWalkers
+// (tests/gait/test_gait_measures.cpp) measures it again, and again leaving each trial out.
 inline constexpr double kHeelStrikeLagOfStride = 0.0184;
 
 // Each foot's strikes from its heel and its foot offs from its toe where that point is finite in
