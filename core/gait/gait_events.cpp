@@ -115,28 +115,25 @@ GaitEventSet gaitEventsFromFeet(const Eigen::Ref<const Eigen::MatrixXd>& m,
   if (m.rows() < 3 || m.cols() != kDims3 || feet.rows() != m.rows() || feet.cols() != kFootDims3 ||
       !(rateHz > 0) || !std::isfinite(rateHz) || !m.col(3 * index(Joint::Pelvis) + 1).allFinite())
     return events;
-  int used = 0;
-  std::array<bool, 2> heelUsed{};
+  // A foot's two events share one point's lead or the other's: the heel and the toe together,
+  // else the ankle for both (its foot-off lag makes its stance unbiased; the toe's accurate foot
+  // off after the ankle's early strike would read stance long).
+  std::array<bool, 2> fromFeet{};
   for (Side side : {Side::Right, Side::Left}) {
-    FootEvents& foot = side == Side::Right ? events.right : events.left;
     const auto seen = [&](FootPoint p) { return feet.middleCols(3 * index(p), 3).allFinite(); };
-    if (seen(heelOf(side))) {
-      foot.strikesS = extremesS(footPointLeadMm(m, feet, rateHz, heelOf(side)), rateHz);
-      heelUsed[side == Side::Right ? 0 : 1] = true;
-      ++used;
-    }
-    if (seen(toeOf(side))) {
-      foot.offsS = extremesS(-footPointLeadMm(m, feet, rateHz, toeOf(side)), rateHz);
-      ++used;
-    }
+    if (!seen(heelOf(side)) || !seen(toeOf(side))) continue;
+    FootEvents& foot = side == Side::Right ? events.right : events.left;
+    foot.strikesS = extremesS(footPointLeadMm(m, feet, rateHz, heelOf(side)), rateHz);
+    foot.offsS = extremesS(-footPointLeadMm(m, feet, rateHz, toeOf(side)), rateHz);
+    fromFeet[side == Side::Right ? 0 : 1] = true;
   }
-  if (used == 0) return events;
-  events.method = used == 4 ? "kinematics (heel and toe)" : "kinematics (feet in part, else the ankle)";
+  if (!fromFeet[0] && !fromFeet[1]) return events;
+  events.method = fromFeet[0] && fromFeet[1] ? "kinematics (heel and toe)" : "kinematics (heel and toe of one foot, the other's ankle)";
   const double strideS = medianStrideS(events);
   if (!std::isfinite(strideS)) return events;
   const double lastS = static_cast<double>(m.rows() - 1) / rateHz;
   for (Side side : {Side::Right, Side::Left}) {
-    if (!heelUsed[side == Side::Right ? 0 : 1]) continue;
+    if (!fromFeet[side == Side::Right ? 0 : 1]) continue;
     for (double& strike : (side == Side::Right ? events.right : events.left).strikesS)
       strike = std::min(strike + heelStrikeLag * strideS, lastS);
   }

@@ -77,11 +77,14 @@ GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& f
 // (tests/gait/test_gait_measures.cpp) measures it again, and again leaving each trial out.
 inline constexpr double kHeelStrikeLagOfStride = 0.0184;
 
-// Each foot's strikes from its heel and its foot offs from its toe where that point is finite in
-// every frame; the ankle's events (gaitEventsFromKinematics, with its foot-off lag) for a point
-// that is not. method: "kinematics (heel and toe)" with all four points, "kinematics (feet in
-// part, else the ankle)" with some; feetX12 empty, of another shape or all NaN gives
-// gaitEventsFromKinematics's events unchanged. heelStrikeLag scales by the median stride.
+// Each foot's strikes from its heel and its foot offs from its toe where both points are finite
+// in every frame; the ankle's events (gaitEventsFromKinematics, with its foot-off lag) for a foot
+// that lacks either, so that a foot's strike and foot off always share one lead (the toe's
+// accurate foot off after the ankle's early strike read stance 1.7 points long on
+// gait-pig-nz.c3d, which has toe markers and no heels). method: "kinematics (heel and toe)" with
+// both feet, "kinematics (heel and toe of one foot, the other's ankle)" with one; feetX12 empty,
+// of another shape or lacking a point of each foot gives gaitEventsFromKinematics's events
+// unchanged. heelStrikeLag scales by the median stride.
 GaitEventSet gaitEventsFromFeet(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
                                 const Eigen::Ref<const Eigen::MatrixXd>& feetX12, double rateHz,
                                 double heelStrikeLag = kHeelStrikeLagOfStride);

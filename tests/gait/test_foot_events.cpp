@@ -154,18 +154,27 @@ TEST(FootEvents, StrikesFromTheHeelAndFootOffsFromTheToe) {
   expectTimes(zeni.right.strikesS, extremeTimes(kHeelDelayS, 0.0, true, endS), "Zeni's right strikes");
 }
 
-TEST(FootEvents, APointNotSeenThroughoutLeavesItsEventsToTheAnkle) {
+// A foot missing its heel or its toe somewhere (a gap prepare could not bridge, a point never
+// seen) times both its events from the ankle: a foot's strike and foot off share one lead.
+TEST(FootEvents, AFootWithoutBothPointsTimesItsEventsFromTheAnkle) {
   CanonicalWalker w = swingingFeet(400);
   const GaitEventSet ankle = gaitEventsFromKinematics(w.frames, kRateHz);
-  w.feet(200, 3 * index(FootPoint::RToe) + 1) = kNaN;       // a gap prepare could not bridge
-  w.feet.col(3 * index(FootPoint::LHeel) + 2).setConstant(kNaN);  // never seen
-  const GaitEventSet e = gaitEventsFromFeet(w.frames, w.feet, kRateHz);
-  EXPECT_EQ(e.method, "kinematics (feet in part, else the ankle)");
-  EXPECT_EQ(e.right.offsS, ankle.right.offsS);
-  EXPECT_NE(e.right.strikesS, ankle.right.strikesS);  // the right heel is whole
-  EXPECT_NE(e.left.offsS, ankle.left.offsS);          // and the left toe
-  // The left foot's strikes are the ankle's foremost points, without the heel's lag.
+  const GaitEventSet both = gaitEventsFromFeet(w.frames, w.feet, kRateHz);
+  w.feet.col(3 * index(FootPoint::LHeel) + 2).setConstant(kNaN);  // never seen (one coordinate is enough)
+  GaitEventSet e = gaitEventsFromFeet(w.frames, w.feet, kRateHz);
+  EXPECT_EQ(e.method, "kinematics (heel and toe of one foot, the other's ankle)");
   EXPECT_EQ(e.left.strikesS, ankle.left.strikesS);
+  EXPECT_EQ(e.left.offsS, ankle.left.offsS);
+  EXPECT_EQ(e.right.strikesS, both.right.strikesS);  // the right foot is whole
+  EXPECT_EQ(e.right.offsS, both.right.offsS);
+  EXPECT_NE(e.right.offsS, ankle.right.offsS);
+  w.feet(200, 3 * index(FootPoint::RToe) + 1) = kNaN;  // and now the right toe has a gap
+  e = gaitEventsFromFeet(w.frames, w.feet, kRateHz);
+  EXPECT_EQ(e.method, "kinematics");
+  for (Side side : {Side::Right, Side::Left}) {
+    EXPECT_EQ(e.of(side).strikesS, ankle.of(side).strikesS);
+    EXPECT_EQ(e.of(side).offsS, ankle.of(side).offsS);
+  }
 }
 
 TEST(FootEvents, NoFeetGivesTheAnklesEventsUnchanged) {

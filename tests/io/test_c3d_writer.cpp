@@ -303,10 +303,10 @@ TEST(C3dWriter, AWalkersFeetAreWrittenAndReadBack) {
   EXPECT_TRUE(back.feetMm.middleCols<3>(3 * index(FootPoint::LToe)).array().isNaN().all());
   for (FootPoint p : {FootPoint::RHeel, FootPoint::RToe, FootPoint::LHeel})
     EXPECT_LT((back.feetMm.middleCols<3>(3 * index(p)) - feet.middleCols<3>(3 * index(p))).cwiseAbs().maxCoeff(), 1e-3);
-  // The events: the right foot's from its heel and toe, the left's strikes from its heel and
-  // its offs from the ankle (no left toe); the frames already face +y with z up.
+  // The events: the right foot's from its heel and toe, the left's from its ankle (no left
+  // toe); the frames already face +y with z up.
   const GaitEventSet want = gaitEventsFromFeet(frames, feet, 100.0);
-  EXPECT_EQ(want.method, "kinematics (feet in part, else the ankle)");
+  EXPECT_EQ(want.method, "kinematics (heel and toe of one foot, the other's ankle)");
   const GaitEventSet got = gaitEventsFromFile(raw.events, 1e9);
   for (Side side : {Side::Right, Side::Left}) {
     ASSERT_EQ(got.of(side).strikesS.size(), want.of(side).strikesS.size());
