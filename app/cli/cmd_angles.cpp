@@ -35,7 +35,9 @@ int runAngles(const AnglesArgs& args) {
   const Eigen::Vector3d up = upOf(trial);
   if (!(up.norm() > 0.0))
     throw Error(ErrorKind::BadData, args.file, "", "no frame has the head and both ankles: the up direction is unknown");
-  const JointAngles angles = jointAngles(trial.positionsMm, up, args.file);
+  // The ankle and the foot progression where the trial has heel and toe points.
+  const JointAngles angles = trial.hasFeet() ? jointAnglesWithFeet(trial.positionsMm, trial.feetMm, up, args.file)
+                                             : jointAngles(trial.positionsMm, up, args.file);
   std::vector<std::string> empty;
   for (Eigen::Index k = 0; k < angles.degrees.cols(); ++k)
     if (!angles.degrees.col(k).array().isFinite().any()) empty.push_back(angles.names[static_cast<size_t>(k)]);
@@ -43,7 +45,8 @@ int runAngles(const AnglesArgs& args) {
   upText << up.transpose();
   writeJointAngles(args.out, angles, trial.rateHz,
                    {"source=" + args.file + " (" + trial.format + ")",
-                    "angles=degrees, joint angles of the 15-joint skeleton (eigenwalker core/gait/joint_angles.h)",
+                    trial.hasFeet() ? "angles=degrees, joint angles of the 15-joint skeleton and the feet (eigenwalker core/gait/joint_angles.h)"
+                                    : "angles=degrees, joint angles of the 15-joint skeleton (eigenwalker core/gait/joint_angles.h)",
                     "up=" + upText.str() + " (file axes)"});
   for (const auto& w : trial.warnings) std::cerr << "warning: " << args.file << ": " << w << "\n";
   if (!empty.empty()) {
@@ -61,8 +64,9 @@ int runAngles(const AnglesArgs& args) {
 void addAnglesCommand(CLI::App& app, int& exitCode) {
   auto args = std::make_shared<AnglesArgs>();
   auto* cmd = app.add_subcommand("angles",
-                                 "Write a 3D trial's joint angles (hip, knee, shoulder, elbow, pelvis, trunk, neck; "
-                                 "degrees) as CSV or OpenSim .mot, every frame, any motion");
+                                 "Write a 3D trial's joint angles (hip, knee, shoulder, elbow, pelvis, trunk, neck; the "
+                                 "ankle and the foot progression where it has heel and toe points; degrees) as CSV or "
+                                 "OpenSim .mot, every frame, any motion");
   cmd->add_option("file", args->file, "3D trial (.c3d .bvh .amc .trc .csv .tsv, e.g. a reconstruction's CSV)")
       ->required()
       ->check(CLI::ExistingFile);

@@ -37,6 +37,7 @@ struct MeasuredTrial {
   std::string file, subject;
   GaitMeasures measures;
   std::vector<CycleCurve> curves;
+  FootProgression footProgression;  // NaN without the feet
 };
 
 std::string number(double v, int digits) {
@@ -54,13 +55,21 @@ std::vector<GaitEventSet> eventSetsFor(const WalkingTrial& t, const std::string&
   if (choice == "file" && !hasFile)
     throwBadData(t.joints.file, "", "--events file: the file has no foot strike events");
   if (choice == "file" || (choice == "auto" && hasFile)) return {file};
-  if (choice == "both" && hasFile) return {file, gaitEventsFromKinematics(m, t.joints.rateHz)};
-  return {gaitEventsFromKinematics(m, t.joints.rateHz)};
+  // The feet's heel and toe where the trial has them, else the ankle (gait_events.h).
+  const GaitEventSet kinematic = gaitEventsFromFeet(m, t.joints.feetMm, t.joints.rateHz);
+  if (choice == "both" && hasFile) return {file, kinematic};
+  return {kinematic};
 }
 
-std::vector<CycleCurve> curvesOf(const WalkingTrial& t, const GaitMeasures& g) {
-  const JointAngles angles = jointAngles(t.joints.positionsMm, Eigen::Vector3d::UnitZ(), t.joints.file);
-  return flexionCycleCurves(angles.degrees, angles.names, t.joints.rateHz, g);
+void addCurvesOf(const WalkingTrial& t, MeasuredTrial& out) {
+  const JointAngles angles =
+      jointAnglesWithFeet(t.joints.positionsMm, t.joints.feetMm, Eigen::Vector3d::UnitZ(), t.joints.file);
+  const double rateHz = t.joints.rateHz;
+  out.curves = flexionCycleCurves(angles.degrees, angles.names, rateHz, out.measures);
+  if (!t.joints.hasFeet()) return;
+  const auto ankle = footCycleCurves(angles.degrees, angles.names, rateHz, out.measures);
+  out.curves.insert(out.curves.end(), ankle.begin(), ankle.end());
+  out.footProgression = footProgressionDeg(angles.degrees, angles.names, rateHz, out.measures);
 }
 
 // A video's walker: its 3D joints in place (a temporary CSV) and what its camera fit saw of
@@ -114,8 +123,8 @@ std::vector<MeasuredTrial> measureFile(const TrialFile& f, const GaitArgs& args,
   const WalkingTrial t = loadWalkingTrial(f.path, options, prepare);
   std::vector<MeasuredTrial> out;
   for (const auto& events : eventSetsFor(t, args.events)) {
-    MeasuredTrial m{f.path.string(), f.info.subject, measuredWalk(t, events, f.path.string(), reconstructed), {}};
-    m.curves = curvesOf(t, m.measures);
+    MeasuredTrial m{f.path.string(), f.info.subject, measuredWalk(t, events, f.path.string(), reconstructed), {}, {}};
+    addCurvesOf(t, m);
     out.push_back(std::move(m));
   }
   return out;
@@ -126,7 +135,7 @@ const std::vector<std::string>& columns() {
       "file", "subject", "events", "strides", "stride_time_s", "cadence_spm", "step_length_r_m",
       "step_length_l_m", "stride_length_m", "step_width_m", "speed_mps", "speed_source", "stance_foot_speed_mps",
       "stance_r_pct", "stance_l_pct", "stance_pct", "swing_pct", "double_support_pct", "stride_time_all_events_s",
-      "notes"};
+      "notes", "foot_progression_r_deg", "foot_progression_l_deg", "ankle_flexion_range_deg"};
   return c;
 }
 
@@ -139,7 +148,9 @@ std::vector<std::string> row(const MeasuredTrial& t) {
           number(g.stepLengthLeftM, 4), number(g.strideLengthM, 4), number(g.stepWidthM, 4),
           number(g.speedMps, 3), g.speedSource, number(g.stanceFootSpeedMps, 3), number(g.stanceRightPct, 2),
           number(g.stanceLeftPct, 2), number(g.stancePct, 2), number(g.swingPct, 2),
-          number(g.doubleSupportPct, 2), number(g.strideTimeAllEventsS, 4), notes};
+          number(g.doubleSupportPct, 2), number(g.strideTimeAllEventsS, 4), notes,
+          number(t.footProgression.rightDeg, 2), number(t.footProgression.leftDeg, 2),
+          number(flexionRangeDeg(t.curves, "ankle_angle"), 2)};
 }
 
 std::string csvCell(const std::string& s) {
@@ -195,11 +206,12 @@ void printEventAgreement(const std::vector<MeasuredTrial>& all) {
     const auto& a = all[k].measures;
     const auto& b = all[k + 1].measures;
     if (all[k].file != all[k + 1].file || a.events.method != "file events") continue;
+    const std::string from = b.events.method;
     const double dStride = 100.0 * (b.strideTimeS - a.strideTimeS) / a.strideTimeS;
     const double dCadence = 100.0 * (b.cadenceSpm - a.cadenceSpm) / a.cadenceSpm;
     const double dStance = b.stancePct - a.stancePct;
     const double dAll = 100.0 * (b.strideTimeAllEventsS - a.strideTimeAllEventsS) / a.strideTimeAllEventsS;
-    std::cerr << all[k].file << ": kinematics − file events: stride time " << number(dStride, 2)
+    std::cerr << all[k].file << ": " << from << " − file events: stride time " << number(dStride, 2)
               << " % (from every event " << number(dAll, 2) << " %), cadence " << number(dCadence, 2)
               << " %, stance " << number(dStance, 2) << " points\n";
     worstStride = std::max(worstStride, std::abs(dStride));
@@ -284,7 +296,8 @@ void addGaitCommand(CLI::App& app, int& exitCode) {
   auto args = std::make_shared<GaitArgs>();
   auto* cmd = app.add_subcommand(
       "gait", "Gait measures of 3D trials: cadence, stride and step length, step width, speed, stance, "
-              "swing and double support, and hip/knee/shoulder/elbow flexion over the gait cycle. Exit 1 if "
+              "swing and double support, and hip/knee/shoulder/elbow flexion over the gait cycle (with the "
+              "ankle's and the foot progression where the trial has heel and toe points). Exit 1 if "
               "any trial cannot be measured.");
   cmd->add_option("paths", args->paths, "3D trials (.c3d .bvh .amc .trc .csv .tsv), folders or manifest CSVs; or a video (.mp4 .mov .avi…): "
                   "the walker the built-in detector finds, reconstructed through the unknown camera")->required();

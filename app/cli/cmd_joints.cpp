@@ -66,7 +66,7 @@ int runJoints(const JointsArgs& args) {
   const WalkingTrial out = completeFromModel(trial, args, comments);
   for (const auto& w : out.joints.warnings)
     std::cerr << "warning: " << args.file << ": " << w << "\n";
-  writeJointTrajectories(args.out, out.joints.positionsMm, out.joints.rateHz, comments);
+  writeJointTrajectories(args.out, out.joints.positionsMm, out.joints.rateHz, comments, out.joints.feetMm);
   std::cerr << "wrote " << args.out << ": " << out.joints.frameCount() << " frames at "
             << out.joints.rateHz << " Hz\n";
   return 0;

@@ -8,6 +8,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/common/skeleton.h"
@@ -58,6 +59,20 @@ struct RawTrial {
   int pointCount() const { return static_cast<int>(labels.size()); }
 };
 
+// The feet's points beside the 15 joints, where the input has them (Plug-in Gait's HEE and TOE,
+// the ISB calcaneus and second metatarsal head, OpenCap's calcn and toe markers): a heel and a
+// toe per foot. The 15 joints stay the engines' currency; these serve the gait events, the
+// ankle angle and the foot progression (core/gait/foot_points.h).
+enum class FootPoint : int { RHeel = 0, RToe = 1, LHeel = 2, LToe = 3 };
+inline constexpr int kFootPointCount = 4;
+inline constexpr int kFootDims3 = 3 * kFootPointCount;  // 12 columns per 3D frame
+// Also the marker-set tables' keys and the CSV column stems (r_heel_x, …).
+inline constexpr std::array<std::string_view, kFootPointCount> kFootPointNames = {
+    "r_heel", "r_toe", "l_heel", "l_toe"};
+constexpr int index(FootPoint p) { return static_cast<int>(p); }
+inline FootPoint heelOf(Side side) { return side == Side::Left ? FootPoint::LHeel : FootPoint::RHeel; }
+inline FootPoint toeOf(Side side) { return side == Side::Left ? FootPoint::LToe : FootPoint::RToe; }
+
 struct JointTrial {
   std::string file;
   std::string format;
@@ -73,8 +88,13 @@ struct JointTrial {
   std::optional<SignedAxis> upAxis;
   std::vector<GaitEvent> events;
   std::vector<std::string> warnings;
+  // The feet's heel and toe points (FootPoint order, x,y,z each), in the same axes, frames and
+  // units as positionsMm: frames x 12, or empty (0 x 0) when the input has no foot point. A
+  // point the input lacks, or lacks in a frame, is NaN there (a foot may have a toe and no heel).
+  Eigen::MatrixXd feetMm;
 
   int frameCount() const { return static_cast<int>(positionsMm.rows()); }
+  bool hasFeet() const { return feetMm.cols() == kFootDims3 && feetMm.rows() == positionsMm.rows(); }
 };
 
 // Convenience accessors on joint-major trajectory matrices.

@@ -12,12 +12,15 @@ namespace {
 // These work on frames already checked by their caller (prepare.cpp); an empty matrix here
 // is a programming error, reported as one rather than read out of bounds.
 void requireFrames(const Eigen::MatrixXd& m, const char* what) {
-  if (m.rows() == 0 || m.cols() != kDims3) {
+  if (m.rows() == 0 || m.cols() < kDims3 || m.cols() % 3 != 0) {
     throw Error(
         ErrorKind::BadArgument, "", "",
         std::string("canonical frame: ") + what + " needs at least one frame of 45 columns");
   }
 }
+
+// The 15 joints and any points carried after them (3 columns each).
+int pointsIn(const Eigen::MatrixXd& m) { return static_cast<int>(m.cols() / 3); }
 
 Eigen::Vector3d meanJoint(const Eigen::MatrixXd& m, Joint j) {
   return m.middleCols<3>(3 * index(j)).colwise().mean().transpose();
@@ -45,7 +48,7 @@ Eigen::Matrix3d rotationToZUp(const SignedAxis& up) {
 }
 
 void rotateFrames(Eigen::MatrixXd& m, const Eigen::Matrix3d& rotation) {
-  for (int j = 0; j < kJointCount; ++j) {
+  for (int j = 0; j < pointsIn(m); ++j) {
     m.middleCols<3>(3 * j) = m.middleCols<3>(3 * j) * rotation.transpose();
   }
 }
@@ -83,7 +86,7 @@ Eigen::Vector2d removeProgression(Eigen::MatrixXd& m, double rateHz) {
   const Eigen::MatrixXd pelvisXY = m.middleCols<2>(3 * index(Joint::Pelvis));
   const Eigen::MatrixXd coef = design.colPivHouseholderQr().solve(pelvisXY);  // 2 x 2
   const Eigen::MatrixXd trend = design * coef;
-  for (int j = 0; j < kJointCount; ++j) m.middleCols<2>(3 * j) -= trend;
+  for (int j = 0; j < pointsIn(m); ++j) m.middleCols<2>(3 * j) -= trend;
   return coef.row(1).transpose();
 }
 
@@ -98,7 +101,7 @@ void placeOnFloor(Eigen::MatrixXd& m) {
   const auto k = static_cast<size_t>(std::floor(0.05 * static_cast<double>(frames - 1)));
   std::nth_element(lowest.begin(), lowest.begin() + static_cast<long>(k), lowest.end());
   const double floorZ = lowest[k];
-  for (int j = 0; j < kJointCount; ++j) m.col(3 * j + 2).array() -= floorZ;
+  for (int j = 0; j < pointsIn(m); ++j) m.col(3 * j + 2).array() -= floorZ;
 }
 
 }  // namespace ew

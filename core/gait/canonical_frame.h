@@ -1,7 +1,8 @@
 #pragma once
 // METHOD §2: the canonical frame. Millimetres; x = walker's right, y = walking direction,
 // z = up (right-handed). All functions work in place on T x 45 joint-major matrices with
-// no NaN (gaps are handled before).
+// no NaN (gaps are handled before). They read the 15 joints only; further points after them
+// (T x (45 + 3k): the feet, JointTrial::feetMm) are moved with the joints, NaN or not.
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>

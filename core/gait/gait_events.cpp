@@ -1,6 +1,7 @@
 #include "core/gait/gait_events.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -34,11 +35,23 @@ std::vector<int> awayFromEnds(const std::vector<int>& rows, Eigen::Index n, doub
 
 void sortedInto(std::vector<double>& times) { std::sort(times.begin(), times.end()); }
 
+// The times of a signal's dominant maxima away from the clip's ends, to a fraction of a frame.
+std::vector<double> extremesS(const Eigen::VectorXd& signal, double rateHz) {
+  return rowsToSeconds(signal, awayFromEnds(dominantPeaks(signal, rateHz), signal.size(), rateHz), rateHz);
+}
+
 }  // namespace
 
 Eigen::VectorXd ankleLeadMm(const Eigen::Ref<const Eigen::MatrixXd>& m, double rateHz, Side side) {
-  const Eigen::VectorXd raw =
-      m.col(3 * index(ankleOf(side)) + 1) - m.col(3 * index(Joint::Pelvis) + 1);
+  return smoothedLead(m.col(3 * index(ankleOf(side)) + 1) - m.col(3 * index(Joint::Pelvis) + 1), rateHz);
+}
+
+Eigen::VectorXd footPointLeadMm(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
+                                const Eigen::Ref<const Eigen::MatrixXd>& feetX12, double rateHz, FootPoint p) {
+  return smoothedLead(feetX12.col(3 * index(p) + 1) - framesX45.col(3 * index(Joint::Pelvis) + 1), rateHz);
+}
+
+Eigen::VectorXd smoothedLead(const Eigen::VectorXd& raw, double rateHz) {
   const int half = smoothingHalfWidth(rateHz);
   const auto n = raw.size();
   Eigen::VectorXd smooth(n);
@@ -83,18 +96,47 @@ GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& m
   for (Side side : {Side::Right, Side::Left}) {
     const Eigen::VectorXd lead = ankleLeadMm(m, rateHz, side);
     if (!lead.allFinite()) continue;
-    const Eigen::VectorXd trail = -lead;
     FootEvents& foot = side == Side::Right ? events.right : events.left;
-    foot.strikesS =
-        rowsToSeconds(lead, awayFromEnds(dominantPeaks(lead, rateHz), lead.size(), rateHz), rateHz);
-    foot.offsS = rowsToSeconds(
-        trail, awayFromEnds(dominantPeaks(trail, rateHz), trail.size(), rateHz), rateHz);
+    foot.strikesS = extremesS(lead, rateHz);
+    foot.offsS = extremesS(-lead, rateHz);
   }
   const double strideS = medianStrideS(events);
   if (!std::isfinite(strideS)) return events;
   const double lastS = static_cast<double>(m.rows() - 1) / rateHz;
   for (FootEvents* foot : {&events.right, &events.left})
     for (double& off : foot->offsS) off = std::min(off + footOffLag * strideS, lastS);
+  return events;
+}
+
+GaitEventSet gaitEventsFromFeet(const Eigen::Ref<const Eigen::MatrixXd>& m,
+                                const Eigen::Ref<const Eigen::MatrixXd>& feet, double rateHz,
+                                double heelStrikeLag) {
+  GaitEventSet events = gaitEventsFromKinematics(m, rateHz);
+  if (m.rows() < 3 || m.cols() != kDims3 || feet.rows() != m.rows() || feet.cols() != kFootDims3 ||
+      !(rateHz > 0) || !std::isfinite(rateHz) || !m.col(3 * index(Joint::Pelvis) + 1).allFinite())
+    return events;
+  // A foot's two events share one point's lead or the other's: the heel and the toe together,
+  // else the ankle for both (its foot-off lag makes its stance unbiased; the toe's accurate foot
+  // off after the ankle's early strike would read stance long).
+  std::array<bool, 2> fromFeet{};
+  for (Side side : {Side::Right, Side::Left}) {
+    const auto seen = [&](FootPoint p) { return feet.middleCols(3 * index(p), 3).allFinite(); };
+    if (!seen(heelOf(side)) || !seen(toeOf(side))) continue;
+    FootEvents& foot = side == Side::Right ? events.right : events.left;
+    foot.strikesS = extremesS(footPointLeadMm(m, feet, rateHz, heelOf(side)), rateHz);
+    foot.offsS = extremesS(-footPointLeadMm(m, feet, rateHz, toeOf(side)), rateHz);
+    fromFeet[side == Side::Right ? 0 : 1] = true;
+  }
+  if (!fromFeet[0] && !fromFeet[1]) return events;
+  events.method = fromFeet[0] && fromFeet[1] ? "kinematics (heel and toe)" : "kinematics (heel and toe of one foot, the other's ankle)";
+  const double strideS = medianStrideS(events);
+  if (!std::isfinite(strideS)) return events;
+  const double lastS = static_cast<double>(m.rows() - 1) / rateHz;
+  for (Side side : {Side::Right, Side::Left}) {
+    if (!fromFeet[side == Side::Right ? 0 : 1]) continue;
+    for (double& strike : (side == Side::Right ? events.right : events.left).strikesS)
+      strike = std::min(strike + heelStrikeLag * strideS, lastS);
+  }
   return events;
 }
 

@@ -36,6 +36,14 @@ struct GaitEventSet {
 Eigen::VectorXd ankleLeadMm(const Eigen::Ref<const Eigen::MatrixXd>& framesX45, double rateHz,
                             Side side);
 
+// The forward lead on the pelvis (mm) of a foot's heel or toe (feetX12: JointTrial::feetMm in
+// the same canonical frame as framesX45), smoothed as the ankle's.
+Eigen::VectorXd footPointLeadMm(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
+                                const Eigen::Ref<const Eigen::MatrixXd>& feetX12, double rateHz, FootPoint p);
+
+// A signal smoothed by a moving mean over ~50 ms (the window shortened at the ends).
+Eigen::VectorXd smoothedLead(const Eigen::VectorXd& raw, double rateHz);
+
 // Rows where `signal` has a local maximum above mean + 0.3·(max − mean) that dominates
 // ±0.5/kMaxStrideHz seconds (one foot strikes at most kMaxStrideHz times a second).
 std::vector<int> dominantPeaks(const Eigen::VectorXd& signal, double rateHz);
@@ -58,6 +66,28 @@ inline constexpr double kAnkleFootOffLagOfStride = 0.0185;
 // foot off from the ankle as it is; so does a trial with no complete stride).
 GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
                                       double rateHz, double footOffLag = kAnkleFootOffLagOfStride);
+
+// Zeni's rule on the points he used, where the input has the feet (JointTrial::feetMm): the
+// strike where the heel is foremost on the pelvis, the foot off where the toe is rearmost.
+// Against the Schreiber-Moissenet C3D events (18 trials; docs/GAIT.md, "Events from the
+// feet") the heel's foremost point comes 32.5 ± 13.8 ms before the strike and the toe's
+// rearmost 12.0 ± 11.6 ms before the foot off: the toe needs no lag, and the strike is put
+// this fraction of the stride after the heel's foremost point, the difference of the two
+// leads (stance otherwise reads 1.6 points long). FeetOnSharedWalkers
+// (tests/gait/test_gait_measures.cpp) measures it again, and again leaving each trial out.
+inline constexpr double kHeelStrikeLagOfStride = 0.0184;
+
+// Each foot's strikes from its heel and its foot offs from its toe where both points are finite
+// in every frame; the ankle's events (gaitEventsFromKinematics, with its foot-off lag) for a foot
+// that lacks either, so that a foot's strike and foot off always share one lead (the toe's
+// accurate foot off after the ankle's early strike read stance 1.7 points long on
+// gait-pig-nz.c3d, which has toe markers and no heels). method: "kinematics (heel and toe)" with
+// both feet, "kinematics (heel and toe of one foot, the other's ankle)" with one; feetX12 empty,
+// of another shape or lacking a point of each foot gives gaitEventsFromKinematics's events
+// unchanged. heelStrikeLag scales by the median stride.
+GaitEventSet gaitEventsFromFeet(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
+                                const Eigen::Ref<const Eigen::MatrixXd>& feetX12, double rateHz,
+                                double heelStrikeLag = kHeelStrikeLagOfStride);
 
 // The median time between consecutive strikes of one foot, over both feet, counting only
 // plausible strides (METHOD §3's stride frequencies); NaN without one.

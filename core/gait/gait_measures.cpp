@@ -202,6 +202,39 @@ std::vector<double> withFootOffIntervals(std::vector<double> durations, const Ga
   return durations;
 }
 
+std::vector<CycleCurve> cycleCurvesOf(const std::vector<std::string>& wantedNames,
+                                      const Eigen::Ref<const Eigen::MatrixXd>& angles,
+                                      const std::vector<std::string>& names, double rateHz,
+                                      const GaitMeasures& measures, int samples) {
+  std::vector<CycleCurve> curves;
+  if (samples < 2 || !(rateHz > 0) || static_cast<size_t>(angles.cols()) != names.size()) return curves;
+  for (const auto& wanted : wantedNames) {
+    const auto column = std::find(names.begin(), names.end(), wanted);
+    if (column == names.end()) continue;
+    const int c = static_cast<int>(column - names.begin());
+    const Side side = wanted.back() == 'r' ? Side::Right : Side::Left;
+    std::vector<Eigen::VectorXd> strides;
+    for (const auto& s : measures.strides) {
+      if (s.side != side) continue;
+      Eigen::VectorXd curve(samples);
+      for (int k = 0; k < samples; ++k) {
+        const double t = s.strikeS + (s.nextStrikeS - s.strikeS) * k / (samples - 1.0);
+        curve[k] = sampleAt(angles, c, t, rateHz);
+      }
+      if (curve.allFinite()) strides.push_back(curve);
+    }
+    if (strides.empty()) continue;
+    CycleCurve out{wanted, Eigen::VectorXd::Zero(samples), Eigen::VectorXd::Zero(samples),
+                   static_cast<int>(strides.size())};
+    for (const auto& s : strides) out.meanDeg += s;
+    out.meanDeg /= static_cast<double>(strides.size());
+    for (const auto& s : strides) out.sdDeg += (s - out.meanDeg).cwiseAbs2();
+    if (strides.size() > 1) out.sdDeg = (out.sdDeg / (static_cast<double>(strides.size()) - 1.0)).cwiseSqrt();
+    curves.push_back(std::move(out));
+  }
+  return curves;
+}
+
 }  // namespace
 
 GaitMeasures measureGait(const Eigen::Ref<const Eigen::MatrixXd>& m, double rateHz,
@@ -284,6 +317,7 @@ double gaitMeasureByName(const GaitMeasures& g, const std::vector<CycleCurve>& c
   if (key == "double_support_pct") return g.doubleSupportPct;
   if (key == "hip_flexion_range_deg") return flexionRangeDeg(curves, "hip_flexion");
   if (key == "knee_flexion_range_deg") return flexionRangeDeg(curves, "knee_angle");
+  if (key == "ankle_flexion_range_deg") return flexionRangeDeg(curves, "ankle_angle");
   return NAN;
 }
 
@@ -301,33 +335,37 @@ double flexionRangeDeg(const std::vector<CycleCurve>& curves, const std::string&
 std::vector<CycleCurve> flexionCycleCurves(const Eigen::Ref<const Eigen::MatrixXd>& angles,
                                            const std::vector<std::string>& names, double rateHz,
                                            const GaitMeasures& measures, int samples) {
-  std::vector<CycleCurve> curves;
-  if (samples < 2 || !(rateHz > 0) || static_cast<size_t>(angles.cols()) != names.size()) return curves;
-  for (const auto& wanted : flexionCurveNames()) {
-    const auto column = std::find(names.begin(), names.end(), wanted);
+  return cycleCurvesOf(flexionCurveNames(), angles, names, rateHz, measures, samples);
+}
+
+std::vector<CycleCurve> footCycleCurves(const Eigen::Ref<const Eigen::MatrixXd>& angles,
+                                        const std::vector<std::string>& names, double rateHz,
+                                        const GaitMeasures& measures, int samples) {
+  static const std::vector<std::string> ankle = {"ankle_angle_r", "ankle_angle_l"};
+  return cycleCurvesOf(ankle, angles, names, rateHz, measures, samples);
+}
+
+FootProgression footProgressionDeg(const Eigen::Ref<const Eigen::MatrixXd>& angles,
+                                   const std::vector<std::string>& names, double rateHz,
+                                   const GaitMeasures& measures) {
+  FootProgression out;
+  if (!(rateHz > 0) || static_cast<size_t>(angles.cols()) != names.size()) return out;
+  for (Side side : {Side::Right, Side::Left}) {
+    const auto column = std::find(names.begin(), names.end(),
+                                  side == Side::Right ? "foot_progression_r" : "foot_progression_l");
     if (column == names.end()) continue;
     const int c = static_cast<int>(column - names.begin());
-    const Side side = wanted.back() == 'r' ? Side::Right : Side::Left;
-    std::vector<Eigen::VectorXd> strides;
+    std::vector<double> perStride;
     for (const auto& s : measures.strides) {
       if (s.side != side) continue;
-      Eigen::VectorXd curve(samples);
-      for (int k = 0; k < samples; ++k) {
-        const double t = s.strikeS + (s.nextStrikeS - s.strikeS) * k / (samples - 1.0);
-        curve[k] = sampleAt(angles, c, t, rateHz);
-      }
-      if (curve.allFinite()) strides.push_back(curve);
+      const auto [first, last] = flatRows(s.strikeS, s.nextStrikeS - s.strikeS, rateHz, angles.rows());
+      if (first > last) continue;
+      const Eigen::VectorXd flat = angles.col(c).segment(first, last - first + 1);
+      if (flat.allFinite()) perStride.push_back(flat.mean());
     }
-    if (strides.empty()) continue;
-    CycleCurve out{wanted, Eigen::VectorXd::Zero(samples), Eigen::VectorXd::Zero(samples),
-                   static_cast<int>(strides.size())};
-    for (const auto& s : strides) out.meanDeg += s;
-    out.meanDeg /= static_cast<double>(strides.size());
-    for (const auto& s : strides) out.sdDeg += (s - out.meanDeg).cwiseAbs2();
-    if (strides.size() > 1) out.sdDeg = (out.sdDeg / (static_cast<double>(strides.size()) - 1.0)).cwiseSqrt();
-    curves.push_back(std::move(out));
+    (side == Side::Right ? out.rightDeg : out.leftDeg) = meanOf(perStride);
   }
-  return curves;
+  return out;
 }
 
 }  // namespace ew

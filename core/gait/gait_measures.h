@@ -97,10 +97,28 @@ std::vector<CycleCurve> flexionCycleCurves(const Eigen::Ref<const Eigen::MatrixX
 // The names flexionCycleCurves reports, right side then left.
 const std::vector<std::string>& flexionCurveNames();
 
+// The ankle's flexion curves (ankle_angle_r, ankle_angle_l; joint_angles.h's
+// jointAnglesWithFeet), resampled as flexionCycleCurves does; none without the feet.
+std::vector<CycleCurve> footCycleCurves(const Eigen::Ref<const Eigen::MatrixXd>& anglesDeg,
+                                        const std::vector<std::string>& names, double rateHz,
+                                        const GaitMeasures& measures, int samples = 101);
+
+// The foot progression angle of each foot in stance (toe out positive; jointAnglesWithFeet's
+// foot_progression_r/_l): its mean over each stride's foot flat, 10–30 % of the stride after
+// the strike (the footprint's window), then over strides. NaN for a side without that column,
+// a finite sample there or a stride.
+struct FootProgression {
+  double rightDeg = NAN, leftDeg = NAN;
+};
+FootProgression footProgressionDeg(const Eigen::Ref<const Eigen::MatrixXd>& anglesDeg,
+                                   const std::vector<std::string>& names, double rateHz,
+                                   const GaitMeasures& measures);
+
 // A measure by its column name, as `gait --out` writes it and the viewer's report exports it:
 // cadence_spm, stride_time_s, stride_length_m, step_length_r_m, step_length_l_m, step_width_m,
 // speed_mps, stance_pct, swing_pct, double_support_pct, hip_flexion_range_deg,
-// knee_flexion_range_deg (these two from `curves`). NaN for another name or a measure not taken.
+// knee_flexion_range_deg, ankle_flexion_range_deg (these three from `curves`). NaN for another
+// name or a measure not taken.
 double gaitMeasureByName(const GaitMeasures& g, const std::vector<CycleCurve>& curves, const std::string& key);
 
 // The range (max − min, degrees) of a flexion's stride-averaged curve, the mean over the two

@@ -54,6 +54,11 @@ double deviationFromNeighbours(const Eigen::MatrixXd& m, Eigen::Index r, int joi
   return std::sqrt(sum2);
 }
 
+// The named points the matrix holds (3 columns each): never more than it has columns for.
+int pointCountOf(const Eigen::MatrixXd& m, PointNames names) {
+  return static_cast<int>(std::min<Eigen::Index>(static_cast<Eigen::Index>(names.size()), m.cols() / 3));
+}
+
 void markMissing(Eigen::MatrixXd& m, Eigen::Index r, int joint) {
   m.block<1, 3>(r, 3 * joint).setConstant(std::numeric_limits<double>::quiet_NaN());
 }
@@ -73,9 +78,13 @@ std::string distanceText(double mm) {
 double outlierThresholdMm(double rateHz) { return 500.0 + 2.0 * 10000.0 / rateHz; }
 
 OutlierReport rejectOutlierSamples(Eigen::MatrixXd& m, double thresholdMm) {
+  return rejectOutlierSamples(m, thresholdMm, kJointNames);
+}
+
+OutlierReport rejectOutlierSamples(Eigen::MatrixXd& m, double thresholdMm, PointNames names) {
   OutlierReport report;
   const Eigen::MatrixXd original = m;  // judge every sample against the data as read
-  for (int j = 0; j < kJointCount; ++j) {
+  for (int j = 0; j < pointCountOf(m, names); ++j) {
     for (Eigen::Index r = 0; r < m.rows(); ++r) {
       const auto sample = original.block<1, 3>(r, 3 * j);
       if (!sample.allFinite()) {
@@ -87,7 +96,7 @@ OutlierReport rejectOutlierSamples(Eigen::MatrixXd& m, double thresholdMm) {
       if (offLimits <= kMaxPlausibleCoordinateMm && deviation <= thresholdMm) continue;
       markMissing(m, r, j);
       ++report.rejectedSamples;
-      report.notes.push_back(std::string(kJointNames[static_cast<size_t>(j)]) + ": frame " +
+      report.notes.push_back(std::string(names[static_cast<size_t>(j)]) + ": frame " +
                              std::to_string(r) + ", " +
                              (offLimits > kMaxPlausibleCoordinateMm
                                   ? "coordinate " + distanceText(offLimits) + " from the origin"
@@ -98,9 +107,13 @@ OutlierReport rejectOutlierSamples(Eigen::MatrixXd& m, double thresholdMm) {
 }
 
 GapReport bridgeShortGaps(Eigen::MatrixXd& m, int maxGapFrames) {
+  return bridgeShortGaps(m, maxGapFrames, kJointNames);
+}
+
+GapReport bridgeShortGaps(Eigen::MatrixXd& m, int maxGapFrames, PointNames names) {
   GapReport report;
   const Eigen::Index frames = m.rows();
-  for (int j = 0; j < kJointCount; ++j) {
+  for (int j = 0; j < pointCountOf(m, names); ++j) {
     Eigen::Index r = 0;
     while (r < frames) {
       if (!jointMissing(m, r, j)) {
@@ -114,7 +127,7 @@ GapReport bridgeShortGaps(Eigen::MatrixXd& m, int maxGapFrames) {
       interpolateJoint(m, j, start - 1, r);
       ++report.bridgedGaps;
       report.bridgedSamples += static_cast<int>(length);
-      report.notes.push_back(std::string(kJointNames[static_cast<size_t>(j)]) + ": frames " +
+      report.notes.push_back(std::string(names[static_cast<size_t>(j)]) + ": frames " +
                              std::to_string(start) + "-" + std::to_string(r - 1) + " interpolated");
     }
   }

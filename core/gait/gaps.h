@@ -3,7 +3,9 @@
 // interpolation (a marker hidden for a few frames), long ones mark frames unusable.
 
 #include <Eigen/Core>
+#include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace ew {
@@ -36,6 +38,12 @@ OutlierReport rejectOutlierSamples(Eigen::MatrixXd& framesX45, double thresholdM
 // Fills interior NaN runs of at most maxGapFrames per joint (all three coordinates of a
 // joint are treated together). Longer runs and runs touching the ends stay NaN.
 GapReport bridgeShortGaps(Eigen::MatrixXd& framesX45, int maxGapFrames);
+
+// The same two for other points, 3 columns each, named for the notes (the feet's:
+// kFootPointNames); points beyond the matrix's columns are not read.
+using PointNames = std::span<const std::string_view>;
+OutlierReport rejectOutlierSamples(Eigen::MatrixXd& framesX3P, double thresholdMm, PointNames names);
+GapReport bridgeShortGaps(Eigen::MatrixXd& framesX3P, int maxGapFrames, PointNames names);
 
 // Every NaN of one signal filled: linearly between the finite samples around it, held at
 // the ends (left all NaN when none is finite). For steps that need every sample, however

@@ -14,6 +14,7 @@
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
+#include "core/common/trial.h"
 #include "core/io/atomic_write.h"
 
 namespace ew {
@@ -184,6 +185,33 @@ void anglesOfFrame(const Eigen::Ref<const Eigen::MatrixXd>& frames, Eigen::Index
   }
 }
 
+std::optional<Vec> footPointAt(const Eigen::Ref<const Eigen::MatrixXd>& feet, Eigen::Index t, FootPoint p) {
+  const Vec v = feet.row(t).segment<3>(3 * index(p)).transpose();
+  if (!v.allFinite()) return std::nullopt;
+  return v;
+}
+
+// Ankle flexion and foot progression of one side at frame t (NaN where a point is missing).
+Eigen::Vector2d footAnglesOfFrame(const Eigen::Ref<const Eigen::MatrixXd>& frames,
+                                  const Eigen::Ref<const Eigen::MatrixXd>& feet, Eigen::Index t,
+                                  const Rot& ground, Side side) {
+  Eigen::Vector2d out = Eigen::Vector2d::Constant(std::numeric_limits<double>::quiet_NaN());
+  const bool left = side == Side::Left;
+  const auto heel = footPointAt(feet, t, heelOf(side)), toe = footPointAt(feet, t, toeOf(side));
+  if (!heel || !toe) return out;
+  const Vec foot = *toe - *heel;
+  if (!(foot.norm() > 1e-9)) return out;
+  const auto knee = jointAt(frames, t, left ? Joint::LKnee : Joint::RKnee);
+  const auto ankle = jointAt(frames, t, left ? Joint::LAnkle : Joint::RAnkle);
+  if (knee && ankle && (*knee - *ankle).norm() > 1e-9) {
+    const Vec shank = (*knee - *ankle).normalized();
+    out(0) = 90.0 - std::acos(std::clamp(shank.dot(foot.normalized()), -1.0, 1.0)) * kDeg;
+  }
+  const double forward = foot.dot(ground.col(0)), right = foot.dot(ground.col(2));
+  if (std::hypot(forward, right) > 1e-9) out(1) = std::atan2(left ? -right : right, forward) * kDeg;
+  return out;
+}
+
 std::string formatNumber(double v) {
   if (!std::isfinite(v)) return "nan";
   if (v == 0.0) return "0";  // not "-0"
@@ -220,6 +248,29 @@ JointAngles jointAngles(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, const
   if (T == 0) return out;
   const Rot ground = groundFrame(framesMm, upMm, name);
   for (Eigen::Index t = 0; t < T; ++t) anglesOfFrame(framesMm, t, ground, out);
+  return out;
+}
+
+const std::vector<std::string>& footAngleNames() {
+  static const std::vector<std::string> names = {"ankle_angle_r", "foot_progression_r", "ankle_angle_l",
+                                                 "foot_progression_l"};
+  return names;
+}
+
+JointAngles jointAnglesWithFeet(const Eigen::Ref<const Eigen::MatrixXd>& framesMm,
+                                const Eigen::Ref<const Eigen::MatrixXd>& feetMm, const Eigen::Vector3d& upMm,
+                                const std::string& name) {
+  JointAngles out = jointAngles(framesMm, upMm, name);
+  const Eigen::Index T = framesMm.rows(), first = out.degrees.cols();
+  out.names.insert(out.names.end(), footAngleNames().begin(), footAngleNames().end());
+  out.degrees.conservativeResize(T, static_cast<Eigen::Index>(out.names.size()));
+  out.degrees.rightCols(4).setConstant(std::numeric_limits<double>::quiet_NaN());
+  if (T == 0 || feetMm.rows() != T || feetMm.cols() != kFootDims3) return out;
+  const Rot ground = groundFrame(framesMm, upMm, name);
+  for (Eigen::Index t = 0; t < T; ++t) {
+    out.degrees.row(t).segment<2>(first) = footAnglesOfFrame(framesMm, feetMm, t, ground, Side::Right).transpose();
+    out.degrees.row(t).segment<2>(first + 2) = footAnglesOfFrame(framesMm, feetMm, t, ground, Side::Left).transpose();
+  }
   return out;
 }
 

@@ -20,7 +20,9 @@
 // here comes from the next joint's hinge. Signs: flexion positive forward at hip and
 // shoulder and positive bending at knee and elbow; adduction (towards the midline) and
 // internal rotation positive on both sides; pelvis tilt, list and rotation are OpenSim's
-// (tilt positive backward, rotation positive turning left). The ankle has no angle: the 15 joints have no foot point.
+// (tilt positive backward, rotation positive turning left). The ankle has no angle from the 15
+// joints alone (no foot point); where the input has the feet's heel and toe (JointTrial::feetMm),
+// jointAnglesWithFeet adds it and the foot progression angle.
 
 #include <Eigen/Core>
 #include <string>
@@ -42,6 +44,24 @@ const std::vector<std::string>& jointAngleNames();
 // non-finite up, and Error(BadData) when no frame has the pelvis, hips and sternum (no heading).
 JointAngles jointAngles(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, const Eigen::Vector3d& upMm,
                         const std::string& name);
+
+// The columns jointAnglesWithFeet adds: ankle_angle_r, foot_progression_r, ankle_angle_l,
+// foot_progression_l.
+//   ankle_angle     90° less the angle between the shank (ankle → knee) and the foot (heel → toe):
+//                   0 with the shank square to the foot, dorsiflexion positive (OpenSim's sign).
+//                   Heel and toe markers at one height above the sole (Plug-in Gait's HEE and
+//                   TOE) read 0 standing; a detector's heel and big toe near the floor about the same.
+//   foot_progression  the foot's long axis (heel → toe) in the horizontal plane against the
+//                   ground frame's forward (the clip's mean heading), toe out positive on both sides
+//                   (Perry & Burnfield; Baker, Measuring Walking, ch. 7).
+const std::vector<std::string>& footAngleNames();
+
+// jointAngles, then the footAngleNames() columns from feetMm (T × 12, FootPoint order, the frames'
+// axes; NaN where a point is missing). An empty feetMm, or one of another shape, adds the
+// columns as NaN; so does a frame missing the heel, the toe, the knee or the ankle.
+JointAngles jointAnglesWithFeet(const Eigen::Ref<const Eigen::MatrixXd>& framesMm,
+                                const Eigen::Ref<const Eigen::MatrixXd>& feetMm, const Eigen::Vector3d& upMm,
+                                const std::string& name);
 
 // The body's up: the mean over frames of the unit vector from the ankles' midpoint to the
 // head (frames where any of the three is missing are skipped); snapped to the nearest signed

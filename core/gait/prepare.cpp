@@ -87,7 +87,33 @@ void blankMissing(Eigen::MatrixXd& m, const JointMask& missing) {
   }
 }
 
-// Gap-free rows [begin, end) with z up.
+// [SECTION] The feet beside the joints
+
+// The feet's points with their glitches and short gaps treated as the joints' are; what is
+// left NaN stays NaN (the feet never decide which frames are usable).
+Eigen::MatrixXd cleanedFeet(const JointTrial& t, int maxGap, const PrepareOptions& o) {
+  Eigen::MatrixXd feet = t.feetMm;
+  if (o.rejectOutliers) rejectOutlierSamples(feet, outlierThresholdMm(t.rateHz), kFootPointNames);
+  bridgeShortGaps(feet, maxGap, kFootPointNames);
+  return feet;
+}
+
+// The run's joints with the feet's rows [begin, begin + run rows) after them: the canonical
+// frame moves both together (canonical_frame.h), splitFeet parts them again.
+Eigen::MatrixXd withFeet(const Eigen::MatrixXd& run, const Eigen::MatrixXd& feet, int begin) {
+  Eigen::MatrixXd both(run.rows(), kDims3 + kFootDims3);
+  both << run, feet.middleRows(begin, run.rows());
+  return both;
+}
+
+// The joints of a window; its feet go to `feet` (left empty when the window has none).
+Eigen::MatrixXd splitFeet(Eigen::MatrixXd m, Eigen::MatrixXd& feet) {
+  if (m.cols() == kDims3) return m;
+  feet = m.rightCols(kFootDims3);
+  return m.leftCols(kDims3);
+}
+
+// Gap-free rows [begin, end) with z up; with the feet after the joints when the trial has them.
 Eigen::MatrixXd completeRunZUp(const JointTrial& t, const PrepareOptions& o, WalkingTrial& out) {
   Eigen::MatrixXd m = t.positionsMm;
   standInForMissing(m, out.joints.missing);
@@ -110,6 +136,7 @@ Eigen::MatrixXd completeRunZUp(const JointTrial& t, const PrepareOptions& o, Wal
   out.windowEnd = end;
   Eigen::MatrixXd run = m.middleRows(begin, end - begin);
   const SignedAxis up = t.upAxis.value_or(detectUpAxis(run));
+  if (t.hasFeet()) run = withFeet(run, cleanedFeet(t, maxGap, o), begin);
   rotateFrames(run, rotationToZUp(up));
   return run;
 }
@@ -233,9 +260,11 @@ void useWindow(const Eigen::MatrixXd& run, int runBegin, const Candidate& c, con
                  "walking: " + framesText(runBegin + c.begin, runBegin + c.end) +
                      " is too short to hold a gait cycle");
   }
-  Eigen::MatrixXd m = run.middleRows(c.begin, c.end - c.begin);
+  Eigen::MatrixXd both = run.middleRows(c.begin, c.end - c.begin);
   std::vector<std::string> warnings;
-  const double speed = toCanonical(m, t.rateHz, warnings);
+  const double speed = toCanonical(both, t.rateHz, warnings);
+  Eigen::MatrixXd feet;
+  Eigen::MatrixXd m = splitFeet(std::move(both), feet);
   const double offsetS = (runBegin + c.begin) / t.rateHz;
   out.cycles = detectGaitCycles(m, t.rateHz, shiftEvents(t.events, offsetS), t.file);
   blankMissing(m, out.joints.missing);
@@ -245,6 +274,7 @@ void useWindow(const Eigen::MatrixXd& run, int runBegin, const Candidate& c, con
   out.segment = c.segment;
   out.speedMps = speed;
   out.joints.positionsMm = std::move(m);
+  out.joints.feetMm = std::move(feet);
   out.joints.upAxis = SignedAxis{2, 1};
   out.joints.events = shiftEvents(t.events, offsetS);
   out.joints.warnings.insert(out.joints.warnings.end(), warnings.begin(), warnings.end());
@@ -257,6 +287,7 @@ WalkingTrial prepareWalkingTrial(const JointTrial& t, const PrepareOptions& o) {
   WalkingTrial out;
   out.joints = t;
   out.joints.positionsMm.resize(0, kDims3);  // filled with the window; no second full copy
+  out.joints.feetMm.resize(0, 0);
   out.loadedFrames = t.frameCount();
   out.joints.missing = missingJointsOf(t);
   if (anyJoint(out.joints.missing)) requireMinimumMeasured(out.joints.missing, t.file, "walking");
@@ -264,7 +295,7 @@ WalkingTrial prepareWalkingTrial(const JointTrial& t, const PrepareOptions& o) {
   const int runBegin = out.windowBegin;
   const int runFrames = static_cast<int>(run.rows());
   SteadyWindow window;
-  if (o.cropToSteadyWindow) window = detectSteadyWindow(run, t.rateHz, o.window);
+  if (o.cropToSteadyWindow) window = detectSteadyWindow(run.leftCols(kDims3), t.rateHz, o.window);
   out.segments = inTrialFrames(window.segments, runBegin);
   const auto candidates = candidateWindows(window, runFrames, runBegin, o, t.file);
   std::optional<Error> firstFailure, lastFailure;

@@ -756,8 +756,10 @@ RawTrial parseC3d(std::span<const std::uint8_t> bytes, const std::string& name,
   if (options.rateHzOverride) trial.rateHz = checkedRateOverrideHz(*options.rateHzOverride, name);
   trial.firstFrame = layout.firstFrame;
   trial.labels = pointLabels(b, params, layout.points, trial.warnings);
-  // Our own 15 joints (core/io/c3d_writer.h writes them so), as the TRC reader takes them.
-  if (std::equal(trial.labels.begin(), trial.labels.end(), kJointNames.begin(), kJointNames.end()))
+  // Our own 15 joints (core/io/c3d_writer.h writes them so, the feet's points after them when
+  // known), as the TRC reader takes them.
+  if (trial.labels.size() >= kJointNames.size() &&
+      std::equal(kJointNames.begin(), kJointNames.end(), trial.labels.begin()))
     trial.kind = PointKind::CanonicalJoints;
   const double toMm = lengthFactor(b, params, options, trial);
   upAxisFromScreen(b, params, trial);

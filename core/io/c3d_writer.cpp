@@ -435,20 +435,28 @@ std::string axisName(int axis, int sign) {
 struct WalkerAxes {
   std::string forward = "+Y", up = "+Z";
   Eigen::MatrixXd canonical;  // the frames turned to z up, facing +y (empty: not finite)
+  Eigen::MatrixXd canonicalFeet;  // the feet turned with them (empty without feet)
 };
 
 // Up is the body's (head over ankles), forward the horizontal axis closest to the facing
-// direction; both default to the canonical frame's when a sample is missing.
-WalkerAxes walkerAxes(const Eigen::Ref<const Eigen::MatrixXd>& framesX45) {
+// direction; both default to the canonical frame's when a sample is missing. The feet
+// (T × 12, or empty) are turned with the joints.
+WalkerAxes walkerAxes(const Eigen::Ref<const Eigen::MatrixXd>& framesX45, const Eigen::MatrixXd& feetX12) {
   WalkerAxes axes;
   if (framesX45.rows() == 0 || !framesX45.allFinite()) return axes;
-  Eigen::MatrixXd m = framesX45;
+  const bool feet = feetX12.rows() == framesX45.rows() && feetX12.cols() == kFootDims3;
+  Eigen::MatrixXd m(framesX45.rows(), kDims3 + (feet ? kFootDims3 : 0));
+  if (feet)
+    m << framesX45, feetX12;
+  else
+    m = framesX45;
   const SignedAxis up = detectUpAxis(m);
   const Eigen::Matrix3d toZUp = rotationToZUp(up);
   rotateFrames(m, toZUp);
   const Eigen::Vector2d facing = facingDirection(m);
   rotateFacingToY(m);
-  axes.canonical = std::move(m);
+  if (feet) axes.canonicalFeet = m.rightCols(kFootDims3);
+  axes.canonical = m.leftCols(kDims3);
   axes.up = axisName(up.axis, up.sign);
   if (facing.isZero()) return axes;
   const Eigen::Vector3d forward = toZUp.transpose() * Eigen::Vector3d(facing.x(), facing.y(), 0.0);
@@ -508,19 +516,47 @@ void writeWalkerC3d(const std::filesystem::path& file,
                     const Eigen::Ref<const Eigen::MatrixXd>& framesX45, double rateHz,
                     const std::vector<std::string>& notes,
                     const std::vector<C3dPointTrajectory>& extraPoints) {
+  writeWalkerWithFeetC3d(file, framesX45, Eigen::MatrixXd(), rateHz, notes, extraPoints);
+}
+
+std::vector<C3dPointTrajectory> footPointTrajectories(const Eigen::MatrixXd& feetX12,
+                                                      const std::string& description) {
+  std::vector<C3dPointTrajectory> points;
+  if (feetX12.cols() != kFootDims3) return points;
+  for (int p = 0; p < kFootPointCount; ++p) {
+    if (!feetX12.middleCols<3>(3 * p).array().isFinite().any()) continue;
+    points.push_back({std::string(kFootPointNames[static_cast<std::size_t>(p)]), description,
+                      feetX12.middleCols<3>(3 * p)});
+  }
+  return points;
+}
+
+void writeWalkerWithFeetC3d(const std::filesystem::path& file,
+                            const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
+                            const Eigen::MatrixXd& feetX12, double rateHz,
+                            const std::vector<std::string>& notes,
+                            const std::vector<C3dPointTrajectory>& extraPoints) {
   if (framesX45.cols() != kDims3)
     refuse(file, "", "expected 45 columns, got " + std::to_string(framesX45.cols()));
+  const bool feet = feetX12.rows() == framesX45.rows() && feetX12.cols() == kFootDims3;
   C3dContent c;
   c.rateHz = rateHz;
   c.points = jointPointTrajectories(framesX45, "eigenwalker joint centre");
+  if (feet) {
+    const auto feetPoints = footPointTrajectories(feetX12, "the input's heel or toe point");
+    c.points.insert(c.points.end(), feetPoints.begin(), feetPoints.end());
+  }
   c.points.insert(c.points.end(), extraPoints.begin(), extraPoints.end());
   c.notes = notes;
-  const WalkerAxes axes = walkerAxes(framesX45);
+  const WalkerAxes axes = walkerAxes(framesX45, feet ? feetX12 : Eigen::MatrixXd());
   c.xScreen = axes.forward;
   c.yScreen = axes.up;
   if (axes.canonical.rows() > 0 && std::isfinite(rateHz) && rateHz > 0) {
-    c.events = eventList(gaitEventsFromKinematics(axes.canonical, rateHz));
-    c.eventDescription = "from the ankle's lead on the pelvis (Zeni et al. 2008; docs/GAIT.md)";
+    const GaitEventSet events = gaitEventsFromFeet(axes.canonical, axes.canonicalFeet, rateHz);
+    c.events = eventList(events);
+    c.eventDescription = events.method == "kinematics"
+                             ? "from the ankle's lead on the pelvis (Zeni et al. 2008; docs/GAIT.md)"
+                             : "from the heel's and the toe's lead on the pelvis (Zeni et al. 2008; docs/GAIT.md)";
   } else {
     c.notes.push_back("no gait events: a joint sample is missing");
   }

@@ -93,4 +93,19 @@ void writeWalkerC3d(const std::filesystem::path& file,
                     const std::vector<std::string>& notes = {},
                     const std::vector<C3dPointTrajectory>& extraPoints = {});
 
+// The feet's points of a T × 12 JointTrial::feetMm (FootPoint order) as named points r_heel,
+// r_toe, l_heel, l_toe; a point with no finite sample is left out. None for another shape.
+std::vector<C3dPointTrajectory> footPointTrajectories(const Eigen::MatrixXd& feetX12,
+                                                      const std::string& description);
+
+// writeWalkerC3d with the feet where known (feetX12: T × 12 in the joints' axes; empty or of
+// another shape: none): their points after the 15 joints, and the gait events from the heel and
+// the toe (gaitEventsFromFeet) where they are seen throughout. The program's C3D reader reads
+// such a file back to the same joints, feet and events.
+void writeWalkerWithFeetC3d(const std::filesystem::path& file,
+                            const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
+                            const Eigen::MatrixXd& feetX12, double rateHz,
+                            const std::vector<std::string>& notes = {},
+                            const std::vector<C3dPointTrajectory>& extraPoints = {});
+
 }  // namespace ew

@@ -30,10 +30,12 @@ Eigen::Vector3d canonicalToOpenSim(const Eigen::Vector3d& p);
 Eigen::Vector3d openSimToCanonical(const Eigen::Vector3d& p);
 
 // A 3D walker written by the file's extension (any case): .trc (writeTrc, mm), .c3d
-// (writeWalkerC3d, core/io/c3d_writer.h: the 15 joints, the gait events of its own kinematics,
-// the comment lines as MANUFACTURER:NOTES) or anything else as the project's joint CSV
-// (core/io/joint_csv.h, with its comment lines; a TRC has no place for them).
+// (writeWalkerWithFeetC3d, core/io/c3d_writer.h: the 15 joints, the feet's points when feetMm
+// has them, the gait events of its own kinematics, the comment lines as MANUFACTURER:NOTES) or
+// anything else as the project's joint CSV (core/io/joint_csv.h, with its comment lines; a TRC
+// has no place for them). feetMm (JointTrial::feetMm) goes to the C3D only.
 void writeJointTrajectories(const std::filesystem::path& file, const Eigen::MatrixXd& framesMm,
-                            double rateHz, const std::vector<std::string>& commentLines = {});
+                            double rateHz, const std::vector<std::string>& commentLines = {},
+                            const Eigen::MatrixXd& feetMm = Eigen::MatrixXd());
 
 }  // namespace ew

@@ -56,6 +56,22 @@ std::vector<int> alternative(const json& a, const std::vector<std::string>& poin
   return out;
 }
 
+void parseFeet(const json& doc, const std::string& file, KeypointLayout& l) {
+  if (!doc.contains("feet")) return;
+  if (!doc["feet"].is_object()) throwMalformed(file, "feet", "must be an object foot point -> alternatives");
+  for (const auto& [name, alternatives] : doc["feet"].items()) {
+    const std::string key = "feet." + name;
+    const auto p = std::find(kFootPointNames.begin(), kFootPointNames.end(), name);
+    if (p == kFootPointNames.end()) throwMalformed(file, key, "unknown foot point (r_heel, r_toe, l_heel or l_toe)");
+    if (!alternatives.is_array() || alternatives.empty())
+      throwMalformed(file, key, "must be a list of alternatives (lists of point names)");
+    for (std::size_t k = 0; k < alternatives.size(); ++k) {
+      l.feet[static_cast<std::size_t>(p - kFootPointNames.begin())].push_back(
+          alternative(alternatives[k], l.points, file, key + "[" + std::to_string(k) + "]"));
+    }
+  }
+}
+
 void parseDetectorOffsets(const json& doc, const std::string& file, KeypointLayout& l) {
   if (!doc.contains("detector_offsets_mm")) return;
   const json& offsets = doc["detector_offsets_mm"];
@@ -116,7 +132,12 @@ KeypointLayout parseKeypointLayout(std::string_view text, const std::string& fil
     }
   }
   parseDetectorOffsets(doc, file, l);
+  parseFeet(doc, file, l);
   return l;
+}
+
+bool KeypointLayout::hasFeet() const {
+  return std::any_of(feet.begin(), feet.end(), [](const auto& alternatives) { return !alternatives.empty(); });
 }
 
 const std::vector<KeypointLayout>& keypointLayouts() {

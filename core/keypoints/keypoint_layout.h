@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/common/skeleton.h"
+#include "core/common/trial.h"
 
 namespace ew {
 
@@ -35,6 +36,10 @@ struct KeypointLayout {
   // the hips have one in the shipped tables (docs/KEYPOINTS.md, "Detector hips").
   JointOffsetsMm detectorOffsetMm{};
   std::string detectorOffsetSource;  // where the offsets come from, for the user
+  // The feet's heel and toe (FootPoint order; the table's optional "feet": r_heel, r_toe,
+  // l_heel, l_toe), alternatives as for joints, each tried per frame. Empty: no foot points.
+  std::array<std::vector<std::vector<int>>, kFootPointCount> feet;
+  bool hasFeet() const;
 };
 
 // The largest detector offset a table may state, mm per coordinate.

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "core/common/errors.h"
@@ -103,6 +104,14 @@ JointChoice chooseAlternatives(const KeypointLayout& layout, const std::vector<c
   return c;
 }
 
+// The mean of the points, when every one of them is seen.
+std::optional<Vector2d> meanIfSeen(const Eigen::MatrixX3d& p, const std::vector<int>& pts, double minConfidence) {
+  if (!std::all_of(pts.begin(), pts.end(), [&](int i) { return pointSeen(p, i, minConfidence); })) return std::nullopt;
+  Vector2d sum = Vector2d::Zero();
+  for (int i : pts) sum += Vector2d(p(i, 0), p(i, 1));
+  return Vector2d(sum / static_cast<double>(pts.size()));
+}
+
 Eigen::RowVectorXd jointsOf(const KeypointLayout& layout, const JointChoice& c, const Eigen::MatrixX3d& p,
                             double minConfidence) {
   Eigen::RowVectorXd row = Eigen::RowVectorXd::Constant(2 * kJointCount, kNaN);
@@ -110,10 +119,7 @@ Eigen::RowVectorXd jointsOf(const KeypointLayout& layout, const JointChoice& c, 
     const int a = c.alternative[static_cast<std::size_t>(j)];
     if (a < 0) continue;
     const auto& pts = layout.joints[static_cast<std::size_t>(j)][static_cast<std::size_t>(a)];
-    if (!std::all_of(pts.begin(), pts.end(), [&](int i) { return pointSeen(p, i, minConfidence); })) continue;
-    Vector2d sum = Vector2d::Zero();
-    for (int i : pts) sum += Vector2d(p(i, 0), p(i, 1));
-    row.segment<2>(2 * j) = (sum / static_cast<double>(pts.size())).transpose();
+    if (const auto mean = meanIfSeen(p, pts, minConfidence)) row.segment<2>(2 * j) = mean->transpose();
   }
   return row;
 }
@@ -202,6 +208,26 @@ Eigen::MatrixXd personJointConfidence(const KeypointLayout& layout, const Keypoi
       double least = 1.0;
       for (int k : pts) least = std::min(least, p(k, 2));
       out(t.frames[i], j) = least;
+    }
+  }
+  return out;
+}
+
+// The walker's heel and toe points over the whole clip (KeypointTrial::feetPx): per frame the
+// first alternative whose points are all seen; NaN elsewhere. Empty without foot points.
+Eigen::MatrixXd personFeet(const KeypointLayout& layout, const KeypointFrames& frames, const PersonTrack& t,
+                           double minConfidence) {
+  if (!layout.hasFeet()) return {};
+  const auto person = detectionsOf(frames, t);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Constant(frames.frameCount(), 2 * kFootPointCount, kNaN);
+  for (std::size_t i = 0; i < t.frames.size(); ++i) {
+    for (int f = 0; f < kFootPointCount; ++f) {
+      for (const auto& pts : layout.feet[static_cast<std::size_t>(f)]) {
+        const auto mean = meanIfSeen(*person[i], pts, minConfidence);
+        if (!mean) continue;
+        out.row(t.frames[i]).segment<2>(2 * f) = mean->transpose();
+        break;
+      }
     }
   }
   return out;
@@ -479,6 +505,7 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
   t.layout = &chooseLayout(frames, walker, options, t.layoutSource, t.warnings, t.builtLayout);
   t.jointsPx = personJoints(*t.layout, frames, walker, options.minConfidence);
   t.jointConfidence = personJointConfidence(*t.layout, frames, walker, options.minConfidence);
+  t.feetPx = personFeet(*t.layout, frames, walker, options.minConfidence);
   if (options.detectorOffsets) t.detectorOffsetMm = t.layout->detectorOffsetMm;
   for (auto& person : t.people) person.jointsPx = presentJoints(*t.layout, frames, person, options.minConfidence);
   checkSeenJoints(t, options);

@@ -68,6 +68,11 @@ struct KeypointTrial {
   // frames x 15: each joint's confidence, the least of the points it is made of (NaN where
   // missing); empty for a trial made otherwise (a tracker's, a planar TRC).
   Eigen::MatrixXd jointConfidence;
+  // frames x 8: u, v of the walker's heel and toe per foot (FootPoint order), where the layout
+  // has them (BODY_25's heels and toes, MediaPipe's heel and foot index); NaN where not seen;
+  // empty (0 x 0) for a layout without feet or a trial made otherwise. Beside the 15 joints,
+  // which stay the engines' input.
+  Eigen::MatrixXd feetPx;
   std::array<bool, kJointCount> derived{};  // built from other points (head from the ears, …)
   // Where the points sit relative to joint centres: the layout's detector offsets, or zero
   // (options.detectorOffsets false, or the tracker's own joints). Used by the camera fit.

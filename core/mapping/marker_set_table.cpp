@@ -203,6 +203,28 @@ MarkerRule parseRule(const json& o, const std::string& file, const std::string& 
   return r;
 }
 
+std::size_t footPointFromName(const std::string& name, const std::string& file, const std::string& key) {
+  for (std::size_t p = 0; p < kFootPointNames.size(); ++p) {
+    if (kFootPointNames[p] == name) return p;
+  }
+  throwMalformed(file, key, "unknown foot point '" + name + "' (r_heel, r_toe, l_heel or l_toe)");
+}
+
+void parseFeet(const json& feet, const std::string& file, MarkerSetTable& t) {
+  if (!feet.is_object()) throwMalformed(file, "feet", "must be an object with foot point names as keys");
+  for (const auto& [name, rules] : feet.items()) {
+    const std::string key = "feet." + name;
+    const std::size_t p = footPointFromName(name, file, key);
+    if (!rules.is_array()) throwMalformed(file, key, "must be a list of rules (tried in order)");
+    for (std::size_t k = 0; k < rules.size(); ++k) {
+      const std::string ruleKey = key + "[" + std::to_string(k) + "]";
+      MarkerRule r = parseRule(rules[k], file, ruleKey);
+      if (r.op != RuleOp::Mean) throwMalformed(file, ruleKey + ".op", "a foot point takes \"mean\" rules only");
+      t.feet[p].push_back(std::move(r));
+    }
+  }
+}
+
 // [SECTION] Rule inputs and planning -------------------------------------------------------
 
 std::vector<Joint> jointsRead(const MarkerRule& r) {
@@ -410,6 +432,27 @@ void flagRule(JointTrial& out, Joint j, const MarkerRule& r, const Markers& m) {
   out.warnings.push_back(std::string(jointName(j)) + " estimated: " + why);
 }
 
+// The feet's points the plan has, into out.feetMm; nothing when it has none.
+void buildFeet(const MarkerSetTable& table, const TablePlan& plan, const Markers& m, JointTrial& out) {
+  std::vector<std::string> missing;
+  for (std::size_t p = 0; p < plan.feet.size(); ++p) {
+    if (plan.feet[p] < 0) missing.emplace_back(kFootPointNames[p]);
+  }
+  if (missing.size() == plan.feet.size()) return;
+  const int frames = static_cast<int>(out.positionsMm.rows());
+  out.feetMm.setConstant(frames, kFootDims3, kNaN);
+  for (std::size_t p = 0; p < plan.feet.size(); ++p) {
+    if (plan.feet[p] < 0) continue;
+    const MarkerRule& r = table.feet[p][static_cast<std::size_t>(plan.feet[p])];
+    for (int f = 0; f < frames; ++f) {
+      const FrameContext c{m, out.positionsMm, f};
+      out.feetMm.block<1, 3>(f, 3 * static_cast<int>(p)) = evaluate(r, c).transpose();
+    }
+  }
+  if (!missing.empty())
+    out.warnings.push_back("foot points not measured by " + table.name + ": " + listForMessage(missing, 4));
+}
+
 }  // namespace
 
 // [SECTION] Public API ----------------------------------------------------------------------
@@ -435,6 +478,7 @@ MarkerSetTable parseMarkerSetTable(std::string_view text, const std::string& fil
       t.joints[at(j)].push_back(parseRule(rules[k], file, key + "[" + std::to_string(k) + "]"));
     }
   }
+  if (doc.contains("feet")) parseFeet(doc["feet"], file, t);
   return t;
 }
 
@@ -463,6 +507,13 @@ TablePlan planMarkerSetTable(const MarkerSetTable& table, const RawTrial& raw) {
     if (!m.hasLabel(id)) plan.identifyMissing.push_back(id);
   }
   plan.identified = plan.identifyMissing.empty();
+  plan.feet.fill(-1);
+  for (std::size_t p = 0; p < table.feet.size(); ++p) {
+    const auto& rules = table.feet[p];
+    for (std::size_t k = 0; k < rules.size() && plan.feet[p] < 0; ++k) {
+      if (usable(rules[k], m, plan.rule)) plan.feet[p] = static_cast<int>(k);
+    }
+  }
   for (Joint j : kBuildOrder) {
     const auto& rules = table.joints[at(j)];
     for (std::size_t k = 0; k < rules.size(); ++k) {
@@ -502,6 +553,7 @@ JointTrial applyMarkerSetTable(const MarkerSetTable& table, const TablePlan& pla
       flagRule(out, static_cast<Joint>(j),
                table.joints[static_cast<std::size_t>(j)][static_cast<std::size_t>(k)], m);
   }
+  buildFeet(table, plan, m, out);
   for (Joint j : {Joint::LHip, Joint::RHip, Joint::LKnee, Joint::RKnee, Joint::LAnkle, Joint::RAnkle}) {
     const int k = plan.rule[at(j)];
     if (k >= 0 && isFunctional(table.joints[at(j)][static_cast<std::size_t>(k)])) {

@@ -58,6 +58,10 @@ struct MarkerSetTable {
   std::string file;                   // "assets/marker-sets/…json" or the user's mapping file
   std::vector<std::string> identify;  // all present (each may be "A|B") for the set to apply
   std::array<std::vector<MarkerRule>, kJointCount> joints;  // alternatives, first usable wins
+  // The feet's heel and toe (FootPoint order; the table's optional "feet" object, keys
+  // r_heel, r_toe, l_heel, l_toe): "mean" rules only, alternatives as for joints. A point no
+  // rule builds is NaN in JointTrial::feetMm; none built leaves feetMm empty.
+  std::array<std::vector<MarkerRule>, kFootPointCount> feet;
 };
 
 // Parses one table; Error(Malformed) naming `file` and the key on any problem.
@@ -73,11 +77,13 @@ struct TablePlan {
   bool identified = false;
   std::vector<std::string> identifyMissing;
   std::array<int, kJointCount> rule{};
+  std::array<int, kFootPointCount> feet{};  // per foot point, the rule used or -1
   int jointCount() const;
 };
 TablePlan planMarkerSetTable(const MarkerSetTable& table, const RawTrial& raw);
 
-// Builds the joints: missing joints are NaN and flagged JointTrial::missing.
+// Builds the joints: missing joints are NaN and flagged JointTrial::missing. The feet's
+// points the plan has go to JointTrial::feetMm (a warning names those missing when some are).
 JointTrial applyMarkerSetTable(const MarkerSetTable& table, const TablePlan& plan,
                                const RawTrial& raw);
 

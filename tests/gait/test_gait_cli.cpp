@@ -116,6 +116,36 @@ TEST(GaitCliSharedData, EventsBothComparesTheC3dEventsWithTheKinematics) {
   EXPECT_NE(r.err.find("kinematics vs file events over 1 trials"), std::string::npos) << r.err;
 }
 
+// A C3D with heel and toe markers: its kinematic events from the feet, the ankle's curve and
+// range and the foot progression in the report, the ankle and foot columns in `angles`; a BVH
+// without feet keeps the ankle's events and no such columns.
+TEST(GaitCliSharedData, TheFeetGiveTheEventsTheAnkleAndTheFootProgression) {
+  EW_REQUIRE_SHARED_DATA();
+  const auto dir = test::makeTempDir("gait_cli_feet");
+  const auto trial = test::sharedDataDir() / "schreiber-moissenet-2019" / "2014022" / "2014022_C4_04.c3d";
+  const test::ShellRun r =
+      runCli("gait \"" + trial.string() + "\" --events kinematics --whole-trial --json --curves curves.csv", dir);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto t = nlohmann::json::parse(r.out).at(0);
+  EXPECT_EQ(t["events"], "kinematics (heel and toe)");
+  const double range = std::stod(t["ankle_flexion_range_deg"].get<std::string>());
+  EXPECT_GT(range, 10.0);
+  EXPECT_LT(range, 50.0);
+  const std::string right = t["foot_progression_r_deg"], left = t["foot_progression_l_deg"];
+  EXPECT_TRUE(right != "nan" || left != "nan") << right << " " << left;
+  EXPECT_NE(test::readTextFile(dir / "curves.csv").find(",ankle_angle_"), std::string::npos);
+  ASSERT_EQ(runCli("angles \"" + trial.string() + "\" --out a.csv", dir).exitCode, 0);
+  const std::string angles = test::readTextFile(dir / "a.csv");
+  EXPECT_NE(angles.find(",ankle_angle_r,foot_progression_r,ankle_angle_l,foot_progression_l,"), std::string::npos);
+  const auto bvh = test::sharedDataDir() / "cmu-mocap-bvh" / "02" / "02_01.bvh";
+  ASSERT_EQ(runCli("angles \"" + bvh.string() + "\" --out b.csv", dir).exitCode, 0);
+  EXPECT_EQ(test::readTextFile(dir / "b.csv").find("ankle_angle"), std::string::npos);
+  const test::ShellRun b = runCli("gait \"" + bvh.string() + "\" --json", dir);
+  ASSERT_EQ(b.exitCode, 0) << b.err;
+  EXPECT_EQ(nlohmann::json::parse(b.out).at(0)["events"], "kinematics");
+  EXPECT_EQ(nlohmann::json::parse(b.out).at(0)["ankle_flexion_range_deg"], "nan");
+}
+
 // A folder of one subject's trials: each row of the table says which trial it is.
 TEST(GaitCliSharedData, TheTableNamesEachTrialByItsFile) {
   EW_REQUIRE_SHARED_DATA();

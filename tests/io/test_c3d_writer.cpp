@@ -21,6 +21,7 @@
 #include "core/io/c3d_writer.h"
 #include "core/io/joint_csv.h"
 #include "core/io/trc_writer.h"
+#include "core/mapping/joint_mapping.h"
 #include "core/synth/population.h"
 #include "tests/common/test_support.h"
 
@@ -92,7 +93,7 @@ TEST(C3dWriter, AWalkerAndItsFeetReadBackToTheSamePointsLabelsRateAndEvents) {
 
   const RawTrial raw = readC3d(dir / "walk.c3d");
   EXPECT_EQ(raw.format, "C3D");
-  EXPECT_EQ(raw.kind, PointKind::Markers);  // 16 points: not exactly our 15 joints
+  EXPECT_EQ(raw.kind, PointKind::CanonicalJoints);  // our 15 joints first, then a foot point
   EXPECT_EQ(raw.rateHz, 100.0);
   EXPECT_EQ(raw.units, "mm");
   EXPECT_EQ(raw.firstFrame, 1);
@@ -275,6 +276,52 @@ TEST(C3dWriter, HostileInputsAreRefusedByNameAndNothingIsWritten) {
 
 // [SECTION] A walker: the 15 joints and the events of its kinematics
 
+// The feet where known: written after the joints, their events from the heel and the toe, and
+// read back by our own reader to the same joints and feet (a point never seen is left out).
+TEST(C3dWriter, AWalkersFeetAreWrittenAndReadBack) {
+  const auto dir = test::makeTempDir("c3d_feet");
+  const SynthWalker w = oneWalker();
+  const Eigen::MatrixXd& frames = w.trial.positionsMm;
+  Eigen::MatrixXd feet(frames.rows(), kFootDims3);
+  for (Side side : {Side::Right, Side::Left}) {
+    const int ankle = 3 * index(side == Side::Left ? Joint::LAnkle : Joint::RAnkle);
+    const Eigen::RowVector3d heelOffset(0, -60, -50), toeOffset(0, 140, -50);
+    for (Eigen::Index r = 0; r < frames.rows(); ++r) {
+      feet.block<1, 3>(r, 3 * index(heelOf(side))) = frames.block<1, 3>(r, ankle) + heelOffset;
+      feet.block<1, 3>(r, 3 * index(toeOf(side))) = frames.block<1, 3>(r, ankle) + toeOffset;
+    }
+  }
+  feet.middleCols<3>(3 * index(FootPoint::LToe)).setConstant(NAN);
+  writeWalkerWithFeetC3d(dir / "feet.c3d", frames, feet, 100.0);
+  const RawTrial raw = readC3d(dir / "feet.c3d");
+  EXPECT_EQ(raw.kind, PointKind::CanonicalJoints);
+  ASSERT_EQ(raw.pointCount(), kJointCount + 3);
+  EXPECT_EQ(raw.labels[kJointCount], "r_heel");
+  const JointTrial back = toJointTrial(raw);
+  ASSERT_TRUE(back.hasFeet());
+  EXPECT_LT((back.positionsMm - frames).cwiseAbs().maxCoeff(), 1e-3);  // 32-bit floats
+  EXPECT_TRUE(back.feetMm.middleCols<3>(3 * index(FootPoint::LToe)).array().isNaN().all());
+  for (FootPoint p : {FootPoint::RHeel, FootPoint::RToe, FootPoint::LHeel})
+    EXPECT_LT((back.feetMm.middleCols<3>(3 * index(p)) - feet.middleCols<3>(3 * index(p))).cwiseAbs().maxCoeff(), 1e-3);
+  // The events: the right foot's from its heel and toe, the left's from its ankle (no left
+  // toe); the frames already face +y with z up.
+  const GaitEventSet want = gaitEventsFromFeet(frames, feet, 100.0);
+  EXPECT_EQ(want.method, "kinematics (heel and toe of one foot, the other's ankle)");
+  const GaitEventSet got = gaitEventsFromFile(raw.events, 1e9);
+  for (Side side : {Side::Right, Side::Left}) {
+    ASSERT_EQ(got.of(side).strikesS.size(), want.of(side).strikesS.size());
+    ASSERT_EQ(got.of(side).offsS.size(), want.of(side).offsS.size());
+    for (std::size_t i = 0; i < want.of(side).strikesS.size(); ++i)
+      EXPECT_NEAR(got.of(side).strikesS[i], want.of(side).strikesS[i], 0.005);
+    for (std::size_t i = 0; i < want.of(side).offsS.size(); ++i)
+      EXPECT_NEAR(got.of(side).offsS[i], want.of(side).offsS[i], 0.005);
+  }
+  // Without feet the file is writeWalkerC3d's, byte for byte.
+  writeWalkerWithFeetC3d(dir / "none.c3d", frames, Eigen::MatrixXd(), 100.0);
+  writeWalkerC3d(dir / "plain.c3d", frames, 100.0);
+  EXPECT_EQ(test::readTextFile(dir / "none.c3d"), test::readTextFile(dir / "plain.c3d"));
+}
+
 TEST(C3dWriter, AWalkerCarriesTheEventsOfItsOwnKinematicsAndOpensAsAWalker) {
   const auto dir = test::makeTempDir("c3d_walker");
   const SynthWalker w = oneWalker();
@@ -359,21 +406,25 @@ TEST(C3dWriterCli, ReconstructAndJointsWriteTheJointsTheirCsvHolds) {
     const RawTrial csv = readJointCsv(dir / "x.csv");
     const RawTrial c3d = readC3d(dir / "x.c3d");
     EXPECT_EQ(c3d.kind, PointKind::CanonicalJoints);
-    EXPECT_EQ(c3d.labels, csv.labels);
+    // The joints as the CSV has them; `joints` on motion capture writes the feet after them.
+    const JointTrial fromC3d = toJointTrial(c3d);
+    EXPECT_EQ(fromC3d.hasFeet(), command == joints) << command;
+    EXPECT_EQ(std::vector<std::string>(c3d.labels.begin(), c3d.labels.begin() + kJointCount), csv.labels);
+    EXPECT_EQ(c3d.labels.size(), command == joints ? 19u : 15u);
     EXPECT_NEAR(c3d.rateHz, csv.rateHz, 1e-9);
     ASSERT_EQ(c3d.positionsMm.rows(), csv.positionsMm.rows()) << command;
-    ASSERT_EQ(c3d.positionsMm.cols(), csv.positionsMm.cols());
+    ASSERT_EQ(fromC3d.positionsMm.cols(), csv.positionsMm.cols());
     double worst = 0.0;
     for (Eigen::Index r = 0; r < csv.positionsMm.rows(); ++r)
       for (Eigen::Index k = 0; k < csv.positionsMm.cols(); ++k) {
         const double v = csv.positionsMm(r, k);
-        const double d = std::abs(c3d.positionsMm(r, k) - v);
+        const double d = std::abs(fromC3d.positionsMm(r, k) - v);
         EXPECT_LE(d, std::abs(v) * (0x1p-24 + 1e-9) + 1e-9) << command << " frame " << r << " column " << k;
         worst = std::max(worst, d);
       }
     std::cout << command << "x.c3d: " << c3d.positionsMm.rows() << " frames, " << c3d.events.size()
               << " events, worst difference from the CSV " << worst << " mm\n";
-    const GaitEventSet want = gaitEventsFromKinematics(csv.positionsMm, csv.rateHz);
+    const GaitEventSet want = gaitEventsFromFeet(csv.positionsMm, fromC3d.feetMm, csv.rateHz);
     const GaitEventSet back = gaitEventsFromFile(c3d.events, 1e9);
     for (Side side : {Side::Right, Side::Left}) {
       ASSERT_EQ(back.of(side).strikesS.size(), want.of(side).strikesS.size()) << command;

@@ -137,6 +137,10 @@ TEST(KeypointLayouts, MalformedTablesNameTheFileAndKey) {
   EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {"tail": [["A"]]}})"), "joints.tail");
   EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {"pelvis": [["B"]]}})"), "joints.pelvis[0]");
   EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {"pelvis": [[]]}})"), "joints.pelvis[0]");
+  EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {}, "feet": {"r_heel": [["A"]]}})"), "accepted");
+  EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {}, "feet": [1]})"), "feet");
+  EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {}, "feet": {"r_knee": [["A"]]}})"), "feet.r_knee");
+  EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {}, "feet": {"l_toe": [["B"]]}})"), "feet.l_toe[0]");
 }
 
 // [SECTION] Readers and cleaning ------------------------------------------------------------
@@ -175,6 +179,34 @@ TEST(Keypoints, OpenPoseFolderFollowsTheWalkerAndGuessesBody25) {
   EXPECT_DOUBLE_EQ(bystander.jointsPx(10, 2 * index(Joint::Head) + 1), 100);
   const PersonTrack& walker = t.people[static_cast<std::size_t>(t.chosen)];
   EXPECT_TRUE(walker.jointsPx.row(10).isApprox(t.jointsPx.row(10)));
+}
+
+// The feet beside the joints: BODY_25's heel, and the mean of its big and small toes (the big toe
+// alone where the small one is not seen); a layout without feet has none.
+TEST(Keypoints, HeelsAndToesAreCarriedBesideTheJoints) {
+  const KeypointLayout& body25 = keypointLayoutNamed("BODY_25");
+  const fs::path dir = openPoseFolder("op_feet", body25, 30, false);
+  // Frame 12: the left small toe under the confidence threshold.
+  json frame = json::parse(test::readTextFile(dir / "clip_000000000012_keypoints.json"));
+  const auto smallToe = std::find(body25.points.begin(), body25.points.end(), "LSmallToe") - body25.points.begin();
+  frame["people"][0]["pose_keypoints_2d"][3 * smallToe + 2] = 0.1;
+  std::ofstream(dir / "clip_000000000012_keypoints.json") << frame.dump();
+  const KeypointTrial t = readKeypointTrial(dir, options("BODY_25", 25.0));
+  ASSERT_EQ(t.feetPx.rows(), 30);
+  ASSERT_EQ(t.feetPx.cols(), 2 * kFootPointCount);
+  const auto at = [&](int f, FootPoint p) { return Eigen::Vector2d(t.feetPx.row(f).segment<2>(2 * index(p)).transpose()); };
+  // Frame 10: the walker's centre at x 320, its right on the image's left.
+  EXPECT_TRUE(at(10, FootPoint::RHeel).isApprox(Eigen::Vector2d(300, 715)));
+  EXPECT_TRUE(at(10, FootPoint::RToe).isApprox(Eigen::Vector2d(290, 730)));  // big toe 295, small 285
+  EXPECT_TRUE(at(10, FootPoint::LToe).isApprox(Eigen::Vector2d(350, 730)));
+  EXPECT_TRUE(at(12, FootPoint::LToe).isApprox(Eigen::Vector2d(344 + 25, 730)));  // the big toe alone
+  // COCO-18 has no foot points: no feet, the joints as before.
+  const KeypointTrial coco = readKeypointTrial(openPoseFolder("op_nofeet", keypointLayoutNamed("COCO-18"), 30, false),
+                                               options("COCO-18", 25.0));
+  EXPECT_EQ(coco.feetPx.size(), 0);
+  EXPECT_FALSE(keypointLayoutNamed("COCO-17").hasFeet());
+  for (const char* withFeet : {"BODY_25", "BODY_25B", "Halpe-26", "MediaPipe-33"})
+    EXPECT_TRUE(keypointLayoutNamed(withFeet).hasFeet()) << withFeet;
 }
 
 TEST(Keypoints, Body25bIsToldFromBody25AndLayoutOverrides) {

@@ -152,6 +152,59 @@ TEST(MarkerSetTables, MalformedTablesNameTheFileAndKey) {
             "joints.pelvis[0].op");
   expectKey(R"({"name": "x", "identify": ["A"], "joints": {"pelvis": [{"op": "mean"}]}})",
             "joints.pelvis[0].markers");
+  // The feet: known point names, "mean" rules only.
+  expectKey(R"({"name": "x", "identify": ["A"], "joints": {}, "feet": []})", "feet");
+  expectKey(R"({"name": "x", "identify": ["A"], "joints": {}, "feet": {"r_ankle": []}})", "feet.r_ankle");
+  expectKey(R"({"name": "x", "identify": ["A"], "joints": {}, "feet": {"r_heel": [{"op": "head_above_sternum"}]}})",
+            "feet.r_heel[0].op");
+}
+
+// [SECTION] The feet beside the joints -----------------------------------------------------------
+
+TEST(MarkerSetTables, HeelAndToeMarkersBecomeTheFeet) {
+  Labelled withFeet = pigLowerWithSacrum();
+  const Labelled feet = {{"RHEE", {-60, -90, 40}}, {"RTOE", {130, -100, 40}},
+                         {"LHEE", {-60, 90, 40}}, {"LTOE", {130, 100, 40}}};
+  withFeet.insert(withFeet.end(), feet.begin(), feet.end());
+  const RawTrial raw = trialOf(withFeet);
+  const JointTrial t = mapMarkerSet(raw);
+  ASSERT_TRUE(t.hasFeet());
+  // Each foot point is its marker, frame for frame (the markers are the raw trial's last four).
+  const Eigen::Index first = raw.positionsMm.cols() - kFootDims3;
+  for (int p = 0; p < kFootPointCount; ++p) {
+    const auto k = static_cast<Eigen::Index>(p);
+    EXPECT_TRUE(t.feetMm.middleCols(3 * k, 3).isApprox(raw.positionsMm.middleCols(first + 3 * k, 3)))
+        << kFootPointNames[static_cast<std::size_t>(p)];
+  }
+  EXPECT_FALSE(anyWarning(t, "foot points not measured"));
+  // A toe never seen: that point is NaN, the others measured, and a warning names it.
+  RawTrial noToe = raw;
+  noToe.positionsMm.rightCols(3).setConstant(NAN);  // LTOE
+  const JointTrial half = mapMarkerSet(noToe);
+  ASSERT_TRUE(half.hasFeet());
+  EXPECT_TRUE(half.feetMm.middleCols(3 * index(FootPoint::LToe), 3).array().isNaN().all());
+  EXPECT_TRUE(half.feetMm.middleCols(3 * index(FootPoint::LHeel), 3).allFinite());
+  EXPECT_TRUE(anyWarning(half, "foot points not measured by Plug-in Gait / Helen Hayes: l_toe"));
+  // No foot marker at all: no feet, and no warning about them.
+  const JointTrial none = mapMarkerSet(trialOf(pigLowerWithSacrum()));
+  EXPECT_FALSE(none.hasFeet());
+  EXPECT_EQ(none.feetMm.size(), 0);
+  EXPECT_FALSE(anyWarning(none, "foot points"));
+}
+
+TEST(MarkerSetTables, SchreiberTrialsHaveTheirFeet) {
+  EW_REQUIRE_SHARED_DATA();
+  const JointTrial t = mapMarkerSet(readC3d(test::sharedDataDir() / "schreiber-moissenet-2019/2014001/2014001_C4_05.c3d"));
+  ASSERT_TRUE(t.hasFeet());
+  EXPECT_TRUE(t.feetMm.allFinite());
+  // The heel behind the ankle and the toe ahead of it, along the foot (mm): a foot's length.
+  for (Side side : {Side::Right, Side::Left}) {
+    const Eigen::MatrixXd heel = t.feetMm.middleCols(3 * index(heelOf(side)), 3);
+    const Eigen::MatrixXd toe = t.feetMm.middleCols(3 * index(toeOf(side)), 3);
+    const double length = (toe - heel).rowwise().norm().mean();
+    EXPECT_GT(length, 120.0);
+    EXPECT_LT(length, 250.0);
+  }
 }
 
 // [SECTION] Plug-in Gait: full, lower body, model outputs ------------------------------------
