@@ -106,9 +106,15 @@ TEST(GaitAgreement, AKnownProgressionIsTheSidesSpeed) {
       EXPECT_DOUBLE_EQ(r.mocap, 1.234);
       EXPECT_DOUBLE_EQ(r.reconstructed, 0.9);
     }
-    if (r.measure == "cadence") EXPECT_NEAR(r.reconstructed, r.mocap, 1e-9);
-    if (r.measure == "stride_length") EXPECT_LT(r.reconstructed, r.mocap - 0.2);
-    if (r.measure == "knee_flexion_curve") EXPECT_NEAR(r.reconstructed, 0.0, 1e-9);
+    if (r.measure == "cadence") {
+      EXPECT_NEAR(r.reconstructed, r.mocap, 1e-9);
+    }
+    if (r.measure == "stride_length") {
+      EXPECT_LT(r.reconstructed, r.mocap - 0.2);
+    }
+    if (r.measure == "knee_flexion_curve") {
+      EXPECT_NEAR(r.reconstructed, 0.0, 1e-9);
+    }
   }
 }
 
