@@ -135,7 +135,8 @@ DisplayDots BiologicalMotionDisplay::at(double timeS) const {
   if (options_.translating) dots.walkerMm.row(1).array() += options_.speedMmS * t;
   if (options_.inverted) {
     dots.walkerMm.row(2) = (2.0 * midHeightMm_ - dots.walkerMm.row(2).array()).matrix();
-    dots.noiseMm.row(2) = (2.0 * midHeightMm_ - dots.noiseMm.row(2).array()).matrix();
+    // An empty matrix has no data to take a row of (UBSan: an offset on a null pointer).
+    if (dots.noiseMm.cols() > 0) dots.noiseMm.row(2) = (2.0 * midHeightMm_ - dots.noiseMm.row(2).array()).matrix();
   }
   return dots;
 }
