@@ -47,9 +47,8 @@ namespace ew {
 
 // [SECTION] The walker and the display
 
-// The viewer's standard 2D input view (ui/panels/input_view_panel.cpp, kViewHeightMm and
-// kViewCentreVMm, which should come to use these): this much height across the view, this v
-// at its centre row, u = 0 at its centre column.
+// The viewer's standard 2D input view (ui/panels/input_view_panel.cpp frames with these):
+// this much height across the view, this v at its centre row, u = 0 at its centre column.
 inline constexpr double kViewerViewHeightMm = 2350.0;
 inline constexpr double kViewerViewCentreVMm = 975.0;
 

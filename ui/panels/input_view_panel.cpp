@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/teaching/html_walker.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/panels/clip_view.h"
@@ -23,8 +24,9 @@ namespace ew::ui {
 
 namespace {
 
-constexpr float kViewHeightMm = 2350.0f;
-constexpr float kViewCentreVMm = 975.0f;
+// The standard 2D view's framing, the one the HTML walker's "viewer" framing copies.
+constexpr float kViewHeightMm = static_cast<float>(kViewerViewHeightMm);
+constexpr float kViewCentreVMm = static_cast<float>(kViewerViewCentreVMm);
 
 }  // namespace
 
