@@ -72,11 +72,16 @@ void addCurvesOf(const WalkingTrial& t, MeasuredTrial& out) {
   out.footProgression = footProgressionDeg(angles.degrees, angles.names, rateHz, out.measures);
 }
 
-// A video's walker: its 3D joints in place (a temporary CSV) and what its camera fit saw of
-// its walk over the floor.
+// A reconstruction's walk, in place: its progression as its camera fit found it, or (on a
+// treadmill) its two-harmonic walker's stance feet (core/gait/fourier_walker_gait.h).
+struct ReconstructedWalk {
+  std::optional<double> progressionMps;  // unset: walking in place
+};
+
+// A video's walker: its 3D joints in place (a temporary CSV) and its walk over the floor.
 struct VideoWalker {
   TrialFile file;
-  std::optional<double> progressionMps;  // unset: walking in place (a treadmill)
+  ReconstructedWalk walk;
 };
 
 // A video: the walker the built-in detector finds, reconstructed through the unknown camera as
@@ -94,15 +99,9 @@ VideoWalker reconstructedFromVideo(const std::filesystem::path& video, const std
   VideoWalker w;
   w.file.path = c.out;
   w.file.info.subject = video.stem().string();
-  if (!fit.inPlace) w.progressionMps = fit.speedMps;
+  if (!fit.inPlace) w.walk.progressionMps = fit.speedMps;
   return w;
 }
-
-// A reconstruction's walk, in place: its progression as its camera fit found it, or (on a
-// treadmill) its two-harmonic walker's stance feet (core/gait/fourier_walker_gait.h).
-struct ReconstructedWalk {
-  std::optional<double> progressionMps;
-};
 
 GaitMeasures measuredWalk(const WalkingTrial& t, const GaitEventSet& events, const std::string& name,
                           const std::optional<ReconstructedWalk>& reconstructed) {
@@ -256,7 +255,7 @@ int runGait(const GaitArgs& args) {
     try {
       std::filesystem::create_directories(scratch, ec);
       const VideoWalker walker = reconstructedFromVideo(v, scratch, args.statureM);
-      for (auto& m : measureFile(walker.file, args, ReconstructedWalk{walker.progressionMps})) {
+      for (auto& m : measureFile(walker.file, args, walker.walk)) {
         m.file = v.string();
         all.push_back(std::move(m));
       }
