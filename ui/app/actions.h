@@ -12,5 +12,6 @@
 #include "ui/app/export_actions.h"
 #include "ui/app/load_actions.h"
 #include "ui/app/notice_actions.h"
+#include "ui/app/stage_actions.h"
 #include "ui/app/teaching_actions.h"
 #include "ui/app/video_actions.h"

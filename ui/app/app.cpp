@@ -27,6 +27,7 @@
 
 #include "ui/app/actions.h"
 #include "ui/app/app_platform.h"
+#include "ui/app/audience_window.h"
 #include "ui/app/app_state.h"
 #include "ui/app/layout.h"
 #include "ui/app/overflow.h"
@@ -219,6 +220,7 @@ class App {
           return 1;
         }
       }
+      audience_.frame(state_, window_.get(), renderer_);
       const auto t1 = std::chrono::steady_clock::now();
       present(start);
       if (profile_) {
@@ -278,6 +280,7 @@ class App {
       actions::followModelSigma2(state_);  // the script may have changed the model
       state_.derived.update(state_.doc);
       actions::advancePlayback(state_, dt);
+      actions::advanceStage(state_, dt);
       stepVideoExport();
     } catch (const std::exception& e) {
       reportUnexpected(e.what());
@@ -475,6 +478,7 @@ class App {
     }
     if (!l.presentation || p.tour.active) p.analysis.draw(state_, ctx);
     p.tour.draw(state_, ctx);
+    p.quiz.draw(state_, ctx);
     p.help.draw(state_, ctx);
     if (!l.presentation) {
       p.header.drawModelMenu(state_, ctx);
@@ -557,6 +561,7 @@ class App {
   WindowPtr window_;
   ImGuiSession imgui_;
   Renderer renderer_;
+  AudienceWindow audience_;  // destroyed before the main window, whose context it shares
   Backdrop backdrop_;
   Compositor compositor_;
   std::optional<gl::SubBufferPresenter> presenter_;  // when the back buffer is never swapped

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "ui/app/analysis.h"
+#include "ui/app/audience.h"
 #include "ui/app/async_cache.h"
 #include "ui/app/background_job.h"
 #include "ui/app/clip.h"
@@ -25,6 +26,8 @@
 #include "ui/app/loading.h"
 #include "ui/app/log.h"
 #include "ui/app/notices.h"
+#include "ui/app/quiz.h"
+#include "ui/app/stage.h"
 #include "ui/app/undo.h"
 #include "ui/app/video.h"
 #include "ui/panels/analysis_panel.h"
@@ -44,6 +47,7 @@
 #include "ui/panels/playback_panel.h"
 #include "ui/panels/presentation_bar.h"
 #include "ui/panels/profile_panel.h"
+#include "ui/panels/quiz_panel.h"
 #include "ui/panels/reconstruction_view_panel.h"
 #include "ui/panels/subjects_panel.h"
 #include "ui/panels/tour_panel.h"
@@ -107,6 +111,7 @@ struct Panels {
   HelpPanel help;
   DrawerPanel drawer;
   PresentationBar presentationBar;
+  QuizPanel quiz;
 };
 
 struct AppState {
@@ -131,6 +136,9 @@ struct AppState {
   ClipFeature clip;        // the keypoint clip: its settings, its fits, its zoom (clip.h)
   VideoFeature video;      // the video open, its track and detection, the detector's choices
   Notices notices;         // what went wrong: the banner, the last error, the failures (notices.h)
+  StageFeature stage;      // the classroom displays and the turning stage (stage.h)
+  QuizFeature quiz;        // "which way is it walking?" (quiz.h)
+  AudienceFeature audience;  // the second window, for the room (audience.h)
   Jobs jobs;               // the analysis's and the Data table's slow derived work
   Exports exports;
   Log log;

@@ -13,7 +13,13 @@
 namespace ew::ui {
 
 void writeScreenshot(const std::filesystem::path& file, int width, int height, std::optional<PixelRect> crop) {
-  std::vector<unsigned char> rgb = gl::readPixelsRgb(width, height);
+  writeRgbPng(file, gl::readPixelsRgb(width, height), width, height, crop);
+}
+
+void writeRgbPng(const std::filesystem::path& file, std::vector<unsigned char> rgb, int width, int height,
+                 std::optional<PixelRect> crop) {
+  if (rgb.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3)
+    throw std::runtime_error(file.string() + ": no image to write");
   cv::Mat image(height, width, CV_8UC3, rgb.data());
   cv::Mat flipped, bgr;
   cv::flip(image, flipped, 0);  // GL rows start at the bottom

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include "ui/pixel_rect.h"
 
@@ -14,5 +15,8 @@ namespace ew::ui {
 // folder if needed. Throws std::runtime_error naming the file when it cannot be written.
 void writeScreenshot(const std::filesystem::path& file, int width, int height,
                      std::optional<PixelRect> crop = std::nullopt);
+// The same for RGB rows already read (bottom row first, as GL reads them).
+void writeRgbPng(const std::filesystem::path& file, std::vector<unsigned char> rgb, int width, int height,
+                 std::optional<PixelRect> crop = std::nullopt);
 
 }  // namespace ew::ui

@@ -242,6 +242,62 @@ void expectFailure(AppState& s, const A& a, W& w) {
   w.expectFailure = true;  // the load's outcome is checked once it is done (ScriptRunner::step)
 }
 
+// {"start_dots": S, "step_dots": D, "max_dots": M, "reversals": R, "averaged": A, "seed": N},
+// each optional (the quiz panel's defaults): the quiz started.
+void quizStart(AppState& s, const A& a, W&) {
+  const auto& arg = a.argument;
+  if (!arg.is_object() && !arg.is_null() && !(arg.is_boolean() && arg.get<bool>()))
+    throw std::invalid_argument(R"(expects {"start_dots": S, "step_dots": D, "reversals": R, …} or {})");
+  StaircaseOptions o = s.quiz.options;
+  const auto whole = [&](const char* key, int& into) {
+    if (!arg.is_object() || !arg.contains(key)) return;
+    if (!arg[key].is_number_integer()) throw std::invalid_argument(std::string("\"") + key + "\" is a whole number");
+    into = arg[key].get<int>();
+  };
+  whole("start_dots", o.startDots);
+  whole("step_dots", o.stepDots);
+  whole("max_dots", o.maxDots);
+  whole("reversals", o.reversals);
+  whole("averaged", o.averagedReversals);
+  int seed = static_cast<int>(o.seed);
+  whole("seed", seed);
+  if (seed < 0) throw std::invalid_argument(R"("seed" is 0 or more)");
+  o.seed = static_cast<std::uint64_t>(seed);
+  actions::quizStart(s, o);
+}
+
+// true / false, or {"open": B, "size": [W, H], "theme": "dark" | "projector",
+// "views": "both" | "input" | "reconstruction"}, each optional.
+void audience(AppState& s, const A& a, W&) {
+  const auto& arg = a.argument;
+  if (arg.is_boolean()) return actions::setAudienceOpen(s, arg.get<bool>());
+  if (!arg.is_object()) throw std::invalid_argument(R"(expects true, false or {"open": true, "size": [W, H], "theme": T, "views": V})");
+  if (arg.contains("size")) {
+    const auto& size = arg["size"];
+    if (!size.is_array() || size.size() != 2 || !size[0].is_number_integer() || !size[1].is_number_integer())
+      throw std::invalid_argument(R"("size" is [width, height])");
+    actions::setAudienceSize(s, size[0].get<int>(), size[1].get<int>());
+  }
+  const auto name = [&](const char* key) {
+    if (!arg[key].is_string()) throw std::invalid_argument(std::string("\"") + key + "\" is a name");
+    return arg[key].get<std::string>();
+  };
+  if (arg.contains("theme")) actions::setAudienceTheme(s, name("theme"));
+  if (arg.contains("views")) actions::setAudienceViews(s, name("views"));
+  if (arg.contains("open")) {
+    if (!arg["open"].is_boolean()) throw std::invalid_argument(R"("open" is true or false)");
+    actions::setAudienceOpen(s, arg["open"].get<bool>());
+  } else {
+    actions::setAudienceOpen(s, true);
+  }
+}
+
+WalkDirection directionFromName(const std::string& name) {
+  if (name == "left") return WalkDirection::Left;
+  if (name == "right") return WalkDirection::Right;
+  throw std::invalid_argument("the answer is \"left\" or \"right\", not \"" + name + "\"");
+}
+
 // [SECTION] The table
 // Rows: name, apply, runner only, yields (ScriptActionKind). Arguments: docs/VIEWER.md.
 
@@ -317,6 +373,31 @@ const ScriptActionKind kActions[] = {
    }},
   {"undo", [](AppState& s, const A&, W&) { undo(s); }},
   {"redo", [](AppState& s, const A&, W&) { redo(s); }},
+  // The classroom stage (ui/app/stage_actions.h)
+  {"inverted", [](AppState& s, const A& a, W&) { actions::setInverted(s, boolean(a)); }},
+  {"scramble", [](AppState& s, const A& a, W&) { actions::setScramble(s, scrambleFromName(text(a))); }},
+  {"mask_dots", [](AppState& s, const A& a, W&) { actions::setMaskDots(s, wholeNumber(a)); }},
+  {"dot_lifetime", [](AppState& s, const A& a, W&) { actions::setDotLifetime(s, number(a)); }},
+  {"backwards", [](AppState& s, const A& a, W&) { actions::setBackwards(s, boolean(a)); }},
+  {"overground", [](AppState& s, const A& a, W&) { actions::setTranslating(s, boolean(a)); }},
+  {"depth_reversed", [](AppState& s, const A& a, W&) { actions::setDepthReversed(s, boolean(a)); }},
+  {"reset_displays", [](AppState& s, const A&, W&) { actions::resetStage(s); }},
+  {"turning", [](AppState& s, const A& a, W&) { actions::setTurning(s, boolean(a)); }},
+  {"turn_rate", [](AppState& s, const A& a, W&) { actions::setTurnRate(s, number(a)); }},
+  {"stage_turned", [](AppState& s, const A& a, W&) {
+     const double deg = number(a);
+     if (!std::isfinite(deg) || std::abs(deg) > 180.0) throw std::invalid_argument("the stage turns −180 to 180°");
+     s.stage.turnedDeg = deg;
+   }},
+  {"stage_elevation", [](AppState& s, const A& a, W&) { actions::setStageElevation(s, number(a)); }},
+  {"quiz_start", quizStart},
+  {"quiz_answer", [](AppState& s, const A& a, W&) { actions::quizAnswer(s, directionFromName(text(a))); }},
+  {"quiz_stop", [](AppState& s, const A&, W&) { actions::quizStop(s); }},
+  {"save_quiz", [](AppState& s, const A& a, W&) { actions::saveQuizCsv(s, text(a)); }},
+  {"export_html", [](AppState& s, const A& a, W&) { actions::exportWalkerHtml(s, text(a)); }},
+  {"audience", audience},
+  // The PNG is taken at the end of the next frame; the script waits for it.
+  {"audience_screenshot", [](AppState& s, const A& a, W& w) { actions::requestAudiencePng(s, text(a)); w.frames = 2; }, false, true},
   // The view
   {"set_phase", [](AppState& s, const A& a, W&) { actions::setPhase(s, number(a)); }},
   {"play", [](AppState& s, const A& a, W&) { actions::setPlaying(s, boolean(a)); }},

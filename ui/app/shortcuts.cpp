@@ -54,6 +54,21 @@ void clipMode(AppState& s) {
 bool markingVideo(const AppState& s) { return s.video.session && s.video.session->marking; }
 
 
+// ← / →: a quiz's answer while one runs, else a frame back or on.
+void leftOrRight(AppState& s, WalkDirection d) {
+  if (s.quiz.running())
+    actions::quizAnswer(s, d);
+  else
+    actions::stepFrame(s, d == WalkDirection::Left ? -1 : 1);
+}
+
+void startOrStopQuiz(AppState& s) {
+  if (s.quiz.running())
+    actions::quizStop(s);
+  else if (s.doc.mode != Mode::Clip)
+    actions::quizStart(s, s.quiz.options);
+}
+
 // F12: a PNG of the window in the export folder, named with the time so none is overwritten.
 void screenshot(AppState& s) {
   const auto& e = s.panels.exports;
@@ -86,9 +101,9 @@ std::vector<ShortcutRow> makeRows() {
   constexpr bool kRepeats = true;
   return {
       {"Space", "play / pause", {key(GLFW_KEY_SPACE, [](AppState& s) { s.view.playback.playing = !s.view.playback.playing; })}},
-      {"← / →", "one frame back / on",
-       {key(GLFW_KEY_LEFT, [](AppState& s) { actions::stepFrame(s, -1); }, kRepeats),
-        key(GLFW_KEY_RIGHT, [](AppState& s) { actions::stepFrame(s, 1); }, kRepeats)}},
+      {"← / →", "one frame back / on (a quiz running: the answer, left / right)",
+       {key(GLFW_KEY_LEFT, [](AppState& s) { leftOrRight(s, WalkDirection::Left); }, kRepeats),
+        key(GLFW_KEY_RIGHT, [](AppState& s) { leftOrRight(s, WalkDirection::Right); }, kRepeats)}},
       {"[ / ]", "view angle α −1° / +1°",
        {key(GLFW_KEY_LEFT_BRACKET, [](AppState& s) { nudgeAngle(s, -kAngleFineStepDeg); }, kRepeats),
         key(GLFW_KEY_RIGHT_BRACKET, [](AppState& s) { nudgeAngle(s, kAngleFineStepDeg); }, kRepeats)}},
@@ -118,6 +133,22 @@ std::vector<ShortcutRow> makeRows() {
         key(GLFW_KEY_ENTER, [](AppState& s) { if (markingVideo(s)) actions::stopMarking(s); })}},
       {"P", "point-light display on / off (dots only)",
        {key(GLFW_KEY_P, [](AppState& s) { s.view.overlays.pointLights = !s.view.overlays.pointLights; })}},
+      // The classroom displays (ui/app/stage_actions.h)
+      {"I", "display: inverted on / off", {key(GLFW_KEY_I, [](AppState& s) { actions::setInverted(s, !s.stage.display.inverted); })}},
+      {"X", "display: scrambled dots, none → phase → position", {key(GLFW_KEY_X, actions::cycleScramble)}},
+      {"K", "display: masking noise dots on / off (how many: Controls)", {key(GLFW_KEY_K, actions::toggleMask)}},
+      {"L", "display: limited-lifetime dots on / off", {key(GLFW_KEY_L, actions::toggleLifetime)}},
+      {"W", "display: walking backwards on / off",
+       {key(GLFW_KEY_W, [](AppState& s) { actions::setBackwards(s, !s.stage.display.backwards); })}},
+      {"O", "display: overground (walks across) / treadmill",
+       {key(GLFW_KEY_O, [](AppState& s) { actions::setTranslating(s, !s.stage.display.translating); })}},
+      {"D", "the depth-reversed walker beside the true one on / off",
+       {key(GLFW_KEY_D, [](AppState& s) { actions::setDepthReversed(s, !s.stage.depthReversed); })}},
+      {"T", "turning stage: turn / pause", {key(GLFW_KEY_T, [](AppState& s) { actions::setTurning(s, !s.stage.turning); })}},
+      {"0", "every display off, the stage unturned", {key(GLFW_KEY_0, actions::resetStage)}},
+      {"A", "the audience window (projector) on / off",
+       {key(GLFW_KEY_A, [](AppState& s) { actions::setAudienceOpen(s, !s.audience.open); })}},
+      {"Q", "quiz \"which way is it walking?\": start / stop", {key(GLFW_KEY_Q, startOrStopQuiz)}},
       {"Ctrl+Z", "undo the last change of a setting (marking a video's joints: of the keyframes)",
        {ctrl(GLFW_KEY_Z, [](AppState& s) { undo(s); })}},
       {"Ctrl+Shift+Z / Ctrl+Y", "redo",

@@ -374,6 +374,39 @@ nlohmann::json layoutJson(const FrameRecord& f) {
           {"overflow", overflowJson(f)}};
 }
 
+// The classroom stage (ui/app/stage.h) and what its views draw this moment.
+nlohmann::json stageJson(const AppState& s) {
+  const StageFeature& st = s.stage;
+  const BiologicalMotionOptions& d = st.display;
+  nlohmann::json j{{"inverted", d.inverted},
+                   {"scramble", scrambleName(d.scramble)},
+                   {"mask_dots", d.maskDots},
+                   {"dot_lifetime_s", d.dotLifetimeS},
+                   {"backwards", d.backwards},
+                   {"overground", d.translating},
+                   {"depth_reversed", st.depthReversed},
+                   {"turning", st.turning},
+                   {"turn_deg_per_s", st.turnDegPerS},
+                   {"turned_deg", st.turnedDeg},
+                   {"elevation_deg", st.elevationDeg},
+                   {"drawn", stageDrawsViews(s)},
+                   {"description", stageDescription(st)}};
+  if (const auto walker = stageWalker2d(s)) j["azimuth_deg"] = stageAzimuthDeg(s, walker->alphaDeg);
+  return j;
+}
+
+nlohmann::json quizJson(const QuizFeature& q) {
+  if (!q.staircase) return nlohmann::json();
+  const Staircase& c = *q.staircase;
+  const double threshold = c.thresholdDots();
+  return {{"running", q.running()},
+          {"done", c.done()},
+          {"trials", c.trials().size()},
+          {"reversals", c.reversalCount()},
+          {"noise_dots", c.noiseDots()},
+          {"threshold_dots", std::isfinite(threshold) ? nlohmann::json(threshold) : nlohmann::json()}};
+}
+
 }  // namespace
 
 nlohmann::json stateJson(const AppState& s) {
@@ -426,6 +459,13 @@ nlohmann::json stateJson(const AppState& s) {
   // The guided tour: its step (0-based) and whether its text was folded last frame.
   j["tour"] = s.panels.tour.active ? nlohmann::json{{"step", s.panels.tour.step}, {"text_folded", s.panels.tour.folded}}
                                    : nlohmann::json();
+  j["stage"] = stageJson(s);
+  j["quiz"] = quizJson(s.quiz);
+  j["audience"] = {{"open", s.audience.open},
+                   {"shown", s.audience.shown},
+                   {"size", {s.audience.widthPx, s.audience.heightPx}},
+                   {"theme", audienceThemeName(s.audience.theme)},
+                   {"views", audienceViewsName(s.audience.views)}};
   j["busy"] = s.busy();
   j["failures"] = s.notices.failures;
   j["error"] = s.notices.lastError;

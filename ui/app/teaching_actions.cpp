@@ -91,11 +91,13 @@ void showPanel(AppState& s, const std::string& name, bool shown) {
     if (shown && !s.panels.notice.visible(s))
       throw std::invalid_argument("no notice to show the details of");
     s.panels.notice.detailsOpen = shown;
+  } else if (name == "quiz") {
+    s.quiz.open = shown;
   } else if (name == "model") {
     s.panels.header.modelMenuOpen = shown;
   } else {
     throw std::invalid_argument("unknown panel \"" + name +
-                                "\" (known: export, analysis, gait, help, data, notice_details, model)");
+                                "\" (known: export, analysis, gait, help, data, notice_details, model, quiz)");
   }
 }
 

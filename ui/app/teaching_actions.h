@@ -21,7 +21,7 @@ void tourBack(AppState& s);
 void tourEnd(AppState& s);
 
 // Floating panels: "export", "analysis", "help", "data", "notice_details" (the full message of
-// the notice row), "model" (the model selector); throws for an unknown name.
+// the notice row), "model" (the model selector), "quiz"; throws for an unknown name.
 void showPanel(AppState& s, const std::string& name, bool shown);
 
 }  // namespace ew::ui::actions

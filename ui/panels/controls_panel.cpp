@@ -10,6 +10,7 @@
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
 #include "ui/panels/clip_controls.h"
+#include "ui/panels/stage_controls.h"
 #include "ui/render/palette.h"
 #include "ui/widgets/flow.h"
 #include "ui/widgets/section_title.h"
@@ -153,6 +154,9 @@ void ControlsPanel::drawViewControls(AppState& s, const FrameContext& /*ctx*/) {
       }
       ImGui::EndTable();
     }
+
+    sectionTitle("Classroom displays");
+    drawStageControls(s);
 
     sectionTitle("Display");
     int theme = static_cast<int>(s.view.theme);

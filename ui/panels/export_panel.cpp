@@ -101,6 +101,13 @@ void ExportPanel::draw(AppState& s, const FrameContext& ctx) {
   if (ImGui::Button("BVH")) attempt("BVH", [&] { actions::exportBvh(s, target(*this, ".bvh"), cycles); });
   ImGui::SameLine();
   if (ImGui::Button("Model")) attempt("model", [&] { actions::exportModel(s, target(*this, ".ewm")); });
+
+  sectionTitle("For students");
+  if (ImGui::Button("Web page (HTML)"))
+    attempt("web page", [&] { actions::exportWalkerHtml(s, target(*this, ".html")); });
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the 2D view's walker as one HTML file any browser opens, offline: it walks\n"
+                      "at the view's angle, elevation and direction, with play, α and speed controls");
   if (!status.empty()) {
     ImGui::Separator();
     ImGui::TextWrapped("%s", status.c_str());

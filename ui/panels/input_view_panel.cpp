@@ -10,6 +10,7 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/panels/clip_view.h"
+#include "ui/panels/stage_scenes.h"
 #include "ui/convert.h"
 #include "ui/panels/view_captions.h"
 #include "ui/panels/view_overlay.h"
@@ -54,6 +55,8 @@ bool buildInputScene(const AppState& s, Scene& scene, float lineScale, double ph
   scene.lines.push_back({{-4000.0f, 0.0f, -2.0f}, 1.5f, {4000.0f, 0.0f, -2.0f}, 0.0f, palette::kAxis});
   scene.lines.push_back({{0.0f, -60.0f, -2.0f}, 1.0f, {0.0f, 2000.0f, -2.0f}, 8.0f,
                          glm::vec4(glm::vec3(palette::kAxis), 0.35f)});
+  if (stageDrawsViews(s))
+    return buildStageInputScene(s, scene, lineScale, std::floor(s.view.playback.cycles) + phase);
   if (input) {
     if (o.trails && !o.pointLights && trail) {
       std::vector<glm::vec2> points(static_cast<std::size_t>(trail->rows()));
@@ -246,7 +249,9 @@ void InputViewPanel::drawWalkerView(AppState& s, const FrameContext& ctx, ImVec2
   const ExploreResult* e = s.derived.explore();
   // Where the walker is drawn over its cycle: the input's trail and the reconstruction over it.
   Eigen::MatrixXd extent;
-  if (reconstruct && r) {
+  if (stageDrawsViews(s)) {
+    extent = stageTrail2d(s);
+  } else if (reconstruct && r) {
     extent = r->observedTrail;
     if (d && o.reprojection && !o.pointLights) {
       const Eigen::MatrixXd reprojected = trailOverCycle(d->reprojected, 24);

@@ -6,6 +6,7 @@
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/panels/playback_panel.h"
+#include "ui/panels/stage_controls.h"
 #include "ui/widgets/angle_dial.h"
 
 namespace ew::ui {
@@ -27,6 +28,18 @@ void drawAngle(AppState& s, float rowH, float sliderW) {
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("view angle of the 2D input ([ ] ±1°, Shift ±15°)");
 }
 
+// The classroom displays over the views, opened above the bar (keys do the same: F1 lists them).
+void drawDisplaysMenu(AppState& s, float scale) {
+  const ImVec2 barPadding = ImGui::GetStyle().FramePadding;
+  ImGui::PopStyleVar();  // the menu's items at their usual height, not the bar's
+  ImGui::SetNextWindowSize(ImVec2(std::min(420.0f * scale, ImGui::GetMainViewport()->Size.x - 20.0f * scale), 0.0f));
+  if (ImGui::BeginPopup("##displays")) {
+    drawStageControls(s);
+    ImGui::EndPopup();
+  }
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, barPadding);
+}
+
 }  // namespace
 
 void PresentationBar::draw(AppState& s, const FrameContext& ctx, const PanelRect& rect) {
@@ -45,8 +58,11 @@ void PresentationBar::draw(AppState& s, const FrameContext& ctx, const PanelRect
     ImGui::SameLine(0.0f, 2.0f * style.ItemSpacing.x);
     const char* leave = "Leave (F5)";
     const float leaveW = ImGui::CalcTextSize(leave).x + 2.0f * style.FramePadding.x;
+    const char* displays = "Displays";
+    const float displaysW = ImGui::CalcTextSize(displays).x + 2.0f * style.FramePadding.x;
     // The dial and the slider take what the buttons leave; the slider stops at a readable length.
-    const float sliderW = std::min(ImGui::GetContentRegionAvail().x - rowH - leaveW - 4.0f * style.ItemSpacing.x,
+    const float sliderW = std::min(ImGui::GetContentRegionAvail().x - rowH - leaveW - displaysW -
+                                       5.0f * style.ItemSpacing.x,
                                    900.0f * ctx.scale);
     // A clip or a video is seen from where it was filmed: the bar scrubs its frames instead.
     if (playsFrames(s)) {
@@ -55,6 +71,10 @@ void PresentationBar::draw(AppState& s, const FrameContext& ctx, const PanelRect
     } else {
       drawAngle(s, rowH, std::max(80.0f * ctx.scale, sliderW));
     }
+    ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - leaveW - displaysW - style.ItemSpacing.x);
+    if (rowButton(displays, displaysW, rowH)) ImGui::OpenPopup("##displays");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("the classroom displays: inverted, scrambled, masked, turning … (keys in F1)");
+    drawDisplaysMenu(s, ctx.scale);
     ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - leaveW);
     if (rowButton(leave, leaveW, rowH)) actions::setPresentation(s, false);
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("back to the panels (F5 or Esc)");

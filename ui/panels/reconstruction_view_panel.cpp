@@ -11,9 +11,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/eigenwalker/reconstruction.h"
+#include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/convert.h"
 #include "ui/panels/clip_view.h"
+#include "ui/panels/stage_scenes.h"
 #include "ui/panels/view_captions.h"
 #include "ui/panels/view_overlay.h"
 #include "ui/panels/walker_bounds.h"
@@ -199,7 +201,10 @@ bool buildReconstructionScene(const AppState& s, Scene& scene, float lineScale, 
   scene.floor.visible = o.grid;
   scene.floor.scrollMm = static_cast<float>(std::fmod(cycles * strideLengthMm(s), 1000.0));
   bool drawn = false;
-  if (reconstruct && s.doc.compareEngines) {
+  if (stageDrawsViews(s)) {
+    // A quiz's 3D view stays empty: the room answers from the 2D view alone.
+    drawn = !s.quiz.running() && buildStageReconstructionScene(s, scene, lineScale, cycles);
+  } else if (reconstruct && s.doc.compareEngines) {
     drawn = buildCompareScene(s, scene, phase);
   } else if (reconstruct && r && d) {
     const Pose3 truth = toPose3(frameAtPhase(r->wTrue, phase));
@@ -303,7 +308,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
                       s.fonts.large, ctx.scale, ImVec2(size.x - 2.0f * pad, size.y), walker);
       const ImRect legendRect = drawLegend(dl, ImVec2(p0.x + pad, p1.y - pad), legend, ctx.scale, size.x, walker);
       ImRect bar = kNothing;
-      if (reconstruct && d && o.depthErrorColour && !o.pointLights && !s.doc.compareEngines)
+      if (reconstruct && d && o.depthErrorColour && !o.pointLights && !s.doc.compareEngines && !stageDrawsViews(s))
         bar = drawColourBarClearOf(dl, captionRect, legendRect, walker, p0, p1, size, errorScale, ctx.scale,
                                    s.view.presentation);
       if (drawn) {
@@ -319,6 +324,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
         const bool detected = video && video->detected && video->detected->people > 0;
         const bool unfitted = clipMode && video && !s.clip.settings && (tracked || detected) &&
                               !s.video.track.running() && !s.video.detect.running();
+        const std::string quizText = s.quiz.running() && !clipMode ? quizMessage(s) : std::string();
         const char* msg = clipMode && video && !s.clip.settings
                               ? (s.video.track.running()    ? "tracking…"
                                  : s.video.detect.running() ? "detecting people… the walker appears when they are found"
@@ -326,6 +332,7 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
                                  : detected                 ? "no walk fits the people detected"
                                  : video->detected          ? "nobody detected: mark the joints on one frame, then Track"
                                                             : "detect the walker, or mark the joints on one frame, then Track")
+                          : !quizText.empty() ? quizText.c_str()
                           : clipMode ? (s.clip.fits.running() ? "fitting the camera…" : unfittedClipMessage(s.clip.fits.error()))
                           : s.jobsBusy() ? "building models…" : "nothing to show";
         const float height = drawCentredMessage(dl, p0, size, msg);

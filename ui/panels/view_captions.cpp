@@ -59,7 +59,42 @@ std::vector<LegendItem> walkerReconstructionLegend(const AppState& s) {
 
 }  // namespace
 
+std::string quizMessage(const AppState& s) {
+  if (!s.quiz.running()) return "";
+  return "Which way is it walking? Trial " + std::to_string(s.quiz.staircase->trials().size() + 1) +
+         " · answer ← or →";
+}
+
+ViewCaption stageInputCaption(const AppState& s) {
+  if (s.quiz.running()) return {"2D input", quizMessage(s), {{palette::kInputPoint, "dots", false}}};
+  const std::optional<StageWalker> walker = stageWalker2d(s);
+  const StageFeature& stage = s.stage;
+  std::vector<LegendItem> legend{{palette::kInputPoint, stage.display.maskDots > 0 ? "the walker's dots and the noise dots (alike)" : "the walker's dots", false}};
+  if (stage.depthReversed)
+    legend.push_back({palette::kOtherMinimum, "depth-reversed walker: the same image at α", true});
+  char sub[200];
+  std::snprintf(sub, sizeof sub, "%s at α = %.0f°: %s", walker ? walker->name.c_str() : "the walker",
+                walker ? stageAzimuthDeg(s, walker->alphaDeg) : 0.0, stageDescription(stage).c_str());
+  return {"2D input", sub, std::move(legend)};
+}
+
+ViewCaption stageReconstructionCaption(const AppState& s) {
+  const bool reconstruct = s.doc.mode == Mode::Reconstruct;
+  const char* title = reconstruct ? "3D reconstruction" : "Gait space";
+  if (s.quiz.running()) return {title, "hidden during the quiz", {}};
+  const StageFeature& stage = s.stage;
+  const bool figure = displayKeepsTheForm(stage.display) && !s.view.overlays.pointLights;
+  std::vector<LegendItem> legend{
+      {figure ? palette::kReconRight : palette::kInputPoint, reconstruct ? "the reconstruction" : "the synthesised walker", false}};
+  if (stage.depthReversed)
+    legend.push_back({figure ? palette::kEngineRight[1] : palette::kOtherMinimum,
+                      "depth-reversed beside it: the same 2D image", false});
+  if (s.view.overlays.cameraGlyph) legend.push_back({palette::kCamera, "camera of the 2D view", true});
+  return {title, stageDescription(stage), std::move(legend)};
+}
+
 ViewCaption walkerInputCaption(const AppState& s) {
+  if (stageDrawsViews(s)) return stageInputCaption(s);
   const bool reconstruct = s.doc.mode == Mode::Reconstruct;
   const auto& o = s.view.overlays;
   const ReconBase* r = s.derived.recon();
@@ -160,6 +195,7 @@ ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool 
 }
 
 ViewCaption walkerReconstructionCaption(const AppState& s) {
+  if (stageDrawsViews(s)) return stageReconstructionCaption(s);
   const bool reconstruct = s.doc.mode == Mode::Reconstruct;
   const ReconBase* r = s.derived.recon();
   char sub[200];

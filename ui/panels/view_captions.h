@@ -26,6 +26,12 @@ ViewCaption clipInputCaption(const AppState& s, int shown, bool onScreen = false
 // The 2D view of an open video at its frame `frame` (0-based video frame); `decoding`: the
 // frame shown is still the one before; `onScreen`: the legend may say what a drag does.
 ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool onScreen);
+// The two views of the classroom stage (ui/app/stage.h), when stageDrawsViews: what the
+// display is, and a quiz's question without its answer.
+ViewCaption stageInputCaption(const AppState& s);
+ViewCaption stageReconstructionCaption(const AppState& s);
+// "Which way is it walking? Trial 7 · answer ← or →" (a quiz running).
+std::string quizMessage(const AppState& s);
 // The 3D view (reconstruct and explore modes; compare mode lists each engine's error).
 ViewCaption walkerReconstructionCaption(const AppState& s);
 // The 3D view of a keypoint clip: the walker and the estimated camera.
