@@ -62,7 +62,9 @@ void drawStaircasePlot(const Staircase& q, float scale) {
   spec.valueFormat = "%.0f";
   for (const QuizTrial& t : trials)
     if (t.reversal) spec.markers.push_back({static_cast<double>(t.number), "", IM_COL32(255, 255, 255, 60)});
-  const float height = std::max(150.0f * scale, ImGui::GetContentRegionAvail().y - ImGui::GetFrameHeightWithSpacing() * 2.5f);
+  // What the window leaves under the plot: the Save / Start row and the status line.
+  const float below = 2.0f * ImGui::GetFrameHeightWithSpacing();
+  const float height = std::max(150.0f * scale, ImGui::GetContentRegionAvail().y - below);
   drawPlot("##staircase", ImVec2(ImGui::GetContentRegionAvail().x, height), spec, series, scale);
 }
 
@@ -73,9 +75,12 @@ void QuizPanel::draw(AppState& s, const FrameContext& ctx) {
   if (!quiz.open) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   const float width = floatingExtent(display.x, 0.36f, 420.0f * ctx.scale, 40.0f * ctx.scale);
-  ImGui::SetNextWindowSize(ImVec2(width, floatingExtent(display.y, 0.42f, 340.0f * ctx.scale, 60.0f * ctx.scale)),
-                           ImGuiCond_Appearing);
-  ImGui::SetNextWindowPos(ImVec2(display.x - 20.0f * ctx.scale, 70.0f * ctx.scale), ImGuiCond_Appearing, ImVec2(1.0f, 0.0f));
+  const float height = floatingExtent(display.y, 0.5f, 390.0f * ctx.scale, 120.0f * ctx.scale);
+  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
+  // At the bottom right, over the 3D view the quiz leaves empty, above the presentation bar
+  // (its top on the screen).
+  const float bottom = std::max(display.y - 100.0f * ctx.scale, std::min(display.y, height + 10.0f * ctx.scale));
+  ImGui::SetNextWindowPos(ImVec2(display.x - 20.0f * ctx.scale, bottom), ImGuiCond_Appearing, ImVec2(1.0f, 1.0f));
   if (!ImGui::Begin("Quiz: which way is it walking?###quiz", &quiz.open,
                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();

@@ -318,13 +318,13 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
         if (bar.GetWidth() > 0.0f) s.lastFrame.overlay("reconstruction.colour_bar", toPanelRect(bar));
       }
       }
-      if (!drawn) {
+      // A quiz leaves the view empty but for its caption (the quiz window floats over it).
+      if (!drawn && !(s.quiz.running() && !clipMode)) {
         const std::optional<VideoSession>& video = s.video.session;
         const bool tracked = video && video->tracked;
         const bool detected = video && video->detected && video->detected->people > 0;
         const bool unfitted = clipMode && video && !s.clip.settings && (tracked || detected) &&
                               !s.video.track.running() && !s.video.detect.running();
-        const std::string quizText = s.quiz.running() && !clipMode ? quizMessage(s) : std::string();
         const char* msg = clipMode && video && !s.clip.settings
                               ? (s.video.track.running()    ? "tracking…"
                                  : s.video.detect.running() ? "detecting people… the walker appears when they are found"
@@ -332,7 +332,6 @@ void ReconstructionViewPanel::draw(AppState& s, const FrameContext& ctx, const P
                                  : detected                 ? "no walk fits the people detected"
                                  : video->detected          ? "nobody detected: mark the joints on one frame, then Track"
                                                             : "detect the walker, or mark the joints on one frame, then Track")
-                          : !quizText.empty() ? quizText.c_str()
                           : clipMode ? (s.clip.fits.running() ? "fitting the camera…" : unfittedClipMessage(s.clip.fits.error()))
                           : s.jobsBusy() ? "building models…" : "nothing to show";
         const float height = drawCentredMessage(dl, p0, size, msg);

@@ -68,6 +68,13 @@ bool buildStageInputScene(const AppState& s, Scene& scene, float lineScale, doub
     scene.glows.push_back({glm::vec3(toGlm(Eigen::Vector2d(noise.col(i))), 0.0f), kDotRadiusMm, palette::kInputPoint});
   if (dots.reversed) {
     const Eigen::Matrix2Xd mirrored = stageProjection(*dots.reversed, azimuth, stage.elevationDeg);
+    if (bones) {  // dashed, so that the true walker's bones stay the solid ones
+      const Pose2 pose = pose2Of(mirrored);
+      for (const auto& [ja, jb] : kBones)
+        scene.overlayLines.push_back({glm::vec3(pose[static_cast<std::size_t>(index(ja))], 1.0f), 1.5f * lineScale,
+                                      glm::vec3(pose[static_cast<std::size_t>(index(jb))], 1.0f), 6.0f * lineScale,
+                                      glm::vec4(glm::vec3(palette::kOtherMinimum), 0.7f)});
+    }
     for (Eigen::Index i = 0; i < mirrored.cols(); ++i)
       addRing(scene, toGlm(Eigen::Vector2d(mirrored.col(i))), 1.5f * kDotRadiusMm, palette::kOtherMinimum,
               2.0f * lineScale);
