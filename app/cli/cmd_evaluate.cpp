@@ -34,6 +34,7 @@ struct EvaluateArgs {
   std::vector<std::string> experiments{"all"};
   std::string angles;      // empty: each experiment's default views
   int cameras = 0;         // experiments "engines", "camera-wide": random cameras per walker (0 = default)
+  std::string keepClips;             // experiments "camera", "engines": each clip's keypoints kept here
   std::vector<std::string> factors;  // experiment "camera-wide": the factors to run (empty: all)
   std::optional<double> detectorHipOffsetMm;  // experiment "camera": the simulated detector's hips
   bool noDetectorOffsets = false;              // experiment "camera": the reader ignores the offsets
@@ -144,6 +145,7 @@ EvaluationOptions evaluationOptions(const EvaluateArgs& a, ProgressPrinter& prin
   o.cameraDetectorHipOffsetMm = a.detectorHipOffsetMm;
   o.cameraAllowForDetectorOffsets = !a.noDetectorOffsets;
   o.cameraWideFactors = a.factors;
+  if (!a.keepClips.empty()) o.keepClipsDir = a.keepClips;
   if (a.cameras > 0) o.cameraWideCameras = a.cameras;
   o.threads = a.threads > 0 ? a.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   o.progress = [&printer](int done, int total, const std::string& what) { printer(done, total, what); };
@@ -177,6 +179,7 @@ void runEnginesExperiment(const Dataset& dataset, const std::vector<Walker>& wal
   o.engines = enginesAskedFor(a);
   if (!a.angles.empty()) o.anglesDeg = parseAngleSpec(a.angles);
   if (a.cameras > 0) o.camerasPerWalker = a.cameras;
+  if (!a.keepClips.empty()) o.keepClipsDir = a.keepClips;
   if (a.sigma2Mm2 > 0) o.sigma2Mm2 = a.sigma2Mm2;
   if (a.components > 0) o.model.components = a.components;
   if (a.clusters > 0) o.prior.clusters = a.clusters;
@@ -359,6 +362,9 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--cameras", args->cameras,
                   "Experiments 'engines' and 'camera-wide': random cameras per held-out walker (default 3)")
       ->check(CLI::Range(1, 100));
+  cmd->add_option("--keep-clips", args->keepClips,
+                  "Experiments 'camera' and 'engines': keep each clip's keypoint file(s) in this folder, as "
+                  "SUBJECT_cameraK_Npx/ (open one with the viewer or reconstruct --unknown-camera)");
   cmd->add_option("--factor", args->factors,
                   "Experiment 'camera-wide': the factors to run beside the base (repeat or comma-separate; "
                   "default all)")

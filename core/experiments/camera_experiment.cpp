@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -260,14 +261,16 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   row.reprojectionRmsPx = fit.reprojectionRmsPx;
   // The fit's walk over the floor is its camera's progression (walking in place: none, the
   // stance feet of its two-harmonic walker tell).
-  const GaitSideWalk walked = fit.inPlace ? GaitSideWalk{std::nullopt, true}
-                                          : GaitSideWalk{fit.speedMps, false};
+  // Its frames repeat at the fit's ω: one stride's events per cycle.
+  const double strideHz = fit.omegaRadS / (2.0 * std::numbers::pi);
+  const GaitSideWalk walked = fit.inPlace ? GaitSideWalk{std::nullopt, true, strideHz}
+                                          : GaitSideWalk{fit.speedMps, false, strideHz};
   const GaitSink gait{o.gait, o.fps, row};
   gait.add(kCameraEigenwalker, clip, clip.truth, frames, walked);
   const double toStature = height / fit.headHeightMm;  // head height stands for the stature
   gait.add(kCameraEigenwalkerStatureGiven, clip, clip.truth, frames * toStature,
            {walked.progressionMps ? std::optional<double>(*walked.progressionMps * toStature) : std::nullopt,
-            walked.twoHarmonicWalker});
+            walked.twoHarmonicWalker, strideHz});
   EigenwalkerClip out{fit.w, fit.omegaRadS, {}};
   const MatrixXd camera = walkInCameraFrame(frames, times, fit.camera);
   const auto pelvisDistanceM = [](const MatrixXd& inCamera) {
@@ -417,6 +420,18 @@ void geometricEnginesOnClip(const Clip& clip, const KeypointTrial& t, const Snip
   }
 }
 
+// The clip's folder copied to dir/SUBJECT_cameraK_Npx (experiment options keepClipsDir).
+void keepClip(const fs::path& folder, const fs::path& dir, const CameraRow& row) {
+  char name[160];
+  std::snprintf(name, sizeof name, "%s_camera%d_%gpx", row.subject.c_str(), row.camera, row.noisePx);
+  const fs::path target = dir / name;
+  std::error_code ec;
+  fs::remove_all(target, ec);
+  fs::create_directories(dir, ec);
+  fs::copy(folder, target, fs::copy_options::recursive, ec);
+  if (ec) throw Error(ErrorKind::Io, target.string(), "", "cannot keep the clip: " + ec.message());
+}
+
 void reconstructClip(const Fold& fold, const ExperimentWalker& w, const Clip& clip, const MatrixXd& observed,
                      const MatrixXd& confidence, const MatrixXd* other, const SnippetEngine* snippet,
                      const CameraExperimentOptions& o, int index, CameraRow& row) {
@@ -450,6 +465,7 @@ void reconstructClip(const Fold& fold, const ExperimentWalker& w, const Clip& cl
     row.error = e.what();
     otherEnginesFailed(o, e.what(), row);
   }
+  if (o.keepClipsDir) keepClip(folder, *o.keepClipsDir, row);
   fs::remove_all(folder);
 }
 

@@ -32,6 +32,7 @@
 //             prior is learnt per fold from the other subjects' walkers at 1.3 m/s.
 // Each scored like the eigenwalker: MPJPE over the clip after removing the mean translation.
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -84,6 +85,10 @@ struct CameraExperimentOptions {
   // The height of the point the camera looks at (where the walker passes mid-clip), uniform
   // (mm); equal, no draw: the clip above, aimed at 1 m (about the walker's pelvis).
   double minLookAtHeightMm = 1000.0, maxLookAtHeightMm = 1000.0;
+  // Each clip's keypoint file(s) kept in this folder, as SUBJECT_cameraK_Npx/ (the camera
+  // 0-based, the noise level in px), for a user to open a clip the experiment scored; unset:
+  // written to a temporary folder and removed.
+  std::optional<std::filesystem::path> keepClipsDir;
 };
 
 // Another engine's result on a clip: NaN MPJPE and the reason when it gave none.

@@ -91,6 +91,7 @@ void compareOnCameras(const std::vector<ExperimentWalker>& walkers, const std::v
   c.skeleton = hasEngine(o.engines, EngineKind::Skeleton);
   c.snippet = hasEngine(o.engines, EngineKind::Snippet);
   c.gait = true;
+  c.keepClipsDir = o.keepClipsDir;
   const bool eigenwalker = hasEngine(o.engines, EngineKind::Eigenwalker);
   for (const CameraRow& row : cameraErrors(walkers, folds, c)) {
     if (eigenwalker)

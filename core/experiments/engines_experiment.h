@@ -17,6 +17,8 @@
 // Each row carries the engine's wall time on the clip; each reconstruction's gait measures
 // are compared with the walker's own (gait_agreement.h) per setting, view and noise level.
 
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,7 @@ struct EnginesExperimentOptions {
   ModelOptions model;
   SnippetPriorOptions prior;
   int threads = 1;
+  std::optional<std::filesystem::path> keepClipsDir;  // setting "camera": CameraExperimentOptions's
 };
 
 struct EnginesRow {

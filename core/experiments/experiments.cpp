@@ -544,6 +544,7 @@ EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
     camera.snippet = options.cameraSnippet;
     camera.detectorHipOffsetMm = options.cameraDetectorHipOffsetMm;
     camera.allowForDetectorOffsets = options.cameraAllowForDetectorOffsets;
+    camera.keepClipsDir = options.keepClipsDir;
     res.camera = cameraErrors(walkers, folds, camera);
   });
   timed(Experiment::CameraWide, [&] {

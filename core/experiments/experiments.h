@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <filesystem>
 #include <optional>
 #include <set>
 #include <string>
@@ -74,6 +75,7 @@ struct EvaluationOptions {
   // cameras per held-out walker (unset: the camera experiment's 3).
   std::vector<std::string> cameraWideFactors;
   std::optional<int> cameraWideCameras;
+  std::optional<std::filesystem::path> keepClipsDir;  // experiment "camera": each clip kept there
   int threads = 1;
   ExperimentProgressFn progress;
 };

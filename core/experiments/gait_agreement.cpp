@@ -22,7 +22,8 @@ MeasuredSide measure(const Eigen::Ref<const Eigen::MatrixXd>& framesMm, double r
                      const std::string& name) {
   MeasuredSide side;
   try {
-    const GaitEventSet events = gaitEventsFromKinematics(framesMm, rateHz);
+    const GaitEventSet events = walk.strideHz ? gaitEventsOfPeriodicWalk(framesMm, rateHz, *walk.strideHz)
+                                              : gaitEventsFromKinematics(framesMm, rateHz);
     side.measures = walk.twoHarmonicWalker && !walk.progressionMps
                         ? measureTwoHarmonicGait(framesMm, rateHz, events, name)
                         : measureGait(framesMm, rateHz, events, walk.progressionMps, name);

@@ -53,6 +53,9 @@ struct GaitAgreementRow {
 struct GaitSideWalk {
   std::optional<double> progressionMps;  // its speed over the floor (measureGait's progression)
   bool twoHarmonicWalker = false;         // in place, a two-harmonic walker: measureTwoHarmonicGait
+  // A periodic walk's stride frequency (a Fourier walker's ω / 2π): its events one per stride
+  // (gaitEventsOfPeriodicWalk) rather than the kinematics' peaks.
+  std::optional<double> strideHz;
 };
 
 // One walker at one view: a row per measure. truthMm and reconstructedMm: T × 45 at rateHz in

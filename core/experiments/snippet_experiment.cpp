@@ -107,9 +107,9 @@ EngineRow engineRow(const SnippetFold& fold, const std::string& engine, const st
     const ClipErrors e = clipErrors(frames, truth, alpha);
     if (scoring.gait) {
       // The eigenwalker's walker is two harmonics in place: its stance feet are read as such.
-      const GaitSideWalk reconstructed{std::nullopt, engine.starts_with("eigenwalker")};
+      const GaitSideWalk reconstructed{std::nullopt, engine.starts_with("eigenwalker"), std::nullopt};
       for (auto& g : gaitAgreementRows(fold.subject, engine, alpha, truth, frames, kClipRateHz,
-                                       {scoring.truthSpeedMps, false}, reconstructed)) {
+                                       {scoring.truthSpeedMps, false, std::nullopt}, reconstructed)) {
         g.noise = noiseMm;
         out.gait.push_back(std::move(g));
       }

@@ -4,6 +4,9 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
+
+#include <Eigen/QR>
 
 #include "core/common/skeleton.h"
 #include "core/gait/gait_cycles.h"
@@ -105,6 +108,63 @@ GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& m
   const double lastS = static_cast<double>(m.rows() - 1) / rateHz;
   for (FootEvents* foot : {&events.right, &events.left})
     for (double& off : foot->offsS) off = std::min(off + footOffLag * strideS, lastS);
+  return events;
+}
+
+namespace {
+
+// The phase (0 … 1 of the stride) where a periodic signal, sampled at times t, is largest:
+// its harmonics of f fitted by least squares (as many as the samples carry, up to four),
+// then evaluated on a fine grid of the cycle.
+double phaseOfMaximum(const Eigen::VectorXd& signal, double rateHz, double f) {
+  const Eigen::Index n = signal.size();
+  const int harmonics = static_cast<int>(std::clamp<Eigen::Index>((n - 1) / 2, 1, 4));
+  Eigen::MatrixXd basis(n, 2 * harmonics + 1);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double theta = 2.0 * std::numbers::pi * f * static_cast<double>(i) / rateHz;
+    basis(i, 0) = 1.0;
+    for (int h = 1; h <= harmonics; ++h) {
+      basis(i, 2 * h - 1) = std::sin(h * theta);
+      basis(i, 2 * h) = std::cos(h * theta);
+    }
+  }
+  const Eigen::VectorXd c = basis.colPivHouseholderQr().solve(signal);
+  constexpr int kGrid = 2000;
+  double best = -std::numeric_limits<double>::infinity(), bestPhase = 0.0;
+  for (int k = 0; k < kGrid; ++k) {
+    const double phase = static_cast<double>(k) / kGrid, theta = 2.0 * std::numbers::pi * phase;
+    double v = c(0);
+    for (int h = 1; h <= harmonics; ++h) v += c(2 * h - 1) * std::sin(h * theta) + c(2 * h) * std::cos(h * theta);
+    if (v > best) best = v, bestPhase = phase;
+  }
+  return bestPhase;
+}
+
+// Every time phase·T + k·T (T = 1/f) within [0, lastS].
+std::vector<double> everyStrideAt(double phase, double f, double lastS) {
+  std::vector<double> times;
+  for (double t = phase / f; t <= lastS; t += 1.0 / f) times.push_back(t);
+  return times;
+}
+
+}  // namespace
+
+GaitEventSet gaitEventsOfPeriodicWalk(const Eigen::Ref<const Eigen::MatrixXd>& m, double rateHz, double strideHz,
+                                      double footOffLag) {
+  GaitEventSet events;
+  events.method = "kinematics (periodic walk)";
+  if (m.rows() < 3 || m.cols() != kDims3 || !(rateHz > 0) || !std::isfinite(rateHz) ||
+      !(strideHz >= kMinStrideHz && strideHz <= kMaxStrideHz))
+    return events;
+  const double lastS = static_cast<double>(m.rows() - 1) / rateHz;
+  for (Side side : {Side::Right, Side::Left}) {
+    const Eigen::VectorXd lead = m.col(3 * index(ankleOf(side)) + 1) - m.col(3 * index(Joint::Pelvis) + 1);
+    if (!lead.allFinite()) continue;
+    FootEvents& foot = side == Side::Right ? events.right : events.left;
+    foot.strikesS = everyStrideAt(phaseOfMaximum(lead, rateHz, strideHz), strideHz, lastS);
+    const double off = std::fmod(phaseOfMaximum(-lead, rateHz, strideHz) + footOffLag, 1.0);
+    foot.offsS = everyStrideAt(off, strideHz, lastS);
+  }
   return events;
 }
 

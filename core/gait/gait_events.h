@@ -67,6 +67,16 @@ inline constexpr double kAnkleFootOffLagOfStride = 0.0185;
 GaitEventSet gaitEventsFromKinematics(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
                                       double rateHz, double footOffLag = kAnkleFootOffLagOfStride);
 
+// A walk known to repeat every 1 / strideHz seconds (a Fourier walker synthesised at its own
+// ω): each ankle's lead on the pelvis is fitted with harmonics of strideHz (least squares, up
+// to the fourth), and Zeni's events put where that periodic lead is largest (strikes) and
+// smallest (foot offs, with footOffLag of the stride), one of each per stride over the
+// frames. Kinematic peaks of a short or oddly shaped walk can count two strikes in one
+// stride; a periodic walk has one. Empty lists as gaitEventsFromKinematics's, and for a
+// strideHz outside kMinStrideHz-kMaxStrideHz.
+GaitEventSet gaitEventsOfPeriodicWalk(const Eigen::Ref<const Eigen::MatrixXd>& framesX45, double rateHz,
+                                      double strideHz, double footOffLag = kAnkleFootOffLagOfStride);
+
 // Zeni's rule on the points he used, where the input has the feet (JointTrial::feetMm): the
 // strike where the heel is foremost on the pelvis, the foot off where the toe is rearmost.
 // Against the Schreiber-Moissenet C3D events (18 trials; docs/GAIT.md, "Events from the

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "core/eigenwalker/default_model.h"
 #include "core/eigenwalker/fourier.h"
 #include "core/gait/dataset.h"
 #include "core/gait/fourier_walker_gait.h"
@@ -110,6 +111,57 @@ TEST(FourierWalkerGait, AGivenSpeedIsKept) {
   ASSERT_TRUE(g.measures) << g.error;
   EXPECT_EQ(g.measures->speedSource, "progression");
   EXPECT_DOUBLE_EQ(g.measures->speedMps, trial.speedMps);
+}
+
+}  // namespace
+}  // namespace ew
+
+namespace ew {
+namespace {
+
+// Events of a periodic walk (gaitEventsOfPeriodicWalk): on walkers of the default model seen
+// for a stride and a third at 30 fps, one strike and one foot off per stride, exactly a
+// stride apart, at the phase where the kinematics' peaks fall on eight strides at 100 Hz
+// (within 10 ms: the kinematic peaks' own smoothing and sampling); their cadence is the
+// walker's 120 f on a stride and a half.
+TEST(PeriodicWalkEvents, OneOfEachPerStrideWhereTheKinematicsPutThem) {
+  const EigenwalkerModel& model = defaultRealModel();
+  for (int k = 0; k < 4; ++k) {
+    Eigen::VectorXd w = model.mean;
+    if (k > 0) w += model.eigenwalkers.col(k - 1) * std::sqrt(model.eigenvalues(k - 1));
+    const double f = model.omegasRadS.mean() / (2.0 * std::numbers::pi) * (0.9 + 0.1 * k);
+    const auto framesAt = [&](double rate, double seconds) {
+      const int n = static_cast<int>(std::floor(seconds * rate)) + 1;
+      Eigen::VectorXd t(n);
+      for (int i = 0; i < n; ++i) t(i) = i / rate;
+      return synthesizeFrames(w, 2.0 * std::numbers::pi * f, 0.7, t);
+    };
+    const Eigen::MatrixXd shortClip = framesAt(30.0, 1.35 / f), longWalk = framesAt(100.0, 8.0 / f);
+    const GaitEventSet periodic = gaitEventsOfPeriodicWalk(shortClip, 30.0, f);
+    const GaitEventSet kinematic = gaitEventsFromKinematics(longWalk, 100.0);
+    const auto phaseOf = [&](double t) { return std::fmod(t * f, 1.0); };
+    const auto cyclicGapS = [&](double a, double b) {
+      const double d = std::abs(phaseOf(a) - phaseOf(b));
+      return std::min(d, 1.0 - d) / f;
+    };
+    for (Side side : {Side::Right, Side::Left}) {
+      const FootEvents& p = periodic.of(side);
+      const FootEvents& q = kinematic.of(side);
+      ASSERT_GE(p.strikesS.size(), 1u);
+      ASSERT_LE(p.strikesS.size(), 2u) << "a stride and a third holds one or two strikes of a foot";
+      ASSERT_GE(p.offsS.size(), 1u);
+      for (std::size_t i = 1; i < p.strikesS.size(); ++i) EXPECT_NEAR(p.strikesS[i] - p.strikesS[i - 1], 1.0 / f, 1e-9);
+      ASSERT_FALSE(q.strikesS.empty());
+      EXPECT_LT(cyclicGapS(p.strikesS.front(), q.strikesS[q.strikesS.size() / 2]), 0.010) << "walker " << k;
+      EXPECT_LT(cyclicGapS(p.offsS.front(), q.offsS[q.offsS.size() / 2]), 0.010) << "walker " << k;
+    }
+    // A stride and a half: one foot strikes twice (the feet strike half a stride apart).
+    const Eigen::MatrixXd strideAndAHalf = framesAt(30.0, 1.5 / f);
+    const GaitMeasures g =
+        measureGait(strideAndAHalf, 30.0, gaitEventsOfPeriodicWalk(strideAndAHalf, 30.0, f), 1.3, "periodic");
+    EXPECT_NEAR(g.cadenceSpm, 120.0 * f, 1e-6);
+    EXPECT_TRUE(gaitEventsOfPeriodicWalk(shortClip, 30.0, 9.0).right.strikesS.empty()) << "a stride past 2.5 Hz";
+  }
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 // has content cut at its edge, and no caption, legend or colour bar covers the walker of its
 // view, and no window reaches past the screen's edge — in both modes, with every drawer tab
 // shown in turn, with the three engines' gait report, the analysis, data, model and export
-// windows open, on the guided tour's second card, and in presentation mode. The viewer reports what it laid out (export_state's
+// windows open, with the quiz window, on the guided tour's second card, and in presentation
+// mode (with the classroom displays on too). The viewer reports what it laid out (export_state's
 // layout.overflow and layout.overlays); the whole matrix's screenshots are
 // docs/screenshots/layout_matrix_*.png (docs/tools/layout_contact_sheet.sh).
 
@@ -52,13 +53,24 @@ TEST_F(GuiLayoutMatrix, NothingIsCutAndNothingCoversTheWalker) {
       script += std::string(R"(, {"show_panel": [")") + panel + R"(", true]}, {"wait_frames": 3}, {"export_state": ")" +
                 (dir / (states.back() + ".json")).string() + R"("}, {"show_panel": [")" + panel + R"(", false]})";
     }
+    // The quiz window with a few answers plotted, over explore mode's views.
+    states.push_back("quiz");
+    script += R"(, {"set_mode": "explore"}, {"quiz_start": {}}, {"quiz_answer": "left"}, {"quiz_answer": "right"},
+                 {"quiz_answer": "left"}, {"wait_frames": 3}, {"export_state": ")" +
+              (dir / "quiz.json").string() + R"("}, {"quiz_stop": true}, {"show_panel": ["quiz", false]},
+                 {"set_mode": "reconstruct"})";
     // The tour's second card: its longest title and a step that points into the drawer.
     states.push_back("tour");
     script += R"(, {"tour": "start"}, {"tour": "next"}, {"wait_frames": 3}, {"export_state": ")" +
               (dir / "tour.json").string() + R"("}, {"tour": "end"})";
     states.push_back("presentation");
     script += R"(, {"set_mode": "reconstruct"}, {"presentation": true}, {"wait_frames": 2}, {"export_state": ")" +
-              (dir / "presentation.json").string() + R"("}])";
+              (dir / "presentation.json").string() + R"("})";
+    // The classroom displays' longest captions and legends, in presentation mode.
+    states.push_back("presentation_displays");
+    script += R"(, {"mask_dots": 100}, {"depth_reversed": true}, {"inverted": true}, {"stage_elevation": 10},
+                 {"wait_frames": 2}, {"export_state": ")" +
+              (dir / "presentation_displays.json").string() + R"("}])";
     const RunResult r = runViewer(dir, std::string("--size ") + c.size + " --ui-scale " + c.scale + " --script " +
                                            quote(writeScript(dir, script).string()));
     ASSERT_EQ(r.exitCode, 0) << cell << "\n" << r.err;

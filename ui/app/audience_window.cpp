@@ -31,7 +31,7 @@ void onAudienceKey(GLFWwindow* window, int key, int /*scancode*/, int action, in
 }
 
 // The projector theme's views are black: a washed-out projector shows black as its darkest grey.
-void applyTheme(Scene& scene, AudienceTheme theme) {
+void darkenForProjector(Scene& scene, AudienceTheme theme) {
   if (theme != AudienceTheme::Projector) return;
   scene.backgroundTop = scene.backgroundBottom = {0.0f, 0.0f, 0.0f, 1.0f};
 }
@@ -111,7 +111,7 @@ void AudienceWindow::render(AppState& s, Renderer& renderer, int width, int heig
   if (inputW > 0) {
     inputScene_.clearItems();
     buildInputScene(s, inputScene_, lineScale, s.view.playback.phase());
-    applyTheme(inputScene_, s.audience.theme);
+    darkenForProjector(inputScene_, s.audience.theme);
     inputTarget_.ensure(inputW, height, renderer.samples());
     renderer.render(inputTarget_, inputScene_, inputViewCamera(static_cast<float>(inputW) / static_cast<float>(height)));
     inputTarget_.blitInto(composed_, 0, 0);
@@ -120,7 +120,7 @@ void AudienceWindow::render(AppState& s, Renderer& renderer, int width, int heig
     float errorScale = 1.0f;
     reconstructionScene_.clearItems();
     buildReconstructionScene(s, reconstructionScene_, lineScale, s.view.playback.cycles, &errorScale);
-    applyTheme(reconstructionScene_, s.audience.theme);
+    darkenForProjector(reconstructionScene_, s.audience.theme);
     reconstructionTarget_.ensure(reconW, height, renderer.samples());
     renderer.render(reconstructionTarget_, reconstructionScene_,
                     s.view.camera.matrices(static_cast<float>(reconW) / static_cast<float>(height)));

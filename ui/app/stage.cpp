@@ -18,7 +18,7 @@ bool StageFeature::shown() const {
 namespace {
 
 // x wrapped into [−period/2, period/2).
-double wrapped(double x, double period) { return x - period * std::floor(x / period + 0.5); }
+double wrappedAbout(double x, double period) { return x - period * std::floor(x / period + 0.5); }
 
 }  // namespace
 
@@ -34,7 +34,7 @@ StageDots stageDots(const StageFeature& stage, const Eigen::VectorXd& w, double 
   out.keepsForm = displayKeepsTheForm(options);
   if (stage.display.translating) {
     const double sign = options.backwards ? -1.0 : 1.0;
-    out.walker.row(1).array() += wrapped(sign * speedMmS * cycles / strideHz, kStageWrapMm);
+    out.walker.row(1).array() += wrappedAbout(sign * speedMmS * cycles / strideHz, kStageWrapMm);
   }
   if (stage.depthReversed) {
     // The walker's own dots mirrored in depth (core's reflection, on the dots as one row).
