@@ -100,7 +100,30 @@ TEST(Shortcuts, KeysChangeWhatTheControlsChange) {
   EXPECT_TRUE(s.view.presentation);
   applyShortcut(s, chord("escape"));
   EXPECT_FALSE(s.view.presentation);
-  EXPECT_FALSE(applyShortcut(s, chord("q")));  // unbound
+  // The classroom displays: each its key, 0 all off.
+  applyShortcut(s, chord("i"));
+  EXPECT_TRUE(s.stage.display.inverted);
+  applyShortcut(s, chord("x"));
+  EXPECT_EQ(s.stage.display.scramble, Scramble::Phase);
+  applyShortcut(s, chord("x"));
+  EXPECT_EQ(s.stage.display.scramble, Scramble::Position);
+  applyShortcut(s, chord("k"));
+  EXPECT_EQ(s.stage.display.maskDots, kDefaultMaskDots);
+  applyShortcut(s, chord("l"));
+  EXPECT_GT(s.stage.display.dotLifetimeS, 0.0);
+  applyShortcut(s, chord("w"));
+  EXPECT_TRUE(s.stage.display.backwards);
+  applyShortcut(s, chord("o"));
+  EXPECT_TRUE(s.stage.display.translating);
+  applyShortcut(s, chord("d"));
+  EXPECT_TRUE(s.stage.depthReversed);
+  applyShortcut(s, chord("t"));
+  EXPECT_TRUE(s.stage.turning);
+  applyShortcut(s, chord("0"));
+  EXPECT_FALSE(s.stage.shown());
+  applyShortcut(s, chord("a"));
+  EXPECT_TRUE(s.audience.open);
+  EXPECT_FALSE(applyShortcut(s, chord("j")));  // unbound
 }
 
 }  // namespace
