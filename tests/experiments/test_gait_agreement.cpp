@@ -100,7 +100,7 @@ TEST(GaitAgreement, AReconstructionThatDoesNotWalkIsUnmeasuredNotAnError) {
 TEST(GaitAgreement, AKnownProgressionIsTheSidesSpeed) {
   const WalkingTrial t = syntheticTrial();
   const auto& m = t.joints.positionsMm;
-  const auto rows = gaitAgreementRows("SYN001", "walked", 0.0, m, m, t.joints.rateHz, {1.234, false}, {0.9, false});
+  const auto rows = gaitAgreementRows("SYN001", "walked", 0.0, m, m, t.joints.rateHz, {1.234, false, std::nullopt}, {0.9, false, std::nullopt});
   for (const auto& r : rows) {
     if (r.measure == "speed") {
       EXPECT_DOUBLE_EQ(r.mocap, 1.234);

@@ -74,7 +74,14 @@ TEST_F(GuiLayoutMatrix, NothingIsCutAndNothingCoversTheWalker) {
     const RunResult r = runViewer(dir, std::string("--size ") + c.size + " --ui-scale " + c.scale + " --script " +
                                            quote(writeScript(dir, script).string()));
     ASSERT_EQ(r.exitCode, 0) << cell << "\n" << r.err;
-    for (const auto& s : states) expectLayoutHolds(nlohmann::json::parse(readAll(dir / (s + ".json"))), cell + ", " + s);
+    for (const auto& s : states) {
+      const nlohmann::json state = nlohmann::json::parse(readAll(dir / (s + ".json")));
+      // A quiz hides the 3D view's walker (the room answers from the 2D view).
+      if (s == "quiz")
+        expectLayoutHolds(state, cell + ", " + s, {"input"});
+      else
+        expectLayoutHolds(state, cell + ", " + s);
+    }
   }
 }
 

@@ -74,14 +74,35 @@ void QuizPanel::draw(AppState& s, const FrameContext& ctx) {
   QuizFeature& quiz = s.quiz;
   if (!quiz.open) return;
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  const float width = floatingExtent(display.x, 0.36f, 420.0f * ctx.scale, 40.0f * ctx.scale);
+  // While it runs: a small window (the question's line and the two answers) at the bottom
+  // right, over the 3D view the quiz leaves empty, never over the 2D view the room watches;
+  // the plot once it is over, in a window as large as the screen allows.
+  const bool running = quiz.running();
+  const float pad = 10.0f * ctx.scale;
+  // The 3D view the last frame laid out (the whole window's right before any frame).
+  const PanelRect view = s.lastFrame.layout.reconstruction;
+  const bool laidOut = view.size.x > 0.0f && view.size.y > 0.0f;
+  const float viewRight = laidOut ? view.pos.x + view.size.x - pad : display.x - 2.0f * pad;
+  const float viewBottom = laidOut ? view.pos.y + view.size.y - pad : display.y - 100.0f * ctx.scale;
+  const float width = running ? (laidOut ? std::max(view.size.x - 2.0f * pad, 0.25f * display.x)
+                                         : floatingExtent(display.x, 0.3f, 380.0f * ctx.scale, 40.0f * ctx.scale))
+                              : floatingExtent(display.x, 0.36f, 420.0f * ctx.scale, 40.0f * ctx.scale);
   const float height = floatingExtent(display.y, 0.5f, 390.0f * ctx.scale, 120.0f * ctx.scale);
-  ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Appearing);
-  // At the bottom right, over the 3D view the quiz leaves empty, above the presentation bar
-  // (its top on the screen).
-  const float bottom = std::max(display.y - 100.0f * ctx.scale, std::min(display.y, height + 10.0f * ctx.scale));
-  ImGui::SetNextWindowPos(ImVec2(display.x - 20.0f * ctx.scale, bottom), ImGuiCond_Appearing, ImVec2(1.0f, 1.0f));
-  if (!ImGui::Begin("Quiz: which way is it walking?###quiz", &quiz.open,
+  // The large window once, when the quiz has just ended (or the window opens on a result).
+  const ImGuiCond resize = running || wasRunning ? ImGuiCond_Always : ImGuiCond_Appearing;
+  wasRunning = running;
+  if (running)
+    ImGui::SetNextWindowSize(ImVec2(width, 0.0f), resize);  // its height fits its lines
+  else
+    ImGui::SetNextWindowSize(ImVec2(width, height), resize);
+  const ImVec2 corner = running ? ImVec2(viewRight, viewBottom)
+                                : ImVec2(display.x - 2.0f * pad, std::max(display.y - 100.0f * ctx.scale,
+                                                                          std::min(display.y, height + pad)));
+  ImGui::SetNextWindowPos(corner, resize, ImVec2(1.0f, 1.0f));
+  // (The title bar also holds the close button: a frame's height.)
+  const char* title = fittingTitle("Quiz: which way is it walking?###quiz", "Quiz###quiz",
+                                   width - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemInnerSpacing.x);
+  if (!ImGui::Begin(title, &quiz.open,
                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
@@ -95,15 +116,14 @@ void QuizPanel::draw(AppState& s, const FrameContext& ctx) {
   };
   if (quiz.running()) {
     const Staircase& q = *quiz.staircase;
-    ImGui::Text("Trial %zu · %d noise dots · %d reversals of %d", q.trials().size() + 1, q.noiseDots(),
-                q.reversalCount(), q.options().reversals);
+    ImGui::TextWrapped("Trial %zu · %d noise dots · %d reversals of %d", q.trials().size() + 1, q.noiseDots(),
+                       q.reversalCount(), q.options().reversals);
     const float half = 0.5f * (ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemSpacing.x);
     const float tall = 2.2f * ImGui::GetFrameHeight();
     if (ImGui::Button("← Left", ImVec2(half, tall))) attempt([&] { actions::quizAnswer(s, WalkDirection::Left); });
     ImGui::SameLine();
     if (ImGui::Button("Right →", ImVec2(half, tall))) attempt([&] { actions::quizAnswer(s, WalkDirection::Right); });
-    textDisabledWrapped("The room answers; you press ← or → (the keys do the same). Q stops the quiz.");
-    if (!q.trials().empty()) drawStaircasePlot(q, ctx.scale);
+    textDisabledWrapped("the room answers, you press ← or → · Q stops · the plot comes at the end");
   } else {
     if (quiz.staircase && !quiz.staircase->trials().empty()) {
       const Staircase& q = *quiz.staircase;

@@ -1,8 +1,8 @@
 #pragma once
 // The quiz window (ui/app/quiz.h): its settings and Start, then each trial's question with
-// Left / Right, then the staircase plotted (the noise of every trial, the answers, the
-// reversals and the threshold) and Save CSV. Floats over the 3D view, which the quiz leaves
-// empty; shown in presentation mode too.
+// Left / Right (a small window over the 3D view, which the quiz leaves empty), then the
+// staircase plotted (the noise of every trial, the answers, the reversals and the threshold)
+// and Save CSV. Shown in presentation mode too.
 
 namespace ew::ui {
 
@@ -10,6 +10,7 @@ struct AppState;
 struct FrameContext;
 
 struct QuizPanel {
+  bool wasRunning = false;  // last frame: a quiz ran (its end resizes the window for the plot)
   void draw(AppState& s, const FrameContext& ctx);
 };
 

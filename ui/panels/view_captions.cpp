@@ -71,7 +71,7 @@ ViewCaption stageInputCaption(const AppState& s) {
   const StageFeature& stage = s.stage;
   std::vector<LegendItem> legend{{palette::kInputPoint, stage.display.maskDots > 0 ? "the walker's dots and the noise dots (alike)" : "the walker's dots", false}};
   if (stage.depthReversed)
-    legend.push_back({palette::kOtherMinimum, "depth-reversed walker: the same image at α", true});
+    legend.push_back({palette::kOtherMinimum, "depth-reversed walker: the same image at α, seen level", true});
   char sub[200];
   std::snprintf(sub, sizeof sub, "%s at α = %.0f°: %s", walker ? walker->name.c_str() : "the walker",
                 walker ? stageAzimuthDeg(s, walker->alphaDeg) : 0.0, stageDescription(stage).c_str());
@@ -88,7 +88,7 @@ ViewCaption stageReconstructionCaption(const AppState& s) {
       {figure ? palette::kReconRight : palette::kInputPoint, reconstruct ? "the reconstruction" : "the synthesised walker", false}};
   if (stage.depthReversed)
     legend.push_back({figure ? palette::kEngineRight[1] : palette::kOtherMinimum,
-                      "depth-reversed beside it: the same 2D image", false});
+                      "depth-reversed beside it: the same level image at α", false});
   if (s.view.overlays.cameraGlyph) legend.push_back({palette::kCamera, "camera of the 2D view", true});
   return {title, stageDescription(stage), std::move(legend)};
 }
