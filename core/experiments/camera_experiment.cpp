@@ -209,7 +209,7 @@ struct GaitSink {
   void add(const char* engine, const Clip& clip, const MatrixXd& truth, const MatrixXd& frames,
            const GaitSideWalk& reconstructed = {}) const {
     if (!on) return;
-    const GaitSideWalk truthWalk{clip.camera.speedMmS / 1000.0, false};
+    const GaitSideWalk truthWalk{clip.camera.speedMmS / 1000.0, false, std::nullopt};
     for (auto& g : gaitAgreementRows(row.subject, engine, clip.camera.alphaDeg, truth, frames, fps, truthWalk,
                                      reconstructed)) {
       g.setting = "camera";
