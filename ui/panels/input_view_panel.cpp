@@ -51,8 +51,11 @@ bool buildInputScene(const AppState& s, Scene& scene, float lineScale, double ph
     trail = &e->projectedTrail;
   }
 
-  // Ground line (v = 0) and the image's vertical axis through u = 0.
-  scene.lines.push_back({{-4000.0f, 0.0f, -2.0f}, 1.5f, {4000.0f, 0.0f, -2.0f}, 0.0f, palette::kAxis});
+  // Ground line (v = 0) and the image's vertical axis through u = 0. A stage seen from above
+  // (elevation) has no ground line: the floor under the walker spans a band of v.
+  const bool tilted = stageDrawsViews(s) && s.stage.elevationDeg != 0.0;
+  if (!tilted)
+    scene.lines.push_back({{-4000.0f, 0.0f, -2.0f}, 1.5f, {4000.0f, 0.0f, -2.0f}, 0.0f, palette::kAxis});
   scene.lines.push_back({{0.0f, -60.0f, -2.0f}, 1.0f, {0.0f, 2000.0f, -2.0f}, 8.0f,
                          glm::vec4(glm::vec3(palette::kAxis), 0.35f)});
   if (stageDrawsViews(s))
