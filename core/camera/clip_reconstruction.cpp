@@ -100,6 +100,7 @@ ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, Keypo
   c.framesMm = synthesizeFrames(c.fit.w, c.fit.omegaRadS, c.fit.phaseRad, c.timesS);
   c.reprojectedPx = projectWalk(c.framesMm, c.timesS, c.fit.camera);
   c.residualRmsPx = residualRms(c.reprojectedPx, c.trial.jointsPx);
+  c.feet = liftFeetOntoSagittalPlanes(c.trial.feetPx, c.framesMm, c.timesS, c.fit.camera);
   FitGivens given{fitOptions.alphaDeg.has_value(), fitOptions.focalPx.has_value(), std::nullopt};
   if (fitOptions.imageSizePx)
     given.imageWidthPx = fitOptions.imageSizePx->x();

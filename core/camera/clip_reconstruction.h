@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/camera/camera_reconstruction.h"
+#include "core/camera/lifted_feet.h"
 #include "core/keypoints/image_gait.h"
 #include "core/keypoints/keypoint_trial.h"
 
@@ -25,6 +26,9 @@ struct ClipReconstruction {
   Eigen::MatrixXd reprojectedPx;  // T × 30: the 3D walker through the camera, pixels, y down
   // Per joint, RMS over the frames that see it of |reprojected − input| (px); NaN if never seen.
   std::array<double, kJointCount> residualRmsPx{};
+  // The image's heels and toes lifted into framesMm's frame (lifted_feet.h): empty feetMm for
+  // a layout without feet, an orthographic fit's or an end-on view's.
+  LiftedFeet feet;
   // Where the stride frequency came from: "foot strikes", "trunk's bob (the foot strikes read
   // … Hz)" (gaitForTheFit below), "trunk's bob (a track's, held)" (holdTheTrunksStride), or the
   // caller's own hint.

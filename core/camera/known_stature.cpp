@@ -20,6 +20,7 @@ void scaleToStature(ClipReconstruction& clip, double statureMm) {
   const double s = statureMm / fit.statureMm;
   fit.w *= s;
   clip.framesMm *= s;
+  clip.feet.feetMm *= s;  // each lifted point lies on its ray, s times further along it
   WalkCamera& c = fit.camera;
   c.distanceMm *= s;
   c.lookAtHeightMm *= s;

@@ -84,6 +84,9 @@ int undistortPixels(const CalibratedCamera& c, Eigen::MatrixXd& px) {
 
 int undistortTrial(const CalibratedCamera& c, KeypointTrial& trial) {
   int lost = undistortPixels(c, trial.jointsPx);
+  // The heels and toes are lifted through the same pinhole (lifted_feet.h); a foot point
+  // outside the calibrated field is dropped, not counted: the joints decide the fit.
+  undistortPixels(c, trial.feetPx);
   for (PersonTrack& person : trial.people) {
     Eigen::MatrixXd& px = person.jointsPx;
     // The walker's own rows were counted once already.
