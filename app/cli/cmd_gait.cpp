@@ -72,13 +72,22 @@ void addCurvesOf(const WalkingTrial& t, MeasuredTrial& out) {
   out.footProgression = footProgressionDeg(angles.degrees, angles.names, rateHz, out.measures);
 }
 
+// The feet a reconstruction has were lifted from one view onto their ankles' sagittal planes
+// (core/camera/lifted_feet.h): their events and ankle angle hold, their turn out of the plane
+// is not in them.
+void withoutFootProgression(MeasuredTrial& m) {
+  m.footProgression = {};
+  m.measures.notes.push_back("feet from the image, lifted onto the ankles' sagittal planes: no foot progression");
+}
+
 // A reconstruction's walk, in place: its progression as its camera fit found it, or (on a
 // treadmill) its two-harmonic walker's stance feet (core/gait/fourier_walker_gait.h).
 struct ReconstructedWalk {
   std::optional<double> progressionMps;  // unset: walking in place
 };
 
-// A video's walker: its 3D joints in place (a temporary CSV) and its walk over the floor.
+// A video's walker: its 3D joints in place and the feet lifted from the image (a temporary C3D,
+// core/camera/lifted_feet.h) and its walk over the floor.
 struct VideoWalker {
   TrialFile file;
   ReconstructedWalk walk;
@@ -86,14 +95,15 @@ struct VideoWalker {
 
 // A video: the walker the built-in detector finds, reconstructed through the unknown camera as
 // `reconstruct --input V.mp4` does (its summary on stderr), written beside the other outputs
-// in a temporary CSV and measured like any reconstruction's, at its fit's progression.
+// in a temporary C3D and measured like any reconstruction's, at its fit's progression.
 VideoWalker reconstructedFromVideo(const std::filesystem::path& video, const std::filesystem::path& folder,
                                    std::optional<double> statureM) {
   CameraArgs c;
   c.input = video.string();
-  c.out = (folder / (video.stem().string() + "_walk3d.csv")).string();
+  c.out = (folder / (video.stem().string() + "_walk3d.c3d")).string();
   c.modelName = defaultRealModelName();
   c.statureM = statureM;
+  c.seenFramesOnly = true;
   CameraFit fit;
   runReconstructCamera(defaultRealModel(), c, &fit);
   VideoWalker w;
@@ -121,9 +131,12 @@ std::vector<MeasuredTrial> measureFile(const TrialFile& f, const GaitArgs& args,
   prepare.cropToSteadyWindow = !args.wholeTrial;
   const WalkingTrial t = loadWalkingTrial(f.path, options, prepare);
   std::vector<MeasuredTrial> out;
-  for (const auto& events : eventSetsFor(t, args.events)) {
+  // A reconstruction's C3D carries the events its own kinematics gave when it was written: the
+  // same kinematics measured here, named as what they are.
+  for (const auto& events : eventSetsFor(t, reconstructed ? "kinematics" : args.events)) {
     MeasuredTrial m{f.path.string(), f.info.subject, measuredWalk(t, events, f.path.string(), reconstructed), {}, {}};
     addCurvesOf(t, m);
+    if (reconstructed && t.joints.hasFeet()) withoutFootProgression(m);
     out.push_back(std::move(m));
   }
   return out;

@@ -122,6 +122,9 @@ void printSummary(const json& r) {
   // Said when the trunk stood in for feet that read another stride (a view from the front).
   if (r.contains("stride_source") && r["stride_source"].get<std::string>().starts_with("trunk"))
     std::cerr << "\nstride from the " << r["stride_source"].get<std::string>();
+  if (r.contains("feet") && r["feet"]["samples_seen"].get<int>() > 0)
+    std::cerr << "\nfeet: " << r["feet"]["note"].get<std::string>()
+              << (r["feet"]["written"].get<bool>() ? "" : " (written to a .c3d output only)");
   for (const auto& caution : r["cautions"]) std::cerr << "\ncaution: " << caution.get<std::string>();
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
 }
@@ -186,6 +189,25 @@ json modelLoopJson(const DetectionLoop& loop, const DetectionLoopOptions& o) {
                       {"stature_m", loop.first.fit.statureMm / 1000.0}}}};
 }
 
+// [first, last] frames where the walker has a seen joint; the whole clip when none.
+std::pair<Eigen::Index, Eigen::Index> seenSpan(const Eigen::MatrixXd& jointsPx) {
+  Eigen::Index first = -1, last = -1;
+  for (Eigen::Index r = 0; r < jointsPx.rows(); ++r) {
+    if (!jointsPx.row(r).array().isFinite().any()) continue;
+    if (first < 0) first = r;
+    last = r;
+  }
+  if (first < 0) return {0, jointsPx.rows() - 1};
+  return {first, last};
+}
+
+// Only a C3D has a place for the feet beside the 15 joints (core/io/trc_writer.h).
+bool writesFeet(const std::string& out) {
+  std::string extension = std::filesystem::path(out).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".c3d";
+}
+
 // The eigenwalker through the camera (reconstruct(engine, request), core/engines/request.h),
 // written and reported.
 int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
@@ -205,8 +227,22 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
   what << "eigenwalker reconstruction of " << a.input << " through an unknown camera (azimuth "
        << fit.camera.alphaDeg << " deg, elevation " << fit.camera.elevationDeg << " deg), model "
        << a.modelName;
-  writeJointTrajectories(a.out, frames, t.rateHz, {what.str()});
+  std::vector<std::string> notes = {what.str()};
+  if (clip.feet.pointsSeen > 0) notes.push_back("feet: " + clip.feet.note);
+  if (a.seenFramesOnly) {
+    const auto [first, last] = seenSpan(t.jointsPx);
+    const Eigen::Index n = last - first + 1;
+    notes.push_back("frames " + std::to_string(first) + "-" + std::to_string(last) + " of the clip: where the walker is seen");
+    const Eigen::MatrixXd feet = clip.feet.feetMm.size() ? Eigen::MatrixXd(clip.feet.feetMm.middleRows(first, n)) : Eigen::MatrixXd();
+    writeJointTrajectories(a.out, frames.middleRows(first, n), t.rateHz, notes, feet);
+  } else {
+    writeJointTrajectories(a.out, frames, t.rateHz, notes, clip.feet.feetMm);
+  }
   json report = reportJson(a, camera, t, fit);
+  report["feet"] = {{"samples_seen", clip.feet.pointsSeen},
+                    {"samples_lifted", clip.feet.pointsLifted},
+                    {"written", clip.feet.pointsLifted > 0 && writesFeet(a.out)},
+                    {"note", clip.feet.note}};
   json residuals = json::object();
   for (int j = 0; j < kJointCount; ++j)
     if (std::isfinite(clip.residualRmsPx[static_cast<std::size_t>(j)]))

@@ -1,4 +1,5 @@
 #include "core/gait/gait_events.h"
+#include "core/gait/gaps.h"
 
 #include <algorithm>
 #include <array>
@@ -168,6 +169,19 @@ GaitEventSet gaitEventsOfPeriodicWalk(const Eigen::Ref<const Eigen::MatrixXd>& m
   return events;
 }
 
+namespace {
+
+// [begin, end) of the longest run of frames where a foot's heel and toe are both finite.
+std::pair<int, int> bothPointsSeen(const Eigen::Ref<const Eigen::MatrixXd>& feet, Side side) {
+  std::vector<bool> seen(static_cast<std::size_t>(feet.rows()));
+  for (Eigen::Index r = 0; r < feet.rows(); ++r)
+    seen[static_cast<std::size_t>(r)] = feet.row(r).segment<3>(3 * index(heelOf(side))).allFinite() &&
+                                        feet.row(r).segment<3>(3 * index(toeOf(side))).allFinite();
+  return longestRun(seen);
+}
+
+}  // namespace
+
 GaitEventSet gaitEventsFromFeet(const Eigen::Ref<const Eigen::MatrixXd>& m,
                                 const Eigen::Ref<const Eigen::MatrixXd>& feet, double rateHz,
                                 double heelStrikeLag) {
@@ -180,11 +194,18 @@ GaitEventSet gaitEventsFromFeet(const Eigen::Ref<const Eigen::MatrixXd>& m,
   // off after the ankle's early strike would read stance long).
   std::array<bool, 2> fromFeet{};
   for (Side side : {Side::Right, Side::Left}) {
-    const auto seen = [&](FootPoint p) { return feet.middleCols(3 * index(p), 3).allFinite(); };
-    if (!seen(heelOf(side)) || !seen(toeOf(side))) continue;
+    const auto [begin, end] = bothPointsSeen(feet, side);
+    if (end - begin < kMinFeetSeenShare * static_cast<double>(m.rows()) || end - begin < 3) continue;
+    const auto n = end - begin;
+    const Eigen::MatrixXd run = m.middleRows(begin, n), runFeet = feet.middleRows(begin, n);
+    const double startS = static_cast<double>(begin) / rateHz;
+    const auto shifted = [&](std::vector<double> times) {
+      for (double& t : times) t += startS;
+      return times;
+    };
     FootEvents& foot = side == Side::Right ? events.right : events.left;
-    foot.strikesS = extremesS(footPointLeadMm(m, feet, rateHz, heelOf(side)), rateHz);
-    foot.offsS = extremesS(-footPointLeadMm(m, feet, rateHz, toeOf(side)), rateHz);
+    foot.strikesS = shifted(extremesS(footPointLeadMm(run, runFeet, rateHz, heelOf(side)), rateHz));
+    foot.offsS = shifted(extremesS(-footPointLeadMm(run, runFeet, rateHz, toeOf(side)), rateHz));
     fromFeet[side == Side::Right ? 0 : 1] = true;
   }
   if (!fromFeet[0] && !fromFeet[1]) return events;

@@ -87,8 +87,13 @@ GaitEventSet gaitEventsOfPeriodicWalk(const Eigen::Ref<const Eigen::MatrixXd>& f
 // (tests/gait/test_gait_measures.cpp) measures it again, and again leaving each trial out.
 inline constexpr double kHeelStrikeLagOfStride = 0.0184;
 
-// Each foot's strikes from its heel and its foot offs from its toe where both points are finite
-// in every frame; the ankle's events (gaitEventsFromKinematics, with its foot-off lag) for a foot
+// A foot's heel and toe stand in for its ankle when both are seen together over a run of at
+// least this share of the frames (a detector's feet drop out where the walker enters or leaves
+// the picture); the events are then the run's alone.
+inline constexpr double kMinFeetSeenShare = 0.8;
+
+// Each foot's strikes from its heel and its foot offs from its toe over the longest run where
+// both points are finite, when it holds kMinFeetSeenShare of the frames; the ankle's events (gaitEventsFromKinematics, with its foot-off lag) for a foot
 // that lacks either, so that a foot's strike and foot off always share one lead (the toe's
 // accurate foot off after the ankle's early strike read stance 1.7 points long on
 // gait-pig-nz.c3d, which has toe markers and no heels). method: "kinematics (heel and toe)" with

@@ -284,3 +284,44 @@ TEST(FootAngles, MissingPointsAreNaNNeverAnError) {
 
 }  // namespace
 }  // namespace ew
+
+namespace ew {
+namespace {
+
+// A detector's feet drop out where the walker enters or leaves the picture: the heel and the toe
+// still give a foot's events over the frames they are seen in together (kMinFeetSeenShare),
+// none outside them; seen over less, the ankle's events stand in.
+TEST(FeetEvents, FeetSeenOverMostOfTheClipGiveTheirEventsThere) {
+  test::AnalyticGait g;
+  JointTrial t = test::analyticWalkTrial(g);
+  const WalkingTrial w = prepareWalkingTrial(t);
+  const Eigen::MatrixXd& m = w.joints.positionsMm;
+  const double rate = w.joints.rateHz;
+  Eigen::MatrixXd feet(m.rows(), kFootDims3);
+  for (Eigen::Index r = 0; r < m.rows(); ++r)
+    for (Side side : {Side::Right, Side::Left}) {
+      const Eigen::Vector3d ankle = m.row(r).segment<3>(3 * index(side == Side::Left ? Joint::LAnkle : Joint::RAnkle)).transpose();
+      feet.row(r).segment<3>(3 * index(heelOf(side))) = (ankle + Eigen::Vector3d(0, -50, -40)).transpose();
+      feet.row(r).segment<3>(3 * index(toeOf(side))) = (ankle + Eigen::Vector3d(0, 150, -40)).transpose();
+    }
+  const GaitEventSet whole = gaitEventsFromFeet(m, feet, rate);
+  const Eigen::Index cut = m.rows() / 10;  // the right foot unseen in the first tenth
+  feet.block(0, 3 * index(FootPoint::RHeel), cut, 6).setConstant(std::numeric_limits<double>::quiet_NaN());
+  const GaitEventSet partly = gaitEventsFromFeet(m, feet, rate);
+  EXPECT_EQ(partly.method, "kinematics (heel and toe)");
+  const double cutS = static_cast<double>(cut) / rate;
+  for (double s : partly.right.strikesS) EXPECT_GT(s, cutS);
+  // The events the run holds are the whole clip's, but for the heel-strike lag's stride.
+  for (double s : partly.right.offsS) {
+    double nearest = 1e9;
+    for (double o : whole.right.offsS) nearest = std::min(nearest, std::abs(o - s));
+    EXPECT_LT(nearest, 0.5 / rate) << s;
+  }
+  EXPECT_GE(partly.right.offsS.size() + 1, whole.right.offsS.size());
+  // Seen over less than kMinFeetSeenShare: the ankle's events for that foot.
+  feet.block(0, 3 * index(FootPoint::RHeel), m.rows() / 4, 6).setConstant(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_EQ(gaitEventsFromFeet(m, feet, rate).method, "kinematics (heel and toe of one foot, the other's ankle)");
+}
+
+}  // namespace
+}  // namespace ew

@@ -79,6 +79,17 @@ TEST(DetectCli, TheWalkingVideoBecomesAWalkerWithNoOtherTool) {
   ASSERT_EQ(gait.exitCode, 0) << gait.err;
   const json measures = json::parse(gait.out.substr(gait.out.find('[')))[0];
   EXPECT_NEAR(std::stod(measures["cadence_spm"].get<std::string>()), 60.0 * 2.0 * report["stride_hz"].get<double>(), 10.0);
+  // Her heels and foot indices, lifted from the image (core/camera/lifted_feet.h), give the
+  // events and the ankle curve; the strides are those of the frames she is seen in (5.1 s at
+  // 0.81 Hz: 4 a side, not the 6 a side of the whole 7.7 s clip); no foot progression is claimed.
+  EXPECT_GT(report["feet"]["samples_lifted"].get<int>(), 0.9 * report["feet"]["samples_seen"].get<int>());
+  EXPECT_EQ(measures["events"], "kinematics (heel and toe)");
+  EXPECT_LE(std::stoi(measures["strides"].get<std::string>()), 8);
+  EXPECT_EQ(measures["foot_progression_r_deg"], "nan");
+  const double stance = std::stod(measures["stance_pct"].get<std::string>());
+  EXPECT_GT(stance, 55.0);  // adults walk with 58-65 % stance (Perry & Burnfield)
+  EXPECT_LT(stance, 68.0);
+  EXPECT_GT(std::stod(measures["ankle_flexion_range_deg"].get<std::string>()), 15.0);
 }
 
 TEST(DetectCli, VideosItCannotUseAreClearErrors) {
