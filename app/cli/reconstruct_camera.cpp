@@ -14,6 +14,7 @@
 #include "app/cli/video_beside_keypoints.h"
 #include "core/camera/camera_knowledge.h"
 #include "core/camera/clip_reconstruction.h"
+#include "core/camera/detector_offsets.h"
 #include "core/camera/lens_distortion.h"
 #include "core/common/errors.h"
 #include "core/eigenwalker/model_file.h"
@@ -239,6 +240,10 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
     writeJointTrajectories(a.out, frames, t.rateHz, notes, clip.feet.feetMm);
   }
   json report = reportJson(a, camera, t, fit);
+  if (t.sternumFromShoulders) {  // allowed for by the fit (core/camera/detector_offsets.h)
+    const Eigen::Vector3d sternum = sternumAsShouldersMidpointOffsetMm(model);
+    report["detector_offsets_mm"]["sternum"] = {sternum.x(), sternum.y(), sternum.z()};
+  }
   report["feet"] = {{"samples_seen", clip.feet.pointsSeen},
                     {"samples_lifted", clip.feet.pointsLifted},
                     {"written", clip.feet.pointsLifted > 0 && writesFeet(a.out)},

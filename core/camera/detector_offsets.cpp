@@ -27,14 +27,23 @@ void addOffsets(Eigen::MatrixXd& framesMm, const JointOffsetsMm& offsets) {
     for (int c = 0; c < 3; ++c) framesMm.col(3 * j + c).array() += offsets[static_cast<std::size_t>(j)][static_cast<std::size_t>(c)];
 }
 
+Eigen::Vector3d sternumAsShouldersMidpointOffsetMm(const EigenwalkerModel& model) {
+  const auto at = [&](Joint j) { return model.mean.segment<3>(3 * index(j)); };
+  return 0.5 * (at(Joint::RShoulder) + at(Joint::LShoulder)) - at(Joint::Sternum);
+}
+
 CameraFit reconstructDetectedWalker(const EigenwalkerModel& model, const KeypointTrial& trial,
                                     CameraFitOptions options) {
   if (!options.imageSizePx && trial.imageSize)
     options.imageSizePx = Eigen::Vector2d(trial.imageSize->width, trial.imageSize->height);
-  if (!anyOffset(trial.detectorOffsetMm)) return reconstructUnknownCamera(model, trial.jointsPx, trial.rateHz, options);
-  CameraFit fit = reconstructUnknownCamera(modelAsDetected(model, trial.detectorOffsetMm), trial.jointsPx,
-                                           trial.rateHz, options);
-  removeOffsets(fit.w, trial.detectorOffsetMm);
+  JointOffsetsMm offsets = trial.detectorOffsetMm;
+  if (trial.sternumFromShoulders) {
+    const Eigen::Vector3d sternum = sternumAsShouldersMidpointOffsetMm(model);
+    for (int c = 0; c < 3; ++c) offsets[static_cast<std::size_t>(index(Joint::Sternum))][static_cast<std::size_t>(c)] += sternum[c];
+  }
+  if (!anyOffset(offsets)) return reconstructUnknownCamera(model, trial.jointsPx, trial.rateHz, options);
+  CameraFit fit = reconstructUnknownCamera(modelAsDetected(model, offsets), trial.jointsPx, trial.rateHz, options);
+  removeOffsets(fit.w, offsets);
   return fit;
 }
 

@@ -26,6 +26,13 @@ void removeOffsets(Eigen::VectorXd& w, const JointOffsetsMm& offsets);
 // A walker's frames (T × 45) as the detector would place its points.
 void addOffsets(Eigen::MatrixXd& framesMm, const JointOffsetsMm& offsets);
 
+// Where a sternum made as the shoulders' midpoint sits on the model's walkers: the mean
+// walker's shoulders' midpoint less its sternum, over its mean posture (mm; on the default model
+// 40.6 mm behind and 66.5 mm below: its sternum is the neck base between C7 and the jugular
+// notch, its shoulders the glenohumeral centres, docs/JOINTS.md). Without it the fit bent the
+// trunk to bring its sternum down to the image's.
+Eigen::Vector3d sternumAsShouldersMidpointOffsetMm(const EigenwalkerModel& model);
+
 // reconstructUnknownCamera on the trial's joints, with the trial's detector offsets
 // (KeypointTrial::detectorOffsetMm) accounted for: CameraFit::w is the walker of joint centres.
 // The trial's image, when known and the options give none, is the fit's image (the principal

@@ -306,6 +306,18 @@ const KeypointLayout& chooseLayout(const KeypointFrames& frames, const PersonTra
   return *best;
 }
 
+// The layout's sternum, first alternative, is its two shoulders' first alternatives averaged.
+bool sternumIsTheShouldersMidpoint(const KeypointLayout& layout) {
+  const auto first = [&](Joint j) -> const std::vector<int>* {
+    const auto& alternatives = layout.joints[static_cast<std::size_t>(index(j))];
+    return alternatives.empty() ? nullptr : &alternatives.front();
+  };
+  const auto *sternum = first(Joint::Sternum), *right = first(Joint::RShoulder), *left = first(Joint::LShoulder);
+  if (!sternum || !right || !left || sternum->size() != 2 || right->size() != 1 || left->size() != 1) return false;
+  const std::vector<int> shoulders = {right->front(), left->front()};
+  return std::is_permutation(sternum->begin(), sternum->end(), shoulders.begin());
+}
+
 std::string confidenceText(double minConfidence) { return std::to_string(minConfidence).substr(0, 4); }
 
 // Which joints the trial sees and how often; a warning for those never seen; Error(BadData)
@@ -506,7 +518,10 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
   t.jointsPx = personJoints(*t.layout, frames, walker, options.minConfidence);
   t.jointConfidence = personJointConfidence(*t.layout, frames, walker, options.minConfidence);
   t.feetPx = personFeet(*t.layout, frames, walker, options.minConfidence);
-  if (options.detectorOffsets) t.detectorOffsetMm = t.layout->detectorOffsetMm;
+  if (options.detectorOffsets) {
+    t.detectorOffsetMm = t.layout->detectorOffsetMm;
+    t.sternumFromShoulders = sternumIsTheShouldersMidpoint(*t.layout);
+  }
   for (auto& person : t.people) person.jointsPx = presentJoints(*t.layout, frames, person, options.minConfidence);
   checkSeenJoints(t, options);
   return t;

@@ -77,6 +77,11 @@ struct KeypointTrial {
   // Where the points sit relative to joint centres: the layout's detector offsets, or zero
   // (options.detectorOffsets false, or the tracker's own joints). Used by the camera fit.
   JointOffsetsMm detectorOffsetMm{};
+  // The layout's sternum is the midpoint of its shoulders (BODY_25's neck is OpenPose's, COCO has
+  // none): the camera fit compares it with the model's shoulders' midpoint, not its sternum,
+  // which sits 41 mm ahead of it and 66 mm above on the default model's mean walker
+  // (core/camera/detector_offsets.h). False with options.detectorOffsets off.
+  bool sternumFromShoulders = false;
   std::array<bool, kJointCount> missing{};  // never seen: for the model to estimate
   std::array<double, kJointCount> seenShare{};  // share of the clip's frames the joint has
   std::vector<std::string> warnings;

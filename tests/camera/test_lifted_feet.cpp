@@ -199,7 +199,7 @@ ClipReconstruction filmedAndReconstructed(const FilmedTrial& t, double alphaDeg,
   return reconstructKeypointTrial(defaultRealModel(), std::move(trial), {});
 }
 
-double rmse(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return std::sqrt((a - b).squaredNorm() / a.size()); }
+double rmse(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return std::sqrt((a - b).squaredNorm() / static_cast<double>(a.size())); }
 
 // The ankle curve of each side, averaged over its strides, against the motion capture's (both
 // from their own events): RMSE over the cycle, mean over the sides both have a stride of; NaN
