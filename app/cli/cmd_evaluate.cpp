@@ -312,7 +312,7 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "  camera_wide.csv    the camera experiment widened (issue 55; --experiment camera-wide only): the\n"
       "                     eigenwalker alone at 2 px, one factor changed at a time (clip length in strides,\n"
       "                     walker height in px, speed, layout, fps, elevation, image size known, where the\n"
-      "                     camera aims) and all at their hardest;\n"
+      "                     camera aims, focal length known) and all at their hardest;\n"
       "                     camera_wide_summary.csv per factor and level: refusals, MPJPE, elevation and\n"
       "                     distance errors (--factor narrows, --cameras per walker; docs/CAMERA.md)\n"
       "  snippet_engines.csv subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error,seconds: the snippet engine\n"
@@ -369,7 +369,7 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
                   "Experiment 'camera-wide': the factors to run beside the base (repeat or comma-separate; "
                   "default all)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "hardest"}));
+      ->check(CLI::IsMember({"length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "focal", "hardest"}));
   cmd->add_option("--method", args->method, "lsq, map or both")
       ->check(CLI::IsMember({"lsq", "map", "both"}))->capture_default_str();
   cmd->add_option("--sigma2", args->sigma2Mm2, "MAP noise variance in mm^2 (default: the sigma-sweep optimum)")

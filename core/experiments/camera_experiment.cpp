@@ -241,6 +241,10 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   CameraView view;
   view.keypoints = t;
   view.name = folder;
+  if (o.focalKnown) {
+    view.camera.focalPx = clip.camera.focalPx;
+    view.camera.focalSource = "given";
+  }
   const auto t0 = std::chrono::steady_clock::now();
   const ReconstructionResult r = reconstruct(EigenwalkerEngine{fold.model, {Estimator::Map, o.sigma2Mm2}, {}}, {std::move(view)});
   const CameraFit& fit = r.camera.eigenwalker->last.fit;
@@ -662,16 +666,25 @@ std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOpti
          o.maxLookAtHeightMm = 2000;
          o.clipStrides = 1.2;
        }},
+      {"focal", "known", [](CameraExperimentOptions& o) { o.focalKnown = true; }},
+      {"focal", "known, 1.2 strides", [](CameraExperimentOptions& o) {
+         o.focalKnown = true;
+         o.clipStrides = 1.2;
+       }},
       {"hardest", "1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17, 25 fps, 0-35 deg", hardest},
       {"hardest", "the same, image size known", [&](CameraExperimentOptions& o) {
          hardest(o);
          o.imageSizeKnown = true;
        }},
+      {"hardest", "the same, focal length known", [&](CameraExperimentOptions& o) {
+         hardest(o);
+         o.focalKnown = true;
+       }},
   };
   const auto firstWord = [](const std::string& f) { return f.substr(0, f.find(' ')); };
   for (const auto& f : factors) {
     const bool known = std::any_of(all.begin(), all.end(), [&](const auto& c) { return firstWord(std::get<0>(c)) == f; });
-    if (!known) badCameraOption("no factor '" + f + "' (length, height, speed, layout, fps, elevation, image, aim, hardest)");
+    if (!known) badCameraOption("no factor '" + f + "' (length, height, speed, layout, fps, elevation, image, aim, focal, hardest)");
   }
   std::vector<CameraWideCondition> out;
   for (const auto& [factor, level, change] : all) {

@@ -82,6 +82,9 @@ struct CameraExperimentOptions {
   // The reader told the image's size (as a video's is known): the fit then holds the principal
   // point near its centre (docs/CAMERA.md); false, bare keypoint files, the hardest case.
   bool imageSizeKnown = false;
+  // The fit given the camera's focal length (a calibration, a phone's metadata, `--focal-px`):
+  // the distance then rests on the walker's size instead of on the perspective.
+  bool focalKnown = false;
   // The height of the point the camera looks at (where the walker passes mid-clip), uniform
   // (mm); equal, no draw: the clip above, aimed at 1 m (about the walker's pelvis).
   double minLookAtHeightMm = 1000.0, maxLookAtHeightMm = 1000.0;
