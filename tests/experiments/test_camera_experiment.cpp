@@ -125,7 +125,7 @@ TEST(CameraExperiment, TheHardestWideClipsAreReconstructed) {
   base.sigma2Mm2 = 70.0;
   base.skeleton = base.snippet = false;
   const auto conditions = cameraWideConditions(base, {"hardest"});
-  ASSERT_EQ(conditions.size(), 3u);  // the base and the hardest, image unknown and known
+  ASSERT_EQ(conditions.size(), 4u);  // the base and the hardest: as it is, image known, focal known
   const CameraExperimentOptions& o = conditions[1].options;
   EXPECT_EQ(o.clipStrides, 1.2);
   EXPECT_EQ(o.walkerHeightPx, 120.0);
@@ -146,6 +146,12 @@ TEST(CameraExperiment, TheHardestWideClipsAreReconstructed) {
     EXPECT_LT(r.elevationErrorDeg, 6.0);
     EXPECT_LT(r.alphaErrorDeg, 12.0);
     EXPECT_LT(r.distanceRelError, 0.7);
+  }
+  // Given the focal length, the fit holds it: the distance then rests on the walker's size.
+  ASSERT_TRUE(conditions[3].options.focalKnown);
+  for (const auto& r : cameraErrors(walkers, folds, conditions[3].options)) {
+    ASSERT_EQ(r.error, "") << r.walker;
+    EXPECT_LT(r.focalRelError, 1e-9) << r.walker;
   }
   CameraWideRow one{"hardest", "x", rows[0]};
   const std::string csv = cameraWideCsv({one});
@@ -177,6 +183,11 @@ TEST(CameraExperiment, TheWideConditionsChangeOneFactorEach) {
   const auto layout = cameraWideConditions(base, {"layout"});
   ASSERT_EQ(layout.size(), 2u);
   EXPECT_EQ(layout[1].options.layout, ClipLayout::Coco17);
+  const auto focal = cameraWideConditions(base, {"focal"});
+  ASSERT_EQ(focal.size(), 3u);
+  EXPECT_TRUE(focal[1].options.focalKnown && focal[2].options.focalKnown);
+  EXPECT_EQ(focal[2].options.clipStrides, 1.2);
+  EXPECT_FALSE(all[0].options.focalKnown);
   EXPECT_TRUE(test::throwsError([&] { cameraWideConditions(base, {"lenght"}); }, ErrorKind::BadArgument,
                                 {"no factor 'lenght'", "length, height"}));
 }
