@@ -86,6 +86,8 @@ TEST_F(GuiDetect, DetectsTheSports2dWalkerAndFitsHerOverTheFootage) {
   EXPECT_LE(fit["stature_m"].get<double>(), 1.75);
   EXPECT_GE(fit["stride_hz"].get<double>(), 0.7);
   EXPECT_LE(fit["stride_hz"].get<double>(), 1.3);
+  // Her heels and foot indices, lifted into 3D and drawn with the walker.
+  EXPECT_GT(fit["feet"]["samples_lifted"].get<int>(), fit["feet"]["samples_seen"].get<int>() * 9 / 10) << fit["feet"];
   expectLayoutHolds(s, "demo.mp4 detected, 1600x900", {"input"});
   // The 2D view shows a frame of hers with the footage under the fit.
   EXPECT_GE(s["video"]["shown_frame"].get<int>(), 0);

@@ -188,6 +188,9 @@ nlohmann::json clipJson(const AppState& s) {
       {"speed_mps", f.speedMps},
       {"stride_hz", f.strideHz},
       {"stride_length_m", f.strideLengthM},
+      // The heels and toes lifted from the image, drawn with the 3D walker.
+      {"feet", {{"samples_seen", r.rec.feet.pointsSeen}, {"samples_lifted", r.rec.feet.pointsLifted},
+                {"note", r.rec.feet.note}}},
       {"seconds", r.seconds}};
   return j;
 }

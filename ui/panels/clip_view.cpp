@@ -111,6 +111,19 @@ std::vector<glm::vec3> viewRays(const ClipResult& clip, const ClipWorld& w) {
   return rays;
 }
 
+// The heels and toes lifted from the image (core/camera/lifted_feet.h) at a frame, where the
+// walker stands in the clip's world; none where a point was not lifted.
+FootPoints3 liftedFeetAt(const ClipReconstruction& rec, int frame, const glm::vec3& walkerOffset) {
+  FootPoints3 feet{};
+  const Eigen::MatrixXd& m = rec.feet.feetMm;
+  if (frame < 0 || frame >= m.rows()) return feet;
+  for (int p = 0; p < kFootPointCount; ++p) {
+    const Eigen::Vector3d v = m.row(frame).segment<3>(3 * p).transpose();
+    if (v.allFinite()) feet[static_cast<std::size_t>(p)] = glm::vec3(v.cast<float>().x(), v.cast<float>().y(), v.cast<float>().z()) + walkerOffset;
+  }
+  return feet;
+}
+
 }  // namespace
 
 std::vector<OtherPerson> otherPeopleAt(const KeypointTrial& trial, int frame) {
@@ -233,6 +246,7 @@ bool buildClipReconstructionScene(const AppState& s, Scene& scene, float lineSca
   } else {
     addFigure(scene, pose, reconstructionStyle(), std::span<const glm::vec4, kJointCount>(colours));
   }
+  if (!o.pointLights) addFeet(scene, pose, liftedFeetAt(rec, frame, w.walkerOffset), reconstructionStyle());
   // The walker's path over the clip, on the floor.
   const ClipWorld first = clipWorld(clip, 0), last = clipWorld(clip, rec.trial.frameCount - 1);
   scene.lines.push_back({glm::vec3(first.walkerOffset.x, first.walkerOffset.y, 3.0f), 2.0f * lineScale,

@@ -93,6 +93,23 @@ void addFigure(Scene& scene, const Pose3& pose, const FigureStyle& style,
   }
 }
 
+void addFeet(Scene& scene, const Pose3& pose, const FootPoints3& feet, const FigureStyle& style) {
+  auto& tubes = style.layer == FigureLayer::Ghost ? scene.ghostTubes : scene.tubes;
+  auto& spheres = style.layer == FigureLayer::Ghost ? scene.ghostSpheres : scene.spheres;
+  const float radius = 0.7f * style.boneRadiusMm;
+  for (const bool right : {true, false}) {
+    const auto& heel = feet[right ? 0 : 2];
+    const auto& toe = feet[right ? 1 : 3];
+    const glm::vec3 ankle = pose[static_cast<std::size_t>(index(right ? Joint::RAnkle : Joint::LAnkle))];
+    const glm::vec4 colour = right ? style.right : style.left;
+    if (heel) tubes.push_back({ankle, radius, *heel, 0.0f, colour});
+    if (toe) tubes.push_back({ankle, radius, *toe, 0.0f, colour});
+    if (heel && toe) tubes.push_back({*heel, radius, *toe, 0.0f, colour});
+    for (const auto& p : {heel, toe})
+      if (p) spheres.push_back({*p, radius * 1.3f, colour});
+  }
+}
+
 void addPointLights(Scene& scene, const Pose2& pose, float pointRadiusMm, bool bones,
                     float boneWidthPx) {
   if (bones) {

@@ -29,6 +29,11 @@ FigureStyle ghostStyle();
 void addFigure(Scene& scene, const Pose3& pose, const FigureStyle& style,
                std::optional<std::span<const glm::vec4, kJointCount>> jointColours = std::nullopt);
 
+// A foot's heel and toe beside a pose (FootPoint order; nullopt where unknown): ankle → heel →
+// toe → ankle, a little thinner than the bones, in the side's colour.
+using FootPoints3 = std::array<std::optional<glm::vec3>, 4>;
+void addFeet(Scene& scene, const Pose3& pose, const FootPoints3& feet, const FigureStyle& style);
+
 // A 2D pose (u, v in mm) drawn in the image plane (z = 0): point-lights and, optionally,
 // thin bones. pointRadiusMm is the glow's radius.
 void addPointLights(Scene& scene, const Pose2& pose, float pointRadiusMm, bool bones,
