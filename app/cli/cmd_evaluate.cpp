@@ -363,8 +363,9 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
                   "Experiments 'engines' and 'camera-wide': random cameras per held-out walker (default 3)")
       ->check(CLI::Range(1, 100));
   cmd->add_option("--keep-clips", args->keepClips,
-                  "Experiments 'camera' and 'engines': keep each clip's keypoint file(s) in this folder, as "
-                  "SUBJECT_cameraK_Npx/ (open one with the viewer or reconstruct --unknown-camera)");
+                  "Experiments 'camera', 'engines' and 'camera-wide' (a folder per level): keep each clip's keypoint "
+                  "file(s) in this folder, as SUBJECT_cameraK_Npx/ (open one with the viewer or reconstruct "
+                  "--unknown-camera)");
   cmd->add_option("--factor", args->factors,
                   "Experiment 'camera-wide': the factors to run beside the base (repeat or comma-separate; "
                   "default all)")

@@ -379,6 +379,48 @@ VectorXd imageHeightsPx(const MatrixXd& px) {
   return h;
 }
 
+// How the walker's image grows or shrinks and moves along the clip. A pinhole images a walker
+// at depth Z(t) at a size ∝ 1/Z(t), and a straight walk at a steady speed has Z linear in t: a
+// line through the inverse heights, and the pelvis at (a + b t) / Z(t) — a walker leaving the
+// camera from a metre to ten shrinks tenfold, which a line through the heights cannot follow
+// (it crossed zero, and the start's walk was noise). Where that line would not stay positive
+// over the clip (heights too noisy to tell), the heights and the pelvis get straight lines.
+struct ImageTrend {
+  Eigen::Vector2d depth{0.0, 0.0};  // 1 / height px, as p0 + p1 t; zero: the linear fallback
+  Eigen::Vector2d height{0.0, 0.0}, pelvisU{0.0, 0.0}, pelvisV{0.0, 0.0};  // numerators, or lines
+
+  bool perspective() const { return depth[0] != 0.0 || depth[1] != 0.0; }
+  double heightPxAt(double t) const {
+    return perspective() ? 1.0 / (depth[0] + depth[1] * t) : std::max(height[0] + height[1] * t, 1e-6);
+  }
+  Eigen::Vector2d pelvisPxAt(double t) const {
+    const double d = perspective() ? depth[0] + depth[1] * t : 1.0;
+    return {(pelvisU[0] + pelvisU[1] * t) / d, (pelvisV[0] + pelvisV[1] * t) / d};
+  }
+};
+
+ImageTrend imageTrendOf(const MatrixXd& px, const VectorXd& times) {
+  ImageTrend trend;
+  const VectorXd heights = imageHeightsPx(px);
+  const VectorXd inverse = heights.unaryExpr([](double h) { return h > 0.0 ? 1.0 / h : kNaN; });
+  const Eigen::Vector2d depth = lineFit(inverse, times);
+  const double first = depth[0] + depth[1] * times[0], last = depth[0] + depth[1] * times[times.size() - 1];
+  VectorXd u = px.col(2 * index(Joint::Pelvis)), v = px.col(2 * index(Joint::Pelvis) + 1);
+  if (depth.allFinite() && first > 0.0 && last > 0.0) {
+    trend.depth = depth;
+    for (Eigen::Index f = 0; f < u.size(); ++f) {
+      const double d = depth[0] + depth[1] * times[f];
+      u[f] *= d;
+      v[f] *= d;
+    }
+  } else {
+    trend.height = lineFit(heights, times);
+  }
+  trend.pelvisU = lineFit(u, times);
+  trend.pelvisV = lineFit(v, times);
+  return trend;
+}
+
 struct OrthoStart {
   FourierFit fit;
   ModelGram gram;                    // the model with the unseen joints dropped
@@ -390,22 +432,23 @@ struct OrthoStart {
 OrthoStart orthographicStart(const EigenwalkerModel& model, const MatrixXd& px, const VectorXd& times,
                              const JointMask& unseen, const CameraFitOptions& o) {
   OrthoStart s;
-  // The walker's image size along the clip (a line through the per-frame heights: a walker
-  // coming closer grows), and its progression (a line through the pelvis) are taken out,
-  // leaving a near-orthographic view of the walk in model millimetres.
+  // The walker's image size along the clip and its progression (the pelvis's track) are taken
+  // out, leaving a near-orthographic view of the walk in model millimetres.
   const double modelHeight = walkerHeadHeightMm(model.mean);
-  const Eigen::Vector2d height = lineFit(imageHeightsPx(px), times);
+  const ImageTrend trend = imageTrendOf(px, times);
   const double midT = 0.5 * (times[0] + times[times.size() - 1]);
-  s.pxPerMm = (height[0] + height[1] * midT) / modelHeight;
-  if (!(s.pxPerMm > 0)) badData(o.file, "the walker's head-to-ankle height in the image cannot be measured");
+  s.pxPerMm = trend.heightPxAt(midT) / modelHeight;
+  if (!(s.pxPerMm > 0) || !std::isfinite(s.pxPerMm))
+    badData(o.file, "the walker's head-to-ankle height in the image cannot be measured");
   s.pelvisU = lineFit(px.col(2 * index(Joint::Pelvis)), times);
   s.pelvisV = lineFit(px.col(2 * index(Joint::Pelvis) + 1), times);
   MatrixXd mm(px.rows(), px.cols());
   for (Eigen::Index f = 0; f < px.rows(); ++f) {
-    const double scale = std::max(height[0] + height[1] * times[f], 1e-6) / modelHeight;
+    const double scale = trend.heightPxAt(times[f]) / modelHeight;
+    const Eigen::Vector2d pelvis = trend.pelvisPxAt(times[f]);
     for (int j = 0; j < kJointCount; ++j) {
-      mm(f, 2 * j) = (px(f, 2 * j) - s.pelvisU[0] - s.pelvisU[1] * times[f]) / scale;
-      mm(f, 2 * j + 1) = -(px(f, 2 * j + 1) - s.pelvisV[0] - s.pelvisV[1] * times[f]) / scale;
+      mm(f, 2 * j) = (px(f, 2 * j) - pelvis.x()) / scale;
+      mm(f, 2 * j + 1) = -(px(f, 2 * j + 1) - pelvis.y()) / scale;
     }
   }
   // Every sample filled for the start's Fourier fit (it drops any frame with a gap).

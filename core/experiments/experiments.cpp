@@ -1,6 +1,7 @@
 #include "core/experiments/experiments.h"
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -449,6 +450,18 @@ std::vector<ViewErrorRow> missingJointErrors(const std::vector<ExperimentWalker>
 
 namespace {
 
+// A factor's level as a folder name: letters and digits kept, runs of anything else one '_'.
+std::string folderNameOf(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    const bool keep = std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-';
+    if (keep) out += c;
+    else if (!out.empty() && out.back() != '_') out += '_';
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  return out;
+}
+
 // The eigenwalker folds: every experiment but the variance table and the snippet ones
 // (which build their own folds from the dataset's trials).
 bool needsFolds(const std::set<Experiment>& e) {
@@ -554,7 +567,11 @@ EvaluationResults runEvaluation(const std::vector<ExperimentWalker>& walkers,
     base.skeleton = base.snippet = false;
     base.noisePx = {2.0};
     if (options.cameraWideCameras) base.camerasPerWalker = *options.cameraWideCameras;
-    res.cameraWide = cameraWideErrors(walkers, folds, cameraWideConditions(base, options.cameraWideFactors));
+    auto conditions = cameraWideConditions(base, options.cameraWideFactors);
+    // Each level's clips in a folder of its own (the levels reuse the walkers and cameras).
+    if (options.keepClipsDir)
+      for (auto& c : conditions) c.options.keepClipsDir = *options.keepClipsDir / folderNameOf(c.factor + " " + c.level);
+    res.cameraWide = cameraWideErrors(walkers, folds, conditions);
   });
   return res;
 }
