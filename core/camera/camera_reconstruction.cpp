@@ -19,6 +19,7 @@
 #include "core/eigenwalker/projection.h"
 #include "core/gait/gaps.h"
 #include "core/gait/missing_joints.h"
+#include "core/keypoints/image_gait.h"
 
 namespace ew {
 namespace {
@@ -367,17 +368,6 @@ double walkerHeadHeightMm(const VectorXd& w) {
 namespace {
 
 // Head-to-ankle height of the walker in each frame of the image (NaN where unseen).
-VectorXd imageHeightsPx(const MatrixXd& px) {
-  VectorXd h(px.rows());
-  for (Eigen::Index f = 0; f < px.rows(); ++f) {
-    const double ankles = 0.5 * (px(f, 2 * index(Joint::LAnkle) + 1) + px(f, 2 * index(Joint::RAnkle) + 1));
-    const double head = px(f, 2 * index(Joint::Head) + 1), sternum = px(f, 2 * index(Joint::Sternum) + 1);
-    // No head in the image: the sternum, raised by the model's usual head-to-sternum ratio.
-    const double top = std::isfinite(head) ? head : sternum - 0.17 * (ankles - sternum);
-    h[f] = ankles - top;
-  }
-  return h;
-}
 
 // How the walker's image grows or shrinks and moves along the clip. A pinhole images a walker
 // at depth Z(t) at a size ∝ 1/Z(t), and a straight walk at a steady speed has Z linear in t: a
@@ -401,20 +391,16 @@ struct ImageTrend {
 
 ImageTrend imageTrendOf(const MatrixXd& px, const VectorXd& times) {
   ImageTrend trend;
-  const VectorXd heights = imageHeightsPx(px);
-  const VectorXd inverse = heights.unaryExpr([](double h) { return h > 0.0 ? 1.0 / h : kNaN; });
-  const Eigen::Vector2d depth = lineFit(inverse, times);
-  const double first = depth[0] + depth[1] * times[0], last = depth[0] + depth[1] * times[times.size() - 1];
   VectorXd u = px.col(2 * index(Joint::Pelvis)), v = px.col(2 * index(Joint::Pelvis) + 1);
-  if (depth.allFinite() && first > 0.0 && last > 0.0) {
-    trend.depth = depth;
+  if (const std::optional<Eigen::Vector2d> depth = imageDepthLine(px, times)) {
+    trend.depth = *depth;
     for (Eigen::Index f = 0; f < u.size(); ++f) {
-      const double d = depth[0] + depth[1] * times[f];
+      const double d = trend.depth[0] + trend.depth[1] * times[f];
       u[f] *= d;
       v[f] *= d;
     }
   } else {
-    trend.height = lineFit(heights, times);
+    trend.height = lineFit(imageHeightsPx(px), times);
   }
   trend.pelvisU = lineFit(u, times);
   trend.pelvisV = lineFit(v, times);

@@ -333,6 +333,36 @@ std::optional<double> ankleLeadsStrideHz(const Eigen::VectorXd& rightMinusLeft, 
 
 }  // namespace
 
+Eigen::VectorXd imageHeightsPx(const Eigen::MatrixXd& px) {
+  Eigen::VectorXd h(px.rows());
+  for (Eigen::Index f = 0; f < px.rows(); ++f) {
+    const double ankles = 0.5 * (px(f, 2 * index(Joint::LAnkle) + 1) + px(f, 2 * index(Joint::RAnkle) + 1));
+    const double head = px(f, 2 * index(Joint::Head) + 1), sternum = px(f, 2 * index(Joint::Sternum) + 1);
+    const double top = std::isfinite(head) ? head : sternum - 0.17 * (ankles - sternum);
+    h[f] = ankles - top;
+  }
+  return h;
+}
+
+std::optional<Eigen::Vector2d> imageDepthLine(const Eigen::MatrixXd& px, const Eigen::VectorXd& times) {
+  const Eigen::VectorXd heights = imageHeightsPx(px);
+  Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();
+  int n = 0;
+  for (Eigen::Index f = 0; f < heights.size(); ++f) {
+    if (!(heights[f] > 0.0) || !std::isfinite(heights[f])) continue;
+    const Eigen::Vector2d row(1.0, times[f]);
+    a += row * row.transpose();
+    b += row / heights[f];
+    ++n;
+  }
+  if (n < 8) return std::nullopt;
+  const Eigen::Vector2d line = a.ldlt().solve(b);
+  const double first = line[0] + line[1] * times[0], last = line[0] + line[1] * times[times.size() - 1];
+  if (!line.allFinite() || !(first > 0.0) || !(last > 0.0)) return std::nullopt;
+  return line;
+}
+
 std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minShare) {
   std::vector<BobSamples> paths;
   double variance = 0.0;

@@ -73,4 +73,16 @@ ImageGait imageGaitCycles(const KeypointTrial& trial,
 // where the feet are lost (docs/TRACKING_DESIGN.md, "The model loop").
 std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minShare = 0.3);
 
+// The walker's head-to-ankles height in each frame (px; the head stood in for by the sternum
+// raised by the model's usual ratio where unseen), NaN where unknown. jointsPx: T × 30.
+Eigen::VectorXd imageHeightsPx(const Eigen::MatrixXd& jointsPx);
+
+// The walker's depth along the clip, up to scale: a pinhole images a walker at depth Z(t) at a
+// height ∝ 1/Z(t), and a straight walk at a steady speed has Z linear in t, so the line
+// p0 + p1 t through the inverse heights (1/px) is Z(t) / (f · the walker's height). nullopt with
+// fewer than 8 heights or a line that does not stay positive over the clip (heights too noisy
+// to tell). A walker leaving the camera from a metre to ten shrinks tenfold: a line through
+// the heights themselves crosses zero there.
+std::optional<Eigen::Vector2d> imageDepthLine(const Eigen::MatrixXd& jointsPx, const Eigen::VectorXd& timesS);
+
 }  // namespace ew
