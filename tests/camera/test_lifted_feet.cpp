@@ -21,6 +21,7 @@
 #include "core/gait/gait_measures.h"
 #include "core/gait/joint_angles.h"
 #include "core/gait/prepare.h"
+#include "tests/camera/filmed_walk.h"
 #include "tests/common/test_support.h"
 
 namespace ew {
@@ -28,18 +29,12 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// The camera tests' crossing pinhole (6 m to the look-at point, focal 1400 px, the walker at
+// 1.3 m/s passing it at 1 s) at another azimuth and elevation.
 WalkCamera pinholeAt(double alphaDeg, double elevationDeg = 8.0) {
-  WalkCamera c;
-  c.model = CameraModel::Pinhole;
+  WalkCamera c = test::crossingPinhole(1400, 2.0);
   c.alphaDeg = alphaDeg;
   c.elevationDeg = elevationDeg;
-  c.focalPx = 1400;
-  c.distanceMm = 6000;
-  c.cxPx = 960;
-  c.cyPx = 540;
-  c.lookAtHeightMm = 900;
-  c.speedMmS = 1300;
-  c.startOffsetMm = -1300;
   return c;
 }
 
