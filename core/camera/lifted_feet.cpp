@@ -96,7 +96,8 @@ LiftedFeet liftFeetOntoSagittalPlanes(const Eigen::MatrixXd& feetPx, const Eigen
       const Eigen::Vector3d origin = originAt(camera, timesS[t]);
       const double s = (ankle.x() + origin.x() - ray.origin.x()) / ray.direction.x();
       const Eigen::Vector3d point = ray.origin + s * ray.direction - origin;
-      if ((point - ankle).norm() > kMaxFootPointFromAnkleMm) {
+      // A point not finite (a pixel far outside any picture) is no nearer its ankle than that.
+      if (!point.allFinite() || !((point - ankle).norm() <= kMaxFootPointFromAnkleMm)) {
         ++out.pointsFarFromAnkle;
         continue;
       }

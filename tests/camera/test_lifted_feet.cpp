@@ -121,10 +121,13 @@ TEST(LiftedFeet, EndOnViewsGlitchesAndFeetlessLayoutsLiftNothingAndSaySo) {
   Eigen::MatrixXd px = projectFootPoints(w.feetMm, w.timesS, side);
   px(10, 2 * index(FootPoint::LToe)) += 400.0;  // a bystander's toe, 400 px away: metres in 3D
   px.row(11).setConstant(kNaN);                  // a frame with no feet
+  px(12, 2 * index(FootPoint::RHeel)) = 1e300;   // a hostile file's pixel
   const LiftedFeet lifted = liftFeetOntoSagittalPlanes(px, w.framesMm, w.timesS, side);
   EXPECT_EQ(lifted.pointsFarFromAnkle, 1);
   EXPECT_EQ(lifted.pointsSeen, 4 * 60 - 4);
-  EXPECT_EQ(lifted.pointsLifted, lifted.pointsSeen - 1);
+  EXPECT_EQ(lifted.pointsLifted, lifted.pointsSeen - 2);  // the hostile pixel's ray is end-on
+  EXPECT_TRUE(std::isnan(lifted.feetMm(12, 3 * index(FootPoint::RHeel))));
+  EXPECT_FALSE(lifted.feetMm.array().isInf().any());
   EXPECT_TRUE(std::isnan(lifted.feetMm(10, 3 * index(FootPoint::LToe))));
   EXPECT_TRUE(lifted.feetMm.row(11).array().isNaN().all());
   const LiftedFeet none = liftFeetOntoSagittalPlanes(Eigen::MatrixXd(), w.framesMm, w.timesS, side);
