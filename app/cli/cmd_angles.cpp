@@ -2,6 +2,7 @@
 // (core/gait/joint_angles.h) over all its frames, in the file's own axes — walking or not,
 // so a reconstruction's CSV, a balancing trial's TRC and a mocap walk alike.
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include "core/common/errors.h"
@@ -36,8 +37,13 @@ int runAngles(const AnglesArgs& args) {
   if (!(up.norm() > 0.0))
     throw Error(ErrorKind::BadData, args.file, "", "no frame has the head and both ankles: the up direction is unknown");
   // The ankle and the foot progression where the trial has heel and toe points.
-  const JointAngles angles = trial.hasFeet() ? jointAnglesWithFeet(trial.positionsMm, trial.feetMm, up, args.file)
-                                             : jointAngles(trial.positionsMm, up, args.file);
+  JointAngles angles = trial.hasFeet() ? jointAnglesWithFeet(trial.positionsMm, trial.feetMm, up, args.file)
+                                       : jointAngles(trial.positionsMm, up, args.file);
+  // Feet lifted from one view lie in their ankles' sagittal planes: no foot progression.
+  if (trial.feetInSagittalPlanes)
+    for (std::size_t k = 0; k < angles.names.size(); ++k)
+      if (angles.names[k].starts_with("foot_progression"))
+        angles.degrees.col(static_cast<Eigen::Index>(k)).setConstant(std::numeric_limits<double>::quiet_NaN());
   std::vector<std::string> empty;
   for (Eigen::Index k = 0; k < angles.degrees.cols(); ++k)
     if (!angles.degrees.col(k).array().isFinite().any()) empty.push_back(angles.names[static_cast<size_t>(k)]);

@@ -72,9 +72,9 @@ void addCurvesOf(const WalkingTrial& t, MeasuredTrial& out) {
   out.footProgression = footProgressionDeg(angles.degrees, angles.names, rateHz, out.measures);
 }
 
-// The feet a reconstruction has were lifted from one view onto their ankles' sagittal planes
-// (core/camera/lifted_feet.h): their events and ankle angle hold, their turn out of the plane
-// is not in them.
+// Feet lifted from one view onto their ankles' sagittal planes (a camera reconstruction's:
+// core/camera/lifted_feet.h, JointTrial::feetInSagittalPlanes): their events and ankle angle
+// hold, their turn out of the plane is not in them.
 void withoutFootProgression(MeasuredTrial& m) {
   m.footProgression = {};
   m.measures.notes.push_back("feet from the image, lifted onto the ankles' sagittal planes: no foot progression");
@@ -136,7 +136,7 @@ std::vector<MeasuredTrial> measureFile(const TrialFile& f, const GaitArgs& args,
   for (const auto& events : eventSetsFor(t, reconstructed ? "kinematics" : args.events)) {
     MeasuredTrial m{f.path.string(), f.info.subject, measuredWalk(t, events, f.path.string(), reconstructed), {}, {}};
     addCurvesOf(t, m);
-    if (reconstructed && t.joints.hasFeet()) withoutFootProgression(m);
+    if (t.joints.feetInSagittalPlanes) withoutFootProgression(m);
     out.push_back(std::move(m));
   }
   return out;

@@ -66,7 +66,8 @@ int runJoints(const JointsArgs& args) {
   const WalkingTrial out = completeFromModel(trial, args, comments);
   for (const auto& w : out.joints.warnings)
     std::cerr << "warning: " << args.file << ": " << w << "\n";
-  writeJointTrajectories(args.out, out.joints.positionsMm, out.joints.rateHz, comments, out.joints.feetMm);
+  writeJointTrajectories(args.out, out.joints.positionsMm, out.joints.rateHz, comments, out.joints.feetMm,
+                         out.joints.feetInSagittalPlanes);
   std::cerr << "wrote " << args.out << ": " << out.joints.frameCount() << " frames at "
             << out.joints.rateHz << " Hz\n";
   return 0;

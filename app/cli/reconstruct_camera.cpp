@@ -235,9 +235,9 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
     const Eigen::Index n = last - first + 1;
     notes.push_back("frames " + std::to_string(first) + "-" + std::to_string(last) + " of the clip: where the walker is seen");
     const Eigen::MatrixXd feet = clip.feet.feetMm.size() ? Eigen::MatrixXd(clip.feet.feetMm.middleRows(first, n)) : Eigen::MatrixXd();
-    writeJointTrajectories(a.out, frames.middleRows(first, n), t.rateHz, notes, feet);
+    writeJointTrajectories(a.out, frames.middleRows(first, n), t.rateHz, notes, feet, true);
   } else {
-    writeJointTrajectories(a.out, frames, t.rateHz, notes, clip.feet.feetMm);
+    writeJointTrajectories(a.out, frames, t.rateHz, notes, clip.feet.feetMm, true);
   }
   json report = reportJson(a, camera, t, fit);
   if (t.sternumFromShoulders) {  // allowed for by the fit (core/camera/detector_offsets.h)

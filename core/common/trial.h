@@ -48,6 +48,8 @@ struct RawTrial {
   long firstFrame = 1;          // the file's number for row 0 (C3D first_frame, TRC Frame#)
   std::string units;            // the unit the file states (or assumed), e.g. "mm", "m"
   std::vector<std::string> labels;  // one per point, trimmed
+  // One per point where the file describes its points (a C3D's POINT:DESCRIPTIONS), else empty.
+  std::vector<std::string> descriptions;
   Eigen::MatrixXd positionsMm;      // frames x 3*labels, file axes, millimetres, NaN = missing
   std::optional<SignedAxis> upAxis; // vertical axis if the format or file states it
   std::vector<GaitEvent> events;
@@ -72,6 +74,11 @@ inline constexpr std::array<std::string_view, kFootPointCount> kFootPointNames =
 constexpr int index(FootPoint p) { return static_cast<int>(p); }
 inline FootPoint heelOf(Side side) { return side == Side::Left ? FootPoint::LHeel : FootPoint::RHeel; }
 inline FootPoint toeOf(Side side) { return side == Side::Left ? FootPoint::LToe : FootPoint::RToe; }
+// How our C3D describes feet lifted from one view onto the ankles' sagittal planes
+// (core/camera/lifted_feet.h): their heel strikes, toe offs and ankle angle hold, their turn out
+// of the plane is not in them, so no foot progression is read from them.
+inline constexpr std::string_view kSagittalFootDescription =
+    "lifted from one view onto the ankle's sagittal plane: no foot progression";
 
 struct JointTrial {
   std::string file;
@@ -92,6 +99,9 @@ struct JointTrial {
   // units as positionsMm: frames x 12, or empty (0 x 0) when the input has no foot point. A
   // point the input lacks, or lacks in a frame, is NaN there (a foot may have a toe and no heel).
   Eigen::MatrixXd feetMm;
+  // The feet were lifted from one view onto the ankles' sagittal planes (kSagittalFootDescription):
+  // no foot progression angle is measured from them.
+  bool feetInSagittalPlanes = false;
 
   int frameCount() const { return static_cast<int>(positionsMm.rows()); }
   bool hasFeet() const { return feetMm.cols() == kFootDims3 && feetMm.rows() == positionsMm.rows(); }

@@ -756,6 +756,8 @@ RawTrial parseC3d(std::span<const std::uint8_t> bytes, const std::string& name,
   if (options.rateHzOverride) trial.rateHz = checkedRateOverrideHz(*options.rateHzOverride, name);
   trial.firstFrame = layout.firstFrame;
   trial.labels = pointLabels(b, params, layout.points, trial.warnings);
+  trial.descriptions = optionalStrings(b, params, "POINT:DESCRIPTIONS");
+  for (auto& d : trial.descriptions) d = printable(d);
   // Our own 15 joints (core/io/c3d_writer.h writes them so, the feet's points after them when
   // known), as the TRC reader takes them.
   if (trial.labels.size() >= kJointNames.size() &&

@@ -535,7 +535,7 @@ void writeWalkerWithFeetC3d(const std::filesystem::path& file,
                             const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
                             const Eigen::MatrixXd& feetX12, double rateHz,
                             const std::vector<std::string>& notes,
-                            const std::vector<C3dPointTrajectory>& extraPoints) {
+                            const std::vector<C3dPointTrajectory>& extraPoints, bool feetInSagittalPlanes) {
   if (framesX45.cols() != kDims3)
     refuse(file, "", "expected 45 columns, got " + std::to_string(framesX45.cols()));
   const bool feet = feetX12.rows() == framesX45.rows() && feetX12.cols() == kFootDims3;
@@ -543,7 +543,8 @@ void writeWalkerWithFeetC3d(const std::filesystem::path& file,
   c.rateHz = rateHz;
   c.points = jointPointTrajectories(framesX45, "eigenwalker joint centre");
   if (feet) {
-    const auto feetPoints = footPointTrajectories(feetX12, "the input's heel or toe point");
+    const auto feetPoints = footPointTrajectories(
+        feetX12, feetInSagittalPlanes ? std::string(kSagittalFootDescription) : std::string("the input's heel or toe point"));
     c.points.insert(c.points.end(), feetPoints.begin(), feetPoints.end());
   }
   c.points.insert(c.points.end(), extraPoints.begin(), extraPoints.end());

@@ -102,10 +102,14 @@ std::vector<C3dPointTrajectory> footPointTrajectories(const Eigen::MatrixXd& fee
 // another shape: none): their points after the 15 joints, and the gait events from the heel and
 // the toe (gaitEventsFromFeet) where they are seen throughout. The program's C3D reader reads
 // such a file back to the same joints, feet and events.
+// feetInSagittalPlanes: the feet were lifted from one view (core/camera/lifted_feet.h); their
+// points are described as kSagittalFootDescription (core/common/trial.h), which our reader
+// takes back as JointTrial::feetInSagittalPlanes.
 void writeWalkerWithFeetC3d(const std::filesystem::path& file,
                             const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
                             const Eigen::MatrixXd& feetX12, double rateHz,
                             const std::vector<std::string>& notes = {},
-                            const std::vector<C3dPointTrajectory>& extraPoints = {});
+                            const std::vector<C3dPointTrajectory>& extraPoints = {},
+                            bool feetInSagittalPlanes = false);
 
 }  // namespace ew

@@ -63,13 +63,14 @@ void writeTrc(const std::filesystem::path& file, const Eigen::Ref<const Eigen::M
 }
 
 void writeJointTrajectories(const std::filesystem::path& file, const Eigen::MatrixXd& framesMm, double rateHz,
-                            const std::vector<std::string>& commentLines, const Eigen::MatrixXd& feetMm) {
+                            const std::vector<std::string>& commentLines, const Eigen::MatrixXd& feetMm,
+                            bool feetInSagittalPlanes) {
   std::string extension = file.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (extension == ".trc") {
     writeTrc(file, framesMm, rateHz, "mm");
   } else if (extension == ".c3d") {
-    writeWalkerWithFeetC3d(file, framesMm, feetMm, rateHz, commentLines);
+    writeWalkerWithFeetC3d(file, framesMm, feetMm, rateHz, commentLines, {}, feetInSagittalPlanes);
   } else {
     writeJointCsv(file, framesMm, rateHz, commentLines);
   }

@@ -34,8 +34,9 @@ Eigen::Vector3d openSimToCanonical(const Eigen::Vector3d& p);
 // has them, the gait events of its own kinematics, the comment lines as MANUFACTURER:NOTES) or
 // anything else as the project's joint CSV (core/io/joint_csv.h, with its comment lines; a TRC
 // has no place for them). feetMm (JointTrial::feetMm) goes to the C3D only.
+// feetInSagittalPlanes: JointTrial::feetInSagittalPlanes, kept in the C3D's point descriptions.
 void writeJointTrajectories(const std::filesystem::path& file, const Eigen::MatrixXd& framesMm,
                             double rateHz, const std::vector<std::string>& commentLines = {},
-                            const Eigen::MatrixXd& feetMm = Eigen::MatrixXd());
+                            const Eigen::MatrixXd& feetMm = Eigen::MatrixXd(), bool feetInSagittalPlanes = false);
 
 }  // namespace ew

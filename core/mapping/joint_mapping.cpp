@@ -37,6 +37,8 @@ void feetAfterTheJoints(const RawTrial& raw, JointTrial& out) {
     if (name == kFootPointNames.end()) continue;
     if (!out.hasFeet()) out.feetMm.setConstant(raw.frameCount(), kFootDims3, std::numeric_limits<double>::quiet_NaN());
     out.feetMm.middleCols(3 * (name - kFootPointNames.begin()), 3) = raw.positionsMm.middleCols(3 * k, 3);
+    const auto kk = static_cast<std::size_t>(k);
+    if (kk < raw.descriptions.size() && raw.descriptions[kk] == kSagittalFootDescription) out.feetInSagittalPlanes = true;
   }
 }
 

@@ -80,6 +80,9 @@ TEST(ReconstructCameraCli, AC3dOutputCarriesTheLiftedFeet) {
   ASSERT_EQ(gait.exitCode, 0) << gait.output;
   const json g = json::parse(gait.output.substr(gait.output.find('[')))[0];
   EXPECT_EQ(g["events"], "kinematics (heel and toe)");
+  // Lifted onto the ankles' sagittal planes, the feet give no foot progression, and say why.
+  EXPECT_EQ(g["foot_progression_r_deg"], "nan");
+  EXPECT_NE(g["notes"].get<std::string>().find("no foot progression"), std::string::npos) << g["notes"];
   EXPECT_NEAR(std::stod(g["cadence_spm"].get<std::string>()), 120.0 * test::kFilmedStrideHz, 3.0);
 }
 

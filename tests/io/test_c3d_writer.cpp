@@ -316,6 +316,13 @@ TEST(C3dWriter, AWalkersFeetAreWrittenAndReadBack) {
     for (std::size_t i = 0; i < want.of(side).offsS.size(); ++i)
       EXPECT_NEAR(got.of(side).offsS[i], want.of(side).offsS[i], 0.005);
   }
+  EXPECT_FALSE(back.feetInSagittalPlanes);
+  // Feet lifted from one view say so in their descriptions, and read back so.
+  writeWalkerWithFeetC3d(dir / "lifted.c3d", frames, feet, 100.0, {}, {}, true);
+  const RawTrial lifted = readC3d(dir / "lifted.c3d");
+  ASSERT_EQ(lifted.descriptions.size(), static_cast<std::size_t>(kJointCount + 3));
+  EXPECT_EQ(lifted.descriptions[kJointCount], kSagittalFootDescription);
+  EXPECT_TRUE(toJointTrial(lifted).feetInSagittalPlanes);
   // Without feet the file is writeWalkerC3d's, byte for byte.
   writeWalkerWithFeetC3d(dir / "none.c3d", frames, Eigen::MatrixXd(), 100.0);
   writeWalkerC3d(dir / "plain.c3d", frames, 100.0);
