@@ -202,13 +202,6 @@ std::pair<Eigen::Index, Eigen::Index> seenSpan(const Eigen::MatrixXd& jointsPx) 
   return {first, last};
 }
 
-// Only a C3D has a place for the feet beside the 15 joints (core/io/trc_writer.h).
-bool writesFeet(const std::string& out) {
-  std::string extension = std::filesystem::path(out).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".c3d";
-}
-
 // The eigenwalker through the camera (reconstruct(engine, request), core/engines/request.h),
 // written and reported.
 int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
@@ -230,15 +223,12 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
        << a.modelName;
   std::vector<std::string> notes = {what.str()};
   if (clip.feet.pointsSeen > 0) notes.push_back("feet: " + clip.feet.note);
-  if (a.seenFramesOnly) {
-    const auto [first, last] = seenSpan(t.jointsPx);
-    const Eigen::Index n = last - first + 1;
+  const auto [first, last] = a.seenFramesOnly ? seenSpan(t.jointsPx) : std::pair<Eigen::Index, Eigen::Index>{0, frames.rows() - 1};
+  const Eigen::Index n = last - first + 1;
+  if (a.seenFramesOnly)
     notes.push_back("frames " + std::to_string(first) + "-" + std::to_string(last) + " of the clip: where the walker is seen");
-    const Eigen::MatrixXd feet = clip.feet.feetMm.size() ? Eigen::MatrixXd(clip.feet.feetMm.middleRows(first, n)) : Eigen::MatrixXd();
-    writeJointTrajectories(a.out, frames.middleRows(first, n), t.rateHz, notes, feet, true);
-  } else {
-    writeJointTrajectories(a.out, frames, t.rateHz, notes, clip.feet.feetMm, true);
-  }
+  const Eigen::MatrixXd feet = clip.feet.feetMm.size() ? Eigen::MatrixXd(clip.feet.feetMm.middleRows(first, n)) : Eigen::MatrixXd();
+  writeJointTrajectories(a.out, frames.middleRows(first, n), t.rateHz, notes, feet, true);
   json report = reportJson(a, camera, t, fit);
   if (t.sternumFromShoulders) {  // allowed for by the fit (core/camera/detector_offsets.h)
     const Eigen::Vector3d sternum = sternumAsShouldersMidpointOffsetMm(model);
@@ -246,7 +236,7 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
   }
   report["feet"] = {{"samples_seen", clip.feet.pointsSeen},
                     {"samples_lifted", clip.feet.pointsLifted},
-                    {"written", clip.feet.pointsLifted > 0 && writesFeet(a.out)},
+                    {"written", clip.feet.pointsLifted > 0 && writesC3d(a.out)},
                     {"note", clip.feet.note}};
   json residuals = json::object();
   for (int j = 0; j < kJointCount; ++j)

@@ -284,21 +284,6 @@ LmResult levenbergMarquardt(const Problem& p, VectorXd t, int maxIterations) {
   return {t, cost, it};
 }
 
-// [SECTION] Start: the orthographic view-angle search --------------------------------------------
-
-// Least-squares line a + b t through the finite samples of x.
-Eigen::Vector2d lineFit(const VectorXd& x, const VectorXd& t) {
-  Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
-  Eigen::Vector2d b = Eigen::Vector2d::Zero();
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    if (!std::isfinite(x[i])) continue;
-    const Eigen::Vector2d row(1.0, t[i]);
-    a += row * row.transpose();
-    b += row * x[i];
-  }
-  return a.ldlt().solve(b);
-}
-
 }  // namespace
 
 bool inPlaceAzimuthIsWeak(const CameraFit& fit, bool azimuthGiven) {
@@ -367,7 +352,7 @@ double walkerHeadHeightMm(const VectorXd& w) {
 
 namespace {
 
-// Head-to-ankle height of the walker in each frame of the image (NaN where unseen).
+// [SECTION] Start: the orthographic view-angle search --------------------------------------------
 
 // How the walker's image grows or shrinks and moves along the clip. A pinhole images a walker
 // at depth Z(t) at a size ∝ 1/Z(t), and a straight walk at a steady speed has Z linear in t: a
@@ -400,10 +385,10 @@ ImageTrend imageTrendOf(const MatrixXd& px, const VectorXd& times) {
       v[f] *= d;
     }
   } else {
-    trend.height = lineFit(imageHeightsPx(px), times);
+    trend.height = lineThroughFinite(imageHeightsPx(px), times);
   }
-  trend.pelvisU = lineFit(u, times);
-  trend.pelvisV = lineFit(v, times);
+  trend.pelvisU = lineThroughFinite(u, times);
+  trend.pelvisV = lineThroughFinite(v, times);
   return trend;
 }
 
@@ -426,8 +411,8 @@ OrthoStart orthographicStart(const EigenwalkerModel& model, const MatrixXd& px, 
   s.pxPerMm = trend.heightPxAt(midT) / modelHeight;
   if (!(s.pxPerMm > 0) || !std::isfinite(s.pxPerMm))
     badData(o.file, "the walker's head-to-ankle height in the image cannot be measured");
-  s.pelvisU = lineFit(px.col(2 * index(Joint::Pelvis)), times);
-  s.pelvisV = lineFit(px.col(2 * index(Joint::Pelvis) + 1), times);
+  s.pelvisU = lineThroughFinite(px.col(2 * index(Joint::Pelvis)), times);
+  s.pelvisV = lineThroughFinite(px.col(2 * index(Joint::Pelvis) + 1), times);
   MatrixXd mm(px.rows(), px.cols());
   for (Eigen::Index f = 0; f < px.rows(); ++f) {
     const double scale = trend.heightPxAt(times[f]) / modelHeight;

@@ -197,7 +197,8 @@ GaitEventSet gaitEventsFromFeet(const Eigen::Ref<const Eigen::MatrixXd>& m,
     const auto [begin, end] = bothPointsSeen(feet, side);
     if (end - begin < kMinFeetSeenShare * static_cast<double>(m.rows()) || end - begin < 3) continue;
     const auto n = end - begin;
-    const Eigen::MatrixXd run = m.middleRows(begin, n), runFeet = feet.middleRows(begin, n);
+    const auto run = m.middleRows(begin, n);
+    const auto runFeet = feet.middleRows(begin, n);
     const double startS = static_cast<double>(begin) / rateHz;
     const auto shifted = [&](std::vector<double> times) {
       for (double& t : times) t += startS;

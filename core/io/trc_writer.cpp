@@ -1,6 +1,5 @@
 #include "core/io/trc_writer.h"
 
-#include <cctype>
 #include <cmath>
 #include <iomanip>
 
@@ -9,6 +8,7 @@
 #include "core/io/atomic_write.h"
 #include "core/io/c3d_writer.h"
 #include "core/io/joint_csv.h"
+#include "core/io/text_table.h"
 
 namespace ew {
 namespace {
@@ -62,14 +62,14 @@ void writeTrc(const std::filesystem::path& file, const Eigen::Ref<const Eigen::M
   });
 }
 
+bool writesC3d(const std::filesystem::path& file) { return toLower(file.extension().string()) == ".c3d"; }
+
 void writeJointTrajectories(const std::filesystem::path& file, const Eigen::MatrixXd& framesMm, double rateHz,
                             const std::vector<std::string>& commentLines, const Eigen::MatrixXd& feetMm,
                             bool feetInSagittalPlanes) {
-  std::string extension = file.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension == ".trc") {
+  if (toLower(file.extension().string()) == ".trc") {
     writeTrc(file, framesMm, rateHz, "mm");
-  } else if (extension == ".c3d") {
+  } else if (writesC3d(file)) {
     writeWalkerWithFeetC3d(file, framesMm, feetMm, rateHz, commentLines, {}, feetInSagittalPlanes);
   } else {
     writeJointCsv(file, framesMm, rateHz, commentLines);

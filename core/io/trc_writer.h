@@ -35,8 +35,10 @@ Eigen::Vector3d openSimToCanonical(const Eigen::Vector3d& p);
 // anything else as the project's joint CSV (core/io/joint_csv.h, with its comment lines; a TRC
 // has no place for them). feetMm (JointTrial::feetMm) goes to the C3D only.
 // feetInSagittalPlanes: JointTrial::feetInSagittalPlanes, kept in the C3D's point descriptions.
+// writesC3d: whether writeJointTrajectories writes `file` as a C3D (the one with the feet).
 void writeJointTrajectories(const std::filesystem::path& file, const Eigen::MatrixXd& framesMm,
                             double rateHz, const std::vector<std::string>& commentLines = {},
                             const Eigen::MatrixXd& feetMm = Eigen::MatrixXd(), bool feetInSagittalPlanes = false);
+bool writesC3d(const std::filesystem::path& file);
 
 }  // namespace ew

@@ -6,6 +6,7 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -344,20 +345,23 @@ Eigen::VectorXd imageHeightsPx(const Eigen::MatrixXd& px) {
   return h;
 }
 
-std::optional<Eigen::Vector2d> imageDepthLine(const Eigen::MatrixXd& px, const Eigen::VectorXd& times) {
-  const Eigen::VectorXd heights = imageHeightsPx(px);
+Eigen::Vector2d lineThroughFinite(const Eigen::VectorXd& x, const Eigen::VectorXd& t) {
   Eigen::Matrix2d a = Eigen::Matrix2d::Zero();
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
-  int n = 0;
-  for (Eigen::Index f = 0; f < heights.size(); ++f) {
-    if (!(heights[f] > 0.0) || !std::isfinite(heights[f])) continue;
-    const Eigen::Vector2d row(1.0, times[f]);
+  for (Eigen::Index i = 0; i < x.size(); ++i) {
+    if (!std::isfinite(x[i])) continue;
+    const Eigen::Vector2d row(1.0, t[i]);
     a += row * row.transpose();
-    b += row / heights[f];
-    ++n;
+    b += row * x[i];
   }
-  if (n < 8) return std::nullopt;
-  const Eigen::Vector2d line = a.ldlt().solve(b);
+  return a.ldlt().solve(b);
+}
+
+std::optional<Eigen::Vector2d> imageDepthLine(const Eigen::MatrixXd& px, const Eigen::VectorXd& times) {
+  const Eigen::VectorXd inverse =
+      imageHeightsPx(px).unaryExpr([](double h) { return h > 0.0 ? 1.0 / h : std::numeric_limits<double>::quiet_NaN(); });
+  if (inverse.array().isFinite().count() < 8) return std::nullopt;
+  const Eigen::Vector2d line = lineThroughFinite(inverse, times);
   const double first = line[0] + line[1] * times[0], last = line[0] + line[1] * times[times.size() - 1];
   if (!line.allFinite() || !(first > 0.0) || !(last > 0.0)) return std::nullopt;
   return line;

@@ -73,6 +73,9 @@ ImageGait imageGaitCycles(const KeypointTrial& trial,
 // where the feet are lost (docs/TRACKING_DESIGN.md, "The model loop").
 std::optional<double> trunkBobStrideHz(const KeypointTrial& trial, double minShare = 0.3);
 
+// The least-squares line p0 + p1 t through the finite samples of x (t: the same length).
+Eigen::Vector2d lineThroughFinite(const Eigen::VectorXd& x, const Eigen::VectorXd& t);
+
 // The walker's head-to-ankles height in each frame (px; the head stood in for by the sternum
 // raised by the model's usual ratio where unseen), NaN where unknown. jointsPx: T × 30.
 Eigen::VectorXd imageHeightsPx(const Eigen::MatrixXd& jointsPx);

@@ -119,7 +119,7 @@ FootPoints3 liftedFeetAt(const ClipReconstruction& rec, int frame, const glm::ve
   if (frame < 0 || frame >= m.rows()) return feet;
   for (int p = 0; p < kFootPointCount; ++p) {
     const Eigen::Vector3d v = m.row(frame).segment<3>(3 * p).transpose();
-    if (v.allFinite()) feet[static_cast<std::size_t>(p)] = glm::vec3(v.cast<float>().x(), v.cast<float>().y(), v.cast<float>().z()) + walkerOffset;
+    if (v.allFinite()) feet[static_cast<std::size_t>(p)] = toGlm(v) + walkerOffset;
   }
   return feet;
 }
