@@ -225,6 +225,27 @@ fs::path clipFolder(int index) {
          ("eigenwalker_camera_" + std::to_string(::getpid()) + "_" + std::to_string(index));
 }
 
+// The angle below the horizontal at which a camera tilted down by elevationDeg sees the
+// pelvis of a walk in its frame (x right, y down, z forward; walkInCameraFrame), mean over the
+// frames (°).
+double viewElevationDeg(const MatrixXd& inCamera, double elevationDeg) {
+  const double c = std::cos(degToRad(elevationDeg)), s = std::sin(degToRad(elevationDeg));
+  double sum = 0.0;
+  for (Eigen::Index f = 0; f < inCamera.rows(); ++f) {
+    const Eigen::Vector3d p = inCamera.row(f).segment<3>(3 * index(Joint::Pelvis));
+    const double down = p.y() * c + p.z() * s, ahead = p.z() * c - p.y() * s;
+    sum += std::atan2(down, std::hypot(p.x(), ahead));
+  }
+  return sum / static_cast<double>(inCamera.rows()) * 180.0 / std::numbers::pi;
+}
+
+// How far below the walker's pelvis at mid-clip the clip's camera has its principal point, in
+// the walker's image heights (positive: the walker is above the picture's centre).
+double framingOffsetOfHeight(const Clip& clip) {
+  const Eigen::Index mid = clip.px.rows() / 2;
+  return (clip.camera.cyPx - clip.px(mid, 2 * index(Joint::Pelvis) + 1)) / medianHeightPx(clip.px);
+}
+
 // The eigenwalker with everything unknown (the experiment's subject).
 // What the eigenwalker's fit gives the other engines: its walker, and that walker in the
 // fit's own camera frame at every frame (a guide for the skeleton engine's branches).
@@ -283,6 +304,9 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   row.trueWalkerDistanceM = pelvisDistanceM(trueCamera);
   row.walkerDistanceM = pelvisDistanceM(camera);
   row.distanceRelError = std::abs(row.walkerDistanceM - row.trueWalkerDistanceM) / row.trueWalkerDistanceM;
+  row.trueViewElevationDeg = viewElevationDeg(trueCamera, clip.camera.elevationDeg);
+  row.viewElevationDeg = viewElevationDeg(camera, fit.camera.elevationDeg);
+  row.viewElevationErrorDeg = std::abs(row.viewElevationDeg - row.trueViewElevationDeg);
   for (Eigen::Index frame = 0; frame < camera.rows(); ++frame)
     out.guideMm.push_back(Eigen::Map<const Eigen::Matrix<double, 3, kJointCount>>(camera.row(frame).eval().data()));
   return out;
@@ -540,6 +564,7 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
       row.trueFocalPx = clip.camera.focalPx;
       row.trueDistanceM = clip.camera.distanceMm / 1000;
       row.walkerHeightPx = medianHeightPx(clip.px);
+      row.framingOffsetOfHeight = framingOffsetOfHeight(clip);
       row.strides = clip.strides;
       const auto& prior = priors[static_cast<std::size_t>(job.fold)];
       const SnippetEngine snippet{prior, {}};
@@ -718,7 +743,7 @@ std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideR
   }
   for (std::size_t g = 0; g < out.size(); ++g) {
     CameraWideSummary& s = out[g];
-    std::vector<double> mpjpe, alpha, elevation, distance, height, strides;
+    std::vector<double> mpjpe, alpha, elevation, viewElevation, distance, height, strides;
     int elevationOver5 = 0, distanceOver20 = 0;
     for (const CameraRow* r : groups[g]) {
       ++s.clips;
@@ -731,6 +756,7 @@ std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideR
       mpjpe.push_back(r->mpjpeMm);
       alpha.push_back(r->alphaErrorDeg);
       elevation.push_back(r->elevationErrorDeg);
+      viewElevation.push_back(r->viewElevationErrorDeg);
       distance.push_back(r->distanceRelError);
       elevationOver5 += r->elevationErrorDeg > 5;
       distanceOver20 += r->distanceRelError > 0.2;
@@ -740,6 +766,7 @@ std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideR
     s.medianMpjpeMm = medianOf(mpjpe);
     s.medianAlphaErrorDeg = medianOf(alpha);
     s.medianElevationErrorDeg = medianOf(elevation);
+    s.medianViewElevationErrorDeg = medianOf(viewElevation);
     s.medianDistanceRelError = medianOf(distance);
     s.elevationOver5Share = ok > 0 ? elevationOver5 / ok : std::nan("");
     s.distanceOver20Share = ok > 0 ? distanceOver20 / ok : std::nan("");

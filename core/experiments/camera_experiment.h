@@ -117,6 +117,13 @@ struct CameraRow {
   // (in its own camera) and the relative error; what a user reads as "how far away".
   double trueWalkerDistanceM = 0, walkerDistanceM = 0, distanceRelError = 0;
   double walkerHeightPx = 0;  // head to ankles in the image, median over the clip
+  // The angle below the horizontal at which the camera sees the walker's pelvis, mean over the
+  // clip (°): true, the fit's, and the error. The walker's image fixes this angle; the camera's
+  // own tilt also needs the row of its principal point (docs/CAMERA.md, "Framing").
+  double trueViewElevationDeg = 0, viewElevationDeg = 0, viewElevationErrorDeg = 0;
+  // The true principal point's row below the walker's pelvis at mid-clip, in the walker's
+  // heights in the image: what the framing prior, without the image, takes to be 0 ± 0.5.
+  double framingOffsetOfHeight = 0;
   double strides = 0;         // the clip's length in the walker's strides
   double seconds = 0;       // the eigenwalker's wall time: fit through the unknown camera
   std::string error;        // empty: reconstructed; else why not (a failure)
@@ -192,12 +199,13 @@ std::vector<CameraWideRow> cameraWideErrors(const std::vector<ExperimentWalker>&
                                             const std::vector<CameraWideCondition>& conditions);
 
 // Per condition (in the order of the rows): refusals, mean and median MPJPE, medians of
-// |α error|, |elevation error| and the distance's relative error, the share of clips whose
+// |α error|, |elevation error|, |view elevation error| and the distance's relative error, the share of clips whose
 // elevation is more than 5° off and whose distance is more than 20 % off.
 struct CameraWideSummary {
   std::string factor, level;
   int clips = 0, refusals = 0;
   double meanMpjpeMm = 0, medianMpjpeMm = 0, medianAlphaErrorDeg = 0, medianElevationErrorDeg = 0;
+  double medianViewElevationErrorDeg = 0;
   double medianDistanceRelError = 0, elevationOver5Share = 0, distanceOver20Share = 0;
   double medianWalkerHeightPx = 0, medianStrides = 0;
 };

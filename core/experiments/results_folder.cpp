@@ -249,7 +249,8 @@ std::string cameraWideCsv(const std::vector<CameraWideRow>& rows) {
                  num(r.trueWalkerDistanceM), num(r.alphaDeg), num(r.elevationDeg), num(r.focalPx),
                  num(r.walkerDistanceM), num(r.alphaErrorDeg), num(r.elevationErrorDeg), num(r.distanceRelError),
                  num(r.focalRelError), num(r.heightRelError), num(r.mpjpeMm), num(r.reprojectionRmsPx),
-                 num(r.seconds), quotedCell(r.error)});
+                 num(r.seconds), num(r.trueViewElevationDeg), num(r.viewElevationDeg), num(r.viewElevationErrorDeg),
+                 num(r.framingOffsetOfHeight), quotedCell(r.error)});
   });
 }
 
@@ -257,7 +258,8 @@ std::string cameraWideSummaryCsv(const std::vector<CameraWideSummary>& rows) {
   return csv(kCameraWideSummaryHeader, rows, [](const CameraWideSummary& s) {
     return join({quotedCell(s.factor), quotedCell(s.level), std::to_string(s.clips), std::to_string(s.refusals),
                  num(s.medianStrides), num(s.medianWalkerHeightPx), num(s.meanMpjpeMm), num(s.medianMpjpeMm),
-                 num(s.medianAlphaErrorDeg), num(s.medianElevationErrorDeg), num(s.medianDistanceRelError),
+                 num(s.medianAlphaErrorDeg), num(s.medianElevationErrorDeg), num(s.medianViewElevationErrorDeg),
+                 num(s.medianDistanceRelError),
                  num(s.elevationOver5Share), num(s.distanceOver20Share)});
   });
 }
@@ -456,6 +458,7 @@ std::string summaryJson(const EvaluationResults& r, const EvaluationProvenance& 
                       {"mean_mpjpe_mm", c.meanMpjpeMm}, {"median_mpjpe_mm", c.medianMpjpeMm},
                       {"median_alpha_error_deg", c.medianAlphaErrorDeg},
                       {"median_elevation_error_deg", c.medianElevationErrorDeg},
+                      {"median_view_elevation_error_deg", c.medianViewElevationErrorDeg},
                       {"median_distance_rel_error", c.medianDistanceRelError}});
     s["camera_wide"] = wide;
   }

@@ -32,11 +32,12 @@ inline constexpr const char* kCameraWideHeader =
     "factor,level,subject,walker,camera,noise_px,bystander,frames,strides,walker_height_px,true_alpha_deg,"
     "true_elevation_deg,true_focal_px,true_walker_distance_m,alpha_deg,elevation_deg,focal_px,walker_distance_m,"
     "alpha_error_deg,elevation_error_deg,distance_rel_error,focal_rel_error,height_rel_error,mpjpe_mm,"
-    "reprojection_rms_px,seconds,error";
+    "reprojection_rms_px,seconds,true_view_elevation_deg,view_elevation_deg,view_elevation_error_deg,"
+    "framing_offset_of_height,error";
 inline constexpr const char* kCameraWideSummaryHeader =
     "factor,level,clips,refusals,median_strides,median_walker_height_px,mean_mpjpe_mm,median_mpjpe_mm,"
-    "median_alpha_error_deg,median_elevation_error_deg,median_distance_rel_error,elevation_over_5deg_share,"
-    "distance_over_20pct_share";
+    "median_alpha_error_deg,median_elevation_error_deg,median_view_elevation_error_deg,median_distance_rel_error,"
+    "elevation_over_5deg_share,distance_over_20pct_share";
 
 inline constexpr const char* kSnippetEnginesHeader =
     "subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error,seconds";

@@ -144,6 +144,13 @@ TEST(CameraExperiment, TheHardestWideClipsAreReconstructed) {
     ASSERT_EQ(r.error, "");
     EXPECT_LT(r.mpjpeMm, 120.0);
     EXPECT_LT(r.elevationErrorDeg, 6.0);
+    // The angle the walker is seen from: the camera's tilt less the pelvis's angle above the
+    // optical axis at mid-clip (within 0.5°: the mean over the clip, the walker off the centre
+    // column), and the fit's within the tilt's bound.
+    const double pelvisAboveAxisDeg =
+        std::atan(r.framingOffsetOfHeight * r.walkerHeightPx / r.trueFocalPx) * 180.0 / std::numbers::pi;
+    EXPECT_NEAR(r.trueViewElevationDeg, r.trueElevationDeg - pelvisAboveAxisDeg, 0.5);
+    EXPECT_LT(r.viewElevationErrorDeg, 6.0);
     EXPECT_LT(r.alphaErrorDeg, 12.0);
     EXPECT_LT(r.distanceRelError, 0.7);
   }
