@@ -6,6 +6,7 @@
 #include "core/tracking/keyframes.h"
 
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -17,6 +18,7 @@
 #include "core/camera/detector_offsets.h"
 #include "core/camera/lens_distortion.h"
 #include "core/common/errors.h"
+#include "core/common/json_number.h"
 #include "core/eigenwalker/model_file.h"
 #include "core/io/joint_csv.h"
 #include "core/io/trc_writer.h"
@@ -25,6 +27,14 @@ namespace ew::cli {
 namespace {
 
 using nlohmann::json;
+
+// " ± 0.05" for a measured SD (two decimals, as the values beside it), "" for null.
+std::string plusMinus(const json& sd) {
+  if (!sd.is_number() || sd.get<double>() == 0.0) return "";  // none, or given (a known stature)
+  char text[32];
+  std::snprintf(text, sizeof text, " ± %.2f", sd.get<double>());
+  return text;
+}
 
 json startsJson(const CameraFit& fit) {
   json out = json::array();
@@ -85,6 +95,9 @@ json reportJson(const CameraArgs& a, const CameraKnowledge& camera, const Keypoi
           {"stride_length_m", fit.strideLengthM},
           {"head_height_m", fit.headHeightMm / 1000.0},
           {"stature_m", fit.statureMm / 1000.0},
+          {"speed_sd_mps", finiteOrNull(fit.sd.speedMps)},
+          {"stride_length_sd_m", finiteOrNull(fit.sd.strideLengthM)},
+          {"stature_sd_m", finiteOrNull(fit.sd.statureMm / 1000.0)},
           {"stature_source", camera.statureSource},
           {"k", std::vector<double>(fit.k.data(), fit.k.data() + fit.k.size())},
           {"joints_model_estimated", unseen},
@@ -114,10 +127,13 @@ void printSummary(const json& r) {
   std::cerr << "walk: stride " << std::setprecision(3) << r["stride_hz"].get<double>() << " Hz ("
             << std::setprecision(0) << r["cadence_steps_per_min"].get<double>()
             << " steps/min), " << (r["walking_in_place"].get<bool>() ? "walking in place (a treadmill), belt speed " : "speed ")
-            << std::setprecision(2) << r["speed_mps"].get<double>()
-            << " m/s" << (r["walking_in_place"].get<bool>() ? " from the stance feet" : "") << ", stride length " << r["stride_length_m"].get<double>() << " m, head height "
-            << r["head_height_m"].get<double>() << " m (stature about "
-            << r["stature_m"].get<double>() << " m)";
+            << std::setprecision(2) << r["speed_mps"].get<double>() << plusMinus(r["speed_sd_mps"])
+            << " m/s" << (r["walking_in_place"].get<bool>() ? " from the stance feet" : "") << ", stride length "
+            << r["stride_length_m"].get<double>() << plusMinus(r["stride_length_sd_m"]) << " m, head height "
+            << r["head_height_m"].get<double>() << " m (stature about " << r["stature_m"].get<double>()
+            << plusMinus(r["stature_sd_m"]) << " m)";
+  if (r["stride_length_sd_m"].is_number() || r["stature_sd_m"].is_number())
+    std::cerr << "; ± one SD of the fit (docs/CAMERA.md, \"How sure the fit is\")";
   if (r["rate_assumed"].get<bool>())
     std::cerr << " (at an assumed " << r["rate_hz"].get<double>() << " fps: give --fps)";
   // Said when the trunk stood in for feet that read another stride (a view from the front).

@@ -702,6 +702,72 @@ std::optional<Candidate> startsAtTheHintedStride(const EigenwalkerModel& model, 
   return c;
 }
 
+// [SECTION] How sure the fit is ------------------------------------------------------------------
+
+// The objective is Σ r² = w² Σ d² + σ² Σ k²/λ (d the reprojection misses in mm, w the data
+// weight), which is 2σ² times the negative log of a posterior with the coefficients' prior; its
+// Gauss-Newton Hessian JᵀJ / σ² gives the Laplace covariance σ² (JᵀJ)⁻¹ over the free
+// parameters, and a measure m(θ) gets the SD sqrt(gᵀ Σ g), g = ∂m/∂θ.
+std::optional<MatrixXd> laplaceCovariance(const Problem& p, const VectorXd& theta, double sigma2Mm2) {
+  const VectorXd r = residuals(p, theta);
+  const MatrixXd jac = jacobian(p, theta, r);
+  MatrixXd jtj = jac.transpose() * jac;
+  for (Eigen::Index i = 0; i < theta.size(); ++i)
+    if (p.layout.fixed(i)) jtj.row(i).setZero(), jtj.col(i).setZero(), jtj(i, i) = 1.0;
+  const Eigen::LDLT<MatrixXd> ldlt(jtj);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return std::nullopt;
+  MatrixXd cov = sigma2Mm2 * ldlt.solve(MatrixXd::Identity(theta.size(), theta.size()));
+  for (Eigen::Index i = 0; i < theta.size(); ++i)
+    if (p.layout.fixed(i)) cov.row(i).setZero(), cov.col(i).setZero();
+  if (!cov.allFinite() || (cov.diagonal().array() < 0.0).any()) return std::nullopt;
+  return cov;
+}
+
+double sdOf(const MatrixXd& cov, const VectorXd& gradient) {
+  return std::sqrt(std::max(0.0, gradient.dot(cov * gradient)));
+}
+
+// The covariance of a Gaussian given the linear measure gᵀθ (a known stature).
+MatrixXd conditionedOn(const MatrixXd& cov, const VectorXd& g) {
+  const VectorXd cg = cov * g;
+  const double var = g.dot(cg);
+  return var > 0.0 ? MatrixXd(cov - cg * cg.transpose() / var) : cov;
+}
+
+FitUncertainty fitUncertainty(const Problem& p, const VectorXd& theta, const CameraFitOptions& o) {
+  FitUncertainty u;
+  if (p.priorWeight.size() == 0) return u;  // least squares: nothing bounds the scale
+  const std::optional<MatrixXd> cov = laplaceCovariance(p, theta, o.estimator.sigma2Mm2);
+  if (!cov) return u;
+  const Layout& l = p.layout;
+  // The stature depends on the coefficients alone (and linearly: a central difference is exact).
+  VectorXd g = VectorXd::Zero(theta.size());
+  for (int i = 0; i < l.n; ++i) {
+    const double h = std::sqrt(std::max(p.model.eigenvalues[i], 1.0)) * 1e-3;
+    VectorXd up = theta, down = theta;
+    up[i] += h;
+    down[i] -= h;
+    g[i] = (statureFromHeadAboveAnklesMm(walkerHeadHeightMm(walkerOf(p, up))) -
+            statureFromHeadAboveAnklesMm(walkerHeadHeightMm(walkerOf(p, down)))) / (2.0 * h);
+  }
+  u.statureMm = kStatureSdWidening * sdOf(*cov, g);
+  if (l.speedFixed) return u;
+  const MatrixXd givenStature = conditionedOn(*cov, g);
+  const double omega = theta[l.omega()], speed = theta[l.speed()];
+  const double strideM = 2.0 * std::numbers::pi * speed / omega * 1e-3;
+  VectorXd v = VectorXd::Zero(theta.size());
+  v[l.speed()] = 1e-3;
+  u.speedMps = sdOf(*cov, v);
+  u.speedShareGivenStature = sdOf(givenStature, v) / std::abs(speed * 1e-3);
+  // stride = 2π v / ω
+  VectorXd s = VectorXd::Zero(theta.size());
+  s[l.speed()] = 2.0 * std::numbers::pi / omega * 1e-3;
+  s[l.omega()] = -strideM / omega;
+  u.strideLengthM = sdOf(*cov, s);
+  u.strideShareGivenStature = sdOf(givenStature, s) / std::abs(strideM);
+  return u;
+}
+
 }  // namespace
 
 CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd& jointsPx, double rateHz,
@@ -784,6 +850,7 @@ CameraFit reconstructUnknownCamera(const EigenwalkerModel& model, const MatrixXd
                         " px, more than " + std::to_string(static_cast<int>(100 * kMaxRmsOfHeight)) +
                         " % of the walker's " + std::to_string(static_cast<int>(heightPx)) + " px height)");
   fit.unseenJoints = unseenJoints;
+  fit.sd = fitUncertainty(makeProblem(model, layout, o, kept, times, 1.0 / start.pxPerMm, 1, framing), theta, o);
   if (o.inPlace) setBeltSpeed(fit);
   fit.camera.alphaDeg = wrapDeg(fit.camera.alphaDeg);
   fit.objective = results.front().second.objective;

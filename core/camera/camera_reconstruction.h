@@ -7,6 +7,7 @@
 // view-angle search of core/eigenwalker/reconstruction.h at each of its best minima.
 
 #include <Eigen/Core>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -62,6 +63,31 @@ struct CameraStart {
   int iterations = 0;
 };
 
+// One standard deviation of what the fit measures, from the curvature of its objective at the
+// optimum: a Laplace approximation of the MAP posterior, in which the coefficients' prior (which
+// holds the walker's size) bounds the scale an unknown camera leaves open. NaN where the fit
+// cannot say: least squares (no prior, so no scale), or walking in place for the speed and the
+// stride (the speed is then the stance feet's, not a fitted parameter). How often ±1.96 SD
+// holds the truth is measured in the widened camera experiment (docs/CAMERA.md, "How sure the
+// fit is").
+// Given the stature (scaleToStature), the scale is no longer open: the speed's and the stride's
+// SDs become those of the posterior conditioned on the stature, and the stature's is zero.
+struct FitUncertainty {
+  double statureMm = std::numeric_limits<double>::quiet_NaN();
+  double speedMps = std::numeric_limits<double>::quiet_NaN();
+  double strideLengthM = std::numeric_limits<double>::quiet_NaN();
+  // The same two conditioned on the fit's own stature, as shares of the speed and the stride
+  // (scaleToStature scales the walk and takes these).
+  double speedShareGivenStature = std::numeric_limits<double>::quiet_NaN();
+  double strideShareGivenStature = std::numeric_limits<double>::quiet_NaN();
+};
+
+// The stature's SD from the curvature alone is too narrow for a walker the model has not seen:
+// over every level of the widened camera experiment (72 held-out clips each) its error divided
+// by that SD had an SD of 1.36-1.44, and ±1.96 SD held 86 % of the truths. The reported SD is
+// widened by this factor. The speed's and the stride's need none (0.61-0.86: wide enough).
+inline constexpr double kStatureSdWidening = 1.45;
+
 struct CameraFit {
   WalkCamera camera;
   Eigen::VectorXd k, w;           // coefficients and the 3D walker (225, canonical frame)
@@ -76,6 +102,7 @@ struct CameraFit {
   // speedMps, strideLengthM are the belt's, from the stance feet of the fitted walk (NaN
   // when no full stride of it could be measured).
   bool inPlace = false;
+  FitUncertainty sd;                // 1 SD of the stature, the speed and the stride length
   std::vector<CameraStart> starts;  // every start, best first
   std::vector<int> unseenJoints;    // joints with no image data (estimated by the model)
 };

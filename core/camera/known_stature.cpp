@@ -31,6 +31,9 @@ void scaleToStature(ClipReconstruction& clip, double statureMm) {
   fit.statureMm = statureMm;
   fit.speedMps *= s;
   fit.strideLengthM *= s;
+  fit.sd.statureMm = 0.0;
+  fit.sd.speedMps = fit.sd.speedShareGivenStature * fit.speedMps;
+  fit.sd.strideLengthM = fit.sd.strideShareGivenStature * fit.strideLengthM;
   for (CameraStart& start : fit.starts) start.speedMmS *= s;
 }
 

@@ -246,6 +246,24 @@ double framingOffsetOfHeight(const Clip& clip) {
   return (clip.camera.cyPx - clip.px(mid, 2 * index(Joint::Pelvis) + 1)) / medianHeightPx(clip.px);
 }
 
+// The fit's stature, speed and stride length beside the truth, each with the SD the fit gives
+// it (CameraFit::sd): how often ±1.96 SD holds the truth is the summary's.
+void scoreMeasuresAndTheirSds(const ExperimentWalker& w, const Clip& clip, const CameraExperimentOptions& o,
+                              const CameraFit& fit, double trueHeadHeightMm, CameraRow& row) {
+  const double trueOmega = w.fit.omegaRadS * std::pow(clip.camera.speedMmS / 1300.0, o.cadenceSpeedExponent);
+  row.trueStatureM = statureFromHeadAboveAnklesMm(trueHeadHeightMm) / 1000;
+  row.statureM = fit.statureMm / 1000;
+  row.statureSdM = fit.sd.statureMm / 1000;
+  row.trueSpeedMps = clip.camera.speedMmS / 1000;
+  row.speedMps = fit.speedMps;
+  row.speedSdMps = fit.sd.speedMps;
+  row.trueStrideLengthM = row.trueSpeedMps * 2 * std::numbers::pi / trueOmega;
+  row.strideLengthM = fit.strideLengthM;
+  row.strideLengthSdM = fit.sd.strideLengthM;
+  row.strideGivenStatureM = fit.strideLengthM * row.trueStatureM / row.statureM;
+  row.strideGivenStatureSdM = fit.sd.strideShareGivenStature * std::abs(row.strideGivenStatureM);
+}
+
 // The eigenwalker with everything unknown (the experiment's subject).
 // What the eigenwalker's fit gives the other engines: its walker, and that walker in the
 // fit's own camera frame at every frame (a guide for the skeleton engine's branches).
@@ -304,6 +322,7 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   row.trueWalkerDistanceM = pelvisDistanceM(trueCamera);
   row.walkerDistanceM = pelvisDistanceM(camera);
   row.distanceRelError = std::abs(row.walkerDistanceM - row.trueWalkerDistanceM) / row.trueWalkerDistanceM;
+  scoreMeasuresAndTheirSds(w, clip, o, fit, height, row);
   row.trueViewElevationDeg = viewElevationDeg(trueCamera, clip.camera.elevationDeg);
   row.viewElevationDeg = viewElevationDeg(camera, fit.camera.elevationDeg);
   row.viewElevationErrorDeg = std::abs(row.viewElevationDeg - row.trueViewElevationDeg);
@@ -731,6 +750,21 @@ std::vector<CameraWideRow> cameraWideErrors(const std::vector<ExperimentWalker>&
   return out;
 }
 
+namespace {
+
+// The share of clips whose error is within 1.96 of the SDs the fit gave (NaN SDs not counted).
+struct WithinTwoSds {
+  int within = 0, scored = 0;
+  void add(double error, double sd) {
+    if (!(std::isfinite(sd) && sd > 0.0 && std::isfinite(error))) return;
+    ++scored;
+    within += std::abs(error) <= 1.96 * sd;
+  }
+  double share() const { return scored > 0 ? static_cast<double>(within) / scored : std::nan(""); }
+};
+
+}  // namespace
+
 std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideRow>& rows) {
   std::vector<CameraWideSummary> out;
   std::vector<std::vector<const CameraRow*>> groups;
@@ -745,6 +779,7 @@ std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideR
     CameraWideSummary& s = out[g];
     std::vector<double> mpjpe, alpha, elevation, viewElevation, distance, height, strides;
     int elevationOver5 = 0, distanceOver20 = 0;
+    WithinTwoSds stature, speed, stride, strideGivenStature;
     for (const CameraRow* r : groups[g]) {
       ++s.clips;
       height.push_back(r->walkerHeightPx);
@@ -758,6 +793,10 @@ std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideR
       elevation.push_back(r->elevationErrorDeg);
       viewElevation.push_back(r->viewElevationErrorDeg);
       distance.push_back(r->distanceRelError);
+      stature.add(r->statureM - r->trueStatureM, r->statureSdM);
+      speed.add(r->speedMps - r->trueSpeedMps, r->speedSdMps);
+      stride.add(r->strideLengthM - r->trueStrideLengthM, r->strideLengthSdM);
+      strideGivenStature.add(r->strideGivenStatureM - r->trueStrideLengthM, r->strideGivenStatureSdM);
       elevationOver5 += r->elevationErrorDeg > 5;
       distanceOver20 += r->distanceRelError > 0.2;
     }
@@ -770,6 +809,10 @@ std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideR
     s.medianDistanceRelError = medianOf(distance);
     s.elevationOver5Share = ok > 0 ? elevationOver5 / ok : std::nan("");
     s.distanceOver20Share = ok > 0 ? distanceOver20 / ok : std::nan("");
+    s.statureWithin2SdShare = stature.share();
+    s.speedWithin2SdShare = speed.share();
+    s.strideWithin2SdShare = stride.share();
+    s.strideGivenStatureWithin2SdShare = strideGivenStature.share();
     s.medianWalkerHeightPx = medianOf(height);
     s.medianStrides = medianOf(strides);
   }

@@ -124,6 +124,13 @@ struct CameraRow {
   // The true principal point's row below the walker's pelvis at mid-clip, in the walker's
   // heights in the image: what the framing prior, without the image, takes to be 0 ± 0.5.
   double framingOffsetOfHeight = 0;
+  // The fit's stature, speed and stride length, each with the SD the fit gives it
+  // (CameraFit::sd, NaN where it gives none), beside the truth.
+  double trueStatureM = 0, statureM = 0, statureSdM = 0;
+  double trueSpeedMps = 0, speedMps = 0, speedSdMps = 0;
+  double trueStrideLengthM = 0, strideLengthM = 0, strideLengthSdM = 0;
+  // The fit's stride and SD had the true stature been given (scaleToStature's).
+  double strideGivenStatureM = 0, strideGivenStatureSdM = 0;
   double strides = 0;         // the clip's length in the walker's strides
   double seconds = 0;       // the eigenwalker's wall time: fit through the unknown camera
   std::string error;        // empty: reconstructed; else why not (a failure)
@@ -206,6 +213,9 @@ struct CameraWideSummary {
   int clips = 0, refusals = 0;
   double meanMpjpeMm = 0, medianMpjpeMm = 0, medianAlphaErrorDeg = 0, medianElevationErrorDeg = 0;
   double medianViewElevationErrorDeg = 0;
+  // Shares of the clips whose stature, speed or stride length is within 1.96 SD of the truth.
+  double statureWithin2SdShare = 0, speedWithin2SdShare = 0, strideWithin2SdShare = 0;
+  double strideGivenStatureWithin2SdShare = 0;
   double medianDistanceRelError = 0, elevationOver5Share = 0, distanceOver20Share = 0;
   double medianWalkerHeightPx = 0, medianStrides = 0;
 };

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/common/errors.h"
+#include "core/common/json_number.h"
 #include "core/io/atomic_write.h"
 #include "core/experiments/plot.h"
 
@@ -250,7 +251,10 @@ std::string cameraWideCsv(const std::vector<CameraWideRow>& rows) {
                  num(r.walkerDistanceM), num(r.alphaErrorDeg), num(r.elevationErrorDeg), num(r.distanceRelError),
                  num(r.focalRelError), num(r.heightRelError), num(r.mpjpeMm), num(r.reprojectionRmsPx),
                  num(r.seconds), num(r.trueViewElevationDeg), num(r.viewElevationDeg), num(r.viewElevationErrorDeg),
-                 num(r.framingOffsetOfHeight), quotedCell(r.error)});
+                 num(r.framingOffsetOfHeight), num(r.trueStatureM), num(r.statureM), num(r.statureSdM),
+                 num(r.trueSpeedMps), num(r.speedMps), num(r.speedSdMps), num(r.trueStrideLengthM),
+                 num(r.strideLengthM), num(r.strideLengthSdM), num(r.strideGivenStatureM),
+                 num(r.strideGivenStatureSdM), quotedCell(r.error)});
   });
 }
 
@@ -260,7 +264,8 @@ std::string cameraWideSummaryCsv(const std::vector<CameraWideSummary>& rows) {
                  num(s.medianStrides), num(s.medianWalkerHeightPx), num(s.meanMpjpeMm), num(s.medianMpjpeMm),
                  num(s.medianAlphaErrorDeg), num(s.medianElevationErrorDeg), num(s.medianViewElevationErrorDeg),
                  num(s.medianDistanceRelError),
-                 num(s.elevationOver5Share), num(s.distanceOver20Share)});
+                 num(s.elevationOver5Share), num(s.distanceOver20Share), num(s.statureWithin2SdShare),
+                 num(s.speedWithin2SdShare), num(s.strideWithin2SdShare), num(s.strideGivenStatureWithin2SdShare)});
   });
 }
 
@@ -315,10 +320,9 @@ json snippetSummary(const SnippetExperimentResults& r) {
   }
   json gait = json::array();
   for (const auto& b : blandAltman(r.gait)) {
-    const auto finite = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
     gait.push_back({{"engine", b.engine}, {"angle_deg", b.angleDeg}, {"measure", b.measure}, {"unit", b.unit},
-                    {"pairs", b.pairs}, {"unmeasured", b.unmeasured}, {"mocap_mean", finite(b.mocapMean)},
-                    {"bias", finite(b.bias)}, {"loa_low", finite(b.loaLow)}, {"loa_high", finite(b.loaHigh)}});
+                    {"pairs", b.pairs}, {"unmeasured", b.unmeasured}, {"mocap_mean", finiteOrNull(b.mocapMean)},
+                    {"bias", finiteOrNull(b.bias)}, {"loa_low", finiteOrNull(b.loaLow)}, {"loa_high", finiteOrNull(b.loaHigh)}});
   }
   return {{"engines", engines}, {"theta", theta}, {"train_seconds_mean", r.trainSecondsMean},
           {"training_snippets_mean", r.snippetsMean}, {"gait_bland_altman", gait}};
@@ -326,25 +330,23 @@ json snippetSummary(const SnippetExperimentResults& r) {
 
 // Per setting, engine, variant and noise level: accuracy and time (engines_summary.csv's rows).
 json enginesSummary(const EnginesExperimentResults& r) {
-  const auto finite = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   json out = json::array();
   for (const auto& e : summarizeEngines(r.rows))
     out.push_back({{"setting", e.setting}, {"engine", e.engine}, {"variant", e.variant}, {"noise", e.noise},
                    {"noise_unit", e.noiseUnit}, {"clips", e.clips}, {"failures", e.failures},
-                   {"mean_mpjpe_mm", finite(e.meanMpjpeMm)}, {"median_mpjpe_mm", finite(e.medianMpjpeMm)},
-                   {"mean_seconds", e.meanSeconds}, {"ms_per_frame", finite(e.msPerFrame)}});
+                   {"mean_mpjpe_mm", finiteOrNull(e.meanMpjpeMm)}, {"median_mpjpe_mm", finiteOrNull(e.medianMpjpeMm)},
+                   {"mean_seconds", e.meanSeconds}, {"ms_per_frame", finiteOrNull(e.msPerFrame)}});
   return out;
 }
 
 // Per attribute: the axis's quality and slider check (semantic_axes.csv's rows).
 json semanticSummary(const SemanticExperimentResults& r) {
-  const auto finite = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   json axes = json::array();
   for (const auto& a : r.axes)
     axes.push_back({{"attribute", a.attribute}, {"source", a.source}, {"kind", a.categorical ? "two-class" : "numeric"},
-                    {"walkers", a.walkers}, {"sd", finite(a.sd)}, {"loo_r2", finite(a.looR2)},
-                    {"loo_rmse", finite(a.looRmse)}, {"loo_accuracy", finite(a.looAccuracy)},
-                    {"chance", finite(a.chance)}, {"steerable", a.steerable}, {"slider_ratio", finite(a.sliderRatio)}});
+                    {"walkers", a.walkers}, {"sd", finiteOrNull(a.sd)}, {"loo_r2", finiteOrNull(a.looR2)},
+                    {"loo_rmse", finiteOrNull(a.looRmse)}, {"loo_accuracy", finiteOrNull(a.looAccuracy)},
+                    {"chance", finiteOrNull(a.chance)}, {"steerable", a.steerable}, {"slider_ratio", finiteOrNull(a.sliderRatio)}});
   return {{"components", r.components}, {"axes", axes}, {"notes", r.notes}};
 }
 

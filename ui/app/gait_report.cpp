@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "core/common/errors.h"
+#include "core/common/json_number.h"
 #include "core/eigenwalker/fourier.h"
 #include "core/eigenwalker/walker_set.h"
 #include "core/gait/joint_angles.h"
@@ -196,14 +197,13 @@ void writeGaitReportCsv(const std::string& file, const GaitSummary& mocap, const
 void writeGaitReportJson(const std::string& file, const GaitReportText& what, const GaitSummary& mocap,
                          const std::vector<GaitColumn>& columns, const GaitBand& band) {
   using nlohmann::json;
-  const auto value = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   json measures = json::object();
   const auto& rows = gaitRows();
   for (size_t r = 0; r < rows.size(); ++r) {
-    json m = {{"motion_capture", value(gaitRowValue(mocap, rows[r].key))},
-              {"population_mean", value(rowOf(band.rowMean, r))},
-              {"population_sd", value(rowOf(band.rowSd, r))}};
-    for (const auto& c : columns) m[c.name] = value(gaitRowValue(*c.summary, rows[r].key));
+    json m = {{"motion_capture", finiteOrNull(gaitRowValue(mocap, rows[r].key))},
+              {"population_mean", finiteOrNull(rowOf(band.rowMean, r))},
+              {"population_sd", finiteOrNull(rowOf(band.rowSd, r))}};
+    for (const auto& c : columns) m[c.name] = finiteOrNull(gaitRowValue(*c.summary, rows[r].key));
     measures[rows[r].key] = m;
   }
   json curves = json::object();

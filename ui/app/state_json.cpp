@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/common/json_number.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/app/held_model.h"
@@ -188,6 +189,9 @@ nlohmann::json clipJson(const AppState& s) {
       {"speed_mps", f.speedMps},
       {"stride_hz", f.strideHz},
       {"stride_length_m", f.strideLengthM},
+      // One SD of each (CameraFit::sd; null where the fit gives none).
+      {"sd", {{"stature_m", finiteOrNull(f.sd.statureMm / 1000.0)}, {"speed_mps", finiteOrNull(f.sd.speedMps)},
+              {"stride_length_m", finiteOrNull(f.sd.strideLengthM)}}},
       // The heels and toes lifted from the image, drawn with the 3D walker.
       {"feet", {{"samples_seen", r.rec.feet.pointsSeen}, {"samples_lifted", r.rec.feet.pointsLifted},
                 {"note", r.rec.feet.note}}},
