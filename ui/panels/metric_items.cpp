@@ -15,13 +15,11 @@ std::string formatted(const char* format, double value) {
   return text;
 }
 
-// "1.42 ± 0.06 m" when the fit gives the measure an SD (CameraFit::sd), else "1.42 m".
+// "1.42 ± 0.06 m" when the fit gives the measure an SD (CameraFit::sd), else "".
 std::string withSd(double value, double sd, const char* unit) {
+  if (!(std::isfinite(sd) && sd > 0.0)) return "";
   char text[96];
-  if (std::isfinite(sd) && sd > 0.0)
-    std::snprintf(text, sizeof text, "%.2f ± %.2f %s", value, sd, unit);
-  else
-    std::snprintf(text, sizeof text, "%.2f %s", value, unit);
+  std::snprintf(text, sizeof text, "%.2f ± %.2f %s", value, sd, unit);
   return text;
 }
 
@@ -30,12 +28,14 @@ std::string withSd(double value, double sd, const char* unit) {
 std::vector<MetricItem> clipItems(const AppState& s) {
   const ClipReconstruction& rec = s.clip.fit()->rec;
   const CameraFit& f = rec.fit;
-  return {{"stature  est.", withSd(f.statureMm / 1000.0, f.sd.statureMm / 1000.0, "m"),
-           formatted("head %.2f m", f.headHeightMm / 1000.0)},
-          {f.inPlace ? "belt speed" : "speed", withSd(f.speedMps, f.sd.speedMps, "m/s"),
-           rec.trial.rateAssumed ? "(30 fps?)" : f.inPlace ? "in place" : ""},
-          {"stride length", withSd(f.strideLengthM, f.sd.strideLengthM, "m"), formatted("%.2f Hz", f.strideHz),
-           strideIsImplausible(f) ? MetricTone::Bad : MetricTone::Normal},
+  return {{"stature  est.", formatted("%.2f m", f.statureMm / 1000.0), formatted("head %.2f m", f.headHeightMm / 1000.0),
+           MetricTone::Normal, withSd(f.statureMm / 1000.0, f.sd.statureMm / 1000.0, "m")},
+          {f.inPlace ? "belt speed" : "speed", formatted("%.2f m/s", f.speedMps),
+           rec.trial.rateAssumed ? "(30 fps?)" : f.inPlace ? "in place" : "", MetricTone::Normal,
+           withSd(f.speedMps, f.sd.speedMps, "m/s")},
+          {"stride length", formatted("%.2f m", f.strideLengthM), formatted("%.2f Hz", f.strideHz),
+           strideIsImplausible(f) ? MetricTone::Bad : MetricTone::Normal,
+           withSd(f.strideLengthM, f.sd.strideLengthM, "m")},
           {"cadence  steps", formatted("%.0f /min", f.cadenceStepsPerMin),
            rec.strideSource.starts_with("trunk") ? "trunk's bob" : ""},
           {"reprojection  RMS", formatted("%.1f px", f.reprojectionRmsPx),

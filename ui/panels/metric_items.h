@@ -16,6 +16,8 @@ enum class MetricTone { Normal, Good, Bad, Edited };
 struct MetricItem {
   std::string label, value, note;
   MetricTone tone = MetricTone::Normal;
+  // The value with its SD ("1.42 ± 0.06 m"), shown where the strip has room; "" if it has none.
+  std::string withSd = {};
 };
 
 // Empty when the mode has none to show (explore mode, nothing reconstructed or fitted yet).

@@ -22,16 +22,45 @@ ImVec4 toneColour(MetricTone tone) {
   return ImGui::GetStyleColorVec4(ImGuiCol_Text);
 }
 
-// A narrow strip (a small window or a large UI scale) drops a metric's note, then the metrics
-// that do not fit at all, rather than cutting them at the edge.
+float valueWidth(const AppState& s, const char* value) {
+  if (s.fonts.large) ImGui::PushFont(s.fonts.large);
+  const float w = ImGui::CalcTextSize(value).x;
+  if (s.fonts.large) ImGui::PopFont();
+  return w;
+}
+
+// How much of each metric the strip has room for: its note and its SD, its SD, or the value
+// alone (then a metric that does not fit at all is left out, rather than cut at the edge).
+enum class MetricDetail { NotesAndSds, Sds, Values };
+
+const std::string& shownValue(const MetricItem& m, MetricDetail d) {
+  return d != MetricDetail::Values && !m.withSd.empty() ? m.withSd : m.value;
+}
+
+// The most detail with which every metric fits the strip, each in a slot of at least `width`.
+MetricDetail detailThatFits(const AppState& s, const std::vector<MetricItem>& items, float width) {
+  const float strip = ImGui::GetWindowContentRegionMax().x - ImGui::GetWindowContentRegionMin().x;
+  for (const MetricDetail d : {MetricDetail::NotesAndSds, MetricDetail::Sds}) {
+    float total = 0.0f;
+    for (const MetricItem& m : items) {
+      float valueAndNote = valueWidth(s, shownValue(m, d).c_str());
+      if (d == MetricDetail::NotesAndSds)
+        valueAndNote += ImGui::GetStyle().ItemSpacing.x + ImGui::CalcTextSize(m.note.c_str()).x;
+      total += std::max({width, ImGui::CalcTextSize(m.label.c_str()).x, valueAndNote});
+    }
+    if (total <= strip + 1.0f) return d;
+  }
+  return MetricDetail::Values;
+}
+
+// A narrow strip (a small window or a large UI scale) drops the metrics' notes, then their SDs
+// (detailThatFits), then a metric that does not fit at all, rather than cutting it at the edge.
 // The strip's first metric starts its row (`first`); the others follow on the same line.
 void metric(const AppState& s, bool first, const char* label, const char* value, const char* note, float width,
-            const ImVec4& colour = ImGui::GetStyleColorVec4(ImGuiCol_Text)) {
+            bool notes, const ImVec4& colour = ImGui::GetStyleColorVec4(ImGuiCol_Text)) {
   if (!first) ImGui::SameLine();
   const float avail = ImGui::GetContentRegionAvail().x;
-  if (s.fonts.large) ImGui::PushFont(s.fonts.large);
-  const float valueW = ImGui::CalcTextSize(value).x;
-  if (s.fonts.large) ImGui::PopFont();
+  const float valueW = valueWidth(s, value);
   const float noteW = ImGui::CalcTextSize(note).x + ImGui::GetStyle().ItemSpacing.x;
   if (std::max(ImGui::CalcTextSize(label).x, valueW) > avail) return;
   ImGui::BeginGroup();
@@ -39,9 +68,6 @@ void metric(const AppState& s, bool first, const char* label, const char* value,
   if (s.fonts.large) ImGui::PushFont(s.fonts.large);
   ImGui::TextColored(colour, "%s", value);
   if (s.fonts.large) ImGui::PopFont();
-  // Five metrics at their minimum width do not fit: notes go, so that every value can stay.
-  const float strip = ImGui::GetWindowContentRegionMax().x - ImGui::GetWindowContentRegionMin().x;
-  const bool notes = 5.0f * width <= strip + 1.0f;
   if (notes && valueW + noteW <= avail) {
     ImGui::SameLine();
     ImGui::TextDisabled("%s", note);
@@ -75,9 +101,10 @@ void MetricsPanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& r
       ImGui::TextDisabled("metrics hidden (overlay \"metrics\")");
     } else if (const std::vector<MetricItem> items = metricItems(s); !items.empty()) {
       const float w = std::max(150.0f * ctx.scale, (ImGui::GetContentRegionAvail().x - 8.0f) / 5.0f);
+      const MetricDetail detail = detailThatFits(s, items, w);
       for (std::size_t k = 0; k < items.size(); ++k)
-        metric(s, k == 0, items[k].label.c_str(), items[k].value.c_str(), items[k].note.c_str(), w,
-               toneColour(items[k].tone));
+        metric(s, k == 0, items[k].label.c_str(), shownValue(items[k], detail).c_str(), items[k].note.c_str(), w,
+               detail == MetricDetail::NotesAndSds, toneColour(items[k].tone));
     } else if (s.doc.mode == Mode::Clip) {
       ImGui::TextDisabled(s.clip.fits.running() ? "fitting the camera…" : "no fit");
     } else {
