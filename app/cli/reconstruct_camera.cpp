@@ -79,6 +79,7 @@ json reportJson(const CameraArgs& a, const CameraKnowledge& camera, const Keypoi
           {"alpha_deg", c.alphaDeg},
           {"alpha_source", camera.alphaSource},
           {"elevation_deg", c.elevationDeg},
+          {"view_elevation_deg", fit.viewElevationDeg},
           {"elevation_source", camera.elevationSource},
           {"focal_px", pinhole ? json(c.focalPx) : json(nullptr)},
           {"focal_source", pinhole ? json(camera.focalSource) : json(nullptr)},
@@ -111,7 +112,9 @@ void printSummary(const json& r) {
             << "); " << r["person"].get<std::string>() << "\n";
   std::cerr << "camera (" << r["camera_model"].get<std::string>() << "): azimuth "
             << r["alpha_deg"].get<double>() << " deg, elevation "
-            << r["elevation_deg"].get<double>() << " deg";
+            << r["elevation_deg"].get<double>() << " deg (the walker seen from "
+            << std::abs(r["view_elevation_deg"].get<double>()) << " deg "
+            << (r["view_elevation_deg"].get<double>() >= 0.0 ? "above" : "below") << ")";
   if (r["distance_m"].is_number())
     std::cerr << ", distance " << std::setprecision(2) << r["distance_m"].get<double>()
               << " m, focal " << std::setprecision(0) << r["focal_px"].get<double>() << " px ("

@@ -18,9 +18,10 @@ inline constexpr double kMinStatureM = 0.5, kMaxStatureM = 2.5;
 // The fit scaled so that its stature (CameraFit::statureMm, from its head height) is
 // statureMm: every position, the camera's distance and look-at height, the walk's start and
 // speed, the stride length, head height and stature. A scaled-orthographic camera's px/mm is
-// divided instead; the SDs (CameraFit::sd) become those given the stature. Error(BadArgument) "stature: …" for a stature outside the range above or
-// a fit with no stature. The model coefficients (CameraFit::k) stay the fit's before scaling:
-// the scaled walker is w, not the model's mean plus k.
+// divided instead; the SDs (CameraFit::sd) become those given the stature. Error(BadArgument)
+// "stature: …" for a stature outside the range above or a fit with no stature. The model
+// coefficients (CameraFit::k) stay the fit's before scaling: the scaled walker is w, not the
+// model's mean plus k.
 void scaleToStature(ClipReconstruction& clip, double statureMm);
 void scaleToStature(DetectionLoop& loop, double statureMm);
 

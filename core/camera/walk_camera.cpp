@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include <Eigen/Geometry>
 
@@ -75,6 +76,18 @@ CalibratedCamera calibrationOf(const WalkCamera& c, double widthPx, double heigh
   out.rotation = {rodrigues.x(), rodrigues.y(), rodrigues.z()};
   out.translationMm = {t.x(), t.y(), t.z()};
   return out;
+}
+
+double viewElevationDeg(const Eigen::Ref<const Eigen::MatrixXd>& inCamera, double elevationDeg) {
+  // The camera frame is x right, y down, z forward; turned up by the tilt it is level.
+  const double c = std::cos(degToRad(elevationDeg)), s = std::sin(degToRad(elevationDeg));
+  double sum = 0.0;
+  for (Eigen::Index f = 0; f < inCamera.rows(); ++f) {
+    const Eigen::Vector3d p = inCamera.row(f).segment<3>(3 * index(Joint::Pelvis));
+    const double down = p.y() * c + p.z() * s, ahead = p.z() * c - p.y() * s;
+    sum += std::atan2(down, std::hypot(p.x(), ahead));
+  }
+  return sum / static_cast<double>(inCamera.rows()) * 180.0 / std::numbers::pi;
 }
 
 }  // namespace ew

@@ -43,6 +43,12 @@ Eigen::MatrixXd projectWalk(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
 Eigen::MatrixXd walkInCameraFrame(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
                                   const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& camera);
 
+// The angle below the horizontal at which a camera tilted down by elevationDeg sees the pelvis
+// of a walk in its frame (walkInCameraFrame's), mean over the frames (°). A walker's image fixes
+// this angle; the camera's tilt is it plus the pelvis's angle above the optical axis, which also
+// needs the principal point (docs/CAMERA.md, "Framing").
+double viewElevationDeg(const Eigen::Ref<const Eigen::MatrixXd>& inCamera, double elevationDeg);
+
 // A pinhole WalkCamera as a calibration (OpenCV's x_cam = R x_world + t, no distortion,
 // `widthPx` × `heightPx`), the world being the walker's canonical frame with its progression
 // put back: W(t) = X(t) + (0, y0 + v·t, 0). Then R = E(ε) R₀(α) and t = (0, 0, D) − R (0, 0, h),

@@ -225,20 +225,6 @@ fs::path clipFolder(int index) {
          ("eigenwalker_camera_" + std::to_string(::getpid()) + "_" + std::to_string(index));
 }
 
-// The angle below the horizontal at which a camera tilted down by elevationDeg sees the
-// pelvis of a walk in its frame (x right, y down, z forward; walkInCameraFrame), mean over the
-// frames (°).
-double viewElevationDeg(const MatrixXd& inCamera, double elevationDeg) {
-  const double c = std::cos(degToRad(elevationDeg)), s = std::sin(degToRad(elevationDeg));
-  double sum = 0.0;
-  for (Eigen::Index f = 0; f < inCamera.rows(); ++f) {
-    const Eigen::Vector3d p = inCamera.row(f).segment<3>(3 * index(Joint::Pelvis));
-    const double down = p.y() * c + p.z() * s, ahead = p.z() * c - p.y() * s;
-    sum += std::atan2(down, std::hypot(p.x(), ahead));
-  }
-  return sum / static_cast<double>(inCamera.rows()) * 180.0 / std::numbers::pi;
-}
-
 // How far below the walker's pelvis at mid-clip the clip's camera has its principal point, in
 // the walker's image heights (positive: the walker is above the picture's centre).
 double framingOffsetOfHeight(const Clip& clip) {
@@ -324,7 +310,7 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
   row.distanceRelError = std::abs(row.walkerDistanceM - row.trueWalkerDistanceM) / row.trueWalkerDistanceM;
   scoreMeasuresAndTheirSds(w, clip, o, fit, height, row);
   row.trueViewElevationDeg = viewElevationDeg(trueCamera, clip.camera.elevationDeg);
-  row.viewElevationDeg = viewElevationDeg(camera, fit.camera.elevationDeg);
+  row.viewElevationDeg = fit.viewElevationDeg;
   row.viewElevationErrorDeg = std::abs(row.viewElevationDeg - row.trueViewElevationDeg);
   for (Eigen::Index frame = 0; frame < camera.rows(); ++frame)
     out.guideMm.push_back(Eigen::Map<const Eigen::Matrix<double, 3, kJointCount>>(camera.row(frame).eval().data()));

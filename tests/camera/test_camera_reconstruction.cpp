@@ -83,6 +83,22 @@ TEST(WalkCamera, ProjectsThePinholeEquations) {
   EXPECT_NEAR(tilted(0, 2 * index(Joint::Head) + 1), 540 + 1000 * yc / zc, 1e-9);
 }
 
+// The angle the camera sees the pelvis from: the tilt for a pelvis on the optical axis, zero for
+// one at the camera's height, and the tilt less the pelvis's angle above the axis between.
+TEST(WalkCamera, ViewElevationIsTheTiltLessTheAngleAboveTheAxis) {
+  MatrixXd inCamera = MatrixXd::Zero(1, 45);
+  const int p = 3 * index(Joint::Pelvis);
+  inCamera(0, p + 2) = 5000;  // on the axis, 5 m ahead
+  EXPECT_NEAR(viewElevationDeg(inCamera, 20.0), 20.0, 1e-9);
+  inCamera(0, p + 1) = -5000 * std::tan(20.0 * std::numbers::pi / 180);  // level with the camera
+  EXPECT_NEAR(viewElevationDeg(inCamera, 20.0), 0.0, 1e-9);
+  inCamera(0, p + 1) = -500;  // above the axis by atan(500 / 5000)
+  inCamera(0, p) = 800;       // and beside it: the angle is to the horizontal, not the axis
+  const double down = -500 * std::cos(0.2) + 5000 * std::sin(0.2), ahead = 5000 * std::cos(0.2) + 500 * std::sin(0.2);
+  EXPECT_NEAR(viewElevationDeg(inCamera, 0.2 * 180 / std::numbers::pi),
+              std::atan2(down, std::hypot(800.0, ahead)) * 180 / std::numbers::pi, 1e-9);
+}
+
 TEST(CameraReconstruction, RecoversAPinholeCameraExactly) {
   const Scene s = filmed(test::crossingPinhole(1500, 5.0));
   CameraFitOptions o = lsq();
@@ -93,6 +109,8 @@ TEST(CameraReconstruction, RecoversAPinholeCameraExactly) {
   EXPECT_NEAR(fit.camera.distanceMm, 6000, 1e-3 * 6000);
   EXPECT_NEAR(fit.camera.speedMmS, 1300, 1e-3 * 1300);
   EXPECT_NEAR(fit.camera.lookAtHeightMm, 900, 1e-3 * 900);
+  EXPECT_NEAR(fit.viewElevationDeg, viewElevationDeg(walkInCameraFrame(s.frames, s.times, test::crossingPinhole(1500, 5.0)), 12.0),
+              1e-3);
   expectSameWalk(fit, s);
 }
 

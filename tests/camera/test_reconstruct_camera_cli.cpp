@@ -114,6 +114,7 @@ TEST(ReconstructCameraCli, AGivenStatureScalesTheFitNotTheImage) {
   EXPECT_NEAR(given["speed_mps"].get<double>(), s * free["speed_mps"].get<double>(), 1e-6);
   EXPECT_NEAR(given["stride_length_m"].get<double>(), s * free["stride_length_m"].get<double>(), 1e-6);
   EXPECT_NEAR(given["alpha_deg"].get<double>(), free["alpha_deg"].get<double>(), 1e-9);
+  EXPECT_NEAR(given["view_elevation_deg"].get<double>(), free["view_elevation_deg"].get<double>(), 1e-9);
   EXPECT_NEAR(given["reprojection_rms_px"].get<double>(), free["reprojection_rms_px"].get<double>(), 1e-9);
   // The scale no longer open: the stature is sure, and the stride and the speed surer than they
   // were (the fit's SDs conditioned on the stature), as shares of their values: measured 5.0 %
