@@ -312,7 +312,8 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
       "  camera_wide.csv    the camera experiment widened (issue 55; --experiment camera-wide only): the\n"
       "                     eigenwalker alone at 2 px, one factor changed at a time (clip length in strides,\n"
       "                     walker height in px, speed, layout, fps, elevation, image size known, where the\n"
-      "                     camera aims, focal length known) and all at their hardest;\n"
+      "                     camera aims, focal length known, points off the picture dropped) and all at\n"
+      "                     their hardest;\n"
       "                     camera_wide_summary.csv per factor and level: refusals, MPJPE, the camera's\n"
       "                     elevation, the walker's view elevation and the distance errors (--factor\n"
       "                     narrows, --cameras per walker; docs/CAMERA.md)\n"
@@ -371,7 +372,7 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
                   "Experiment 'camera-wide': the factors to run beside the base (repeat or comma-separate; "
                   "default all)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "focal", "hardest"}));
+      ->check(CLI::IsMember({"length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "focal", "edge", "hardest"}));
   cmd->add_option("--method", args->method, "lsq, map or both")
       ->check(CLI::IsMember({"lsq", "map", "both"}))->capture_default_str();
   cmd->add_option("--sigma2", args->sigma2Mm2, "MAP noise variance in mm^2 (default: the sigma-sweep optimum)")

@@ -185,6 +185,15 @@ Clip filmWalker(const ExperimentWalker& w, const CameraExperimentOptions& o, con
                                                 std::to_string(minStrides) + " strides");
 }
 
+// A point off the picture is one no detector reports: its confidence set to 0 (missing).
+void dropOffPicture(const MatrixXd& px, double imageW, double imageH, MatrixXd& confidence) {
+  for (Eigen::Index f = 0; f < px.rows(); ++f)
+    for (int j = 0; j < kJointCount; ++j) {
+      const double u = px(f, 2 * j), v = px(f, 2 * j + 1);
+      if (!(u >= 0.0 && u < imageW && v >= 0.0 && v < imageH)) confidence(f, j) = 0.0;
+    }
+}
+
 // Someone standing still: the walker's first pose, smaller, elsewhere in the image.
 MatrixXd bystander(const MatrixXd& px, double imageW, std::mt19937& rng) {
   std::uniform_real_distribution<double> uni(0.0, 1.0);
@@ -557,6 +566,7 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
       MatrixXd confidence = MatrixXd::Constant(observed.rows(), kJointCount, 0.9);
       for (Eigen::Index i = 0; i < confidence.size(); ++i)
         if (uni(rng) < o.dropShare) confidence.data()[i] = 0.1;
+      if (o.offPictureDropped) dropOffPicture(observed, clip.imageW, clip.imageH, confidence);
       CameraRow& row = rows[static_cast<std::size_t>(j) * levels + l];
       row.subject = w.subject;
       row.walker = w.id;
@@ -701,6 +711,11 @@ std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOpti
          o.focalKnown = true;
          o.clipStrides = 1.2;
        }},
+      {"edge", "points off the picture dropped", [](CameraExperimentOptions& o) { o.offPictureDropped = true; }},
+      {"edge", "points off the picture dropped, 1.2 strides", [](CameraExperimentOptions& o) {
+         o.offPictureDropped = true;
+         o.clipStrides = 1.2;
+       }},
       {"hardest", "1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17, 25 fps, 0-35 deg", hardest},
       {"hardest", "the same, image size known", [&](CameraExperimentOptions& o) {
          hardest(o);
@@ -709,6 +724,10 @@ std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOpti
       {"hardest", "the same, focal length known", [&](CameraExperimentOptions& o) {
          hardest(o);
          o.focalKnown = true;
+       }},
+      {"hardest", "the same, points off the picture dropped", [&](CameraExperimentOptions& o) {
+         hardest(o);
+         o.offPictureDropped = true;
        }},
   };
   const auto firstWord = [](const std::string& f) { return f.substr(0, f.find(' ')); };

@@ -85,6 +85,10 @@ struct CameraExperimentOptions {
   // The fit given the camera's focal length (a calibration, a phone's metadata, `--focal-px`):
   // the distance then rests on the walker's size instead of on the perspective.
   bool focalKnown = false;
+  // A real detector reports no point off its picture: such points (after the noise) are then
+  // written with confidence 0, which the reader takes as missing. false: every point is written,
+  // off the picture or not, as the experiment has always done.
+  bool offPictureDropped = false;
   // The height of the point the camera looks at (where the walker passes mid-clip), uniform
   // (mm); equal, no draw: the clip above, aimed at 1 m (about the walker's pelvis).
   double minLookAtHeightMm = 1000.0, maxLookAtHeightMm = 1000.0;
@@ -189,9 +193,11 @@ struct CameraWideCondition {
 // The conditions over `base` (its seed, noise, threads, σ² …): the base, then per factor its
 // levels (length 3 / 2 / 1.5 / 1.2 strides; height 400 / 240 / 160 / 120 px; speed
 // 1.5-2.0 m/s with the cadence taking half; COCO-17; 25 fps; elevation 0-35° and 20-35°;
-// the image's size known; the camera aimed 0-2 m high), then "all hardest" (1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17,
-// 25 fps, 0-35°, image unknown). `factors` keeps only the factors named (their first word:
-// "length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "hardest");
+// the image's size known; the camera aimed 0-2 m high; the focal length known; points off the
+// picture dropped), then "all hardest" (1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17, 25 fps,
+// 0-35°, image unknown; and with the image, the focal length, or the edge). `factors` keeps only
+// the factors named (their first word: "length", "height", "speed", "layout", "fps",
+// "elevation", "image", "aim", "focal", "edge", "hardest");
 // empty: all. Error(BadArgument) naming an unknown factor.
 std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOptions& base,
                                                       const std::vector<std::string>& factors = {});

@@ -193,6 +193,22 @@ std::string stillPelvis(double travelShare, double sizeChange) {
 
 }  // namespace
 
+// The first and the last frame where the pelvis and both ankles are seen (the whole clip when
+// none is): the feet are read between them. Filled beyond them, an ankle would stand still
+// while the pelvis moves on — a walker whose feet enter the picture late read as no strikes.
+std::pair<Eigen::Index, Eigen::Index> feetSeenSpan(const KeypointTrial& t) {
+  const auto seen = [&](Eigen::Index f) {
+    for (Joint j : {Joint::Pelvis, Joint::RAnkle, Joint::LAnkle})
+      if (!t.jointsPx.block<1, 2>(f, 2 * index(j)).allFinite()) return false;
+    return true;
+  };
+  Eigen::Index first = 0, last = t.jointsPx.rows() - 1;
+  while (first < last && !seen(first)) ++first;
+  while (last > first && !seen(last)) --last;
+  if (first >= last) return {0, t.jointsPx.rows() - 1};
+  return {first, last};
+}
+
 ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStrideHz) {
   ImageGait g;
   const double height = std::max(t.people.at(static_cast<std::size_t>(t.chosen)).sizePx, 1.0);
@@ -216,10 +232,13 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
     if (!swing) notWalking(t, prefix + "the ankles do not swing about the pelvis (as on a treadmill)");
     g.direction = *swing;
   }
-  // The leads as the forward coordinate of canonical frames, so the 3D strike finder applies.
-  Eigen::MatrixXd frames = Eigen::MatrixXd::Zero(t.jointsPx.rows(), 3 * kJointCount);
+  // The leads as the forward coordinate of canonical frames, so the 3D strike finder applies,
+  // over the frames where the feet are seen (strike times then counted from the clip's start).
+  const auto [first, last] = feetSeenSpan(t);
+  const Eigen::Index count = last - first + 1;
+  Eigen::MatrixXd frames = Eigen::MatrixXd::Zero(count, 3 * kJointCount);
   for (Joint j : {Joint::Pelvis, Joint::RAnkle, Joint::LAnkle}) {
-    frames.col(3 * index(j) + 1) = t.jointsPx.middleCols<2>(2 * index(j)) * g.direction;
+    frames.col(3 * index(j) + 1) = t.jointsPx.middleRows(first, count).middleCols<2>(2 * index(j)) * g.direction;
     // Every sample filled: one missed ankle must not hide a strike.
     fillAllGapsLinearly(frames.col(3 * index(j) + 1));
   }
@@ -236,13 +255,17 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
                         fixed(std::isfinite(hi - lo) ? (hi - lo) / height : 0.0, 2) +
                         " of the walker's height about the pelvis (walking: > " + fixed(minLead, 2) + ")");
   }
-  g.rightStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Right);
-  g.leftStrikesS = footStrikesFromKinematics(frames, t.rateHz, Side::Left);
+  const double firstS = static_cast<double>(first) / t.rateHz;
+  for (const auto& [side, strikes] : {std::pair{Side::Right, &g.rightStrikesS}, std::pair{Side::Left, &g.leftStrikesS}}) {
+    *strikes = footStrikesFromKinematics(frames, t.rateHz, side);
+    for (double& s : *strikes) s += firstS;
+  }
   const double durationS = static_cast<double>(t.frameCount) / t.rateHz;
+  const double feetSeenS = static_cast<double>(count) / t.rateHz;
   // The readings of a stride and a bit, for a walker who travels: across the picture, or
   // nearing or leaving the camera at a steady rate.
   const bool travels = crosses || (!g.inPlace && steadySizeChange(t) >= kMinSteadySizeChange);
-  g.strikesStrideHz = strideHz(g.rightStrikesS, g.leftStrikesS, travels ? durationS : INFINITY);
+  g.strikesStrideHz = strideHz(g.rightStrikesS, g.leftStrikesS, travels ? feetSeenS : INFINITY);
   if (travels && (g.strikesStrideHz < kMinStrideHz || g.strikesStrideHz > kMaxStrideHz))
     g.strikesStrideHz = ankleLeadsStrideHz(frames.col(3 * index(Joint::RAnkle) + 1) - frames.col(3 * index(Joint::LAnkle) + 1),
                                            t.rateHz)

@@ -99,6 +99,27 @@ TEST(ImageGait, StrideFrequencyOfAWalkerCrossingTheImage) {
   }
 }
 
+// Feet that enter the picture late (the walker's lower legs below its edge for the first
+// 1.5 s): the strikes are read where the feet are seen, at the same times as with them seen
+// throughout. Before, the ankles held still at their first sighting read as no strikes at all
+// ("not walking: no regular foot strikes (0 right, 0 left)"; the widened experiment's `edge`).
+TEST(ImageGait, FeetSeenLateStillGiveTheStrikes) {
+  const Clip clip = meanWalkerClip("gait_feet_late", 90.0, 1300, 5.0);
+  const KeypointTrial whole = readKeypointTrial(clip.folder, at30Fps());
+  KeypointTrial late = whole;
+  for (Joint j : {Joint::RAnkle, Joint::LAnkle, Joint::RKnee, Joint::LKnee})
+    late.jointsPx.block(0, 2 * index(j), 45, 2).setConstant(kNaN);
+  const ImageGait g = imageGaitCycles(late), all = imageGaitCycles(whole);
+  EXPECT_NEAR(g.strideHz, clip.strideHz, 0.03 * clip.strideHz);
+  ASSERT_GE(g.rightStrikesS.size(), 2u);
+  EXPECT_GE(g.rightStrikesS.front(), 45.0 / kFps);
+  for (double strike : g.rightStrikesS) {  // each one of the whole clip's, within a frame
+    double nearest = INFINITY;
+    for (double s : all.rightStrikesS) nearest = std::min(nearest, std::abs(s - strike));
+    EXPECT_LE(nearest, 1.0 / kFps + 1e-9) << strike;
+  }
+}
+
 // The trunk bobs once a step: its frequency halved is the stride's, from behind, at 45° and
 // in profile (within 2 %: the bob is not a pure sinusoid over a few cycles); with both
 // ankles lost the feet can no longer say it, the trunk still does. A still person has no bob.
