@@ -191,23 +191,33 @@ std::string stillPelvis(double travelShare, double sizeChange) {
          " (walking towards or away from the camera: > " + fixed(100.0 * kMaxInPlaceSizeChange, 0) + " %)";
 }
 
-}  // namespace
+// Frames at the clip's ends where the pelvis or an ankle is unseen, over this long, are left
+// out of the feet's reading: filled, each ankle would stand where it was first or last seen
+// while the pelvis moves on (a walker whose feet enter the picture late read as no strikes at
+// all). A shorter run (a point the detector missed now and then) is filled as gaps inside are:
+// a strike at the clip's very end still counts.
+constexpr double kMaxFilledEndS = 0.1;
 
-// The first and the last frame where the pelvis and both ankles are seen (the whole clip when
-// none is): the feet are read between them. Filled beyond them, an ankle would stand still
-// while the pelvis moves on — a walker whose feet enter the picture late read as no strikes.
+// The frames the feet are read over: the whole clip less its ends' runs of unseen pelvis or
+// ankles longer than kMaxFilledEndS (the whole clip when nothing would be left).
 std::pair<Eigen::Index, Eigen::Index> feetSeenSpan(const KeypointTrial& t) {
   const auto seen = [&](Eigen::Index f) {
     for (Joint j : {Joint::Pelvis, Joint::RAnkle, Joint::LAnkle})
       if (!t.jointsPx.block<1, 2>(f, 2 * index(j)).allFinite()) return false;
     return true;
   };
-  Eigen::Index first = 0, last = t.jointsPx.rows() - 1;
+  const Eigen::Index n = t.jointsPx.rows();
+  Eigen::Index first = 0, last = n - 1;
   while (first < last && !seen(first)) ++first;
   while (last > first && !seen(last)) --last;
-  if (first >= last) return {0, t.jointsPx.rows() - 1};
+  if (first >= last) return {0, n - 1};
+  const double maxFilled = kMaxFilledEndS * t.rateHz;
+  if (static_cast<double>(first) <= maxFilled) first = 0;
+  if (static_cast<double>(n - 1 - last) <= maxFilled) last = n - 1;
   return {first, last};
 }
+
+}  // namespace
 
 ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStrideHz) {
   ImageGait g;
