@@ -114,6 +114,17 @@ TEST(CameraExperiment, OptionsAreChecked) {
   expectBad(o, "elevations");
 }
 
+// The eigenwalker alone at 2 px, as the widened experiment runs it, at the synthetic walkers' σ².
+CameraExperimentOptions eigenwalkerAloneAt2Px(int camerasPerWalker) {
+  CameraExperimentOptions o;
+  o.camerasPerWalker = camerasPerWalker;
+  o.noisePx = {2.0};
+  o.threads = 2;
+  o.sigma2Mm2 = 70.0;
+  o.skeleton = o.snippet = false;
+  return o;
+}
+
 // The widened experiment's hardest clips (issue 55): a stride and a bit (1.2), the walker
 // 120 px tall, walking fast, written as AlphaPose COCO-17 (no neck, no mid-hip) at 25 fps,
 // the camera up to 35° above. Each factor shapes the clip as asked, and the fit answers every
@@ -124,12 +135,7 @@ TEST(CameraExperiment, OptionsAreChecked) {
 TEST(CameraExperiment, TheHardestWideClipsAreReconstructed) {
   const auto walkers = syntheticWalkers(5);
   const auto folds = buildFolds(walkers, ModelOptions{}, 2);
-  CameraExperimentOptions base;
-  base.camerasPerWalker = 1;
-  base.noisePx = {2.0};
-  base.threads = 2;
-  base.sigma2Mm2 = 70.0;
-  base.skeleton = base.snippet = false;
+  const CameraExperimentOptions base = eigenwalkerAloneAt2Px(1);
   const auto conditions = cameraWideConditions(base, {"hardest"});
   ASSERT_EQ(conditions.size(), 5u);  // the base and the hardest: as it is, image, focal length, edge
   const CameraExperimentOptions& o = conditions[1].options;
@@ -183,12 +189,7 @@ TEST(CameraExperiment, TheHardestWideClipsAreReconstructed) {
 TEST(CameraExperiment, PointsOffThePictureCanBeDropped) {
   const auto walkers = syntheticWalkers(4);
   const auto folds = buildFolds(walkers, ModelOptions{}, 2);
-  CameraExperimentOptions o;
-  o.camerasPerWalker = 2;
-  o.noisePx = {2.0};
-  o.threads = 2;
-  o.sigma2Mm2 = 70.0;
-  o.skeleton = o.snippet = false;
+  CameraExperimentOptions o = eigenwalkerAloneAt2Px(2);
   const auto offPicture = [&](bool dropped) {
     o.offPictureDropped = dropped;
     o.keepClipsDir = test::makeTempDir(dropped ? "edge_dropped" : "edge_kept");
