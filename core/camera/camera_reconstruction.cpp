@@ -489,11 +489,12 @@ void fillOutputs(const Problem& p, const VectorXd& t, CameraFit& fit) {
   fit.w = walkerOf(p, t);
   fit.omegaRadS = t[p.layout.omega()];
   fit.phaseRad = t[p.layout.phase()];
-  const MatrixXd image = imageOf(p, t);
+  const MatrixXd frames = framesOf(p, t);
+  const MatrixXd image = projectWalk(frames, p.timesS, fit.camera);
   double sq = 0.0;
   for (int i : p.seen) sq += std::pow(image.data()[i] - p.observed.data()[i], 2);
   fit.reprojectionRmsPx = std::sqrt(sq / static_cast<double>(p.seen.size()));
-  fit.viewElevationDeg = viewElevationDeg(walkInCameraFrame(framesOf(p, t), p.timesS, fit.camera), fit.camera.elevationDeg);
+  fit.viewElevationDeg = viewElevationDeg(walkInCameraFrame(frames, p.timesS, fit.camera), fit.camera.elevationDeg);
   fit.headHeightMm = walkerHeadHeightMm(fit.w);
   fit.statureMm = statureFromHeadAboveAnklesMm(fit.headHeightMm);
   fit.strideHz = fit.omegaRadS / (2 * std::numbers::pi);
