@@ -121,8 +121,9 @@ std::optional<double> ankleLeadsStrideHz(const Eigen::VectorXd& rightMinusLeft, 
 // variance) than across it, or there is no swing to read a direction from.
 constexpr double kMinSwingAnisotropy = 1.3;
 
-// Each ankle's offset from the pelvis over the frames where both are seen.
-std::vector<std::vector<Eigen::Vector2d>> ankleLeads(const KeypointTrial& t) {
+// Each ankle's offset from the pelvis over the frames where both are seen, times the frame's
+// `scale` (steadySizeScale).
+std::vector<std::vector<Eigen::Vector2d>> ankleLeads(const KeypointTrial& t, const Eigen::VectorXd& scale) {
   std::vector<std::vector<Eigen::Vector2d>> leads(2);
   const Eigen::Index pelvis = 2 * index(Joint::Pelvis);
   for (Eigen::Index f = 0; f < t.jointsPx.rows(); ++f) {
@@ -130,7 +131,7 @@ std::vector<std::vector<Eigen::Vector2d>> ankleLeads(const KeypointTrial& t) {
     for (int side = 0; side < 2; ++side) {
       const Joint ankle = side == 0 ? Joint::RAnkle : Joint::LAnkle;
       const Eigen::Vector2d a = t.jointsPx.block<1, 2>(f, 2 * index(ankle)).transpose();
-      leads[static_cast<std::size_t>(side)].push_back(a.allFinite() && p.allFinite() ? Eigen::Vector2d(a - p)
+      leads[static_cast<std::size_t>(side)].push_back(a.allFinite() && p.allFinite() ? Eigen::Vector2d(scale[f] * (a - p))
                                                                                    : Eigen::Vector2d::Constant(NAN));
     }
   }
@@ -142,8 +143,8 @@ std::vector<std::vector<Eigen::Vector2d>> ankleLeads(const KeypointTrial& t) {
 // pointing the way they move for the shorter part of the time (a foot swings forward in about
 // 40 % of a stride and is carried back in the rest). Unset when the ankles are seen too little
 // or move no way more than another.
-std::optional<Eigen::Vector2d> ankleSwingDirection(const KeypointTrial& t) {
-  const auto leads = ankleLeads(t);
+std::optional<Eigen::Vector2d> ankleSwingDirection(const KeypointTrial& t, const Eigen::VectorXd& scale) {
+  const auto leads = ankleLeads(t, scale);
   Eigen::Matrix2d scatter = Eigen::Matrix2d::Zero();
   int samples = 0;
   for (const auto& side : leads) {
@@ -217,6 +218,46 @@ std::pair<Eigen::Index, Eigen::Index> feetSeenSpan(const KeypointTrial& t) {
   return {first, last};
 }
 
+// A walker nearing or leaving the camera grows or shrinks in the image, and the feet's swing
+// with it. Read raw, the strides near the camera dwarf the far ones and the strike finder,
+// whose threshold is a share of the largest lead, finds only the near ones (a walker coming
+// from 8 m to the camera, 216 px to 2168 px tall, read as 2 right and 1 left strike in 9 s).
+// So each frame's positions are read scaled to the walker's size at `referencePx`: the inverse
+// of its image height is a line in time for a walk at a steady speed (imageDepthLine), which
+// leaves out the steps' bob of the height. All ones when there is no such line, or when it
+// changes less than kMaxInPlaceSizeChange over the clip (a walker crossing the picture).
+Eigen::VectorXd steadySizeScale(const KeypointTrial& t, double referencePx) {
+  const Eigen::Index n = t.jointsPx.rows();
+  const Eigen::VectorXd times = Eigen::VectorXd::LinSpaced(n, 0.0, static_cast<double>(n - 1) / t.rateHz);
+  const std::optional<Eigen::Vector2d> inverseHeight = n >= 2 ? imageDepthLine(t.jointsPx, times) : std::nullopt;
+  if (!inverseHeight) return Eigen::VectorXd::Ones(n);
+  const Eigen::ArrayXd inverse = (*inverseHeight)[0] + (*inverseHeight)[1] * times.array();
+  if (std::abs(inverse[n - 1] / inverse[0] - 1.0) < kMaxInPlaceSizeChange) return Eigen::VectorXd::Ones(n);
+  return (referencePx * inverse).matrix();
+}
+
+// A walker whose size in the picture changes more than this many times over the clip walks
+// mostly along the camera's line of sight. The pelvis then travels towards or away from the
+// walk's vanishing point, and perspective moves it across the picture too (a walker seen from
+// 5° off behind, crossing 2.5 of its heights as it comes up to the camera); the feet, below
+// it, swing along their own lines to that point, steeper in the picture: their swing is read
+// along its own axis, as when the pelvis does not cross the picture.
+constexpr double kMaxSizeRatioOfACrossing = 2.0;
+
+// Scaled to the walker's size (steadySizeScale), an ankle's offset from the pelvis keeps its
+// height in the picture, but a step along the line of sight is foreshortened as well as shrunk
+// with the distance: its image is as one over the distance squared. So each lead less its mean
+// is scaled once more, leaving the pelvis at zero. `frames`: leads along the swing, scaled once.
+void evenSightLineSwing(Eigen::MatrixXd& frames, const Eigen::VectorXd& scale) {
+  const Eigen::Index pelvis = 3 * index(Joint::Pelvis) + 1;
+  for (Joint ankle : {Joint::RAnkle, Joint::LAnkle}) {
+    const Eigen::Index col = 3 * index(ankle) + 1;
+    const Eigen::VectorXd lead = frames.col(col) - frames.col(pelvis);
+    frames.col(col) = ((lead.array() - lead.mean()) * scale.array()).matrix();
+  }
+  frames.col(pelvis).setZero();
+}
+
 }  // namespace
 
 ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStrideHz) {
@@ -231,10 +272,15 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
   // A walker not crossing the picture is first told what it does instead, then why that is
   // not walking either.
   const std::string prefix = crosses ? std::string() : stillPelvis(g.travelPx / height, sizeChange) + ", and ";
+  const double sizeRatio = extentAtEnd(t, true) / extentAtEnd(t, false);
+  const bool alongTheSightLine = std::max(sizeRatio, 1.0 / sizeRatio) > kMaxSizeRatioOfACrossing;
+  const Eigen::VectorXd scale = steadySizeScale(t, height);
+  const std::optional<Eigen::Vector2d> swingWhileCrossing =
+      crosses && alongTheSightLine ? ankleSwingDirection(t, scale) : std::nullopt;
   if (crosses) {
-    g.direction = travel / g.travelPx;
+    g.direction = swingWhileCrossing.value_or(travel / g.travelPx);
   } else {
-    std::optional<Eigen::Vector2d> swing = ankleSwingDirection(t);
+    std::optional<Eigen::Vector2d> swing = ankleSwingDirection(t, scale);
     // Too short a clip to read a swing from, but the walker grows or shrinks: towards the
     // camera the feet come down the image, away from it they go up.
     if (!swing && sizeChange > kMaxInPlaceSizeChange)
@@ -265,6 +311,8 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
                         fixed(std::isfinite(hi - lo) ? (hi - lo) / height : 0.0, 2) +
                         " of the walker's height about the pelvis (walking: > " + fixed(minLead, 2) + ")");
   }
+  for (Eigen::Index r = 0; r < count; ++r) frames.row(r) *= scale[first + r];
+  if (alongTheSightLine) evenSightLineSwing(frames, scale.segment(first, count));
   const double firstS = static_cast<double>(first) / t.rateHz;
   for (const auto& [side, strikes] : {std::pair{Side::Right, &g.rightStrikesS}, std::pair{Side::Left, &g.leftStrikesS}}) {
     *strikes = footStrikesFromKinematics(frames, t.rateHz, side);
