@@ -29,10 +29,10 @@ namespace {
 using nlohmann::json;
 
 // " ± 0.05" for a measured SD (two decimals, as the values beside it), "" for null.
-std::string plusMinus(const json& sd) {
+std::string plusMinus(const json& sd, int decimals = 2) {
   if (!sd.is_number() || sd.get<double>() == 0.0) return "";  // none, or given (a known stature)
-  char text[32];
-  std::snprintf(text, sizeof text, " ± %.2f", sd.get<double>());
+  char text[40];
+  std::snprintf(text, sizeof text, " ± %.*f", decimals, sd.get<double>());
   return text;
 }
 
@@ -83,7 +83,14 @@ json reportJson(const CameraArgs& a, const CameraKnowledge& camera, const Keypoi
           {"elevation_source", camera.elevationSource},
           {"focal_px", pinhole ? json(c.focalPx) : json(nullptr)},
           {"focal_source", pinhole ? json(camera.focalSource) : json(nullptr)},
+          {"alpha_sd_deg", finiteOrNull(fit.sd.alphaDeg)},
+          {"elevation_sd_deg", finiteOrNull(fit.sd.elevationDeg)},
+          {"focal_sd_px", finiteOrNull(fit.sd.focalPx)},
           {"distance_m", pinhole ? json(c.distanceMm / 1000.0) : json(nullptr)},
+          {"walker_distance_m", finiteOrNull(fit.walkerDistanceM)},
+          {"walker_distance_sd_m", finiteOrNull(fit.sd.walkerDistanceM)},
+          {"walker_distance_first_m", finiteOrNull(fit.walkerDistanceFirstM)},
+          {"walker_distance_last_m", finiteOrNull(fit.walkerDistanceLastM)},
           {"px_per_mm", pinhole ? json(nullptr) : json(c.pxPerMm)},
           {"image_centre_px", {c.cxPx, c.cyPx}},
           {"reprojection_rms_px", fit.reprojectionRmsPx},
@@ -111,13 +118,15 @@ void printSummary(const json& r) {
             << r["layout"].get<std::string>() << " (" << r["layout_source"].get<std::string>()
             << "); " << r["person"].get<std::string>() << "\n";
   std::cerr << "camera (" << r["camera_model"].get<std::string>() << "): azimuth "
-            << r["alpha_deg"].get<double>() << " deg, elevation "
-            << r["elevation_deg"].get<double>() << " deg (the walker seen from "
+            << r["alpha_deg"].get<double>() << plusMinus(r["alpha_sd_deg"], 1) << " deg, elevation "
+            << r["elevation_deg"].get<double>() << plusMinus(r["elevation_sd_deg"], 1) << " deg (the walker seen from "
             << std::abs(r["view_elevation_deg"].get<double>()) << " deg "
             << (r["view_elevation_deg"].get<double>() >= 0.0 ? "above" : "below") << ")";
-  if (r["distance_m"].is_number())
-    std::cerr << ", distance " << std::setprecision(2) << r["distance_m"].get<double>()
-              << " m, focal " << std::setprecision(0) << r["focal_px"].get<double>() << " px ("
+  if (r["walker_distance_m"].is_number())
+    std::cerr << ", the walker " << std::setprecision(1) << r["walker_distance_first_m"].get<double>() << " to "
+              << r["walker_distance_last_m"].get<double>() << " m away (mean " << std::setprecision(2)
+              << r["walker_distance_m"].get<double>() << plusMinus(r["walker_distance_sd_m"]) << " m), focal "
+              << std::setprecision(0) << r["focal_px"].get<double>() << plusMinus(r["focal_sd_px"], 0) << " px ("
               << r["focal_source"].get<std::string>() << ")";
   if (r["camera_model"] == "pinhole")
     std::cerr << ", principal point prior: " << r["principal_point_prior"].get<std::string>();

@@ -483,6 +483,11 @@ VectorXd startTheta(const Problem& p, const OrthoStart& s, const Reconstruction&
   return t;
 }
 
+// The pelvis's distance from the camera in each frame of a walk in the camera's frame, mm.
+VectorXd pelvisDistancesMm(const MatrixXd& inCamera) {
+  return inCamera.middleCols<3>(3 * index(Joint::Pelvis)).rowwise().norm();
+}
+
 void fillOutputs(const Problem& p, const VectorXd& t, CameraFit& fit) {
   fit.camera = cameraOf(p, t);
   fit.k = t.head(p.layout.n);
@@ -494,7 +499,14 @@ void fillOutputs(const Problem& p, const VectorXd& t, CameraFit& fit) {
   double sq = 0.0;
   for (int i : p.seen) sq += std::pow(image.data()[i] - p.observed.data()[i], 2);
   fit.reprojectionRmsPx = std::sqrt(sq / static_cast<double>(p.seen.size()));
-  fit.viewElevationDeg = viewElevationDeg(walkInCameraFrame(frames, p.timesS, fit.camera), fit.camera.elevationDeg);
+  const MatrixXd inCamera = walkInCameraFrame(frames, p.timesS, fit.camera);
+  fit.viewElevationDeg = viewElevationDeg(inCamera, fit.camera.elevationDeg);
+  if (p.layout.pinhole) {
+    const VectorXd pelvis = pelvisDistancesMm(inCamera);
+    fit.walkerDistanceM = pelvis.mean() / 1000.0;
+    fit.walkerDistanceFirstM = pelvis[0] / 1000.0;
+    fit.walkerDistanceLastM = pelvis[pelvis.size() - 1] / 1000.0;
+  }
   fit.headHeightMm = walkerHeadHeightMm(fit.w);
   fit.statureMm = statureFromHeadAboveAnklesMm(fit.headHeightMm);
   fit.strideHz = fit.omegaRadS / (2 * std::numbers::pi);
@@ -736,6 +748,37 @@ MatrixXd conditionedOn(const MatrixXd& cov, const VectorXd& g) {
   return var > 0.0 ? MatrixXd(cov - cg * cg.transpose() / var) : cov;
 }
 
+// The camera's SDs: the angles and the focal length are parameters; the walker's distance is
+// the mean over the clip of its pelvis's, whose gradient is taken by central differences over
+// every free parameter (the coefficients move the pelvis a little too). `statureGradient`: the
+// stature's over θ.
+void cameraUncertainty(const Problem& p, const VectorXd& theta, const MatrixXd& cov, const VectorXd& statureGradient,
+                       FitUncertainty& u) {
+  const Layout& l = p.layout;
+  u.alphaDeg = std::sqrt(std::max(0.0, cov(l.alpha(), l.alpha())));  // θ holds α and ε in degrees
+  u.elevationDeg = std::sqrt(std::max(0.0, cov(l.elevation(), l.elevation())));
+  if (!l.pinhole) return;
+  u.focalPx = l.focalFree ? std::exp(theta[l.logFocal()]) * std::sqrt(std::max(0.0, cov(l.logFocal(), l.logFocal()))) : 0.0;
+  const auto distanceMm = [&](const VectorXd& t) {
+    return pelvisDistancesMm(walkInCameraFrame(framesOf(p, t), p.timesS, cameraOf(p, t))).mean();
+  };
+  const VectorXd h = stepSizes(p, theta);
+  VectorXd g = VectorXd::Zero(theta.size());
+  for (Eigen::Index i = 0; i < theta.size(); ++i) {
+    if (l.fixed(i)) continue;
+    VectorXd up = theta, down = theta;
+    up[i] += h[i];
+    down[i] -= h[i];
+    g[i] = (distanceMm(up) - distanceMm(down)) / (2.0 * h[i]);
+  }
+  // The part of the distance's variance that its stature explains (the scale) is widened as the
+  // stature's SD is (kStatureSdWidening); the rest, mostly the focal length's, is not.
+  const double givenStature = sdOf(conditionedOn(cov, statureGradient), g);
+  const double scalePart = std::max(0.0, std::pow(sdOf(cov, g), 2) - givenStature * givenStature);
+  u.walkerDistanceM = std::sqrt(givenStature * givenStature + kStatureSdWidening * kStatureSdWidening * scalePart) / 1000.0;
+  u.walkerDistanceShareGivenStature = givenStature / distanceMm(theta);
+}
+
 FitUncertainty fitUncertainty(const Problem& p, const VectorXd& theta, const CameraFitOptions& o) {
   FitUncertainty u;
   if (p.priorWeight.size() == 0) return u;  // least squares: nothing bounds the scale
@@ -753,6 +796,7 @@ FitUncertainty fitUncertainty(const Problem& p, const VectorXd& theta, const Cam
             statureFromHeadAboveAnklesMm(walkerHeadHeightMm(walkerOf(p, down)))) / (2.0 * h);
   }
   u.statureMm = kStatureSdWidening * sdOf(*cov, g);
+  cameraUncertainty(p, theta, *cov, g, u);
   if (l.speedFixed) return u;
   const MatrixXd givenStature = conditionedOn(*cov, g);
   const double omega = theta[l.omega()], speed = theta[l.speed()];
@@ -769,6 +813,7 @@ FitUncertainty fitUncertainty(const Problem& p, const VectorXd& theta, const Cam
   u.strideShareGivenStature = sdOf(givenStature, s) / std::abs(strideM);
   return u;
 }
+
 
 }  // namespace
 

@@ -80,6 +80,14 @@ struct FitUncertainty {
   // (scaleToStature scales the walk and takes these).
   double speedShareGivenStature = std::numeric_limits<double>::quiet_NaN();
   double strideShareGivenStature = std::numeric_limits<double>::quiet_NaN();
+  // The camera: its azimuth and elevation (0 when given), its focal length (pinhole; 0 when
+  // given) and the walker's distance from it (pinhole: CameraFit::walkerDistanceM; the share is
+  // the distance's SD given the stature, as a share of the distance).
+  double alphaDeg = std::numeric_limits<double>::quiet_NaN();
+  double elevationDeg = std::numeric_limits<double>::quiet_NaN();
+  double focalPx = std::numeric_limits<double>::quiet_NaN();
+  double walkerDistanceM = std::numeric_limits<double>::quiet_NaN();
+  double walkerDistanceShareGivenStature = std::numeric_limits<double>::quiet_NaN();
 };
 
 // The stature's SD from the curvature alone is too narrow for a walker the model has not seen:
@@ -100,6 +108,13 @@ struct CameraFit {
   // clip: what the walker's image fixes, where the camera's elevation also rests on where its
   // principal point is (docs/CAMERA.md, "Framing").
   double viewElevationDeg = 0.0;
+  // How far the walker's pelvis is from a pinhole camera, mean over the clip, and at the clip's
+  // ends (m; NaN for scaled orthography). What a user means by "how far away": the camera's own
+  // distance is to its look-at point on the walk's line, which a walk along the line of sight
+  // barely fixes.
+  double walkerDistanceM = std::numeric_limits<double>::quiet_NaN();
+  double walkerDistanceFirstM = std::numeric_limits<double>::quiet_NaN();
+  double walkerDistanceLastM = std::numeric_limits<double>::quiet_NaN();
   double headHeightMm = 0.0;      // head centre above the mean of the two ankles, cycle mean
   double statureMm = 0.0;         // the stature that head height implies (core/gait/body_size.h)
   double strideHz = 0.0, speedMps = 0.0, strideLengthM = 0.0, cadenceStepsPerMin = 0.0;
@@ -107,7 +122,7 @@ struct CameraFit {
   // speedMps, strideLengthM are the belt's, from the stance feet of the fitted walk (NaN
   // when no full stride of it could be measured).
   bool inPlace = false;
-  FitUncertainty sd;                // 1 SD of the stature, the speed and the stride length
+  FitUncertainty sd;                // 1 SD of the measures and the camera
   std::vector<CameraStart> starts;  // every start, best first
   std::vector<int> unseenJoints;    // joints with no image data (estimated by the model)
 };

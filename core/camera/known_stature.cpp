@@ -34,6 +34,10 @@ void scaleToStature(ClipReconstruction& clip, double statureMm) {
   fit.sd.statureMm = 0.0;
   fit.sd.speedMps = fit.sd.speedShareGivenStature * fit.speedMps;
   fit.sd.strideLengthM = fit.sd.strideShareGivenStature * fit.strideLengthM;
+  fit.walkerDistanceM *= s;
+  fit.walkerDistanceFirstM *= s;
+  fit.walkerDistanceLastM *= s;
+  fit.sd.walkerDistanceM = fit.sd.walkerDistanceShareGivenStature * fit.walkerDistanceM;
   for (CameraStart& start : fit.starts) start.speedMmS *= s;
 }
 

@@ -257,6 +257,10 @@ void scoreMeasuresAndTheirSds(const ExperimentWalker& w, const Clip& clip, const
   row.strideLengthSdM = fit.sd.strideLengthM;
   row.strideGivenStatureM = fit.strideLengthM * row.trueStatureM / row.statureM;
   row.strideGivenStatureSdM = fit.sd.strideShareGivenStature * std::abs(row.strideGivenStatureM);
+  row.alphaSdDeg = fit.sd.alphaDeg;
+  row.elevationSdDeg = fit.sd.elevationDeg;
+  row.focalSdPx = fit.sd.focalPx;
+  row.walkerDistanceSdM = fit.sd.walkerDistanceM;
 }
 
 // The eigenwalker with everything unknown (the experiment's subject).
@@ -784,7 +788,7 @@ std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideR
     CameraWideSummary& s = out[g];
     std::vector<double> mpjpe, alpha, elevation, viewElevation, distance, height, strides;
     int elevationOver5 = 0, distanceOver20 = 0;
-    WithinTwoSds stature, speed, stride, strideGivenStature;
+    WithinTwoSds stature, speed, stride, strideGivenStature, alphaSd, elevationSd, focalSd, distanceSd;
     for (const CameraRow* r : groups[g]) {
       ++s.clips;
       height.push_back(r->walkerHeightPx);
@@ -802,6 +806,10 @@ std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideR
       speed.add(r->speedMps - r->trueSpeedMps, r->speedSdMps);
       stride.add(r->strideLengthM - r->trueStrideLengthM, r->strideLengthSdM);
       strideGivenStature.add(r->strideGivenStatureM - r->trueStrideLengthM, r->strideGivenStatureSdM);
+      alphaSd.add(r->alphaErrorDeg, r->alphaSdDeg);
+      elevationSd.add(r->elevationErrorDeg, r->elevationSdDeg);
+      focalSd.add(r->focalRelError * r->trueFocalPx, r->focalSdPx);
+      distanceSd.add(r->walkerDistanceM - r->trueWalkerDistanceM, r->walkerDistanceSdM);
       elevationOver5 += r->elevationErrorDeg > 5;
       distanceOver20 += r->distanceRelError > 0.2;
     }
@@ -818,6 +826,10 @@ std::vector<CameraWideSummary> summarizeCameraWide(const std::vector<CameraWideR
     s.speedWithin2SdShare = speed.share();
     s.strideWithin2SdShare = stride.share();
     s.strideGivenStatureWithin2SdShare = strideGivenStature.share();
+    s.alphaWithin2SdShare = alphaSd.share();
+    s.elevationWithin2SdShare = elevationSd.share();
+    s.focalWithin2SdShare = focalSd.share();
+    s.distanceWithin2SdShare = distanceSd.share();
     s.medianWalkerHeightPx = medianOf(height);
     s.medianStrides = medianOf(strides);
   }

@@ -135,6 +135,9 @@ struct CameraRow {
   double trueStrideLengthM = 0, strideLengthM = 0, strideLengthSdM = 0;
   // The fit's stride and SD had the true stature been given (scaleToStature's).
   double strideGivenStatureM = 0, strideGivenStatureSdM = 0;
+  // The SDs the fit gives its camera (CameraFit::sd): azimuth, elevation, focal length and the
+  // walker's distance (walkerDistanceM), beside the errors above.
+  double alphaSdDeg = 0, elevationSdDeg = 0, focalSdPx = 0, walkerDistanceSdM = 0;
   double strides = 0;         // the clip's length in the walker's strides
   double seconds = 0;       // the eigenwalker's wall time: fit through the unknown camera
   std::string error;        // empty: reconstructed; else why not (a failure)
@@ -222,6 +225,8 @@ struct CameraWideSummary {
   // Shares of the clips whose stature, speed or stride length is within 1.96 SD of the truth.
   double statureWithin2SdShare = 0, speedWithin2SdShare = 0, strideWithin2SdShare = 0;
   double strideGivenStatureWithin2SdShare = 0;
+  // The same for the camera: azimuth, elevation, focal length, the walker's distance.
+  double alphaWithin2SdShare = 0, elevationWithin2SdShare = 0, focalWithin2SdShare = 0, distanceWithin2SdShare = 0;
   double medianDistanceRelError = 0, elevationOver5Share = 0, distanceOver20Share = 0;
   double medianWalkerHeightPx = 0, medianStrides = 0;
 };

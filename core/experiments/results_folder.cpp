@@ -254,7 +254,8 @@ std::string cameraWideCsv(const std::vector<CameraWideRow>& rows) {
                  num(r.framingOffsetOfHeight), num(r.trueStatureM), num(r.statureM), num(r.statureSdM),
                  num(r.trueSpeedMps), num(r.speedMps), num(r.speedSdMps), num(r.trueStrideLengthM),
                  num(r.strideLengthM), num(r.strideLengthSdM), num(r.strideGivenStatureM),
-                 num(r.strideGivenStatureSdM), quotedCell(r.error)});
+                 num(r.strideGivenStatureSdM), num(r.alphaSdDeg), num(r.elevationSdDeg), num(r.focalSdPx),
+                 num(r.walkerDistanceSdM), quotedCell(r.error)});
   });
 }
 
@@ -265,7 +266,9 @@ std::string cameraWideSummaryCsv(const std::vector<CameraWideSummary>& rows) {
                  num(s.medianAlphaErrorDeg), num(s.medianElevationErrorDeg), num(s.medianViewElevationErrorDeg),
                  num(s.medianDistanceRelError),
                  num(s.elevationOver5Share), num(s.distanceOver20Share), num(s.statureWithin2SdShare),
-                 num(s.speedWithin2SdShare), num(s.strideWithin2SdShare), num(s.strideGivenStatureWithin2SdShare)});
+                 num(s.speedWithin2SdShare), num(s.strideWithin2SdShare), num(s.strideGivenStatureWithin2SdShare),
+                 num(s.alphaWithin2SdShare), num(s.elevationWithin2SdShare), num(s.focalWithin2SdShare),
+                 num(s.distanceWithin2SdShare)});
   });
 }
 

@@ -35,12 +35,13 @@ inline constexpr const char* kCameraWideHeader =
     "reprojection_rms_px,seconds,true_view_elevation_deg,view_elevation_deg,view_elevation_error_deg,"
     "framing_offset_of_height,true_stature_m,stature_m,stature_sd_m,true_speed_mps,speed_mps,speed_sd_mps,"
     "true_stride_length_m,stride_length_m,stride_length_sd_m,stride_length_given_stature_m,"
-    "stride_length_given_stature_sd_m,error";
+    "stride_length_given_stature_sd_m,alpha_sd_deg,elevation_sd_deg,focal_sd_px,walker_distance_sd_m,error";
 inline constexpr const char* kCameraWideSummaryHeader =
     "factor,level,clips,refusals,median_strides,median_walker_height_px,mean_mpjpe_mm,median_mpjpe_mm,"
     "median_alpha_error_deg,median_elevation_error_deg,median_view_elevation_error_deg,median_distance_rel_error,"
     "elevation_over_5deg_share,distance_over_20pct_share,stature_within_2sd_share,speed_within_2sd_share,"
-    "stride_within_2sd_share,stride_given_stature_within_2sd_share";
+    "stride_within_2sd_share,stride_given_stature_within_2sd_share,alpha_within_2sd_share,"
+    "elevation_within_2sd_share,focal_within_2sd_share,distance_within_2sd_share";
 
 inline constexpr const char* kSnippetEnginesHeader =
     "subject,clip,angle_deg,engine,frames,mpjpe_mm,depth_error_mm2,error,seconds";

@@ -127,7 +127,15 @@ TEST(ReconstructCameraCli, AGivenStatureScalesTheFitNotTheImage) {
   EXPECT_LT(share(given, "stride_length_sd_m", "stride_length_m"), 0.95 * share(free, "stride_length_sd_m", "stride_length_m"));
   EXPECT_LT(share(given, "speed_sd_mps", "speed_mps"), 0.95 * share(free, "speed_sd_mps", "speed_mps"));
   EXPECT_GT(given["stride_length_sd_m"].get<double>(), 0.0);
+  // The walker's distance scales with it and, its focal length given, rests on the walker's
+  // size: given the stature, it is far surer.
+  EXPECT_NEAR(given["walker_distance_m"].get<double>(), s * free["walker_distance_m"].get<double>(), 1e-6);
+  EXPECT_LT(share(given, "walker_distance_sd_m", "walker_distance_m"),
+            0.5 * share(free, "walker_distance_sd_m", "walker_distance_m"));
+  EXPECT_EQ(free["focal_sd_px"].get<double>(), 0.0);  // given
+  EXPECT_GT(free["alpha_sd_deg"].get<double>(), 0.0);
   EXPECT_NE(run.output.find("(stature about 1.95 m)"), std::string::npos) << run.output;  // no ± when given
+  EXPECT_NE(run.output.find(" m away (mean "), std::string::npos) << run.output;
   const test::ProgramRun wrong = reconstructAt1400Px(clip, {"--stature", "175"});  // cm for m
   EXPECT_NE(wrong.exitCode, 0);
   EXPECT_NE(wrong.output.find("--stature"), std::string::npos) << wrong.output;

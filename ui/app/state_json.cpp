@@ -190,8 +190,11 @@ nlohmann::json clipJson(const AppState& s) {
       {"stride_hz", f.strideHz},
       {"stride_length_m", f.strideLengthM},
       // One SD of each (CameraFit::sd; null where the fit gives none).
+      {"walker_distance_m", finiteOrNull(f.walkerDistanceM)},
       {"sd", {{"stature_m", finiteOrNull(f.sd.statureMm / 1000.0)}, {"speed_mps", finiteOrNull(f.sd.speedMps)},
-              {"stride_length_m", finiteOrNull(f.sd.strideLengthM)}}},
+              {"stride_length_m", finiteOrNull(f.sd.strideLengthM)}, {"alpha_deg", finiteOrNull(f.sd.alphaDeg)},
+              {"elevation_deg", finiteOrNull(f.sd.elevationDeg)}, {"focal_px", finiteOrNull(f.sd.focalPx)},
+              {"walker_distance_m", finiteOrNull(f.sd.walkerDistanceM)}}},
       // The heels and toes lifted from the image, drawn with the 3D walker.
       {"feet", {{"samples_seen", r.rec.feet.pointsSeen}, {"samples_lifted", r.rec.feet.pointsLifted},
                 {"note", r.rec.feet.note}}},

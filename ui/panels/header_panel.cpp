@@ -182,12 +182,14 @@ std::vector<std::string> clipLines(const ClipResult& c) {
   const WalkCamera& cam = f.camera;
   char camera[200], brief[120];
   if (cam.model == CameraModel::Pinhole) {
-    std::snprintf(camera, sizeof camera, "camera: azimuth %.1f° · %s · focal %.0f px%s · %.2f m away · reprojection %.1f px RMS",
+    // The walker's distance, not the camera's from its look-at point: a walk along the line of
+    // sight barely fixes that point, and the walker is what the user asks about.
+    std::snprintf(camera, sizeof camera, "camera: azimuth %.1f° · %s · focal %.0f px%s · walker %.2f m away · reprojection %.1f px RMS",
                   cam.alphaDeg, tiltText(cam.elevationDeg).c_str(), cam.focalPx,
                   c.settings.focalPx || !c.settings.calibrationFile.empty() ? "" : " (est.)",
-                  cam.distanceMm / 1000.0, f.reprojectionRmsPx);
+                  f.walkerDistanceM, f.reprojectionRmsPx);
     std::snprintf(brief, sizeof brief, "az %.1f° · %s · f %.0f px · %.1f m · %.1f px", cam.alphaDeg,
-                  tiltText(cam.elevationDeg).c_str(), cam.focalPx, cam.distanceMm / 1000.0, f.reprojectionRmsPx);
+                  tiltText(cam.elevationDeg).c_str(), cam.focalPx, f.walkerDistanceM, f.reprojectionRmsPx);
   } else {
     std::snprintf(camera, sizeof camera, "camera (scaled orthography): azimuth %.1f° · %s · %.3f px/mm · reprojection %.1f px RMS",
                   cam.alphaDeg, tiltText(cam.elevationDeg).c_str(), cam.pxPerMm, f.reprojectionRmsPx);
