@@ -14,6 +14,15 @@ inline std::string tiltText(double elevationDeg) {
   return s;
 }
 
+// " ± 2.5°" for an angle's SD (CameraFit::sd); "" where the fit gives none or it was given.
+// The spaces are no-break ones: a wrapped caption keeps the SD with its value.
+inline std::string degreesSdText(double sdDeg) {
+  if (!(std::isfinite(sdDeg) && sdDeg > 0.0)) return "";
+  char s[32];
+  std::snprintf(s, sizeof s, "\u00a0±\u00a0%.1f°", sdDeg);
+  return s;
+}
+
 // The eye's height over the walker's canonical z = 0, which is her ankles' level (METHOD §2:
 // the 5th percentile of the lower ankle), not the floor: "1.20 m above the ankles".
 inline std::string heightOverAnklesText(double heightMm) {

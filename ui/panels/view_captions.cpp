@@ -243,10 +243,11 @@ ViewCaption clipReconstructionCaption(const AppState& s) {
     // The camera's distance to the walker's path (the line x = 0 of the walk).
     // A weak azimuth says so where it is read (the log has the whole sentence).
     const bool weak = inPlaceAzimuthIsWeak(fit, s.clip.fit()->settings.alphaDeg.has_value());
-    std::snprintf(sub, sizeof sub, "camera %s, %.1f m from the %s, azimuth %.1f°%s, %s",
+    std::snprintf(sub, sizeof sub, "camera %s, %.1f m from the %s, azimuth %.1f°%s%s, %s%s",
                   heightOverAnklesText(w.eye.z).c_str(), std::abs(w.eye.x) / 1000.0,
                   fit.inPlace ? "treadmill's line (walking in place)" : "walking line", c.alphaDeg,
-                  weak ? " (weak: level camera)" : "", tiltText(c.elevationDeg).c_str());
+                  degreesSdText(fit.sd.alphaDeg).c_str(), weak ? " (weak: level camera)" : "",
+                  tiltText(c.elevationDeg).c_str(), degreesSdText(fit.sd.elevationDeg).c_str());
   } else {
     std::snprintf(sub, sizeof sub, "scaled orthography: azimuth %.1f°, %s (distance not estimated; drawn at 5 m)",
                   c.alphaDeg, tiltText(c.elevationDeg).c_str());
