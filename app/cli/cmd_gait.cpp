@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <unistd.h>
@@ -33,11 +34,19 @@ struct GaitArgs {
   bool json = false, wholeTrial = false;
 };
 
+// One SD of the speed and the stride length from a video walker's camera fit (CameraFit::sd);
+// NaN for a 3D trial, whose lengths are measured, not fitted.
+struct FitSds {
+  double speedMps = std::numeric_limits<double>::quiet_NaN();
+  double strideLengthM = std::numeric_limits<double>::quiet_NaN();
+};
+
 struct MeasuredTrial {
   std::string file, subject;
   GaitMeasures measures;
   std::vector<CycleCurve> curves;
   FootProgression footProgression;  // NaN without the feet
+  FitSds fitSd;
 };
 
 std::string number(double v, int digits) {
@@ -91,6 +100,7 @@ struct ReconstructedWalk {
 struct VideoWalker {
   TrialFile file;
   ReconstructedWalk walk;
+  FitSds sd;
 };
 
 // A video: the walker the built-in detector finds, reconstructed through the unknown camera as
@@ -110,6 +120,7 @@ VideoWalker reconstructedFromVideo(const std::filesystem::path& video, const std
   w.file.path = c.out;
   w.file.info.subject = video.stem().string();
   if (!fit.inPlace) w.walk.progressionMps = fit.speedMps;
+  w.sd = {fit.sd.speedMps, fit.sd.strideLengthM};
   return w;
 }
 
@@ -134,7 +145,7 @@ std::vector<MeasuredTrial> measureFile(const TrialFile& f, const GaitArgs& args,
   // A reconstruction's C3D carries the events its own kinematics gave when it was written: the
   // same kinematics measured here, named as what they are.
   for (const auto& events : eventSetsFor(t, reconstructed ? "kinematics" : args.events)) {
-    MeasuredTrial m{f.path.string(), f.info.subject, measuredWalk(t, events, f.path.string(), reconstructed), {}, {}};
+    MeasuredTrial m{f.path.string(), f.info.subject, measuredWalk(t, events, f.path.string(), reconstructed), {}, {}, {}};
     addCurvesOf(t, m);
     if (t.joints.feetInSagittalPlanes) withoutFootProgression(m);
     out.push_back(std::move(m));
@@ -147,7 +158,8 @@ const std::vector<std::string>& columns() {
       "file", "subject", "events", "strides", "stride_time_s", "cadence_spm", "step_length_r_m",
       "step_length_l_m", "stride_length_m", "step_width_m", "speed_mps", "speed_source", "stance_foot_speed_mps",
       "stance_r_pct", "stance_l_pct", "stance_pct", "swing_pct", "double_support_pct", "stride_time_all_events_s",
-      "notes", "foot_progression_r_deg", "foot_progression_l_deg", "ankle_flexion_range_deg"};
+      "notes", "foot_progression_r_deg", "foot_progression_l_deg", "ankle_flexion_range_deg", "speed_sd_mps",
+      "stride_length_sd_m"};
   return c;
 }
 
@@ -162,7 +174,8 @@ std::vector<std::string> row(const MeasuredTrial& t) {
           number(g.stanceLeftPct, 2), number(g.stancePct, 2), number(g.swingPct, 2),
           number(g.doubleSupportPct, 2), number(g.strideTimeAllEventsS, 4), notes,
           number(t.footProgression.rightDeg, 2), number(t.footProgression.leftDeg, 2),
-          number(flexionRangeDeg(t.curves, "ankle_angle"), 2)};
+          number(flexionRangeDeg(t.curves, "ankle_angle"), 2), number(t.fitSd.speedMps, 3),
+          number(t.fitSd.strideLengthM, 4)};
 }
 
 std::string csvCell(const std::string& s) {
@@ -270,6 +283,7 @@ int runGait(const GaitArgs& args) {
       const VideoWalker walker = reconstructedFromVideo(v, scratch, args.statureM);
       for (auto& m : measureFile(walker.file, args, walker.walk)) {
         m.file = v.string();
+        m.fitSd = walker.sd;
         all.push_back(std::move(m));
       }
     } catch (const Error& e) {

@@ -144,6 +144,7 @@ TEST(GaitCliSharedData, TheFeetGiveTheEventsTheAnkleAndTheFootProgression) {
   ASSERT_EQ(b.exitCode, 0) << b.err;
   EXPECT_EQ(nlohmann::json::parse(b.out).at(0)["events"], "kinematics");
   EXPECT_EQ(nlohmann::json::parse(b.out).at(0)["ankle_flexion_range_deg"], "nan");
+  EXPECT_EQ(nlohmann::json::parse(b.out).at(0)["stride_length_sd_m"], "nan");  // measured, not fitted
 }
 
 // A folder of one subject's trials: each row of the table says which trial it is.

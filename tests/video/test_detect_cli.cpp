@@ -90,6 +90,11 @@ TEST(DetectCli, TheWalkingVideoBecomesAWalkerWithNoOtherTool) {
   EXPECT_GT(stance, 55.0);  // adults walk with 58-65 % stance (Perry & Burnfield)
   EXPECT_LT(stance, 68.0);
   EXPECT_GT(std::stod(measures["ankle_flexion_range_deg"].get<std::string>()), 15.0);
+  // The camera fit's SDs come with the measures it rests on (measured: 0.045 m/s, 0.057 m).
+  EXPECT_NEAR(std::stod(measures["speed_sd_mps"].get<std::string>()), report["speed_sd_mps"].get<double>(), 1e-3);
+  EXPECT_NEAR(std::stod(measures["stride_length_sd_m"].get<std::string>()), report["stride_length_sd_m"].get<double>(),
+              1e-4);
+  EXPECT_GT(std::stod(measures["stride_length_sd_m"].get<std::string>()), 0.0);
 }
 
 TEST(DetectCli, VideosItCannotUseAreClearErrors) {
