@@ -258,6 +258,27 @@ void evenSightLineSwing(Eigen::MatrixXd& frames, const Eigen::VectorXd& scale) {
   frames.col(pelvis).setZero();
 }
 
+// The walk's direction in the picture for a walker crossing it: its pelvis's travel, or along
+// the line of sight the feet's own swing (kMaxSizeRatioOfACrossing).
+Eigen::Vector2d crossingDirection(const KeypointTrial& t, const Eigen::Vector2d& travel, bool alongTheSightLine,
+                                  const Eigen::VectorXd& scale) {
+  const std::optional<Eigen::Vector2d> swing = alongTheSightLine ? ankleSwingDirection(t, scale) : std::nullopt;
+  return swing.value_or(travel.normalized());
+}
+
+// The walk's direction in the picture for a walker who does not cross it: the feet's swing.
+// Too short a clip to read a swing from, but the walker grows or shrinks: towards the camera
+// the feet come down the image, away from it they go up. Throws "not walking" without either,
+// `prefix` saying first what the walker does instead.
+Eigen::Vector2d swingDirectionInPlace(const KeypointTrial& t, double sizeChange, const Eigen::VectorXd& scale,
+                                      const std::string& prefix) {
+  std::optional<Eigen::Vector2d> swing = ankleSwingDirection(t, scale);
+  if (!swing && sizeChange > kMaxInPlaceSizeChange)
+    swing = Eigen::Vector2d(0.0, extentAtEnd(t, true) > extentAtEnd(t, false) ? 1.0 : -1.0);
+  if (!swing) notWalking(t, prefix + "the ankles do not swing about the pelvis (as on a treadmill)");
+  return *swing;
+}
+
 }  // namespace
 
 ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStrideHz) {
@@ -275,19 +296,8 @@ ImageGait imageGaitCycles(const KeypointTrial& t, std::optional<double> heldStri
   const double sizeRatio = extentAtEnd(t, true) / extentAtEnd(t, false);
   const bool alongTheSightLine = std::max(sizeRatio, 1.0 / sizeRatio) > kMaxSizeRatioOfACrossing;
   const Eigen::VectorXd scale = steadySizeScale(t, height);
-  const std::optional<Eigen::Vector2d> swingWhileCrossing =
-      crosses && alongTheSightLine ? ankleSwingDirection(t, scale) : std::nullopt;
-  if (crosses) {
-    g.direction = swingWhileCrossing.value_or(travel / g.travelPx);
-  } else {
-    std::optional<Eigen::Vector2d> swing = ankleSwingDirection(t, scale);
-    // Too short a clip to read a swing from, but the walker grows or shrinks: towards the
-    // camera the feet come down the image, away from it they go up.
-    if (!swing && sizeChange > kMaxInPlaceSizeChange)
-      swing = Eigen::Vector2d(0.0, extentAtEnd(t, true) > extentAtEnd(t, false) ? 1.0 : -1.0);
-    if (!swing) notWalking(t, prefix + "the ankles do not swing about the pelvis (as on a treadmill)");
-    g.direction = *swing;
-  }
+  g.direction = crosses ? crossingDirection(t, travel, alongTheSightLine, scale)
+                        : swingDirectionInPlace(t, sizeChange, scale, prefix);
   // The leads as the forward coordinate of canonical frames, so the 3D strike finder applies,
   // over the frames where the feet are seen (strike times then counted from the clip's start).
   const auto [first, last] = feetSeenSpan(t);
