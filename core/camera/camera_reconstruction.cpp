@@ -748,10 +748,28 @@ MatrixXd conditionedOn(const MatrixXd& cov, const VectorXd& g) {
   return var > 0.0 ? MatrixXd(cov - cg * cg.transpose() / var) : cov;
 }
 
-// The camera's SDs: the angles and the focal length are parameters; the walker's distance is
-// the mean over the clip of its pelvis's, whose gradient is taken by central differences over
-// every free parameter (the coefficients move the pelvis a little too). `statureGradient`: the
-// stature's over θ.
+// The walker's distance from a pinhole (its pelvis's, mean over the clip, mm) at θ.
+double walkerDistanceMm(const Problem& p, const VectorXd& theta) {
+  return pelvisDistancesMm(walkInCameraFrame(framesOf(p, theta), p.timesS, cameraOf(p, theta))).mean();
+}
+
+// Its gradient over θ by central differences over every free parameter (the coefficients move
+// the pelvis a little too).
+VectorXd walkerDistanceGradient(const Problem& p, const VectorXd& theta) {
+  const VectorXd h = stepSizes(p, theta);
+  VectorXd g = VectorXd::Zero(theta.size());
+  for (Eigen::Index i = 0; i < theta.size(); ++i) {
+    if (p.layout.fixed(i)) continue;
+    VectorXd up = theta, down = theta;
+    up[i] += h[i];
+    down[i] -= h[i];
+    g[i] = (walkerDistanceMm(p, up) - walkerDistanceMm(p, down)) / (2.0 * h[i]);
+  }
+  return g;
+}
+
+// The camera's SDs: the angles and the focal length are parameters, the walker's distance a
+// function of them all. `statureGradient`: the stature's over θ.
 void cameraUncertainty(const Problem& p, const VectorXd& theta, const MatrixXd& cov, const VectorXd& statureGradient,
                        FitUncertainty& u) {
   const Layout& l = p.layout;
@@ -759,24 +777,13 @@ void cameraUncertainty(const Problem& p, const VectorXd& theta, const MatrixXd& 
   u.elevationDeg = std::sqrt(std::max(0.0, cov(l.elevation(), l.elevation())));
   if (!l.pinhole) return;
   u.focalPx = l.focalFree ? std::exp(theta[l.logFocal()]) * std::sqrt(std::max(0.0, cov(l.logFocal(), l.logFocal()))) : 0.0;
-  const auto distanceMm = [&](const VectorXd& t) {
-    return pelvisDistancesMm(walkInCameraFrame(framesOf(p, t), p.timesS, cameraOf(p, t))).mean();
-  };
-  const VectorXd h = stepSizes(p, theta);
-  VectorXd g = VectorXd::Zero(theta.size());
-  for (Eigen::Index i = 0; i < theta.size(); ++i) {
-    if (l.fixed(i)) continue;
-    VectorXd up = theta, down = theta;
-    up[i] += h[i];
-    down[i] -= h[i];
-    g[i] = (distanceMm(up) - distanceMm(down)) / (2.0 * h[i]);
-  }
+  const VectorXd g = walkerDistanceGradient(p, theta);
   // The part of the distance's variance that its stature explains (the scale) is widened as the
   // stature's SD is (kStatureSdWidening); the rest, mostly the focal length's, is not.
   const double givenStature = sdOf(conditionedOn(cov, statureGradient), g);
   const double scalePart = std::max(0.0, std::pow(sdOf(cov, g), 2) - givenStature * givenStature);
   u.walkerDistanceM = std::sqrt(givenStature * givenStature + kStatureSdWidening * kStatureSdWidening * scalePart) / 1000.0;
-  u.walkerDistanceShareGivenStature = givenStature / distanceMm(theta);
+  u.walkerDistanceShareGivenStature = givenStature / walkerDistanceMm(p, theta);
 }
 
 FitUncertainty fitUncertainty(const Problem& p, const VectorXd& theta, const CameraFitOptions& o) {
