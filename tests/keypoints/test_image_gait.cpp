@@ -145,27 +145,33 @@ TEST(ImageGait, TrunkBobGivesTheStrideFrequency) {
   EXPECT_FALSE(trunkBobStrideHz(t).has_value());
 }
 
+// The mean walker's `seconds` at 30 fps walking along the line of sight of a pinhole (focal
+// `focalPx`) 5 m from the crossing's middle, seen from `alphaDeg` and `elevationDeg` down, as a
+// trial of its true 2D joints.
+KeypointTrial walkerAlongTheSightLine(double seconds, double focalPx, double alphaDeg, double elevationDeg) {
+  const EigenwalkerModel& model = defaultRealModel();
+  const Eigen::VectorXd t = frameTimes(static_cast<int>(seconds * kFps), kFps);
+  const Eigen::MatrixXd walk = synthesizeFrames(model.mean, model.omegasRadS.mean(), 0.0, t);
+  WalkCamera camera = test::crossingPinhole(focalPx, seconds);  // 1.3 m/s about the look-at
+  camera.alphaDeg = alphaDeg;
+  camera.elevationDeg = elevationDeg;
+  camera.distanceMm = 5000;
+  const Eigen::MatrixXd px = projectWalk(walk, t, camera);
+  KeypointOptions k;
+  k.fps = kFps;
+  return trialFromJoints(px, Eigen::MatrixXd::Ones(px.rows(), kJointCount), "walk.mp4", "true 2D", k);
+}
+
 // A walker coming towards a camera grows in the image as one over its distance: its trunk sinks
 // down the image along a curve, which a straight line in time does not take out and which then
 // outweighs the bob (a held-out walker filmed 30° off the front view read no clear bob; so does
 // this test with a line). Detrended by a parabola, the bob of the mean walker coming from about
 // 7.5 m to 2.5 m of a pinhole, head on and 15° and 30° off, gives its stride within 2 %.
 TEST(ImageGait, TrunkBobOfAWalkerComingTowardsTheCamera) {
-  const EigenwalkerModel& model = defaultRealModel();
-  const double strideHz = model.omegasRadS.mean() / (2 * M_PI);
-  const Eigen::VectorXd t = frameTimes(static_cast<int>(4.0 * kFps), kFps);
-  const Eigen::MatrixXd walk = synthesizeFrames(model.mean, 2 * M_PI * strideHz, 0.0, t);
+  const double strideHz = defaultRealModel().omegasRadS.mean() / (2 * M_PI);
   for (const double alpha : {180.0, 165.0, 150.0}) {
     SCOPED_TRACE(alpha);
-    WalkCamera camera = test::crossingPinhole(1000, 4.0);  // 1.3 m/s, 4 s about the look-at
-    camera.alphaDeg = alpha;
-    camera.elevationDeg = 0;
-    camera.distanceMm = 5000;
-    const Eigen::MatrixXd px = projectWalk(walk, t, camera);
-    KeypointOptions k;
-    k.fps = kFps;
-    const KeypointTrial trial = trialFromJoints(px, Eigen::MatrixXd::Ones(px.rows(), kJointCount),
-                                                "walk.mp4", "true 2D", k);
+    const KeypointTrial trial = walkerAlongTheSightLine(4.0, 1000, alpha, 0.0);
     EXPECT_NEAR(trunkBobStrideHz(trial).value_or(0.0), strideHz, 0.02 * strideHz);
   }
 }
@@ -182,22 +188,11 @@ TEST(ImageGait, TrunkBobOfAWalkerComingTowardsTheCamera) {
 // and read 0.94). It is a hint: the camera fit started from it reads 0.8958 Hz (a scratch run).
 // From 15° and 25° off the line the hint is within 0.5 %.
 TEST(ImageGait, AWalkerComingRightUpToTheCameraStrikesAllAlong) {
-  const EigenwalkerModel& model = defaultRealModel();
-  const double strideHz = model.omegasRadS.mean() / (2 * M_PI), seconds = 6.0;
-  const Eigen::VectorXd t = frameTimes(static_cast<int>(seconds * kFps), kFps);
-  const Eigen::MatrixXd walk = synthesizeFrames(model.mean, 2 * M_PI * strideHz, 0.0, t);
+  const double strideHz = defaultRealModel().omegasRadS.mean() / (2 * M_PI), seconds = 6.0;
   for (const double alpha : {175.0, 5.0}) {
     SCOPED_TRACE(alpha);
-    WalkCamera camera = test::crossingPinhole(1500, seconds);
-    camera.alphaDeg = alpha;
-    camera.elevationDeg = 1;
-    camera.distanceMm = 5000;
-    const Eigen::MatrixXd px = projectWalk(walk, t, camera);
-    KeypointOptions k;
-    k.fps = kFps;
-    const KeypointTrial trial =
-        trialFromJoints(px, Eigen::MatrixXd::Ones(px.rows(), kJointCount), "walk.mp4", "true 2D", k);
-    const Eigen::VectorXd heights = imageHeightsPx(px);
+    const KeypointTrial trial = walkerAlongTheSightLine(seconds, 1500, alpha, 1.0);
+    const Eigen::VectorXd heights = imageHeightsPx(trial.jointsPx);
     const double growth = heights.tail(1)[0] / heights[0];
     ASSERT_GT(std::max(growth, 1.0 / growth), 6.0);  // the clip is what it says
     const ImageGait g = imageGaitCycles(trial);
