@@ -315,11 +315,8 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
             walked.twoHarmonicWalker, strideHz});
   EigenwalkerClip out{fit.w, fit.omegaRadS, {}};
   const MatrixXd camera = walkInCameraFrame(frames, times, fit.camera);
-  const auto pelvisDistanceM = [](const MatrixXd& inCamera) {
-    return inCamera.middleCols<3>(3 * index(Joint::Pelvis)).rowwise().norm().mean() / 1000;
-  };
-  row.trueWalkerDistanceM = pelvisDistanceM(trueCamera);
-  row.walkerDistanceM = pelvisDistanceM(camera);
+  row.trueWalkerDistanceM = trueCamera.middleCols<3>(3 * index(Joint::Pelvis)).rowwise().norm().mean() / 1000;
+  row.walkerDistanceM = fit.walkerDistanceM;  // the fit's own, as reconstruct reports it
   row.distanceRelError = std::abs(row.walkerDistanceM - row.trueWalkerDistanceM) / row.trueWalkerDistanceM;
   scoreMeasuresAndTheirSds(w, clip, o, fit, height, row);
   row.trueViewElevationDeg = viewElevationDeg(trueCamera, clip.camera.elevationDeg);
