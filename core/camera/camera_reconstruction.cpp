@@ -214,29 +214,74 @@ VectorXd stepSizes(const Problem& p, const VectorXd& t) {
   return h;
 }
 
-// Finite differences (central for ω and φ, forward elsewhere: the steps are small enough
-// for Levenberg-Marquardt, and each saves a projection). The walker's frames are linear in
-// k and do not depend on the camera, so only ω and φ synthesise the walk again; k moves
-// the frames by h·(frames of its eigenwalker), and the camera parameters reproject them.
+// The residuals' derivative, into `col`, for a move `dFrames` (T × 45, per unit of a parameter)
+// of the walk's frames before the camera sees them: each seen pixel moves by the projection's
+// gradient (the other rows do not move). `image` is scratch space shaped as p.observed.
+void framesMoveColumn(const Problem& p, const WalkImageGradient& g, const MatrixXd& dFrames, MatrixXd& image,
+                      Eigen::Ref<VectorXd> col) {
+  for (int j = 0; j < kJointCount; ++j) {
+    image.col(2 * j) = (g.du.middleCols<3>(3 * j).array() * dFrames.middleCols<3>(3 * j).array()).rowwise().sum();
+    image.col(2 * j + 1) = (g.dv.middleCols<3>(3 * j).array() * dFrames.middleCols<3>(3 * j).array()).rowwise().sum();
+  }
+  col.setZero();
+  const double weight = p.dataWeight * p.mmPerPx;
+  for (std::size_t s = 0; s < p.seen.size(); ++s) col[static_cast<Eigen::Index>(s)] = weight * image.data()[p.seen[s]];
+}
+
+// What framesMove needs to say how a parameter that is not the camera's moves the frames the
+// camera sees: the coefficients and the walk's timing move them through the Fourier synthesis,
+// the progression and the look-at point through walkInCameraFrame's (x, y + y0 + v·t, z − h).
+struct FramesMoves {
+  MatrixXd basis, phaseBasis, walkerBlocks;  // fourierBasis, its φ derivative, w as 45 × 5
+};
+
+// The frames' move for parameter i (T × 45) into `out`; false for a parameter of the camera.
+bool framesMove(const Problem& p, const FramesMoves& m, Eigen::Index i, MatrixXd& out) {
+  const Layout& l = p.layout;
+  if (i < l.n) {
+    const Eigen::Map<const MatrixXd> blocks(p.model.eigenwalkers.col(i).data(), out.cols(), kFourierBlocks);
+    out.noalias() = m.basis * blocks.transpose();
+  } else if (i == l.phase() || i == l.omega()) {
+    out.noalias() = m.phaseBasis * m.walkerBlocks.transpose();
+    if (i == l.omega()) out = p.timesS.asDiagonal() * out;
+  } else if (i == l.speed() || (l.pinhole && (i == l.offset() || i == l.height()))) {
+    out.setZero();
+    for (int j = 0; j < kJointCount; ++j) {
+      if (i == l.height()) out.col(3 * j + 2).setConstant(-1.0);
+      else if (i == l.offset()) out.col(3 * j + 1).setOnes();
+      else out.col(3 * j + 1) = p.timesS;
+    }
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// Every parameter that moves the walk's frames by the chain rule (above; exact, and a
+// projection's work for all of them): the coefficients (whose prior rows move by their
+// weights), ω, φ, the speed and the look-at point. Forward differences for the camera's own
+// (the steps are small enough for Levenberg-Marquardt, and each saves a projection); they
+// reproject the same frames.
 MatrixXd jacobian(const Problem& p, const VectorXd& t, const VectorXd& r0) {
   const VectorXd h = stepSizes(p, t);
-  const MatrixXd frames = framesOf(p, t);
+  const VectorXd w = walkerOf(p, t);
+  const double omega = t[p.layout.omega()], phase = t[p.layout.phase()];
+  const MatrixXd frames = synthesizeFrames(w, omega, phase, p.timesS);
+  const WalkImageGradient gradient = projectWalkGradient(frames, p.timesS, cameraOf(p, t));
+  const FramesMoves moves{fourierBasis(omega, phase, p.timesS), fourierBasisPhaseDerivative(omega, phase, p.timesS),
+                          Eigen::Map<const MatrixXd>(w.data(), frames.cols(), kFourierBlocks)};
+  MatrixXd moved(frames.rows(), frames.cols()), image(p.observed.rows(), p.observed.cols());
   MatrixXd jac(r0.size(), t.size());
   for (Eigen::Index i = 0; i < t.size(); ++i) {
     if (p.layout.fixed(i)) {
       jac.col(i).setZero();
-      continue;
-    }
-    VectorXd tp = t, tm = t;
-    tp[i] += h[i];
-    tm[i] -= h[i];
-    if (i == p.layout.omega() || i == p.layout.phase()) {
-      jac.col(i) = (residuals(p, tp) - residuals(p, tm)) / (2.0 * h[i]);
-    } else if (i < p.layout.n) {
-      const MatrixXd step = h[i] * synthesizeFrames(p.model.eigenwalkers.col(i), t[p.layout.omega()],
-                                                    t[p.layout.phase()], p.timesS);
-      jac.col(i) = (residualsOfFrames(p, frames + step, tp) - r0) / h[i];
+    } else if (framesMove(p, moves, i, moved)) {
+      framesMoveColumn(p, gradient, moved, image, jac.col(i));
+      if (i < p.layout.n && p.priorWeight.size() > 0)
+        jac(static_cast<Eigen::Index>(p.seen.size()) + i, i) = p.priorWeight[i];
     } else {
+      VectorXd tp = t;
+      tp[i] += h[i];
       jac.col(i) = (residualsOfFrames(p, frames, tp) - r0) / h[i];
     }
   }

@@ -53,6 +53,41 @@ Eigen::MatrixXd projectWalk(const Eigen::Ref<const Eigen::MatrixXd>& frames,
   return out;
 }
 
+WalkImageGradient projectWalkGradient(const Eigen::Ref<const Eigen::MatrixXd>& frames,
+                                      const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& c) {
+  const double ca = std::cos(degToRad(c.alphaDeg)), sa = std::sin(degToRad(c.alphaDeg));
+  const double ce = std::cos(degToRad(c.elevationDeg)), se = std::sin(degToRad(c.elevationDeg));
+  // Rows of walkInCameraFrame's rotation: ∂(X_c, Y_c, Z_c) / ∂(x, y, z).
+  const Eigen::Vector3d dXc(ca, sa, 0.0), dYc(sa * se, -ca * se, -ce), dZc(-sa * ce, ca * ce, -se);
+  WalkImageGradient g{Eigen::MatrixXd(frames.rows(), frames.cols()), Eigen::MatrixXd(frames.rows(), frames.cols())};
+  if (c.model != CameraModel::Pinhole) {
+    for (Eigen::Index f = 0; f < frames.rows(); ++f)
+      for (int j = 0; j < kJointCount; ++j) {
+        g.du.row(f).segment<3>(3 * j) = c.pxPerMm * dXc.transpose();
+        g.dv.row(f).segment<3>(3 * j) = c.pxPerMm * dYc.transpose();
+      }
+    return g;
+  }
+  const Eigen::MatrixXd cam = walkInCameraFrame(frames, timesS, c);
+  for (Eigen::Index f = 0; f < frames.rows(); ++f) {
+    for (int j = 0; j < kJointCount; ++j) {
+      const double xc = cam(f, 3 * j), yc = cam(f, 3 * j + 1), zc = cam(f, 3 * j + 2);
+      // u = c_x + f X_c / Z_c: ∂u = f (∂X_c Z_c − X_c ∂Z_c) / Z_c², v likewise; none where
+      // projectWalk gives NaN, nor where the camera is so far that the point sits at infinity.
+      const bool imaged = zc > 1.0 && std::isfinite(zc) && std::isfinite(xc) && std::isfinite(yc);
+      if (!imaged) {
+        g.du.row(f).segment<3>(3 * j).setZero();
+        g.dv.row(f).segment<3>(3 * j).setZero();
+        continue;
+      }
+      const double k = c.focalPx / (zc * zc);
+      g.du.row(f).segment<3>(3 * j) = k * (zc * dXc - xc * dZc).transpose();
+      g.dv.row(f).segment<3>(3 * j) = k * (zc * dYc - yc * dZc).transpose();
+    }
+  }
+  return g;
+}
+
 CalibratedCamera calibrationOf(const WalkCamera& c, double widthPx, double heightPx) {
   if (c.model != CameraModel::Pinhole)
     throw Error(ErrorKind::BadArgument, "", "", "a scaled orthographic camera has no pinhole calibration");

@@ -38,6 +38,16 @@ struct WalkCamera {
 Eigen::MatrixXd projectWalk(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
                             const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& camera);
 
+// The derivatives of projectWalk's pixels with respect to the frames' joint coordinates:
+// du(f, 3j + c) = ∂u_px(f, j) / ∂framesX45(f, 3j + c), dv likewise for v_px; T × 45 each, zero
+// where the point is at or behind the pinhole or at infinity. The camera fit's Jacobian takes the
+// eigenwalkers' columns from these by the chain rule instead of projecting once per column.
+struct WalkImageGradient {
+  Eigen::MatrixXd du, dv;
+};
+WalkImageGradient projectWalkGradient(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
+                                      const Eigen::Ref<const Eigen::VectorXd>& timesS, const WalkCamera& camera);
+
 // The walk in the camera's frame (x right, y down, z forward; mm): T × 45, X_c, Y_c, Z_c of
 // the equations above per joint (Z_c is D + d cos ε − z sin ε for either model).
 Eigen::MatrixXd walkInCameraFrame(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,

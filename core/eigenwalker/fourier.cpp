@@ -436,10 +436,24 @@ Eigen::MatrixXd synthesizeFrames(const Eigen::Ref<const Eigen::VectorXd>& w, dou
   const Eigen::Index d = w.size() / kFourierBlocks;
   // Row-wise basis times the 5 × d coefficient blocks: one small GEMM.
   const Eigen::Map<const Eigen::MatrixXd> blocks(w.data(), d, kFourierBlocks);
+  return fourierBasis(omegaRadS, phaseRad, timesS) * blocks.transpose();
+}
+
+Eigen::MatrixXd fourierBasis(double omegaRadS, double phaseRad, const Eigen::Ref<const Eigen::VectorXd>& timesS) {
   Eigen::MatrixXd a(timesS.size(), kFourierBlocks);
   for (Eigen::Index i = 0; i < timesS.size(); ++i)
     a.row(i) = basisRow(omegaRadS * timesS(i) + phaseRad).transpose();
-  return a * blocks.transpose();
+  return a;
+}
+
+Eigen::MatrixXd fourierBasisPhaseDerivative(double omegaRadS, double phaseRad,
+                                            const Eigen::Ref<const Eigen::VectorXd>& timesS) {
+  Eigen::MatrixXd a(timesS.size(), kFourierBlocks);
+  for (Eigen::Index i = 0; i < timesS.size(); ++i) {
+    const double angle = omegaRadS * timesS(i) + phaseRad, s = std::sin(angle), c = std::cos(angle);
+    a.row(i) << 0.0, c, -s, 2.0 * (c * c - s * s), -4.0 * s * c;
+  }
+  return a;
 }
 
 FourierFit fitFourier(const Eigen::Ref<const Eigen::MatrixXd>& frames, double rateHz,

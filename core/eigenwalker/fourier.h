@@ -84,6 +84,16 @@ FourierFit fitFourier(const Eigen::Ref<const Eigen::MatrixXd>& frames, double ra
 Eigen::MatrixXd synthesizeFrames(const Eigen::Ref<const Eigen::VectorXd>& w, double omegaRadS,
                                  double phaseRad, const Eigen::Ref<const Eigen::VectorXd>& timesS);
 
+// The synthesis basis [1, sin θ, cos θ, sin 2θ, cos 2θ] at θ = ω t + φ, a row per time (T × 5):
+// synthesizeFrames(w, ω, φ, t) = fourierBasis(ω, φ, t) · (w as 5 blocks of w.size() / 5)ᵀ.
+// Unchecked (synthesizeFrames checks); for a caller synthesising many walkers at one ω and φ.
+Eigen::MatrixXd fourierBasis(double omegaRadS, double phaseRad, const Eigen::Ref<const Eigen::VectorXd>& timesS);
+
+// fourierBasis's derivative with respect to the phase φ (T × 5): [0, cos θ, −sin θ, 2 cos 2θ,
+// −2 sin 2θ]. With respect to ω it is this times each row's time.
+Eigen::MatrixXd fourierBasisPhaseDerivative(double omegaRadS, double phaseRad,
+                                            const Eigen::Ref<const Eigen::VectorXd>& timesS);
+
 // Times i / rateHz for i = 0 … count − 1 (the frame times fitFourier assumes). count ≥ 0
 // and a positive, finite rate, else Error(BadArgument).
 Eigen::VectorXd frameTimes(int count, double rateHz);

@@ -84,6 +84,54 @@ TEST(WalkCamera, ProjectsThePinholeEquations) {
   EXPECT_NEAR(tilted(0, 2 * index(Joint::Head) + 1), 540 + 1000 * yc / zc, 1e-9);
 }
 
+// The camera fit's Jacobian takes the eigenwalkers' columns from projectWalkGradient by the chain
+// rule, so it must be projectWalk's derivative: checked against central differences for each
+// joint coordinate of a walk, through a pinhole at several views and through scaled orthography.
+TEST(WalkCamera, ItsGradientIsTheProjectionsDerivative) {
+  const VectorXd times = frameTimes(6, 30.0);
+  const MatrixXd frames = synthesizeFrames(defaultRealModel().mean, 2 * std::numbers::pi * 0.9, 0.4, times);
+  WalkCamera pinhole = test::crossingPinhole(1400, 1.3);
+  WalkCamera ortho;
+  ortho.pxPerMm = 0.3;
+  ortho.alphaDeg = 70;
+  ortho.elevationDeg = 15;
+  ortho.speedMmS = 1300;
+  for (const auto& [alpha, elevation] : {std::pair{40.0, 12.0}, {-150.0, 30.0}, {180.0, 0.0}}) {
+    pinhole.alphaDeg = alpha, pinhole.elevationDeg = elevation;
+    for (const WalkCamera& c : {pinhole, ortho}) {
+      SCOPED_TRACE(std::to_string(alpha) + "° " + std::to_string(elevation) + "°, pinhole " +
+                   std::to_string(c.model == CameraModel::Pinhole));
+      const WalkImageGradient g = projectWalkGradient(frames, times, c);
+      const double h = 1e-3;  // mm: central differences err by ~h² f / Z³, far below the tolerance
+      double worst = 0.0;
+      for (Eigen::Index x = 0; x < frames.cols(); ++x) {
+        MatrixXd up = frames, down = frames;
+        up.col(x).array() += h, down.col(x).array() -= h;
+        const MatrixXd d = (projectWalk(up, times, c) - projectWalk(down, times, c)) / (2 * h);
+        const auto j = x / 3;
+        worst = std::max({worst, (d.col(2 * j) - g.du.col(x)).cwiseAbs().maxCoeff(),
+                          (d.col(2 * j + 1) - g.dv.col(x)).cwiseAbs().maxCoeff()});
+      }
+      EXPECT_LT(worst, 1e-6) << "px per mm";
+      EXPECT_GT(g.du.cwiseAbs().maxCoeff(), 0.05) << "a gradient of zeros would pass the check above";
+    }
+  }
+  // A joint behind the pinhole has no pixel (NaN) and so no gradient.
+  MatrixXd behind = frames;
+  for (int j = 0; j < kJointCount; ++j) behind.col(3 * j + 1).array() += 40000.0;  // far past the camera at 180°
+  pinhole.alphaDeg = 180, pinhole.elevationDeg = 0;
+  ASSERT_TRUE(projectWalk(behind, times, pinhole).array().isNaN().all());
+  const WalkImageGradient g = projectWalkGradient(behind, times, pinhole);
+  EXPECT_EQ(g.du.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ(g.dv.cwiseAbs().maxCoeff(), 0.0);
+  // Nor has a walk seen from infinitely far (a fit's trial step can overflow exp(log D)): zero,
+  // not the NaN of zero times infinity, which would poison the whole step.
+  pinhole.distanceMm = std::numeric_limits<double>::infinity();
+  const WalkImageGradient far = projectWalkGradient(frames, times, pinhole);
+  EXPECT_TRUE(far.du.allFinite() && far.dv.allFinite());
+  EXPECT_EQ(far.du.cwiseAbs().maxCoeff(), 0.0);
+}
+
 // The angle the camera sees the pelvis from: the tilt for a pelvis on the optical axis, zero for
 // one at the camera's height, and the tilt less the pelvis's angle above the axis between.
 TEST(WalkCamera, ViewElevationIsTheTiltLessTheAngleAboveTheAxis) {

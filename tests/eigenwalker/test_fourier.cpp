@@ -185,5 +185,23 @@ TEST(Fourier, SynthesisMatchesTheFormula) {
   }
 }
 
+// The camera fit's Jacobian takes its ω and φ columns from fourierBasisPhaseDerivative by the
+// chain rule: it must be the synthesis's derivative, checked against central differences.
+TEST(Fourier, ThePhaseDerivativeIsTheSynthesisDerivative) {
+  const Eigen::VectorXd w = syntheticBaseWalker();
+  const Eigen::VectorXd t = frameTimes(40, 30.0);
+  const Eigen::Map<const Eigen::MatrixXd> blocks(w.data(), 45, kFourierBlocks);
+  EXPECT_LT((fourierBasis(kOmega, kPhase, t) * blocks.transpose() - synthesizeFrames(w, kOmega, kPhase, t))
+                .cwiseAbs()
+                .maxCoeff(),
+            1e-9);
+  const Eigen::MatrixXd analytic = fourierBasisPhaseDerivative(kOmega, kPhase, t) * blocks.transpose();
+  const double h = 1e-6;  // rad: central differences err by ~h² |w|, far below the tolerance
+  const Eigen::MatrixXd numeric =
+      (synthesizeFrames(w, kOmega, kPhase + h, t) - synthesizeFrames(w, kOmega, kPhase - h, t)) / (2 * h);
+  EXPECT_LT((analytic - numeric).cwiseAbs().maxCoeff(), 1e-5 * numeric.cwiseAbs().maxCoeff());
+  EXPECT_GT(numeric.cwiseAbs().maxCoeff(), 10.0) << "mm per rad: a walk that moves";
+}
+
 }  // namespace
 }  // namespace ew
