@@ -41,7 +41,8 @@ Eigen::MatrixXd projectWalk(const Eigen::Ref<const Eigen::MatrixXd>& framesX45,
 // The derivatives of projectWalk's pixels with respect to the frames' joint coordinates:
 // du(f, 3j + c) = ∂u_px(f, j) / ∂framesX45(f, 3j + c), dv likewise for v_px; T × 45 each, zero
 // where the point is at or behind the pinhole or at infinity. The camera fit's Jacobian takes the
-// eigenwalkers' columns from these by the chain rule instead of projecting once per column.
+// columns of the walk's own parameters (k, ω, φ, the progression) from these by the chain rule
+// instead of projecting once per column.
 struct WalkImageGradient {
   Eigen::MatrixXd du, dv;
 };

@@ -84,9 +84,10 @@ TEST(WalkCamera, ProjectsThePinholeEquations) {
   EXPECT_NEAR(tilted(0, 2 * index(Joint::Head) + 1), 540 + 1000 * yc / zc, 1e-9);
 }
 
-// The camera fit's Jacobian takes the eigenwalkers' columns from projectWalkGradient by the chain
-// rule, so it must be projectWalk's derivative: checked against central differences for each
-// joint coordinate of a walk, through a pinhole at several views and through scaled orthography.
+// The camera fit's Jacobian takes the columns of every parameter that moves the walk (the
+// coefficients, ω, φ, the progression) from projectWalkGradient by the chain rule, so it must be
+// projectWalk's derivative: checked against central differences for each joint coordinate of a
+// walk, through a pinhole at several views and through scaled orthography.
 TEST(WalkCamera, ItsGradientIsTheProjectionsDerivative) {
   const VectorXd times = frameTimes(6, 30.0);
   const MatrixXd frames = synthesizeFrames(defaultRealModel().mean, 2 * std::numbers::pi * 0.9, 0.4, times);
