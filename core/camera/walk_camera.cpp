@@ -88,6 +88,11 @@ WalkImageGradient projectWalkGradient(const Eigen::Ref<const Eigen::MatrixXd>& f
   return g;
 }
 
+double horizonRowPx(const WalkCamera& c) {
+  if (c.model != CameraModel::Pinhole) return std::numeric_limits<double>::quiet_NaN();
+  return c.cyPx - c.focalPx * std::tan(degToRad(c.elevationDeg));
+}
+
 CalibratedCamera calibrationOf(const WalkCamera& c, double widthPx, double heightPx) {
   if (c.model != CameraModel::Pinhole)
     throw Error(ErrorKind::BadArgument, "", "", "a scaled orthographic camera has no pinhole calibration");

@@ -60,6 +60,11 @@ Eigen::MatrixXd walkInCameraFrame(const Eigen::Ref<const Eigen::MatrixXd>& frame
 // needs the principal point (docs/CAMERA.md, "Framing").
 double viewElevationDeg(const Eigen::Ref<const Eigen::MatrixXd>& inCamera, double elevationDeg);
 
+// The row of a pinhole's horizon (px): where level lines run to, c_y − f tan ε for a camera with
+// no roll. NaN for scaled orthography, whose rays are all parallel. Compared with the horizon the
+// scene's own lines give (video/scene_horizon.h), it checks the camera's height over the walker.
+double horizonRowPx(const WalkCamera& camera);
+
 // A pinhole WalkCamera as a calibration (OpenCV's x_cam = R x_world + t, no distortion,
 // `widthPx` × `heightPx`), the world being the walker's canonical frame with its progression
 // put back: W(t) = X(t) + (0, y0 + v·t, 0). Then R = E(ε) R₀(α) and t = (0, 0, D) − R (0, 0, h),

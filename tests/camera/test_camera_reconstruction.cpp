@@ -133,6 +133,21 @@ TEST(WalkCamera, ItsGradientIsTheProjectionsDerivative) {
   EXPECT_EQ(far.du.cwiseAbs().maxCoeff(), 0.0);
 }
 
+// A level line's far end is imaged on the horizon: a point 10,000 km down the walk at the look-at
+// point's height lands on horizonRowPx, for a camera tilted down or up.
+TEST(WalkCamera, ItsHorizonIsWhereLevelLinesRunTo) {
+  MatrixXd far = MatrixXd::Zero(1, 45);
+  for (int j = 0; j < kJointCount; ++j) far(0, 3 * j + 1) = 1e10, far(0, 3 * j + 2) = 900;  // lookAtHeightMm
+  for (double elevation : {12.0, -5.0}) {
+    WalkCamera c = test::crossingPinhole(1400, 1.3);
+    c.alphaDeg = 30, c.elevationDeg = elevation, c.startOffsetMm = 0, c.speedMmS = 0;  // looking down the walk
+    EXPECT_NEAR(projectWalk(far, VectorXd::Zero(1), c)(0, 1), horizonRowPx(c), 0.01) << elevation;
+  }
+  EXPECT_NEAR(horizonRowPx(test::crossingPinhole(1400, 1.3)), 540 - 1400 * std::tan(12 * std::numbers::pi / 180), 1e-9);
+  WalkCamera ortho;
+  EXPECT_TRUE(std::isnan(horizonRowPx(ortho))) << "parallel rays have no horizon";
+}
+
 // The angle the camera sees the pelvis from: the tilt for a pelvis on the optical axis, zero for
 // one at the camera's height, and the tilt less the pelvis's angle above the axis between.
 TEST(WalkCamera, ViewElevationIsTheTiltLessTheAngleAboveTheAxis) {

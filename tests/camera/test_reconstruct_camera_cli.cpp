@@ -191,6 +191,7 @@ TEST(ReconstructCameraCli, OpenPoseFolderWithTheFocalLengthUnknown) {
   EXPECT_NEAR(r["alpha_deg"].get<double>(), 40, 2.0);
   // An OpenPose folder has no size: the principal point's row is held near the walker's.
   EXPECT_EQ(r["principal_point_prior"].get<std::string>().rfind("the walker's row", 0), 0u);
+  EXPECT_TRUE(r["scene_horizon"].is_null()) << "keypoints alone show no scene to read a horizon from";
   // Given the video's size, the principal point is expected at its centre (where the camera's
   // is): the same camera comes out.
   const auto sized = test::runProgram(EW_CLI_PATH,

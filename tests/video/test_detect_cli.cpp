@@ -3,6 +3,9 @@
 // for a video with nobody, a file that is no video and missing models.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include <nlohmann/json.hpp>
 #include <opencv2/videoio.hpp>
 
@@ -68,6 +71,17 @@ TEST(DetectCli, TheWalkingVideoBecomesAWalkerWithNoOtherTool) {
   EXPECT_LT(std::abs(std::abs(report["alpha_deg"].get<double>()) - 90.0), 15.0);
   EXPECT_NE(report["format"].get<std::string>().find("BlazePose"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "walk3d.csv"));
+  // The scene's horizon beside the fit's: its window rows put it at 563–570 px; the fit puts
+  // the camera's eye near her knees (docs/CAMERA.md, "The scene's horizon"), and says so.
+  const json& horizon = report["scene_horizon"];
+  ASSERT_TRUE(horizon["row_px"].is_number()) << horizon.dump();
+  EXPECT_NEAR(horizon["row_px"].get<double>(), 566.0, 10.0);
+  EXPECT_NEAR(horizon["fit_off_deg"].get<double>(),
+              std::atan((horizon["fit_row_px"].get<double>() - horizon["row_px"].get<double>()) /
+                        report["focal_px"].get<double>()) * 180.0 / std::numbers::pi, 1e-9);
+  EXPECT_EQ(std::abs(horizon["fit_off_deg"].get<double>()) > 2.0,
+            r.err.find("caution: the scene's level lines") != std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("scene: its level lines put the horizon at row"), std::string::npos) << r.err;
   // info on the same video: from the cache, the walker and her stride.
   const test::ShellRun info = runCli("info --json " + video.string(), dir);
   ASSERT_EQ(info.exitCode, 0) << info.err;
