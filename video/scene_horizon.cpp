@@ -10,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/errors.h"
+#include "core/common/statistics.h"
 #include "video/video_source.h"
 
 namespace ew {
@@ -45,10 +46,11 @@ std::vector<Segment> slopedSegments(const cv::Mat& grey) {
   return out;
 }
 
+// Called for every segment of every RANSAC pair: the tolerance's cosine is worked out once.
 bool runsTo(const Segment& s, const Eigen::Vector2d& point) {
+  static const double minCos = std::cos(kRunsToDeg * std::numbers::pi / 180.0);
   const Eigen::Vector2d d = s.b - s.a, t = point - 0.5 * (s.a + s.b);
-  const double c = std::abs(d.dot(t)) / (d.norm() * t.norm() + 1e-12);
-  return c >= std::cos(kRunsToDeg * std::numbers::pi / 180.0);
+  return std::abs(d.dot(t)) / (d.norm() * t.norm() + 1e-12) >= minCos;
 }
 
 // The point two segments' lines cross at, unset for parallel lines.
@@ -60,16 +62,11 @@ std::optional<Eigen::Vector2d> crossing(const Segment& p, const Segment& q) {
   return Eigen::Vector2d(x.x() / x.z(), x.y() / x.z());
 }
 
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-  return v[v.size() / 2];
-}
-
 }  // namespace
 
 // Segments are found on the frame shrunk to this longer side at most (LSD's time goes with the
 // pixels; a facade's rows stay tens of pixels long) and scaled back.
-constexpr int kMaxSegmentSearchSidePx = 960;
+constexpr int kMaxSegmentSearchSidePx = 1280;
 
 std::optional<VanishingVote> vanishingVoteOf(const cv::Mat& frame) {
   cv::Mat grey;
