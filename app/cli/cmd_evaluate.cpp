@@ -373,7 +373,7 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
                   "Experiment 'camera-wide': the factors to run beside the base (repeat or comma-separate; "
                   "default all)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "focal", "edge", "hardest"}));
+      ->check(CLI::IsMember({"length", "height", "speed", "layout", "fps", "elevation", "image", "aim", "focal", "edge", "horizon", "hardest"}));
   cmd->add_option("--method", args->method, "lsq, map or both")
       ->check(CLI::IsMember({"lsq", "map", "both"}))->capture_default_str();
   cmd->add_option("--sigma2", args->sigma2Mm2, "MAP noise variance in mm^2 (default: the sigma-sweep optimum)")

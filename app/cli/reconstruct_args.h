@@ -43,6 +43,9 @@ struct CameraArgs : KeypointSourceArgs {
   std::optional<int> modelLoop;
   // A keyframe file of corrections to the keypoints (core/tracking/corrected_track.h).
   std::string corrections;
+  // A video's own horizon (video/scene_horizon.h): "prior" (the fit holds its camera's height
+  // to it), "check" (reported beside the fit's only) or "off" (not read).
+  std::string sceneHorizon = "prior";
   // Write only the frames from the walker's first seen frame to its last (`gait V.mp4`: the
   // periodic walker before and after is the model's, not the footage's). No flag sets it.
   bool seenFramesOnly = false;

@@ -162,7 +162,8 @@ void printSummary(const json& r) {
     std::cerr << "\nscene: its level lines put the horizon at row " << std::setprecision(0)
               << r["scene_horizon"]["row_px"].get<double>() << " px (" << r["scene_horizon"]["frames_agreeing"].get<int>()
               << " of " << r["scene_horizon"]["frames_read"].get<int>() << " frames), the fitted camera at row "
-              << r["scene_horizon"]["fit_row_px"].get<double>() << " px";
+              << r["scene_horizon"]["fit_row_px"].get<double>() << " px"
+              << (r["scene_horizon"]["used_as_prior"].get<bool>() ? " (the fit held to the scene's)" : "");
   for (const auto& caution : r["cautions"]) std::cerr << "\ncaution: " << caution.get<std::string>();
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
 }
@@ -173,35 +174,56 @@ void printSummary(const json& r) {
 constexpr int kSceneHorizonFrames = 12;
 constexpr double kSceneHorizonCautionDeg = 2.0;
 
-// The horizon the video's own level lines give (video/scene_horizon.h) beside the fitted
-// camera's, and a caution when they disagree; null for a keypoint file.
-json sceneHorizonJson(const std::string& input, const CameraFit& fit, std::vector<std::string>& cautions) {
+// The horizon read off a video's own level lines (video/scene_horizon.h), before the fit that
+// may hold to it; nothing for a keypoint file, a camera without a horizon (scaled orthography,
+// a held elevation) or --scene-horizon off.
+struct SceneHorizonReading {
+  bool read = false;
+  std::optional<SceneHorizon> horizon;
+  std::string why;  // when read and none was found
+};
+
+SceneHorizonReading readSceneHorizon(const CameraArgs& a, const CameraKnowledge& camera) {
+  SceneHorizonReading r;
 #ifdef EW_HAVE_VIDEO
-  if (!isVideoFile(input) || fit.camera.model != CameraModel::Pinhole) return nullptr;
-  std::string why;
-  const std::optional<SceneHorizon> h = sceneHorizonOf(input, kSceneHorizonFrames, why);
-  if (!h) return {{"row_px", nullptr}, {"why_none", why}};
+  const bool pinhole = camera.focalPx || camera.estimateFocal;
+  if (!isVideoFile(a.input) || a.sceneHorizon == "off" || !pinhole || camera.elevationDeg) return r;
+  r.read = true;
+  r.horizon = sceneHorizonOf(a.input, kSceneHorizonFrames, r.why);
+#else
+  (void)a, (void)camera;
+#endif
+  return r;
+}
+
+// The scene's horizon beside the fitted camera's, and a caution when they disagree; null when
+// not read.
+json sceneHorizonJson(const SceneHorizonReading& reading, bool usedAsPrior, const CameraFit& fit,
+                      std::vector<std::string>& cautions) {
+  if (!reading.read || fit.camera.model != CameraModel::Pinhole) return nullptr;
+  if (!reading.horizon) return {{"row_px", nullptr}, {"why_none", reading.why}};
+  const SceneHorizon& h = *reading.horizon;
   const double fitRow = horizonRowPx(fit.camera);
-  const double offDeg = std::atan((fitRow - h->rowPx) / fit.camera.focalPx) * 180.0 / std::numbers::pi;
+  const double offDeg = horizonOffDeg(fit.camera, h.rowPx);
   if (std::abs(offDeg) > kSceneHorizonCautionDeg) {
     std::ostringstream text;
-    text << std::fixed << std::setprecision(0) << "the scene's level lines put the horizon at row " << h->rowPx
+    text << std::fixed << std::setprecision(0) << "the scene's level lines put the horizon at row " << h.rowPx
          << " px, the fitted camera at row " << fitRow << " px: the camera's height over the walker, and so its "
-         << "elevation, are " << std::setprecision(1) << std::abs(offDeg) << " deg off the scene's (docs/CAMERA.md, "
-         << "\"The scene's horizon\")";
+         << "elevation, are " << std::setprecision(1) << std::abs(offDeg) << " deg off the scene's";
+    if (usedAsPrior)
+      text << " although the fit was held to it: the walker's image disagrees (lines that are not level, a ramp "
+           << "or stairs, or joints the detector misplaced)";
+    text << " (docs/CAMERA.md, \"The scene's horizon\")";
     cautions.push_back(text.str());
   }
-  return {{"row_px", h->rowPx},
-          {"vanishing_point_px", {h->vanishingPointPx.x(), h->vanishingPointPx.y()}},
-          {"row_spread_px", h->rowSpreadPx},
-          {"frames_agreeing", h->framesAgreeing},
-          {"frames_read", h->framesRead},
+  return {{"row_px", h.rowPx},
+          {"vanishing_point_px", {h.vanishingPointPx.x(), h.vanishingPointPx.y()}},
+          {"row_spread_px", h.rowSpreadPx},
+          {"frames_agreeing", h.framesAgreeing},
+          {"frames_read", h.framesRead},
+          {"used_as_prior", usedAsPrior},
           {"fit_row_px", fitRow},
           {"fit_off_deg", offDeg}};
-#else
-  (void)input, (void)fit, (void)cautions;
-  return nullptr;
-#endif
 }
 
 // What the command line says of the camera (core/camera/camera_knowledge.h).
@@ -279,8 +301,11 @@ std::pair<Eigen::Index, Eigen::Index> seenSpan(const Eigen::MatrixXd& jointsPx) 
 // The eigenwalker through the camera (reconstruct(engine, request), core/engines/request.h),
 // written and reported.
 int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
-                 const CameraKnowledge& camera, const json& lens, const json& imageSizeFrom = nullptr,
+                 CameraKnowledge camera, const json& lens, const json& imageSizeFrom = nullptr,
                  CameraFit* fitOut = nullptr) {
+  const SceneHorizonReading horizon = readSceneHorizon(a, camera);
+  const bool horizonPrior = horizon.horizon && a.sceneHorizon == "prior";
+  if (horizonPrior) camera.horizonRowPx = horizon.horizon->rowPx;
   DetectionLoopOptions loopOptions;
   loopOptions.rounds = modelLoopRounds(a);
   const CameraFitOptions o = cameraFitOptions(camera, estimatorOf(model, a), a.input);
@@ -325,7 +350,7 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
   report["image_size_from"] = t.imageSize ? imageSizeFrom : json(nullptr);
   report["rate_from"] = t.rateSource;
   std::vector<std::string> cautions = clip.cautions;
-  report["scene_horizon"] = sceneHorizonJson(a.input, fit, cautions);
+  report["scene_horizon"] = sceneHorizonJson(horizon, horizonPrior, fit, cautions);
   report["cautions"] = cautions;
   printSummary(report);
   if (a.json) std::cout << report.dump(2) << "\n";

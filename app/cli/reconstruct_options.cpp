@@ -84,6 +84,7 @@ std::vector<OptionScope> optionScopes(const ReconstructArgs& a) {
       {"--person", a.person.has_value(), kKeypoints, ""},
       {"--model-loop", a.modelLoop.has_value(), kCamera, ""},
       {"--corrections", !a.corrections.empty(), kCamera, ""},
+      {"--scene-horizon", a.sceneHorizon != "prior", kCamera, ""},
       {"--save-2d", !a.save2d.empty(), kView | kSnippet, ""},
       {"--in-sample", a.inSample, kView | kSnippet, ""},
       {"--mapping", !a.mapping.empty(), kView | kCamera | kSnippet, ""},
@@ -176,6 +177,11 @@ void addReconstructOptions(CLI::App& cmd, ReconstructArgs& a) {
                   "With --unknown-camera: rounds of the model loop, where joints the detector is unsure of are pulled "
                   "towards the fitted walker and the fit is made again (default 1 for a video, 0 for keypoint files)")
       ->check(CLI::Range(0, 5));
+  cmd.add_option("--scene-horizon", a.sceneHorizon,
+                  "For a video: its horizon, read off the scene's level lines (docs/CAMERA.md, \"The scene's "
+                  "horizon\"): prior (the fit holds its camera's height to it), check (reported beside the fit's) or off")
+      ->check(CLI::IsMember({"prior", "check", "off"}))
+      ->capture_default_str();
   cmd.add_flag("--unknown-camera", a.unknownCamera,
                 "Keypoints in pixels through an unknown real camera (docs/CAMERA.md): estimates azimuth, "
                 "elevation, scale or distance, image translation and progression with the walker");

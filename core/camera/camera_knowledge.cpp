@@ -80,6 +80,7 @@ CameraFitOptions cameraFitOptions(const CameraKnowledge& camera, const Estimator
   o.estimateFocal = camera.estimateFocal;
   o.alphaDeg = camera.alphaDeg;
   o.elevationDeg = camera.elevationDeg;
+  o.horizonRowPx = camera.horizonRowPx;
   o.file = file;
   // A calibration's principal point is the prior's centre, over its image.
   if (camera.principalPointPx && camera.calibration) {

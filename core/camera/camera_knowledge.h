@@ -53,6 +53,9 @@ struct CameraKnowledge {
   // is the model's prior on body size.
   std::optional<double> statureMm;
   std::string statureSource;                    // "given (--stature)" or "the model's prior"
+  // The horizon's row (px) read off the footage's own level lines (video/scene_horizon.h),
+  // when the program read it: the fit's prior on its camera's height (CameraFitOptions).
+  std::optional<double> horizonRowPx;
 };
 
 // Reads the calibration file (readCalibratedCamera's errors) and checks what was given:

@@ -115,6 +115,8 @@ struct Problem {
   Eigen::Vector2d principalPointPx = Eigen::Vector2d::Zero();
   // Without the image, the framing's prior on c_y (kFramingSdOfHeight): weight and centre.
   double framingWeight = 0.0, framingCyPx = 0.0;
+  // The scene's horizon as a prior (CameraFitOptions::horizonRowPx): weight per degree, row.
+  double horizonWeight = 0.0, horizonRowPx = 0.0;
 };
 
 // Where a camera filming a walker is expected to point when its image is not known: the row of
@@ -144,6 +146,10 @@ Problem makeProblem(const EigenwalkerModel& model, Layout layout, const CameraFi
   } else if (layout.pinhole && o.framingPrior && framing.sdPx > 0.0) {
     p.framingWeight = std::sqrt(o.estimator.sigma2Mm2) / framing.sdPx;
     p.framingCyPx = framing.cyPx;
+  }
+  if (o.horizonRowPx && layout.pinhole) {
+    p.horizonWeight = std::sqrt(o.estimator.sigma2Mm2) / kHorizonSdDeg;
+    p.horizonRowPx = *o.horizonRowPx;
   }
   return p;
 }
@@ -179,10 +185,11 @@ MatrixXd framesOf(const Problem& p, const VectorXd& t) {
 MatrixXd imageOf(const Problem& p, const VectorXd& t) { return projectWalk(framesOf(p, t), p.timesS, cameraOf(p, t)); }
 
 // Data residuals in mm (pixels × mmPerPx, weighted to a mean) of the walker's frames seen
-// by the camera of θ, then the prior's and the elevation bound's.
+// by the camera of θ, then the priors' and the elevation bound's.
 VectorXd residualsOfFrames(const Problem& p, const MatrixXd& frames, const VectorXd& t) {
-  const MatrixXd image = projectWalk(frames, p.timesS, cameraOf(p, t));
-  VectorXd r(static_cast<Eigen::Index>(p.seen.size()) + p.priorWeight.size() + 4);
+  const WalkCamera camera = cameraOf(p, t);
+  const MatrixXd image = projectWalk(frames, p.timesS, camera);
+  VectorXd r(static_cast<Eigen::Index>(p.seen.size()) + p.priorWeight.size() + 5);
   for (std::size_t i = 0; i < p.seen.size(); ++i) {
     const double d = image.data()[p.seen[i]] - p.observed.data()[p.seen[i]];
     // A point behind a pinhole camera: a large, smooth penalty rather than NaN.
@@ -192,8 +199,9 @@ VectorXd residualsOfFrames(const Problem& p, const MatrixXd& frames, const Vecto
     r.segment(static_cast<Eigen::Index>(p.seen.size()), p.priorWeight.size()) =
         p.priorWeight.cwiseProduct(t.head(p.layout.n));
   const Eigen::Vector2d c(t[p.layout.cx()], t[p.layout.cy()]);
-  r.segment<2>(r.size() - 4) = p.principalPointWeight * (c - p.principalPointPx);
-  r[r.size() - 2] = p.framingWeight * (c.y() - p.framingCyPx);
+  r.segment<2>(r.size() - 5) = p.principalPointWeight * (c - p.principalPointPx);
+  r[r.size() - 3] = p.framingWeight * (c.y() - p.framingCyPx);
+  r[r.size() - 2] = p.horizonWeight > 0.0 ? p.horizonWeight * horizonOffDeg(camera, p.horizonRowPx) : 0.0;
   const double e = t[p.layout.elevation()];
   r[r.size() - 1] = 1e3 * (std::max(0.0, e - kMaxElevationDeg) + std::max(0.0, kMinElevationDeg - e));
   return r;
@@ -589,6 +597,8 @@ void checkOptions(const CameraFitOptions& o) {
     throw Error(ErrorKind::BadArgument, o.file, "principal point", "the principal point must be finite");
   if (o.alphaDeg && !std::isfinite(*o.alphaDeg))
     throw Error(ErrorKind::BadArgument, o.file, "azimuth", "a fixed azimuth must be finite");
+  if (o.horizonRowPx && !std::isfinite(*o.horizonRowPx))
+    throw Error(ErrorKind::BadArgument, o.file, "horizon", "the scene's horizon must be a finite row");
   if (o.elevationDeg && !(*o.elevationDeg >= kMinElevationDeg && *o.elevationDeg <= kMaxElevationDeg))
     throw Error(ErrorKind::BadArgument, o.file, "elevation",
                 "a fixed elevation must lie between " + std::to_string(static_cast<int>(kMinElevationDeg)) + " and " +

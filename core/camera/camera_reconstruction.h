@@ -35,6 +35,11 @@ struct CameraFitOptions {
   // pelvis at mid-clip with an SD of kFramingSdOfHeight of the walker's height in the image
   // (a camera filming a walker points at them; docs/CAMERA.md, "Framing"). false: none.
   bool framingPrior = true;
+  // The row of the horizon (px) where the scene's own level lines run to (video/scene_horizon.h),
+  // when read: a Gaussian prior on the fitted pinhole's horizon (horizonRowPx), kHorizonSdDeg as
+  // the camera sees it. It holds the camera's height over the walker, which the walker's image
+  // barely shows from afar (docs/CAMERA.md, "The scene's horizon").
+  std::optional<double> horizonRowPx;
   std::optional<double> strideHzHint;   // from the image's foot strikes (image_gait.h)
   // Hold the stride frequency at the hint instead of refining it: a hint more trustworthy than
   // the image's limbs (the model loop's trunk bob, when the tracker has lost the feet).
@@ -56,6 +61,9 @@ inline constexpr double kPrincipalPointSdShare = 0.25;
 // head-to-ankles height of the walker's pelvis at mid-clip (one SD): whoever films a walker
 // frames them, and c_y otherwise trades against the tilt in a clip too short for perspective.
 inline constexpr double kFramingSdOfHeight = 0.5;
+// One SD of the scene's horizon as a prior, in degrees of the camera's view: the reading itself
+// is within 0.3° on calibrated cameras, and the fit's camera has no roll.
+inline constexpr double kHorizonSdDeg = 1.0;
 
 struct CameraStart {
   double startAlphaDeg = 0.0, alphaDeg = 0.0, elevationDeg = 0.0;

@@ -93,6 +93,11 @@ double horizonRowPx(const WalkCamera& c) {
   return c.cyPx - c.focalPx * std::tan(degToRad(c.elevationDeg));
 }
 
+double horizonOffDeg(const WalkCamera& c, double sceneRowPx) {
+  if (c.model != CameraModel::Pinhole) return std::numeric_limits<double>::quiet_NaN();
+  return std::atan((c.cyPx - sceneRowPx) / c.focalPx) * 180.0 / std::numbers::pi - c.elevationDeg;
+}
+
 CalibratedCamera calibrationOf(const WalkCamera& c, double widthPx, double heightPx) {
   if (c.model != CameraModel::Pinhole)
     throw Error(ErrorKind::BadArgument, "", "", "a scaled orthographic camera has no pinhole calibration");

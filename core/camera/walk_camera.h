@@ -64,6 +64,11 @@ double viewElevationDeg(const Eigen::Ref<const Eigen::MatrixXd>& inCamera, doubl
 // no roll. NaN for scaled orthography, whose rays are all parallel. Compared with the horizon the
 // scene's own lines give (video/scene_horizon.h), it checks the camera's height over the walker.
 double horizonRowPx(const WalkCamera& camera);
+// How far (degrees, as the camera sees it) the pinhole's horizon lies from a row read off the
+// scene: atan((c_y − row) / f) − ε, the angle between level and the ray to that row. Positive
+// when the camera's horizon lies below the scene's in the picture (the camera's eye too low
+// over the walker). NaN for orthography.
+double horizonOffDeg(const WalkCamera& camera, double sceneRowPx);
 
 // A pinhole WalkCamera as a calibration (OpenCV's x_cam = R x_world + t, no distortion,
 // `widthPx` × `heightPx`), the world being the walker's canonical frame with its progression

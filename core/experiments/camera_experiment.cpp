@@ -73,6 +73,9 @@ void checkOptions(const CameraExperimentOptions& o) {
   if (!(o.minSpeedMps > 0 && o.minSpeedMps <= o.maxSpeedMps && o.maxSpeedMps <= 5))
     badCameraOption("the speeds must be 0 < min <= max <= 5 m/s");
   if (!(std::abs(o.cadenceSpeedExponent) <= 2)) badCameraOption("the cadence's exponent must be within ±2");
+  if (o.horizonReadSdDeg && !(*o.horizonReadSdDeg >= 0 && *o.horizonReadSdDeg <= 10))
+    badCameraOption("the horizon's reading error must be 0-10 degrees");
+  if (!(std::abs(o.horizonReadBiasDeg) <= 20)) badCameraOption("the horizon's reading bias must be within ±20 degrees");
   if (!(o.minElevationDeg >= -30 && o.minElevationDeg <= o.maxElevationDeg && o.maxElevationDeg <= 80))
     badCameraOption("the elevations must be -30 <= min <= max <= 80 degrees");
   if (!(o.minLookAtHeightMm >= -5000 && o.minLookAtHeightMm <= o.maxLookAtHeightMm && o.maxLookAtHeightMm <= 10000))
@@ -98,7 +101,19 @@ struct Clip {
   MatrixXd px;       // T × 30 clean image positions, where the detector puts the points
   double imageW = kImageW, imageH = kImageH;
   double strides = 0;  // the clip's length in the walker's strides
+  // The scene's horizon as read (CameraExperimentOptions::horizonReadSdDeg), when read.
+  std::optional<double> horizonRowPx = std::nullopt;
 };
+
+// The true camera's horizon read with an error of `sd` and `bias` degrees (the error's draw from
+// a generator of its own, so that the clips' other draws do not change).
+double readHorizonRowPx(const WalkCamera& c, double sd, double bias, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> error(bias, sd);
+  WalkCamera read = c;
+  read.elevationDeg += error(rng);  // a horizon δ higher in the picture: the camera looks δ further down
+  return horizonRowPx(read);
+}
 
 // Head to ankles in the image (px), median over the frames.
 double medianHeightPx(const MatrixXd& px) {
@@ -283,6 +298,7 @@ EigenwalkerClip eigenwalkerOnClip(const Fold& fold, const ExperimentWalker& w, c
     view.camera.focalPx = clip.camera.focalPx;
     view.camera.focalSource = "given";
   }
+  view.camera.horizonRowPx = clip.horizonRowPx;
   const auto t0 = std::chrono::steady_clock::now();
   const ReconstructionResult r = reconstruct(EigenwalkerEngine{fold.model, {Estimator::Map, o.sigma2Mm2}, {}}, {std::move(view)});
   const CameraFit& fit = r.camera.eigenwalker->last.fit;
@@ -556,7 +572,10 @@ std::vector<CameraRow> cameraErrors(const std::vector<ExperimentWalker>& walkers
     const ExperimentWalker& w = walkers[static_cast<std::size_t>(job.walker)];
     // One generator per (walker, camera): the same camera and bystander at every noise level.
     std::mt19937 rng(o.seed + 7919u * static_cast<unsigned>(job.walker) + 104729u * static_cast<unsigned>(job.camera));
-    const Clip clip = filmWalker(w, o, detector, rng);
+    Clip clip = filmWalker(w, o, detector, rng);
+    if (o.horizonReadSdDeg)
+      clip.horizonRowPx = readHorizonRowPx(clip.camera, *o.horizonReadSdDeg, o.horizonReadBiasDeg,
+                                           o.seed + 15485863u + static_cast<unsigned>(j));
     std::uniform_real_distribution<double> uni(0.0, 1.0);
     const bool withBystander = uni(rng) < o.bystanderShare;
     const MatrixXd other = withBystander ? bystander(clip.px, clip.imageW, rng) : MatrixXd();
@@ -717,6 +736,16 @@ std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOpti
          o.offPictureDropped = true;
          o.clipStrides = 1.2;
        }},
+      // Read off a video, whose image's size is known too.
+      {"horizon", "the scene's, read within 0.5 deg; image size known", [](CameraExperimentOptions& o) {
+         o.imageSizeKnown = true;
+         o.horizonReadSdDeg = 0.5;
+       }},
+      {"horizon", "the same, read 3 deg off (a ramp's lines)", [](CameraExperimentOptions& o) {
+         o.imageSizeKnown = true;
+         o.horizonReadSdDeg = 0.5;
+         o.horizonReadBiasDeg = 3.0;
+       }},
       {"hardest", "1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17, 25 fps, 0-35 deg", hardest},
       {"hardest", "the same, image size known", [&](CameraExperimentOptions& o) {
          hardest(o);
@@ -730,11 +759,16 @@ std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOpti
          hardest(o);
          o.offPictureDropped = true;
        }},
+      {"hardest", "the same, image size known and the scene's horizon read within 0.5 deg", [&](CameraExperimentOptions& o) {
+         hardest(o);
+         o.imageSizeKnown = true;
+         o.horizonReadSdDeg = 0.5;
+       }},
   };
   const auto firstWord = [](const std::string& f) { return f.substr(0, f.find(' ')); };
   for (const auto& f : factors) {
     const bool known = std::any_of(all.begin(), all.end(), [&](const auto& c) { return firstWord(std::get<0>(c)) == f; });
-    if (!known) badCameraOption("no factor '" + f + "' (length, height, speed, layout, fps, elevation, image, aim, focal, hardest)");
+    if (!known) badCameraOption("no factor '" + f + "' (length, height, speed, layout, fps, elevation, image, aim, focal, edge, horizon, hardest)");
   }
   std::vector<CameraWideCondition> out;
   for (const auto& [factor, level, change] : all) {

@@ -92,6 +92,12 @@ struct CameraExperimentOptions {
   // The height of the point the camera looks at (where the walker passes mid-clip), uniform
   // (mm); equal, no draw: the clip above, aimed at 1 m (about the walker's pelvis).
   double minLookAtHeightMm = 1000.0, maxLookAtHeightMm = 1000.0;
+  // The scene's horizon read off the footage's level lines (video/scene_horizon.h) and given to
+  // the fit as its prior (CameraFitOptions::horizonRowPx): the true camera's horizon, read with a
+  // Gaussian error of this SD and this bias (degrees as the camera sees them; the bias stands
+  // for lines that are not level, a ramp's). Unset: no horizon, as for a keypoint file.
+  std::optional<double> horizonReadSdDeg;
+  double horizonReadBiasDeg = 0.0;
   // Each clip's keypoint file(s) kept in this folder, as SUBJECT_cameraK_Npx/ (the camera
   // 0-based, the noise level in px), for a user to open a clip the experiment scored; unset:
   // written to a temporary folder and removed.
@@ -198,9 +204,10 @@ struct CameraWideCondition {
 // 1.5-2.0 m/s with the cadence taking half; COCO-17; 25 fps; elevation 0-35° and 20-35°;
 // the image's size known; the camera aimed 0-2 m high; the focal length known; points off the
 // picture dropped), then "all hardest" (1.2 strides, 120 px, 1.5-2.0 m/s, COCO-17, 25 fps,
-// 0-35°, image unknown; and with the image, the focal length, or the edge). `factors` keeps only
-// the factors named (their first word: "length", "height", "speed", "layout", "fps",
-// "elevation", "image", "aim", "focal", "edge", "hardest");
+// 0-35°, image unknown; and with the image, the focal length, the edge or the scene's horizon);
+// the scene's horizon read within 0.5° (and read 3° off) is factor "horizon". `factors` keeps
+// only the factors named (their first word: "length", "height", "speed", "layout", "fps",
+// "elevation", "image", "aim", "focal", "edge", "horizon", "hardest");
 // empty: all. Error(BadArgument) naming an unknown factor.
 std::vector<CameraWideCondition> cameraWideConditions(const CameraExperimentOptions& base,
                                                       const std::vector<std::string>& factors = {});

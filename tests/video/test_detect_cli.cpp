@@ -71,17 +71,30 @@ TEST(DetectCli, TheWalkingVideoBecomesAWalkerWithNoOtherTool) {
   EXPECT_LT(std::abs(std::abs(report["alpha_deg"].get<double>()) - 90.0), 15.0);
   EXPECT_NE(report["format"].get<std::string>().find("BlazePose"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "walk3d.csv"));
-  // The scene's horizon beside the fit's: its window rows put it at 563–570 px; the fit puts
-  // the camera's eye near her knees (docs/CAMERA.md, "The scene's horizon"), and says so.
+  // The scene's horizon: its window rows put it at 563–570 px, a camera 1.45 m up that sees her
+  // pelvis 3.4–3.8° from above (docs/CAMERA.md, "The scene's horizon"). Held to it, the fit's
+  // camera is 1.2° off it and sees her pelvis 2.4° from above; alone, 4.7° off, its eye near her
+  // knees (0.65° from below), and it says so.
   const json& horizon = report["scene_horizon"];
   ASSERT_TRUE(horizon["row_px"].is_number()) << horizon.dump();
   EXPECT_NEAR(horizon["row_px"].get<double>(), 566.0, 10.0);
+  EXPECT_TRUE(horizon["used_as_prior"].get<bool>());
+  const double cy = report["image_centre_px"][1].get<double>(), f = report["focal_px"].get<double>();
   EXPECT_NEAR(horizon["fit_off_deg"].get<double>(),
-              std::atan((horizon["fit_row_px"].get<double>() - horizon["row_px"].get<double>()) /
-                        report["focal_px"].get<double>()) * 180.0 / std::numbers::pi, 1e-9);
-  EXPECT_EQ(std::abs(horizon["fit_off_deg"].get<double>()) > 2.0,
-            r.err.find("caution: the scene's level lines") != std::string::npos) << r.err;
+              std::atan((cy - horizon["row_px"].get<double>()) / f) * 180.0 / std::numbers::pi -
+                  report["elevation_deg"].get<double>(), 1e-9);
+  EXPECT_LT(std::abs(horizon["fit_off_deg"].get<double>()), 2.0);
+  EXPECT_GT(report["view_elevation_deg"].get<double>(), 1.5);
+  EXPECT_EQ(r.err.find("caution: the scene's level lines"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("scene: its level lines put the horizon at row"), std::string::npos) << r.err;
+  const test::ShellRun alone =
+      runCli("reconstruct --input " + video.string() + " --out alone.csv --json --scene-horizon check", dir);
+  ASSERT_EQ(alone.exitCode, 0) << alone.err;
+  const json aloneReport = jsonAfter(alone.out);
+  EXPECT_FALSE(aloneReport["scene_horizon"]["used_as_prior"].get<bool>());
+  EXPECT_GT(aloneReport["scene_horizon"]["fit_off_deg"].get<double>(), 2.0);
+  EXPECT_LT(aloneReport["view_elevation_deg"].get<double>(), report["view_elevation_deg"].get<double>() - 1.0);
+  EXPECT_NE(alone.err.find("caution: the scene's level lines"), std::string::npos) << alone.err;
   // info on the same video: from the cache, the walker and her stride.
   const test::ShellRun info = runCli("info --json " + video.string(), dir);
   ASSERT_EQ(info.exitCode, 0) << info.err;
