@@ -46,6 +46,8 @@ struct SceneHorizon {
 // stream that ends before its container said is read as far as it goes. Throws what
 // VideoSource's constructor throws for a file it cannot open.
 std::optional<SceneHorizon> sceneHorizonOf(const std::filesystem::path& video, int frames, std::string& why);
+// The frames `reconstruct` and the viewer read a video's horizon on.
+inline constexpr int kSceneHorizonFrames = 12;
 inline constexpr double kMaxHorizonSpread = 0.02;
 
 }  // namespace ew

@@ -168,10 +168,9 @@ void printSummary(const json& r) {
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
 }
 
-// Frames of a video read for its scene's horizon, and the disagreement with the fitted camera's
-// horizon beyond which the camera's height is called unsure: on the widened experiment's clean
-// clips the fit reads the angle it sees the walker from within 0.5–1° (median; docs/CAMERA.md).
-constexpr int kSceneHorizonFrames = 12;
+// The disagreement with the fitted camera's horizon beyond which the camera's height is called
+// unsure: on the widened experiment's clean clips the fit reads the angle it sees the walker
+// from within 0.5–1° (median; docs/CAMERA.md).
 constexpr double kSceneHorizonCautionDeg = 2.0;
 
 // The horizon read off a video's own level lines (video/scene_horizon.h), before the fit that

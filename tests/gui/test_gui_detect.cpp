@@ -86,6 +86,12 @@ TEST_F(GuiDetect, DetectsTheSports2dWalkerAndFitsHerOverTheFootage) {
   EXPECT_LE(fit["stature_m"].get<double>(), 1.75);
   EXPECT_GE(fit["stride_hz"].get<double>(), 0.7);
   EXPECT_LE(fit["stride_hz"].get<double>(), 1.3);
+  // The scene's horizon, read off the facades' window rows (563–570 px by hand), holds the
+  // camera's height as `reconstruct` does: the fitted camera's horizon within 2° of it.
+  ASSERT_TRUE(d["done"]["horizon_row_px"].is_number()) << d["done"];
+  EXPECT_NEAR(d["done"]["horizon_row_px"].get<double>(), 566.0, 10.0);
+  EXPECT_EQ(s["clip"]["scene_horizon_row_px"], d["done"]["horizon_row_px"]);
+  EXPECT_LT(std::abs(fit["horizon_off_deg"].get<double>()), 2.0) << fit["horizon_row_px"];
   // Her heels and foot indices, lifted into 3D and drawn with the walker.
   EXPECT_GT(fit["feet"]["samples_lifted"].get<int>(), fit["feet"]["samples_seen"].get<int>() * 9 / 10) << fit["feet"];
   expectLayoutHolds(s, "demo.mp4 detected, 1600x900", {"input"});

@@ -38,7 +38,9 @@ CameraKnowledge cameraOf(const ClipSettings& settings) {
   g.alphaDeg = settings.alphaDeg;
   g.elevationDeg = settings.elevationDeg;
   g.names = {"the focal length", "the calibration file", "the image's size", "the azimuth", "the elevation"};
-  return resolveCameraKnowledge(g);
+  CameraKnowledge k = resolveCameraKnowledge(g);
+  if (!k.elevationDeg) k.horizonRowPx = settings.horizonRowPx;  // a held elevation needs none
+  return k;
 }
 
 // The eigenwalker through the camera (core/engines/request.h), with the σ² the model stores

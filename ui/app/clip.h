@@ -47,6 +47,9 @@ struct ClipSettings {
   // the walker's track redone around each (correctTrial, core/tracking/corrected_track.h)
   // before the fit. Null when none.
   std::shared_ptr<const Keyframes> corrections;
+  // The horizon's row read off the video's level lines (DetectedVideo::horizon): the fit holds
+  // its camera's height to it, as `reconstruct` does (docs/CAMERA.md, "The scene's horizon").
+  std::optional<double> horizonRowPx;
   bool operator==(const ClipSettings&) const = default;
 };
 

@@ -72,6 +72,11 @@ DetectedVideo detectVideo(const std::filesystem::path& video, PoseModelSize mode
   d.heightPx = run.video.heightPx;
   d.fps = run.video.fps;
   d.warnings = run.warnings;
+  try {
+    d.horizon = sceneHorizonOf(video, kSceneHorizonFrames, d.horizonWhyNone);
+  } catch (const std::exception& e) {  // the people were read: a horizon is not worth losing them
+    d.horizonWhyNone = e.what();
+  }
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;
 }

@@ -8,11 +8,13 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/keypoints/keypoint_frames.h"
 #include "video/pose_model_files.h"
+#include "video/scene_horizon.h"
 
 namespace ew::ui {
 
@@ -45,6 +47,10 @@ struct DetectedVideo {
   int widthPx = 0, heightPx = 0;
   double fps = 0.0;
   bool fromCache = false;    // read back from the detection cache (video/detection_cache.h)
+  // The horizon the footage's own level lines give (video/scene_horizon.h), read after the
+  // people, as `reconstruct` reads it: the fit holds its camera's height to it. Else why none.
+  std::optional<SceneHorizon> horizon;
+  std::string horizonWhyNone;
   double seconds = 0.0;
   std::vector<std::string> warnings;
 };

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/camera/walk_camera.h"
 #include "core/common/json_number.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
@@ -148,6 +149,7 @@ nlohmann::json clipJson(const AppState& s) {
                       {"azimuth_deg_fixed", optionalJson(c.alphaDeg)},
                       {"elevation_deg_fixed", optionalJson(c.elevationDeg)},
                       {"image_size_given", imageSizeJson(c.imageSize)},
+                      {"scene_horizon_row_px", optionalJson(c.horizonRowPx)},
                       {"fit_error", s.clip.fits.error()},
                       {"source", c.tracked ? "track" : c.detected ? "detections" : "file"},
                       {"corrections", c.corrections ? c.corrections->keyframes.size() : 0}};
@@ -179,6 +181,10 @@ nlohmann::json clipJson(const AppState& s) {
       {"focal_px", pinhole ? nlohmann::json(f.camera.focalPx) : nlohmann::json(nullptr)},
       {"distance_m",
        pinhole ? nlohmann::json(f.camera.distanceMm / 1000.0) : nlohmann::json(nullptr)},
+      // The fitted camera's horizon (c_y − f tan ε) and its angle from the scene's, when read.
+      {"horizon_row_px", pinhole ? nlohmann::json(horizonRowPx(f.camera)) : nlohmann::json(nullptr)},
+      {"horizon_off_deg", pinhole && r.settings.horizonRowPx ? nlohmann::json(horizonOffDeg(f.camera, *r.settings.horizonRowPx))
+                                                    : nlohmann::json(nullptr)},
       {"reprojection_rms_px", f.reprojectionRmsPx},
       {"outlier_samples", f.outlierSamples},
       {"residual_rms_px", residuals},
@@ -244,7 +250,9 @@ nlohmann::json videoJson(const AppState& s) {
                               {"frames", d.framesRead},
                               {"frames_with_people", d.framesWithPeople},
                               {"from_cache", d.fromCache},
-                              {"seconds", d.seconds}};
+                              {"seconds", d.seconds},
+                              {"horizon_row_px", d.horizon ? nlohmann::json(d.horizon->rowPx) : nlohmann::json(nullptr)},
+                              {"horizon_why_none", d.horizonWhyNone}};
   }
   if (v.tracked) {
     const auto& t = *v.tracked;

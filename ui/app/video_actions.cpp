@@ -480,6 +480,7 @@ void fitDetections(AppState& s) {
   else if (!c.corrections || !sameKeyframes(*c.corrections, v.keyframes))
     c.corrections = std::make_shared<const Keyframes>(v.keyframes);
   c.video = keypointVideoOf(*v.detected);
+  c.horizonRowPx = v.detected->horizon ? std::optional<double>(v.detected->horizon->rowPx) : std::nullopt;
   s.clip.settings = c;
   s.doc.mode = Mode::Clip;
   s.clip.fits.retry();

@@ -7,6 +7,7 @@
 #include <imgui.h>
 #include <opencv2/core.hpp>
 
+#include "core/camera/walk_camera.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
 #include "ui/panels/clip_view.h"
@@ -85,6 +86,27 @@ void addDetectedPeople(Scene& scene, const std::vector<KeypointDetection>& peopl
   }
 }
 
+// A horizon across the picture at `rowPx`: dashed (the scene's, read off its lines) or whole
+// (the fitted camera's).
+void addHorizon(Scene& scene, double rowPx, int widthPx, float width, glm::vec4 colour, bool dashed) {
+  if (!std::isfinite(rowPx)) return;
+  const float y = -static_cast<float>(rowPx), w = static_cast<float>(widthPx);
+  const float dash = dashed ? w / 48.0f : w;
+  for (float x = 0.0f; x < w; x += dashed ? 2.0f * dash : dash)
+    scene.overlayLines.push_back({glm::vec3(x, y, 0.8f), width, glm::vec3(std::min(x + dash, w), y, 0.8f), 0.0f, colour});
+}
+
+// The scene's horizon and the fitted camera's (docs/CAMERA.md, "The scene's horizon"): where
+// the two part, the camera's height over the walker is unsure.
+void addHorizons(const AppState& s, Scene& scene, float lineScale, bool fitted) {
+  const VideoSession& v = *s.video.session;
+  if (!v.detected || !v.detected->horizon || v.marking) return;
+  const int widthPx = v.frames->info().widthPx;
+  addHorizon(scene, v.detected->horizon->rowPx, widthPx, 2.0f * lineScale, palette::kSceneHorizon, true);
+  if (fitted && actions::showsDetectionFit(s))
+    addHorizon(scene, horizonRowPx(s.clip.fit()->rec.fit.camera), widthPx, 1.5f * lineScale, palette::kCamera, false);
+}
+
 }  // namespace
 
 glm::vec2 VideoViewFrame::toVideoPx(glm::vec2 share, float aspect) const {
@@ -154,6 +176,7 @@ bool buildVideoInputScene(const AppState& s, Scene& scene, float lineScale,
     addTrackedPose(scene, *v.tracked, frame, radius, lineScale);
   }
   if (const Keyframe* k = v.keyframeAt(frame)) addKeyframeMarks(scene, *k, radius, lineScale);
+  addHorizons(s, scene, lineScale, fitted);
   if (const auto* mat = static_cast<const cv::Mat*>(bgrMat); mat && !mat->empty()) {
     scene.image.bgr = mat->data;
     scene.image.width = mat->cols;

@@ -39,6 +39,9 @@ inline constexpr glm::vec4 kCameraEstimate{0.90f, 0.15f, 0.10f, 1.0f};
 // from it for a protanope), the keypoints' white, the reprojection's amber and the camera.
 inline constexpr glm::vec4 kOtherPerson{0.58f, 0.55f, 0.22f, 0.75f};
 inline constexpr glm::vec4 kTrail{0.55f, 0.75f, 1.00f, 0.30f};
+// The horizon the footage's level lines give, dashed over the video: a pale steel, apart from
+// the camera's teal (the fitted camera's horizon) and the keypoints' white.
+inline constexpr glm::vec4 kSceneHorizon{0.72f, 0.78f, 0.90f, 0.80f};
 inline constexpr glm::vec4 kAxis{0.40f, 0.44f, 0.50f, 0.8f};
 
 // Compare mode: one colour per engine (index of kEngineKinds: eigenwalker, snippet,
