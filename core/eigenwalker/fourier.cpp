@@ -1,7 +1,6 @@
 #include "core/eigenwalker/fourier.h"
 
 #include <Eigen/Cholesky>
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +8,7 @@
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
+#include "core/common/symmetric_eigen.h"
 #include "core/eigenwalker/minimize_1d.h"
 
 namespace ew {
@@ -226,9 +226,9 @@ ScanSignals makeScanSignals(const CleanFrames& cf, double rateHz) {
   }
   Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(dec.cols(), dec.cols());
   gram.selfadjointView<Eigen::Lower>().rankUpdate(dec.transpose());
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(gram.selfadjointView<Eigen::Lower>());
+  const SymmetricEigen eig = symmetricEigen(gram);
   const auto k = std::min<Eigen::Index>(kScanComponents, dec.cols());
-  const Eigen::MatrixXd basis = eig.eigenvectors().rightCols(k);  // largest eigenvalues last
+  const Eigen::MatrixXd basis = eig.vectors.rightCols(k);  // largest eigenvalues last
   ScanSignals s;
   // Lazy: a 480 × 45 by 45 × 6 product is cheaper than packing its operands for GEMM.
   s.full.values = cf.centered.lazyProduct(basis);
