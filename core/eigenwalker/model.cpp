@@ -1,10 +1,10 @@
 #include "core/eigenwalker/model.h"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 
 #include "core/common/errors.h"
+#include "core/common/thin_svd.h"
 #include "core/eigenwalker/fourier.h"
 
 namespace ew {
@@ -109,11 +109,11 @@ EigenwalkerModel buildModel(const Eigen::Ref<const Eigen::MatrixXd>& w,
   const Eigen::MatrixXd x = w.colwise() - model.mean;
   // Thin SVD; Jacobi (QR-preconditioned for this tall matrix) for accuracy on the small
   // singular values that decide N.
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(x, Eigen::ComputeThinU);
-  const Eigen::Index rank = std::min<Eigen::Index>(r - 1, svd.singularValues().size());
-  model.spectrum = svd.singularValues().head(rank).array().square() / static_cast<double>(r - 1);
+  const ThinSvd svd = thinSvd(x);
+  const Eigen::Index rank = std::min<Eigen::Index>(r - 1, svd.singularValues.size());
+  model.spectrum = svd.singularValues.head(rank).array().square() / static_cast<double>(r - 1);
   const int n = chooseComponents(model.spectrum, options);
-  model.eigenwalkers = svd.matrixU().leftCols(n);
+  model.eigenwalkers = svd.u.leftCols(n);
   fixSigns(model.eigenwalkers);
   model.eigenvalues = model.spectrum.head(n);
   model.coefficients = model.eigenwalkers.transpose() * x;

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "core/common/nan.h"
+#include "core/common/thin_svd.h"
 
 namespace ew {
 namespace {
@@ -58,11 +59,11 @@ std::vector<Pose> clusterPoses(const std::vector<MarkerTrack>& cluster, int fram
 // The axis of a hinge: the right singular vector of the smallest singular value, when that
 // is below kHingeRatio of the largest. Moves x along it to the point nearest the anchor's
 // mean position in the proximal cluster's frame.
-void slideAlongAxis(const Eigen::JacobiSVD<Eigen::MatrixXd>& svd, const std::vector<Pose>& p,
+void slideAlongAxis(const ThinSvd& svd, const std::vector<Pose>& p,
                     const std::vector<int>& frames, const MarkerTrack& anchor, Eigen::VectorXd& x) {
-  const auto& s = svd.singularValues();
+  const auto& s = svd.singularValues;
   if (s(5) >= kHingeRatio * s(0)) return;  // a ball joint: the point is determined
-  const Eigen::VectorXd v = svd.matrixV().col(5);
+  const Eigen::VectorXd v = svd.v.col(5);
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   int n = 0;
   for (int f : frames) {
@@ -115,9 +116,8 @@ MarkerTrack functionalJointCentre(const std::vector<MarkerTrack>& proximal,
   }
   // A hinge leaves one direction (the axis) nearly free: singular values below 5 % of the
   // largest are dropped, so the solution is the minimum-norm point on the axis.
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(a, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  svd.setThreshold(kHingeRatio);
-  Eigen::VectorXd x = svd.solve(rhs);
+  const ThinSvd svd = thinSvd(a);
+  Eigen::VectorXd x = solveThroughSvd(svd, rhs, kHingeRatio);
   if (anchor) slideAlongAxis(svd, p, both, *anchor, x);
   const Eigen::Vector3d inProximal = x.head<3>(), inDistal = x.tail<3>();
   for (int f = 0; f < frames; ++f) {

@@ -1,12 +1,12 @@
 #include "core/semantic/semantic_axes.h"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
 
 #include "core/common/errors.h"
+#include "core/common/thin_svd.h"
 #include "core/experiments/leave_one_out.h"
 
 namespace ew {
@@ -41,9 +41,9 @@ RidgeResult ridgeRegression(const Eigen::MatrixXd& z, const Eigen::VectorXd& y) 
   const Eigen::MatrixXd zc = z.rowwise() - zMean;
   const double yMean = y.mean();
   const Eigen::VectorXd yc = y.array() - yMean;
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(zc, Eigen::ComputeThinU | Eigen::ComputeThinV);
-  const Eigen::VectorXd s = svd.singularValues();
-  const Eigen::MatrixXd& u = svd.matrixU();
+  const ThinSvd svd = thinSvd(zc);
+  const Eigen::VectorXd s = svd.singularValues;
+  const Eigen::MatrixXd& u = svd.u;
   const Eigen::VectorXd uty = u.transpose() * yc;
   double bestPress = std::numeric_limits<double>::infinity();
   double bestRidge = 1.0;
@@ -70,7 +70,7 @@ RidgeResult ridgeRegression(const Eigen::MatrixXd& z, const Eigen::VectorXd& y) 
   RidgeResult out;
   out.ridge = bestRidge;
   const Eigen::VectorXd coef = (s.array() / (s.array().square() + bestRidge)).matrix().asDiagonal() * uty;
-  out.weights = svd.matrixV() * coef;
+  out.weights = svd.v * coef;
   out.intercept = yMean - zMean.dot(out.weights);
   return out;
 }

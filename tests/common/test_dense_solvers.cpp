@@ -1,13 +1,17 @@
 // The project's one symmetric eigensolver (core/common/symmetric_eigen.h): A v = λ v with the
 // values ascending and the vectors orthonormal, from the lower triangle alone; a matrix with a
-// NaN says it did not converge.
+// NaN says it did not converge. Its one thin SVD (core/common/thin_svd.h): A = U S Vᵀ, and the
+// solve through it the least-squares one, or the minimum-norm one when a direction is dropped.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Cholesky>
+
 #include "core/common/symmetric_eigen.h"
+#include "core/common/thin_svd.h"
 
 namespace ew {
 namespace {
@@ -30,6 +34,25 @@ TEST(SymmetricEigen, ANonFiniteMatrixDoesNotConverge) {
   Eigen::MatrixXd a = Eigen::MatrixXd::Identity(3, 3);
   a(2, 1) = std::numeric_limits<double>::quiet_NaN();
   EXPECT_FALSE(symmetricEigen(a).converged);
+}
+
+TEST(ThinSvd, ItsFactorsRebuildTheMatrixAndItsSolveDropsTheFreeDirection) {
+  Eigen::MatrixXd a = Eigen::MatrixXd::Random(9, 4);
+  const Eigen::VectorXd rhs = Eigen::VectorXd::Random(9);
+  // Well conditioned: the least-squares solution (the normal equations agree).
+  const ThinSvd full = thinSvd(a);
+  ASSERT_EQ(full.u.cols(), 4);
+  EXPECT_LT((full.u * full.singularValues.asDiagonal() * full.v.transpose() - a).cwiseAbs().maxCoeff(), 1e-12);
+  const Eigen::VectorXd normal = (a.transpose() * a).ldlt().solve(a.transpose() * rhs);
+  EXPECT_LT((solveThroughSvd(full, rhs, 1e-12) - normal).cwiseAbs().maxCoeff(), 1e-9);
+  // A direction nearly free (a hinge's axis): dropped at 5 %, the solution has nothing along it
+  // and leaves a residual with nothing along the kept directions.
+  a.col(3) = a.col(0) + 1e-4 * a.col(3);
+  const ThinSvd hinge = thinSvd(a);
+  ASSERT_LT(hinge.singularValues[3], 0.05 * hinge.singularValues[0]);
+  const Eigen::VectorXd x = solveThroughSvd(hinge, rhs, 0.05);
+  EXPECT_LT(std::abs(hinge.v.col(3).dot(x)), 1e-12);
+  EXPECT_LT((hinge.u.leftCols(3).transpose() * (a * x - rhs)).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 }  // namespace
