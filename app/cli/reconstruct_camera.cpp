@@ -178,8 +178,9 @@ constexpr double kSceneHorizonCautionDeg = 2.0;
 // a held elevation) or --scene-horizon off.
 struct SceneHorizonReading {
   bool read = false;
-  std::optional<SceneHorizon> horizon;
-  std::string why;  // when read and none was found
+  std::optional<double> rowPx;  // the horizon's row, when found
+  json found;                   // what was found: the vanishing point, the frames agreeing …
+  std::string why;              // … or why none was
 };
 
 SceneHorizonReading readSceneHorizon(const CameraArgs& a, const CameraKnowledge& camera) {
@@ -188,7 +189,14 @@ SceneHorizonReading readSceneHorizon(const CameraArgs& a, const CameraKnowledge&
   const bool pinhole = camera.focalPx || camera.estimateFocal;
   if (!isVideoFile(a.input) || a.sceneHorizon == "off" || !pinhole || camera.elevationDeg) return r;
   r.read = true;
-  r.horizon = sceneHorizonOf(a.input, kSceneHorizonFrames, r.why);
+  const std::optional<SceneHorizon> h = sceneHorizonOf(a.input, kSceneHorizonFrames, r.why);
+  if (!h) return r;
+  r.rowPx = h->rowPx;
+  r.found = {{"row_px", h->rowPx},
+             {"vanishing_point_px", {h->vanishingPointPx.x(), h->vanishingPointPx.y()}},
+             {"row_spread_px", h->rowSpreadPx},
+             {"frames_agreeing", h->framesAgreeing},
+             {"frames_read", h->framesRead}};
 #else
   (void)a, (void)camera;
 #endif
@@ -200,13 +208,13 @@ SceneHorizonReading readSceneHorizon(const CameraArgs& a, const CameraKnowledge&
 json sceneHorizonJson(const SceneHorizonReading& reading, bool usedAsPrior, const CameraFit& fit,
                       std::vector<std::string>& cautions) {
   if (!reading.read || fit.camera.model != CameraModel::Pinhole) return nullptr;
-  if (!reading.horizon) return {{"row_px", nullptr}, {"why_none", reading.why}};
-  const SceneHorizon& h = *reading.horizon;
+  if (!reading.rowPx) return {{"row_px", nullptr}, {"why_none", reading.why}};
+  const double row = *reading.rowPx;
   const double fitRow = horizonRowPx(fit.camera);
-  const double offDeg = horizonOffDeg(fit.camera, h.rowPx);
+  const double offDeg = horizonOffDeg(fit.camera, row);
   if (std::abs(offDeg) > kSceneHorizonCautionDeg) {
     std::ostringstream text;
-    text << std::fixed << std::setprecision(0) << "the scene's level lines put the horizon at row " << h.rowPx
+    text << std::fixed << std::setprecision(0) << "the scene's level lines put the horizon at row " << row
          << " px, the fitted camera at row " << fitRow << " px: the camera's height over the walker, and so its "
          << "elevation, are " << std::setprecision(1) << std::abs(offDeg) << " deg off the scene's";
     if (usedAsPrior)
@@ -215,14 +223,11 @@ json sceneHorizonJson(const SceneHorizonReading& reading, bool usedAsPrior, cons
     text << " (docs/CAMERA.md, \"The scene's horizon\")";
     cautions.push_back(text.str());
   }
-  return {{"row_px", h.rowPx},
-          {"vanishing_point_px", {h.vanishingPointPx.x(), h.vanishingPointPx.y()}},
-          {"row_spread_px", h.rowSpreadPx},
-          {"frames_agreeing", h.framesAgreeing},
-          {"frames_read", h.framesRead},
-          {"used_as_prior", usedAsPrior},
-          {"fit_row_px", fitRow},
-          {"fit_off_deg", offDeg}};
+  json out = reading.found;
+  out["used_as_prior"] = usedAsPrior;
+  out["fit_row_px"] = fitRow;
+  out["fit_off_deg"] = offDeg;
+  return out;
 }
 
 // What the command line says of the camera (core/camera/camera_knowledge.h).
@@ -303,8 +308,8 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
                  CameraKnowledge camera, const json& lens, const json& imageSizeFrom = nullptr,
                  CameraFit* fitOut = nullptr) {
   const SceneHorizonReading horizon = readSceneHorizon(a, camera);
-  const bool horizonPrior = horizon.horizon && a.sceneHorizon == "prior";
-  if (horizonPrior) camera.horizonRowPx = horizon.horizon->rowPx;
+  const bool horizonPrior = horizon.rowPx && a.sceneHorizon == "prior";
+  if (horizonPrior) camera.horizonRowPx = horizon.rowPx;
   DetectionLoopOptions loopOptions;
   loopOptions.rounds = modelLoopRounds(a);
   const CameraFitOptions o = cameraFitOptions(camera, estimatorOf(model, a), a.input);
