@@ -38,6 +38,9 @@ using nlohmann::json;
 
 struct TrackArgs {
   std::string video, keyframes, keyframesFrom, out, compare, reconstruct, tracker = "flow";
+  // --reconstruct: CameraArgs::sceneHorizon; "check", since a track's fit held to it moved its
+  // focal length and distance away from the scene's (docs/CAMERA.md, "The scene's horizon").
+  std::string sceneHorizon = "check";
   std::vector<int> keyframeFrames{0};
   int first = 0, last = -1;
   int overlayEvery = 0;  // 0: no overlay pictures
@@ -246,6 +249,8 @@ int runTrack(const TrackArgs& a) {
   // through BODY_25's mapping and detector offsets, which are not what was tracked.
   CameraArgs c;
   c.input = info.file + " (tracked)";
+  c.horizonVideo = info.file;
+  c.sceneHorizon = a.sceneHorizon;
   c.out = a.reconstruct;
   c.modelName = defaultRealModelName();
   c.strideFromTrunk = true;
@@ -290,6 +295,13 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::Range(0.1, 10000.0));
   cmd->add_option("--reconstruct", args->reconstruct,
                   "also write the 3D walker (eigenwalker, unknown camera) here");
+  cmd->add_option("--scene-horizon", args->sceneHorizon,
+                  "with --reconstruct: the video's horizon, read off the scene's level lines "
+                  "(docs/CAMERA.md, \"The scene's horizon\"): check (reported beside the fit's, "
+                  "with a caution when they disagree), prior (the fit holds its camera's height to "
+                  "it: on a track it can pull the focal length and distance away) or off")
+      ->check(CLI::IsMember({"prior", "check", "off"}))
+      ->capture_default_str();
   cmd->add_option("--overlay-every", args->overlayEvery,
                   "draw the track over every N-th frame into OUT/overlay/ (PNG)")
       ->check(CLI::PositiveNumber);

@@ -46,6 +46,9 @@ struct CameraArgs : KeypointSourceArgs {
   // A video's own horizon (video/scene_horizon.h): "prior" (the fit holds its camera's height
   // to it), "check" (reported beside the fit's only) or "off" (not read).
   std::string sceneHorizon = "prior";
+  // The video whose horizon is read when the input is not that video itself (`track
+  // --reconstruct` fits its track of it); "" reads the input's, when it is a video.
+  std::string horizonVideo;
   // Write only the frames from the walker's first seen frame to its last (`gait V.mp4`: the
   // periodic walker before and after is the model's, not the footage's). No flag sets it.
   bool seenFramesOnly = false;

@@ -168,11 +168,6 @@ void printSummary(const json& r) {
   std::cerr << "\nwrote " << r["output"].get<std::string>() << "\n";
 }
 
-// The disagreement with the fitted camera's horizon beyond which the camera's height is called
-// unsure: on the widened experiment's clean clips the fit reads the angle it sees the walker
-// from within 0.5–1° (median; docs/CAMERA.md).
-constexpr double kSceneHorizonCautionDeg = 2.0;
-
 // The horizon read off a video's own level lines (video/scene_horizon.h), before the fit that
 // may hold to it; nothing for a keypoint file, a camera without a horizon (scaled orthography,
 // a held elevation) or --scene-horizon off.
@@ -187,9 +182,10 @@ SceneHorizonReading readSceneHorizon(const CameraArgs& a, const CameraKnowledge&
   SceneHorizonReading r;
 #ifdef EW_HAVE_VIDEO
   const bool pinhole = camera.focalPx || camera.estimateFocal;
-  if (!isVideoFile(a.input) || a.sceneHorizon == "off" || !pinhole || camera.elevationDeg) return r;
+  const std::string& video = a.horizonVideo.empty() ? a.input : a.horizonVideo;
+  if (!isVideoFile(video) || a.sceneHorizon == "off" || !pinhole || camera.elevationDeg) return r;
   r.read = true;
-  const std::optional<SceneHorizon> h = sceneHorizonOf(a.input, kSceneHorizonFrames, r.why);
+  const std::optional<SceneHorizon> h = sceneHorizonOf(video, kSceneHorizonFrames, r.why);
   if (!h) return r;
   r.rowPx = h->rowPx;
   r.found = {{"row_px", h->rowPx},
@@ -212,17 +208,8 @@ json sceneHorizonJson(const SceneHorizonReading& reading, bool usedAsPrior, cons
   const double row = *reading.rowPx;
   const double fitRow = horizonRowPx(fit.camera);
   const double offDeg = horizonOffDeg(fit.camera, row);
-  if (std::abs(offDeg) > kSceneHorizonCautionDeg) {
-    std::ostringstream text;
-    text << std::fixed << std::setprecision(0) << "the scene's level lines put the horizon at row " << row
-         << " px, the fitted camera at row " << fitRow << " px: the camera's height over the walker, and so its "
-         << "elevation, are " << std::setprecision(1) << std::abs(offDeg) << " deg off the scene's";
-    if (usedAsPrior)
-      text << " although the fit was held to it: the walker's image disagrees (lines that are not level, a ramp "
-           << "or stairs, or joints the detector misplaced)";
-    text << " (docs/CAMERA.md, \"The scene's horizon\")";
-    cautions.push_back(text.str());
-  }
+  if (std::string caution = sceneHorizonCaution(fit, row, usedAsPrior); !caution.empty())
+    cautions.push_back(std::move(caution));
   json out = reading.found;
   out["used_as_prior"] = usedAsPrior;
   out["fit_row_px"] = fitRow;

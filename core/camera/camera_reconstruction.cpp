@@ -389,10 +389,44 @@ std::string implausibleFocalCaution(const CameraFit& fit, bool focalGiven, std::
   return text;
 }
 
+std::string principalPointOffThePictureCaution(const CameraFit& fit, std::optional<Eigen::Vector2d> imageSizePx) {
+  if (!imageSizePx || fit.camera.model != CameraModel::Pinhole) return "";
+  const double w = imageSizePx->x(), h = imageSizePx->y(), cx = fit.camera.cxPx, cy = fit.camera.cyPx;
+  const double offPx = std::hypot(cx - 0.5 * w, cy - 0.5 * h);
+  const double limitPx = kPrincipalPointCautionSds * kPrincipalPointSdShare * std::max(w, h);
+  if (offPx <= limitPx) return "";
+  char text[400];
+  std::snprintf(text, sizeof text,
+                "the fitted camera's principal point, (%.0f, %.0f) px, lies %.0f px from the %.0fx%.0f px picture's "
+                "centre, where a camera's lies near it: its tilt (the elevation, %.1f°) is likely wrong, and with it "
+                "the walker's depth (a track that lost the legs, or keypoints of another motion)",
+                cx, cy, offPx, w, h, fit.camera.elevationDeg);
+  return text;
+}
+
+std::string sceneHorizonCaution(const CameraFit& fit, double sceneRowPx, bool heldToIt) {
+  if (fit.camera.model != CameraModel::Pinhole) return "";
+  const double offDeg = horizonOffDeg(fit.camera, sceneRowPx);
+  if (!(std::abs(offDeg) > kSceneHorizonCautionDeg)) return "";
+  char text[480];
+  std::snprintf(text, sizeof text,
+                "the scene's level lines put the horizon at row %.0f px, the fitted camera at row %.0f px: the camera's "
+                "height over the walker, and so its elevation, are %.1f deg off the scene's%s (docs/CAMERA.md, \"The "
+                "scene's horizon\")",
+                sceneRowPx, horizonRowPx(fit.camera), std::abs(offDeg),
+                heldToIt ? " although the fit was held to it: the walker's image disagrees (lines that are not level, a "
+                           "ramp or stairs, or joints the detector misplaced)"
+                         : "");
+  return text;
+}
+
 std::vector<std::string> cameraFitCautions(const CameraFit& fit, const FitGivens& given) {
   std::vector<std::string> out;
+  const std::optional<double> imageWidthPx =
+      given.imageSizePx ? std::optional<double>(given.imageSizePx->x()) : std::nullopt;
   for (std::string c : {inPlaceAzimuthCaution(fit, given.azimuth), implausibleStrideCaution(fit),
-                        implausibleFocalCaution(fit, given.focal, given.imageWidthPx)})
+                        implausibleFocalCaution(fit, given.focal, imageWidthPx),
+                        principalPointOffThePictureCaution(fit, given.imageSizePx)})
     if (!c.empty()) out.push_back(std::move(c));
   return out;
 }

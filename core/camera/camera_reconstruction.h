@@ -162,10 +162,31 @@ bool strideIsImplausible(const CameraFit& fit);  // the same test, no sentence
 // it gives the picture is at most kMaxFieldOfViewDeg.
 std::string implausibleFocalCaution(const CameraFit& fit, bool focalGiven, std::optional<double> imageWidthPx);
 
+// A fitted principal point this many of its prior's SDs (kPrincipalPointSdShare) from the
+// picture's centre (half the picture's longer side; a 16:9 picture's corners are beyond) is a
+// tilt the walker's image could not pin down. On the widened camera experiment (2016 fits),
+// the fits that put it there were all fitted without the image's size, each 13–27° off in
+// azimuth and 0.4 or 2.4–5.5 times the distance; with the size known none went past 0.9 SD.
+// The sports2d demo's sound track fit puts it 1.65 SDs off, its unflattened track's 3–4
+// (docs/CAMERA.md, "Outputs").
+inline constexpr double kPrincipalPointCautionSds = 2.0;
+// "" when the image's size is unknown or the fitted principal point lies within
+// kPrincipalPointCautionSds of the picture's centre.
+std::string principalPointOffThePictureCaution(const CameraFit& fit, std::optional<Eigen::Vector2d> imageSizePx);
+
+// The fitted camera's horizon this far from the scene's (horizonOffDeg, core/camera/walk_camera.h)
+// makes the camera's height over the walker unsure: on the widened experiment's clean clips the
+// fit reads the angle it sees the walker from within 0.5–1° (median; docs/CAMERA.md).
+inline constexpr double kSceneHorizonCautionDeg = 2.0;
+// "" for scaled orthography or a fit within kSceneHorizonCautionDeg of the scene's horizon
+// (`sceneRowPx`, video/scene_horizon.h); `heldToIt`: the fit had it as a prior, so the walker's
+// image itself disagrees.
+std::string sceneHorizonCaution(const CameraFit& fit, double sceneRowPx, bool heldToIt);
+
 // What the fit was given, for its cautions.
 struct FitGivens {
   bool azimuth = false, focal = false;
-  std::optional<double> imageWidthPx;
+  std::optional<Eigen::Vector2d> imageSizePx;  // width, height
 };
 // Every caution above that applies, in that order: the report's `cautions`.
 std::vector<std::string> cameraFitCautions(const CameraFit& fit, const FitGivens& given);

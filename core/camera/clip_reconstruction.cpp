@@ -103,9 +103,9 @@ ClipReconstruction reconstructKeypointTrial(const EigenwalkerModel& model, Keypo
   c.feet = liftFeetOntoSagittalPlanes(c.trial.feetPx, c.framesMm, c.timesS, c.fit.camera);
   FitGivens given{fitOptions.alphaDeg.has_value(), fitOptions.focalPx.has_value(), std::nullopt};
   if (fitOptions.imageSizePx)
-    given.imageWidthPx = fitOptions.imageSizePx->x();
-  else if (c.trial.imageSize && c.trial.imageSize->width > 0)
-    given.imageWidthPx = c.trial.imageSize->width;
+    given.imageSizePx = fitOptions.imageSizePx;
+  else if (c.trial.imageSize && c.trial.imageSize->width > 0 && c.trial.imageSize->height > 0)
+    given.imageSizePx = Eigen::Vector2d(c.trial.imageSize->width, c.trial.imageSize->height);
   c.cautions = cameraFitCautions(c.fit, given);
   return c;
 }

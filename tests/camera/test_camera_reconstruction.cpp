@@ -451,8 +451,9 @@ TEST(CameraReconstruction, InPlaceAzimuthCautionOnlyForALevelSideOrObliqueView) 
   EXPECT_EQ(inPlaceAzimuthCaution(fit, false), "") << "walking past: the progression pins it";
 }
 
-// A stride people do not walk, and a fisheye's field of view, are said too (the sports2d demo's
-// unflattened tracks: 2.79 m for 1.71 m; 324 px for a 1768 px picture, 140°).
+// A stride people do not walk, a fisheye's field of view and a principal point off the picture
+// are said too (the sports2d demo's unflattened tracks: 2.79 m for 1.71 m; 324 px for a
+// 1768 px picture, 140°; the principal point 1330 px below the picture's centre).
 TEST(CameraReconstruction, ImplausibleWalksAndLensesAreCautioned) {
   CameraFit fit;
   fit.camera.model = CameraModel::Pinhole;
@@ -478,10 +479,31 @@ TEST(CameraReconstruction, ImplausibleWalksAndLensesAreCautioned) {
   fit.camera.focalPx = 0.5 * 1768 / std::tan(60.0 * std::numbers::pi / 180.0) + 1.0;  // just under 120°
   EXPECT_EQ(implausibleFocalCaution(fit, false, 1768.0), "");
 
+  // The principal point: within half the picture's longer side of its centre (its edges' middles;
+  // the sound track fit's (1403, 1009), just below the picture).
+  const Eigen::Vector2d picture(1768, 994);
+  for (const Eigen::Vector2d& pp : {Eigen::Vector2d(884, 497), Eigen::Vector2d(884, 0), Eigen::Vector2d(1, 497),
+                                    Eigen::Vector2d(1403, 1009), Eigen::Vector2d(884 + 883, 497)}) {
+    fit.camera.cxPx = pp.x();
+    fit.camera.cyPx = pp.y();
+    EXPECT_EQ(principalPointOffThePictureCaution(fit, picture), "") << pp.transpose();
+  }
+  fit.camera.cxPx = 1137;
+  fit.camera.cyPx = 1827;  // the demo's unflattened track held to the scene's horizon
+  EXPECT_NE(principalPointOffThePictureCaution(fit, picture).find("(1137, 1827) px, lies 1354 px from the 1768x994"),
+            std::string::npos)
+      << principalPointOffThePictureCaution(fit, picture);
+  EXPECT_EQ(principalPointOffThePictureCaution(fit, std::nullopt), "") << "the picture's size unknown";
+  fit.camera.cyPx = 497;
+  fit.camera.cxPx = 884 + 885;
+  EXPECT_NE(principalPointOffThePictureCaution(fit, picture), "");
+
   fit.strideLengthM = 2.79;
   fit.camera.focalPx = 324;
-  EXPECT_EQ(cameraFitCautions(fit, {false, false, 1768.0}).size(), 2u);
-  EXPECT_EQ(cameraFitCautions(fit, {false, true, 1768.0}).size(), 1u);
+  EXPECT_EQ(cameraFitCautions(fit, {false, false, picture}).size(), 3u);
+  EXPECT_EQ(cameraFitCautions(fit, {false, true, picture}).size(), 2u);
+  fit.camera.cxPx = 884;
+  EXPECT_EQ(cameraFitCautions(fit, {false, true, picture}).size(), 1u);
 }
 
 // A person standing in place, shifting a little, is not walking on a treadmill either.

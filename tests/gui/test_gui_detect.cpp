@@ -91,6 +91,7 @@ TEST_F(GuiDetect, DetectsTheSports2dWalkerAndFitsHerOverTheFootage) {
   ASSERT_TRUE(d["done"]["horizon_row_px"].is_number()) << d["done"];
   EXPECT_NEAR(d["done"]["horizon_row_px"].get<double>(), 566.0, 10.0);
   EXPECT_EQ(s["clip"]["scene_horizon_row_px"], d["done"]["horizon_row_px"]);
+  EXPECT_EQ(s["clip"]["scene_horizon_held"], true);
   EXPECT_LT(std::abs(fit["horizon_off_deg"].get<double>()), 2.0) << fit["horizon_row_px"];
   // Her heels and foot indices, lifted into 3D and drawn with the walker.
   EXPECT_GT(fit["feet"]["samples_lifted"].get<int>(), fit["feet"]["samples_seen"].get<int>() * 9 / 10) << fit["feet"];

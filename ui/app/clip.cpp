@@ -39,7 +39,7 @@ CameraKnowledge cameraOf(const ClipSettings& settings) {
   g.elevationDeg = settings.elevationDeg;
   g.names = {"the focal length", "the calibration file", "the image's size", "the azimuth", "the elevation"};
   CameraKnowledge k = resolveCameraKnowledge(g);
-  if (!k.elevationDeg) k.horizonRowPx = settings.horizonRowPx;  // a held elevation needs none
+  if (!k.elevationDeg && settings.holdToHorizon) k.horizonRowPx = settings.horizonRowPx;  // a held elevation needs none
   return k;
 }
 
@@ -83,6 +83,10 @@ ClipResult fitClip(const ClipSettings& settings, const ClipModel& model) {
   } else {
     r.rec = fitThroughCamera(model, readKeypointTrial(settings.path, k), camera, false);
   }
+  if (settings.horizonRowPx)
+    if (std::string caution = sceneHorizonCaution(r.rec.fit, *settings.horizonRowPx, camera.horizonRowPx.has_value());
+        !caution.empty())
+      r.rec.cautions.push_back(std::move(caution));
   // The reader took the size as given: say it was the calibration's, as the CLI's report does.
   if (camera.imageSizeFromCalibration && r.rec.trial.imageSize == camera.imageSize)
     r.rec.trial.imageSizeSource = "the calibration's";

@@ -47,9 +47,12 @@ struct ClipSettings {
   // the walker's track redone around each (correctTrial, core/tracking/corrected_track.h)
   // before the fit. Null when none.
   std::shared_ptr<const Keyframes> corrections;
-  // The horizon's row read off the video's level lines (DetectedVideo::horizon): the fit holds
-  // its camera's height to it, as `reconstruct` does (docs/CAMERA.md, "The scene's horizon").
+  // The horizon's row read off the video's level lines (ui/app/detection.h, VideoHorizon): a
+  // detection's fit holds its camera's height to it, as `reconstruct` does; a track's is only
+  // checked against it, as `track --reconstruct`'s is (docs/CAMERA.md, "The scene's horizon").
+  // Either way a fit more than 2° off it is cautioned.
   std::optional<double> horizonRowPx;
+  bool holdToHorizon = true;
   bool operator==(const ClipSettings&) const = default;
 };
 

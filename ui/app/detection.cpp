@@ -72,13 +72,19 @@ DetectedVideo detectVideo(const std::filesystem::path& video, PoseModelSize mode
   d.heightPx = run.video.heightPx;
   d.fps = run.video.fps;
   d.warnings = run.warnings;
-  try {
-    d.horizon = sceneHorizonOf(video, kSceneHorizonFrames, d.horizonWhyNone);
-  } catch (const std::exception& e) {  // the people were read: a horizon is not worth losing them
-    d.horizonWhyNone = e.what();
-  }
+  d.horizon = readVideoHorizon(video);
   d.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;
+}
+
+VideoHorizon readVideoHorizon(const std::filesystem::path& video) {
+  VideoHorizon h;
+  try {
+    h.scene = sceneHorizonOf(video, kSceneHorizonFrames, h.whyNone);
+  } catch (const std::exception& e) {
+    h.whyNone = e.what();
+  }
+  return h;
 }
 
 KeypointVideo keypointVideoOf(const DetectedVideo& d) {

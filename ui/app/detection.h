@@ -34,6 +34,18 @@ class LiveDetections {
   int latest_ = -1;
 };
 
+// The horizon a video's own level lines give (video/scene_horizon.h), as `reconstruct` reads
+// it: a fit of a walker detected or tracked in the video holds its camera's height to it.
+struct VideoHorizon {
+  std::optional<SceneHorizon> scene;  // none when the lines do not agree on one …
+  std::string whyNone;                // … and why
+  std::optional<double> rowPx() const { return scene ? std::optional<double>(scene->rowPx) : std::nullopt; }
+};
+
+// Reads it (about 1.6 s on a 1080p video); a failure to read is a reason, not a throw: the
+// walker's joints were read, and a horizon is not worth losing them.
+VideoHorizon readVideoHorizon(const std::filesystem::path& video);
+
 // A finished detection.
 struct DetectedVideo {
   std::filesystem::path video;
@@ -49,8 +61,7 @@ struct DetectedVideo {
   bool fromCache = false;    // read back from the detection cache (video/detection_cache.h)
   // The horizon the footage's own level lines give (video/scene_horizon.h), read after the
   // people, as `reconstruct` reads it: the fit holds its camera's height to it. Else why none.
-  std::optional<SceneHorizon> horizon;
-  std::string horizonWhyNone;
+  VideoHorizon horizon;
   double seconds = 0.0;
   std::vector<std::string> warnings;
 };

@@ -150,6 +150,7 @@ nlohmann::json clipJson(const AppState& s) {
                       {"elevation_deg_fixed", optionalJson(c.elevationDeg)},
                       {"image_size_given", imageSizeJson(c.imageSize)},
                       {"scene_horizon_row_px", optionalJson(c.horizonRowPx)},
+                      {"scene_horizon_held", c.horizonRowPx && c.holdToHorizon},
                       {"fit_error", s.clip.fits.error()},
                       {"source", c.tracked ? "track" : c.detected ? "detections" : "file"},
                       {"corrections", c.corrections ? c.corrections->keyframes.size() : 0}};
@@ -157,6 +158,7 @@ nlohmann::json clipJson(const AppState& s) {
   const ClipResult& r = *s.clip.fit();
   const CameraFit& f = r.rec.fit;
   const bool pinhole = f.camera.model == CameraModel::Pinhole;
+  const std::optional<double> sceneRow = r.settings.horizonRowPx;
   std::vector<double> residuals(r.rec.residualRmsPx.begin(), r.rec.residualRmsPx.end());
   for (double& v : residuals)
     if (!std::isfinite(v)) v = -1.0;  // JSON has no NaN: never seen
@@ -183,8 +185,7 @@ nlohmann::json clipJson(const AppState& s) {
        pinhole ? nlohmann::json(f.camera.distanceMm / 1000.0) : nlohmann::json(nullptr)},
       // The fitted camera's horizon (c_y − f tan ε) and its angle from the scene's, when read.
       {"horizon_row_px", pinhole ? nlohmann::json(horizonRowPx(f.camera)) : nlohmann::json(nullptr)},
-      {"horizon_off_deg", pinhole && r.settings.horizonRowPx ? nlohmann::json(horizonOffDeg(f.camera, *r.settings.horizonRowPx))
-                                                    : nlohmann::json(nullptr)},
+      {"horizon_off_deg", pinhole && sceneRow ? nlohmann::json(horizonOffDeg(f.camera, *sceneRow)) : nlohmann::json(nullptr)},
       {"reprojection_rms_px", f.reprojectionRmsPx},
       {"outlier_samples", f.outlierSamples},
       {"residual_rms_px", residuals},
@@ -251,8 +252,8 @@ nlohmann::json videoJson(const AppState& s) {
                               {"frames_with_people", d.framesWithPeople},
                               {"from_cache", d.fromCache},
                               {"seconds", d.seconds},
-                              {"horizon_row_px", d.horizon ? nlohmann::json(d.horizon->rowPx) : nlohmann::json(nullptr)},
-                              {"horizon_why_none", d.horizonWhyNone}};
+                              {"horizon_row_px", optionalJson(d.horizon.rowPx())},
+                              {"horizon_why_none", d.horizon.whyNone}};
   }
   if (v.tracked) {
     const auto& t = *v.tracked;
@@ -269,7 +270,9 @@ nlohmann::json videoJson(const AppState& s) {
                   {"model_loop_fits", t.loopRounds.size()},
                   {"model_loop_hidden_joint_frames",
                    t.loopRounds.empty() ? 0 : t.loopRounds.back().hiddenJointFrames},
-                  {"model_loop_stopped", t.loopStopped}};
+                  {"model_loop_stopped", t.loopStopped},
+                  {"horizon_row_px", optionalJson(t.horizon.rowPx())},
+                  {"horizon_why_none", t.horizon.whyNone}};
     j["track"]["frame_to_mark_next"] = actions::nextFrameToMark(s);
     j["track"]["least_sure_frame"] = actions::leastSureTrackedFrame(s);
   }

@@ -22,6 +22,12 @@ const Keyframe* VideoSession::keyframeAt(int f) const {
   return nullptr;
 }
 
+const VideoHorizon* VideoSession::horizon() const {
+  if (tracked) return &tracked->horizon;
+  if (detected) return &detected->horizon;
+  return nullptr;
+}
+
 TrackSettings trackSettingsOf(const VideoSession& v, int last) {
   return {v.firstFrame,        last,           v.tracker,
           v.flattenBackground, v.holdTheTrunk, v.modelLoopRounds};
@@ -52,7 +58,8 @@ void deriveFromTrack(TrackedVideo& t) {
 TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes,
                         const TrackSettings& settings,
                         std::shared_ptr<const EigenwalkerModel> model,
-                        const std::function<bool(double)>& progress) {
+                        const std::function<bool(double)>& progress,
+                        std::optional<VideoHorizon> horizon) {
   const auto start = std::chrono::steady_clock::now();
   VideoSource source(video);
   const bool flow = settings.tracker == TrackerKind::OpticalFlow;
@@ -74,6 +81,7 @@ TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& key
     t.track = trackJoints(source, keyframes, o, progress);
   }
   deriveFromTrack(t);
+  t.horizon = horizon ? std::move(*horizon) : readVideoHorizon(video);
   t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   t.ranFirst = t.track.firstFrame;
   t.ranLast = t.lastFrame();

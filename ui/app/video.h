@@ -34,6 +34,7 @@ struct TrackedVideo {
   int modelLoopRounds = 0;                 // asked for (video/model_loop.h); the flow tracker only
   std::vector<ModelLoopRound> loopRounds;  // one per fit the loop made
   std::string loopStopped;                 // why the loop stopped early ("" when it did not)
+  VideoHorizon horizon;                    // the video's (readVideoHorizon): the fit holds to it
   JointTrack track;
   std::shared_ptr<const KeypointTrial> trial;  // the track's confident points (trialFromJoints)
   Eigen::VectorXd meanConfidence;              // a frame's mean over the joints (the panel's strip)
@@ -93,6 +94,8 @@ struct VideoSession {
   double fps() const { return frames ? frames->info().fps : 0.0; }
   // The keyframe on `frame`, if any.
   const Keyframe* keyframeAt(int frame) const;
+  // The video's horizon, once a track or a detection has read it; null before.
+  const VideoHorizon* horizon() const;
 };
 
 // What a track is asked for: a VideoSession's settings when it starts.
@@ -107,10 +110,12 @@ TrackSettings trackSettingsOf(const VideoSession& v, int last);
 // Reads and tracks (blocking; the viewer runs it as a background job). `progress` gets the
 // share done and returns false to cancel. Throws the tracker's and trialFromJoints' errors.
 // `modelLoopRounds` > 0 (the flow tracker): tracked with `model` in the loop (video/model_loop.h).
+// `horizon`: the video's, when already read (a detection or an earlier track); read otherwise.
 TrackedVideo trackVideo(const std::filesystem::path& video, const Keyframes& keyframes,
                         const TrackSettings& settings,
                         std::shared_ptr<const EigenwalkerModel> model,
-                        const std::function<bool(double)>& progress);
+                        const std::function<bool(double)>& progress,
+                        std::optional<VideoHorizon> horizon = std::nullopt);
 
 // The same frames marked, each joint at the same place (or unmarked on both).
 bool sameKeyframes(const Keyframes& a, const Keyframes& b);

@@ -417,10 +417,11 @@ void startTracking(AppState& s) {
   const auto model = v.modelLoopRounds > 0 && v.tracker == TrackerKind::OpticalFlow
                          ? modelForTracking(s)
                          : nullptr;
+  const std::optional<VideoHorizon> horizon = v.horizon() ? std::optional(*v.horizon()) : std::nullopt;
   s.video.track.start(
-      title, [path = v.path, keys = v.keyframes, settings, model](JobProgress& p) {
-        return std::make_shared<const TrackedVideo>(
-            trackVideo(path, keys, settings, model, frameProgress(p, settings.first, settings.last)));
+      title, [path = v.path, keys = v.keyframes, settings, model, horizon](JobProgress& p) {
+        return std::make_shared<const TrackedVideo>(trackVideo(
+            path, keys, settings, model, frameProgress(p, settings.first, settings.last), horizon));
       });
 }
 
@@ -480,7 +481,8 @@ void fitDetections(AppState& s) {
   else if (!c.corrections || !sameKeyframes(*c.corrections, v.keyframes))
     c.corrections = std::make_shared<const Keyframes>(v.keyframes);
   c.video = keypointVideoOf(*v.detected);
-  c.horizonRowPx = v.detected->horizon ? std::optional<double>(v.detected->horizon->rowPx) : std::nullopt;
+  c.horizonRowPx = v.detected->horizon.rowPx();
+  c.holdToHorizon = true;
   s.clip.settings = c;
   s.doc.mode = Mode::Clip;
   s.clip.fits.retry();

@@ -100,10 +100,11 @@ void addHorizon(Scene& scene, double rowPx, int widthPx, float width, glm::vec4 
 // the two part, the camera's height over the walker is unsure.
 void addHorizons(const AppState& s, Scene& scene, float lineScale, bool fitted) {
   const VideoSession& v = *s.video.session;
-  if (!v.detected || !v.detected->horizon || v.marking) return;
+  const VideoHorizon* horizon = v.horizon();
+  if (!horizon || !horizon->scene || v.marking) return;
   const int widthPx = v.frames->info().widthPx;
-  addHorizon(scene, v.detected->horizon->rowPx, widthPx, 2.0f * lineScale, palette::kSceneHorizon, true);
-  if (fitted && actions::showsDetectionFit(s))
+  addHorizon(scene, horizon->scene->rowPx, widthPx, 2.0f * lineScale, palette::kSceneHorizon, true);
+  if (fitted && actions::showsVideoFit(s))
     addHorizon(scene, horizonRowPx(s.clip.fit()->rec.fit.camera), widthPx, 1.5f * lineScale, palette::kCamera, false);
 }
 

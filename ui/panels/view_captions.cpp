@@ -192,9 +192,9 @@ ViewCaption videoInputCaption(const AppState& s, int frame, bool decoding, bool 
     legend.push_back({palette::confidenceColour(0.0f), "tracked: lost", false});
   }
   // The horizons video_view.cpp draws (addHorizons).
-  if (v.detected && v.detected->horizon && !v.marking) {
+  if (v.horizon() && v.horizon()->scene && !v.marking) {
     legend.push_back({palette::kSceneHorizon, "horizon (the scene's level lines)", true});
-    if (fitted && actions::showsDetectionFit(s)) legend.push_back({palette::kCamera, "horizon (est. camera)", true});
+    if (fitted && actions::showsVideoFit(s)) legend.push_back({palette::kCamera, "horizon (est. camera)", true});
   }
   return {"2D input (video)", sub, std::move(legend)};
 }
