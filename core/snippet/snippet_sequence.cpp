@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/common/errors.h"
 #include "core/common/skeleton.h"
@@ -19,16 +20,6 @@ std::vector<int> snippetStarts(int frames, int length, int hop) {
   return starts;
 }
 
-// The angle among `angles` with the least summed wrapped distance to the others.
-double circularMedianDeg(const std::vector<double>& angles) {
-  double best = angles.front(), bestCost = 1e300;
-  for (double a : angles) {
-    double cost = 0.0;
-    for (double b : angles) cost += std::abs(wrapDeg(a - b));
-    if (cost < bestCost) { bestCost = cost; best = a; }
-  }
-  return best;
-}
 
 // A snippet in the view's frame: U, D, V (mm) per frame and joint, each S × 15.
 struct ViewSnippet {
@@ -190,6 +181,26 @@ void checkSequenceInput(const SnippetPrior& prior, const Eigen::Ref<const Eigen:
 }
 
 }  // namespace
+
+// With an even count the two middle angles tie (every angle between them has the same sum),
+// and which one rounding made the least would decide on the last bits of the fits.
+double circularMedianDeg(const std::vector<double>& angles) {
+  std::vector<double> cost(angles.size(), 0.0);
+  for (std::size_t i = 0; i < angles.size(); ++i)
+    for (double b : angles) cost[i] += std::abs(wrapDeg(angles[i] - b));
+  const double least = *std::min_element(cost.begin(), cost.end());
+  const double tie = 1e-9 * 180.0 * static_cast<double>(angles.size());  // far above rounding, far below a degree
+  std::vector<double> tied;
+  for (std::size_t i = 0; i < angles.size(); ++i)
+    if (cost[i] <= least + tie) tied.push_back(angles[i]);
+  if (tied.size() == 1) return tied.front();
+  double sinSum = 0.0, cosSum = 0.0;
+  for (double a : tied) {
+    sinSum += std::sin(degToRad(a));
+    cosSum += std::cos(degToRad(a));
+  }
+  return std::atan2(sinSum, cosSum) * 180.0 / std::numbers::pi;
+}
 
 SnippetSequence reconstructSnippetSequence(const PreparedSnippetPrior& prep,
                                            const Eigen::Ref<const Eigen::MatrixXd>& uv, double rateHz,

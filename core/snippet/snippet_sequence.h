@@ -23,6 +23,11 @@
 
 namespace ew {
 
+// The angle among `anglesDeg` with the least summed wrapped distance to the others; where
+// several tie (the middle two of an even count), their circular mean, as a median of an even
+// count is its middle two's mean.
+double circularMedianDeg(const std::vector<double>& anglesDeg);
+
 struct SnippetSequenceOptions {
   SnippetFitOptions fit;
   int hop = 4;                  // frames between snippet starts, at the prior's rate

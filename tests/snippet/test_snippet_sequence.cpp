@@ -14,6 +14,20 @@
 namespace ew {
 namespace {
 
+// The clip's view angle from its snippets' own: their circular median, the middle two's
+// circular midpoint for an even count (not whichever rounding made the least), across ±180°.
+TEST(CircularMedian, TakesTheMiddleAngleOrTheMiddleTwosMidpoint) {
+  EXPECT_DOUBLE_EQ(circularMedianDeg({10.0, 20.0, 90.0}), 20.0);
+  EXPECT_DOUBLE_EQ(circularMedianDeg({42.0}), 42.0);
+  EXPECT_NEAR(circularMedianDeg({10.0, 20.0}), 15.0, 1e-12);
+  EXPECT_NEAR(circularMedianDeg({40.0, 10.0, 30.0, 20.0}), 25.0, 1e-12);
+  EXPECT_NEAR(circularMedianDeg({20.0, 30.0, 10.0, 40.0}), 25.0, 1e-12) << "the order does not matter";
+  EXPECT_NEAR(std::abs(circularMedianDeg({170.0, -170.0})), 180.0, 1e-12) << "across the wrap";
+  EXPECT_NEAR(circularMedianDeg({-175.0, 175.0, 178.0, -179.0}), 179.5, 1e-9);
+  // Angles a fit returns differ in their last bits: the answer does not jump between them.
+  EXPECT_NEAR(circularMedianDeg({-60.000000000001, -58.0, -61.0, -59.5}), -59.75, 1e-9);
+}
+
 struct HeldOut {
   PreparedSnippetPrior prior;
   Eigen::MatrixXd frames30;  // held-out trial with its progression, 30 Hz
