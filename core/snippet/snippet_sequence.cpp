@@ -20,7 +20,6 @@ std::vector<int> snippetStarts(int frames, int length, int hop) {
   return starts;
 }
 
-
 // A snippet in the view's frame: U, D, V (mm) per frame and joint, each S × 15.
 struct ViewSnippet {
   Eigen::MatrixXd u, d, v;

@@ -35,7 +35,8 @@ class LiveDetections {
 };
 
 // The horizon a video's own level lines give (video/scene_horizon.h), as `reconstruct` reads
-// it: a fit of a walker detected or tracked in the video holds its camera's height to it.
+// it: a detected walker's fit holds its camera's height to it, a tracked one's is checked
+// against it (ClipSettings::holdToHorizon).
 struct VideoHorizon {
   std::optional<SceneHorizon> scene;  // none when the lines do not agree on one …
   std::string whyNone;                // … and why
