@@ -93,6 +93,8 @@ TEST_F(GuiClip, OpenPoseFolderShowsTheReprojectionAndTheCamera) {
       // Issue 53: the viewer holds a focal length to the one rule (core/camera/focal_length.h).
       {{"expect_failure", {{"set_clip", {{"focal_px", 1e308}}}}}},
       {{"expect_failure", {{"set_clip", {{"focal_px", 49.0}}}}}},
+      // A keypoint folder has no scene of its own: no horizon to hold the camera to.
+      {{"expect_failure", {{"set_clip", {{"hold_to_horizon", true}}}}}},
       // The standing person does not walk: fitting it fails, and the walker's fit stays.
       {{"expect_failure", {{"set_clip", {{"person", 1}}}}}},
       {{"export_state", path("standing.json")}},

@@ -374,6 +374,8 @@ TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideStatureAndProfile) {
       {{"export_state", path("sports2d.json")}},
       {{"export_png", {{"path", path("sports2d_input.png")}, {"view", "input"}}}},
       {{"screenshot", path("sports2d.png")}},
+      {{"set_clip", {{"hold_to_horizon", true}}}},
+      {{"export_state", path("sports2d_held.json")}},
   });
   const auto file = writeScript(dir, script.dump(2));
   const RunResult r = runViewer(dir, "--size 1600x900 --script " + quote(file.string()));
@@ -408,6 +410,10 @@ TEST_F(GuiVideo, MarksTheSports2dWalkerOnceAndFindsHerStrideStatureAndProfile) {
   EXPECT_EQ(s["clip"]["scene_horizon_row_px"], s["video"]["track"]["horizon_row_px"]);
   EXPECT_EQ(s["clip"]["scene_horizon_held"], false);
   EXPECT_GT(fit["horizon_off_deg"].get<double>(), 2.0) << "the camera's horizon beside the scene's";
+  // Held to it when asked, as `track --reconstruct --scene-horizon prior` holds it (7.5° → 3.0°).
+  const json held = state("sports2d_held.json")["clip"];
+  EXPECT_EQ(held["scene_horizon_held"], true);
+  EXPECT_LT(std::abs(held["fit"]["horizon_off_deg"].get<double>()), 0.6 * fit["horizon_off_deg"].get<double>());
 }
 
 // Issue 16: Zou et al.'s appearance tracker is chosen in the Track section (the script's

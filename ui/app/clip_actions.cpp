@@ -339,6 +339,13 @@ void setClipElevation(AppState& s, std::optional<double> elevationDeg) {
   clipSettings(s).elevationDeg = elevationDeg;
 }
 
+void setClipHoldToHorizon(AppState& s, bool hold) {
+  ClipSettings& c = clipSettings(s);
+  if (!c.horizonRowPx)
+    throw std::invalid_argument("no scene horizon was read for this clip (a detected or tracked video's level lines give one)");
+  c.holdToHorizon = hold;
+}
+
 void setClipLayout(AppState& s, const std::string& layout) {
   std::string name;
   if (!layout.empty()) {

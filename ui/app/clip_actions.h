@@ -25,6 +25,10 @@ void openClip(AppState& s, const std::filesystem::path& path);
 void setClipFocal(AppState& s, std::optional<double> focalPx);
 void setClipAzimuth(AppState& s, std::optional<double> alphaDeg);
 void setClipElevation(AppState& s, std::optional<double> elevationDeg);
+// Whether the fit holds its camera's height to the scene's horizon read off the clip's video
+// (ClipSettings::holdToHorizon: a detection's does, a track's does not unless asked). Throws
+// std::invalid_argument when no horizon was read for the clip.
+void setClipHoldToHorizon(AppState& s, bool hold);
 void setClipLayout(AppState& s, const std::string& layout);
 void setClipFps(AppState& s, double fps);
 void setClipPerson(AppState& s, int person);

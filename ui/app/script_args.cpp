@@ -121,7 +121,7 @@ void markJoints(AppState& s, const ScriptAction& a) {
 }
 
 // {"set_clip": {"focal_px": F | null, "azimuth_deg": A | null, "elevation_deg": E | null,
-//  "layout": "BODY_25B" | "", "fps": 30 | 0, "person": 1 | -1, "image_size": "1920x1080" | null}}:
+//  "hold_to_horizon": true | false, "layout": "BODY_25B" | "", "fps": 30 | 0, "person": 1 | -1, "image_size": "1920x1080" | null}}:
 // null / "" / 0 / -1 estimate, guess or take the default again.
 void applyClipSettings(AppState& s, const ScriptAction& a) {
   if (!a.argument.is_object() || a.argument.empty())
@@ -139,6 +139,9 @@ void applyClipSettings(AppState& s, const ScriptAction& a) {
       actions::setClipAzimuth(s, optionalNumber(v, key));
     } else if (key == "elevation_deg") {
       actions::setClipElevation(s, optionalNumber(v, key));
+    } else if (key == "hold_to_horizon") {
+      if (!v.is_boolean()) throw std::invalid_argument("hold_to_horizon must be true or false");
+      actions::setClipHoldToHorizon(s, v.get<bool>());
     } else if (key == "layout") {
       if (!v.is_string()) throw std::invalid_argument("layout must be a string");
       actions::setClipLayout(s, v.get<std::string>());
@@ -163,8 +166,8 @@ void applyClipSettings(AppState& s, const ScriptAction& a) {
     } else {
       throw std::invalid_argument(
           "unknown clip setting \"" + key +
-          "\" (known: focal_px, azimuth_deg, elevation_deg, layout, fps, person, image_size, calibration, "
-          "calibration_camera)");
+          "\" (known: focal_px, azimuth_deg, elevation_deg, hold_to_horizon, layout, fps, person, image_size, "
+          "calibration, calibration_camera)");
     }
   }
 }

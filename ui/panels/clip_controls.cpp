@@ -191,6 +191,18 @@ static void drawCameraHolds(AppState& s, const ClipSettings& c, const ClipResult
   textDisabledWrapped("elevation (looking down)");
   heldValue(s, "elevation", "the elevation", c.elevationDeg, cam ? cam->elevationDeg : 10.0, -10.0f, 60.0f, "%.1f°",
             false, [&](std::optional<double> v) { actions::setClipElevation(s, v); });
+  if (c.horizonRowPx && !c.elevationDeg) {
+    bool hold = c.holdToHorizon;
+    if (ImGui::Checkbox("hold to the horizon", &hold))
+      apply(s, [&] { actions::setClipHoldToHorizon(s, hold); });
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("The horizon the video's level lines give (row %.0f px, the dashed line).\n"
+                        "Held, the fit keeps its camera's height over the walker near it, as it does\n"
+                        "for a detected walker. A track's noisier joints held to it gave a camera\n"
+                        "farther off, so a track's fit is only checked against it unless this is ticked\n"
+                        "(docs/CAMERA.md, \"The scene's horizon\").",
+                        *c.horizonRowPx);
+  }
   textDisabledWrapped("azimuth α");
   heldValue(s, "azimuth", "the azimuth", c.alphaDeg, cam ? cam->alphaDeg : 0.0, -180.0f, 180.0f, "%.1f°", false,
             [&](std::optional<double> v) { actions::setClipAzimuth(s, v); });
