@@ -394,7 +394,7 @@ std::string principalPointOffThePictureCaution(const CameraFit& fit, std::option
   const double w = imageSizePx->x(), h = imageSizePx->y(), cx = fit.camera.cxPx, cy = fit.camera.cyPx;
   const double offPx = std::hypot(cx - 0.5 * w, cy - 0.5 * h);
   const double limitPx = kPrincipalPointCautionSds * kPrincipalPointSdShare * std::max(w, h);
-  if (offPx <= limitPx) return "";
+  if (!(w > 0.0 && h > 0.0 && std::isfinite(offPx)) || offPx <= limitPx) return "";  // nothing to measure
   char text[400];
   std::snprintf(text, sizeof text,
                 "the fitted camera's principal point, (%.0f, %.0f) px, lies %.0f px from the %.0fx%.0f px picture's "

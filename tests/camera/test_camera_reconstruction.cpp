@@ -494,6 +494,9 @@ TEST(CameraReconstruction, ImplausibleWalksAndLensesAreCautioned) {
             std::string::npos)
       << principalPointOffThePictureCaution(fit, picture);
   EXPECT_EQ(principalPointOffThePictureCaution(fit, std::nullopt), "") << "the picture's size unknown";
+  EXPECT_EQ(principalPointOffThePictureCaution(fit, Eigen::Vector2d(0, 0)), "") << "no picture to measure against";
+  fit.camera.cyPx = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(principalPointOffThePictureCaution(fit, picture), "") << "no principal point: no sentence with nan in it";
   fit.camera.cyPx = 497;
   fit.camera.cxPx = 884 + 885;
   EXPECT_NE(principalPointOffThePictureCaution(fit, picture), "");
