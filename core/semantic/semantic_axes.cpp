@@ -42,7 +42,7 @@ RidgeResult ridgeRegression(const Eigen::MatrixXd& z, const Eigen::VectorXd& y) 
   const double yMean = y.mean();
   const Eigen::VectorXd yc = y.array() - yMean;
   const ThinSvd svd = thinSvd(zc);
-  const Eigen::VectorXd s = svd.singularValues;
+  const Eigen::VectorXd& s = svd.singularValues;
   const Eigen::MatrixXd& u = svd.u;
   const Eigen::VectorXd uty = u.transpose() * yc;
   double bestPress = std::numeric_limits<double>::infinity();
