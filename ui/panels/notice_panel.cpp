@@ -139,7 +139,9 @@ void NoticePanel::draw(AppState& s, const FrameContext& ctx, const PanelRect& ro
     ImGui::AlignTextToFramePadding();
     if (cramped) {
       const bool shortFits = !n.shortTitle.empty() && ImGui::CalcTextSize(n.shortTitle.c_str()).x <= room;
-      ImGui::TextColored(accent, "%s", shortFits ? n.shortTitle.c_str() : n.error ? "Error" : "Warning");
+      // Where even the kind does not fit beside the buttons (a scaled-up UI), cut it: never under them.
+      const std::string label = fitText(shortFits ? n.shortTitle : n.error ? "Error" : "Warning", room);
+      ImGui::TextColored(accent, "%s", label.c_str());
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", n.fullText.c_str());
     } else {
       ImGui::TextColored(accent, "%s", (n.title + ":").c_str());
