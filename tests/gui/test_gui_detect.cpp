@@ -105,18 +105,22 @@ TEST_F(GuiDetect, DetectsTheSports2dWalkerAndFitsHerOverTheFootage) {
   cv::Scalar mean, sd;
   cv::meanStdDev(grey, mean, sd);
   EXPECT_GT(sd[0], 20.0) << "footage under the fit";
+  // The detections for the tests that need them but not their making (tests/video/pose_models.h).
+  if (!HasFailure()) shareDetectionCache(dir / "cache");
 }
 
 // Issue 52, "Marking and tracking become correction": a joint dragged on a detected frame is a
 // correction (a keyframe) that redoes the walker's track around it, fading over a quarter
 // second either side, and fits it again; undoing it puts the detections' fit back. The first
 // run finds where the knee was detected; the second, from the detection cache, corrects it.
+// Under ctest the first run reads the detections the test above made (a fixture).
 TEST_F(GuiDetect, ACorrectedJointRedoesTheTrackAroundItAndUndoes) {
   EW_REQUIRE_SHARED_DATA();
   EW_REQUIRE_POSE_MODELS();
   const fs::path video = sharedDataDir() / "video" / "sports2d-demo" / "demo.mp4";
   constexpr int kFrame = 60;
   constexpr int kKnee = 10;  // r_knee (METHOD §1 order)
+  if (seedDetectionCache(dir / "cache")) std::cout << "detections seeded from " << sharedDetectionsFolder() << "\n";
   ASSERT_EQ(run(json::array({{{"detect_video", video.string()}},
                              {{"video_frame", kFrame}},
                              {{"export_state", path("found.json")}}}))
