@@ -152,7 +152,7 @@ TEST_F(GuiDetect, ACorrectedJointRedoesTheTrackAroundItAndUndoes) {
     script.push_back({{"export_state", path("after" + std::to_string(f) + ".json")}});
   }
   script.push_back({{"video_frame", kFrame}});
-  script.push_back({{"undo_keyframes", true}});
+  script.push_back({{"undo", true}});  // the header's undo: the correction was the last change
   script.push_back({{"export_state", path("undone.json")}});
   const RunResult r = run(script);
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;

@@ -20,6 +20,7 @@
 #include "tests/common/test_support.h"
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
+#include "ui/app/undo.h"
 #include "ui/app/video_poll.h"
 #include "ui/panels/data_panel.h"
 #include "video/synthetic_footage.h"
@@ -145,6 +146,55 @@ TEST(VideoActions, OnADetectedVideoTheMarksAreCorrectionsOfTheFit) {
   actions::stopMarking(s);
   ASSERT_TRUE(s.clip.settings->corrections);
   EXPECT_EQ(s.clip.settings->corrections->keyframes.size(), 1u);
+}
+
+// The app's undo (Ctrl+Z, ui/app/undo.h) takes back the latest change, whichever history holds
+// it: a correction made after a setting's change is undone first, then the setting; redo
+// retraces them. Before, outside guided marking it undid the settings only and skipped the
+// correction the user had just made.
+TEST(VideoActions, UndoTakesBackTheLatestChangeWhetherACorrectionOrASetting) {
+  const Filmed f = filmWithKeyframes("video_actions_undo_order", 30, {0});
+  AppState s;
+  actions::openVideo(s, f.video);
+  auto d = std::make_shared<DetectedVideo>();
+  d->video = f.video;
+  d->frames = std::make_shared<const KeypointFrames>();
+  d->people = 1;
+  s.video.session->detected = d;
+  actions::fitDetections(s);
+  ASSERT_EQ(s.doc.mode, Mode::Clip);
+  const auto settle = [&s] { s.history.observe(captureParameters(s), captureParameterContext(s), true); };
+  settle();
+  ASSERT_EQ(s.view.theme, Theme::Dark);
+  s.view.theme = Theme::Light;  // a setting changed first
+  settle();
+  const int knee = index(Joint::RKnee);
+  s.video.session->frame = 12;
+  actions::markJoint(s, Joint::RKnee, f.truthPx(12, 2 * knee) + 20.0, f.truthPx(12, 2 * knee + 1));
+  actions::letGoOfJoint(s);  // then a correction
+  settle();
+  ASSERT_TRUE(s.clip.settings->corrections);
+  ASSERT_TRUE(canUndo(s));
+
+  undo(s);
+  EXPECT_FALSE(s.clip.settings->corrections) << "the correction, the latest change, first";
+  EXPECT_EQ(s.view.theme, Theme::Light);
+  undo(s);
+  EXPECT_EQ(s.view.theme, Theme::Dark) << "then the setting";
+  EXPECT_FALSE(canUndo(s));
+  redo(s);
+  EXPECT_EQ(s.view.theme, Theme::Light) << "redo retraces: the setting first";
+  EXPECT_FALSE(s.clip.settings->corrections);
+  redo(s);
+  EXPECT_TRUE(s.clip.settings->corrections) << "then the correction";
+  EXPECT_FALSE(canRedo(s));
+
+  // Out of the clip mode the keyframes are not shown, and not undone there.
+  s.doc.mode = Mode::Reconstruct;
+  settle();
+  undo(s);
+  EXPECT_EQ(s.doc.mode, Mode::Clip) << "the mode's change undone, not the hidden correction";
+  EXPECT_TRUE(s.clip.settings->corrections);
 }
 
 // Marks far outside the picture, from a keyframe file or a pose estimator's keypoints, are

@@ -63,6 +63,16 @@ void keyframesEdited(AppState& s, W& w) {
   w.checkLoad = actions::correctsDetections(s) && !s.video.session->marking;
 }
 
+// The app's undo or redo (ui/app/undo.h); when it stepped a video's keyframes, the script waits
+// for the fit they start as after `undo_keyframes`.
+void undoOrRedo(AppState& s, W& w, void (*step)(AppState&)) {
+  // An undo of the keyframes takes a step off their undo stack, a redo puts one back.
+  const auto keyframeSteps = [&s] { return s.video.session ? s.video.session->undo.size() : 0; };
+  const std::size_t before = keyframeSteps();
+  step(s);
+  if (keyframeSteps() != before) keyframesEdited(s, w);
+}
+
 // {"first": F, "last": L[, "tracker": "flow" | "appearance"][, "flatten_background": B]
 //  [, "hold_trunk": B][, "model_loop": N]} (L -1: the end): tracked and fitted in the
 // background; a track or fit that fails fails the script like a failed open.
@@ -371,8 +381,8 @@ const ScriptActionKind kActions[] = {
      actions::setSemanticValue(s, a.argument["attribute"].get<std::string>(),
                                a.argument["value"].get<double>());
    }},
-  {"undo", [](AppState& s, const A&, W&) { undo(s); }},
-  {"redo", [](AppState& s, const A&, W&) { redo(s); }},
+  {"undo", [](AppState& s, const A&, W& w) { undoOrRedo(s, w, undo); }},
+  {"redo", [](AppState& s, const A&, W& w) { undoOrRedo(s, w, redo); }},
   // The classroom stage (ui/app/stage_actions.h)
   {"inverted", [](AppState& s, const A& a, W&) { actions::setInverted(s, boolean(a)); }},
   {"scramble", [](AppState& s, const A& a, W&) { actions::setScramble(s, scrambleFromName(text(a))); }},

@@ -149,7 +149,7 @@ std::vector<ShortcutRow> makeRows() {
       {"A", "the audience window (projector) on / off",
        {key(GLFW_KEY_A, [](AppState& s) { actions::setAudienceOpen(s, !s.audience.open); })}},
       {"Q", "quiz \"which way is it walking?\": start / stop", {key(GLFW_KEY_Q, startOrStopQuiz)}},
-      {"Ctrl+Z", "undo the last change of a setting (marking a video's joints: of the keyframes)",
+      {"Ctrl+Z", "undo the last change: a setting, or a video's joint marked or corrected",
        {ctrl(GLFW_KEY_Z, [](AppState& s) { undo(s); })}},
       {"Ctrl+Shift+Z / Ctrl+Y", "redo",
        {ctrl(GLFW_KEY_Z, [](AppState& s) { redo(s); }, true), ctrl(GLFW_KEY_Y, [](AppState& s) { redo(s); })}},

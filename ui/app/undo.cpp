@@ -1,6 +1,7 @@
 #include "ui/app/undo.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "ui/app/actions.h"
 #include "ui/app/app_state.h"
@@ -53,6 +54,11 @@ void restoreParameters(AppState& s, const Parameters& p) {
 
 // [SECTION] The history
 
+std::uint64_t nextEditSerial() {
+  static std::uint64_t serial = 0;
+  return ++serial;
+}
+
 void ParameterHistory::observe(const Parameters& now, const ParameterContext& context, bool settled) {
   if (context_ != context) {
     context_ = context;
@@ -66,7 +72,7 @@ void ParameterHistory::observe(const Parameters& now, const ParameterContext& co
 
 void ParameterHistory::record(const Parameters& now) {
   if (current_) {
-    undo_.push_back(*current_);
+    undo_.push_back({*current_, nextEditSerial()});
     if (undo_.size() > kMaxSteps) undo_.erase(undo_.begin());
   }
   current_ = now;
@@ -76,8 +82,8 @@ void ParameterHistory::record(const Parameters& now) {
 std::optional<Parameters> ParameterHistory::undo(const Parameters& now) {
   if (current_ != now) record(now);
   if (undo_.empty()) return std::nullopt;
-  redo_.push_back(*current_);
-  current_ = undo_.back();
+  redo_.push_back({*current_, undo_.back().serial});
+  current_ = undo_.back().parameters;
   undo_.pop_back();
   return current_;
 }
@@ -85,18 +91,52 @@ std::optional<Parameters> ParameterHistory::undo(const Parameters& now) {
 std::optional<Parameters> ParameterHistory::redo(const Parameters& now) {
   if (current_ != now) record(now);  // a change since the undo: nothing is left to redo
   if (redo_.empty()) return std::nullopt;
-  undo_.push_back(*current_);
-  current_ = redo_.back();
+  undo_.push_back({*current_, redo_.back().serial});
+  current_ = redo_.back().parameters;
   redo_.pop_back();
   return current_;
+}
+
+std::optional<std::uint64_t> ParameterHistory::undoSerial(const Parameters& now) const {
+  if (current_ && *current_ != now) return std::numeric_limits<std::uint64_t>::max();
+  if (undo_.empty()) return std::nullopt;
+  return undo_.back().serial;
+}
+
+std::optional<std::uint64_t> ParameterHistory::redoSerial(const Parameters& now) const {
+  if ((current_ && *current_ != now) || redo_.empty()) return std::nullopt;
+  return redo_.back().serial;
 }
 
 // [SECTION] The app's undo and redo
 
 namespace {
 
-bool marking(const AppState& s) {
-  return s.video.session && s.video.session->marking && s.doc.mode == Mode::Clip;
+// The video's keyframe history takes part while its walker is shown (the clip mode): elsewhere
+// an undo would change what cannot be seen.
+const VideoSession* keyframesShown(const AppState& s) {
+  return s.video.session && s.doc.mode == Mode::Clip ? &*s.video.session : nullptr;
+}
+
+std::optional<std::uint64_t> keyframeUndoSerial(const AppState& s) {
+  const VideoSession* v = keyframesShown(s);
+  if (!v || v->undo.empty()) return std::nullopt;
+  return v->undo.back().serial;
+}
+
+std::optional<std::uint64_t> keyframeRedoSerial(const AppState& s) {
+  const VideoSession* v = keyframesShown(s);
+  if (!v || v->redo.empty()) return std::nullopt;
+  return v->redo.back().serial;
+}
+
+// Undo takes the later of the two histories' latest changes; redo the earlier of their latest
+// undone ones, so that redoing retraces the undos backwards.
+bool keyframesFirst(std::optional<std::uint64_t> keyframes, std::optional<std::uint64_t> parameters,
+                    bool later) {
+  if (!keyframes) return false;
+  if (!parameters) return true;
+  return later ? *keyframes > *parameters : *keyframes < *parameters;
 }
 
 // The history brought up to date (a load just finished: a new context) before stepping in it.
@@ -105,29 +145,25 @@ void observeSettled(AppState& s) { s.history.observe(captureParameters(s), captu
 }  // namespace
 
 void undo(AppState& s) {
-  if (marking(s)) {
-    if (!s.video.session->undo.empty()) actions::undoKeyframes(s);
-    return;
-  }
   observeSettled(s);
-  if (const auto p = s.history.undo(captureParameters(s))) restoreParameters(s, *p);
+  const Parameters now = captureParameters(s);
+  if (keyframesFirst(keyframeUndoSerial(s), s.history.undoSerial(now), true))
+    actions::undoKeyframes(s);
+  else if (const auto p = s.history.undo(now))
+    restoreParameters(s, *p);
 }
 
 void redo(AppState& s) {
-  if (marking(s)) {
-    if (!s.video.session->redo.empty()) actions::redoKeyframes(s);
-    return;
-  }
   observeSettled(s);
-  if (const auto p = s.history.redo(captureParameters(s))) restoreParameters(s, *p);
+  const Parameters now = captureParameters(s);
+  if (keyframesFirst(keyframeRedoSerial(s), s.history.redoSerial(now), false))
+    actions::redoKeyframes(s);
+  else if (const auto p = s.history.redo(now))
+    restoreParameters(s, *p);
 }
 
-bool canUndo(const AppState& s) {
-  return marking(s) ? !s.video.session->undo.empty() : s.history.undoSteps() > 0;
-}
+bool canUndo(const AppState& s) { return keyframeUndoSerial(s) || s.history.undoSteps() > 0; }
 
-bool canRedo(const AppState& s) {
-  return marking(s) ? !s.video.session->redo.empty() : s.history.redoSteps() > 0;
-}
+bool canRedo(const AppState& s) { return keyframeRedoSerial(s) || s.history.redoSteps() > 0; }
 
 }  // namespace ew::ui

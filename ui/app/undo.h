@@ -4,7 +4,8 @@
 // the semantic axes, the overlays, the theme and the UI scale. Not the data, the models or
 // anything derived (those follow from the parameters), not the 3D camera or playback (how the
 // walker is being looked at as it moves: a double-click or a preset puts the camera back), and
-// not a video's keyframes (their own undo: ui/app/video.h).
+// not a video's keyframes (their own history: ui/app/video.h). The app's undo steps through
+// both in the order the changes were made: each step carries an edit serial (nextEditSerial).
 //
 // The frame loop shows the history the parameters after every frame (observe): a change is
 // recorded once it has settled — no control held by the mouse, no repeating key down — so a
@@ -55,6 +56,10 @@ ParameterContext captureParameterContext(const AppState& s);
 // Puts `p` back (σ² following the model again when it was then).
 void restoreParameters(AppState& s, const Parameters& p);
 
+// A number from one counter for every change either history records, so that the app's
+// undo can take back the latest change whichever history holds it.
+std::uint64_t nextEditSerial();
+
 class ParameterHistory {
  public:
   static constexpr std::size_t kMaxSteps = 200;
@@ -69,18 +74,27 @@ class ParameterHistory {
 
   std::size_t undoSteps() const { return undo_.size(); }
   std::size_t redoSteps() const { return redo_.size(); }
+  // The edit serial of the change undo would take back (a change of `now` not yet recorded is
+  // the latest of all), and of the one redo would bring back; nothing when there is none.
+  std::optional<std::uint64_t> undoSerial(const Parameters& now) const;
+  std::optional<std::uint64_t> redoSerial(const Parameters& now) const;
 
  private:
+  struct Step {
+    Parameters parameters;  // on the undo stack: before the change; on the redo stack: after it
+    std::uint64_t serial = 0;
+  };
   void record(const Parameters& now);
 
-  std::vector<Parameters> undo_, redo_;  // oldest first
+  std::vector<Step> undo_, redo_;  // oldest first
   std::optional<Parameters> current_;    // the last recorded
   std::optional<ParameterContext> context_;
 };
 
-// The app's undo and redo (Ctrl+Z, Ctrl+Shift+Z / Ctrl+Y, the header's buttons): while the
-// video's joints are being marked they undo the keyframe edits instead, as the marking
-// panel's own buttons do.
+// The app's undo and redo (Ctrl+Z, Ctrl+Shift+Z / Ctrl+Y, the header's buttons): the latest
+// change, of a parameter or, with a video open in the clip mode, of its keyframes (a mark, a
+// correction of a detected video's joint) — whichever was made last; redo brings back the
+// earliest undone first.
 void undo(AppState& s);
 void redo(AppState& s);
 bool canUndo(const AppState& s);

@@ -6,6 +6,7 @@
 // pose estimator's file, its reprojection drawn over the footage.
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -60,7 +61,11 @@ struct VideoSession {
   std::filesystem::path path;
   std::shared_ptr<FrameCache> frames;
   Keyframes keyframes;
-  std::vector<Keyframes> undo, redo;   // each edit of the keyframes (≤ 200 kept)
+  struct KeyframesStep {
+    Keyframes keyframes;        // on the undo stack: before the edit; on the redo stack: after it
+    std::uint64_t serial = 0;   // the edit's (ui/app/undo.h nextEditSerial): the app's undo order
+  };
+  std::vector<KeyframesStep> undo, redo;  // each edit of the keyframes (≤ 200 kept)
   int frame = 0;                       // the frame scrubbed to (0-based)
   bool marking = false;                // clicks in the 2D view place joints on `frame`
   int markStep = 0;                    // index into markingOrder(): the joint asked for next

@@ -15,6 +15,7 @@
 #include "core/common/errors.h"
 #include "core/tracking/track_confidence.h"
 #include "ui/app/actions.h"
+#include "ui/app/undo.h"
 #include "ui/app/video_poll.h"
 #include "video/pose_model_files.h"
 #include "video/track_files.h"
@@ -32,7 +33,7 @@ VideoSession& session(AppState& s) {
 
 // Records the keyframes as they are before an edit.
 void pushUndo(VideoSession& v) {
-  v.undo.push_back(v.keyframes);
+  v.undo.push_back({v.keyframes, nextEditSerial()});
   if (v.undo.size() > kUndoDepth) v.undo.erase(v.undo.begin());
   v.redo.clear();
 }
@@ -325,8 +326,8 @@ void removeKeyframe(AppState& s, int frame) {
 void undoKeyframes(AppState& s) {
   VideoSession& v = session(s);
   if (v.undo.empty()) throw std::invalid_argument("nothing to undo");
-  v.redo.push_back(std::move(v.keyframes));
-  v.keyframes = std::move(v.undo.back());
+  v.redo.push_back({std::move(v.keyframes), v.undo.back().serial});
+  v.keyframes = std::move(v.undo.back().keyframes);
   v.undo.pop_back();
   if (v.marking) v.markStep = nextUnmarked(v, 0);
   keyframesEdited(s);
@@ -335,8 +336,8 @@ void undoKeyframes(AppState& s) {
 void redoKeyframes(AppState& s) {
   VideoSession& v = session(s);
   if (v.redo.empty()) throw std::invalid_argument("nothing to redo");
-  v.undo.push_back(std::move(v.keyframes));
-  v.keyframes = std::move(v.redo.back());
+  v.undo.push_back({std::move(v.keyframes), v.redo.back().serial});
+  v.keyframes = std::move(v.redo.back().keyframes);
   v.redo.pop_back();
   if (v.marking) v.markStep = nextUnmarked(v, 0);
   keyframesEdited(s);
