@@ -283,7 +283,8 @@ PoseDetectionRun detectPoses(const std::filesystem::path& videoFile, const PoseD
     } catch (const Error& e) {
       // The container promised more frames than the stream holds: keep what was read.
       if (f == options.firstFrame) throw;
-      run.warnings.push_back(std::string("the video ends early: ") + e.what());
+      run.warnings.push_back("the video ends early: " + std::to_string(f - options.firstFrame) + " of " +
+                             std::to_string(total) + " frames decode (" + e.what() + ")");
       break;
     }
     run.decodeSeconds += secondsSince(decodeStart);

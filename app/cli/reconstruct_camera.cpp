@@ -294,6 +294,8 @@ std::pair<Eigen::Index, Eigen::Index> seenSpan(const Eigen::MatrixXd& jointsPx) 
 int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
                  CameraKnowledge camera, const json& lens, const json& imageSizeFrom = nullptr,
                  CameraFit* fitOut = nullptr) {
+  // Said before the fit: a fit that fails may fail for what they say (a video that ends early).
+  for (const auto& w : keypoints.warnings) std::cerr << "warning: " << a.input << ": " << w << "\n";
   const SceneHorizonReading horizon = readSceneHorizon(a, camera);
   const bool horizonPrior = horizon.rowPx && a.sceneHorizon == "prior";
   if (horizonPrior) camera.horizonRowPx = horizon.rowPx;
@@ -320,6 +322,7 @@ int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTri
   const Eigen::MatrixXd feet = clip.feet.feetMm.size() ? Eigen::MatrixXd(clip.feet.feetMm.middleRows(first, n)) : Eigen::MatrixXd();
   writeJointTrajectories(a.out, frames.middleRows(first, n), t.rateHz, notes, feet, true);
   json report = reportJson(a, camera, t, fit);
+  report["warnings"] = t.warnings;
   if (t.sternumFromShoulders) {  // allowed for by the fit (core/camera/detector_offsets.h)
     const Eigen::Vector3d sternum = sternumAsShouldersMidpointOffsetMm(model);
     report["detector_offsets_mm"]["sternum"] = {sternum.x(), sternum.y(), sternum.z()};

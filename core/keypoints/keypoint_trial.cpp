@@ -484,7 +484,9 @@ void takeRateAndSize(KeypointTrial& t, const KeypointFrames& frames, const Keypo
     t.rateHz = *frames.rateHz, t.rateSource = "the file";
   } else if (options.video && options.video->fps > 0.0) {
     t.rateHz = checkedFileRateHz(options.video->fps, options.video->file, "frame rate"), t.rateSource = video;
-    t.warnings.push_back("frame rate " + rateText(t.rateHz) + " fps: " + video);
+    // Worth a word when the keypoints came from another tool: the video beside them may not be
+    // the footage they were detected in. A video detected here is its own rate.
+    if (options.video->file != frames.file) t.warnings.push_back("frame rate " + rateText(t.rateHz) + " fps: " + video);
   }
   t.rateAssumed = t.rateSource == "assumed";
 }
@@ -500,9 +502,13 @@ KeypointTrial cleanKeypoints(const KeypointFrames& frames, const KeypointOptions
   takeRateAndSize(t, frames, options);
   for (const auto& f : frames.frames) t.maxPeople = std::max(t.maxPeople, static_cast<int>(f.size()));
   t.people = trackPeople(frames);
-  if (t.people.empty())
+  if (t.people.empty()) {
+    // What the reader or the detector noticed may be why (a video that ends early).
+    std::string why;
+    for (const auto& w : frames.warnings) why += "; " + w;
     throw Error(ErrorKind::BadData, frames.file, "", "no detection has " + std::to_string(kMinPointsPerDetection) +
-                                                         " or more keypoints: nobody to follow");
+                                                         " or more keypoints: nobody to follow" + why);
+  }
   if (options.person) {
     if (*options.person < 0 || *options.person >= static_cast<int>(t.people.size()))
       throw Error(ErrorKind::BadArgument, frames.file, "--person",

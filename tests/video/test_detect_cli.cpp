@@ -73,6 +73,9 @@ TEST(DetectCli, TheWalkingVideoBecomesAWalkerWithNoOtherTool) {
   EXPECT_LT(std::abs(std::abs(report["alpha_deg"].get<double>()) - 90.0), 15.0);
   EXPECT_NE(report["format"].get<std::string>().find("BlazePose"), std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "walk3d.csv"));
+  // Nothing to warn of: the video's own frame rate is no news.
+  EXPECT_EQ(report["warnings"], json::array()) << report["warnings"];
+  EXPECT_EQ(r.err.find("warning:"), std::string::npos) << r.err;
   // The scene's horizon: its window rows put it at 563–570 px, a camera 1.45 m up that sees her
   // pelvis 3.4–3.8° from above (docs/CAMERA.md, "The scene's horizon"). Held to it, the fit's
   // camera is 1.2° off it and sees her pelvis 2.4° from above; alone, 4.7° off, its eye near her
@@ -146,6 +149,19 @@ TEST(DetectCli, VideosItCannotUseAreClearErrors) {
   EXPECT_EQ(r.exitCode, 1) << r.err;
   EXPECT_NE(r.err.find("nobody"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "o" / "keypoints.csv"));
+  // Cut short (a copy that did not finish): the error says so, not only "nobody" (once the
+  // reason was lost and a damaged video read as an empty one).
+  {
+    cv::VideoWriter w((dir / "whole.avi").string(), cv::VideoWriter::fourcc('M', 'J', 'P', 'G'), 25.0, {160, 120});
+    for (int f = 0; f < 24; ++f) w.write(cv::Mat(120, 160, CV_8UC3, cv::Scalar(40, 80, 120 + f)));
+  }
+  const std::string whole = test::readTextFile(dir / "whole.avi");
+  test::writeBinaryFile(dir / "cut.avi", whole.substr(0, whole.size() / 2));
+  r = runCli("reconstruct --input cut.avi --out w.csv", dir);
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("nobody to follow; the video ends early: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(" of 24 frames decode"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "w.csv"));
   // Without the models: the command that fetches them.
   const test::ShellRun missing = test::runShell("cd \"" + dir.string() + "\" && EIGENWALKER_MODELS=\"" + dir.string() +
                                                     "\" \"" + EW_CLI_PATH + "\" detect --video nobody.avi --out o3 --no-cache",
