@@ -294,8 +294,7 @@ std::pair<Eigen::Index, Eigen::Index> seenSpan(const Eigen::MatrixXd& jointsPx) 
 int fitAndReport(const EigenwalkerModel& model, const CameraArgs& a, KeypointTrial keypoints,
                  CameraKnowledge camera, const json& lens, const json& imageSizeFrom = nullptr,
                  CameraFit* fitOut = nullptr) {
-  // Said before the fit: a fit that fails may fail for what they say (a video that ends early).
-  for (const auto& w : keypoints.warnings) std::cerr << "warning: " << a.input << ": " << w << "\n";
+  sayKeypointWarnings(a.input, keypoints);
   const SceneHorizonReading horizon = readSceneHorizon(a, camera);
   const bool horizonPrior = horizon.rowPx && a.sceneHorizon == "prior";
   if (horizonPrior) camera.horizonRowPx = horizon.rowPx;

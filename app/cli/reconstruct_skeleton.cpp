@@ -206,6 +206,7 @@ int runReconstructSkeleton(const SkeletonArgs& a) {
           "the skeleton engine needs the bone lengths: give --reference FILE, a 3D trial of the same person, or "
           "--bones table2|eigenwalker|frame");
   const KeypointTrial keypoints = readKeypoints(a);
+  sayKeypointWarnings(a.input, keypoints);
   const std::optional<JointTrial> reference = referenceFor(a);
   const std::optional<EigenwalkerOfClip> fit = eigenwalkerIfAsked(a, keypoints);
   const ChosenBones bones = bonesFor(a, keypoints, reference, fit);
@@ -230,7 +231,7 @@ int runReconstructSkeleton(const SkeletonArgs& a) {
                  {"rate_hz", keypoints.rateHz}, {"clamped_bone_frames", r.sequence.clampedBoneFrames},
                  {"filled_points", r.filledPoints}, {"frame", world ? "world" : "camera"},
                  {"bones", bones.source}, {"camera_source", chosen.description},
-                 {"guide", a.guide.empty() ? "none" : a.guide}};
+                 {"guide", a.guide.empty() ? "none" : a.guide}, {"warnings", keypoints.warnings}};
   const double depthMm = median(r.rootDistanceMm);
   report["pelvis_distance_median_mm"] = depthMm;
   std::cerr << std::fixed << std::setprecision(1) << "skeleton: " << r.sequence.framesMm.rows() << " frames through "

@@ -64,6 +64,10 @@ KeypointFrames detectKeypointFrames(const std::filesystem::path& video, const Vi
 
 #endif
 
+void sayKeypointWarnings(const std::string& input, const KeypointTrial& trial) {
+  for (const auto& w : trial.warnings) std::cerr << "warning: " << input << ": " << w << "\n";
+}
+
 KeypointTrial keypointTrialOf(const std::filesystem::path& input, KeypointOptions k,
                               const VideoDetectionSettings& settings) {
   if (!isVideoFile(input)) return readKeypointTrial(input, k);

@@ -34,4 +34,8 @@ KeypointFrames detectKeypointFrames(const std::filesystem::path& video, const Vi
 KeypointTrial keypointTrialOf(const std::filesystem::path& input, KeypointOptions k,
                               const VideoDetectionSettings& settings = {});
 
+// What reading the keypoints noticed (a video that ends early, a joint never seen), as
+// "warning: INPUT: …" lines on stderr. Said before a fit: a fit that then fails may fail for it.
+void sayKeypointWarnings(const std::string& input, const KeypointTrial& trial);
+
 }  // namespace ew::cli
