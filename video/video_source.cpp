@@ -1,12 +1,21 @@
 #include "video/video_source.h"
 
 #include <cmath>
+#include <sstream>
 #include <opencv2/imgproc.hpp>
 
 #include "core/common/errors.h"
 
 namespace ew {
 namespace {
+
+// A header's number as a person writes it: 2147483647, 29.97 (std::to_string gives six decimals).
+std::string plainNumber(double x) {
+  std::ostringstream s;
+  s.precision(10);
+  s << x;
+  return s.str();
+}
 
 // Seeking costs a decode from the previous keyframe; reading forward up to this many
 // frames is cheaper than that for the clips we see (a keyframe every 1-10 s).
@@ -45,7 +54,7 @@ VideoSource::VideoSource(const std::filesystem::path& path) {
                      std::to_string(kMaxVideoSidePx) + " px");
   if (!std::isfinite(info_.fps) || info_.fps < 1.0 || info_.fps > 10000.0)
     throwBadData(info_.file, "",
-                 "frame rate " + std::to_string(info_.fps) + " is outside 1-10000 fps");
+                 "frame rate " + plainNumber(info_.fps) + " is outside 1-10000 fps");
   // FFmpeg estimates the count from the container's duration; a still image or a raw stream
   // has none, and the estimate comes back negative or not a number.
   if (!std::isfinite(count) || count < 1.0)
@@ -54,8 +63,8 @@ VideoSource::VideoSource(const std::filesystem::path& path) {
                  "without a container: put the stream in an MP4, MKV or AVI)");
   if (count > kMaxVideoFrames)
     throwBadData(info_.file, "",
-                 "frame count " + std::to_string(count) + " is outside 1-" +
-                     std::to_string(kMaxVideoFrames));
+                 "the header's frame count " + plainNumber(count) + " is outside 1-" +
+                     std::to_string(kMaxVideoFrames) + " (a damaged header?)");
   info_.frameCount = static_cast<int>(count);
   cv::Mat first;
   if (!capture_.read(first) || first.empty())

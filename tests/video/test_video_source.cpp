@@ -92,6 +92,15 @@ TEST(VideoSource, WhatIsNotAVideoIsNamedWithTheProblem) {
   test::writeBinaryFile(dir / "empty.avi", "");
   EXPECT_TRUE(test::throwsError([&] { VideoSource v(dir / "empty.avi"); }, ErrorKind::Malformed,
                                 {"empty.avi"}));
+  // A hostile header: an AVI whose stream says it holds 2^31 - 1 frames (strh's dwLength).
+  std::string bytes = test::readTextFile(barClip(dir, 4));
+  const std::size_t strh = bytes.find("strh");
+  ASSERT_NE(strh, std::string::npos);
+  const std::uint32_t huge = 0x7fffffff;
+  for (int b = 0; b < 4; ++b) bytes[strh + 8 + 32 + b] = static_cast<char>((huge >> (8 * b)) & 0xff);
+  test::writeBinaryFile(dir / "huge.avi", bytes);
+  EXPECT_TRUE(test::throwsError([&] { VideoSource v(dir / "huge.avi"); }, ErrorKind::BadData,
+                                {"huge.avi", "the header's frame count 2147483647 is outside"}));
 }
 
 TEST(VideoSource, AClipCutShortEndsWithAnErrorAtTheFirstMissingFrame) {
