@@ -100,6 +100,17 @@ TEST(VideoActions, AJointLetGoWhileTrackingTracksAgainWithIt) {
   EXPECT_EQ(s.video.session->trackError, "");
 }
 
+// The open video taken as detected (one person, no detections of its own) and fitted: what the
+// marks correct. The detector itself is tested in tests/video.
+void takeAsDetected(AppState& s, const Filmed& f) {
+  auto d = std::make_shared<DetectedVideo>();
+  d->video = f.video;
+  d->frames = std::make_shared<const KeypointFrames>();
+  d->people = 1;
+  s.video.session->detected = d;
+  actions::fitDetections(s);
+}
+
 // On a detected video a joint let go is a correction (issue 52): the detections are fitted
 // again with the keyframes as their corrections, and undo, redo and removing a keyframe fit
 // them again; guided marking waits for Done. A track made since takes the marks back.
@@ -108,12 +119,7 @@ TEST(VideoActions, OnADetectedVideoTheMarksAreCorrectionsOfTheFit) {
   AppState s;
   actions::openVideo(s, f.video);
   EXPECT_FALSE(actions::correctsDetections(s)) << "not detected: mark and track";
-  auto d = std::make_shared<DetectedVideo>();
-  d->video = f.video;
-  d->frames = std::make_shared<const KeypointFrames>();
-  d->people = 1;
-  s.video.session->detected = d;
-  actions::fitDetections(s);
+  takeAsDetected(s, f);
   ASSERT_TRUE(actions::correctsDetections(s));
   ASSERT_TRUE(s.clip.settings);
   EXPECT_FALSE(s.clip.settings->corrections);
@@ -156,12 +162,7 @@ TEST(VideoActions, UndoTakesBackTheLatestChangeWhetherACorrectionOrASetting) {
   const Filmed f = filmWithKeyframes("video_actions_undo_order", 30, {0});
   AppState s;
   actions::openVideo(s, f.video);
-  auto d = std::make_shared<DetectedVideo>();
-  d->video = f.video;
-  d->frames = std::make_shared<const KeypointFrames>();
-  d->people = 1;
-  s.video.session->detected = d;
-  actions::fitDetections(s);
+  takeAsDetected(s, f);
   ASSERT_EQ(s.doc.mode, Mode::Clip);
   const auto settle = [&s] { s.history.observe(captureParameters(s), captureParameterContext(s), true); };
   settle();
