@@ -2,6 +2,7 @@
 // (core/gait/joint_angles.h) over all its frames, in the file's own axes — walking or not,
 // so a reconstruction's CSV, a balancing trial's TRC and a mocap walk alike.
 #include <iostream>
+#include <optional>
 #include <limits>
 #include <sstream>
 
@@ -16,7 +17,7 @@ namespace {
 
 struct AnglesArgs {
   std::string file, out, units, mapping;
-  double rateHz = 0.0;
+  std::optional<double> rateHz;  // given: checked by the reader (checkedRateOverrideHz)
 };
 
 // The file's up axis where its format states one, else METHOD §2's rule: the signed axis
@@ -29,7 +30,7 @@ Eigen::Vector3d upOf(const JointTrial& trial) {
 
 int runAngles(const AnglesArgs& args) {
   LoadOptions options;
-  if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
+  if (args.rateHz) options.rateHzOverride = *args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
   if (!args.mapping.empty()) options.mappingFile = args.mapping;
   const JointTrial trial = mapRawTrial(readRawTrial(args.file, options), options);

@@ -2,6 +2,7 @@
 // [--angle DEG] [--theme …] [--lines] [--translate] …`: one walker as a self-contained HTML
 // page that animates it in any browser (core/teaching/html_walker.h).
 #include <iostream>
+#include <optional>
 
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
@@ -19,7 +20,7 @@ struct ExportHtmlArgs {
   std::string input;   // a 3D trial, fitted as `joints` prepares it
   std::string walker;  // a walker of the model: its id or its 1-based number
   std::string model;   // empty: the default model of real walkers
-  double rateHz = 0.0;
+  std::optional<double> rateHz;  // given: checked by the reader (checkedRateOverrideHz)
   std::string units, mapping;
   std::optional<double> translateSpeedMps;
   std::string size = "800x600";
@@ -66,7 +67,7 @@ ChosenWalker chooseWalker(const ExportHtmlArgs& args) {
   ChosenWalker c;
   if (!args.input.empty()) {
     LoadOptions options;
-    if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
+    if (args.rateHz) options.rateHzOverride = *args.rateHz;
     if (!args.units.empty()) options.unitsOverride = args.units;
     if (!args.mapping.empty()) options.mappingFile = args.mapping;
     const CompletedTrial t = completeWalkingTrial(loadWalkingTrial(args.input, options), model);

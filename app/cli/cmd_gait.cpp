@@ -4,6 +4,7 @@
 // reconstruction's CSV or a synthetic walker. `--events both` measures a trial twice, from its
 // file's events and from its kinematics, and prints how far apart the two are.
 #include <cmath>
+#include <optional>
 #include <iomanip>
 #include <filesystem>
 #include <iostream>
@@ -29,7 +30,7 @@ namespace {
 struct GaitArgs {
   std::vector<std::string> paths;
   std::string events = "auto", out, curves, units, mapping;
-  double rateHz = 0.0;
+  std::optional<double> rateHz;  // given: checked by the reader (checkedRateOverrideHz)
   std::optional<double> statureM;  // a video's walker: its camera fit scaled to it
   bool json = false, wholeTrial = false;
 };
@@ -135,7 +136,7 @@ GaitMeasures measuredWalk(const WalkingTrial& t, const GaitEventSet& events, con
 std::vector<MeasuredTrial> measureFile(const TrialFile& f, const GaitArgs& args,
                                        const std::optional<ReconstructedWalk>& reconstructed = std::nullopt) {
   LoadOptions options;
-  if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
+  if (args.rateHz) options.rateHzOverride = *args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
   if (!args.mapping.empty()) options.mappingFile = args.mapping;
   PrepareOptions prepare;

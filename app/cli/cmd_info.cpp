@@ -1,5 +1,6 @@
 // `eigenwalker-cli info [--json] PATH…`: one row (or JSON object) per trial.
 #include <iomanip>
+#include <optional>
 #include <set>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -19,7 +20,7 @@ namespace {
 struct InfoArgs {
   std::vector<std::string> paths;
   bool json = false;
-  double rateHz = 0.0;
+  std::optional<double> rateHz;  // given: checked by the reader (checkedRateOverrideHz)
   std::string units;
   std::string mapping;  // joint mapping file (--mapping)
   std::string layout;   // keypoint layout (--layout)
@@ -113,14 +114,14 @@ TrialSummary videoSummary(const std::filesystem::path& video, KeypointOptions k,
 
 int runInfo(const InfoArgs& args) {
   LoadOptions options;
-  if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
+  if (args.rateHz) options.rateHzOverride = *args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
   if (!args.mapping.empty()) options.mappingFile = args.mapping;
   std::vector<std::filesystem::path> paths, videos;
   for (const auto& p : args.paths) (isVideoFile(p) ? videos : paths).emplace_back(p);
   std::vector<std::string> warnings;
   KeypointOptions keypoints;
-  if (args.rateHz > 0) keypoints.fps = args.rateHz;
+  if (args.rateHz) keypoints.fps = *args.rateHz;
   if (!args.layout.empty()) keypoints.layout = args.layout;
   if (!args.mapping.empty()) keypoints.mappingFile = args.mapping;
   if (!args.imageSize.empty()) keypoints.imageSize = parseKeypointImageSize(args.imageSize, "--image-size");

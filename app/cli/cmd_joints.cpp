@@ -2,6 +2,7 @@
 // 15-joint trajectories. Joints the file does not measure (a lower-body marker set) are
 // estimated from --model, else the default model of real walkers, and named in a comment.
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "app/cli/commands.h"
@@ -18,7 +19,7 @@ namespace {
 struct JointsArgs {
   std::string file;
   std::string out;
-  double rateHz = 0.0;
+  std::optional<double> rateHz;  // given: checked by the reader (checkedRateOverrideHz)
   std::string units;
   std::string mapping;  // joint mapping file (--mapping)
   int segment = 0;      // 1-based; 0: the longest steady one
@@ -42,7 +43,7 @@ WalkingTrial completeFromModel(const WalkingTrial& trial, const JointsArgs& args
 
 int runJoints(const JointsArgs& args) {
   LoadOptions options;
-  if (args.rateHz > 0) options.rateHzOverride = args.rateHz;
+  if (args.rateHz) options.rateHzOverride = *args.rateHz;
   if (!args.units.empty()) options.unitsOverride = args.units;
   if (!args.mapping.empty()) options.mappingFile = args.mapping;
   PrepareOptions prepare;

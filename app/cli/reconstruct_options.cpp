@@ -8,6 +8,7 @@
 #include "app/cli/reconstruct_args.h"
 #include "app/cli/video_input.h"
 #include "core/common/errors.h"
+#include "core/keypoints/keypoint_frames.h"
 
 namespace ew::cli {
 
@@ -96,8 +97,11 @@ std::vector<OptionScope> optionScopes(const ReconstructArgs& a) {
 ReconstructRoute routeOf(const ReconstructArgs& a) {
   if (a.engine == "snippet") return Route::Snippet;
   if (a.engine == "skeleton") return Route::Skeleton;
-  // A video is seen through a real camera: its keypoints go the unknown-camera way.
-  return a.unknownCamera || isVideoFile(a.input) ? Route::EigenwalkerCamera : Route::EigenwalkerView;
+  // A video, and a pose estimator's keypoints (pixels), are seen through a real camera: they
+  // go the unknown-camera way. Before, keypoints without --unknown-camera were read as a 3D
+  // trial and refused for wanting --project-angle.
+  const bool throughACamera = isVideoFile(a.input) || looksLikeKeypointInput(a.input);
+  return a.unknownCamera || throughACamera ? Route::EigenwalkerCamera : Route::EigenwalkerView;
 }
 
 void checkOptionsApply(const ReconstructArgs& a, ReconstructRoute route) {

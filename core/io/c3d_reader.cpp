@@ -766,6 +766,11 @@ RawTrial parseC3d(std::span<const std::uint8_t> bytes, const std::string& name,
   const double toMm = lengthFactor(b, params, options, trial);
   upAxisFromScreen(b, params, trial);
   readEvents(b, params, layout, trial);
+  // A rate the user says is the right one re-times the frames; each event stays on its frame
+  // (before, the events kept the file's seconds and fell on other frames: strides 4 times short
+  // at a quarter of the rate, the cadence unchanged).
+  if (options.rateHzOverride)
+    for (GaitEvent& e : trial.events) e.timeS *= layout.rateHz / trial.rateHz;
   readSubjectStature(b, params, trial);
   readPoints(b, layout, toMm, trial);
   return trial;

@@ -217,6 +217,22 @@ TEST(ReconstructCameraCli, UnknownAngleAndProjectAngleDoNotApply) {
   EXPECT_NE(run.output.find("the camera's azimuth is estimated"), std::string::npos) << run.output;
 }
 
+// A pose estimator's keypoints are pixels through a camera: without --unknown-camera they still
+// go that way, and --angle holds the camera's azimuth (before, the folder was read as a 3D trial
+// and refused for wanting --project-angle).
+TEST(ReconstructCameraCli, KeypointsGoThroughTheCameraWithoutBeingToldSo) {
+  const fs::path clip = filmedOpenPose("camera_cli_implied");
+  const auto run = test::runProgram(EW_CLI_PATH,
+                                    {"reconstruct", "--input", clip.string(), "--fps", "30", "--angle", "40", "--out",
+                                     (test::makeTempDir("out") / "implied.csv").string(), "--json"},
+                                    test::makeTempDir("camera_cli_implied_run"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const json r = json::parse(run.output.substr(run.output.find("{\n")));
+  EXPECT_EQ(r["camera_model"], "pinhole");
+  EXPECT_EQ(r["alpha_source"], "given (--angle)");
+  EXPECT_NEAR(r["elevation_deg"].get<double>(), 12, 2.0);
+}
+
 // --angle and --elevation hold the azimuth and elevation (the viewer's "fix" controls); the
 // JSON says they were given.
 TEST(ReconstructCameraCli, KnownAzimuthAndElevationAreHeld) {

@@ -87,6 +87,16 @@ TEST_F(GaitCli, AStatureIsForAVideosWalkerOnly) {
   EXPECT_NE(r.err.find("video"), std::string::npos) << r.err;
 }
 
+// A frame rate no camera has is refused, not ignored (once --rate 0, -5 or nan measured the
+// trial at the file's rate as if nothing had been said).
+TEST_F(GaitCli, ARateNoCameraHasIsRefused) {
+  for (const std::string rate : {"0", "-5", "nan"}) {
+    const test::ShellRun r = runCli("gait pop/SYN001_T1.csv --rate " + rate, root_);
+    EXPECT_EQ(r.exitCode, 1) << rate;
+    EXPECT_NE(r.err.find("frame rate " + rate + " Hz is outside"), std::string::npos) << r.err;
+  }
+}
+
 TEST_F(GaitCli, ATrcWrittenByJointsIsMeasuredLikeItsSource) {
   ASSERT_EQ(runCli("joints pop/SYN002_T1.csv --out syn2.trc", root_).exitCode, 0);
   const test::ShellRun a = runCli("gait pop/SYN002_T1.csv --json", root_);

@@ -231,6 +231,19 @@ TEST(C3dEvents, SchreiberFootStrikesMatchTheDocumentedTimes) {
   EXPECT_EQ(footOff, 3);
 }
 
+// A frame rate given over the file's re-times its events with its frames: each stays on its frame.
+TEST(C3dEvents, ARateOverrideKeepsEachEventOnItsFrame) {
+  EW_REQUIRE_SHARED_DATA();
+  const std::filesystem::path file = schreiber() / "2014001/2014001_C4_05.c3d";
+  const RawTrial asFiled = readC3d(file);
+  LoadOptions half;
+  half.rateHzOverride = asFiled.rateHz / 2.0;
+  const RawTrial slowed = readC3d(file, half);
+  ASSERT_EQ(slowed.events.size(), asFiled.events.size());
+  for (std::size_t i = 0; i < asFiled.events.size(); ++i)
+    EXPECT_NEAR(slowed.events[i].timeS * slowed.rateHz, asFiled.events[i].timeS * asFiled.rateHz, 1e-6);
+}
+
 // The Schreiber-Moissenet files keep the subject's measures in a SUBJECT group (LABELS, UNITS,
 // VALUES): the stature is read (metres there), and a value that is no person's stature in its
 // unit is left out with a warning.
