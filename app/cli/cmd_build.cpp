@@ -10,6 +10,7 @@
 #include <iostream>
 #include <thread>
 
+#include "app/cli/checks.h"
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
 #include "core/eigenwalker/model_file.h"
@@ -111,21 +112,21 @@ void addBuildCommand(CLI::App& app, int& exitCode) {
                   "program does not know");
   cmd->add_option("--out", args->out, "Model file to write (atomically)")->required();
   auto* components = cmd->add_option("--components", args->components, "Number of eigenwalkers (at most walkers - 1); snippet: PCA components per cluster (default 50)")
-                         ->check(CLI::Range(1, 100000));
+                         ->check(finiteIn(1, 100000));
   auto* variance = cmd->add_option("--variance", args->variance,
                                    "Smallest N reaching this share of the variance (default 0.95)")
-                       ->check(CLI::Range(0.01, 1.0));
+                       ->check(finiteIn(0.01, 1.0));
   components->excludes(variance);
   cmd->add_option("--clusters", args->clusters, "Snippet prior: mixture components m (default 8, docs/SNIPPETS.md)")
-      ->check(CLI::Range(1, 256));
+      ->check(finiteIn(1, 256));
   cmd->add_option("--em-iterations", args->emIterations,
                   "Snippet prior: EM steps on the mixture after k-means (default 0: the paper's clustering)")
-      ->check(CLI::Range(0, 1000));
+      ->check(finiteIn(0, 1000));
   cmd->add_flag("--no-sigma2-sweep", args->noSigma2Sweep,
                 "Do not measure the MAP sigma2 optimum (reconstruct then falls back to 70 mm2)");
   cmd->add_option("--threads", args->threads,
                   "Worker threads of the sigma2 sweep (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+      ->check(finiteIn(1, 1024));
   cmd->callback([args, &exitCode] { exitCode = runBuild(*args); });
 }
 

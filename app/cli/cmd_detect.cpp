@@ -10,6 +10,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "app/cli/checks.h"
 #include "app/cli/commands.h"
 #include "app/cli/video_input.h"
 #include "core/common/errors.h"
@@ -204,14 +205,14 @@ void addDetectCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--format", args->format,
                   "mediapipe-csv: the walker as a MediaPipe Pose CSV (default); openpose: everybody as OpenPose JSON")
       ->check(CLI::IsMember({"mediapipe-csv", "openpose"}));
-  cmd->add_option("--first", args->first, "first frame (default 0)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--first", args->first, "first frame (default 0)")->check(kNonNegativeFinite);
   cmd->add_option("--last", args->last, "last frame (default the video's last)");
   cmd->add_option("--person", args->person, "the person to write as the walker (1-based; default: the one who walks)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveFinite);
   cmd->add_flag("--no-tiles", args->noTiles, "look for people in the whole frame only, not also in square tiles");
   cmd->add_option("--smooth", args->smoothSeconds,
                   "smooth each landmark's path over this many seconds, centred (no lag; default 0: none)")
-      ->check(CLI::Range(0.0, 2.0));
+      ->check(finiteIn(0.0, 2.0));
   cmd->add_flag("--keep-model-labels", args->keepModelLabels,
                 "keep left and right as the landmark model labels each frame (no consistency through time)");
   cmd->add_flag("--no-cache", args->noCache, "detect again even when the detections of this video are cached");
@@ -219,7 +220,7 @@ void addDetectCommand(CLI::App& app, int& exitCode) {
                   "measure the detections against another estimator's keypoints, or a keyframe file's marks");
   cmd->add_option("--compare-offset", args->compareOffset,
                   "with --compare: its frame n is the video's frame n + K (default 0)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegativeFinite);
   cmd->add_flag("--json", args->json, "print the report as JSON too");
   cmd->callback([args, &exitCode] { exitCode = runDetect(*args); });
 }

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <thread>
 
+#include "app/cli/checks.h"
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
 #include "core/eigenwalker/walker_set.h"
@@ -359,12 +360,12 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--detector-hip-offset", args->detectorHipOffsetMm,
                   "Experiment 'camera': the simulated detector puts each hip this many mm out from its joint centre "
                   "(default: the keypoint tables' offset, docs/KEYPOINTS.md \"Detector hips\")")
-      ->check(CLI::Range(-200.0, 200.0));
+      ->check(finiteIn(-200.0, 200.0));
   cmd->add_flag("--no-detector-offsets", args->noDetectorOffsets,
                 "Experiment 'camera': read the clips taking the detector's hips for joint centres");
   cmd->add_option("--cameras", args->cameras,
                   "Experiments 'engines' and 'camera-wide': random cameras per held-out walker (default 3)")
-      ->check(CLI::Range(1, 100));
+      ->check(finiteIn(1, 100));
   cmd->add_option("--keep-clips", args->keepClips,
                   "Experiments 'camera', 'engines' and 'camera-wide' (a folder per level): keep each clip's keypoint "
                   "file(s) in this folder, as SUBJECT_cameraK_Npx/ (open one with the viewer or reconstruct "
@@ -377,16 +378,16 @@ void addEvaluateCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--method", args->method, "lsq, map or both")
       ->check(CLI::IsMember({"lsq", "map", "both"}))->capture_default_str();
   cmd->add_option("--sigma2", args->sigma2Mm2, "MAP noise variance in mm^2 (default: the sigma-sweep optimum)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveFinite);
   cmd->add_option("--components", args->components, "Eigenwalkers per model (default: 95 % of the variance)")
-      ->check(CLI::Range(1, 100000));
+      ->check(finiteIn(1, 100000));
   cmd->add_option("--clusters", args->clusters,
                   "Snippet prior: mixture components m for experiment 'snippet' (default 8, docs/SNIPPETS.md)")
-      ->check(CLI::Range(1, 256));
+      ->check(finiteIn(1, 256));
   cmd->add_option("--cluster-components", args->clusterComponents,
                   "Snippet prior: principal components q per cluster (default 50, the paper's)")
-      ->check(CLI::Range(1, 10000));
-  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+      ->check(finiteIn(1, 10000));
+  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(finiteIn(1, 1024));
   cmd->add_flag("--no-plots", args->noPlots, "Skip the PNG figures");
   cmd->add_option("--engine", args->engines,
                   "Engines to evaluate (repeatable; default eigenwalker and snippet): eigenwalker runs the "

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "app/cli/checks.h"
 #include "app/cli/commands.h"
 #include "app/cli/reconstruct_camera.h"
 #include "app/cli/video_input.h"
@@ -343,7 +344,7 @@ void addGaitCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--stature", args->statureM,
                   "A video's walker's stature in metres: the camera fit is scaled to it (without it the scale, and "
                   "every length and speed, is the model's prior on body size)")
-      ->check(CLI::Range(0.5, 2.5));
+      ->check(finiteIn(0.5, 2.5));
   cmd->callback([args, &exitCode] { exitCode = runGait(*args); });
 }
 

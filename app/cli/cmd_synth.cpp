@@ -5,6 +5,7 @@
 #include <iostream>
 #include <system_error>
 
+#include "app/cli/checks.h"
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
 #include "core/io/atomic_write.h"
@@ -143,7 +144,7 @@ void addSynthCommand(CLI::App& app, int& exitCode) {
                   "Output folder (written to a temporary sibling, then renamed)")
       ->required();
   cmd->add_option("--count", args->count, "Number of walkers (subjects)")
-      ->check(CLI::Range(1, 10000))
+      ->check(finiteIn(1, 10000))
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Random seed (same seed, same files)")
       ->capture_default_str();
@@ -151,13 +152,13 @@ void addSynthCommand(CLI::App& app, int& exitCode) {
       ->check(CLI::IsMember({"csv", "bvh"}))
       ->capture_default_str();
   cmd->add_option("--cycles", args->cycles, "Gait cycles per trial")
-      ->check(CLI::Range(1.0, 100.0))
+      ->check(finiteIn(1.0, 100.0))
       ->capture_default_str();
   cmd->add_option("--rate", args->rateHz, "Frame rate in Hz")
-      ->check(CLI::Range(1.0, 10000.0))
+      ->check(finiteIn(1.0, 10000.0))
       ->capture_default_str();
   cmd->add_option("--trials", args->trials, "Trials per walker (small trial-to-trial variation)")
-      ->check(CLI::Range(1, 100))
+      ->check(finiteIn(1, 100))
       ->capture_default_str();
   cmd->add_flag("--treadmill", args->treadmill, "Walk in place instead of overground along +y");
   cmd->add_flag("--force", args->force, "Replace a non-empty output folder");

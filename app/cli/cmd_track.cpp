@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include <opencv2/imgcodecs.hpp>
+#include "app/cli/checks.h"
 #include "app/cli/commands.h"
 #include "app/cli/reconstruct_camera.h"
 #include "core/common/errors.h"
@@ -283,7 +284,7 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
          "--model-loop", args->modelLoop,
          "rounds of the model loop: fit the eigenwalker through the unknown camera to the track, "
          "track again guided by it (flow tracker; default 0)")
-      ->check(CLI::Range(0, 10));
+      ->check(finiteIn(0, 10));
   cmd->add_option("--first", args->first, "first frame tracked (default 0)");
   cmd->add_option("--last", args->last, "last frame tracked (default the video's last)");
   cmd->add_option("--compare", args->compare,
@@ -292,7 +293,7 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
   cmd->add_option("--within", args->withinPx,
                   "with --compare, also the share of joint-frames within this many pixels of it "
                   "(default 12)")
-      ->check(CLI::Range(0.1, 10000.0));
+      ->check(finiteIn(0.1, 10000.0));
   cmd->add_option("--reconstruct", args->reconstruct,
                   "also write the 3D walker (eigenwalker, unknown camera) here");
   cmd->add_option("--scene-horizon", args->sceneHorizon,
@@ -304,7 +305,7 @@ void addTrackCommand(CLI::App& app, int& exitCode) {
       ->capture_default_str();
   cmd->add_option("--overlay-every", args->overlayEvery,
                   "draw the track over every N-th frame into OUT/overlay/ (PNG)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveFinite);
   cmd->add_flag(
       "--flatten-background", args->flattenBackground,
       "flatten a fixed camera's still background before the flow, when the footage has one "

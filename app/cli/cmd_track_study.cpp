@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 
+#include "app/cli/checks.h"
 #include "app/cli/commands.h"
 #include "core/common/errors.h"
 #include "core/eigenwalker/projection.h"
@@ -168,15 +169,15 @@ void addTrackStudyCommand(CLI::App& app, int& exitCode) {
                   "camera azimuths, degrees from the walker's right (0 a side view, -90 the "
                   "front, 90 behind; default -90,-60,-30,0,30,60,90)")
       ->delimiter(',')
-      ->check(CLI::Range(-180.0, 180.0));
+      ->check(finiteIn(-180.0, 180.0));
   cmd->add_option("--model-loop", args->rounds, "rounds of the model loop (default 1)")
-      ->check(CLI::Range(0, 10));
+      ->check(finiteIn(0, 10));
   cmd->add_option("--distance-m", args->distanceM,
                   "camera to the middle of the walk, metres (default 6)")
-      ->check(CLI::Range(2.0, 50.0));
+      ->check(finiteIn(2.0, 50.0));
   cmd->add_option("--speed-mps", args->speedMps,
                   "the walk carried forward at this speed (default 1.2); 0: walking in place, as on a treadmill")
-      ->check(CLI::Range(0.0, 3.0));
+      ->check(finiteIn(0.0, 3.0));
   cmd->add_option("--footage-seed", args->footageSeed,
                   "draws the footage's background and the print on each limb (default 7): "
                   "another seed tells a finding about the tracker from one about a print");

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/checks.h"
 #include "app/cli/reconstruct_args.h"
 #include "app/cli/video_input.h"
 #include "core/common/errors.h"
@@ -134,10 +135,10 @@ void addReconstructOptions(CLI::App& cmd, ReconstructArgs& a) {
   cmd.add_option("--stature", a.statureM,
                  "The walker's stature in metres: the unknown camera's fit is scaled to it (no image fixes the scale); "
                  "--engine skeleton: the bones of --bones table2, eigenwalker")
-      ->check(CLI::Range(0.5, 2.5));
+      ->check(finiteIn(0.5, 2.5));
   cmd.add_option("--bone-frame", a.skeleton.boneFrame,
                   "--engine skeleton, --bones frame: a frame (0-based) with the body parallel to the image plane (§4.1)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegativeFinite);
   cmd.add_option("--reference-bone", a.skeleton.referenceBone,
                   "--engine skeleton, --bones frame: the bone of known length, JOINT-JOINT=MM (e.g. r_elbow-r_wrist=260)");
   cmd.add_option("--guide", a.skeleton.guide,
@@ -146,7 +147,7 @@ void addReconstructOptions(CLI::App& cmd, ReconstructArgs& a) {
   cmd.add_option("--scale-depth-frame", a.skeleton.scaleDepthFrame,
                   "--engine skeleton without --camera or --focal-px: the frame (0-based) for Zou et al.'s "
                   "scale-depth relation T(dz), with --scale-depth-chain and --image-size")
-      ->check(CLI::NonNegativeNumber);
+      ->check(kNonNegativeFinite);
   cmd.add_option("--scale-depth-chain", a.skeleton.scaleDepthChain,
                   "--engine skeleton: four joints a,b,c,d of three linked segments, the outer two parallel to the "
                   "image plane on --scale-depth-frame (e.g. sternum,r_shoulder,r_elbow,r_wrist)");
@@ -159,7 +160,7 @@ void addReconstructOptions(CLI::App& cmd, ReconstructArgs& a) {
       ->check(CLI::ExistingFile);
   cmd.add_option("--components", a.components,
                   "Use the first N eigenwalkers of the model (as the viewer's N)")
-      ->check(CLI::Range(1, 100000));
+      ->check(finiteIn(1, 100000));
   cmd.add_option("--input", a.input,
                   "2D CSV or 3D trial file; with --unknown-camera a pose estimator's keypoints "
                   "(OpenPose folder or JSON, AlphaPose or MMPose JSON) or a video (MP4, MOV, AVI…: the built-in "
@@ -172,7 +173,7 @@ void addReconstructOptions(CLI::App& cmd, ReconstructArgs& a) {
   cmd.add_option("--person", a.person,
                   "With --unknown-camera: the person to fit (1-based, as `info` and `detect` number them); default the "
                   "one who walks")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveFinite);
   cmd.add_option("--corrections", a.corrections,
                   "With --unknown-camera: a keyframe file (docs/TRACKING.md) of joints corrected by hand; each "
                   "correction is carried to the frames around it (0.25 s either side, fading)")
@@ -180,7 +181,7 @@ void addReconstructOptions(CLI::App& cmd, ReconstructArgs& a) {
   cmd.add_option("--model-loop", a.modelLoop,
                   "With --unknown-camera: rounds of the model loop, where joints the detector is unsure of are pulled "
                   "towards the fitted walker and the fit is made again (default 1 for a video, 0 for keypoint files)")
-      ->check(CLI::Range(0, 5));
+      ->check(finiteIn(0, 5));
   cmd.add_option("--scene-horizon", a.sceneHorizon,
                   "For a video: its horizon, read off the scene's level lines (docs/CAMERA.md, \"The scene's "
                   "horizon\"): prior (the fit holds its camera's height to it), check (reported beside the fit's) or off")
@@ -188,18 +189,19 @@ void addReconstructOptions(CLI::App& cmd, ReconstructArgs& a) {
       ->capture_default_str();
   cmd.add_flag("--unknown-camera", a.unknownCamera,
                 "Keypoints in pixels through an unknown real camera (docs/CAMERA.md): estimates azimuth, "
-                "elevation, scale or distance, image translation and progression with the walker");
+                "elevation, scale or distance, image translation and progression with the walker (implied "
+                "for a video and a pose estimator's keypoint file or folder)");
   cmd.add_option("--layout", a.layout, "Keypoint layout (BODY_25, BODY_25B, COCO-18, COCO-17, Halpe-26, "
                                             "MediaPipe-33); guessed when not given");
   cmd.add_option("--fps", a.fps, "Video frame rate of keypoint input (JSON stores none; default 30)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveFinite);
   cmd.add_option("--focal-px", a.focalPx,
                   "Known focal length in pixels (else it is estimated with the camera)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveFinite);
   cmd.add_option("--elevation", a.elevationDeg,
                   "With --unknown-camera: the camera's known elevation in degrees (looking down), held "
                   "instead of estimated; --angle likewise holds the azimuth")
-      ->check(CLI::Range(-30.0, 80.0));
+      ->check(finiteIn(-30.0, 80.0));
   cmd.add_option("--camera", a.camera,
                   "With --unknown-camera: a calibration file (Pose2Sim Calib_*.toml, Sports2D Calib_demo.toml) "
                   "giving the focal length and principal point (and a MediaPipe CSV's image size)")
@@ -222,13 +224,13 @@ void addReconstructOptions(CLI::App& cmd, ReconstructArgs& a) {
   cmd.add_option("--out", a.out, "3D joints to write: the 15-joint CSV; a TRC (OpenSim's axes) when it ends in .trc; a C3D "
                  "when it ends in .c3d (the 15 joints and, in its EVENT group, the foot strikes and "
                  "offs of the reconstruction's own kinematics, docs/CLI.md)")->required();
-  cmd.add_option("--angle", a.alphaDeg, "Known view angle in degrees (0 frontal, +-90 profile)");
+  cmd.add_option("--angle", a.alphaDeg, "Known view angle in degrees (0 frontal, +-90 profile)")->check(kFinite);
   cmd.add_flag("--unknown-angle", a.unknownAngle, "Estimate the view angle over the whole circle");
   cmd.add_option("--method", a.method, "lsq or map")->check(CLI::IsMember({"lsq", "map"}))->capture_default_str();
   cmd.add_option("--sigma2", a.sigma2Mm2,
                   "MAP noise variance (mm^2); default: the optimum stored in the model, else 70")
-      ->check(CLI::PositiveNumber);
-  cmd.add_option("--project-angle", a.projectAngleDeg, "View a 3D input at this angle (degrees)");
+      ->check(kPositiveFinite);
+  cmd.add_option("--project-angle", a.projectAngleDeg, "View a 3D input at this angle (degrees)")->check(kFinite);
   cmd.add_option("--save-2d", a.save2d, "Also write the 2D sequence that was reconstructed (2D CSV)");
   cmd.add_flag("--data-preserving", a.dataPreserving, "Keep the observed u, v; only depth from the model (eq. 3.16)");
   cmd.add_flag("--in-sample", a.inSample,

@@ -39,9 +39,11 @@ double checkedFileRateHz(double rateHz, const std::string& file, const std::stri
 }
 
 double checkedRateOverrideHz(double rateHz, const std::string& file) {
-  if (!plausibleRate(rateHz)) {
-    throw Error(ErrorKind::BadArgument, file, "frame-rate override", rateProblem(rateHz));
-  }
+  return checkedGivenRateHz(rateHz, file, "frame-rate override");
+}
+
+double checkedGivenRateHz(double rateHz, const std::string& file, const std::string& option) {
+  if (!plausibleRate(rateHz)) throw Error(ErrorKind::BadArgument, file, option, rateProblem(rateHz));
   return rateHz;
 }
 

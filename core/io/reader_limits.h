@@ -40,6 +40,8 @@ double checkedFileRateHz(double rateHz, const std::string& file, const std::stri
 
 // The same for a rate the user gave (LoadOptions::rateHzOverride): Error(BadArgument).
 double checkedRateOverrideHz(double rateHz, const std::string& file);
+// A rate the user gave as `option` ("--fps"): Error(BadArgument) naming it.
+double checkedGivenRateHz(double rateHz, const std::string& file, const std::string& option);
 
 // Throws Error(Unsupported) naming the file when frames x points exceeds `allowance`.
 void checkPointFrames(double frames, double points, double allowance, const std::string& file,

@@ -479,7 +479,7 @@ void takeRateAndSize(KeypointTrial& t, const KeypointFrames& frames, const Keypo
     t.imageSize = options.video->size, t.imageSizeSource = video;
   }
   if (options.fps) {
-    t.rateHz = checkedFileRateHz(*options.fps, frames.file, "--fps"), t.rateSource = "given";
+    t.rateHz = checkedGivenRateHz(*options.fps, frames.file, "--fps"), t.rateSource = "given";
   } else if (frames.rateHz) {
     t.rateHz = *frames.rateHz, t.rateSource = "the file";
   } else if (options.video && options.video->fps > 0.0) {

@@ -317,6 +317,21 @@ TEST(ReconstructCameraCli, AFocalLengthNoCameraHasIsRefusedNamingItsSource) {
   EXPECT_NE(given.output.find("focal length 1e+308 px"), std::string::npos) << given.output;
   EXPECT_EQ(given.output.find("focal inf"), std::string::npos) << given.output;
   EXPECT_FALSE(fs::exists(dir / "walk3d.csv"));
+  // Not numbers at all, refused as the options are read (app/cli/checks.h): CLI11's own checks
+  // let NaN through and worded an infinity with a 309-digit bound.
+  const std::vector<std::pair<std::vector<std::string>, std::string>> notNumbers = {
+      {{"--focal-px", "inf"}, "--focal-px: Value inf is not a positive finite number"},
+      {{"--fps", "nan"}, "--fps: Value nan is not a positive finite number"},
+      {{"--elevation", "nan"}, "--elevation: Value nan is not a number from -30 to 80"},
+      {{"--angle", "nan"}, "--angle: Value nan is not a finite number"},
+  };
+  for (const auto& [option, said] : notNumbers) {
+    std::vector<std::string> args = {"reconstruct", "--input", cam01.string(), "--out", (dir / "walk3d.csv").string()};
+    args.insert(args.end(), option.begin(), option.end());
+    const auto run = test::runProgram(EW_CLI_PATH, args, dir);
+    EXPECT_EQ(run.exitCode, 2) << run.output;
+    EXPECT_NE(run.output.find(said), std::string::npos) << run.output;
+  }
 }
 
 }  // namespace
