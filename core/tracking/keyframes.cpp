@@ -79,8 +79,11 @@ Keyframes parseKeyframes(const std::string& text, const std::string& name) {
     root = json::parse(text);
   } catch (const json::parse_error& e) {
     throwMalformed(name, "byte " + std::to_string(e.byte), "not JSON");
+  } catch (const json::exception& e) {  // valid JSON the reader cannot hold: a number past 1e308
+    throwMalformed(name, "", std::string("not JSON a reader can hold: ") + e.what());
   }
-  if (!root.is_object() || root.value("format", std::string()) != kFormatName)
+  const auto format = root.is_object() ? root.find("format") : root.end();
+  if (format == root.end() || !format->is_string() || format->get<std::string>() != kFormatName)
     throwMalformed(
         name, "", std::string("not a keyframe file (\"format\": \"") + kFormatName + "\" missing)");
   if (!root.contains("version") || !root["version"].is_number_integer() ||

@@ -47,6 +47,7 @@
 #include "core/keypoints/keypoint_layout.h"
 #include "core/keypoints/openpose_writer.h"
 #include "core/synth/population.h"
+#include "core/tracking/keyframes.h"
 #include "tests/camera/filmed_walk.h"
 #include "tests/common/nexus_text.h"
 #include "tests/common/qtm_text.h"
@@ -748,6 +749,27 @@ void keypointSeeds(SeedWriter& out, const fs::path& tmp) {
   out.write("calibrated_clip", "openpose_walk_list.json", calibratedClip(kWalkCalibration, 0, walk));
 }
 
+// Keyframe files (fuzz_keyframes.cpp): two whole frames of a track with a joint unseen, and one
+// correction of a single joint on a named video, as the viewer saves them.
+void keyframeSeeds(SeedWriter& out) {
+  Eigen::MatrixXd px(60, 30);
+  for (Eigen::Index f = 0; f < px.rows(); ++f)
+    for (Eigen::Index c = 0; c < px.cols(); ++c) {
+      const double frame = static_cast<double>(f), column = static_cast<double>(c);
+      px(f, c) = c % 2 == 0 ? 120.5 + 4.0 * frame + column : 40.25 + 11.0 * column;
+    }
+  px.block(0, 2 * ew::index(ew::Joint::LWrist), px.rows(), 2).setConstant(std::nan(""));
+  out.write("keyframes", "two_frames.json", ew::formatKeyframes(ew::keyframesFromTrack(px, {0, 45}, "walk.mp4")));
+  ew::Keyframes correction;
+  correction.video = "demo.mp4";
+  ew::Keyframe knee;
+  knee.frame = 12;
+  knee.jointsPx = Eigen::RowVectorXd::Constant(30, std::nan(""));
+  knee.jointsPx.segment(2 * ew::index(ew::Joint::RKnee), 2) << 412.0, 655.5;
+  correction.keyframes.push_back(knee);
+  out.write("keyframes", "one_correction.json", ew::formatKeyframes(correction));
+}
+
 // Calibration files (fuzz_calibration.cpp): one camera, and two with a metadata table.
 void calibrationSeeds(SeedWriter& out) {
   out.write("calibration", "clip_camera.toml", kClipCalibration);
@@ -781,7 +803,7 @@ int main(int argc, char** argv) {
     SeedWriter out(root);
     for (const char* h :
          {"c3d", "bvh", "asf_amc", "trc", "qtm_tsv", "joint_csv", "model_file", "mapping_file", "pipeline",
-          "keypoints", "calibration", "calibrated_clip"})
+          "keypoints", "calibration", "calibrated_clip", "keyframes"})
       out.reset(h);
     const fs::path tmp = root / ".tmp";
     fs::create_directories(tmp);
@@ -791,6 +813,7 @@ int main(int argc, char** argv) {
     modelSeeds(out, tmp);
     keypointSeeds(out, tmp);
     calibrationSeeds(out);
+    keyframeSeeds(out);
     const fs::path data = sharedData(argc, argv);
     if (!data.empty() && fs::is_directory(data)) {
       sharedDataSeeds(out, data);

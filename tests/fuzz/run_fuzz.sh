@@ -5,7 +5,7 @@
 #   tests/fuzz/run_fuzz.sh BUILD_DIR SECONDS [HARNESS...]
 #
 # Writes the seed corpora (BUILD_DIR/bin/fuzz_seeds -> BUILD_DIR/seeds/), then runs each
-# harness (all twelve by default) for SECONDS with the limits that make a finding of a
+# harness (all thirteen by default) for SECONDS with the limits that make a finding of a
 # memory blow-up (-rss_limit_mb, -malloc_limit_mb) or a hang (-timeout). New inputs go to
 # BUILD_DIR/corpus/<harness>/ (kept between runs), crashers to BUILD_DIR/crashes/<harness>/,
 # the output to BUILD_DIR/logs/<harness>.log. SECONDS = 0 only replays the regression and
@@ -25,7 +25,7 @@ seconds=$2
 shift 2
 harnesses=("$@")
 [[ ${#harnesses[@]} -gt 0 ]] || harnesses=(c3d bvh asf_amc trc qtm_tsv joint_csv model_file mapping_file pipeline keypoints calibration
-                                       calibrated_clip)
+                                       calibrated_clip keyframes)
 src=$(cd "$(dirname "$0")" && pwd)
 jobs=${FUZZ_JOBS:-2}
 rss=${FUZZ_RSS_MB:-1024}

@@ -60,6 +60,9 @@ TEST(Keyframes, MalformedFilesAreNamedWithTheirProblem) {
   EXPECT_TRUE(throwsError(parse("{"), ErrorKind::Malformed, {"k.json", "not JSON"}));
   EXPECT_TRUE(throwsError(parse(R"({"people": []})"), ErrorKind::Malformed,
                           {"k.json", "not a keyframe file"}));
+  // Found by fuzz_keyframes: each once escaped as nlohmann's own exception.
+  EXPECT_TRUE(throwsError(parse("1e388"), ErrorKind::Malformed, {"k.json", "not JSON a reader can hold"}));
+  EXPECT_TRUE(throwsError(parse(R"({"format": 5})"), ErrorKind::Malformed, {"k.json", "not a keyframe file"}));
   EXPECT_TRUE(
       throwsError(parse(R"({"format": "eigenwalker-keyframes", "version": 2, "keyframes": []})"),
                   ErrorKind::Malformed, {"version"}));
