@@ -14,6 +14,15 @@ namespace {
 
 using nlohmann::json;
 
+// A text field the file may leave out; there, anything but a string is named (json::value()
+// would throw its own type_error, which no caller expects).
+std::string optionalText(const json& doc, const char* key, const std::string& file) {
+  const auto it = doc.find(key);
+  if (it == doc.end() || it->is_null()) return "";
+  if (!it->is_string()) throwMalformed(file, key, "must be a string");
+  return it->get<std::string>();
+}
+
 // Lower case without '_', '-' or spaces: "BODY_25B", "body25b" and "Body-25B" are one name.
 std::string nameKey(std::string_view s) {
   std::string out;
@@ -86,7 +95,7 @@ void parseDetectorOffsets(const json& doc, const std::string& file, KeypointLayo
       l.detectorOffsetMm[static_cast<std::size_t>(j)][c] = v[c].get<double>();
     }
   }
-  l.detectorOffsetSource = doc.value("detector_offsets_source", "");
+  l.detectorOffsetSource = optionalText(doc, "detector_offsets_source", file);
 }
 
 }  // namespace
@@ -110,7 +119,7 @@ KeypointLayout parseKeypointLayout(std::string_view text, const std::string& fil
   if (!doc.contains("name") || !doc["name"].is_string() || doc["name"].get<std::string>().empty())
     throwMalformed(file, "name", "must be a non-empty string");
   l.name = doc["name"].get<std::string>();
-  l.about = doc.value("about", "");
+  l.about = optionalText(doc, "about", file);
   l.points = pointNames(doc, file);
   if (!doc.contains("joints") || !doc["joints"].is_object()) throwMalformed(file, "joints", "missing object");
   for (const auto& [name, alternatives] : doc["joints"].items()) {

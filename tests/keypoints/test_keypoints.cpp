@@ -134,6 +134,8 @@ TEST(KeypointLayouts, MalformedTablesNameTheFileAndKey) {
   EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {"pelvis": [["A"]]}})"), "accepted");
   EXPECT_EQ(key("["), "");
   EXPECT_EQ(key(R"({"name": "x", "points": ["A", "A"], "joints": {}})"), "points");
+  // A text field of another type: once nlohmann's own type_error, no Error naming the key.
+  EXPECT_EQ(key(R"({"name": "x", "about": 5, "points": ["A"], "joints": {"pelvis": [["A"]]}})"), "about");
   EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {"tail": [["A"]]}})"), "joints.tail");
   EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {"pelvis": [["B"]]}})"), "joints.pelvis[0]");
   EXPECT_EQ(key(R"({"name": "x", "points": ["A"], "joints": {"pelvis": [[]]}})"), "joints.pelvis[0]");
