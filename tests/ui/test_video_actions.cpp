@@ -189,6 +189,24 @@ TEST(VideoActions, UndoTakesBackTheLatestChangeWhetherACorrectionOrASetting) {
   redo(s);
   EXPECT_TRUE(s.clip.settings->corrections) << "then the correction";
   EXPECT_FALSE(canRedo(s));
+  // A new change drops what could be redone, whichever history holds it.
+  undo(s);
+  ASSERT_TRUE(canRedo(s));
+  s.view.theme = Theme::Dark;
+  settle();
+  EXPECT_FALSE(canRedo(s)) << "the correction undone before the setting's change";
+  redo(s);
+  EXPECT_FALSE(s.clip.settings->corrections);
+  undo(s);
+  EXPECT_EQ(s.view.theme, Theme::Light);
+  redo(s);
+  EXPECT_EQ(s.view.theme, Theme::Dark);
+  redo(s);
+  EXPECT_FALSE(s.clip.settings->corrections) << "still dropped";
+  s.view.theme = Theme::Light;
+  settle();
+  actions::redoKeyframes(s);  // the marking panel's own Redo still has it
+  ASSERT_TRUE(s.clip.settings->corrections);
 
   // Out of the clip mode the keyframes are not shown, and not undone there.
   s.doc.mode = Mode::Reconstruct;

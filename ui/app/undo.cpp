@@ -54,10 +54,13 @@ void restoreParameters(AppState& s, const Parameters& p) {
 
 // [SECTION] The history
 
-std::uint64_t nextEditSerial() {
-  static std::uint64_t serial = 0;
-  return ++serial;
-}
+namespace {
+std::uint64_t newestSerial = 0;
+}  // namespace
+
+std::uint64_t nextEditSerial() { return ++newestSerial; }
+
+std::uint64_t latestEditSerial() { return newestSerial; }
 
 void ParameterHistory::observe(const Parameters& now, const ParameterContext& context, bool settled) {
   if (context_ != context) {
@@ -82,7 +85,7 @@ void ParameterHistory::record(const Parameters& now) {
 std::optional<Parameters> ParameterHistory::undo(const Parameters& now) {
   if (current_ != now) record(now);
   if (undo_.empty()) return std::nullopt;
-  redo_.push_back({*current_, undo_.back().serial});
+  redo_.push_back({*current_, undo_.back().serial, latestEditSerial()});
   current_ = undo_.back().parameters;
   undo_.pop_back();
   return current_;
@@ -105,6 +108,7 @@ std::optional<std::uint64_t> ParameterHistory::undoSerial(const Parameters& now)
 
 std::optional<std::uint64_t> ParameterHistory::redoSerial(const Parameters& now) const {
   if ((current_ && *current_ != now) || redo_.empty()) return std::nullopt;
+  if (redo_.back().newestWhenUndone != latestEditSerial()) return std::nullopt;  // a change since
   return redo_.back().serial;
 }
 
@@ -127,6 +131,7 @@ std::optional<std::uint64_t> keyframeUndoSerial(const AppState& s) {
 std::optional<std::uint64_t> keyframeRedoSerial(const AppState& s) {
   const VideoSession* v = keyframesShown(s);
   if (!v || v->redo.empty()) return std::nullopt;
+  if (v->redo.back().newestWhenUndone != latestEditSerial()) return std::nullopt;  // a change since
   return v->redo.back().serial;
 }
 

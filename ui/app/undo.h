@@ -59,6 +59,10 @@ void restoreParameters(AppState& s, const Parameters& p);
 // A number from one counter for every change either history records, so that the app's
 // undo can take back the latest change whichever history holds it.
 std::uint64_t nextEditSerial();
+// The serial of the newest change made (0 before any). A step undone before a newer change was
+// made is no longer redone by the app's redo: a new change drops what could be redone, in
+// either history.
+std::uint64_t latestEditSerial();
 
 class ParameterHistory {
  public:
@@ -83,6 +87,7 @@ class ParameterHistory {
   struct Step {
     Parameters parameters;  // on the undo stack: before the change; on the redo stack: after it
     std::uint64_t serial = 0;
+    std::uint64_t newestWhenUndone = 0;  // on the redo stack: latestEditSerial() at the undo
   };
   void record(const Parameters& now);
 

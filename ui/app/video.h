@@ -64,6 +64,7 @@ struct VideoSession {
   struct KeyframesStep {
     Keyframes keyframes;        // on the undo stack: before the edit; on the redo stack: after it
     std::uint64_t serial = 0;   // the edit's (ui/app/undo.h nextEditSerial): the app's undo order
+    std::uint64_t newestWhenUndone = 0;  // on the redo stack: latestEditSerial() at the undo
   };
   std::vector<KeyframesStep> undo, redo;  // each edit of the keyframes (≤ 200 kept)
   int frame = 0;                       // the frame scrubbed to (0-based)

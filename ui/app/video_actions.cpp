@@ -326,7 +326,7 @@ void removeKeyframe(AppState& s, int frame) {
 void undoKeyframes(AppState& s) {
   VideoSession& v = session(s);
   if (v.undo.empty()) throw std::invalid_argument("nothing to undo");
-  v.redo.push_back({std::move(v.keyframes), v.undo.back().serial});
+  v.redo.push_back({std::move(v.keyframes), v.undo.back().serial, latestEditSerial()});
   v.keyframes = std::move(v.undo.back().keyframes);
   v.undo.pop_back();
   if (v.marking) v.markStep = nextUnmarked(v, 0);
